@@ -1,0 +1,74 @@
+// The global linear system of one increment: K du = dF with prescribed dofs.
+//
+// K is a preallocated AIJ matrix whose pattern never changes; every increment
+// refills its values. Nodes may carry a rotated local frame (l, n): their two
+// dofs are then (u.l, u.n), element blocks are rotated as T^T K T on the way
+// in, and a prescribed component (e.g. the normal of a contact node) is a
+// plain dof of that frame. Prescribed dofs are imposed by zeroing rows and
+// columns (MAT_KEEP_NONZERO_PATTERN), so MUMPS reuses its symbolic analysis.
+#pragma once
+
+#include <petscksp.h>
+
+#include <vector>
+
+#include "tubeform/fe/quad.hpp"
+#include "tubeform/mesh/mesh.hpp"
+
+namespace tf {
+
+struct Prescribed {
+  PetscInt node;  // local node
+  int comp;       // 0 = x (or l), 1 = y (or n) in the node's frame
+  double value;   // displacement increment
+};
+
+class System {
+public:
+  System() = default;
+  System(const System &) = delete;
+  System &operator=(const System &) = delete;
+  ~System();
+
+  PetscErrorCode Setup(const Mesh &mesh);
+
+  // Node frames: angle of the l axis from x (n is l turned +90 degrees).
+  void SetFrame(PetscInt node, double angle);
+  void ClearFrames();
+  bool HasFrame(PetscInt node) const { return has_frame_[node]; }
+
+  // Assembly of one increment: Begin, Add*, then Solve.
+  PetscErrorCode Begin();
+  PetscErrorCode AddElement(PetscInt cell, const fe::ElemMat &ke);
+  void AddForce(PetscInt node, double fx, double fy); // global-frame load increment
+  void Prescribe(PetscInt node, int comp, double value) { prescribed_.push_back({node, comp, value}); }
+  // Solves; `du` (local vector, global frame, ghosts filled) receives the
+  // increment and `reactions` the force increments at the prescribed dofs
+  // (same order as prescribed(); entries for unowned nodes are 0).
+  PetscErrorCode Solve(Vec du, std::vector<double> &reactions);
+
+  const std::vector<Prescribed> &prescribed() const { return prescribed_; }
+  Vec CreateLocalVector() const;
+
+  // Global 2-norm of a local force vector (global frame) with the prescribed
+  // dofs removed: the out-of-balance force of the free dofs.
+  PetscErrorCode FreeNorm(Vec f_local, double &norm);
+
+  PetscInt factorizations() const { return nsolves_; }
+
+private:
+  const Mesh *mesh_ = nullptr;
+  Mat k_ = nullptr, reaction_rows_ = nullptr;
+  Vec rhs_ = nullptr, sol_ = nullptr, fixed_ = nullptr, f_local_ = nullptr;
+  KSP ksp_ = nullptr;
+  ISLocalToGlobalMapping ltog_ = nullptr;
+  std::vector<char> has_frame_;
+  std::vector<double> cos_, sin_;
+  std::vector<Prescribed> prescribed_;
+  std::vector<PetscInt> last_rows_;
+  PetscInt nsolves_ = 0;
+
+  void Rotate(PetscInt node, double &a, double &b, bool to_local) const;
+};
+
+} // namespace tf

@@ -1,0 +1,84 @@
+// A run: the distributed mesh, the material, the per-Gauss-point state, the
+// global system and the incremental loop. Scenes add their loads, supports
+// and measurements through the Scene interface.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tubeform/assembly/system.hpp"
+#include "tubeform/driver/options.hpp"
+#include "tubeform/io/history.hpp"
+#include "tubeform/material/elastic.hpp"
+#include "tubeform/mesh/mesh.hpp"
+
+namespace tf {
+
+class Problem;
+
+// What a scene decides: its mesh, its supports and loads per increment, and
+// what `stroke` and `load` mean in its history.
+class Scene {
+public:
+  virtual ~Scene() = default;
+  virtual std::vector<std::string> BoundarySets() const = 0;
+  // Rank 0 only: the serial mesh (structured or read from -mesh_file).
+  virtual std::string BuildMesh(const Options &opt, SerialMesh &mesh) const = 0;
+  // Adds the load increment for lambda -> lambda + dlambda (lambda in [0, 1])
+  // and the prescribed dofs to the system; returns the nodal load of the
+  // increment per unit dlambda in `dforce` (local vector) for the work.
+  virtual PetscErrorCode Load(Problem &p, double lambda, double dlambda, Vec dforce) = 0;
+  // Total external load vector at lambda on the current geometry (local vector).
+  virtual PetscErrorCode ExternalForce(Problem &p, double lambda, Vec f) = 0;
+  // Fills stroke and load (and scene metrics) of the history row.
+  virtual PetscErrorCode Measure(Problem &p, double lambda, HistoryRow &row) = 0;
+};
+
+std::unique_ptr<Scene> CreateScene(const Options &opt);
+
+class Problem {
+public:
+  Problem() = default;
+  Problem(const Problem &) = delete;
+  Problem &operator=(const Problem &) = delete;
+  ~Problem();
+
+  PetscErrorCode Setup(MPI_Comm comm, const Options &opt);
+  PetscErrorCode Run();
+
+  // Building blocks (also used by tests).
+  PetscErrorCode AssembleTangent();
+  // Advances stress, coordinates and displacement by du (local vector).
+  PetscErrorCode Commit(Vec du, double &dw_int);
+  PetscErrorCode InternalForce(Vec f_local);
+  // Current cell corner coordinates.
+  void CellCoordinates(PetscInt cell, double xe[8]) const;
+
+  const Options &options() const { return opt_; }
+  Mesh &mesh() { return mesh_; }
+  System &system() { return system_; }
+  const std::vector<PointState> &state() const { return state_; }
+  const std::vector<double> &position() const { return x_; }  // current coordinates, 2 per local node
+  const std::vector<double> &displacement() const { return u_; }
+  MPI_Comm comm() const { return comm_; }
+  PetscMPIInt rank() const { return rank_; }
+  const History &history() const { return history_; }
+
+private:
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  PetscMPIInt rank_ = 0, size_ = 1;
+  Options opt_;
+  std::unique_ptr<Scene> scene_;
+  std::unique_ptr<Material> material_;
+  Mesh mesh_;
+  System system_;
+  std::vector<PointState> state_; // 4 per local cell
+  std::vector<double> x_, u_;      // per local node, global frame
+  History history_;
+
+  PetscErrorCode ElasticEnergy(double &w);
+  PetscErrorCode WriteOutputs(class ResultWriter &writer, PetscInt step, double t);
+};
+
+} // namespace tf

@@ -1,0 +1,60 @@
+// Pure kernels of the 4-node quadrilateral (no PETSc): shape functions,
+// gradients in the current configuration, the (B-bar) strain-displacement
+// matrix and the updated-Lagrangian tangent of METHOD.md section 2.
+//
+// Voigt order {xx, yy, zz, xy}; strains carry gamma_xy. Element dofs are
+// ordered (u_x, u_y) node by node, nodes counter-clockwise.
+#pragma once
+
+#include <array>
+
+namespace tf::fe {
+
+enum class Formulation {
+  Q4,   // full 2x2 integration (locks for near-incompressible flow)
+  BBar, // mean-dilatation B-bar (Hughes 1980): volumetric strain averaged over the cell
+};
+
+constexpr int kNodes = 4, kGauss = 4, kDofs = 8, kVoigt = 4;
+
+using Mat4 = std::array<std::array<double, kVoigt>, kVoigt>;
+using Voigt = std::array<double, kVoigt>;
+using ElemMat = std::array<std::array<double, kDofs>, kDofs>;
+using ElemVec = std::array<double, kDofs>;
+
+// Gradients of the shape functions at the 2x2 Gauss points of a cell with
+// corners xe (x0, y0, x1, y1, ...), with the weights w_g det J_g.
+struct QuadGeometry {
+  double dndx[kGauss][kNodes][2]; // dN_a/dx_j at Gauss point g
+  double wdet[kGauss];            // quadrature weight times det J
+  double bvol[kNodes][2];         // cell mean of dN_a/dx_j (B-bar volumetric row)
+  double area;
+};
+
+// Gauss point natural coordinates (+-1/sqrt 3) and the shape functions there.
+void ShapeFunctions(double xi, double eta, double n[kNodes], double dn[kNodes][2]);
+
+// Fills `geo`; returns false when det J <= 0 at a Gauss point (inverted cell).
+bool ComputeGeometry(const double xe[2 * kNodes], QuadGeometry &geo);
+
+// Strain-displacement matrix at Gauss point g (4 Voigt rows x 8 dofs).
+void StrainMatrix(const QuadGeometry &geo, int g, Formulation f, double b[kVoigt][kDofs]);
+
+// Stress-correction matrix Q of METHOD.md sec. 2 (from -2 sigma.D : dD), 4x4 form.
+Mat4 StressCorrection(const Voigt &sigma);
+
+// Element tangent  K = sum_g w det J [ Bbar^T (C_g - Q(sigma_g)) Bbar + G^T S_g G ],
+// with C_g the tangent relating the Jaumann rate of Kirchhoff stress to d, and
+// the initial-stress part G^T S G = (grad N_a . sigma . grad N_b) I.
+// `geometric` = false drops the Q and initial-stress terms (small-strain tangent).
+void ElementStiffness(const QuadGeometry &geo, Formulation f, const Mat4 tangent[kGauss], const Voigt sigma[kGauss], bool geometric, ElemMat &ke);
+
+// Increment kinematics at Gauss point g from the nodal increments du:
+// strain increment (Voigt, B-bar if chosen) and the spin increment
+// omega = (L_xy - L_yx) / 2 with L_ij = d(du_i)/dx_j.
+void IncrementKinematics(const QuadGeometry &geo, int g, Formulation f, const ElemVec &du, Voigt &deps, double &omega);
+
+// Internal force  f = sum_g w det J Bbar^T sigma_g.
+void InternalForce(const QuadGeometry &geo, Formulation f, const Voigt sigma[kGauss], ElemVec &fe);
+
+} // namespace tf::fe

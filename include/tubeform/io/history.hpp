@@ -1,0 +1,47 @@
+// The per-increment history of a run (METHOD.md section 6): kept on every
+// rank (values are global sums/maxima), written to /history and to CSV.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace tf {
+
+// What set the size of an increment (the r_min factor that won, or the end
+// of the load path). Stored in the history as its integer code.
+enum class Limiter : int { Trial = 0, Final = 1, Yield = 2, Strain = 3, Rotation = 4, Contact = 5, Separation = 6, Stick = 7 };
+const char *LimiterName(int code);
+constexpr int kNumLimiters = 8;
+
+struct HistoryRow {
+  double increment = 0, stroke = 0, load = 0, rmin = 1, limiter = 0, limiter_where = -1;
+  double n_contact = 0, n_plastic = 0, friction_iters = 0, residual = 0;
+  double w_ext = 0, w_int = 0, w_plastic = 0, w_friction = 0, w_elastic = 0, energy_error = 0;
+  double c_over_t = 0, x_max = 0, y_max = 0, deviation_ratio = 1;
+};
+
+struct HistoryColumn {
+  const char *name;
+  double HistoryRow::*field;
+  const char *meaning;
+};
+const std::vector<HistoryColumn> &HistoryColumns();
+
+class History {
+public:
+  ~History();
+  // Opens `<path>.partial` on rank 0 (renamed to `path` by Finish). Returns
+  // an empty string or the reason the file cannot be written.
+  std::string OpenCsv(const std::string &path, int rank);
+  void Append(const HistoryRow &row);
+  bool FinishCsv(); // rename on success
+  const std::vector<HistoryRow> &rows() const { return rows_; }
+
+private:
+  std::vector<HistoryRow> rows_;
+  std::FILE *csv_ = nullptr;
+  std::string csv_path_;
+};
+
+} // namespace tf

@@ -1,0 +1,18 @@
+// Structured mesh of the quarter annulus x >= 0, y >= 0.
+#pragma once
+
+#include "tubeform/mesh/serial_mesh.hpp"
+
+namespace tf {
+
+// nt elements through the wall, ntheta around the quarter. Node (i, j), with i
+// the radial index from the inner surface and j the angular index from the
+// x axis, has id i + (nt + 1) j. Cells are counter-clockwise. Boundary sets:
+// inner (r = ro - t), outer (r = ro), y0 (theta = 0), x0 (theta = 90 deg).
+SerialMesh GenerateQuarterAnnulus(double ro, double t, int nt, int ntheta);
+
+// A rectangle [0, lx] x [0, ly] of nx x ny cells with sets
+// "left", "right", "bottom", "top" (used by block scenes and tests).
+SerialMesh GenerateRectangle(double lx, double ly, int nx, int ny);
+
+} // namespace tf

@@ -1,0 +1,242 @@
+#include "tubeform/assembly/system.hpp"
+
+#include <cmath>
+
+#include "tubeform/core.hpp"
+#include "tubeform/driver/log.hpp"
+
+namespace tf {
+
+System::~System()
+{
+  (void)MatDestroy(&k_);
+  (void)MatDestroy(&reaction_rows_);
+  (void)VecDestroy(&rhs_);
+  (void)VecDestroy(&sol_);
+  (void)VecDestroy(&fixed_);
+  (void)VecDestroy(&f_local_);
+  (void)KSPDestroy(&ksp_);
+}
+
+PetscErrorCode System::Setup(const Mesh &mesh)
+{
+  PC pc;
+
+  PetscFunctionBeginUser;
+  mesh_ = &mesh;
+  PetscCall(DMCreateMatrix(mesh.dm, &k_));
+  PetscCall(MatSetOption(k_, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
+  PetscCall(MatSetOption(k_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscCall(MatGetLocalToGlobalMapping(k_, &ltog_, nullptr));
+  PetscCall(DMCreateGlobalVector(mesh.dm, &rhs_));
+  PetscCall(VecDuplicate(rhs_, &sol_));
+  PetscCall(VecDuplicate(rhs_, &fixed_));
+  PetscCall(DMCreateLocalVector(mesh.dm, &f_local_));
+  PetscCall(PetscObjectSetName((PetscObject)sol_, "displacement"));
+
+  // Direct solve by default; options (e.g. options/solver.opts) may override.
+  PetscCall(KSPCreate(mesh.comm, &ksp_));
+  PetscCall(KSPSetType(ksp_, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp_, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(KSPSetFromOptions(ksp_));
+
+  has_frame_.assign(mesh.num_nodes, 0);
+  cos_.assign(mesh.num_nodes, 1.0);
+  sin_.assign(mesh.num_nodes, 0.0);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void System::SetFrame(PetscInt node, double angle)
+{
+  has_frame_[node] = 1;
+  cos_[node] = std::cos(angle);
+  sin_[node] = std::sin(angle);
+}
+
+void System::ClearFrames()
+{
+  std::fill(has_frame_.begin(), has_frame_.end(), 0);
+  std::fill(cos_.begin(), cos_.end(), 1.0);
+  std::fill(sin_.begin(), sin_.end(), 0.0);
+}
+
+void System::Rotate(PetscInt node, double &a, double &b, bool to_local) const
+{
+  // Columns of R are l = (c, s) and n = (-s, c); local = R^T global.
+  const double c = cos_[node], s = to_local ? sin_[node] : -sin_[node];
+  const double x = a, y = b;
+  a = c * x + s * y;
+  b = -s * x + c * y;
+}
+
+Vec System::CreateLocalVector() const
+{
+  Vec v = nullptr;
+  (void)DMCreateLocalVector(mesh_->dm, &v);
+  return v;
+}
+
+PetscErrorCode System::Begin()
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatZeroEntries(k_));
+  PetscCall(VecZeroEntries(f_local_));
+  prescribed_.clear();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode System::AddElement(PetscInt cell, const fe::ElemMat &ke_in)
+{
+  PetscInt idx[fe::kDofs];
+  PetscScalar vals[fe::kDofs * fe::kDofs];
+  fe::ElemMat ke = ke_in;
+  const PetscInt *nodes = &mesh_->cell_nodes[4 * cell];
+
+  PetscFunctionBeginUser;
+  // K' = T^T K T for nodes with a rotated frame: rotate their rows, then columns.
+  for (int a = 0; a < fe::kNodes; ++a) {
+    if (!has_frame_[nodes[a]]) continue;
+    for (int j = 0; j < fe::kDofs; ++j) Rotate(nodes[a], ke[2 * a][j], ke[2 * a + 1][j], true);
+    for (int i = 0; i < fe::kDofs; ++i) Rotate(nodes[a], ke[i][2 * a], ke[i][2 * a + 1], true);
+  }
+  for (int a = 0; a < fe::kNodes; ++a) {
+    idx[2 * a] = mesh_->node_dof[nodes[a]];
+    idx[2 * a + 1] = mesh_->node_dof[nodes[a]] + 1;
+  }
+  for (int i = 0; i < fe::kDofs; ++i)
+    for (int j = 0; j < fe::kDofs; ++j) vals[i * fe::kDofs + j] = ke[i][j];
+  PetscCall(MatSetValuesLocal(k_, fe::kDofs, idx, fe::kDofs, idx, vals, ADD_VALUES));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void System::AddForce(PetscInt node, double fx, double fy)
+{
+  PetscScalar *f;
+  (void)VecGetArray(f_local_, &f);
+  f[mesh_->node_dof[node]] += fx;
+  f[mesh_->node_dof[node] + 1] += fy;
+  (void)VecRestoreArray(f_local_, &f);
+}
+
+PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
+{
+  PetscScalar *f;
+  std::vector<PetscInt> rows;
+  std::vector<PetscScalar> vals, b_rows;
+  KSPConvergedReason reason;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::apply_bc, 0, 0, 0, 0));
+  PetscCall(MatAssemblyBegin(k_, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(k_, MAT_FINAL_ASSEMBLY));
+
+  // Loads into the node frames, then summed over ranks.
+  PetscCall(VecGetArray(f_local_, &f));
+  for (PetscInt n = 0; n < mesh_->num_nodes; ++n)
+    if (has_frame_[n]) Rotate(n, f[mesh_->node_dof[n]], f[mesh_->node_dof[n] + 1], true);
+  PetscCall(VecRestoreArray(f_local_, &f));
+  PetscCall(VecZeroEntries(rhs_));
+  PetscCall(DMLocalToGlobal(mesh_->dm, f_local_, ADD_VALUES, rhs_));
+
+  // Prescribed dofs owned here, as global rows.
+  for (const auto &p : prescribed_) {
+    if (!mesh_->node_owned[p.node]) continue;
+    PetscInt local = mesh_->node_dof[p.node] + p.comp, global;
+    PetscCall(ISLocalToGlobalMappingApply(ltog_, 1, &local, &global));
+    rows.push_back(global);
+    vals.push_back(p.value);
+  }
+  // Keep the unconstrained rows for the reactions: R = K(rows, :). The
+  // submatrix is rebuilt only when some rank's prescribed set changed.
+  {
+    IS isrow, iscol;
+    PetscInt lo, hi;
+    int changed = rows != last_rows_, any_changed;
+    PetscCallMPI(MPI_Allreduce(&changed, &any_changed, 1, MPI_INT, MPI_LOR, mesh_->comm));
+    if (any_changed) PetscCall(MatDestroy(&reaction_rows_));
+    PetscCall(MatGetOwnershipRange(k_, &lo, &hi));
+    PetscCall(ISCreateGeneral(mesh_->comm, (PetscInt)rows.size(), rows.data(), PETSC_COPY_VALUES, &isrow));
+    PetscCall(ISCreateStride(mesh_->comm, hi - lo, lo, 1, &iscol));
+    PetscCall(MatCreateSubMatrix(k_, isrow, iscol, reaction_rows_ ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &reaction_rows_));
+    PetscCall(ISDestroy(&isrow));
+    PetscCall(ISDestroy(&iscol));
+  }
+  last_rows_ = rows;
+  b_rows.resize(rows.size());
+  if (!rows.empty()) PetscCall(VecGetValues(rhs_, (PetscInt)rows.size(), rows.data(), b_rows.data()));
+
+  PetscCall(VecZeroEntries(fixed_));
+  if (!rows.empty()) PetscCall(VecSetValues(fixed_, (PetscInt)rows.size(), rows.data(), vals.data(), INSERT_VALUES));
+  PetscCall(VecAssemblyBegin(fixed_));
+  PetscCall(VecAssemblyEnd(fixed_));
+  PetscCall(MatZeroRowsColumns(k_, (PetscInt)rows.size(), rows.data(), 1.0, fixed_, rhs_));
+  PetscCall(PetscLogEventEnd(Log::apply_bc, 0, 0, 0, 0));
+
+  PetscCall(PetscLogEventBegin(Log::solve, 0, 0, 0, 0));
+  PetscCall(KSPSetOperators(ksp_, k_, k_));
+  PetscCall(KSPSolve(ksp_, rhs_, sol_));
+  PetscCall(KSPGetConvergedReason(ksp_, &reason));
+  PetscCheck(reason >= 0, mesh_->comm, PETSC_ERR_NOT_CONVERGED, "Linear solve failed (%s): the stiffness is singular or the solver options are wrong; check that the scene's supports remove every rigid-body motion", KSPConvergedReasons[reason]);
+  ++nsolves_;
+  PetscCall(PetscLogEventEnd(Log::solve, 0, 0, 0, 0));
+
+  // Reactions r = K(rows, :) du - f(rows), in the node frames.
+  {
+    Vec r;
+    const PetscScalar *ra;
+    PetscCall(MatCreateVecs(reaction_rows_, nullptr, &r));
+    PetscCall(MatMult(reaction_rows_, sol_, r));
+    PetscCall(VecGetArrayRead(r, &ra));
+    reactions.assign(prescribed_.size(), 0.0);
+    size_t k = 0;
+    for (size_t q = 0; q < prescribed_.size(); ++q)
+      if (mesh_->node_owned[prescribed_[q].node]) {
+        reactions[q] = PetscRealPart(ra[k]) - PetscRealPart(b_rows[k]);
+        ++k;
+      }
+    PetscCall(VecRestoreArrayRead(r, &ra));
+    PetscCall(VecDestroy(&r));
+  }
+
+  // Back to the global frame, ghosts filled.
+  PetscCall(DMGlobalToLocal(mesh_->dm, sol_, INSERT_VALUES, du));
+  PetscScalar *d;
+  PetscCall(VecGetArray(du, &d));
+  for (PetscInt n = 0; n < mesh_->num_nodes; ++n)
+    if (has_frame_[n]) Rotate(n, d[mesh_->node_dof[n]], d[mesh_->node_dof[n] + 1], false);
+  PetscCall(VecRestoreArray(du, &d));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode System::FreeNorm(Vec f_local, double &norm)
+{
+  PetscScalar *f;
+  PetscReal nrm;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(f_local, f_local_));
+  PetscCall(VecGetArray(f_local_, &f));
+  for (PetscInt n = 0; n < mesh_->num_nodes; ++n)
+    if (has_frame_[n]) Rotate(n, f[mesh_->node_dof[n]], f[mesh_->node_dof[n] + 1], true);
+  for (const auto &p : prescribed_) f[mesh_->node_dof[p.node] + p.comp] = 0;
+  PetscCall(VecRestoreArray(f_local_, &f));
+  PetscCall(VecZeroEntries(rhs_));
+  PetscCall(DMLocalToGlobal(mesh_->dm, f_local_, ADD_VALUES, rhs_));
+  // A prescribed dof zeroed on one rank may carry a share from another: zero the owned rows too.
+  PetscCall(VecGetArray(rhs_, &f));
+  for (const auto &p : prescribed_)
+    if (mesh_->node_owned[p.node]) {
+      PetscInt local = mesh_->node_dof[p.node] + p.comp, global, lo;
+      PetscCall(ISLocalToGlobalMappingApply(ltog_, 1, &local, &global));
+      PetscCall(VecGetOwnershipRange(rhs_, &lo, nullptr));
+      f[global - lo] = 0;
+    }
+  PetscCall(VecRestoreArray(rhs_, &f));
+  PetscCall(VecNorm(rhs_, NORM_2, &nrm));
+  norm = nrm;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

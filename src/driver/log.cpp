@@ -1,0 +1,31 @@
+#include "tubeform/driver/log.hpp"
+
+#include "tubeform/core.hpp"
+
+namespace tf {
+
+PetscLogEvent Log::assemble = 0, Log::apply_bc = 0, Log::solve = 0, Log::update = 0, Log::output = 0, Log::mesh = 0;
+PetscLogStage Log::setup_stage = 0, Log::load_stage = 0, Log::output_stage = 0;
+
+PetscErrorCode Log::Register()
+{
+  static bool done = false;
+  PetscClassId id;
+
+  PetscFunctionBeginUser;
+  if (done) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscClassIdRegister("tubeform", &id));
+  PetscCall(PetscLogEventRegister("TfMesh", id, &mesh));
+  PetscCall(PetscLogEventRegister("TfAssemble", id, &assemble));
+  PetscCall(PetscLogEventRegister("TfApplyBC", id, &apply_bc));
+  PetscCall(PetscLogEventRegister("TfSolve", id, &solve));
+  PetscCall(PetscLogEventRegister("TfUpdate", id, &update));
+  PetscCall(PetscLogEventRegister("TfOutput", id, &output));
+  PetscCall(PetscLogStageRegister("TfSetup", &setup_stage));
+  PetscCall(PetscLogStageRegister("TfLoading", &load_stage));
+  PetscCall(PetscLogStageRegister("TfOutput", &output_stage));
+  done = true;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

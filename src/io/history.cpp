@@ -1,0 +1,80 @@
+#include "tubeform/io/history.hpp"
+
+#include <cstdio>
+
+namespace tf {
+
+const char *LimiterName(int code)
+{
+  static const char *names[kNumLimiters] = {"trial", "final", "yield", "strain", "rotation", "contact", "separation", "stick"};
+  return code >= 0 && code < kNumLimiters ? names[code] : "unknown";
+}
+
+const std::vector<HistoryColumn> &HistoryColumns()
+{
+  static const std::vector<HistoryColumn> cols = {
+    {"increment", &HistoryRow::increment, "increment number"},
+    {"stroke", &HistoryRow::stroke, "tool stroke U (mm), or the scene's load parameter"},
+    {"load", &HistoryRow::load, "punch load, full tube (N/mm), or the scene's conjugate force"},
+    {"rmin", &HistoryRow::rmin, "r_min scaling of the trial increment"},
+    {"limiter", &HistoryRow::limiter, "what limited the increment (code, see attribute limiter_names)"},
+    {"limiter_where", &HistoryRow::limiter_where, "element or node (input numbering) of the limiter, -1 if none"},
+    {"n_contact", &HistoryRow::n_contact, "contact nodes"},
+    {"n_plastic", &HistoryRow::n_plastic, "plastic Gauss points"},
+    {"friction_iters", &HistoryRow::friction_iters, "friction iterations in the increment"},
+    {"residual", &HistoryRow::residual, "out-of-balance force norm of the free dofs (N/mm)"},
+    {"w_ext", &HistoryRow::w_ext, "external work (N mm / mm)"},
+    {"w_int", &HistoryRow::w_int, "internal (stress) work"},
+    {"w_plastic", &HistoryRow::w_plastic, "plastic dissipation"},
+    {"w_friction", &HistoryRow::w_friction, "friction dissipation"},
+    {"w_elastic", &HistoryRow::w_elastic, "stored elastic energy"},
+    {"energy_error", &HistoryRow::energy_error, "(w_ext - w_int - w_friction) / max(|w_ext|, tiny)"},
+    {"c_over_t", &HistoryRow::c_over_t, "collapse ratio C/t"},
+    {"x_max", &HistoryRow::x_max, "C1: outer horizontal half-extent (mm)"},
+    {"y_max", &HistoryRow::y_max, "C2: outer vertical half-extent (mm)"},
+    {"deviation_ratio", &HistoryRow::deviation_ratio, "min(C1, C2) / max(C1, C2)"},
+  };
+  return cols;
+}
+
+History::~History()
+{
+  if (csv_) std::fclose(csv_);
+}
+
+std::string History::OpenCsv(const std::string &path, int rank)
+{
+  csv_path_ = path;
+  if (rank != 0 || path.empty()) return "";
+  csv_ = std::fopen((path + ".partial").c_str(), "w");
+  if (!csv_) return "-history_csv " + path + ": cannot create the file (does the directory exist and is it writable?)";
+  const auto &cols = HistoryColumns();
+  for (size_t c = 0; c < cols.size(); ++c) std::fprintf(csv_, "%s%s", c ? "," : "", cols[c].name);
+  std::fprintf(csv_, "\n");
+  return "";
+}
+
+void History::Append(const HistoryRow &row)
+{
+  rows_.push_back(row);
+  if (!csv_) return;
+  const auto &cols = HistoryColumns();
+  for (size_t c = 0; c < cols.size(); ++c) {
+    const double v = row.*(cols[c].field);
+    if (c) std::fputc(',', csv_);
+    if (cols[c].field == &HistoryRow::limiter) std::fprintf(csv_, "%s", LimiterName(static_cast<int>(v)));
+    else std::fprintf(csv_, "%.12g", v);
+  }
+  std::fputc('\n', csv_);
+  std::fflush(csv_); // a long run can be watched (tail -f) while it goes
+}
+
+bool History::FinishCsv()
+{
+  if (!csv_) return true;
+  std::fclose(csv_);
+  csv_ = nullptr;
+  return std::rename((csv_path_ + ".partial").c_str(), csv_path_.c_str()) == 0;
+}
+
+} // namespace tf

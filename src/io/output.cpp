@@ -1,0 +1,187 @@
+#include "tubeform/io/output.hpp"
+
+#include <petscviewerhdf5.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include "tubeform/core.hpp"
+#include "tubeform/driver/log.hpp"
+
+namespace tf {
+
+// HDF5 calls return a negative value on failure.
+#define TF_CHECK_HDF5(expr) PetscCheck((expr) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call failed: %s", #expr)
+
+PetscErrorCode CheckWritable(MPI_Comm comm, const std::string &path, const char *option)
+{
+  PetscMPIInt rank;
+  int ok = 1;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    const std::string probe = path + ".probe";
+    std::FILE *f = std::fopen(probe.c_str(), "w");
+    ok = f != nullptr;
+    if (f) {
+      std::fclose(f);
+      std::remove(probe.c_str());
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
+  PetscCheck(ok, comm, PETSC_ERR_USER_INPUT, "%s %s: cannot create the file (does the directory exist and is it writable?)", option, path.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+ResultWriter::~ResultWriter()
+{
+  if (viewer_) (void)PetscViewerDestroy(&viewer_);
+}
+
+PetscErrorCode ResultWriter::Open(const Mesh &mesh, const std::string &path)
+{
+  PetscFunctionBeginUser;
+  mesh_ = &mesh;
+  path_ = path;
+  PetscCall(CheckWritable(mesh.comm, path, "-output"));
+  PetscCall(PetscViewerHDF5Open(mesh.comm, (path + ".partial").c_str(), FILE_MODE_WRITE, &viewer_));
+  PetscCall(PetscViewerPushFormat(viewer_, PETSC_VIEWER_HDF5_XDMF));
+  PetscCall(DMView(mesh.dm, viewer_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::vector<double> &u, const std::vector<CellField> &cells)
+{
+  Vec local, global;
+  PetscScalar *a;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::output, 0, 0, 0, 0));
+  times_.push_back(time);
+  // Vertex field: displacement (2 components).
+  PetscCall(DMGetLocalVector(mesh_->dm, &local));
+  PetscCall(DMGetGlobalVector(mesh_->dm, &global));
+  PetscCall(VecGetArray(local, &a));
+  for (PetscInt n = 0; n < mesh_->num_nodes; ++n) {
+    a[mesh_->node_dof[n]] = u[2 * n];
+    a[mesh_->node_dof[n] + 1] = u[2 * n + 1];
+  }
+  PetscCall(VecRestoreArray(local, &a));
+  PetscCall(DMLocalToGlobal(mesh_->dm, local, INSERT_VALUES, global));
+  PetscCall(PetscObjectSetName((PetscObject)global, "displacement"));
+  PetscCall(DMSetOutputSequenceNumber(mesh_->dm, step, time));
+  PetscCall(VecView(global, viewer_));
+  PetscCall(DMRestoreGlobalVector(mesh_->dm, &global));
+  PetscCall(DMRestoreLocalVector(mesh_->dm, &local));
+
+  // Cell fields: one scalar per cell.
+  cell_names_.clear();
+  PetscCall(DMSetOutputSequenceNumber(mesh_->cell_dm, step, time));
+  for (const auto &field : cells) {
+    cell_names_.push_back(field.name);
+    PetscCall(DMGetGlobalVector(mesh_->cell_dm, &global));
+    PetscCall(VecGetArray(global, &a));
+    for (PetscInt c = 0; c < mesh_->num_cells; ++c) a[c] = field.values[c];
+    PetscCall(VecRestoreArray(global, &a));
+    PetscCall(PetscObjectSetName((PetscObject)global, field.name.c_str()));
+    PetscCall(VecView(global, viewer_));
+    PetscCall(DMRestoreGlobalVector(mesh_->cell_dm, &global));
+  }
+  PetscCall(PetscLogEventEnd(Log::output, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std::pair<std::string, double>> &metrics)
+{
+  hid_t file, group;
+  PetscMPIInt rank;
+  char *all_options;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::output, 0, 0, 0, 0));
+  PetscCallMPI(MPI_Comm_rank(mesh_->comm, &rank));
+  // /history: one 1-D dataset per column. Dataset creation is collective;
+  // every rank holds the same history, rank 0 writes the values.
+  PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
+  const hsize_t n = history.rows().size();
+  group = H5Gcreate2(file, "/history", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  TF_CHECK_HDF5(group);
+  std::vector<double> column(n);
+  for (const auto &col : HistoryColumns()) {
+    hid_t space, dset;
+    for (hsize_t r = 0; r < n; ++r) column[r] = history.rows()[r].*(col.field);
+    space = H5Screate_simple(1, &n, nullptr);
+  TF_CHECK_HDF5(space);
+    dset = H5Dcreate2(group, col.name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  TF_CHECK_HDF5(dset);
+    if (rank == 0 && n > 0) TF_CHECK_HDF5(H5Dwrite(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, column.data()));
+    TF_CHECK_HDF5(H5Dclose(dset));
+    TF_CHECK_HDF5(H5Sclose(space));
+  }
+  TF_CHECK_HDF5(H5Gclose(group));
+  const PetscInt nrows = (PetscInt)n;
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/history", "rows", PETSC_INT, &nrows));
+  std::string names;
+  for (int k = 0; k < kNumLimiters; ++k) names += std::string(k ? "," : "") + LimiterName(k);
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/history", "limiter_names", PETSC_STRING, names.c_str()));
+  for (const auto &m : metrics) PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/history", m.first.c_str(), PETSC_DOUBLE, &m.second));
+  PetscCall(PetscOptionsGetAll(nullptr, &all_options));
+  PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/", "options", PETSC_STRING, all_options));
+  PetscCall(PetscFree(all_options));
+  PetscCall(PetscViewerPopFormat(viewer_));
+  PetscCall(PetscViewerDestroy(&viewer_));
+
+  PetscCallMPI(MPI_Barrier(mesh_->comm));
+  int ok = 1;
+  if (rank == 0) {
+    ok = std::rename((path_ + ".partial").c_str(), path_.c_str()) == 0;
+    if (ok) PetscCall(WriteXdmf());
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, mesh_->comm));
+  PetscCheck(ok, mesh_->comm, PETSC_ERR_FILE_WRITE, "-output %s: cannot rename the finished file into place", path_.c_str());
+  PetscCall(PetscLogEventEnd(Log::output, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ResultWriter::WriteXdmf() const
+{
+  PetscFunctionBeginUser;
+  // ParaView reads the mesh (initial coordinates) and the fields from the .h5;
+  // "Warp By Vector" with displacement shows the deformed shape.
+  std::string h5 = path_, base = path_;
+  const auto slash = h5.rfind('/');
+  if (slash != std::string::npos) h5 = h5.substr(slash + 1);
+  if (base.size() > 3 && base.substr(base.size() - 3) == ".h5") base.resize(base.size() - 3);
+  std::ofstream x(base + ".xmf");
+  const PetscInt nv = mesh_->num_global_nodes, nc = mesh_->num_global_cells, nt = (PetscInt)times_.size();
+  x << "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n<Domain>\n";
+  x << "<Grid Name=\"tubeform\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (PetscInt k = 0; k < nt; ++k) {
+    x << " <Grid Name=\"step" << k << "\" GridType=\"Uniform\">\n";
+    x << "  <Time Value=\"" << times_[k] << "\"/>\n";
+    x << "  <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << nc << "\">\n";
+    x << "   <DataItem Format=\"HDF\" DataType=\"Int\" Dimensions=\"" << nc << " 4\">" << h5 << ":/viz/topology/cells</DataItem>\n  </Topology>\n";
+    x << "  <Geometry GeometryType=\"XY\">\n";
+    x << "   <DataItem Format=\"HDF\" Dimensions=\"" << nv << " 2\">" << h5 << ":/geometry/vertices</DataItem>\n  </Geometry>\n";
+    const auto hyperslab = [&](const std::string &path, PetscInt n, int comps) {
+      x << "   <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << n << (comps > 1 ? " " + std::to_string(comps) : "") << "\">\n";
+      x << "    <DataItem Dimensions=\"3 " << (comps > 1 ? 3 : 2) << "\" Format=\"XML\">" << k << " 0" << (comps > 1 ? " 0" : "") << " 1 1" << (comps > 1 ? " 1" : "") << " 1 " << n << (comps > 1 ? " " + std::to_string(comps) : "") << "</DataItem>\n";
+      x << "    <DataItem Format=\"HDF\" Dimensions=\"" << nt << " " << n << (comps > 1 ? " " + std::to_string(comps) : "") << "\">" << h5 << ":" << path << "</DataItem>\n   </DataItem>\n";
+    };
+    x << "  <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n";
+    hyperslab("/vertex_fields/displacement_u", nv, 2);
+    x << "  </Attribute>\n";
+    for (const auto &name : cell_names_) {
+      x << "  <Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
+      hyperslab("/cell_fields/" + name + "_c", nc, 1);
+      x << "  </Attribute>\n";
+    }
+    x << " </Grid>\n";
+  }
+  x << "</Grid>\n</Domain>\n</Xdmf>\n";
+  PetscCheck(x.good(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s.xmf", base.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

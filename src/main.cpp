@@ -1,0 +1,56 @@
+// tubeform: elasto-plastic FE analysis of squaring a circular tube between
+// V-shaped dies (Huang 2008), on PETSc.
+//
+// Sample runs:
+//   mpirun -n 2 build/tubeform -options_file options/pressure.opts -monitor
+//   build/tubeform -help
+#include <petscsys.h>
+
+#include "tubeform/core.hpp"
+#include "tubeform/driver/options.hpp"
+#include "tubeform/driver/problem.hpp"
+
+static const char help[] =
+  "tubeform: updated-Lagrangian elasto-plastic FE analysis of tube squaring (plane strain).\n"
+  "Usage: mpirun -n 2 build/tubeform -options_file options/<scene>.opts [-option value ...]\n\n";
+
+static PetscErrorCode Run()
+{
+  tf::Options opt;
+  PetscFunctionBeginUser;
+  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, opt));
+  if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
+  tf::Problem problem;
+  PetscCall(problem.Setup(PETSC_COMM_WORLD, opt));
+  PetscCall(problem.Run());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int main(int argc, char **argv)
+{
+  PetscMPIInt rank;
+  PetscErrorCode ierr = PetscInitialize(&argc, &argv, nullptr, help);
+  if (ierr) return 1;
+  // Errors come back as codes; main prints one line and every rank exits.
+  (void)PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+  (void)MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  ierr = Run();
+  if (ierr) {
+    const char *text = nullptr;
+    char *specific = nullptr;
+    (void)PetscErrorMessage(ierr, &text, &specific);
+    const char *msg = specific && specific[0] ? specific : (text ? text : "unknown error");
+    if (ierr == PETSC_ERR_USER_INPUT || ierr == PETSC_ERR_FILE_WRITE || ierr == PETSC_ERR_NOT_CONVERGED) {
+      // Collective errors: every rank found the same problem; rank 0 reports it.
+      if (rank == 0) fprintf(stderr, "tubeform: error: %s\n", msg);
+      (void)PetscFinalize();
+      return 1;
+    }
+    // Anything else may have struck one rank only: report it and abort the job
+    // so that no rank waits forever in a collective call.
+    fprintf(stderr, "tubeform: error on rank %d: %s\n", rank, msg);
+    MPI_Abort(MPI_COMM_WORLD, 2);
+  }
+  ierr = PetscFinalize();
+  return ierr ? 1 : 0;
+}

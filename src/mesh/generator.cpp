@@ -1,0 +1,56 @@
+#include "tubeform/mesh/generator.hpp"
+
+#include <cmath>
+
+namespace tf {
+
+SerialMesh GenerateQuarterAnnulus(double ro, double t, int nt, int ntheta)
+{
+  SerialMesh m;
+  const double ri = ro - t;
+  const auto id = [nt](int i, int j) { return i + (nt + 1) * j; };
+  m.xy.resize(2 * (nt + 1) * (ntheta + 1));
+  for (int j = 0; j <= ntheta; ++j) {
+    const double th = 0.5 * M_PI * j / ntheta;
+    // Exact end values keep symmetry-plane nodes exactly on the axes.
+    const double c = (j == ntheta) ? 0.0 : std::cos(th), s = (j == 0) ? 0.0 : std::sin(th);
+    for (int i = 0; i <= nt; ++i) {
+      const double r = ri + t * i / nt;
+      m.xy[2 * id(i, j)] = r * c;
+      m.xy[2 * id(i, j) + 1] = r * s;
+    }
+  }
+  for (int j = 0; j < ntheta; ++j)
+    for (int i = 0; i < nt; ++i)
+      m.quads.insert(m.quads.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  for (int j = 0; j < ntheta; ++j) {
+    m.edge_sets["inner"].push_back({id(0, j), id(0, j + 1)});
+    m.edge_sets["outer"].push_back({id(nt, j), id(nt, j + 1)});
+  }
+  for (int i = 0; i < nt; ++i) {
+    m.edge_sets["y0"].push_back({id(i, 0), id(i + 1, 0)});
+    m.edge_sets["x0"].push_back({id(i, ntheta), id(i + 1, ntheta)});
+  }
+  return m;
+}
+
+SerialMesh GenerateRectangle(double lx, double ly, int nx, int ny)
+{
+  SerialMesh m;
+  const auto id = [nx](int i, int j) { return i + (nx + 1) * j; };
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) m.xy.insert(m.xy.end(), {lx * i / nx, ly * j / ny});
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) m.quads.insert(m.quads.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  for (int i = 0; i < nx; ++i) {
+    m.edge_sets["bottom"].push_back({id(i, 0), id(i + 1, 0)});
+    m.edge_sets["top"].push_back({id(i, ny), id(i + 1, ny)});
+  }
+  for (int j = 0; j < ny; ++j) {
+    m.edge_sets["left"].push_back({id(0, j), id(0, j + 1)});
+    m.edge_sets["right"].push_back({id(nx, j), id(nx, j + 1)});
+  }
+  return m;
+}
+
+} // namespace tf

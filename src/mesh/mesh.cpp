@@ -1,0 +1,227 @@
+#include "tubeform/mesh/mesh.hpp"
+
+#include <petscsf.h>
+
+#include "tubeform/core.hpp"
+#include "tubeform/mesh/partition.hpp"
+
+namespace tf {
+
+Mesh::~Mesh()
+{
+  // Destructors cannot return error codes; destruction failures are not actionable.
+  if (cell_dm) (void)DMDestroy(&cell_dm);
+  if (dm) (void)DMDestroy(&dm);
+}
+
+PetscErrorCode Mesh::Create(MPI_Comm c, const SerialMesh &serial, const std::vector<std::string> &sets)
+{
+  PetscMPIInt rank, size;
+  DM serial_dm, dist = nullptr;
+  PetscSF migration = nullptr;
+
+  PetscFunctionBeginUser;
+  comm = c;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+
+  // 1. Rank 0 builds the whole mesh; the others contribute nothing.
+  const PetscInt nc = rank == 0 ? serial.num_cells() : 0, nv = rank == 0 ? serial.num_nodes() : 0;
+  std::vector<PetscInt> cells(serial.quads.begin(), serial.quads.end());
+  PetscCall(DMPlexCreateFromCellListPetsc(comm, 2, nc, nv, 4, PETSC_TRUE, rank == 0 ? cells.data() : nullptr, 2, rank == 0 ? serial.xy.data() : nullptr, &serial_dm));
+  PetscCall(PetscObjectSetName((PetscObject)serial_dm, "mesh"));
+
+  // 2. Boundary sets become labels on edges (and, completed, their vertices);
+  //    labels travel with the points when the mesh is distributed.
+  for (const auto &name : sets) {
+    DMLabel label;
+    PetscCall(DMCreateLabel(serial_dm, name.c_str()));
+    PetscCall(DMGetLabel(serial_dm, name.c_str(), &label));
+    if (rank == 0 && serial.edge_sets.count(name)) {
+      for (const auto &e : serial.edge_sets.at(name)) {
+        const PetscInt verts[2] = {nc + e[0], nc + e[1]};
+        PetscInt njoin;
+        const PetscInt *join;
+        PetscCall(DMPlexGetJoin(serial_dm, 2, verts, &njoin, &join));
+        PetscCheck(njoin == 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Boundary set '%s': nodes %d and %d are not joined by a cell edge", name.c_str(), (int)e[0], (int)e[1]);
+        PetscCall(DMLabelSetValue(label, join[0], 1));
+        PetscCall(DMPlexRestoreJoin(serial_dm, 2, verts, &njoin, &join));
+      }
+    }
+    PetscCall(DMPlexLabelComplete(serial_dm, label));
+  }
+
+  // 3. METIS decides which rank owns each cell; a shell partitioner hands that
+  //    to DMPlexDistribute.
+  if (size > 1) {
+    std::vector<PetscInt> sizes(size, 0), points;
+    if (rank == 0) {
+      std::vector<int> part;
+      PetscCall(PartitionCells(serial, size, part));
+      std::vector<std::vector<PetscInt>> byrank(size);
+      for (PetscInt cidx = 0; cidx < nc; ++cidx) byrank[part[cidx]].push_back(cidx);
+      for (int r = 0; r < size; ++r) {
+        PetscCheck(!byrank[r].empty(), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "METIS left rank %d without cells: use fewer ranks or a finer mesh", r);
+        sizes[r] = (PetscInt)byrank[r].size();
+        points.insert(points.end(), byrank[r].begin(), byrank[r].end());
+      }
+    }
+    PetscPartitioner part;
+    PetscCall(DMPlexGetPartitioner(serial_dm, &part));
+    PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERSHELL));
+    PetscCall(PetscPartitionerShellSetPartition(part, size, sizes.data(), rank == 0 ? points.data() : nullptr));
+    PetscCall(DMPlexDistribute(serial_dm, 0, &migration, &dist));
+  }
+  if (dist) {
+    PetscCall(DMDestroy(&serial_dm));
+    dm = dist;
+  } else dm = serial_dm;
+  PetscCall(PetscObjectSetName((PetscObject)dm, "mesh"));
+
+  // 4. Two displacement dofs per vertex; one value per cell on the clone.
+  PetscSection s;
+  PetscInt pstart, pend, cs, ce, vs, ve;
+  PetscCall(DMPlexGetChart(dm, &pstart, &pend));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cs, &ce));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vs, &ve));
+  PetscCall(PetscSectionCreate(comm, &s));
+  PetscCall(PetscSectionSetNumFields(s, 1));
+  PetscCall(PetscSectionSetFieldName(s, 0, "u"));
+  PetscCall(PetscSectionSetFieldComponents(s, 0, 2));
+  PetscCall(PetscSectionSetChart(s, pstart, pend));
+  for (PetscInt v = vs; v < ve; ++v) {
+    PetscCall(PetscSectionSetDof(s, v, 2));
+    PetscCall(PetscSectionSetFieldDof(s, v, 0, 2));
+  }
+  PetscCall(PetscSectionSetUp(s));
+  PetscCall(DMSetLocalSection(dm, s));
+  PetscCall(PetscSectionDestroy(&s));
+  PetscCall(DMSetMatType(dm, MATAIJ));
+
+  PetscCall(DMClone(dm, &cell_dm));
+  PetscCall(PetscSectionCreate(comm, &s));
+  PetscCall(PetscSectionSetNumFields(s, 1));
+  PetscCall(PetscSectionSetFieldName(s, 0, "c"));
+  PetscCall(PetscSectionSetChart(s, pstart, pend));
+  for (PetscInt cc = cs; cc < ce; ++cc) {
+    PetscCall(PetscSectionSetDof(s, cc, 1));
+    PetscCall(PetscSectionSetFieldDof(s, cc, 0, 1));
+  }
+  PetscCall(PetscSectionSetUp(s));
+  PetscCall(DMSetLocalSection(cell_dm, s));
+  PetscCall(PetscSectionDestroy(&s));
+
+  PetscCall(BuildTables(sets, migration));
+  PetscCall(PetscSFDestroy(&migration));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Mesh::BuildTables(const std::vector<std::string> &sets, PetscSF migration)
+{
+  PetscSection local, global, coord_section;
+  Vec coords;
+  const PetscScalar *xa;
+  PetscInt pstart, pend, ce, ve;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetChart(dm, &pstart, &pend));
+  PetscCall(DMPlexGetHeightStratum(dm, 0, &cstart_, &ce));
+  PetscCall(DMPlexGetDepthStratum(dm, 0, &vstart_, &ve));
+  num_cells = ce - cstart_;
+  num_nodes = ve - vstart_;
+  PetscCall(DMGetLocalSection(dm, &local));
+  PetscCall(DMGetGlobalSection(dm, &global));
+
+  // Original point numbers: broadcast each serial point's own number along
+  // the migration SF (identity on one rank).
+  std::vector<PetscInt> orig(pend - pstart);
+  if (migration) {
+    PetscInt nroots;
+    PetscCall(PetscSFGetGraph(migration, &nroots, nullptr, nullptr, nullptr));
+    std::vector<PetscInt> roots(nroots);
+    for (PetscInt p = 0; p < nroots; ++p) roots[p] = p;
+    PetscCall(PetscSFBcastBegin(migration, MPIU_INT, roots.data(), orig.data(), MPI_REPLACE));
+    PetscCall(PetscSFBcastEnd(migration, MPIU_INT, roots.data(), orig.data(), MPI_REPLACE));
+  } else
+    for (PetscInt p = pstart; p < pend; ++p) orig[p - pstart] = p;
+  PetscCall(MPIU_Allreduce(&num_cells, &num_global_cells, 1, MPIU_INT, MPI_SUM, comm));
+
+  // Serial points are numbered cells first, then vertices.
+  cell_orig.resize(num_cells);
+  for (PetscInt c = 0; c < num_cells; ++c) cell_orig[c] = orig[cstart_ + c - pstart];
+  node_orig.resize(num_nodes);
+  node_dof.resize(num_nodes);
+  node_owned.resize(num_nodes);
+  x0.resize(2 * num_nodes);
+  PetscCall(DMGetCoordinateSection(dm, &coord_section));
+  PetscCall(DMGetCoordinatesLocal(dm, &coords));
+  PetscCall(VecGetArrayRead(coords, &xa));
+  PetscInt owned = 0;
+  for (PetscInt n = 0; n < num_nodes; ++n) {
+    const PetscInt v = vstart_ + n;
+    PetscInt off, goff, coff;
+    node_orig[n] = orig[v - pstart] - num_global_cells;
+    PetscCall(PetscSectionGetOffset(local, v, &off));
+    PetscCall(PetscSectionGetOffset(global, v, &goff));
+    PetscCall(PetscSectionGetOffset(coord_section, v, &coff));
+    node_dof[n] = off;
+    node_owned[n] = goff >= 0;
+    owned += goff >= 0;
+    x0[2 * n] = PetscRealPart(xa[coff]);
+    x0[2 * n + 1] = PetscRealPart(xa[coff + 1]);
+  }
+  PetscCall(VecRestoreArrayRead(coords, &xa));
+  PetscCall(MPIU_Allreduce(&owned, &num_global_nodes, 1, MPIU_INT, MPI_SUM, comm));
+
+  // Cell -> node table from the closure (vertex order = input order).
+  cell_nodes.resize(4 * num_cells);
+  for (PetscInt c = 0; c < num_cells; ++c) {
+    PetscInt nclosure, *closure = nullptr, k = 0;
+    PetscCall(DMPlexGetTransitiveClosure(dm, cstart_ + c, PETSC_TRUE, &nclosure, &closure));
+    for (PetscInt q = 0; q < nclosure; ++q) {
+      const PetscInt p = closure[2 * q];
+      if (p >= vstart_ && p < ve) {
+        PetscCheck(k < 4, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Cell %d has more than 4 vertices", (int)c);
+        cell_nodes[4 * c + k++] = p - vstart_;
+      }
+    }
+    PetscCall(DMPlexRestoreTransitiveClosure(dm, cstart_ + c, PETSC_TRUE, &nclosure, &closure));
+    PetscCheck(k == 4, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Cell %d has %d vertices, expected 4", (int)c, (int)k);
+  }
+
+  // Boundary sets: vertices of the label become node sets; labelled edges
+  // (each bounds exactly one cell, so exactly one rank has it) become edge sets.
+  for (const auto &name : sets) {
+    DMLabel label;
+    IS is;
+    PetscCall(DMGetLabel(dm, name.c_str(), &label));
+    auto &nodes = node_sets[name];
+    auto &edges = edge_sets[name];
+    if (!label) continue;
+    PetscCall(DMLabelGetStratumIS(label, 1, &is));
+    if (!is) continue;
+    PetscInt n;
+    const PetscInt *pts;
+    PetscCall(ISGetLocalSize(is, &n));
+    PetscCall(ISGetIndices(is, &pts));
+    for (PetscInt q = 0; q < n; ++q) {
+      const PetscInt p = pts[q];
+      if (p >= vstart_ && p < ve) nodes.push_back(p - vstart_);
+      else if (p < cstart_ || p >= ce) {
+        PetscInt nsupp, ncone;
+        const PetscInt *supp, *cone;
+        PetscCall(DMPlexGetSupportSize(dm, p, &nsupp));
+        PetscCall(DMPlexGetConeSize(dm, p, &ncone));
+        if (nsupp != 1 || ncone != 2) continue;
+        PetscCall(DMPlexGetSupport(dm, p, &supp));
+        PetscCall(DMPlexGetCone(dm, p, &cone));
+        edges.push_back({supp[0] - cstart_, {cone[0] - vstart_, cone[1] - vstart_}});
+      }
+    }
+    PetscCall(ISRestoreIndices(is, &pts));
+    PetscCall(ISDestroy(&is));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
