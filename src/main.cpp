@@ -14,11 +14,15 @@ static const char help[] =
   "tubeform: updated-Lagrangian elasto-plastic FE analysis of tube squaring (plane strain).\n"
   "Usage: mpirun -n 2 build/tubeform -options_file options/<scene>.opts [-option value ...]\n\n";
 
-static PetscErrorCode Run()
+// `collective` tells main whether an error seen so far was found by every
+// rank at once (option parsing is: each rank reads the same options).
+static PetscErrorCode Run(bool &collective)
 {
   tf::Options opt;
   PetscFunctionBeginUser;
+  collective = true;
   PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, opt));
+  collective = false;
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
   tf::Problem problem;
   PetscCall(problem.Setup(PETSC_COMM_WORLD, opt));
@@ -34,13 +38,14 @@ int main(int argc, char **argv)
   // Errors come back as codes; main prints one line and every rank exits.
   (void)PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
   (void)MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  ierr = Run();
+  bool collective = false;
+  ierr = Run(collective);
   if (ierr) {
     const char *text = nullptr;
     char *specific = nullptr;
     (void)PetscErrorMessage(ierr, &text, &specific);
     const char *msg = specific && specific[0] ? specific : (text ? text : "unknown error");
-    if (ierr == PETSC_ERR_USER_INPUT || ierr == PETSC_ERR_FILE_WRITE || ierr == PETSC_ERR_NOT_CONVERGED) {
+    if (collective || ierr == PETSC_ERR_USER_INPUT || ierr == PETSC_ERR_FILE_WRITE || ierr == PETSC_ERR_NOT_CONVERGED) {
       // Collective errors: every rank found the same problem; rank 0 reports it.
       if (rank == 0) fprintf(stderr, "tubeform: error: %s\n", msg);
       (void)PetscFinalize();

@@ -87,27 +87,34 @@ PetscErrorCode System::Begin()
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode System::AddElement(PetscInt cell, const fe::ElemMat &ke_in)
+PetscErrorCode System::AddElement(PetscInt cell, const fe::ElemMat &ke)
 {
-  PetscInt idx[fe::kDofs];
-  PetscScalar vals[fe::kDofs * fe::kDofs];
-  fe::ElemMat ke = ke_in;
-  const PetscInt *nodes = &mesh_->cell_nodes[4 * cell];
+  PetscFunctionBeginUser;
+  PetscCall(AddBlock(&mesh_->cell_nodes[4 * cell], fe::kNodes, &ke[0][0]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode System::AddBlock(const PetscInt *nodes, int nn, const double *k_in)
+{
+  constexpr int kMax = 2 * 9; // up to 9-node blocks
+  PetscInt idx[kMax];
+  PetscScalar k[kMax * kMax];
+  const int nd = 2 * nn;
 
   PetscFunctionBeginUser;
+  PetscCheck(nn <= 9, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "AddBlock supports at most 9 nodes");
+  for (int i = 0; i < nd * nd; ++i) k[i] = k_in[i];
   // K' = T^T K T for nodes with a rotated frame: rotate their rows, then columns.
-  for (int a = 0; a < fe::kNodes; ++a) {
+  for (int a = 0; a < nn; ++a) {
     if (!has_frame_[nodes[a]]) continue;
-    for (int j = 0; j < fe::kDofs; ++j) Rotate(nodes[a], ke[2 * a][j], ke[2 * a + 1][j], true);
-    for (int i = 0; i < fe::kDofs; ++i) Rotate(nodes[a], ke[i][2 * a], ke[i][2 * a + 1], true);
+    for (int j = 0; j < nd; ++j) Rotate(nodes[a], k[(2 * a) * nd + j], k[(2 * a + 1) * nd + j], true);
+    for (int i = 0; i < nd; ++i) Rotate(nodes[a], k[i * nd + 2 * a], k[i * nd + 2 * a + 1], true);
   }
-  for (int a = 0; a < fe::kNodes; ++a) {
+  for (int a = 0; a < nn; ++a) {
     idx[2 * a] = mesh_->node_dof[nodes[a]];
     idx[2 * a + 1] = mesh_->node_dof[nodes[a]] + 1;
   }
-  for (int i = 0; i < fe::kDofs; ++i)
-    for (int j = 0; j < fe::kDofs; ++j) vals[i * fe::kDofs + j] = ke[i][j];
-  PetscCall(MatSetValuesLocal(k_, fe::kDofs, idx, fe::kDofs, idx, vals, ADD_VALUES));
+  PetscCall(MatSetValuesLocal(k_, nd, idx, nd, idx, k, ADD_VALUES));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -10,9 +10,13 @@ namespace tf {
 
 namespace {
 
-// Nodal forces of a uniform pressure p on the edges of `set`, on the current
-// geometry: each edge pushes its two nodes by -p n L / 2 (n outward from the body).
-PetscErrorCode AddEdgePressure(Problem &p, const std::string &set, double pressure, Vec f_local, bool to_system)
+// Nodal forces of a uniform pressure on the edges of `set`, on the current
+// geometry: each edge pushes its two nodes by -p n L / 2 (n outward from the
+// body). With `stiffness_p` != 0 the follower-load stiffness of that pressure
+// goes into the system: with n L = (y_b - y_a, x_a - x_b) the nodal force
+// changes by (p/2) (du_ya - du_yb, du_xb - du_xa) as the edge moves, and
+// moving that to the left-hand side adds its negative to K.
+PetscErrorCode AddEdgePressure(Problem &p, const std::string &set, double pressure, Vec f_local, bool to_system, double stiffness_p = 0)
 {
   PetscScalar *f;
   Mesh &mesh = p.mesh();
@@ -21,16 +25,27 @@ PetscErrorCode AddEdgePressure(Problem &p, const std::string &set, double pressu
   PetscFunctionBeginUser;
   PetscCall(VecGetArray(f_local, &f));
   for (const auto &edge : mesh.edge_sets[set]) {
-    const PetscInt a = edge.node[0], b = edge.node[1];
     double cx = 0, cy = 0;
     for (int k = 0; k < 4; ++k) {
       const PetscInt n = mesh.cell_nodes[4 * edge.cell + k];
       cx += 0.25 * x[2 * n];
       cy += 0.25 * x[2 * n + 1];
     }
-    double nx = x[2 * b + 1] - x[2 * a + 1], ny = -(x[2 * b] - x[2 * a]); // |n| = edge length
+    PetscInt a = edge.node[0], b = edge.node[1];
     const double mx = 0.5 * (x[2 * a] + x[2 * b]) - cx, my = 0.5 * (x[2 * a + 1] + x[2 * b + 1]) - cy;
-    if (nx * mx + ny * my < 0) nx = -nx, ny = -ny;
+    if ((x[2 * b + 1] - x[2 * a + 1]) * mx - (x[2 * b] - x[2 * a]) * my < 0) std::swap(a, b); // orient a -> b so n points out
+    const double nx = x[2 * b + 1] - x[2 * a + 1], ny = -(x[2 * b] - x[2 * a]); // |n| = edge length
+    if (stiffness_p != 0) {
+      const double h = 0.5 * stiffness_p;
+      const PetscInt nodes[2] = {a, b};
+      // dofs (a_x, a_y, b_x, b_y); both nodes get the same rows.
+      double k[16] = {0};
+      for (int r = 0; r < 2; ++r) {
+        k[(2 * r) * 4 + 1] = -h, k[(2 * r) * 4 + 3] = h;     // row x: -(dF_x/d y_a, dF_x/d y_b)
+        k[(2 * r + 1) * 4 + 0] = h, k[(2 * r + 1) * 4 + 2] = -h; // row y: -(dF_y/d x_a, dF_y/d x_b)
+      }
+      PetscCall(p.system().AddBlock(nodes, 2, k));
+    }
     for (PetscInt node : {a, b}) {
       const double fx = -0.5 * pressure * nx, fy = -0.5 * pressure * ny;
       f[mesh.node_dof[node]] += fx;
@@ -84,7 +99,7 @@ public:
   PetscErrorCode Load(Problem &p, double lambda, double dlambda, Vec dforce) override
   {
     PetscFunctionBeginUser;
-    PetscCall(AddEdgePressure(p, "inner", dlambda * p_final_, dforce, true));
+    PetscCall(AddEdgePressure(p, "inner", dlambda * p_final_, dforce, true, lambda * p_final_));
     QuarterSymmetry(p);
     PetscFunctionReturn(PETSC_SUCCESS);
   }

@@ -40,6 +40,9 @@ public:
   // Assembly of one increment: Begin, Add*, then Solve.
   PetscErrorCode Begin();
   PetscErrorCode AddElement(PetscInt cell, const fe::ElemMat &ke);
+  // Adds a dense block coupling `nn` local nodes (2 nn x 2 nn, row-major,
+  // global frame); used for load stiffness and contact rows.
+  PetscErrorCode AddBlock(const PetscInt *nodes, int nn, const double *k);
   void AddForce(PetscInt node, double fx, double fy); // global-frame load increment
   void Prescribe(PetscInt node, int comp, double value) { prescribed_.push_back({node, comp, value}); }
   // Solves; `du` (local vector, global frame, ghosts filled) receives the

@@ -1,0 +1,38 @@
+"""Bad input: a one-line error naming the option or file, a non-zero exit,
+no hang (timeout) and no core dump, on 1 and 2 ranks; and an earlier result
+file is left untouched by the failed run."""
+import hashlib
+import os
+
+from tfcheck import Checks, args, out, run
+
+tf, mpirun, src = args()
+k = Checks("bad_input")
+base = ["-options_file", f"{src}/options/pressure.opts", "-mesh_nt", 2, "-mesh_ntheta", 6, "-increments", 1]
+
+# A good run leaves a result we must not lose.
+run(tf, mpirun, 1, base + ["-output", out("keep.h5"), "-history_csv", out("keep.csv")])
+digest = hashlib.sha256(open("keep.h5", "rb").read()).hexdigest()
+
+cases = [
+    (["-tube_t", "-1"], "-tube_t"),
+    (["-tube_t", "30"], "-tube_t"),
+    (["-mesh_nt", "0"], "-mesh_nt"),
+    (["-material_nu", "0.5"], "-material_nu"),
+    (["-material_law", "bogus"], "-material_law"),
+    (["-scene", "nonsense"], "-scene"),
+    (["-increments", "0"], "-increments"),
+    (["-mesh_file", "no/such/mesh.msh"], "no/such/mesh.msh"),
+    (["-mesh_file", f"{src}/options/pressure.opts"], "pressure.opts"),
+    (["-output", out("no_such_dir/out.h5")], "-output"),
+    (["-history_csv", out("no_such_dir/h.csv")], "-history_csv"),
+]
+for np_ in (1, 2):
+    for extra, needle in cases:
+        p = run(tf, mpirun, np_, base + ["-output", out("keep.h5"), "-history_csv", out("keep.csv")] + extra, check=False, timeout=60)
+        lines = [l for l in (p.stderr + p.stdout).splitlines() if "error" in l.lower()]
+        ok = p.returncode != 0 and p.returncode < 128 and len(lines) >= 1 and needle in lines[0]
+        k.check(ok, f"np={np_} {' '.join(extra)}: exit {p.returncode}, message: {lines[0] if lines else '(none)'}")
+        k.check(not os.path.exists("core"), "no core dump")
+k.check(hashlib.sha256(open("keep.h5", "rb").read()).hexdigest() == digest, "earlier result file unchanged")
+k.done()

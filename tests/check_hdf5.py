@@ -1,0 +1,56 @@
+"""The result file read back with h5py: mesh, fields (one time-series entry
+per output increment, in the shapes ParaView's XDMF reader expects), the
+/history group with every documented column, the options attribute and the
+.xmf beside it; the CSV with its header. Sizes are computed from the options
+(structured mesh: (nt+1)(ntheta+1) nodes, nt*ntheta cells), not from the code.
+"""
+import csv
+import os
+import xml.etree.ElementTree as ET
+
+import h5py
+import numpy as np
+
+from tfcheck import Checks, args, out, run
+
+tf, mpirun, src = args()
+k = Checks("hdf5")
+nt, nth, incs, every = 3, 10, 5, 2
+run(tf, mpirun, 2, ["-options_file", f"{src}/options/pressure.opts", "-mesh_nt", nt, "-mesh_ntheta", nth,
+                    "-increments", incs, "-output_every", every, "-output", out("io.h5"), "-history_csv", out("io.csv")])
+nv, nc = (nt + 1) * (nth + 1), nt * nth
+steps = 1 + len([i for i in range(1, incs + 1) if i % every == 0 or i == incs])  # initial state + outputs
+columns = ["increment", "stroke", "load", "rmin", "limiter", "n_contact", "n_plastic", "friction_iters", "residual",
+           "w_ext", "w_int", "w_plastic", "w_friction", "w_elastic", "energy_error", "c_over_t", "x_max", "y_max",
+           "deviation_ratio"]
+with h5py.File("io.h5", "r") as h:
+    k.check(h["/geometry/vertices"].shape == (nv, 2), f"/geometry/vertices {h['/geometry/vertices'].shape} == ({nv}, 2)")
+    k.check(h["/viz/topology/cells"].shape == (nc, 4), f"/viz/topology/cells {h['/viz/topology/cells'].shape} == ({nc}, 4)")
+    k.check(h["/vertex_fields/displacement_u"].shape == (steps, nv, 2), f"displacement {h['/vertex_fields/displacement_u'].shape} == ({steps}, {nv}, 2)")
+    for f in ("sigma_xx", "sigma_yy", "sigma_zz", "sigma_xy", "von_mises", "eps_p"):
+        shape = h[f"/cell_fields/{f}_c"].shape
+        k.check(shape == (steps, nc), f"cell field {f} {shape} == ({steps}, {nc})")
+    k.check(h["/time"].shape[0] == steps, f"/time has {steps} entries")
+    for c in columns:
+        k.check(c in h["/history"] and h["/history"][c].shape == (incs + 1,), f"/history/{c} has {incs + 1} rows")
+    load = h["/history/load"][:]
+    k.check(np.allclose(load, np.linspace(0, 50, incs + 1), rtol=1e-12), "history load = pressure ramp 0..50")
+    opts = h.attrs["options"]
+    opts = opts.decode() if isinstance(opts, bytes) else str(opts)
+    k.check("-mesh_ntheta 10" in opts and "-scene pressure" in opts, "options attribute holds the run's options")
+    k.check("limiter_names" in h["/history"].attrs, "limiter names attribute")
+    # Cells reference existing vertices; all are counter-clockwise with positive area.
+    X, C = h["/geometry/vertices"][:], h["/viz/topology/cells"][:]
+    k.check(C.min() == 0 and C.max() == nv - 1, "cell connectivity covers the vertices")
+    P = X[C]
+    area = 0.5 * sum(P[:, i, 0] * P[:, (i + 1) % 4, 1] - P[:, (i + 1) % 4, 0] * P[:, i, 1] for i in range(4))
+    k.check((area > 0).all(), "all cells counter-clockwise")
+k.check(not os.path.exists("io.h5.partial"), "no .partial file left behind")
+xmf = ET.parse("io.xmf").getroot()
+grids = xmf.findall(".//Grid[@GridType='Uniform']")
+k.check(len(grids) == steps, f"io.xmf has {steps} time steps")
+with open("io.csv") as f:
+    rows = list(csv.reader(f))
+k.check(rows[0][:len(columns)] != [] and all(c in rows[0] for c in columns), "CSV header has every column")
+k.check(len(rows) == incs + 2, f"CSV has header + {incs + 1} rows")
+k.done()
