@@ -40,6 +40,7 @@ int main(int argc, char **argv)
   (void)MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   bool collective = false;
   ierr = Run(collective);
+  (void)PetscPopErrorHandler();
   if (ierr) {
     const char *text = nullptr;
     char *specific = nullptr;

@@ -21,7 +21,9 @@ def run(tf, mpirun, np_, opts, check=True, timeout=300):
     """Runs tubeform on np_ ranks from the source directory (where scene files
     find options/solver.opts, as users run it); returns the CompletedProcess.
     Output paths given to it must be absolute (see out())."""
-    cmd = [mpirun, "-n", str(np_), tf] + [str(o) for o in opts]
+    # One rank runs as an MPI singleton: the same code path, without mpirun's
+    # ~2 s wind-down after a non-zero exit.
+    cmd = ([mpirun, "-n", str(np_)] if np_ > 1 else []) + [tf] + [str(o) for o in opts]
     p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, cwd=sys.argv[3])
     if check and p.returncode != 0:
         print(" ".join(cmd))
