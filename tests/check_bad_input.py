@@ -24,8 +24,8 @@ cases = [
     (["-increments", "0"], "-increments"),
     (["-mesh_file", "no/such/mesh.msh"], "no/such/mesh.msh"),
     (["-mesh_file", f"{src}/options/pressure.opts"], "pressure.opts"),
-    (["-output", out("no_such_dir/out.h5")], "-output"),
-    (["-history_csv", out("no_such_dir/h.csv")], "-history_csv"),
+    (["-output", out("keep.csv/out.h5")], "-output"),          # parent is a file
+    (["-history_csv", out("keep.csv/h.csv")], "-history_csv"),
 ]
 # Every case on 1 rank; on 2 ranks one of each kind (option value, option
 # choice, mesh file, output path), since mpirun takes ~2 s to wind down a

@@ -3,6 +3,7 @@
 #include <petscviewerhdf5.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include "tubeform/core.hpp"
@@ -21,6 +22,10 @@ PetscErrorCode CheckWritable(MPI_Comm comm, const std::string &path, const char 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
+    // Missing parent directories are created (like results/ in a fresh clone).
+    std::error_code ec;
+    const auto parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent, ec);
     const std::string probe = path + ".probe";
     std::FILE *f = std::fopen(probe.c_str(), "w");
     ok = f != nullptr;

@@ -39,8 +39,8 @@ private:
   PetscErrorCode WriteXdmf() const;
 };
 
-// Collective: true on every rank when `path`'s directory exists and a file can be
-// created there (tested on rank 0 with a scratch file).
+// Collective: an error on every rank unless a file can be created at `path`
+// (tested on rank 0 with a scratch file, after creating missing parent directories).
 PetscErrorCode CheckWritable(MPI_Comm comm, const std::string &path, const char *option);
 
 } // namespace tf
