@@ -55,6 +55,16 @@ void System::SetFrame(PetscInt node, double angle)
   sin_[node] = std::sin(angle);
 }
 
+bool System::PrescribeAlong(PetscInt node, double dx, double dy, double value)
+{
+  const double dl = cos_[node] * dx + sin_[node] * dy, dn = -sin_[node] * dx + cos_[node] * dy;
+  const double tol = 1e-12;
+  if (std::abs(std::abs(dl) - 1) < tol) Prescribe(node, 0, dl * value);
+  else if (std::abs(std::abs(dn) - 1) < tol) Prescribe(node, 1, dn * value);
+  else return false;
+  return true;
+}
+
 void System::ClearFrames()
 {
   std::fill(has_frame_.begin(), has_frame_.end(), 0);

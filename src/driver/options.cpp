@@ -56,11 +56,47 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
     if (opt.material.law == kLaws[k]) choice = k;
   PetscCall(PetscOptionsEList("-material_law", "Flow curve: elastic (no yield), ludwik sy+K ep^n, swift K(ep0+ep)^n, table", "tubeform", kLaws, 4, kLaws[choice], &choice, nullptr));
   opt.material.law = kLaws[choice];
+  {
+    PetscReal table[200];
+    PetscInt n = 200;
+    PetscCall(PetscOptionsRealArray("-material_table", "Flow curve for -material_law table: ep0,sy0,ep1,sy1,... (ep0 = 0, ep increasing)", "tubeform", table, &n, &set));
+    if (set) opt.material_table.assign(table, table + n);
+  }
+  PetscOptionsEnd();
+
+  PetscOptionsBegin(comm, "", "tubeform: incremental driver (r_min method)", "tubeform");
+  PetscCall(PetscOptionsInt("-increments", "Trial increments over the load path (r_min may cut each)", "tubeform", opt.increments, &opt.increments, nullptr));
+  PetscCall(PetscOptionsReal("-rmin_deps", "r2: largest principal strain increment", "tubeform", opt.rmin_deps, &opt.rmin_deps, nullptr));
+  PetscCall(PetscOptionsReal("-rmin_domega", "r3: largest rotation increment (rad)", "tubeform", opt.rmin_domega, &opt.rmin_domega, nullptr));
+  PetscCall(PetscOptionsReal("-rmin_group_tol", "Events within (1 + tol) r_min are taken in the same increment", "tubeform", opt.rmin_group_tol, &opt.rmin_group_tol, nullptr));
+  PetscCall(PetscOptionsInt("-rmin_max_increments", "Stop with an error after this many increments", "tubeform", opt.rmin_max_increments, &opt.rmin_max_increments, nullptr));
+  PetscCall(PetscOptionsInt("-rmin_max_redo", "Re-solves per increment when points switch between loading and unloading", "tubeform", opt.rmin_max_redo, &opt.rmin_max_redo, nullptr));
+  PetscCall(PetscOptionsBool("-drift_correction", "Scale plastic stresses back onto the yield surface after each update", "tubeform", opt.drift_correction, &opt.drift_correction, nullptr));
+  PetscCall(PetscOptionsBool("-residual_correction", "Add the out-of-balance force to the next increment's load", "tubeform", opt.residual_correction, &opt.residual_correction, nullptr));
+  {
+    const char *const schemes[] = {"forward", "midpoint"};
+    choice = opt.kinematics == ObjectiveScheme::Forward ? 0 : 1;
+    PetscCall(PetscOptionsEList("-kinematics", "Strain/spin increments: forward (start configuration, W sigma - sigma W) or midpoint (Hughes-Winget)", "tubeform", schemes, 2, schemes[choice], &choice, nullptr));
+    opt.kinematics = choice == 0 ? ObjectiveScheme::Forward : ObjectiveScheme::Midpoint;
+  }
   PetscOptionsEnd();
 
   PetscOptionsBegin(comm, "", "tubeform: loading and output", "tubeform");
-  PetscCall(PetscOptionsInt("-increments", "Number of (trial) load increments", "tubeform", opt.increments, &opt.increments, nullptr));
-  PetscCall(PetscOptionsReal("-pressure_p", "Final internal pressure of the pressure scene (MPa)", "tubeform", opt.pressure_p, &opt.pressure_p, nullptr));
+  PetscCall(PetscOptionsReal("-pressure_p", "pressure scene: final internal pressure (MPa), -pressure_control load", "tubeform", opt.pressure_p, &opt.pressure_p, nullptr));
+  {
+    const char *const controls[] = {"load", "displacement"};
+    choice = opt.pressure_control == "load" ? 0 : 1;
+    PetscCall(PetscOptionsEList("-pressure_control", "pressure scene: ramp the pressure (load) or the inner radial displacement (displacement)", "tubeform", controls, 2, controls[choice], &choice, nullptr));
+    opt.pressure_control = controls[choice];
+  }
+  PetscCall(PetscOptionsReal("-pressure_u", "pressure scene: final inner radial displacement (mm), -pressure_control displacement", "tubeform", opt.pressure_u, &opt.pressure_u, nullptr));
+  PetscCall(PetscOptionsReal("-stroke", "Final stroke U (mm): tool travel, or the prescribed end shortening of the column", "tubeform", opt.stroke, &opt.stroke, nullptr));
+  PetscCall(PetscOptionsReal("-shear_gamma", "shear scene: final shear strain gamma", "tubeform", opt.shear_gamma, &opt.shear_gamma, nullptr));
+  PetscCall(PetscOptionsReal("-rotation_angle", "rotation scene: rigid rotation after the prestretch (degrees)", "tubeform", opt.rotation_angle, &opt.rotation_angle, nullptr));
+  PetscCall(PetscOptionsReal("-rotation_strain", "rotation scene: uniaxial prestretch strain in x before the rotation", "tubeform", opt.rotation_strain, &opt.rotation_strain, nullptr));
+  PetscCall(PetscOptionsReal("-column_l", "column scene: length between the pins (mm)", "tubeform", opt.column_l, &opt.column_l, nullptr));
+  PetscCall(PetscOptionsReal("-column_t", "column scene: thickness (mm)", "tubeform", opt.column_t, &opt.column_t, nullptr));
+  PetscCall(PetscOptionsReal("-column_imperfection", "column scene: amplitude of the initial sine-shaped bow (mm)", "tubeform", opt.column_imperfection, &opt.column_imperfection, nullptr));
   PetscCall(PetscStrncpy(buf, opt.output.c_str(), sizeof(buf)));
   PetscCall(PetscOptionsString("-output", "HDF5 result file (an .xmf for ParaView is written beside it)", "tubeform", buf, buf, sizeof(buf), nullptr));
   opt.output = buf;
@@ -85,6 +121,27 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
   PetscCheck(m.K >= 0, comm, PETSC_ERR_USER_INPUT, "-material_k %g: the hardening coefficient must be non-negative (MPa)", m.K);
   PetscCheck(m.n > 0 && m.n <= 1, comm, PETSC_ERR_USER_INPUT, "-material_n %g: the hardening exponent must lie in (0, 1]", m.n);
   PetscCheck(opt.increments >= 1 && opt.increments <= 10000000, comm, PETSC_ERR_USER_INPUT, "-increments %d: must be between 1 and 1e7", (int)opt.increments);
+  PetscCheck(opt.rmin_deps > 0 && opt.rmin_deps <= 0.5, comm, PETSC_ERR_USER_INPUT, "-rmin_deps %g: the strain increment limit must lie in (0, 0.5]", opt.rmin_deps);
+  PetscCheck(opt.rmin_domega > 0 && opt.rmin_domega <= 0.5, comm, PETSC_ERR_USER_INPUT, "-rmin_domega %g: the rotation increment limit must lie in (0, 0.5] rad", opt.rmin_domega);
+  PetscCheck(opt.rmin_group_tol >= 0 && opt.rmin_group_tol <= 1, comm, PETSC_ERR_USER_INPUT, "-rmin_group_tol %g: must lie in [0, 1]", opt.rmin_group_tol);
+  PetscCheck(opt.rmin_max_increments >= 1, comm, PETSC_ERR_USER_INPUT, "-rmin_max_increments %d: must be at least 1", (int)opt.rmin_max_increments);
+  PetscCheck(opt.rmin_max_redo >= 0, comm, PETSC_ERR_USER_INPUT, "-rmin_max_redo %d: must be non-negative", (int)opt.rmin_max_redo);
+  if (m.law == "swift") PetscCheck(m.K > 0, comm, PETSC_ERR_USER_INPUT, "-material_k %g: the Swift law needs K > 0", m.K);
+  if (m.law == "table") {
+    const auto &t = opt.material_table;
+    PetscCheck(t.size() >= 2 && t.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT, "-material_table: give pairs ep,sigma_y (at least one pair) for -material_law table");
+    PetscCheck(t[0] == 0, comm, PETSC_ERR_USER_INPUT, "-material_table: the first plastic strain must be 0 (got %g)", t[0]);
+    for (size_t i = 2; i < t.size(); i += 2) {
+      PetscCheck(t[i] > t[i - 2], comm, PETSC_ERR_USER_INPUT, "-material_table: plastic strains must increase (%g after %g)", t[i], t[i - 2]);
+      PetscCheck(t[i + 1] >= t[i - 1], comm, PETSC_ERR_USER_INPUT, "-material_table: the flow stress must not decrease (%g after %g)", t[i + 1], t[i - 1]);
+    }
+    PetscCheck(t[1] > 0, comm, PETSC_ERR_USER_INPUT, "-material_table: the initial yield stress must be positive (got %g)", t[1]);
+  }
+  PetscCheck(opt.pressure_u > 0, comm, PETSC_ERR_USER_INPUT, "-pressure_u %g: must be positive (mm)", opt.pressure_u);
+  PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);
+  PetscCheck(std::isfinite(opt.shear_gamma) && opt.shear_gamma != 0, comm, PETSC_ERR_USER_INPUT, "-shear_gamma %g: must be a finite non-zero shear strain", opt.shear_gamma);
+  PetscCheck(std::fabs(opt.rotation_angle) <= 3600, comm, PETSC_ERR_USER_INPUT, "-rotation_angle %g: must lie within +-3600 degrees", opt.rotation_angle);
+  PetscCheck(opt.column_l > 0 && opt.column_t > 0 && opt.column_t < opt.column_l, comm, PETSC_ERR_USER_INPUT, "-column_l %g, -column_t %g: need 0 < t < L", opt.column_l, opt.column_t);
   PetscCheck(std::isfinite(opt.pressure_p), comm, PETSC_ERR_USER_INPUT, "-pressure_p %g: must be a finite pressure (MPa)", opt.pressure_p);
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1", (int)opt.output_every);
   PetscCheck(!opt.output.empty(), comm, PETSC_ERR_USER_INPUT, "-output: an HDF5 file name is required");

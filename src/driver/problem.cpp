@@ -1,10 +1,12 @@
 #include "tubeform/driver/problem.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "tubeform/core.hpp"
 #include "tubeform/driver/log.hpp"
 #include "tubeform/io/output.hpp"
+#include "tubeform/material/j2.hpp"
 
 namespace tf {
 
@@ -12,21 +14,49 @@ Problem::~Problem() = default;
 
 PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt)
 {
+  PetscFunctionBeginUser;
+  auto scene = CreateScene(opt);
+  PetscCheck(scene, comm, PETSC_ERR_USER_INPUT, "-scene %s: not available yet (available: pressure, shear, rotation, column)", opt.scene_name.c_str());
+  PetscCall(Setup(comm, opt, std::move(scene)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::CreateMaterial()
+{
+  const MaterialParams &m = opt_.material;
+  std::unique_ptr<Hardening> h;
+
+  PetscFunctionBeginUser;
+  if (m.law == "elastic") {
+    material_ = std::make_unique<Elastic>(m.E, m.nu);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (m.law == "ludwik") h = std::make_unique<LudwikHardening>(m.sy, m.K, m.n);
+  else if (m.law == "swift") h = std::make_unique<SwiftHardening>(m.sy, m.K, m.n);
+  else {
+    std::vector<double> ep, sy;
+    for (size_t i = 0; i + 1 < opt_.material_table.size(); i += 2) ep.push_back(opt_.material_table[i]), sy.push_back(opt_.material_table[i + 1]);
+    h = std::make_unique<TableHardening>(ep, sy);
+  }
+  // Before a point has yielded, H' is the secant over one strain-limit step.
+  material_ = std::make_unique<J2Plasticity>(m.E, m.nu, std::move(h), opt_.rmin_deps, opt_.drift_correction);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr<Scene> scene)
+{
   SerialMesh serial;
   char why[PETSC_MAX_PATH_LEN] = "";
 
   PetscFunctionBeginUser;
   comm_ = comm;
   opt_ = opt;
+  scene_ = std::move(scene);
   PetscCallMPI(MPI_Comm_rank(comm, &rank_));
   PetscCallMPI(MPI_Comm_size(comm, &size_));
   PetscCall(Log::Register());
   PetscCall(PetscLogStagePush(Log::setup_stage));
-  scene_ = CreateScene(opt);
-  PetscCheck(scene_, comm, PETSC_ERR_USER_INPUT, "-scene %s: not available yet (available: pressure)", opt.scene_name.c_str());
-
-  PetscCheck(opt.material.law == "elastic", comm, PETSC_ERR_USER_INPUT, "-material_law %s: plasticity is not implemented yet; use -material_law elastic", opt.material.law.c_str());
-  material_ = std::make_unique<Elastic>(opt.material.E, opt.material.nu);
+  PetscCall(CreateMaterial());
 
   // 1. The serial mesh on rank 0; its verdict is shared so all ranks stop together.
   PetscCall(PetscLogEventBegin(Log::mesh, 0, 0, 0, 0));
@@ -47,6 +77,7 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt)
   PetscCall(PetscLogEventEnd(Log::mesh, 0, 0, 0, 0));
   PetscCall(system_.Setup(mesh_));
   state_.assign(fe::kGauss * mesh_.num_cells, PointState{});
+  yield_factor_.assign(state_.size(), 1e300);
   x_ = mesh_.x0;
   u_.assign(2 * mesh_.num_nodes, 0.0);
   PetscCall(PetscLogStagePop());
@@ -59,6 +90,16 @@ void Problem::CellCoordinates(PetscInt cell, double xe[8]) const
     const PetscInt n = mesh_.cell_nodes[4 * cell + a];
     xe[2 * a] = x_[2 * n];
     xe[2 * a + 1] = x_[2 * n + 1];
+  }
+}
+
+// Element dofs of cell e from a local vector.
+static void GatherCell(const Mesh &mesh, PetscInt e, const PetscScalar *v, fe::ElemVec &ve)
+{
+  for (int a = 0; a < 4; ++a) {
+    const PetscInt n = mesh.cell_nodes[4 * e + a];
+    ve[2 * a] = PetscRealPart(v[mesh.node_dof[n]]);
+    ve[2 * a + 1] = PetscRealPart(v[mesh.node_dof[n] + 1]);
   }
 }
 
@@ -88,40 +129,94 @@ PetscErrorCode Problem::AssembleTangent()
     PetscCall(system_.AddElement(e, ke));
   }
   PetscCall(MPIU_Allreduce(&bad, &anybad, 1, MPIU_INT, MPI_MAX, comm_));
-  PetscCheck(anybad < 0, comm_, PETSC_ERR_USER_INPUT, "element %d is inverted (det J <= 0): the increment is too large or the mesh is tangled", (int)anybad);
+  PetscCheck(anybad < 0, comm_, PETSC_ERR_USER_INPUT, "element %d is inverted (det J <= 0): the increment is too large (lower -rmin_deps) or the mesh is tangled", (int)anybad);
   PetscCall(PetscLogEventEnd(Log::assemble, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode Problem::Commit(Vec du_local, double &dw_int)
+PetscErrorCode Problem::ScanTrial(Vec du_local, bool apply, StepLimit &limit, PetscInt &switches)
 {
   const PetscScalar *du;
   fe::QuadGeometry geo;
-  double xe[8], local_w = 0;
+  double xe[8];
+  PetscInt local_switches = 0;
+  StepLimit yield, strain, rotation;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(du_local, &du));
+  for (PetscInt e = 0; e < mesh_.num_cells; ++e) {
+    fe::ElemVec due;
+    CellCoordinates(e, xe);
+    if (!fe::ComputeGeometry(xe, geo)) continue;
+    GatherCell(mesh_, e, du, due);
+    for (int g = 0; g < fe::kGauss; ++g) {
+      Voigt deps;
+      double omega;
+      PointState &ps = state_[fe::kGauss * e + g];
+      // The trial increment is linear in r on the start configuration.
+      fe::IncrementKinematics(geo, g, opt_.element, due, deps, omega);
+      if (material_->plastic_law() && material_->Loading(ps, deps) != ps.plastic) {
+        ++local_switches;
+        if (apply) ps.plastic = !ps.plastic;
+      }
+      double &r1 = yield_factor_[fe::kGauss * e + g];
+      r1 = material_->YieldOnset(ps, deps, omega);
+      yield.Offer(r1, Limiter::Yield, mesh_.cell_orig[e]);
+      strain.Offer(StrainFactor(deps, opt_.rmin_deps), Limiter::Strain, mesh_.cell_orig[e]);
+      rotation.Offer(RotationFactor(omega, opt_.rmin_domega), Limiter::Rotation, mesh_.cell_orig[e]);
+    }
+  }
+  PetscCall(VecRestoreArrayRead(du_local, &du));
+  PetscCall(MPIU_Allreduce(&local_switches, &switches, 1, MPIU_INT, MPI_SUM, comm_));
+  for (StepLimit *l : {&yield, &strain, &rotation}) {
+    PetscCall(ReduceStepLimit(comm_, *l));
+    limit.Offer(l->r, l->who, l->where);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::Commit(Vec du_local, double r, CommitInfo &info)
+{
+  const PetscScalar *du;
+  fe::QuadGeometry geo;
+  double xe[8], local[3] = {0, 0, 0}, global[3];
+  PetscInt nplastic = 0;
+  const bool midpoint = opt_.kinematics == ObjectiveScheme::Midpoint;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::update, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(du_local, &du));
-  // Stresses first: gradients are taken on the configuration at the start
-  // of the increment (updated Lagrangian reference).
   for (PetscInt e = 0; e < mesh_.num_cells; ++e) {
     fe::ElemVec due;
+    GatherCell(mesh_, e, du, due);
     CellCoordinates(e, xe);
-    if (!fe::ComputeGeometry(xe, geo)) continue; // caught at assembly
-    for (int a = 0; a < 4; ++a) {
-      const PetscInt n = mesh_.cell_nodes[4 * e + a];
-      due[2 * a] = PetscRealPart(du[mesh_.node_dof[n]]);
-      due[2 * a + 1] = PetscRealPart(du[mesh_.node_dof[n] + 1]);
-    }
+    // Gradients on the mid-increment configuration (Hughes-Winget: a rigid
+    // rotation then gives zero strain and an exact rotation of the stress),
+    // or on the start configuration (the paper's forward form).
+    if (midpoint)
+      for (int k = 0; k < 8; ++k) xe[k] += 0.5 * due[k];
+    if (!fe::ComputeGeometry(xe, geo)) continue; // reported by the next assembly
     for (int g = 0; g < fe::kGauss; ++g) {
       Voigt deps;
       double omega;
       PointState &ps = state_[fe::kGauss * e + g];
       fe::IncrementKinematics(geo, g, opt_.element, due, deps, omega);
       const Voigt old = ps.sigma;
-      material_->Update(ps, deps, omega);
-      // Trapezoidal stress work of the increment.
-      for (int r = 0; r < 4; ++r) local_w += geo.wdet[g] * 0.5 * (old[r] + ps.sigma[r]) * deps[r];
+      // Strang splitting: half the rotation, the constitutive increment in the
+      // mid-rotated frame, the other half (forward scheme: all at once, first order).
+      const double first = midpoint ? 0.5 : 1.0;
+      RotateStress(opt_.kinematics, omega, ps.sigma, first);
+      const UpdateInfo u = material_->Update(ps, deps);
+      if (midpoint) RotateStress(opt_.kinematics, omega, ps.sigma, 0.5);
+      // Points that reach the yield surface in this increment (the limiter and
+      // those grouped with it), or pass it, are plastic from now on.
+      if (!ps.plastic && material_->plastic_law() &&
+          (yield_factor_[fe::kGauss * e + g] <= r * (1 + opt_.rmin_group_tol) || VonMises(ps.sigma) >= material_->YieldStress(ps.ep)))
+        ps.plastic = true;
+      nplastic += ps.plastic;
+      for (int c = 0; c < 4; ++c) local[0] += geo.wdet[g] * 0.5 * (old[c] + ps.sigma[c]) * deps[c];
+      local[1] += geo.wdet[g] * u.dwp;
+      local[2] = std::max(local[2], std::abs(u.drift));
     }
   }
   for (PetscInt n = 0; n < mesh_.num_nodes; ++n)
@@ -131,7 +226,12 @@ PetscErrorCode Problem::Commit(Vec du_local, double &dw_int)
       u_[2 * n + k] += d;
     }
   PetscCall(VecRestoreArrayRead(du_local, &du));
-  PetscCall(MPIU_Allreduce(&local_w, &dw_int, 1, MPIU_REAL, MPIU_SUM, comm_));
+  PetscCall(MPIU_Allreduce(local, global, 2, MPIU_REAL, MPIU_SUM, comm_));
+  PetscCall(MPIU_Allreduce(&local[2], &global[2], 1, MPIU_REAL, MPIU_MAX, comm_));
+  PetscCall(MPIU_Allreduce(&nplastic, &info.n_plastic, 1, MPIU_INT, MPI_SUM, comm_));
+  info.dw_int = global[0];
+  info.dw_plastic = global[1];
+  info.drift = global[2];
   PetscCall(PetscLogEventEnd(Log::update, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -187,23 +287,40 @@ PetscErrorCode Problem::WriteOutputs(ResultWriter &writer, PetscInt step, double
     for (int g = 0; g < fe::kGauss; ++g) {
       const PointState &ps = state_[fe::kGauss * e + g];
       const Voigt &s = ps.sigma;
-      const double p = (s[0] + s[1] + s[2]) / 3;
-      const double vm = std::sqrt(1.5 * ((s[0] - p) * (s[0] - p) + (s[1] - p) * (s[1] - p) + (s[2] - p) * (s[2] - p) + 2 * s[3] * s[3]));
-      const double vals[6] = {s[0], s[1], s[2], s[3], vm, ps.ep};
+      const double vals[6] = {s[0], s[1], s[2], s[3], VonMises(s), ps.ep};
       for (int k = 0; k < 6; ++k) cells[k].values[e] += 0.25 * vals[k];
     }
   PetscCall(writer.WriteStep(step, t, u_, cells));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// Dot product of two local vectors where each entry is a rank's own
+// contribution (element- or edge-wise sums, not ghost-summed), summed over ranks.
+static PetscErrorCode ContributionDot(MPI_Comm comm, Vec a, Vec b, double &dot)
+{
+  const PetscScalar *x, *y;
+  PetscInt n;
+  double local = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(a, &n));
+  PetscCall(VecGetArrayRead(a, &x));
+  PetscCall(VecGetArrayRead(b, &y));
+  for (PetscInt k = 0; k < n; ++k) local += PetscRealPart(x[k] * y[k]);
+  PetscCall(VecRestoreArrayRead(b, &y));
+  PetscCall(VecRestoreArrayRead(a, &x));
+  PetscCall(MPIU_Allreduce(&local, &dot, 1, MPIU_REAL, MPIU_SUM, comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Problem::Run()
 {
   ResultWriter writer;
-  Vec du, f_inc, f_ext, f_int;
+  Vec du, f_inc, f_ext, f_int, f_res;
   std::vector<double> reactions;
   HistoryRow row;
-  double lambda = 0, w_ext = 0, w_int = 0;
-  PetscInt step = 0;
+  double lambda = 0, w_ext = 0, w_int = 0, w_plastic = 0;
+  PetscInt step = 0, inc = 0;
 
   PetscFunctionBeginUser;
   // Outputs are checked before any work so a bad path fails at once.
@@ -219,63 +336,99 @@ PetscErrorCode Problem::Run()
   PetscCall(VecDuplicate(du, &f_inc));
   PetscCall(VecDuplicate(du, &f_ext));
   PetscCall(VecDuplicate(du, &f_int));
+  PetscCall(VecDuplicate(du, &f_res));
+  PetscCall(VecZeroEntries(f_res));
 
   // Increment 0: the initial state.
-  PetscCall(scene_->Measure(*this, 0.0, row));
+  PetscCall(InternalForce(f_int));
+  PetscCall(scene_->Measure(*this, 0.0, f_int, row));
   history_.Append(row);
   PetscCall(WriteOutputs(writer, step++, 0.0));
 
+  std::vector<double> breaks = scene_->Breakpoints();
+  breaks.push_back(1.0);
+  const double dlambda_trial = 1.0 / opt_.increments, eps = 1e-12;
   PetscCall(PetscLogStagePush(Log::load_stage));
-  const double dlambda = 1.0 / opt_.increments;
-  for (PetscInt inc = 1; inc <= opt_.increments; ++inc) {
-    double dw_int, dw_ext_local, dw_ext, residual, fnorm;
-    const PetscScalar *fa, *da;
+  while (lambda < 1.0 - eps) {
+    PetscCheck(++inc <= opt_.rmin_max_increments, comm_, PETSC_ERR_NOT_CONVERGED, "no convergence of the load path: %d increments reached lambda = %g; raise -rmin_max_increments or relax -rmin_deps / -rmin_domega", (int)opt_.rmin_max_increments, lambda);
+    const double next_break = *std::find_if(breaks.begin(), breaks.end(), [&](double b) { return b > lambda + eps; });
+    const double dl = std::min(dlambda_trial, next_break - lambda);
 
-    // Trial increment: tangent, loads, supports, solve. (The r_min scaling of
-    // METHOD.md sec. 4 enters here; the elastic scenes take r = 1.)
-    PetscCall(AssembleTangent());
-    PetscCall(VecZeroEntries(f_inc));
-    PetscCall(scene_->Load(*this, lambda, dlambda, f_inc));
-    PetscCall(system_.Solve(du, reactions));
+    // 1. Trial solution; re-solved while points switch between loading and
+    //    unloading (alpha), at most -rmin_max_redo times.
+    StepLimit limit;
+    PetscInt switches = 0, redo = 0;
+    PetscCall(scene_->BeginIncrement(*this, lambda));
+    for (;;) {
+      PetscCall(AssembleTangent());
+      PetscCall(VecZeroEntries(f_inc));
+      PetscCall(scene_->Load(*this, lambda, dl, f_inc));
+      if (opt_.residual_correction) {
+        const PetscScalar *fr;
+        PetscCall(VecGetArrayRead(f_res, &fr));
+        for (PetscInt n = 0; n < mesh_.num_nodes; ++n) system_.AddForce(n, PetscRealPart(fr[mesh_.node_dof[n]]), PetscRealPart(fr[mesh_.node_dof[n] + 1]));
+        PetscCall(VecRestoreArrayRead(f_res, &fr));
+      }
+      PetscCall(system_.Solve(du, reactions));
+      limit = StepLimit{};
+      const bool may_redo = redo < opt_.rmin_max_redo;
+      PetscCall(ScanTrial(du, may_redo, limit, switches));
+      if (switches == 0 || !may_redo) break;
+      ++redo;
+    }
+    PetscCall(scene_->LimitStep(*this, du, limit));
 
-    // External work: load at the start plus half the increment, times du
-    // (trapezoid; exact while the increment is linear).
+    // 2. r_min: the linear increment is scaled as a whole.
+    double r = 1.0;
+    Limiter who = next_break >= 1.0 - eps && lambda + dl >= 1.0 - eps ? Limiter::Final : Limiter::Trial;
+    PetscInt where = -1;
+    if (limit.r < 1.0) r = limit.r, who = limit.who, where = limit.where;
+    PetscCheck(r > 1e-10, comm_, PETSC_ERR_NOT_CONVERGED, "r_min = %g (%s at %d) at lambda = %g: the increment cannot advance", r, LimiterName((int)limit.who), (int)limit.where, lambda);
+    PetscCall(VecScale(du, r));
+    PetscCall(VecScale(f_inc, r));
+
+    // 3. External work: load at the start plus half the increment, times du.
+    double dw_ext;
     PetscCall(scene_->ExternalForce(*this, lambda, f_ext));
     PetscCall(VecAXPY(f_ext, 0.5, f_inc));
-    PetscCall(VecGetArrayRead(f_ext, &fa));
-    PetscCall(VecGetArrayRead(du, &da));
-    dw_ext_local = 0;
-    for (PetscInt k = 0; k < 2 * mesh_.num_nodes; ++k) dw_ext_local += PetscRealPart(fa[k] * da[k]);
-    PetscCall(VecRestoreArrayRead(du, &da));
-    PetscCall(VecRestoreArrayRead(f_ext, &fa));
-    PetscCall(MPIU_Allreduce(&dw_ext_local, &dw_ext, 1, MPIU_REAL, MPIU_SUM, comm_));
+    PetscCall(ContributionDot(comm_, f_ext, du, dw_ext));
 
-    PetscCall(Commit(du, dw_int));
-    lambda = inc == opt_.increments ? 1.0 : lambda + dlambda;
+    // 4. Commit: stresses, plastic state, geometry.
+    CommitInfo ci;
+    PetscCall(Commit(du, r, ci));
+    lambda = r == 1.0 && lambda + dl >= next_break - eps ? next_break : lambda + r * dl;
     w_ext += dw_ext;
-    w_int += dw_int;
+    w_int += ci.dw_int;
+    w_plastic += ci.dw_plastic;
 
-    // Out-of-balance force on the new configuration.
+    // 5. Out-of-balance force on the new configuration.
+    double residual, fnorm;
     PetscCall(scene_->ExternalForce(*this, lambda, f_ext));
     PetscCall(InternalForce(f_int));
-    PetscCall(VecAXPY(f_int, -1.0, f_ext));
-    PetscCall(system_.FreeNorm(f_int, residual));
+    PetscCall(VecWAXPY(f_res, -1.0, f_int, f_ext));
+    PetscCall(system_.FreeNorm(f_res, residual));
     PetscCall(system_.FreeNorm(f_ext, fnorm));
 
     row = HistoryRow{};
     row.increment = inc;
-    row.rmin = 1.0;
-    row.limiter = static_cast<double>(inc == opt_.increments ? Limiter::Final : Limiter::Trial);
+    row.rmin = r;
+    row.limiter = static_cast<double>(who);
+    row.limiter_where = where;
+    row.n_plastic = ci.n_plastic;
     row.residual = residual;
+    row.redo = redo;
+    row.drift = ci.drift;
     row.w_ext = w_ext;
     row.w_int = w_int;
+    row.w_plastic = w_plastic;
     PetscCall(ElasticEnergy(row.w_elastic));
     row.energy_error = (w_ext - w_int) / std::max(std::abs(w_ext), 1e-300);
-    PetscCall(scene_->Measure(*this, lambda, row));
+    PetscCall(scene_->Measure(*this, lambda, f_int, row));
     history_.Append(row);
     if (opt_.monitor)
-      PetscCall(PetscPrintf(comm_, "inc %4d  stroke %-12.6g load %-12.6g r_min %.3g (%s)  residual %.3e (rel %.1e)  energy err %.1e\n", (int)inc, row.stroke, row.load, row.rmin, LimiterName((int)row.limiter), residual, residual / std::max(fnorm, 1e-300), row.energy_error));
-    if (inc % opt_.output_every == 0 || inc == opt_.increments) PetscCall(WriteOutputs(writer, step++, lambda));
+      PetscCall(PetscPrintf(comm_, "inc %5d  lambda %.5f  stroke %-11.5g load %-11.5g r_min %.3g (%s%s)  plastic %d  redo %d  residual %.2e (rel %.1e)  energy err %.1e\n", (int)inc, lambda, row.stroke, row.load, r, LimiterName((int)who),
+                            where >= 0 ? (" @" + std::to_string(where)).c_str() : "", (int)ci.n_plastic, (int)redo, residual, residual / std::max(fnorm, 1e-300), row.energy_error));
+    if (inc % opt_.output_every == 0 || lambda >= 1.0 - eps) PetscCall(WriteOutputs(writer, step++, lambda));
   }
   PetscCall(PetscLogStagePop());
 
@@ -284,11 +437,12 @@ PetscErrorCode Problem::Run()
   PetscCall(writer.Close(history_, {{"final_stroke", last.stroke}, {"final_load", last.load}, {"x_max", last.x_max}, {"y_max", last.y_max}}));
   PetscCheck(history_.FinishCsv(), comm_, PETSC_ERR_FILE_WRITE, "-history_csv %s: cannot rename the finished file into place", opt_.history_csv.c_str());
   PetscCall(PetscLogStagePop());
-  PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n", opt_.scene_name.c_str(), (int)opt_.increments, (int)system_.factorizations(), opt_.output.c_str()));
+  PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n", opt_.scene_name.c_str(), (int)inc, (int)system_.factorizations(), opt_.output.c_str()));
   PetscCall(VecDestroy(&du));
   PetscCall(VecDestroy(&f_inc));
   PetscCall(VecDestroy(&f_ext));
   PetscCall(VecDestroy(&f_int));
+  PetscCall(VecDestroy(&f_res));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

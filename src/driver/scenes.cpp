@@ -41,7 +41,7 @@ PetscErrorCode AddEdgePressure(Problem &p, const std::string &set, double pressu
       // dofs (a_x, a_y, b_x, b_y); both nodes get the same rows.
       double k[16] = {0};
       for (int r = 0; r < 2; ++r) {
-        k[(2 * r) * 4 + 1] = -h, k[(2 * r) * 4 + 3] = h;     // row x: -(dF_x/d y_a, dF_x/d y_b)
+        k[(2 * r) * 4 + 1] = -h, k[(2 * r) * 4 + 3] = h;         // row x: -(dF_x/d y_a, dF_x/d y_b)
         k[(2 * r + 1) * 4 + 0] = h, k[(2 * r + 1) * 4 + 2] = -h; // row y: -(dF_y/d x_a, dF_y/d x_b)
       }
       PetscCall(p.system().AddBlock(nodes, 2, k));
@@ -57,11 +57,14 @@ PetscErrorCode AddEdgePressure(Problem &p, const std::string &set, double pressu
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Mirror-symmetry supports of a quarter model: u_x = 0 on x = 0, u_y = 0 on y = 0.
-void QuarterSymmetry(Problem &p)
+// Mirror-symmetry supports of a quarter model: u_x = 0 on x = 0, u_y = 0 on
+// y = 0, written in each node's frame.
+PetscErrorCode QuarterSymmetry(Problem &p)
 {
-  for (PetscInt n : p.mesh().node_sets["x0"]) p.system().Prescribe(n, 0, 0.0);
-  for (PetscInt n : p.mesh().node_sets["y0"]) p.system().Prescribe(n, 1, 0.0);
+  PetscFunctionBeginUser;
+  for (PetscInt n : p.mesh().node_sets["x0"]) PetscCheck(p.system().PrescribeAlong(n, 1, 0, 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB, "symmetry support not along a node frame axis");
+  for (PetscInt n : p.mesh().node_sets["y0"]) PetscCheck(p.system().PrescribeAlong(n, 0, 1, 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB, "symmetry support not along a node frame axis");
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 // Largest current x and y over the outer surface: C1 and C2 of METHOD.md sec. 6.
@@ -80,6 +83,37 @@ PetscErrorCode OuterExtents(Problem &p, HistoryRow &row)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// Sum over ranks of each rank's element contributions at the nodes of a set
+// (owned and ghost: every contribution is counted once), dotted with `dir(n)`.
+template <class Dir>
+PetscErrorCode SetForce(Problem &p, const std::string &set, Vec f_local, Dir dir, double &total)
+{
+  const PetscScalar *f;
+  double local = 0;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(f_local, &f));
+  for (PetscInt n : p.mesh().node_sets[set]) {
+    double d[2];
+    dir(n, d);
+    local += d[0] * PetscRealPart(f[p.mesh().node_dof[n]]) + d[1] * PetscRealPart(f[p.mesh().node_dof[n] + 1]);
+  }
+  PetscCall(VecRestoreArrayRead(f_local, &f));
+  PetscCall(MPIU_Allreduce(&local, &total, 1, MPIU_REAL, MPIU_SUM, p.comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Volume-free average over all Gauss points of a function of the point state.
+template <class F>
+PetscErrorCode PointAverage(Problem &p, F f, double &avg)
+{
+  double local[2] = {0, 0}, g[2];
+  PetscFunctionBeginUser;
+  for (const auto &ps : p.state()) local[0] += f(ps), local[1] += 1;
+  PetscCall(MPIU_Allreduce(local, g, 2, MPIU_REAL, MPIU_SUM, p.comm()));
+  avg = g[0] / g[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 std::string TubeMesh(const Options &opt, SerialMesh &mesh)
 {
   if (!opt.mesh_file.empty()) return ReadGmsh(opt.mesh_file, mesh);
@@ -88,19 +122,32 @@ std::string TubeMesh(const Options &opt, SerialMesh &mesh)
 }
 
 // Thick cylinder under internal pressure (quarter, plane strain).
-// History: stroke = mean radial displacement of the inner surface (mm),
-// load = internal pressure (MPa).
+// -pressure_control load: the pressure is ramped to -pressure_p; history
+//   stroke = mean radial displacement of the inner surface (mm), load = pressure (MPa).
+// -pressure_control displacement: the inner radial displacement is ramped to
+//   -pressure_u (inner nodes carry radial frames); stroke = that displacement,
+//   load = the pressure it takes: radial reaction / current inner arc length.
 class PressureScene : public Scene {
 public:
-  explicit PressureScene(const Options &opt) : p_final_(opt.pressure_p) {}
+  explicit PressureScene(const Options &opt) : opt_(opt), displacement_(opt.pressure_control == "displacement") {}
   std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
+
+  PetscErrorCode BeginIncrement(Problem &p, double) override
+  {
+    // Radial frames on the inner surface (axisymmetry keeps nodes on their rays).
+    if (displacement_)
+      for (PetscInt n : p.mesh().node_sets["inner"]) p.system().SetFrame(n, std::atan2(p.mesh().x0[2 * n + 1], p.mesh().x0[2 * n]));
+    return 0;
+  }
 
   PetscErrorCode Load(Problem &p, double lambda, double dlambda, Vec dforce) override
   {
     PetscFunctionBeginUser;
-    PetscCall(AddEdgePressure(p, "inner", dlambda * p_final_, dforce, true, lambda * p_final_));
-    QuarterSymmetry(p);
+    if (displacement_)
+      for (PetscInt n : p.mesh().node_sets["inner"]) p.system().Prescribe(n, 0, dlambda * opt_.pressure_u);
+    else PetscCall(AddEdgePressure(p, "inner", dlambda * opt_.pressure_p, dforce, true, lambda * opt_.pressure_p));
+    PetscCall(QuarterSymmetry(p));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
@@ -108,30 +155,177 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
-    PetscCall(AddEdgePressure(p, "inner", lambda * p_final_, f, false));
+    if (!displacement_) PetscCall(AddEdgePressure(p, "inner", lambda * opt_.pressure_p, f, false));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
-  PetscErrorCode Measure(Problem &p, double lambda, HistoryRow &row) override
+  PetscErrorCode Measure(Problem &p, double lambda, Vec f_int, HistoryRow &row) override
   {
-    double sum[2] = {0, 0}, g[2];
+    double sum[3] = {0, 0, 0}, g[3];
     PetscFunctionBeginUser;
     const Mesh &m = p.mesh();
+    const auto &x = p.position();
     for (PetscInt n : p.mesh().node_sets["inner"]) {
       if (!m.node_owned[n]) continue;
       const double r = std::hypot(m.x0[2 * n], m.x0[2 * n + 1]);
       sum[0] += (p.displacement()[2 * n] * m.x0[2 * n] + p.displacement()[2 * n + 1] * m.x0[2 * n + 1]) / r;
       sum[1] += 1;
     }
-    PetscCall(MPIU_Allreduce(sum, g, 2, MPIU_REAL, MPIU_SUM, p.comm()));
+    for (const auto &e : p.mesh().edge_sets["inner"]) sum[2] += std::hypot(x[2 * e.node[1]] - x[2 * e.node[0]], x[2 * e.node[1] + 1] - x[2 * e.node[0] + 1]);
+    PetscCall(MPIU_Allreduce(sum, g, 3, MPIU_REAL, MPIU_SUM, p.comm()));
     row.stroke = g[0] / g[1];
-    row.load = lambda * p_final_;
+    if (displacement_) {
+      double fr;
+      const auto radial = [&](PetscInt n, double d[2]) {
+        const double r = std::hypot(m.x0[2 * n], m.x0[2 * n + 1]);
+        d[0] = -m.x0[2 * n] / r, d[1] = -m.x0[2 * n + 1] / r; // the wall pushes back inwards
+      };
+      PetscCall(SetForce(p, "inner", f_int, radial, fr));
+      row.load = fr / g[2];
+    } else row.load = lambda * opt_.pressure_p;
     PetscCall(OuterExtents(p, row));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
 private:
-  double p_final_;
+  Options opt_;
+  bool displacement_;
+};
+
+// Homogeneous blocks on the unit square: every boundary node follows a
+// prescribed motion, the interior follows by equilibrium.
+class BlockScene : public Scene {
+public:
+  explicit BlockScene(const Options &opt) : opt_(opt) {}
+  std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
+  {
+    mesh = GenerateRectangle(1.0, 1.0, (int)opt.mesh_nt, (int)opt.mesh_nt);
+    return "";
+  }
+  PetscErrorCode ExternalForce(Problem &, double, Vec f) override { return VecZeroEntries(f); }
+
+protected:
+  Options opt_;
+  // Prescribes du = motion(node) on each boundary node, once.
+  template <class Motion>
+  void PrescribeBoundary(Problem &p, Motion motion)
+  {
+    std::vector<char> done(p.mesh().num_nodes, 0);
+    for (const auto &set : BoundarySets())
+      for (PetscInt n : p.mesh().node_sets[set]) {
+        if (done[n]) continue;
+        done[n] = 1;
+        double d[2];
+        motion(n, d);
+        p.system().Prescribe(n, 0, d[0]);
+        p.system().Prescribe(n, 1, d[1]);
+      }
+  }
+};
+
+// Simple shear x = X + gamma Y to -shear_gamma. History: stroke = gamma,
+// load = mean sigma_xy (MPa). Hypoelastic Jaumann reference:
+// sigma_xy = G sin(gamma), sigma_xx = -sigma_yy = G (1 - cos(gamma)).
+class ShearScene : public BlockScene {
+public:
+  using BlockScene::BlockScene;
+  PetscErrorCode Load(Problem &p, double, double dlambda, Vec) override
+  {
+    const double dgamma = dlambda * opt_.shear_gamma;
+    PrescribeBoundary(p, [&](PetscInt n, double d[2]) { d[0] = dgamma * p.position()[2 * n + 1], d[1] = 0; });
+    return 0;
+  }
+  PetscErrorCode Measure(Problem &p, double lambda, Vec, HistoryRow &row) override
+  {
+    PetscFunctionBeginUser;
+    row.stroke = lambda * opt_.shear_gamma;
+    PetscCall(PointAverage(p, [](const PointState &s) { return s.sigma[3]; }, row.load));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+};
+
+// A block stretched in x (uniaxial strain -rotation_strain, lambda in [0, 0.1])
+// then turned rigidly about the origin by -rotation_angle (lambda in [0.1, 1]).
+// History: stroke = rotation angle so far (degrees), load = mean von Mises stress.
+class RotationScene : public BlockScene {
+public:
+  using BlockScene::BlockScene;
+  std::vector<double> Breakpoints() const override { return {kStretch}; }
+  PetscErrorCode Load(Problem &p, double lambda, double dlambda, Vec) override
+  {
+    if (lambda < kStretch - 1e-12) {
+      const double de = dlambda / kStretch * opt_.rotation_strain;
+      PrescribeBoundary(p, [&](PetscInt n, double d[2]) { d[0] = de * p.mesh().x0[2 * n], d[1] = 0; });
+    } else {
+      const double dth = dlambda / (1 - kStretch) * opt_.rotation_angle * M_PI / 180, c = std::cos(dth), s = std::sin(dth);
+      PrescribeBoundary(p, [&](PetscInt n, double d[2]) {
+        const double x = p.position()[2 * n], y = p.position()[2 * n + 1];
+        d[0] = (c - 1) * x - s * y, d[1] = s * x + (c - 1) * y;
+      });
+    }
+    return 0;
+  }
+  PetscErrorCode Measure(Problem &p, double lambda, Vec, HistoryRow &row) override
+  {
+    PetscFunctionBeginUser;
+    row.stroke = lambda <= kStretch ? 0.0 : (lambda - kStretch) / (1 - kStretch) * opt_.rotation_angle;
+    PetscCall(PointAverage(p, [](const PointState &s) { return VonMises(s.sigma); }, row.load));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+private:
+  static constexpr double kStretch = 0.1;
+};
+
+// A strip of thickness t (x) and length L (y) with a sine bow of amplitude e0,
+// pinned at the centre nodes of both ends and shortened by -stroke.
+// History: stroke = end shortening (mm), load = axial force (N/mm).
+class ColumnScene : public Scene {
+public:
+  explicit ColumnScene(const Options &opt) : opt_(opt) {}
+  std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
+  {
+    if (opt.mesh_nt % 2) return "-mesh_nt " + std::to_string(opt.mesh_nt) + ": the column needs an even number of elements through the thickness (a node on the axis)";
+    mesh = GenerateRectangle(opt.column_t, opt.column_l, (int)opt.mesh_nt, (int)opt.mesh_ntheta);
+    for (int n = 0; n < mesh.num_nodes(); ++n) {
+      const double y = mesh.xy[2 * n + 1];
+      mesh.xy[2 * n] += -0.5 * opt.column_t + opt.column_imperfection * std::sin(M_PI * y / opt.column_l);
+    }
+    return "";
+  }
+  PetscErrorCode Load(Problem &p, double, double dlambda, Vec) override
+  {
+    for (PetscInt n : Pins(p, "bottom")) p.system().Prescribe(n, 0, 0.0), p.system().Prescribe(n, 1, 0.0);
+    for (PetscInt n : Pins(p, "top")) p.system().Prescribe(n, 0, 0.0), p.system().Prescribe(n, 1, -dlambda * opt_.stroke);
+    return 0;
+  }
+  PetscErrorCode ExternalForce(Problem &, double, Vec f) override { return VecZeroEntries(f); }
+  PetscErrorCode Measure(Problem &p, double lambda, Vec f_int, HistoryRow &row) override
+  {
+    PetscFunctionBeginUser;
+    row.stroke = lambda * opt_.stroke;
+    const auto pins = Pins(p, "top");
+    const PetscScalar *f;
+    double local = 0;
+    PetscCall(VecGetArrayRead(f_int, &f));
+    for (PetscInt n : pins) local += PetscRealPart(f[p.mesh().node_dof[n] + 1]);
+    PetscCall(VecRestoreArrayRead(f_int, &f));
+    PetscCall(MPIU_Allreduce(&local, &row.load, 1, MPIU_REAL, MPIU_SUM, p.comm()));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+private:
+  Options opt_;
+  // The end node on the column's axis (x0 = 0 at both ends, where the bow vanishes).
+  static std::vector<PetscInt> Pins(Problem &p, const std::string &end)
+  {
+    std::vector<PetscInt> pins;
+    for (PetscInt n : p.mesh().node_sets[end])
+      if (std::abs(p.mesh().x0[2 * n]) < 1e-9) pins.push_back(n);
+    return pins;
+  }
 };
 
 } // namespace
@@ -140,6 +334,9 @@ std::unique_ptr<Scene> CreateScene(const Options &opt)
 {
   switch (opt.scene) {
   case SceneKind::Pressure: return std::make_unique<PressureScene>(opt);
+  case SceneKind::Shear: return std::make_unique<ShearScene>(opt);
+  case SceneKind::Rotation: return std::make_unique<RotationScene>(opt);
+  case SceneKind::Column: return std::make_unique<ColumnScene>(opt);
   default: return nullptr;
   }
 }

@@ -33,6 +33,8 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"x_max", &HistoryRow::x_max, "C1: outer horizontal half-extent (mm)"},
     {"y_max", &HistoryRow::y_max, "C2: outer vertical half-extent (mm)"},
     {"deviation_ratio", &HistoryRow::deviation_ratio, "min(C1, C2) / max(C1, C2)"},
+    {"redo", &HistoryRow::redo, "re-solves of the increment for loading/unloading switches"},
+    {"drift", &HistoryRow::drift, "largest |sbar / sigma_y - 1| of a plastic update (before any drift correction)"},
   };
   return cols;
 }

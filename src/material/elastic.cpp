@@ -1,5 +1,7 @@
 #include "tubeform/material/elastic.hpp"
 
+#include <cmath>
+
 namespace tf {
 
 bool MaterialPreset(const std::string &name, MaterialParams &p)
@@ -35,14 +37,40 @@ void JaumannUpdate(const Voigt &dtau, double trace_deps, double omega, Voigt &si
   sigma[3] += omega * (s[1] - s[0]);
 }
 
-bool Elastic::Update(PointState &s, const Voigt &deps, double omega) const
+UpdateInfo Elastic::Update(PointState &s, const Voigt &deps) const
 {
   Voigt dtau{};
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) dtau[r] += d_[r][c] * deps[c];
-  JaumannUpdate(dtau, deps[0] + deps[1] + deps[2], omega, s.sigma);
-  s.plastic = false;
-  return false;
+  JaumannUpdate(dtau, deps[0] + deps[1] + deps[2], 0.0, s.sigma);
+  return {};
+}
+
+void RotateStress(ObjectiveScheme scheme, double omega, Voigt &sigma, double fraction)
+{
+  if (scheme == ObjectiveScheme::Forward) {
+    JaumannUpdate({0, 0, 0, 0}, 0.0, fraction * omega, sigma);
+    return;
+  }
+  // Q = (I - W/2)^-1 (I + W/2) = [[c, s], [-s, c]], a rotation by phi = 2 atan(omega/2);
+  // a fraction of it turns by fraction * phi. sigma <- Q sigma Q^T.
+  const double phi = 2 * std::atan(0.5 * omega) * fraction, c = std::cos(phi), s = std::sin(phi);
+  const double xx = sigma[0], yy = sigma[1], xy = sigma[3];
+  sigma[0] = c * c * xx + 2 * c * s * xy + s * s * yy;
+  sigma[1] = s * s * xx - 2 * c * s * xy + c * c * yy;
+  sigma[3] = -c * s * xx + (c * c - s * s) * xy + c * s * yy;
+}
+
+Voigt Deviator(const Voigt &s)
+{
+  const double p = (s[0] + s[1] + s[2]) / 3.0;
+  return {s[0] - p, s[1] - p, s[2] - p, s[3]};
+}
+
+double VonMises(const Voigt &s)
+{
+  const Voigt d = Deviator(s);
+  return std::sqrt(1.5 * (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + 2 * d[3] * d[3]));
 }
 
 double Elastic::ElasticEnergy(const Voigt &sg) const

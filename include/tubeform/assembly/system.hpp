@@ -10,6 +10,7 @@
 
 #include <petscksp.h>
 
+#include <cmath>
 #include <vector>
 
 #include "tubeform/fe/quad.hpp"
@@ -36,6 +37,7 @@ public:
   void SetFrame(PetscInt node, double angle);
   void ClearFrames();
   bool HasFrame(PetscInt node) const { return has_frame_[node]; }
+  double FrameAngle(PetscInt node) const { return std::atan2(sin_[node], cos_[node]); }
 
   // Assembly of one increment: Begin, Add*, then Solve.
   PetscErrorCode Begin();
@@ -45,6 +47,9 @@ public:
   PetscErrorCode AddBlock(const PetscInt *nodes, int nn, const double *k);
   void AddForce(PetscInt node, double fx, double fy); // global-frame load increment
   void Prescribe(PetscInt node, int comp, double value) { prescribed_.push_back({node, comp, value}); }
+  // Prescribes the displacement along the global unit direction (dx, dy); with
+  // a frame, that direction must be one of the frame's axes. False otherwise.
+  bool PrescribeAlong(PetscInt node, double dx, double dy, double value);
   // Solves; `du` (local vector, global frame, ghosts filled) receives the
   // increment and `reactions` the force increments at the prescribed dofs
   // (same order as prescribed(); entries for unowned nodes are 0).

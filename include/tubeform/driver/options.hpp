@@ -5,6 +5,7 @@
 #include <petscsys.h>
 
 #include <string>
+#include <vector>
 
 #include "tubeform/fe/quad.hpp"
 #include "tubeform/material/elastic.hpp"
@@ -24,9 +25,26 @@ struct Options {
   std::string element_name = "bbar";
   // Material
   MaterialParams material;
-  // Loading
-  PetscInt increments = 10;
+  std::vector<double> material_table; // ep0, sy0, ep1, sy1, ... for -material_law table
+  // Incremental driver (METHOD.md sec. 4)
+  PetscInt increments = 10;            // trial increments over the load path
+  double rmin_deps = 2e-3;             // r2: largest principal strain increment
+  double rmin_domega = 1e-2;           // r3: largest rotation increment (rad)
+  double rmin_group_tol = 0.05;        // events within (1 + tol) r_min are taken together
+  PetscInt rmin_max_increments = 100000;
+  PetscInt rmin_max_redo = 10;         // re-solves per increment for loading/unloading switches
+  PetscBool drift_correction = PETSC_FALSE;
+  PetscBool residual_correction = PETSC_FALSE;
+  ObjectiveScheme kinematics = ObjectiveScheme::Midpoint;
+  // Scene parameters
   double pressure_p = 50.0;
+  std::string pressure_control = "load";
+  double pressure_u = 0.1;
+  double stroke = 4.2;                 // final tool stroke / prescribed end displacement (mm)
+  double shear_gamma = 1.0;
+  double rotation_angle = 90.0;        // degrees
+  double rotation_strain = 1e-3;       // prestretch before the rotation
+  double column_l = 25.0, column_t = 1.0, column_imperfection = 0.025;
   // Output
   std::string output = "results/tubeform.h5";
   std::string history_csv;

@@ -12,6 +12,7 @@
 #include "tubeform/io/history.hpp"
 #include "tubeform/material/elastic.hpp"
 #include "tubeform/mesh/mesh.hpp"
+#include "tubeform/step/rmin.hpp"
 
 namespace tf {
 
@@ -23,6 +24,8 @@ class Scene {
 public:
   virtual ~Scene() = default;
   virtual std::vector<std::string> BoundarySets() const = 0;
+  // Before each increment's assembly (node frames that the assembly needs).
+  virtual PetscErrorCode BeginIncrement(Problem &p, double lambda) { return 0; }
   // Rank 0 only: the serial mesh (structured or read from -mesh_file).
   virtual std::string BuildMesh(const Options &opt, SerialMesh &mesh) const = 0;
   // Adds the load increment for lambda -> lambda + dlambda (lambda in [0, 1])
@@ -31,8 +34,13 @@ public:
   virtual PetscErrorCode Load(Problem &p, double lambda, double dlambda, Vec dforce) = 0;
   // Total external load vector at lambda on the current geometry (local vector).
   virtual PetscErrorCode ExternalForce(Problem &p, double lambda, Vec f) = 0;
-  // Fills stroke and load (and scene metrics) of the history row.
-  virtual PetscErrorCode Measure(Problem &p, double lambda, HistoryRow &row) = 0;
+  // Fills stroke and load (and scene metrics) of the history row. `f_int` is
+  // the internal force of the current state (local vector, global frame).
+  virtual PetscErrorCode Measure(Problem &p, double lambda, Vec f_int, HistoryRow &row) = 0;
+  // Values of lambda where the load path changes (an increment never crosses one).
+  virtual std::vector<double> Breakpoints() const { return {}; }
+  // Scene-specific limits on the trial increment (contact: r4-r6).
+  virtual PetscErrorCode LimitStep(Problem &p, Vec du_trial, StepLimit &limit) { return 0; }
 };
 
 std::unique_ptr<Scene> CreateScene(const Options &opt);
@@ -45,12 +53,25 @@ public:
   ~Problem();
 
   PetscErrorCode Setup(MPI_Comm comm, const Options &opt);
+  // Setup with a scene made by the caller (tests).
+  PetscErrorCode Setup(MPI_Comm comm, const Options &opt, std::unique_ptr<Scene> scene);
   PetscErrorCode Run();
 
   // Building blocks (also used by tests).
   PetscErrorCode AssembleTangent();
-  // Advances stress, coordinates and displacement by du (local vector).
-  PetscErrorCode Commit(Vec du, double &dw_int);
+  // What the trial increment du would do at the Gauss points: r1 (yield
+  // onset), r2 (strain), r3 (rotation) into `limit`; `switches` counts the
+  // points whose loading state (alpha) disagrees with du, and with
+  // `apply` those points are switched.
+  PetscErrorCode ScanTrial(Vec du, bool apply, StepLimit &limit, PetscInt &switches);
+  struct CommitInfo {
+    double dw_int = 0, dw_plastic = 0, drift = 0;
+    PetscInt n_plastic = 0;
+  };
+  // Advances stress, coordinates and displacement by du (local vector). Elastic
+  // points whose yield factor (from the last ScanTrial) is within
+  // (1 + group_tol) of `r` turn plastic.
+  PetscErrorCode Commit(Vec du, double r, CommitInfo &info);
   PetscErrorCode InternalForce(Vec f_local);
   // Current cell corner coordinates.
   void CellCoordinates(PetscInt cell, double xe[8]) const;
@@ -74,10 +95,12 @@ private:
   Mesh mesh_;
   System system_;
   std::vector<PointState> state_; // 4 per local cell
+  std::vector<double> yield_factor_; // r1 of each Gauss point from the last ScanTrial
   std::vector<double> x_, u_;      // per local node, global frame
   History history_;
 
   PetscErrorCode ElasticEnergy(double &w);
+  PetscErrorCode CreateMaterial();
   PetscErrorCode WriteOutputs(class ResultWriter &writer, PetscInt step, double t);
 };
 

@@ -19,6 +19,7 @@ struct HistoryRow {
   double n_contact = 0, n_plastic = 0, friction_iters = 0, residual = 0;
   double w_ext = 0, w_int = 0, w_plastic = 0, w_friction = 0, w_elastic = 0, energy_error = 0;
   double c_over_t = 0, x_max = 0, y_max = 0, deviation_ratio = 1;
+  double redo = 0, drift = 0;
 };
 
 struct HistoryColumn {

@@ -15,7 +15,14 @@ using fe::Voigt;
 struct PointState {
   Voigt sigma{};     // Cauchy stress {xx, yy, zz, xy}
   double ep = 0;     // equivalent plastic strain
-  bool plastic = false;
+  double hslope = 0; // hardening modulus H' of the last plastic update (0: not yet plastic)
+  bool plastic = false; // alpha of METHOD.md sec. 2: on the yield surface and loading
+};
+
+// What one material update did (per unit volume).
+struct UpdateInfo {
+  double dwp = 0;   // plastic work density of the increment
+  double drift = 0; // sbar / sigma_y - 1 after the tangent update (before any correction)
 };
 
 // Material constants (METHOD.md Table 1 for the presets).
@@ -28,26 +35,38 @@ struct MaterialParams {
 // Fills `p` with a named preset; false when the name is unknown.
 bool MaterialPreset(const std::string &name, MaterialParams &p);
 
+// A constitutive law in rate form. The objective part of the stress update
+// (the rotation of the stress by the spin) is done by the caller with
+// RotateStress; Update adds the constitutive increment.
 class Material {
 public:
   virtual ~Material() = default;
-  // C in  (Jaumann rate of Kirchhoff stress) = C : d.
+  // C in  (Jaumann rate of Kirchhoff stress) = C : d, for the point's alpha.
   virtual Mat4 Tangent(const PointState &s) const = 0;
-  // Advances the state by the strain increment deps and spin omega; returns
-  // whether the point is plastic after the update.
-  virtual bool Update(PointState &s, const Voigt &deps, double omega) const = 0;
+  // sigma += C : deps - sigma tr(deps) (Kirchhoff -> Cauchy), plastic state advanced.
+  virtual UpdateInfo Update(PointState &s, const Voigt &deps) const = 0;
   // Elastic strain energy density of a stress state.
   virtual double ElasticEnergy(const Voigt &sigma) const = 0;
+  // r1 of METHOD.md sec. 4: the fraction of the trial increment (deps, omega)
+  // at which an elastic point reaches the yield surface; infinity if never.
+  virtual double YieldOnset(const PointState &, const Voigt &, double) const { return 1e300; }
+  // alpha for the coming increment given the trial strain increment: a plastic
+  // point that unloads (s : deps < 0) turns elastic; an elastic point on the
+  // yield surface that loads turns plastic.
+  virtual bool Loading(const PointState &, const Voigt &) const { return false; }
+  virtual double YieldStress(double) const { return 1e300; }
+  virtual bool plastic_law() const { return false; }
 };
 
 class Elastic : public Material {
 public:
   Elastic(double e, double nu);
   Mat4 Tangent(const PointState &) const override { return d_; }
-  bool Update(PointState &s, const Voigt &deps, double omega) const override;
+  UpdateInfo Update(PointState &s, const Voigt &deps) const override;
   double ElasticEnergy(const Voigt &sigma) const override;
   double shear_modulus() const { return g_; }
   double bulk_modulus() const { return k_; }
+  const Mat4 &matrix() const { return d_; }
 
 private:
   double e_, nu_, g_, k_;
@@ -61,5 +80,19 @@ Mat4 IsotropicElasticMatrix(double e, double nu);
 // is dtau (from the law); the Cauchy stress then changes by
 //   dsigma = dtau - sigma tr(deps) + W sigma - sigma W,  W = [[0, w], [-w, 0]].
 void JaumannUpdate(const Voigt &dtau, double trace_deps, double omega, Voigt &sigma);
+
+// The spin part alone. Forward (the paper's rate form integrated as is):
+// sigma += W sigma - sigma W. Midpoint (Hughes & Winget 1980): sigma = Q sigma Q^T
+// with Q = (I - W/2)^-1 (I + W/2), an exact rotation, so invariants are kept;
+// `fraction` turns by that part of Q's angle (half before and half after the
+// constitutive increment makes the update second order).
+enum class ObjectiveScheme { Forward, Midpoint };
+void RotateStress(ObjectiveScheme scheme, double omega, Voigt &sigma, double fraction = 1.0);
+
+// Deviator {sxx, syy, szz, sxy} and the equivalent (von Mises) stress.
+Voigt Deviator(const Voigt &s);
+double VonMises(const Voigt &s);
+// s : e with e in Voigt strain form (gamma_xy = 2 e_xy).
+inline double DevDotStrain(const Voigt &s, const Voigt &e) { return s[0] * e[0] + s[1] * e[1] + s[2] * e[2] + s[3] * e[3]; }
 
 } // namespace tf

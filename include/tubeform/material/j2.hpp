@@ -1,0 +1,41 @@
+// J2 (Prandtl-Reuss) elasto-plasticity in plane strain with sigma_zz tracked,
+// isotropic hardening, rate form (METHOD.md section 2, paper eq. 1):
+//   C_ep = C_e - alpha 9 G^2 / (sbar^2 (3G + H')) s (x) s,
+//   dep  = 3G (s : de) / (sbar (3G + H')).
+#pragma once
+
+#include <memory>
+
+#include "tubeform/material/elastic.hpp"
+#include "tubeform/material/hardening.hpp"
+
+namespace tf {
+
+class J2Plasticity : public Material {
+public:
+  // dep_ref: plastic strain step over which H' is taken (as a secant) before a
+  // point has yielded once; drift_correction scales the deviator back onto the
+  // yield surface after each plastic update.
+  J2Plasticity(double e, double nu, std::unique_ptr<Hardening> h, double dep_ref, bool drift_correction);
+
+  Mat4 Tangent(const PointState &s) const override;
+  UpdateInfo Update(PointState &s, const Voigt &deps) const override;
+  double ElasticEnergy(const Voigt &sigma) const override { return elastic_.ElasticEnergy(sigma); }
+  double YieldOnset(const PointState &s, const Voigt &deps, double omega) const override;
+  bool Loading(const PointState &s, const Voigt &deps) const override;
+  double YieldStress(double ep) const override { return h_->YieldStress(ep); }
+  bool plastic_law() const override { return true; }
+
+  // Solves 3G dep + sigma_y(ep + dep) - sigma_y(ep) = 3G a / sbar for dep >= 0:
+  // the plastic strain step whose secant modulus is the H' of the update.
+  double PlasticStep(double ep, double a, double sbar) const;
+
+private:
+  Elastic elastic_;
+  std::unique_ptr<Hardening> h_;
+  double g_, dep_ref_;
+  bool drift_correction_;
+  double Modulus(const PointState &s) const { return s.hslope > 0 ? s.hslope : h_->SecantSlope(s.ep, dep_ref_); }
+};
+
+} // namespace tf

@@ -1,0 +1,192 @@
+#include "tubeform/fe/qm6.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace tf::fe {
+
+namespace {
+constexpr int kModes = 2, kShapes = kNodes + kModes, kAll = kDofs + kInternal;
+const double kG = 1.0 / std::sqrt(3.0);
+// The Gauss points of quad.cpp, in the same order.
+const double kXiGauss[kGauss][2] = {{-kG, -kG}, {kG, -kG}, {kG, kG}, {-kG, kG}};
+
+// Gradients of the 4 nodal shape functions and the 2 corrected modes.
+struct Gradients {
+  double g[kGauss][kShapes][2]; // d(shape s)/dx_j at Gauss point g
+  double wdet[kGauss];          // quadrature weight times det J
+};
+
+// Taylor's correction: dP/dx = (det J0 / det J_g) J0^{-T} dP/dxi, so that
+// sum_g w det J_g dP/dx = det J0 J0^{-T} sum_g dP/dxi = 0 (dP/dxi is odd).
+bool ComputeGradients(const double xe[2 * kNodes], Gradients &gr)
+{
+  QuadGeometry geo;
+  if (!ComputeGeometry(xe, geo)) return false;
+  double n[kNodes], dn[kNodes][2], j0[2][2] = {{0, 0}, {0, 0}};
+  ShapeFunctions(0, 0, n, dn);
+  for (int a = 0; a < kNodes; ++a)
+    for (int r = 0; r < 2; ++r)
+      for (int s = 0; s < 2; ++s) j0[r][s] += xe[2 * a + r] * dn[a][s];
+  // det J = a0 + a1 xi + a2 eta on a bilinear cell: det J0 is the mean of the (positive) Gauss values.
+  const double det0 = j0[0][0] * j0[1][1] - j0[0][1] * j0[1][0];
+  const double inv0[2][2] = {{j0[1][1] / det0, -j0[0][1] / det0}, {-j0[1][0] / det0, j0[0][0] / det0}}; // dxi_s/dx_r
+  for (int g = 0; g < kGauss; ++g) {
+    for (int a = 0; a < kNodes; ++a)
+      for (int r = 0; r < 2; ++r) gr.g[g][a][r] = geo.dndx[g][a][r];
+    const double scale = det0 / geo.wdet[g]; // unit weights: wdet = det J_g
+    // dP_1/dxi = (-2 xi, 0), dP_2/dxi = (0, -2 eta).
+    for (int r = 0; r < 2; ++r) {
+      gr.g[g][kNodes][r] = scale * (-2 * kXiGauss[g][0]) * inv0[0][r];
+      gr.g[g][kNodes + 1][r] = scale * (-2 * kXiGauss[g][1]) * inv0[1][r];
+    }
+    gr.wdet[g] = geo.wdet[g];
+  }
+  return true;
+}
+
+// Dof of component c of shape s among the 12: (u_x, u_y) node by node, then alpha[2 c + m].
+int Dof(int s, int c) { return s < kNodes ? 2 * s + c : kDofs + kModes * c + (s - kNodes); }
+
+// Strain-displacement matrix of the 12 dofs at Gauss point g (zz row zero).
+void StrainMatrix12(const Gradients &gr, int g, double b[kVoigt][kAll])
+{
+  for (int r = 0; r < kVoigt; ++r)
+    for (int j = 0; j < kAll; ++j) b[r][j] = 0;
+  for (int s = 0; s < kShapes; ++s) {
+    const double gx = gr.g[g][s][0], gy = gr.g[g][s][1];
+    b[0][Dof(s, 0)] = gx;
+    b[1][Dof(s, 1)] = gy;
+    b[3][Dof(s, 0)] = gy;
+    b[3][Dof(s, 1)] = gx;
+  }
+}
+
+// Solves A X = B in place (X overwrites B) by Gaussian elimination with
+// partial pivoting; false when a pivot is negligible against max |A_ij|.
+bool Solve4(double a[kInternal][kInternal], double x[kInternal][kDofs])
+{
+  double amax = 0;
+  for (int i = 0; i < kInternal; ++i)
+    for (int j = 0; j < kInternal; ++j) amax = std::max(amax, std::fabs(a[i][j]));
+  for (int k = 0; k < kInternal; ++k) {
+    int p = k;
+    for (int i = k + 1; i < kInternal; ++i)
+      if (std::fabs(a[i][k]) > std::fabs(a[p][k])) p = i;
+    if (!(std::fabs(a[p][k]) > 1e-13 * amax)) return false;
+    if (p != k) {
+      std::swap(a[p], a[k]);
+      std::swap(x[p], x[k]);
+    }
+    for (int i = k + 1; i < kInternal; ++i) {
+      const double m = a[i][k] / a[k][k];
+      for (int j = k; j < kInternal; ++j) a[i][j] -= m * a[k][j];
+      for (int j = 0; j < kDofs; ++j) x[i][j] -= m * x[k][j];
+    }
+  }
+  for (int k = kInternal - 1; k >= 0; --k)
+    for (int j = 0; j < kDofs; ++j) {
+      double sum = x[k][j];
+      for (int i = k + 1; i < kInternal; ++i) sum -= a[k][i] * x[i][j];
+      x[k][j] = sum / a[k][k];
+    }
+  return true;
+}
+} // namespace
+
+bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond)
+{
+  Gradients gr;
+  if (!ComputeGradients(xe, gr)) return false;
+  double k[kAll][kAll] = {};
+  for (int g = 0; g < kGauss; ++g) {
+    double b[kVoigt][kAll], cb[kVoigt][kAll];
+    StrainMatrix12(gr, g, b);
+    Mat4 c = tangent[g];
+    if (geometric) {
+      const Mat4 q = StressCorrection(sigma[g]);
+      for (int r = 0; r < kVoigt; ++r)
+        for (int s = 0; s < kVoigt; ++s) c[r][s] -= q[r][s];
+    }
+    // k += w det J  B12^T (C - Q) B12
+    for (int r = 0; r < kVoigt; ++r)
+      for (int j = 0; j < kAll; ++j) {
+        double sum = 0;
+        for (int s = 0; s < kVoigt; ++s) sum += c[r][s] * b[s][j];
+        cb[r][j] = sum;
+      }
+    for (int i = 0; i < kAll; ++i)
+      for (int j = 0; j < kAll; ++j) {
+        double sum = 0;
+        for (int r = 0; r < kVoigt; ++r) sum += b[r][i] * cb[r][j];
+        k[i][j] += gr.wdet[g] * sum;
+      }
+    if (geometric) {
+      // Initial-stress stiffness (grad P_s . sigma . grad P_t) I over nodes and modes alike.
+      const double sxx = sigma[g][0], syy = sigma[g][1], sxy = sigma[g][3];
+      for (int s = 0; s < kShapes; ++s)
+        for (int t = 0; t < kShapes; ++t) {
+          const double *gs = gr.g[g][s], *gt = gr.g[g][t];
+          const double kst = gs[0] * (sxx * gt[0] + sxy * gt[1]) + gs[1] * (sxy * gt[0] + syy * gt[1]);
+          for (int comp = 0; comp < 2; ++comp) k[Dof(s, comp)][Dof(t, comp)] += gr.wdet[g] * kst;
+        }
+    }
+  }
+  // cond = -Kii^{-1} Kic, then K* = Kcc + Kci cond.
+  double kii[kInternal][kInternal], x[kInternal][kDofs];
+  for (int i = 0; i < kInternal; ++i) {
+    for (int j = 0; j < kInternal; ++j) kii[i][j] = k[kDofs + i][kDofs + j];
+    for (int j = 0; j < kDofs; ++j) x[i][j] = k[kDofs + i][j];
+  }
+  if (!Solve4(kii, x)) return false;
+  for (int i = 0; i < kInternal; ++i)
+    for (int j = 0; j < kDofs; ++j) cond[i][j] = -x[i][j];
+  for (int i = 0; i < kDofs; ++i)
+    for (int j = 0; j < kDofs; ++j) {
+      double sum = k[i][j];
+      for (int m = 0; m < kInternal; ++m) sum += k[i][kDofs + m] * cond[m][j];
+      ke[i][j] = sum;
+    }
+  return true;
+}
+
+bool QM6Kinematics(const double xe[2 * kNodes], int g, const ElemVec &du, const InternalVec &alpha, Voigt &deps, double &omega)
+{
+  Gradients gr;
+  if (!ComputeGradients(xe, gr)) return false;
+  // L_ij = d(du_i)/dx_j summed over the nodal shape functions and the modes.
+  double l[2][2] = {{0, 0}, {0, 0}};
+  for (int s = 0; s < kShapes; ++s)
+    for (int c = 0; c < 2; ++c) {
+      const double v = s < kNodes ? du[2 * s + c] : alpha[kModes * c + (s - kNodes)];
+      for (int j = 0; j < 2; ++j) l[c][j] += v * gr.g[g][s][j];
+    }
+  deps = {l[0][0], l[1][1], 0.0, l[0][1] + l[1][0]};
+  omega = 0.5 * (l[0][1] - l[1][0]);
+  return true;
+}
+
+bool QM6InternalForce(const double xe[2 * kNodes], const Voigt sigma[kGauss], const Condensation &cond, ElemVec &f)
+{
+  Gradients gr;
+  if (!ComputeGradients(xe, gr)) return false;
+  // f12 = sum_g w det J B12^T sigma_g: per shape, grad P . sigma on each component.
+  double f12[kAll] = {};
+  for (int g = 0; g < kGauss; ++g) {
+    const double sxx = sigma[g][0], syy = sigma[g][1], sxy = sigma[g][3];
+    for (int s = 0; s < kShapes; ++s) {
+      const double gx = gr.g[g][s][0], gy = gr.g[g][s][1];
+      f12[Dof(s, 0)] += gr.wdet[g] * (gx * sxx + gy * sxy);
+      f12[Dof(s, 1)] += gr.wdet[g] * (gx * sxy + gy * syy);
+    }
+  }
+  for (int j = 0; j < kDofs; ++j) {
+    double sum = f12[j];
+    for (int m = 0; m < kInternal; ++m) sum += cond[m][j] * f12[kDofs + m];
+    f[j] = sum;
+  }
+  return true;
+}
+
+} // namespace tf::fe

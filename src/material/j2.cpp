@@ -1,0 +1,117 @@
+#include "tubeform/material/j2.hpp"
+
+#include <cmath>
+
+namespace tf {
+
+J2Plasticity::J2Plasticity(double e, double nu, std::unique_ptr<Hardening> h, double dep_ref, bool drift_correction)
+  : elastic_(e, nu), h_(std::move(h)), g_(e / (2 * (1 + nu))), dep_ref_(dep_ref), drift_correction_(drift_correction)
+{
+}
+
+Mat4 J2Plasticity::Tangent(const PointState &s) const
+{
+  Mat4 d = elastic_.matrix();
+  if (!s.plastic) return d;
+  const Voigt dev = Deviator(s.sigma);
+  const double sbar = VonMises(s.sigma);
+  if (!(sbar > 0)) return d;
+  // Paper eq. 1: D_ep = D_e - 9 G^2 / (sbar^2 (3G + H')) s s^T (Voigt s acts on gamma_xy as s_xy).
+  const double beta = 9 * g_ * g_ / (sbar * sbar * (3 * g_ + Modulus(s)));
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) d[r][c] -= beta * dev[r] * dev[c];
+  return d;
+}
+
+double J2Plasticity::PlasticStep(double ep, double a, double sbar) const
+{
+  // g(dep) = 3G dep + sigma_y(ep + dep) - sigma_y(ep) - 3G a / sbar is increasing,
+  // g(0) < 0 <= g(a / sbar): bracketed; regula falsi (Illinois) to round-off.
+  const double target = 3 * g_ * a / sbar, s0 = h_->YieldStress(ep);
+  const auto g = [&](double x) { return 3 * g_ * x + h_->YieldStress(ep + x) - s0 - target; };
+  double lo = 0, hi = a / sbar, glo = g(lo), ghi = g(hi);
+  if (ghi <= 0) return hi;
+  int side = 0;
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
+    const double x = (lo * ghi - hi * glo) / (ghi - glo), gx = g(x);
+    if (gx == 0) return x;
+    if (gx < 0) {
+      lo = x, glo = gx;
+      if (side == -1) ghi *= 0.5;
+      side = -1;
+    } else {
+      hi = x, ghi = gx;
+      if (side == 1) glo *= 0.5;
+      side = 1;
+    }
+  }
+  return 0.5 * (lo + hi);
+}
+
+UpdateInfo J2Plasticity::Update(PointState &s, const Voigt &deps) const
+{
+  UpdateInfo info;
+  const double trace = deps[0] + deps[1] + deps[2];
+  const Voigt dev = Deviator(s.sigma);
+  const double sbar = VonMises(s.sigma), a = DevDotStrain(dev, deps);
+  const Mat4 &de = elastic_.matrix();
+  Voigt dsig{};
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) dsig[r] += de[r][c] * deps[c];
+  if (s.plastic && a > 0 && sbar > 0) {
+    // Tangent update with H' the secant over this step's own plastic strain:
+    // dsigma = C_e de - 3G (dep / sbar) s, exact on a proportional path.
+    const double dep = PlasticStep(s.ep, a, sbar);
+    const double sy_old = h_->YieldStress(s.ep), sy_new = h_->YieldStress(s.ep + dep);
+    for (int r = 0; r < 4; ++r) s.sigma[r] += dsig[r] - 3 * g_ * dep / sbar * dev[r] - s.sigma[r] * trace;
+    if (dep > 0) s.hslope = (sy_new - sy_old) / dep;
+    s.ep += dep;
+    info.dwp = 0.5 * (sy_old + sy_new) * dep;
+    const double sbar_new = VonMises(s.sigma);
+    info.drift = sbar_new / sy_new - 1;
+    if (drift_correction_ && sbar_new > 0) {
+      // Scale the deviator back onto the yield surface, pressure kept.
+      const double p = (s.sigma[0] + s.sigma[1] + s.sigma[2]) / 3, f = sy_new / sbar_new;
+      for (int r = 0; r < 3; ++r) s.sigma[r] = p + f * (s.sigma[r] - p);
+      s.sigma[3] *= f;
+    }
+  } else {
+    for (int r = 0; r < 4; ++r) s.sigma[r] += dsig[r] - s.sigma[r] * trace;
+    if (s.plastic && a <= 0) s.plastic = false; // elastic unloading
+  }
+  return info;
+}
+
+double J2Plasticity::YieldOnset(const PointState &s, const Voigt &deps, double omega) const
+{
+  if (s.plastic) return 1e300;
+  // Linear stress path sigma + r dsigma (elastic law, spin and Kirchhoff term);
+  // 3/2 |dev(sigma + r dsigma)|^2 = sigma_y^2 is a quadratic in r.
+  Voigt ds{};
+  const Mat4 &de = elastic_.matrix();
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) ds[r] += de[r][c] * deps[c];
+  Voigt rotated = s.sigma;
+  RotateStress(ObjectiveScheme::Forward, omega, rotated);
+  const double trace = deps[0] + deps[1] + deps[2];
+  for (int r = 0; r < 4; ++r) ds[r] += rotated[r] - s.sigma[r] - s.sigma[r] * trace;
+  const Voigt s0 = Deviator(s.sigma), d1 = Deviator(ds);
+  const auto dot = [](const Voigt &x, const Voigt &y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + 2 * x[3] * y[3]; };
+  const double sy = h_->YieldStress(s.ep);
+  const double qa = 1.5 * dot(d1, d1), qb = 3 * dot(s0, d1), qc = 1.5 * dot(s0, s0) - sy * sy;
+  if (qc >= 0) return qb > 0 ? 0.0 : 1e300; // already on (or past) the surface
+  if (qa <= 0) return 1e300;
+  const double root = std::sqrt(qb * qb - 4 * qa * qc); // real since qc < 0 < qa
+  // The positive root, in the form free of cancellation for either sign of qb.
+  return qb >= 0 ? -2 * qc / (qb + root) : (-qb + root) / (2 * qa);
+}
+
+bool J2Plasticity::Loading(const PointState &s, const Voigt &deps) const
+{
+  const double a = DevDotStrain(Deviator(s.sigma), deps);
+  if (s.plastic) return a > 0;
+  // An elastic point counts as on the surface within a relative 1e-9.
+  return a > 0 && VonMises(s.sigma) >= (1 - 1e-9) * h_->YieldStress(s.ep);
+}
+
+} // namespace tf
