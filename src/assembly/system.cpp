@@ -257,3 +257,35 @@ PetscErrorCode System::FreeNorm(Vec f_local, double &norm)
 }
 
 } // namespace tf
+
+namespace tf {
+
+PetscErrorCode System::ExternalWork(Vec f_ext, Vec f_int, Vec du, double &work)
+{
+  const PetscScalar *fe, *fi, *d;
+  std::vector<char> fixed(2 * mesh_->num_nodes, 0);
+  double local = 0;
+
+  PetscFunctionBeginUser;
+  for (const auto &p : prescribed_) fixed[2 * p.node + p.comp] = 1;
+  PetscCall(VecGetArrayRead(f_ext, &fe));
+  PetscCall(VecGetArrayRead(f_int, &fi));
+  PetscCall(VecGetArrayRead(du, &d));
+  for (PetscInt n = 0; n < mesh_->num_nodes; ++n) {
+    const PetscInt o = mesh_->node_dof[n];
+    double e[2] = {PetscRealPart(fe[o]), PetscRealPart(fe[o + 1])}, i[2] = {PetscRealPart(fi[o]), PetscRealPart(fi[o + 1])}, u[2] = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
+    if (has_frame_[n]) {
+      Rotate(n, e[0], e[1], true);
+      Rotate(n, i[0], i[1], true);
+      Rotate(n, u[0], u[1], true);
+    }
+    for (int k = 0; k < 2; ++k) local += (fixed[2 * n + k] ? i[k] : e[k]) * u[k];
+  }
+  PetscCall(VecRestoreArrayRead(du, &d));
+  PetscCall(VecRestoreArrayRead(f_int, &fi));
+  PetscCall(VecRestoreArrayRead(f_ext, &fe));
+  PetscCall(MPIU_Allreduce(&local, &work, 1, MPIU_REAL, MPIU_SUM, mesh_->comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

@@ -9,7 +9,7 @@ namespace tf {
 
 namespace {
 const char *const kScenes[] = {"squaring", "flattening", "pressure", "shear", "rotation", "column"};
-const char *const kElements[] = {"q4", "bbar"};
+const char *const kElements[] = {"q4", "bbar", "qm6"};
 const char *const kMaterials[] = {"aluminum", "copper", "custom"};
 const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
 
@@ -37,8 +37,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
   PetscCall(PetscOptionsString("-mesh_file", "Gmsh 4.1 ASCII quad mesh with physical curves inner, outer, x0, y0 (replaces the structured mesh)", "tubeform", buf, buf, sizeof(buf), &set));
   if (set) opt.mesh_file = buf;
   choice = 1;
-  PetscCall(PetscOptionsEList("-element", "Element formulation: q4 (full integration), bbar (mean dilatation)", "tubeform", kElements, 2, kElements[choice], &choice, nullptr));
-  opt.element = choice == 0 ? fe::Formulation::Q4 : fe::Formulation::BBar;
+  PetscCall(PetscOptionsEList("-element", "Element formulation: q4 (full integration), bbar (mean dilatation), qm6 (incompatible modes: no shear locking in bending)", "tubeform", kElements, 3, kElements[choice], &choice, nullptr));
+  opt.element = choice == 0 ? fe::Formulation::Q4 : choice == 1 ? fe::Formulation::BBar : fe::Formulation::QM6;
   opt.element_name = kElements[choice];
   PetscOptionsEnd();
 

@@ -78,6 +78,7 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
   PetscCall(system_.Setup(mesh_));
   state_.assign(fe::kGauss * mesh_.num_cells, PointState{});
   yield_factor_.assign(state_.size(), 1e300);
+  if (opt_.element == fe::Formulation::QM6) condensation_.assign(mesh_.num_cells, fe::Condensation{});
   x_ = mesh_.x0;
   u_.assign(2 * mesh_.num_nodes, 0.0);
   PetscCall(PetscLogStagePop());
@@ -93,6 +94,35 @@ void Problem::CellCoordinates(PetscInt cell, double xe[8]) const
   }
 }
 
+bool Problem::CellStiffness(PetscInt e, const double xe[8], const Mat4 c[4], const Voigt s[4], fe::ElemMat &ke)
+{
+  if (opt_.element == fe::Formulation::QM6) return fe::QM6Stiffness(xe, c, s, true, ke, condensation_[e]);
+  fe::QuadGeometry geo;
+  if (!fe::ComputeGeometry(xe, geo)) return false;
+  fe::ElementStiffness(geo, opt_.element, c, s, true, ke);
+  return true;
+}
+
+bool Problem::CellKinematics(PetscInt e, const double xe[8], const fe::QuadGeometry &geo, int g, const fe::ElemVec &du, Voigt &deps, double &omega) const
+{
+  if (opt_.element != fe::Formulation::QM6) {
+    fe::IncrementKinematics(geo, g, opt_.element, du, deps, omega);
+    return true;
+  }
+  // Internal modes of the increment from the condensation of its assembly.
+  fe::InternalVec alpha{};
+  for (int k = 0; k < fe::kInternal; ++k)
+    for (int j = 0; j < fe::kDofs; ++j) alpha[k] += condensation_[e][k][j] * du[j];
+  return fe::QM6Kinematics(xe, g, du, alpha, deps, omega);
+}
+
+bool Problem::CellInternalForce(PetscInt e, const double xe[8], const fe::QuadGeometry &geo, const Voigt s[4], fe::ElemVec &f) const
+{
+  if (opt_.element == fe::Formulation::QM6) return fe::QM6InternalForce(xe, s, condensation_[e], f);
+  fe::InternalForce(geo, opt_.element, s, f);
+  return true;
+}
+
 // Element dofs of cell e from a local vector.
 static void GatherCell(const Mesh &mesh, PetscInt e, const PetscScalar *v, fe::ElemVec &ve)
 {
@@ -105,7 +135,6 @@ static void GatherCell(const Mesh &mesh, PetscInt e, const PetscScalar *v, fe::E
 
 PetscErrorCode Problem::AssembleTangent()
 {
-  fe::QuadGeometry geo;
   fe::ElemMat ke;
   Mat4 c[fe::kGauss];
   Voigt s[fe::kGauss];
@@ -117,15 +146,14 @@ PetscErrorCode Problem::AssembleTangent()
   PetscCall(system_.Begin());
   for (PetscInt e = 0; e < mesh_.num_cells; ++e) {
     CellCoordinates(e, xe);
-    if (!fe::ComputeGeometry(xe, geo)) {
-      bad = mesh_.cell_orig[e];
-      continue;
-    }
     for (int g = 0; g < fe::kGauss; ++g) {
       c[g] = material_->Tangent(state_[fe::kGauss * e + g]);
       s[g] = state_[fe::kGauss * e + g].sigma;
     }
-    fe::ElementStiffness(geo, opt_.element, c, s, true, ke);
+    if (!CellStiffness(e, xe, c, s, ke)) {
+      bad = mesh_.cell_orig[e];
+      continue;
+    }
     PetscCall(system_.AddElement(e, ke));
   }
   PetscCall(MPIU_Allreduce(&bad, &anybad, 1, MPIU_INT, MPI_MAX, comm_));
@@ -154,7 +182,7 @@ PetscErrorCode Problem::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Pe
       double omega;
       PointState &ps = state_[fe::kGauss * e + g];
       // The trial increment is linear in r on the start configuration.
-      fe::IncrementKinematics(geo, g, opt_.element, due, deps, omega);
+      CellKinematics(e, xe, geo, g, due, deps, omega);
       if (material_->plastic_law() && material_->Loading(ps, deps) != ps.plastic) {
         ++local_switches;
         if (apply) ps.plastic = !ps.plastic;
@@ -200,7 +228,7 @@ PetscErrorCode Problem::Commit(Vec du_local, double r, CommitInfo &info)
       Voigt deps;
       double omega;
       PointState &ps = state_[fe::kGauss * e + g];
-      fe::IncrementKinematics(geo, g, opt_.element, due, deps, omega);
+      CellKinematics(e, xe, geo, g, due, deps, omega);
       const Voigt old = ps.sigma;
       // Strang splitting: half the rotation, the constitutive increment in the
       // mid-rotated frame, the other half (forward scheme: all at once, first order).
@@ -251,7 +279,7 @@ PetscErrorCode Problem::InternalForce(Vec f_local)
     CellCoordinates(e, xe);
     if (!fe::ComputeGeometry(xe, geo)) continue;
     for (int g = 0; g < fe::kGauss; ++g) s[g] = state_[fe::kGauss * e + g].sigma;
-    fe::InternalForce(geo, opt_.element, s, fe_);
+    CellInternalForce(e, xe, geo, s, fe_);
     for (int a = 0; a < 4; ++a) {
       const PetscInt n = mesh_.cell_nodes[4 * e + a];
       f[mesh_.node_dof[n]] += fe_[2 * a];
@@ -294,29 +322,10 @@ PetscErrorCode Problem::WriteOutputs(ResultWriter &writer, PetscInt step, double
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Dot product of two local vectors where each entry is a rank's own
-// contribution (element- or edge-wise sums, not ghost-summed), summed over ranks.
-static PetscErrorCode ContributionDot(MPI_Comm comm, Vec a, Vec b, double &dot)
-{
-  const PetscScalar *x, *y;
-  PetscInt n;
-  double local = 0;
-
-  PetscFunctionBeginUser;
-  PetscCall(VecGetLocalSize(a, &n));
-  PetscCall(VecGetArrayRead(a, &x));
-  PetscCall(VecGetArrayRead(b, &y));
-  for (PetscInt k = 0; k < n; ++k) local += PetscRealPart(x[k] * y[k]);
-  PetscCall(VecRestoreArrayRead(b, &y));
-  PetscCall(VecRestoreArrayRead(a, &x));
-  PetscCall(MPIU_Allreduce(&local, &dot, 1, MPIU_REAL, MPIU_SUM, comm));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode Problem::Run()
 {
   ResultWriter writer;
-  Vec du, f_inc, f_ext, f_int, f_res;
+  Vec du, f_inc, f_ext, f_int, f_res, f_ext0, f_int0;
   std::vector<double> reactions;
   HistoryRow row;
   double lambda = 0, w_ext = 0, w_int = 0, w_plastic = 0;
@@ -337,10 +346,13 @@ PetscErrorCode Problem::Run()
   PetscCall(VecDuplicate(du, &f_ext));
   PetscCall(VecDuplicate(du, &f_int));
   PetscCall(VecDuplicate(du, &f_res));
+  PetscCall(VecDuplicate(du, &f_ext0));
+  PetscCall(VecDuplicate(du, &f_int0));
   PetscCall(VecZeroEntries(f_res));
 
   // Increment 0: the initial state.
   PetscCall(InternalForce(f_int));
+  PetscCall(scene_->ExternalForce(*this, 0.0, f_ext));
   PetscCall(scene_->Measure(*this, 0.0, f_int, row));
   history_.Append(row);
   PetscCall(WriteOutputs(writer, step++, 0.0));
@@ -387,24 +399,25 @@ PetscErrorCode Problem::Run()
     PetscCall(VecScale(du, r));
     PetscCall(VecScale(f_inc, r));
 
-    // 3. External work: load at the start plus half the increment, times du.
-    double dw_ext;
-    PetscCall(scene_->ExternalForce(*this, lambda, f_ext));
-    PetscCall(VecAXPY(f_ext, 0.5, f_inc));
-    PetscCall(ContributionDot(comm_, f_ext, du, dw_ext));
-
-    // 4. Commit: stresses, plastic state, geometry.
+    // 3. Commit: stresses, plastic state, geometry.
     CommitInfo ci;
+    PetscCall(VecCopy(f_ext, f_ext0));
+    PetscCall(VecCopy(f_int, f_int0));
     PetscCall(Commit(du, r, ci));
     lambda = r == 1.0 && lambda + dl >= next_break - eps ? next_break : lambda + r * dl;
+
+    // 4. Forces on the new configuration: out-of-balance force, and the
+    //    external work by the trapezoidal rule (loads on free dofs, reactions
+    //    on supported ones).
+    double residual, fnorm, dw_ext;
+    PetscCall(scene_->ExternalForce(*this, lambda, f_ext));
+    PetscCall(InternalForce(f_int));
+    PetscCall(VecAXPBY(f_ext0, 0.5, 0.5, f_ext));
+    PetscCall(VecAXPBY(f_int0, 0.5, 0.5, f_int));
+    PetscCall(system_.ExternalWork(f_ext0, f_int0, du, dw_ext));
     w_ext += dw_ext;
     w_int += ci.dw_int;
     w_plastic += ci.dw_plastic;
-
-    // 5. Out-of-balance force on the new configuration.
-    double residual, fnorm;
-    PetscCall(scene_->ExternalForce(*this, lambda, f_ext));
-    PetscCall(InternalForce(f_int));
     PetscCall(VecWAXPY(f_res, -1.0, f_int, f_ext));
     PetscCall(system_.FreeNorm(f_res, residual));
     PetscCall(system_.FreeNorm(f_ext, fnorm));
@@ -443,6 +456,8 @@ PetscErrorCode Problem::Run()
   PetscCall(VecDestroy(&f_ext));
   PetscCall(VecDestroy(&f_int));
   PetscCall(VecDestroy(&f_res));
+  PetscCall(VecDestroy(&f_ext0));
+  PetscCall(VecDestroy(&f_int0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -313,6 +313,7 @@ public:
     for (PetscInt n : pins) local += PetscRealPart(f[p.mesh().node_dof[n] + 1]);
     PetscCall(VecRestoreArrayRead(f_int, &f));
     PetscCall(MPIU_Allreduce(&local, &row.load, 1, MPIU_REAL, MPIU_SUM, p.comm()));
+    row.load = -row.load; // the strip pushes the pin up: compression counts positive
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 

