@@ -307,7 +307,7 @@ PetscErrorCode Problem::ElasticEnergy(double &w)
 
 PetscErrorCode Problem::WriteOutputs(ResultWriter &writer, PetscInt step, double t)
 {
-  std::vector<CellField> cells = {{"sigma_xx", {}}, {"sigma_yy", {}}, {"sigma_zz", {}}, {"sigma_xy", {}}, {"von_mises", {}}, {"eps_p", {}}};
+  std::vector<CellField> cells = {{"sigma_xx", {}}, {"sigma_yy", {}}, {"sigma_zz", {}}, {"sigma_xy", {}}, {"von_mises", {}}, {"eps_p", {}}, {"plastic", {}}};
   PetscFunctionBeginUser;
   for (auto &c : cells) c.values.assign(mesh_.num_cells, 0.0);
   // Cell values are Gauss-point averages.
@@ -315,8 +315,8 @@ PetscErrorCode Problem::WriteOutputs(ResultWriter &writer, PetscInt step, double
     for (int g = 0; g < fe::kGauss; ++g) {
       const PointState &ps = state_[fe::kGauss * e + g];
       const Voigt &s = ps.sigma;
-      const double vals[6] = {s[0], s[1], s[2], s[3], VonMises(s), ps.ep};
-      for (int k = 0; k < 6; ++k) cells[k].values[e] += 0.25 * vals[k];
+      const double vals[7] = {s[0], s[1], s[2], s[3], VonMises(s), ps.ep, ps.plastic ? 1.0 : 0.0};
+      for (int k = 0; k < 7; ++k) cells[k].values[e] += 0.25 * vals[k];
     }
   PetscCall(writer.WriteStep(step, t, u_, cells));
   PetscFunctionReturn(PETSC_SUCCESS);

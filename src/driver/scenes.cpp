@@ -178,7 +178,7 @@ public:
       double fr;
       const auto radial = [&](PetscInt n, double d[2]) {
         const double r = std::hypot(m.x0[2 * n], m.x0[2 * n + 1]);
-        d[0] = -m.x0[2 * n] / r, d[1] = -m.x0[2 * n + 1] / r; // the wall pushes back inwards
+        d[0] = m.x0[2 * n] / r, d[1] = m.x0[2 * n + 1] / r; // internal force = the pressure the support applies
       };
       PetscCall(SetForce(p, "inner", f_int, radial, fr));
       row.load = fr / g[2];

@@ -35,7 +35,7 @@ struct Options {
   PetscInt rmin_max_redo = 10;         // re-solves per increment for loading/unloading switches
   PetscBool drift_correction = PETSC_FALSE;
   PetscBool residual_correction = PETSC_FALSE;
-  ObjectiveScheme kinematics = ObjectiveScheme::Midpoint;
+  ObjectiveScheme kinematics = ObjectiveScheme::Forward; // METHOD.md sec. 2 as written
   // Scene parameters
   double pressure_p = 50.0;
   std::string pressure_control = "load";
