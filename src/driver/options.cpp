@@ -8,7 +8,7 @@
 namespace tf {
 
 namespace {
-const char *const kScenes[] = {"squaring", "flattening", "pressure", "shear", "rotation", "column"};
+const char *const kScenes[] = {"squaring", "flattening", "pressure", "shear", "rotation", "column", "tension"};
 const char *const kElements[] = {"q4", "bbar", "qm6"};
 const char *const kMaterials[] = {"aluminum", "copper", "custom"};
 const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
@@ -26,7 +26,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
 
   PetscOptionsBegin(comm, "", "tubeform: scene and geometry", "tubeform");
   choice = static_cast<PetscInt>(opt.scene);
-  PetscCall(PetscOptionsEList("-scene", "Scene to run", "tubeform", kScenes, 6, kScenes[choice], &choice, &set));
+  PetscCall(PetscOptionsEList("-scene", "Scene to run", "tubeform", kScenes, 7, kScenes[choice], &choice, &set));
   opt.scene = static_cast<SceneKind>(choice);
   opt.scene_name = kScenes[choice];
   PetscCall(PetscOptionsReal("-tube_ro", "Outer radius of the tube (mm)", "tubeform", opt.tube_ro, &opt.tube_ro, nullptr));
@@ -92,6 +92,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
   PetscCall(PetscOptionsReal("-pressure_u", "pressure scene: final inner radial displacement (mm), -pressure_control displacement", "tubeform", opt.pressure_u, &opt.pressure_u, nullptr));
   PetscCall(PetscOptionsReal("-stroke", "Final stroke U (mm): tool travel, or the prescribed end shortening of the column", "tubeform", opt.stroke, &opt.stroke, nullptr));
   PetscCall(PetscOptionsReal("-shear_gamma", "shear scene: final shear strain gamma", "tubeform", opt.shear_gamma, &opt.shear_gamma, nullptr));
+  PetscCall(PetscOptionsReal("-tension_strain", "tension scene: final nominal strain in x (negative: compression)", "tubeform", opt.tension_strain, &opt.tension_strain, nullptr));
   PetscCall(PetscOptionsReal("-rotation_angle", "rotation scene: rigid rotation after the prestretch (degrees)", "tubeform", opt.rotation_angle, &opt.rotation_angle, nullptr));
   PetscCall(PetscOptionsReal("-rotation_strain", "rotation scene: uniaxial prestretch strain in x before the rotation", "tubeform", opt.rotation_strain, &opt.rotation_strain, nullptr));
   PetscCall(PetscOptionsReal("-column_l", "column scene: length between the pins (mm)", "tubeform", opt.column_l, &opt.column_l, nullptr));
@@ -140,6 +141,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
   PetscCheck(opt.pressure_u > 0, comm, PETSC_ERR_USER_INPUT, "-pressure_u %g: must be positive (mm)", opt.pressure_u);
   PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);
   PetscCheck(std::isfinite(opt.shear_gamma) && opt.shear_gamma != 0, comm, PETSC_ERR_USER_INPUT, "-shear_gamma %g: must be a finite non-zero shear strain", opt.shear_gamma);
+  PetscCheck(std::isfinite(opt.tension_strain) && opt.tension_strain != 0 && std::fabs(opt.tension_strain) < 1, comm, PETSC_ERR_USER_INPUT, "-tension_strain %g: must be non-zero with |strain| < 1", opt.tension_strain);
   PetscCheck(std::fabs(opt.rotation_angle) <= 3600, comm, PETSC_ERR_USER_INPUT, "-rotation_angle %g: must lie within +-3600 degrees", opt.rotation_angle);
   PetscCheck(opt.column_l > 0 && opt.column_t > 0 && opt.column_t < opt.column_l, comm, PETSC_ERR_USER_INPUT, "-column_l %g, -column_t %g: need 0 < t < L", opt.column_l, opt.column_t);
   PetscCheck(std::isfinite(opt.pressure_p), comm, PETSC_ERR_USER_INPUT, "-pressure_p %g: must be a finite pressure (MPa)", opt.pressure_p);

@@ -16,7 +16,7 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt)
 {
   PetscFunctionBeginUser;
   auto scene = CreateScene(opt);
-  PetscCheck(scene, comm, PETSC_ERR_USER_INPUT, "-scene %s: not available yet (available: pressure, shear, rotation, column)", opt.scene_name.c_str());
+  PetscCheck(scene, comm, PETSC_ERR_USER_INPUT, "-scene %s: not available yet (available: pressure, shear, rotation, column, tension)", opt.scene_name.c_str());
   PetscCall(Setup(comm, opt, std::move(scene)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -245,6 +245,28 @@ public:
   }
 };
 
+// Plane-strain uniaxial tension or compression of a block (sigma_yy = 0):
+// left edge u_x = 0, bottom edge u_y = 0, right edge u_x = lambda * -tension_strain.
+// History: stroke = nominal strain, load = mean sigma_xx (MPa).
+class TensionScene : public BlockScene {
+public:
+  using BlockScene::BlockScene;
+  PetscErrorCode Load(Problem &p, double, double dlambda, Vec) override
+  {
+    for (PetscInt n : p.mesh().node_sets["left"]) p.system().Prescribe(n, 0, 0.0);
+    for (PetscInt n : p.mesh().node_sets["bottom"]) p.system().Prescribe(n, 1, 0.0);
+    for (PetscInt n : p.mesh().node_sets["right"]) p.system().Prescribe(n, 0, dlambda * opt_.tension_strain);
+    return 0;
+  }
+  PetscErrorCode Measure(Problem &p, double lambda, Vec, HistoryRow &row) override
+  {
+    PetscFunctionBeginUser;
+    row.stroke = lambda * opt_.tension_strain;
+    PetscCall(PointAverage(p, [](const PointState &s) { return s.sigma[0]; }, row.load));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+};
+
 // A block stretched in x (uniaxial strain -rotation_strain, lambda in [0, 0.1])
 // then turned rigidly about the origin by -rotation_angle (lambda in [0.1, 1]).
 // History: stroke = rotation angle so far (degrees), load = mean von Mises stress.
@@ -337,6 +359,7 @@ std::unique_ptr<Scene> CreateScene(const Options &opt)
   case SceneKind::Pressure: return std::make_unique<PressureScene>(opt);
   case SceneKind::Shear: return std::make_unique<ShearScene>(opt);
   case SceneKind::Rotation: return std::make_unique<RotationScene>(opt);
+  case SceneKind::Tension: return std::make_unique<TensionScene>(opt);
   case SceneKind::Column: return std::make_unique<ColumnScene>(opt);
   default: return nullptr;
   }

@@ -12,7 +12,7 @@
 
 namespace tf {
 
-enum class SceneKind { Squaring, Flattening, Pressure, Shear, Rotation, Column };
+enum class SceneKind { Squaring, Flattening, Pressure, Shear, Rotation, Column, Tension };
 
 struct Options {
   SceneKind scene = SceneKind::Pressure;
@@ -42,6 +42,7 @@ struct Options {
   double pressure_u = 0.1;
   double stroke = 4.2;                 // final tool stroke / prescribed end displacement (mm)
   double shear_gamma = 1.0;
+  double tension_strain = 0.1;        // signed: < 0 compresses
   double rotation_angle = 90.0;        // degrees
   double rotation_strain = 1e-3;       // prestretch before the rotation
   double column_l = 25.0, column_t = 1.0, column_imperfection = 0.025;
