@@ -30,7 +30,7 @@ struct Options {
   PetscInt increments = 10;            // trial increments over the load path
   double rmin_deps = 2e-3;             // r2: largest principal strain increment
   double rmin_domega = 1e-2;           // r3: largest rotation increment (rad)
-  double rmin_group_tol = 0.05;        // events within (1 + tol) r_min are taken together
+  double rmin_group_tol = 1e-6;        // events within (1 + tol) r_min are taken together
   PetscInt rmin_max_increments = 100000;
   PetscInt rmin_max_redo = 10;         // re-solves per increment for loading/unloading switches
   PetscBool drift_correction = PETSC_FALSE;
