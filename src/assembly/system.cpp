@@ -15,6 +15,8 @@ System::~System()
   (void)VecDestroy(&sol_);
   (void)VecDestroy(&fixed_);
   (void)VecDestroy(&f_local_);
+  (void)VecDestroy(&reactions_local_);
+  (void)VecDestroy(&reactions_global_);
   (void)KSPDestroy(&ksp_);
 }
 
@@ -32,6 +34,8 @@ PetscErrorCode System::Setup(const Mesh &mesh)
   PetscCall(VecDuplicate(rhs_, &sol_));
   PetscCall(VecDuplicate(rhs_, &fixed_));
   PetscCall(DMCreateLocalVector(mesh.dm, &f_local_));
+  PetscCall(DMCreateLocalVector(mesh.dm, &reactions_local_));
+  PetscCall(DMCreateGlobalVector(mesh.dm, &reactions_global_));
   PetscCall(PetscObjectSetName((PetscObject)sol_, "displacement"));
 
   // Direct solve by default; options (e.g. options/solver.opts) may override.
@@ -94,6 +98,7 @@ PetscErrorCode System::Begin()
   PetscCall(MatZeroEntries(k_));
   PetscCall(VecZeroEntries(f_local_));
   prescribed_.clear();
+  couplings_.clear();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -128,6 +133,21 @@ PetscErrorCode System::AddBlock(const PetscInt *nodes, int nn, const double *k_i
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+void System::AddFrameForce(PetscInt node, double fl, double fn)
+{
+  Rotate(node, fl, fn, false);
+  AddForce(node, fl, fn);
+}
+
+PetscErrorCode System::AddFrameStiffness(PetscInt node, double k_ll)
+{
+  PetscFunctionBeginUser;
+  const double c = cos_[node], s = sin_[node];
+  const double k[4] = {k_ll * c * c, k_ll * c * s, k_ll * c * s, k_ll * s * s};
+  PetscCall(AddBlock(&node, 1, k));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 void System::AddForce(PetscInt node, double fx, double fy)
 {
   PetscScalar *f;
@@ -156,6 +176,35 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
   PetscCall(VecRestoreArray(f_local_, &f));
   PetscCall(VecZeroEntries(rhs_));
   PetscCall(DMLocalToGlobal(mesh_->dm, f_local_, ADD_VALUES, rhs_));
+
+  // Friction correction rows: row l += c row n (owned rows; same pattern).
+  {
+    int any = 0, anyg;
+    for (const auto &cp : couplings_) {
+      if (!mesh_->node_owned[cp.node] || cp.value == 0) continue;
+      PetscInt local[2] = {mesh_->node_dof[cp.node], mesh_->node_dof[cp.node] + 1}, global[2], ncols, lo;
+      const PetscInt *cols;
+      const PetscScalar *vals;
+      PetscCall(ISLocalToGlobalMappingApply(ltog_, 2, local, global));
+      PetscCall(MatGetRow(k_, global[1], &ncols, &cols, &vals));
+      std::vector<PetscInt> c(cols, cols + ncols);
+      std::vector<PetscScalar> v(ncols);
+      for (PetscInt j = 0; j < ncols; ++j) v[j] = cp.value * vals[j];
+      PetscCall(MatRestoreRow(k_, global[1], &ncols, &cols, &vals));
+      PetscCall(MatSetValues(k_, 1, &global[0], ncols, c.data(), v.data(), ADD_VALUES));
+      PetscScalar *b;
+      PetscCall(VecGetOwnershipRange(rhs_, &lo, nullptr));
+      PetscCall(VecGetArray(rhs_, &b));
+      b[global[0] - lo] += cp.value * b[global[1] - lo];
+      PetscCall(VecRestoreArray(rhs_, &b));
+      any = 1;
+    }
+    PetscCallMPI(MPI_Allreduce(&any, &anyg, 1, MPI_INT, MPI_LOR, mesh_->comm));
+    if (anyg) {
+      PetscCall(MatAssemblyBegin(k_, MAT_FINAL_ASSEMBLY));
+      PetscCall(MatAssemblyEnd(k_, MAT_FINAL_ASSEMBLY));
+    }
+  }
 
   // Prescribed dofs owned here, as global rows.
   for (const auto &p : prescribed_) {
@@ -207,14 +256,19 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
     PetscCall(MatMult(reaction_rows_, sol_, r));
     PetscCall(VecGetArrayRead(r, &ra));
     reactions.assign(prescribed_.size(), 0.0);
+    PetscCall(VecZeroEntries(reactions_global_));
     size_t k = 0;
     for (size_t q = 0; q < prescribed_.size(); ++q)
       if (mesh_->node_owned[prescribed_[q].node]) {
         reactions[q] = PetscRealPart(ra[k]) - PetscRealPart(b_rows[k]);
+        PetscCall(VecSetValue(reactions_global_, rows[k], reactions[q], INSERT_VALUES));
         ++k;
       }
     PetscCall(VecRestoreArrayRead(r, &ra));
     PetscCall(VecDestroy(&r));
+    PetscCall(VecAssemblyBegin(reactions_global_));
+    PetscCall(VecAssemblyEnd(reactions_global_));
+    PetscCall(DMGlobalToLocal(mesh_->dm, reactions_global_, INSERT_VALUES, reactions_local_));
   }
 
   // Back to the global frame, ghosts filled.

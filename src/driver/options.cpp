@@ -91,6 +91,21 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
   }
   PetscCall(PetscOptionsReal("-pressure_u", "pressure scene: final inner radial displacement (mm), -pressure_control displacement", "tubeform", opt.pressure_u, &opt.pressure_u, nullptr));
   PetscCall(PetscOptionsReal("-stroke", "Final stroke U (mm): tool travel, or the prescribed end shortening of the column", "tubeform", opt.stroke, &opt.stroke, nullptr));
+  PetscCall(PetscOptionsReal("-stroke_corner_radius", "Choose the stroke by the paper's rule: outer corner radius (mm) of the perimeter-conserving rounded square (e.g. 4 t)", "tubeform", opt.stroke_corner_radius, &opt.stroke_corner_radius, nullptr));
+  PetscCall(PetscOptionsReal("-die_r_apex", "V-die apex fillet radius (mm)", "tubeform", opt.die_r_apex, &opt.die_r_apex, nullptr));
+  PetscCall(PetscOptionsReal("-die_u_close", "V-die parting face at y = u_close - U: the dies close at stroke u_close (mm; 0: no parting face)", "tubeform", opt.die_u_close, &opt.die_u_close, nullptr));
+  PetscCall(PetscOptionsReal("-die_r_edge", "V-die edge fillet radius between flank and parting face (mm)", "tubeform", opt.die_r_edge, &opt.die_r_edge, nullptr));
+  PetscCall(PetscOptionsReal("-friction_mu", "Coulomb friction coefficient (0: frictionless, no friction work at all)", "tubeform", opt.friction_mu, &opt.friction_mu, nullptr));
+  PetscCall(PetscOptionsReal("-friction_vcri", "Quasi-stick slip VCRI (mm) of the tanh law; 0: 2% of the circumferential element size", "tubeform", opt.friction_vcri, &opt.friction_vcri, nullptr));
+  PetscCall(PetscOptionsReal("-friction_tol", "Friction iterations: largest change of f_l / (mu f_n) between iterates", "tubeform", opt.friction_tol, &opt.friction_tol, nullptr));
+  PetscCall(PetscOptionsInt("-friction_max_iters", "Friction iterations per increment before giving up", "tubeform", opt.friction_max_iters, &opt.friction_max_iters, nullptr));
+  PetscCall(PetscOptionsReal("-rmin_dphi", "r6: largest change of the friction mobilization f_l / (mu f_n) in an increment", "tubeform", opt.rmin_dphi, &opt.rmin_dphi, nullptr));
+  {
+    const char *const unloads[] = {"reverse", "withdraw", "none"};
+    choice = opt.unload == "reverse" ? 0 : opt.unload == "withdraw" ? 1 : 2;
+    PetscCall(PetscOptionsEList("-unload", "Springback: reverse (paper: elastic, contact forces reversed, tools removed), withdraw (tools move back), none", "tubeform", unloads, 3, unloads[choice], &choice, nullptr));
+    opt.unload = unloads[choice];
+  }
   PetscCall(PetscOptionsReal("-shear_gamma", "shear scene: final shear strain gamma", "tubeform", opt.shear_gamma, &opt.shear_gamma, nullptr));
   PetscCall(PetscOptionsReal("-tension_strain", "tension scene: final nominal strain in x (negative: compression)", "tubeform", opt.tension_strain, &opt.tension_strain, nullptr));
   PetscCall(PetscOptionsReal("-rotation_angle", "rotation scene: rigid rotation after the prestretch (degrees)", "tubeform", opt.rotation_angle, &opt.rotation_angle, nullptr));
@@ -138,6 +153,13 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
     }
     PetscCheck(t[1] > 0, comm, PETSC_ERR_USER_INPUT, "-material_table: the initial yield stress must be positive (got %g)", t[1]);
   }
+  PetscCheck(opt.die_r_apex >= 0 && opt.die_r_apex < opt.tube_ro, comm, PETSC_ERR_USER_INPUT, "-die_r_apex %g: must lie in [0, -tube_ro)", opt.die_r_apex);
+  PetscCheck(opt.die_u_close >= 0 && opt.die_r_edge >= 0, comm, PETSC_ERR_USER_INPUT, "-die_u_close %g, -die_r_edge %g: must be non-negative", opt.die_u_close, opt.die_r_edge);
+  PetscCheck(opt.friction_mu >= 0 && opt.friction_mu <= 2, comm, PETSC_ERR_USER_INPUT, "-friction_mu %g: the friction coefficient must lie in [0, 2]", opt.friction_mu);
+  PetscCheck(opt.friction_vcri >= 0, comm, PETSC_ERR_USER_INPUT, "-friction_vcri %g: must be non-negative (0: automatic)", opt.friction_vcri);
+  PetscCheck(opt.friction_tol > 0 && opt.friction_max_iters >= 1, comm, PETSC_ERR_USER_INPUT, "-friction_tol %g, -friction_max_iters %d: need tol > 0 and at least one iteration", opt.friction_tol, (int)opt.friction_max_iters);
+  PetscCheck(opt.rmin_dphi > 0 && opt.rmin_dphi <= 2, comm, PETSC_ERR_USER_INPUT, "-rmin_dphi %g: must lie in (0, 2]", opt.rmin_dphi);
+  PetscCheck(opt.stroke_corner_radius >= 0, comm, PETSC_ERR_USER_INPUT, "-stroke_corner_radius %g: must be non-negative", opt.stroke_corner_radius);
   PetscCheck(opt.pressure_u > 0, comm, PETSC_ERR_USER_INPUT, "-pressure_u %g: must be positive (mm)", opt.pressure_u);
   PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);
   PetscCheck(std::isfinite(opt.shear_gamma) && opt.shear_gamma != 0, comm, PETSC_ERR_USER_INPUT, "-shear_gamma %g: must be a finite non-zero shear strain", opt.shear_gamma);

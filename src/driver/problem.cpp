@@ -10,6 +10,12 @@
 
 namespace tf {
 
+// A point within this relative distance of the yield surface counts as on it
+// (an event resolved up to round-off of a re-solved step is not a new event).
+constexpr double kOnSurface = 1e-6;
+// Events of a re-solved (friction) step found this far beyond its end are taken with it.
+constexpr double kEventSlack = 1e-2;
+
 Problem::~Problem() = default;
 
 PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt)
@@ -239,7 +245,7 @@ PetscErrorCode Problem::Commit(Vec du_local, double r, CommitInfo &info)
       // Points that reach the yield surface in this increment (the limiter and
       // those grouped with it), or pass it, are plastic from now on.
       if (!ps.plastic && material_->plastic_law() &&
-          (yield_factor_[fe::kGauss * e + g] <= r * (1 + opt_.rmin_group_tol) || VonMises(ps.sigma) >= material_->YieldStress(ps.ep)))
+          (yield_factor_[fe::kGauss * e + g] <= r * (1 + opt_.rmin_group_tol) || VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep)))
         ps.plastic = true;
       nplastic += ps.plastic;
       for (int c = 0; c < 4; ++c) local[0] += geo.wdet[g] * 0.5 * (old[c] + ps.sigma[c]) * deps[c];
@@ -261,6 +267,48 @@ PetscErrorCode Problem::Commit(Vec du_local, double r, CommitInfo &info)
   info.dw_plastic = global[1];
   info.drift = global[2];
   PetscCall(PetscLogEventEnd(Log::update, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void Problem::SetElasticOnly()
+{
+  material_ = std::make_unique<Elastic>(opt_.material.E, opt_.material.nu);
+  for (auto &ps : state_) ps.plastic = false;
+}
+
+PetscErrorCode Problem::SolveTrial(double lambda, double dl, Vec du, StepLimit &limit, PetscInt &redo, PetscInt &iterations)
+{
+  PetscInt switches = 0;
+  std::vector<double> reactions;
+
+  PetscFunctionBeginUser;
+  redo = 0;
+  // One loop re-solves until nothing changes: friction forces linearized
+  // about the last iterate, and points whose loading state (alpha) disagreed
+  // with the last solution switched (at most -rmin_max_redo times).
+  scene_->ResetIterates();
+  for (PetscInt it = 0;; ++it) {
+    PetscCall(AssembleTangent());
+    PetscCall(VecZeroEntries(f_inc_));
+    PetscCall(scene_->Load(*this, lambda, dl, f_inc_));
+    if (opt_.residual_correction) {
+      const PetscScalar *fr;
+      PetscCall(VecGetArrayRead(f_res_, &fr));
+      for (PetscInt n = 0; n < mesh_.num_nodes; ++n) system_.AddForce(n, PetscRealPart(fr[mesh_.node_dof[n]]), PetscRealPart(fr[mesh_.node_dof[n] + 1]));
+      PetscCall(VecRestoreArrayRead(f_res_, &fr));
+    }
+    PetscCall(system_.Solve(du, reactions));
+    ++iterations;
+    bool converged = true;
+    if (scene_->Iterative()) PetscCall(scene_->UpdateIterates(*this, du, converged));
+    limit = StepLimit{};
+    const bool may_switch = redo < opt_.rmin_max_redo;
+    PetscCall(ScanTrial(du, may_switch, limit, switches));
+    if (switches > 0 && may_switch) ++redo;
+    if (converged && (switches == 0 || !may_switch)) break;
+    PetscCheck(it < opt_.friction_max_iters + opt_.rmin_max_redo, comm_, PETSC_ERR_NOT_CONVERGED, "friction iterations did not converge in %d iterations at lambda = %g: lower -rmin_dphi or raise -friction_vcri", (int)opt_.friction_max_iters, lambda);
+  }
+  PetscCall(scene_->LimitStep(*this, du, limit));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -325,10 +373,9 @@ PetscErrorCode Problem::WriteOutputs(ResultWriter &writer, PetscInt step, double
 PetscErrorCode Problem::Run()
 {
   ResultWriter writer;
-  Vec du, f_inc, f_ext, f_int, f_res, f_ext0, f_int0;
-  std::vector<double> reactions;
+  Vec du, f_ext, f_int, f_ext0, f_int0;
   HistoryRow row;
-  double lambda = 0, w_ext = 0, w_int = 0, w_plastic = 0;
+  double lambda = 0, w_ext = 0, w_int = 0, w_plastic = 0, w_friction = 0;
   PetscInt step = 0, inc = 0;
 
   PetscFunctionBeginUser;
@@ -342,85 +389,106 @@ PetscErrorCode Problem::Run()
     PetscCheck(ok, comm_, PETSC_ERR_USER_INPUT, "-history_csv %s: cannot create the file (does the directory exist and is it writable?)", opt_.history_csv.c_str());
   }
   du = system_.CreateLocalVector();
-  PetscCall(VecDuplicate(du, &f_inc));
+  PetscCall(VecDuplicate(du, &f_inc_));
+  PetscCall(VecDuplicate(du, &f_res_));
   PetscCall(VecDuplicate(du, &f_ext));
   PetscCall(VecDuplicate(du, &f_int));
-  PetscCall(VecDuplicate(du, &f_res));
   PetscCall(VecDuplicate(du, &f_ext0));
   PetscCall(VecDuplicate(du, &f_int0));
-  PetscCall(VecZeroEntries(f_res));
+  PetscCall(VecZeroEntries(f_res_));
 
   // Increment 0: the initial state.
+  PetscCall(scene_->Initialize(*this));
   PetscCall(InternalForce(f_int));
   PetscCall(scene_->ExternalForce(*this, 0.0, f_ext));
   PetscCall(scene_->Measure(*this, 0.0, f_int, row));
   history_.Append(row);
   PetscCall(WriteOutputs(writer, step++, 0.0));
 
+  const double end = scene_->PathEnd(), eps = 1e-12;
   std::vector<double> breaks = scene_->Breakpoints();
-  breaks.push_back(1.0);
-  const double dlambda_trial = 1.0 / opt_.increments, eps = 1e-12;
+  breaks.push_back(end);
+  std::vector<char> started(breaks.size(), 0);
+  const double dlambda_trial = 1.0 / opt_.increments;
   PetscCall(PetscLogStagePush(Log::load_stage));
-  while (lambda < 1.0 - eps) {
+  while (lambda < end - eps) {
     PetscCheck(++inc <= opt_.rmin_max_increments, comm_, PETSC_ERR_NOT_CONVERGED, "no convergence of the load path: %d increments reached lambda = %g; raise -rmin_max_increments or relax -rmin_deps / -rmin_domega", (int)opt_.rmin_max_increments, lambda);
-    const double next_break = *std::find_if(breaks.begin(), breaks.end(), [&](double b) { return b > lambda + eps; });
-    const double dl = std::min(dlambda_trial, next_break - lambda);
-
-    // 1. Trial solution; re-solved while points switch between loading and
-    //    unloading (alpha), at most -rmin_max_redo times.
-    StepLimit limit;
-    PetscInt switches = 0, redo = 0;
-    PetscCall(scene_->BeginIncrement(*this, lambda));
-    for (;;) {
-      PetscCall(AssembleTangent());
-      PetscCall(VecZeroEntries(f_inc));
-      PetscCall(scene_->Load(*this, lambda, dl, f_inc));
-      if (opt_.residual_correction) {
-        const PetscScalar *fr;
-        PetscCall(VecGetArrayRead(f_res, &fr));
-        for (PetscInt n = 0; n < mesh_.num_nodes; ++n) system_.AddForce(n, PetscRealPart(fr[mesh_.node_dof[n]]), PetscRealPart(fr[mesh_.node_dof[n] + 1]));
-        PetscCall(VecRestoreArrayRead(f_res, &fr));
+    for (size_t b = 0; b + 1 < breaks.size(); ++b)
+      if (!started[b] && lambda >= breaks[b] - eps) {
+        started[b] = 1;
+        PetscCall(scene_->BeginStage(*this, lambda));
       }
-      PetscCall(system_.Solve(du, reactions));
-      limit = StepLimit{};
-      const bool may_redo = redo < opt_.rmin_max_redo;
-      PetscCall(ScanTrial(du, may_redo, limit, switches));
-      if (switches == 0 || !may_redo) break;
-      ++redo;
-    }
-    PetscCall(scene_->LimitStep(*this, du, limit));
+    const double next_break = *std::find_if(breaks.begin(), breaks.end(), [&](double b) { return b > lambda + eps; });
+    double dl = std::min(dlambda_trial, next_break - lambda);
 
-    // 2. r_min: the linear increment is scaled as a whole.
-    double r = 1.0;
-    Limiter who = next_break >= 1.0 - eps && lambda + dl >= 1.0 - eps ? Limiter::Final : Limiter::Trial;
+    // 1. Trial solution and its r_min (paper eq. 16).
+    StepLimit limit;
+    PetscInt redo = 0, iterations = 0;
+    PetscCall(scene_->BeginIncrement(*this, lambda));
+    PetscCall(SolveTrial(lambda, dl, du, limit, redo, iterations));
+    Limiter who = lambda + dl >= end - eps ? Limiter::Final : Limiter::Trial;
     PetscInt where = -1;
+    double r = 1.0, react_scale = 1.0, r_event = 1.0;
     if (limit.r < 1.0) r = limit.r, who = limit.who, where = limit.where;
     PetscCheck(r > 1e-10, comm_, PETSC_ERR_NOT_CONVERGED, "r_min = %g (%s at %d) at lambda = %g: the increment cannot advance", r, LimiterName((int)limit.who), (int)limit.where, lambda);
-    PetscCall(VecScale(du, r));
-    PetscCall(VecScale(f_inc, r));
+    if (r < 1.0 && scene_->Iterative()) {
+      // Friction is not linear in r: solve the shortened step again; what is
+      // left of any event is taken by a last linear scaling.
+      dl *= r;
+      PetscInt redo2 = 0;
+      PetscCall(SolveTrial(lambda, dl, du, limit, redo2, iterations));
+      redo += redo2;
+      // The shortened step was aimed at the event: one found just past its end
+      // (the re-solve moved it by the friction non-linearity) is taken now.
+      r_event = limit.r >= 1.0 ? (limit.r <= 1.0 + kEventSlack ? 1.0 + kEventSlack : 1.0) : limit.r;
+      if (r_event < 1.0) {
+        PetscCall(VecScale(du, r_event));
+        react_scale = r_event;
+        dl *= r_event;
+        r *= r_event;
+      }
+    } else {
+      PetscCall(VecScale(du, r));
+      react_scale = r_event = r;
+      dl *= r;
+    }
 
-    // 3. Commit: stresses, plastic state, geometry.
+    // 2. Commit: stresses, plastic state, geometry, then the scene's state (contact).
     CommitInfo ci;
+    double dw_friction = 0;
     PetscCall(VecCopy(f_ext, f_ext0));
     PetscCall(VecCopy(f_int, f_int0));
-    PetscCall(Commit(du, r, ci));
-    lambda = r == 1.0 && lambda + dl >= next_break - eps ? next_break : lambda + r * dl;
+    PetscCall(Commit(du, r_event, ci));
+    PetscCall(scene_->CommitIncrement(*this, du, react_scale, r_event, dw_friction));
+    lambda = std::abs(lambda + dl - next_break) < 1e-9 * dlambda_trial ? next_break : lambda + dl;
 
-    // 4. Forces on the new configuration: out-of-balance force, and the
+    // 3. Forces on the new configuration: out-of-balance force, and the
     //    external work by the trapezoidal rule (loads on free dofs, reactions
-    //    on supported ones).
-    double residual, fnorm, dw_ext;
+    //    on supported ones). The tools' work is the body's external work plus
+    //    what friction dissipated.
+    double residual, fnorm, dw_body;
     PetscCall(scene_->ExternalForce(*this, lambda, f_ext));
     PetscCall(InternalForce(f_int));
     PetscCall(VecAXPBY(f_ext0, 0.5, 0.5, f_ext));
     PetscCall(VecAXPBY(f_int0, 0.5, 0.5, f_int));
-    PetscCall(system_.ExternalWork(f_ext0, f_int0, du, dw_ext));
-    w_ext += dw_ext;
+    PetscCall(system_.ExternalWork(f_ext0, f_int0, du, dw_body));
+    w_ext += dw_body + dw_friction;
+    w_friction += dw_friction;
     w_int += ci.dw_int;
     w_plastic += ci.dw_plastic;
-    PetscCall(VecWAXPY(f_res, -1.0, f_int, f_ext));
-    PetscCall(system_.FreeNorm(f_res, residual));
-    PetscCall(system_.FreeNorm(f_ext, fnorm));
+    PetscCall(VecWAXPY(f_res_, -1.0, f_int, f_ext));
+    PetscCall(system_.FreeNorm(f_res_, residual));
+    {
+      // Scale of the forces: the internal force over all dofs.
+      PetscReal nrm;
+      Vec g;
+      PetscCall(DMGetGlobalVector(mesh_.dm, &g));
+      PetscCall(VecZeroEntries(g));
+      PetscCall(DMLocalToGlobal(mesh_.dm, f_int, ADD_VALUES, g));
+      PetscCall(VecNorm(g, NORM_2, &nrm));
+      PetscCall(DMRestoreGlobalVector(mesh_.dm, &g));
+      fnorm = nrm;
+    }
 
     row = HistoryRow{};
     row.increment = inc;
@@ -428,34 +496,38 @@ PetscErrorCode Problem::Run()
     row.limiter = static_cast<double>(who);
     row.limiter_where = where;
     row.n_plastic = ci.n_plastic;
+    row.friction_iters = iterations;
     row.residual = residual;
     row.redo = redo;
     row.drift = ci.drift;
     row.w_ext = w_ext;
     row.w_int = w_int;
     row.w_plastic = w_plastic;
+    row.w_friction = w_friction;
     PetscCall(ElasticEnergy(row.w_elastic));
-    row.energy_error = (w_ext - w_int) / std::max(std::abs(w_ext), 1e-300);
+    row.energy_error = (w_ext - w_int - w_friction) / std::max(std::abs(w_ext), 1e-300);
     PetscCall(scene_->Measure(*this, lambda, f_int, row));
     history_.Append(row);
     if (opt_.monitor)
-      PetscCall(PetscPrintf(comm_, "inc %5d  lambda %.5f  stroke %-11.5g load %-11.5g r_min %.3g (%s%s)  plastic %d  redo %d  residual %.2e (rel %.1e)  energy err %.1e\n", (int)inc, lambda, row.stroke, row.load, r, LimiterName((int)who),
-                            where >= 0 ? (" @" + std::to_string(where)).c_str() : "", (int)ci.n_plastic, (int)redo, residual, residual / std::max(fnorm, 1e-300), row.energy_error));
-    if (inc % opt_.output_every == 0 || lambda >= 1.0 - eps) PetscCall(WriteOutputs(writer, step++, lambda));
+      PetscCall(PetscPrintf(comm_, "inc %5d  lambda %.5f  stroke %-11.5g load %-11.5g r_min %.3g (%s%s)  plastic %d  contact %d  iters %d  residual %.2e (rel %.1e)  energy err %.1e\n", (int)inc, lambda, row.stroke, row.load, r, LimiterName((int)who),
+                            where >= 0 ? (" @" + std::to_string(where)).c_str() : "", (int)ci.n_plastic, (int)row.n_contact, (int)iterations, residual, residual / std::max(fnorm, 1e-300), row.energy_error));
+    if (inc % opt_.output_every == 0 || lambda >= end - eps) PetscCall(WriteOutputs(writer, step++, lambda));
   }
   PetscCall(PetscLogStagePop());
 
   PetscCall(PetscLogStagePush(Log::output_stage));
   const HistoryRow &last = history_.rows().back();
-  PetscCall(writer.Close(history_, {{"final_stroke", last.stroke}, {"final_load", last.load}, {"x_max", last.x_max}, {"y_max", last.y_max}}));
+  std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke}, {"final_load", last.load}, {"x_max", last.x_max}, {"y_max", last.y_max}};
+  for (const auto &m : scene_->FinalMetrics(history_)) metrics.push_back(m);
+  PetscCall(writer.Close(history_, metrics));
   PetscCheck(history_.FinishCsv(), comm_, PETSC_ERR_FILE_WRITE, "-history_csv %s: cannot rename the finished file into place", opt_.history_csv.c_str());
   PetscCall(PetscLogStagePop());
   PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n", opt_.scene_name.c_str(), (int)inc, (int)system_.factorizations(), opt_.output.c_str()));
   PetscCall(VecDestroy(&du));
-  PetscCall(VecDestroy(&f_inc));
+  PetscCall(VecDestroy(&f_inc_));
+  PetscCall(VecDestroy(&f_res_));
   PetscCall(VecDestroy(&f_ext));
   PetscCall(VecDestroy(&f_int));
-  PetscCall(VecDestroy(&f_res));
   PetscCall(VecDestroy(&f_ext0));
   PetscCall(VecDestroy(&f_int0));
   PetscFunctionReturn(PETSC_SUCCESS);

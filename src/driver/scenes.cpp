@@ -3,12 +3,11 @@
 
 #include "tubeform/core.hpp"
 #include "tubeform/driver/problem.hpp"
+#include "tubeform/driver/scene_util.hpp"
 #include "tubeform/mesh/generator.hpp"
 #include "tubeform/mesh/gmsh_reader.hpp"
 
 namespace tf {
-
-namespace {
 
 // Nodal forces of a uniform pressure on the edges of `set`, on the current
 // geometry: each edge pushes its two nodes by -p n L / 2 (n outward from the
@@ -16,7 +15,7 @@ namespace {
 // goes into the system: with n L = (y_b - y_a, x_a - x_b) the nodal force
 // changes by (p/2) (du_ya - du_yb, du_xb - du_xa) as the edge moves, and
 // moving that to the left-hand side adds its negative to K.
-PetscErrorCode AddEdgePressure(Problem &p, const std::string &set, double pressure, Vec f_local, bool to_system, double stiffness_p = 0)
+PetscErrorCode AddEdgePressure(Problem &p, const std::string &set, double pressure, Vec f_local, bool to_system, double stiffness_p)
 {
   PetscScalar *f;
   Mesh &mesh = p.mesh();
@@ -83,43 +82,14 @@ PetscErrorCode OuterExtents(Problem &p, HistoryRow &row)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Sum over ranks of each rank's element contributions at the nodes of a set
-// (owned and ghost: every contribution is counted once), dotted with `dir(n)`.
-template <class Dir>
-PetscErrorCode SetForce(Problem &p, const std::string &set, Vec f_local, Dir dir, double &total)
-{
-  const PetscScalar *f;
-  double local = 0;
-  PetscFunctionBeginUser;
-  PetscCall(VecGetArrayRead(f_local, &f));
-  for (PetscInt n : p.mesh().node_sets[set]) {
-    double d[2];
-    dir(n, d);
-    local += d[0] * PetscRealPart(f[p.mesh().node_dof[n]]) + d[1] * PetscRealPart(f[p.mesh().node_dof[n] + 1]);
-  }
-  PetscCall(VecRestoreArrayRead(f_local, &f));
-  PetscCall(MPIU_Allreduce(&local, &total, 1, MPIU_REAL, MPIU_SUM, p.comm()));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// Volume-free average over all Gauss points of a function of the point state.
-template <class F>
-PetscErrorCode PointAverage(Problem &p, F f, double &avg)
-{
-  double local[2] = {0, 0}, g[2];
-  PetscFunctionBeginUser;
-  for (const auto &ps : p.state()) local[0] += f(ps), local[1] += 1;
-  PetscCall(MPIU_Allreduce(local, g, 2, MPIU_REAL, MPIU_SUM, p.comm()));
-  avg = g[0] / g[1];
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 std::string TubeMesh(const Options &opt, SerialMesh &mesh)
 {
   if (!opt.mesh_file.empty()) return ReadGmsh(opt.mesh_file, mesh);
   mesh = GenerateQuarterAnnulus(opt.tube_ro, opt.tube_t, (int)opt.mesh_nt, (int)opt.mesh_ntheta);
   return "";
 }
+
+namespace {
 
 // Thick cylinder under internal pressure (quarter, plane strain).
 // -pressure_control load: the pressure is ramped to -pressure_p; history
@@ -353,6 +323,8 @@ private:
 
 } // namespace
 
+std::unique_ptr<Scene> CreateToolScene(const Options &opt); // tool_scenes.cpp
+
 std::unique_ptr<Scene> CreateScene(const Options &opt)
 {
   switch (opt.scene) {
@@ -360,6 +332,8 @@ std::unique_ptr<Scene> CreateScene(const Options &opt)
   case SceneKind::Shear: return std::make_unique<ShearScene>(opt);
   case SceneKind::Rotation: return std::make_unique<RotationScene>(opt);
   case SceneKind::Tension: return std::make_unique<TensionScene>(opt);
+  case SceneKind::Squaring:
+  case SceneKind::Flattening: return CreateToolScene(opt);
   case SceneKind::Column: return std::make_unique<ColumnScene>(opt);
   default: return nullptr;
   }

@@ -35,6 +35,11 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"deviation_ratio", &HistoryRow::deviation_ratio, "min(C1, C2) / max(C1, C2)"},
     {"redo", &HistoryRow::redo, "re-solves of the increment for loading/unloading switches"},
     {"drift", &HistoryRow::drift, "largest |sbar / sigma_y - 1| of a plastic update (before any drift correction)"},
+    {"r_corner_x", &HistoryRow::r_corner_x, "outer corner radius on the x axis (3-node estimate, mm)"},
+    {"r_corner_y", &HistoryRow::r_corner_y, "outer corner radius on the y axis (3-node estimate, mm)"},
+    {"penetration", &HistoryRow::penetration, "largest penetration of a node into a tool (mm)"},
+    {"tension", &HistoryRow::tension, "largest tensile (negative) normal force of a contact node"},
+    {"stage", &HistoryRow::stage, "0 loading, 1 unloading"},
   };
   return cols;
 }

@@ -99,7 +99,9 @@ double J2Plasticity::YieldOnset(const PointState &s, const Voigt &deps, double o
   const auto dot = [](const Voigt &x, const Voigt &y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + 2 * x[3] * y[3]; };
   const double sy = h_->YieldStress(s.ep);
   const double qa = 1.5 * dot(d1, d1), qb = 3 * dot(s0, d1), qc = 1.5 * dot(s0, s0) - sy * sy;
-  if (qc >= 0) return qb > 0 ? 0.0 : 1e300; // already on (or past) the surface
+  // Already on (or past) the surface: an event now if it loads by the same
+  // criterion as Loading (s : de > 0), else none.
+  if (qc >= 0) return DevDotStrain(s0, deps) > 0 ? 0.0 : 1e300;
   if (qa <= 0) return 1e300;
   const double root = std::sqrt(qb * qb - 4 * qa * qc); // real since qc < 0 < qa
   // The positive root, in the form free of cancellation for either sign of qb.

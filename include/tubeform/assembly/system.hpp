@@ -46,6 +46,14 @@ public:
   // global frame); used for load stiffness and contact rows.
   PetscErrorCode AddBlock(const PetscInt *nodes, int nn, const double *k);
   void AddForce(PetscInt node, double fx, double fy); // global-frame load increment
+  // A load given in the node's frame (l, n).
+  void AddFrameForce(PetscInt node, double fl, double fn);
+  // k on the node's l dof (l l^T in the global frame): a tangential spring.
+  PetscErrorCode AddFrameStiffness(PetscInt node, double k_ll);
+  // Owned nodes only: after assembly, row l of the node's frame gets
+  // coeff x (row n, with its load): the unsymmetric friction correction row
+  // (METHOD.md sec. 3). Rows l and n of a node share their pattern.
+  void AddRowCoupling(PetscInt node, double coeff) { couplings_.push_back({node, 0, coeff}); }
   void Prescribe(PetscInt node, int comp, double value) { prescribed_.push_back({node, comp, value}); }
   // Prescribes the displacement along the global unit direction (dx, dy); with
   // a frame, that direction must be one of the frame's axes. False otherwise.
@@ -54,6 +62,9 @@ public:
   // increment and `reactions` the force increments at the prescribed dofs
   // (same order as prescribed(); entries for unowned nodes are 0).
   PetscErrorCode Solve(Vec du, std::vector<double> &reactions);
+  // The reaction increments of the last solve as a local vector in the node
+  // frames (prescribed dofs only, ghosts filled).
+  Vec reactions_local() const { return reactions_local_; }
 
   const std::vector<Prescribed> &prescribed() const { return prescribed_; }
   Vec CreateLocalVector() const;
@@ -79,7 +90,8 @@ private:
   ISLocalToGlobalMapping ltog_ = nullptr;
   std::vector<char> has_frame_;
   std::vector<double> cos_, sin_;
-  std::vector<Prescribed> prescribed_;
+  std::vector<Prescribed> prescribed_, couplings_; // couplings: value = coefficient
+  Vec reactions_local_ = nullptr, reactions_global_ = nullptr;
   std::vector<PetscInt> last_rows_;
   PetscInt nsolves_ = 0;
 

@@ -33,6 +33,7 @@ struct Options {
   double rmin_group_tol = 1e-6;        // events within (1 + tol) r_min are taken together
   PetscInt rmin_max_increments = 100000;
   PetscInt rmin_max_redo = 10;         // re-solves per increment for loading/unloading switches
+  PetscInt friction_max_iters = 30;
   PetscBool drift_correction = PETSC_FALSE;
   PetscBool residual_correction = PETSC_FALSE;
   ObjectiveScheme kinematics = ObjectiveScheme::Forward; // METHOD.md sec. 2 as written
@@ -41,6 +42,13 @@ struct Options {
   std::string pressure_control = "load";
   double pressure_u = 0.1;
   double stroke = 4.2;                 // final tool stroke / prescribed end displacement (mm)
+  double stroke_corner_radius = 0;     // > 0: stroke from the paper's corner-radius rule
+  // Tools, contact, friction (METHOD.md sec. 1, 3)
+  double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
+  double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
+  double friction_tol = 1e-4;
+  double rmin_dphi = 1.0;
+  std::string unload = "reverse";
   double shear_gamma = 1.0;
   double tension_strain = 0.1;        // signed: < 0 compresses
   double rotation_angle = 90.0;        // degrees

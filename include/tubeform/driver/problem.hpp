@@ -25,6 +25,8 @@ class Scene {
 public:
   virtual ~Scene() = default;
   virtual std::vector<std::string> BoundarySets() const = 0;
+  // Once, before the first increment (tools, initial contacts).
+  virtual PetscErrorCode Initialize(Problem &p) { return 0; }
   // Before each increment's assembly (node frames that the assembly needs).
   virtual PetscErrorCode BeginIncrement(Problem &p, double lambda) { return 0; }
   // Rank 0 only: the serial mesh (structured or read from -mesh_file).
@@ -42,6 +44,27 @@ public:
   virtual std::vector<double> Breakpoints() const { return {}; }
   // Scene-specific limits on the trial increment (contact: r4-r6).
   virtual PetscErrorCode LimitStep(Problem &p, Vec du_trial, StepLimit &limit) { return 0; }
+  // Non-linear loads (friction): the increment is solved by iteration.
+  virtual bool Iterative() const { return false; }
+  virtual void ResetIterates() {}
+  virtual PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged)
+  {
+    converged = true;
+    return 0;
+  }
+  // Accepts the increment du of the last Load (its reactions scaled by
+  // react_scale; r the fraction of the solved step that was taken, for events).
+  virtual PetscErrorCode CommitIncrement(Problem &p, Vec du, double react_scale, double r, double &w_friction)
+  {
+    w_friction = 0;
+    return 0;
+  }
+  // The load path runs over lambda in [0, PathEnd()] (> 1 with an unloading stage).
+  virtual double PathEnd() const { return 1.0; }
+  // Called before the first increment that starts at a breakpoint.
+  virtual PetscErrorCode BeginStage(Problem &p, double lambda) { return 0; }
+  // Scene metrics written as attributes at the end.
+  virtual std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const { return {}; }
 };
 
 std::unique_ptr<Scene> CreateScene(const Options &opt);
@@ -74,6 +97,8 @@ public:
   // (1 + group_tol) of `r` turn plastic.
   PetscErrorCode Commit(Vec du, double r, CommitInfo &info);
   PetscErrorCode InternalForce(Vec f_local);
+  // From now on every point is elastic (the paper's unloading).
+  void SetElasticOnly();
   // Current cell corner coordinates.
   void CellCoordinates(PetscInt cell, double xe[8]) const;
 
@@ -105,9 +130,13 @@ private:
   bool CellInternalForce(PetscInt e, const double xe[8], const fe::QuadGeometry &geo, const Voigt s[4], fe::ElemVec &f) const;
   std::vector<double> x_, u_;      // per local node, global frame
   History history_;
+  Vec f_inc_ = nullptr, f_res_ = nullptr; // load of the trial step; out-of-balance force of the last increment
 
   PetscErrorCode ElasticEnergy(double &w);
   PetscErrorCode CreateMaterial();
+  // One trial solution for the load step dl: friction iterations and
+  // loading/unloading re-solves, then the r factors into `limit`.
+  PetscErrorCode SolveTrial(double lambda, double dl, Vec du, StepLimit &limit, PetscInt &redo, PetscInt &iterations);
   PetscErrorCode WriteOutputs(class ResultWriter &writer, PetscInt step, double t);
 };
 

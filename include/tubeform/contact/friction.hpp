@@ -1,0 +1,47 @@
+// The regularized Coulomb law of METHOD.md section 3 (paper eqs. 9-14), as a
+// pure kernel. The friction force on the body, along the contact frame's l, is
+//   f_l = -mu f_n phi(x),  phi(x) = tanh(x / (VCRI / 3)),
+// where x is the node's slip relative to the tool, accumulated increment by
+// increment (x += du_l - dU.l) and kept within +-2 VCRI. For one increment
+// from x = 0 this is the paper's law with x = du_rel; accumulating x makes the
+// result independent of the increment size: a block sliding steadily carries
+// mu f_n however small r_min makes the increments (decision, docs/theory.md).
+#pragma once
+
+#include <cmath>
+
+namespace tf::friction {
+
+inline double Phi(double x, double vcri) { return std::tanh(3.0 * x / vcri); }
+inline double DPhi(double x, double vcri)
+{
+  const double t = Phi(x, vcri);
+  return 3.0 * (1 - t * t) / vcri;
+}
+inline double Cap(double x, double vcri) { return std::max(-2 * vcri, std::min(2 * vcri, x)); }
+
+// Terms of the linearized l-row of a contact node for friction iterate k
+// (paper eq. 14-15). With t = phi(x0 + dx_k), t' = phi'(x0 + dx_k),
+// dx = du_l - dU_l and df_n the normal reaction increment:
+//   (K du)_l + mu t df_n + (mu f_nk t' + f_nk kappa) du_l
+//       = dF_l + mu f_n0 (phi(x0) - t) + mu f_nk t' (dx_k + dU_l) + f_nk kappa dU_l
+// (kappa = +-1/rho on arcs: the turning of the normal force as the node slides,
+// eq. 15; 0 on lines). df_n = (K du)_n - dF_n is row n of the system, so
+// row_l += (mu t) row_n: the unsymmetric correction row.
+struct RowTerms {
+  double row_n_coeff = 0; // multiplier of row n (and its load) added to row l
+  double diag = 0;        // added to K_ll
+  double rhs = 0;         // added to the l load
+};
+
+inline RowTerms Linearize(double mu, double vcri, double fn0, double fnk, double x0, double dxk, double dU_l, double kappa)
+{
+  RowTerms t;
+  const double tk = Phi(x0 + dxk, vcri), dtk = DPhi(x0 + dxk, vcri);
+  t.row_n_coeff = mu * tk;
+  t.diag = mu * fnk * dtk + fnk * kappa;
+  t.rhs = mu * fn0 * (Phi(x0, vcri) - tk) + mu * fnk * dtk * (dxk + dU_l) + fnk * kappa * dU_l;
+  return t;
+}
+
+} // namespace tf::friction

@@ -1,0 +1,67 @@
+// Rigid tools: chains of straight segments and circular arcs moving rigidly
+// (METHOD.md section 1). Pure geometry, no PETSc.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace tf {
+
+using Vec2 = std::array<double, 2>;
+
+// One piece of a tool's working surface. The body lies on the side the
+// outward normal n points to; l = n turned by -90 degrees (so (l, n) is a
+// right-handed frame).
+struct Segment {
+  enum Kind { Line, Arc } kind = Line;
+  Vec2 a{}, b{};       // line: end points
+  Vec2 c{};            // arc: centre
+  double radius = 0;   // arc radius
+  double t0 = 0, t1 = 0; // arc: angle range [t0, t1] (radians, t0 < t1)
+  bool concave = false;  // arc: the body is inside the circle (n points to the centre)
+  Vec2 n_line{};         // line: outward normal (towards the body)
+};
+
+// Where a point is with respect to the tool surface.
+struct Projection {
+  int segment = -1;    // closest segment; -1 if the point projects on none
+  Vec2 point{};        // closest point on the surface
+  Vec2 n{}, l{};       // outward normal and tangent there
+  double gap = 1e300;  // signed distance along n: > 0 outside the tool, < 0 penetrating
+  double curvature = 0; // +1/radius on concave arcs, -1/radius on convex ones, 0 on lines
+};
+
+class Tool {
+public:
+  std::string name;
+  std::vector<Segment> segments; // in the tool's frame at stroke 0
+  Vec2 direction{0, -1};         // motion per unit stroke
+  double stroke = 0;             // current stroke
+
+  Vec2 Offset() const { return {stroke * direction[0], stroke * direction[1]}; }
+  // Closest point of the surface at the current stroke. Points whose
+  // projection falls outside every segment get segment -1.
+  Projection Project(const Vec2 &x) const;
+  // r4 of METHOD.md sec. 4: the smallest r in (0, 1] at which the point
+  // x + r dx meets the surface moved by r dU (lines: linear, arcs: quadratic,
+  // exact); 1e300 if none.
+  double FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const;
+};
+
+// The upper V-die of the quarter model (METHOD.md sec. 1): apex on the y axis
+// at (0, ro sqrt2) rounded by an arc of radius r_apex centred at
+// (0, ro sqrt2 - r_apex sqrt2); the flank x + y = ro sqrt2 runs to x = 1.3 ro,
+// or, with u_close > 0, to the parting face y = u_close (at stroke 0) through
+// a convex edge fillet of radius r_edge. Moves down by the stroke.
+Tool BuildVDie(double ro, double r_apex, double u_close = 0, double r_edge = 0);
+
+// A flat plate y = y0 from x = x0 to x1, pressing down (body below).
+Tool BuildFlatPlate(double y0, double x0, double x1);
+
+// The paper's stroke rule: the stroke at which a rounded square of corner
+// radius rc, with its sides on the closed dies' flanks, has the perimeter of
+// the tube's outer circle 2 pi ro.
+double StrokeForCornerRadius(double ro, double rc);
+
+} // namespace tf

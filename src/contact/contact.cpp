@@ -1,0 +1,312 @@
+#include "tubeform/contact/contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tubeform/contact/friction.hpp"
+#include "tubeform/core.hpp"
+#include "tubeform/driver/problem.hpp"
+
+namespace tf {
+
+namespace {
+double Dot(const Vec2 &a, const Vec2 &b) { return a[0] * b[0] + a[1] * b[1]; }
+} // namespace
+
+void ContactSet::Setup(Problem &p, Tool *tool, const std::string &candidates, const std::vector<std::pair<std::string, Vec2>> &symmetry, const ContactParams &prm)
+{
+  tool_ = tool;
+  prm_ = prm;
+  const PetscInt n = p.mesh().num_nodes;
+  candidates_ = p.mesh().node_sets[candidates];
+  contact_.assign(n, 0);
+  global_frame_.assign(n, 0);
+  sym_dir_.assign(n, Vec2{0, 0});
+  segment_.assign(n, -1);
+  for (auto *v : {&fn_, &x_, &gap_, &kappa_, &dxk_, &fnk_, &rate_}) v->assign(n, 0.0);
+  r4_.assign(n, 1e300);
+  r5_.assign(n, 1e300);
+  n_.assign(n, Vec2{0, -1});
+  l_.assign(n, Vec2{-1, 0});
+  for (const auto &s : symmetry)
+    for (PetscInt node : p.mesh().node_sets[s.first]) sym_dir_[node] = s.second;
+}
+
+PetscErrorCode ContactSet::Initialize(Problem &p)
+{
+  PetscFunctionBeginUser;
+  // A node already on the surface (within round-off of the mesh) starts in contact.
+  const double tol = 1e-9 * (1 + std::abs(p.mesh().x0.empty() ? 1.0 : p.mesh().x0[0]));
+  for (PetscInt node : candidates_) {
+    const Projection pr = tool_->Project({p.position()[2 * node], p.position()[2 * node + 1]});
+    if (pr.segment >= 0 && std::abs(pr.gap) <= std::max(tol, 1e-9)) contact_[node] = 1;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::BeginIncrement(Problem &p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt node : candidates_) {
+    if (!contact_[node]) continue;
+    const Projection pr = tool_->Project({p.position()[2 * node], p.position()[2 * node + 1]});
+    if (pr.segment < 0) {
+      // Slid off the end of the tool: released.
+      contact_[node] = 0;
+      fn_[node] = x_[node] = 0;
+      continue;
+    }
+    segment_[node] = pr.segment;
+    n_[node] = pr.n;
+    l_[node] = pr.l;
+    gap_[node] = pr.gap;
+    kappa_[node] = pr.curvature;
+    // The frame (l, n) must contain a symmetry plane's held direction; if not
+    // (a node on y = 0 against an inclined flank), the node keeps the global
+    // frame and both its components are prescribed.
+    const Vec2 s = sym_dir_[node];
+    const bool on_plane = s[0] != 0 || s[1] != 0;
+    global_frame_[node] = on_plane && std::abs(std::abs(Dot(s, pr.l)) - 1) > 1e-9;
+    p.system().SetFrame(node, global_frame_[node] ? 0.0 : std::atan2(pr.l[1], pr.l[0]));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void ContactSet::ResetIterates()
+{
+  // The first iterate is predicted in Constrain from the latest slip per unit stroke.
+  predict_ = true;
+  fnk_ = fn_;
+}
+
+PetscErrorCode ContactSet::Constrain(Problem &p, double dU)
+{
+  PetscFunctionBeginUser;
+  const Vec2 dir = tool_->direction;
+  if (predict_)
+    for (PetscInt node : candidates_) dxk_[node] = contact_[node] ? rate_[node] * dU : 0.0;
+  predict_ = false;
+  for (PetscInt node : candidates_) {
+    if (!contact_[node]) continue;
+    // Follow the tool along n and close any gap left by the last increment.
+    const double dn = dU * Dot(dir, n_[node]) - gap_[node];
+    if (global_frame_[node]) {
+      // du . n = dn with the held component zero: the free global component follows.
+      const Vec2 s = sym_dir_[node];
+      const int held = std::abs(s[0]) > 0.5 ? 0 : 1, free = 1 - held;
+      p.system().Prescribe(node, free, dn / n_[node][free]);
+      continue; // the symmetry support itself is prescribed by the scene
+    }
+    p.system().Prescribe(node, 1, dn);
+    if (!friction() || !SlipFree(node) || !p.mesh().node_owned[node]) continue;
+    const friction::RowTerms t = friction::Linearize(prm_.mu, prm_.vcri, fn_[node], fnk_[node], x_[node], dxk_[node], dU * Dot(dir, l_[node]), kappa_[node]);
+    p.system().AddRowCoupling(node, t.row_n_coeff);
+    PetscCall(p.system().AddFrameStiffness(node, t.diag));
+    p.system().AddFrameForce(node, t.rhs, 0.0);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+double ContactSet::NormalReaction(Problem &p, PetscInt node, const PetscScalar *react) const
+{
+  const PetscInt o = p.mesh().node_dof[node];
+  if (!global_frame_[node]) return PetscRealPart(react[o + 1]);
+  // Global frame: the free component's reaction is the normal force's share.
+  const Vec2 s = sym_dir_[node];
+  const int free = std::abs(s[0]) > 0.5 ? 1 : 0;
+  return PetscRealPart(react[o + free]) / n_[node][free];
+}
+
+PetscErrorCode ContactSet::UpdateIterates(Problem &p, Vec du, double dU, bool &converged)
+{
+  const PetscScalar *d, *react;
+  int local = 1, global;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(du, &d));
+  PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
+  for (PetscInt node : candidates_) {
+    if (!SlipFree(node)) continue;
+    const PetscInt o = p.mesh().node_dof[node];
+    const Vec2 u = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
+    const double dx = Dot(u, l_[node]) - dU * Dot(tool_->direction, l_[node]);
+    const double fn = fn_[node] + NormalReaction(p, node, react);
+    const double before = fnk_[node] * friction::Phi(x_[node] + dxk_[node], prm_.vcri), after = fn * friction::Phi(x_[node] + dx, prm_.vcri);
+    if (std::abs(after - before) > prm_.tol * std::max(std::abs(fn), 1e-12)) local = 0;
+    dxk_[node] = dx;
+    fnk_[node] = fn;
+    if (dU != 0) rate_[node] = dx / dU;
+  }
+  PetscCall(VecRestoreArrayRead(p.system().reactions_local(), &react));
+  PetscCall(VecRestoreArrayRead(du, &d));
+  PetscCallMPI(MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_LAND, p.comm()));
+  converged = global;
+
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::LimitStep(Problem &p, Vec du, double dU, StepLimit &limit)
+{
+  const PetscScalar *d, *react;
+  StepLimit touch, leave, stick;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(du, &d));
+  PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
+  for (PetscInt node : candidates_) {
+    const PetscInt o = p.mesh().node_dof[node], id = p.mesh().node_orig[node];
+    const Vec2 u = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
+    r4_[node] = r5_[node] = 1e300;
+    if (!contact_[node]) {
+      // r4: exact first touch along the increment.
+      r4_[node] = tool_->FirstContact({p.position()[2 * node], p.position()[2 * node + 1]}, u, dU);
+      touch.Offer(r4_[node], Limiter::Contact, id);
+      continue;
+    }
+    // r5: the normal force reaches zero.
+    const double dfn = NormalReaction(p, node, react);
+    if (dfn < 0) r5_[node] = std::max(fn_[node], 0.0) / -dfn;
+    leave.Offer(r5_[node], Limiter::Separation, id);
+    // r6: the friction mobilization f_l / (mu f_n) changes by at most dphi_max.
+    if (friction() && SlipFree(node)) {
+      const double dx = Dot(u, l_[node]) - dU * Dot(tool_->direction, l_[node]);
+      const double dphi = std::abs(friction::Phi(x_[node] + dx, prm_.vcri) - friction::Phi(x_[node], prm_.vcri));
+      if (dphi > prm_.dphi_max) stick.Offer(prm_.dphi_max / dphi, Limiter::Stick, id);
+    }
+  }
+  PetscCall(VecRestoreArrayRead(p.system().reactions_local(), &react));
+  PetscCall(VecRestoreArrayRead(du, &d));
+  for (StepLimit *l : {&touch, &leave, &stick}) {
+    PetscCall(ReduceStepLimit(p.comm(), *l));
+    limit.Offer(l->r, l->who, l->where);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_scale, double r, double &w_friction)
+{
+  const PetscScalar *d, *react;
+  double local_w = 0;
+  const double event = r * (1 + prm_.group_tol);
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(du, &d));
+  PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
+  for (PetscInt node : candidates_) {
+    const PetscInt o = p.mesh().node_dof[node];
+    if (contact_[node]) {
+      const double fl_old = -prm_.mu * fn_[node] * friction::Phi(x_[node], prm_.vcri), fn_old = fn_[node];
+      fn_[node] += react_scale * NormalReaction(p, node, react);
+      if (SlipFree(node)) {
+        const Vec2 u = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
+        const double dx = Dot(u, l_[node]) - dU * Dot(tool_->direction, l_[node]);
+        x_[node] = friction::Cap(x_[node] + dx, prm_.vcri);
+        const double fl_new = -prm_.mu * fn_[node] * friction::Phi(x_[node], prm_.vcri);
+        if (p.mesh().node_owned[node]) local_w -= 0.5 * (fl_old + fl_new) * dx; // dissipated by sliding
+      }
+      // r5: released when its normal force has reached zero (up to round-off
+      // of a re-solved step).
+      if (r5_[node] <= event || fn_[node] <= 1e-9 * fn_old) {
+        contact_[node] = 0;
+        fn_[node] = x_[node] = 0;
+      }
+    } else if (r4_[node] <= event) {
+      contact_[node] = 1;
+      fn_[node] = x_[node] = rate_[node] = 0;
+    }
+  }
+  PetscCall(VecRestoreArrayRead(p.system().reactions_local(), &react));
+  PetscCall(VecRestoreArrayRead(du, &d));
+  PetscCallMPI(MPI_Allreduce(&local_w, &w_friction, 1, MPI_DOUBLE, MPI_SUM, p.comm()));
+
+  // Gaps on the new geometry: contact nodes keep theirs for the next increment
+  // to close (on arcs, sliding along the tangent leaves a second-order gap);
+  // a free node that reached the surface up to round-off is in contact.
+  for (PetscInt node : candidates_) {
+    const Projection pr = tool_->Project({p.position()[2 * node], p.position()[2 * node + 1]});
+    if (pr.segment < 0) continue;
+    if (!contact_[node] && pr.gap <= prm_.gap_tol) {
+      contact_[node] = 1;
+      fn_[node] = x_[node] = 0;
+    }
+    gap_[node] = pr.gap;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void ContactSet::ReleaseAll()
+{
+  std::fill(contact_.begin(), contact_.end(), 0);
+  std::fill(fn_.begin(), fn_.end(), 0.0);
+  std::fill(x_.begin(), x_.end(), 0.0);
+}
+
+PetscErrorCode ContactSet::AddFrictionForces(Problem &p, Vec f) const
+{
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  if (!friction()) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecGetArray(f, &a));
+  for (PetscInt node : candidates_) {
+    if (!SlipFree(node) || !p.mesh().node_owned[node]) continue;
+    const double fl = -prm_.mu * fn_[node] * friction::Phi(x_[node], prm_.vcri);
+    a[p.mesh().node_dof[node]] += fl * l_[node][0];
+    a[p.mesh().node_dof[node] + 1] += fl * l_[node][1];
+  }
+  PetscCall(VecRestoreArray(f, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::AddContactForces(Problem &p, Vec f) const
+{
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(f, &a));
+  for (PetscInt node : candidates_) {
+    if (!contact_[node] || !p.mesh().node_owned[node]) continue;
+    const double fl = SlipFree(node) ? -prm_.mu * fn_[node] * friction::Phi(x_[node], prm_.vcri) : 0.0;
+    a[p.mesh().node_dof[node]] += fn_[node] * n_[node][0] + fl * l_[node][0];
+    a[p.mesh().node_dof[node] + 1] += fn_[node] * n_[node][1] + fl * l_[node][1];
+  }
+  PetscCall(VecRestoreArray(f, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::TotalForce(Problem &p, double force[2]) const
+{
+  double local[2] = {0, 0};
+  PetscFunctionBeginUser;
+  for (PetscInt node : candidates_) {
+    if (!contact_[node] || !p.mesh().node_owned[node]) continue;
+    const double fl = SlipFree(node) ? -prm_.mu * fn_[node] * friction::Phi(x_[node], prm_.vcri) : 0.0;
+    for (int k = 0; k < 2; ++k) local[k] += fn_[node] * n_[node][k] + fl * l_[node][k];
+  }
+  PetscCallMPI(MPI_Allreduce(local, force, 2, MPI_DOUBLE, MPI_SUM, p.comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::Count(Problem &p, PetscInt &n) const
+{
+  PetscInt local = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt node : candidates_) local += contact_[node] && p.mesh().node_owned[node];
+  PetscCall(MPIU_Allreduce(&local, &n, 1, MPIU_INT, MPI_SUM, p.comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::Violations(Problem &p, double &penetration, double &tension) const
+{
+  double local[2] = {0, 0}, global[2];
+  PetscFunctionBeginUser;
+  for (PetscInt node : candidates_) {
+    const Projection pr = tool_->Project({p.position()[2 * node], p.position()[2 * node + 1]});
+    if (pr.segment >= 0) local[0] = std::max(local[0], -pr.gap);
+    if (contact_[node]) local[1] = std::max(local[1], -fn_[node]);
+  }
+  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, p.comm()));
+  penetration = global[0];
+  tension = global[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

@@ -1,0 +1,238 @@
+// The tool scenes of METHOD.md section 1: `squaring` (quarter tube, upper
+// V-die) and `flattening` (quarter ring, flat plate), with unloading.
+//
+// Load path: lambda in [0, 1] presses the tool to the final stroke; with
+// -unload reverse or withdraw, lambda in [1, 2] unloads:
+//   reverse  (the paper): every point elastic, the contact forces at the end
+//            of loading applied reversed as nodal loads, tools removed;
+//   withdraw: the tool moves back and releases the nodes one by one (r5).
+// History: stroke = tool stroke U (mm), load = punch load on the full tube,
+// 2 x the quarter's vertical tool force (N/mm).
+#include <algorithm>
+#include <cmath>
+
+#include "tubeform/contact/contact.hpp"
+#include "tubeform/core.hpp"
+#include "tubeform/driver/problem.hpp"
+#include "tubeform/driver/scene_util.hpp"
+
+namespace tf {
+
+namespace {
+
+// Outer-surface nodes of the whole mesh (every rank gets all of them).
+struct OuterNode {
+  double x, y;
+  int contact, segment;
+};
+
+PetscErrorCode GatherOuter(Problem &p, const ContactSet &c, std::vector<OuterNode> &all)
+{
+  std::vector<double> mine;
+  PetscMPIInt size;
+  PetscFunctionBeginUser;
+  for (PetscInt n : p.mesh().node_sets["outer"])
+    if (p.mesh().node_owned[n]) mine.insert(mine.end(), {p.position()[2 * n], p.position()[2 * n + 1], double(c.InContact(n)), double(c.Segment(n))});
+  PetscCallMPI(MPI_Comm_size(p.comm(), &size));
+  std::vector<int> counts(size), displs(size);
+  int count = (int)mine.size();
+  PetscCallMPI(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, p.comm()));
+  int total = 0;
+  for (int r = 0; r < size; ++r) displs[r] = total, total += counts[r];
+  std::vector<double> buf(total);
+  PetscCallMPI(MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, buf.data(), counts.data(), displs.data(), MPI_DOUBLE, p.comm()));
+  all.clear();
+  for (int k = 0; k + 3 < total; k += 4) all.push_back({buf[k], buf[k + 1], (int)buf[k + 2], (int)buf[k + 3]});
+  // Along the surface, from the x axis to the y axis.
+  std::sort(all.begin(), all.end(), [](const OuterNode &a, const OuterNode &b) { return std::atan2(a.y, a.x) < std::atan2(b.y, b.x); });
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Radius of the circle centred on the symmetry axis through a node on the axis
+// and its neighbour along the surface: the local corner radius there.
+double AxisCornerRadius(double on_axis, double nx, double ny)
+{
+  // Centre (c, 0): (on_axis - c)^2 = (nx - c)^2 + ny^2.
+  const double c = (on_axis * on_axis - nx * nx - ny * ny) / (2 * (on_axis - nx));
+  return on_axis - c;
+}
+
+class ToolScene : public Scene {
+public:
+  explicit ToolScene(const Options &opt) : opt_(opt), squaring_(opt.scene == SceneKind::Squaring)
+  {
+    stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius) : opt.stroke;
+    back_ = std::min(stroke_, std::max(0.5, 0.2 * stroke_));
+    if (squaring_) tool_ = BuildVDie(opt.tube_ro, opt.die_r_apex, opt.die_u_close, opt.die_r_edge);
+    else tool_ = BuildFlatPlate(opt.tube_ro, -0.1 * opt.tube_ro, 1.5 * opt.tube_ro);
+    flank_ = squaring_ && opt.die_r_apex > 0 ? 1 : 0;
+  }
+
+  std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
+  double PathEnd() const override { return opt_.unload == "none" ? 1.0 : 2.0; }
+  std::vector<double> Breakpoints() const override { return {1.0}; }
+
+  PetscErrorCode Initialize(Problem &p) override
+  {
+    PetscFunctionBeginUser;
+    ContactParams prm;
+    prm.mu = opt_.friction_mu;
+    // Default VCRI: 2 % of the circumferential element size of the outer surface.
+    prm.vcri = opt_.friction_vcri > 0 ? opt_.friction_vcri : 0.02 * opt_.tube_ro * 0.5 * M_PI / opt_.mesh_ntheta;
+    prm.dphi_max = opt_.rmin_dphi;
+    prm.tol = opt_.friction_tol;
+    prm.max_iters = (int)opt_.friction_max_iters;
+    prm.group_tol = opt_.rmin_group_tol;
+    contact_.Setup(p, &tool_, "outer", {{"x0", {1, 0}}, {"y0", {0, 1}}}, prm);
+    PetscCall(contact_.Initialize(p));
+    if (opt_.stroke_corner_radius > 0) PetscCall(PetscPrintf(p.comm(), "tubeform: stroke %.4f mm gives an outer corner radius of %.4g mm (perimeter-conserving rounded square)\n", stroke_, opt_.stroke_corner_radius));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  PetscErrorCode BeginStage(Problem &p, double lambda) override
+  {
+    PetscFunctionBeginUser;
+    if (opt_.unload != "reverse") PetscFunctionReturn(PETSC_SUCCESS);
+    // The paper's unloading: contact forces become loads, tools go, all elastic.
+    PetscCall(VecDuplicate(p.system().reactions_local(), &reversed_));
+    PetscCall(VecZeroEntries(reversed_));
+    PetscCall(contact_.AddContactForces(p, reversed_));
+    PetscCall(contact_.TotalForce(p, reversed_total_));
+    contact_.ReleaseAll();
+    p.system().ClearFrames();
+    p.SetElasticOnly();
+    unloading_ = true;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  PetscErrorCode BeginIncrement(Problem &p, double lambda) override
+  {
+    PetscFunctionBeginUser;
+    tool_.stroke = Stroke(lambda);
+    if (!unloading_) PetscCall(contact_.BeginIncrement(p));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  PetscErrorCode Load(Problem &p, double lambda, double dlambda, Vec dforce) override
+  {
+    PetscFunctionBeginUser;
+    dU_ = Stroke(lambda + dlambda) - Stroke(lambda);
+    if (unloading_) {
+      // Reversed contact forces: from F at lambda = 1 to 0 at lambda = 2.
+      const PetscScalar *f;
+      PetscCall(VecGetArrayRead(reversed_, &f));
+      for (PetscInt n = 0; n < p.mesh().num_nodes; ++n) {
+        const double fx = -dlambda * PetscRealPart(f[p.mesh().node_dof[n]]), fy = -dlambda * PetscRealPart(f[p.mesh().node_dof[n] + 1]);
+        if (fx != 0 || fy != 0) p.system().AddForce(n, fx, fy);
+      }
+      PetscCall(VecRestoreArrayRead(reversed_, &f));
+      PetscCall(VecAXPY(dforce, -dlambda, reversed_));
+    } else PetscCall(contact_.Constrain(p, dU_));
+    PetscCall(QuarterSymmetry(p));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  PetscErrorCode ExternalForce(Problem &p, double lambda, Vec f) override
+  {
+    PetscFunctionBeginUser;
+    PetscCall(VecZeroEntries(f));
+    if (unloading_) PetscCall(VecAXPY(f, 2.0 - lambda, reversed_));
+    else PetscCall(contact_.AddFrictionForces(p, f));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  bool Iterative() const override { return !unloading_ && contact_.friction(); }
+  void ResetIterates() override { contact_.ResetIterates(); }
+  PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged) override { return contact_.UpdateIterates(p, du, dU_, converged); }
+  PetscErrorCode LimitStep(Problem &p, Vec du, StepLimit &limit) override { return unloading_ ? 0 : contact_.LimitStep(p, du, dU_, limit); }
+  PetscErrorCode CommitIncrement(Problem &p, Vec du, double react_scale, double r, double &w_friction) override
+  {
+    w_friction = 0;
+    return unloading_ ? 0 : contact_.Commit(p, du, react_scale * dU_, react_scale, r, w_friction);
+  }
+
+  PetscErrorCode Measure(Problem &p, double lambda, Vec, HistoryRow &row) override
+  {
+    double force[2];
+    PetscInt n;
+    PetscFunctionBeginUser;
+    row.stroke = Stroke(lambda);
+    if (unloading_) {
+      for (int k = 0; k < 2; ++k) force[k] = (2.0 - lambda) * reversed_total_[k];
+    } else PetscCall(contact_.TotalForce(p, force));
+    row.load = -2.0 * force[1]; // full tube: both halves push the die up
+    PetscCall(contact_.Count(p, n));
+    row.n_contact = n;
+    PetscCall(OuterExtents(p, row));
+    if (!unloading_) PetscCall(contact_.Violations(p, row.penetration, row.tension)); // no tools while unloading
+    PetscCall(Shape(p, row));
+    row.stage = lambda > 1.0 + 1e-12 ? 1 : 0;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const override
+  {
+    // Loaded state: the last row of the loading stage.
+    const HistoryRow *loaded = &h.rows().front();
+    for (const auto &r : h.rows())
+      if (r.stage == 0) loaded = &r;
+    const HistoryRow &last = h.rows().back();
+    return {{"loaded_c_over_t", loaded->c_over_t}, {"loaded_deviation_ratio", loaded->deviation_ratio}, {"loaded_x_max", loaded->x_max}, {"loaded_y_max", loaded->y_max},
+            {"unloaded_c_over_t", last.c_over_t}, {"unloaded_deviation_ratio", last.deviation_ratio}, {"unloaded_x_max", last.x_max}, {"unloaded_y_max", last.y_max}, {"final_stroke_target", stroke_}};
+  }
+
+  ~ToolScene() override { (void)VecDestroy(&reversed_); }
+
+private:
+  Options opt_;
+  bool squaring_;
+  Tool tool_;
+  ContactSet contact_;
+  double stroke_ = 0, back_ = 0, dU_ = 0;
+  int flank_ = 0;
+  bool unloading_ = false;
+  Vec reversed_ = nullptr;
+  double reversed_total_[2] = {0, 0};
+
+  double Stroke(double lambda) const
+  {
+    if (lambda <= 1.0) return lambda * stroke_;
+    return opt_.unload == "withdraw" ? stroke_ - (lambda - 1.0) * back_ : stroke_;
+  }
+
+  // C/t (METHOD.md sec. 6): the largest gap between the flank and the outer
+  // surface between the outermost nodes touching the flank; and the corner radii.
+  PetscErrorCode Shape(Problem &p, HistoryRow &row)
+  {
+    std::vector<OuterNode> all;
+    PetscFunctionBeginUser;
+    PetscCall(GatherOuter(p, contact_, all));
+    if (all.size() >= 2) {
+      row.r_corner_x = AxisCornerRadius(all.front().x, all[1].x, all[1].y);
+      row.r_corner_y = AxisCornerRadius(all.back().y, all[all.size() - 2].y, all[all.size() - 2].x);
+    }
+    if (!squaring_) PetscFunctionReturn(PETSC_SUCCESS);
+    const Segment &fl = tool_.segments[flank_];
+    const Vec2 off = tool_.Offset(), a = {fl.a[0] + off[0], fl.a[1] + off[1]}, n = fl.n_line, l = {n[1], -n[0]};
+    double smin = 1e300, smax = -1e300;
+    for (const auto &o : all)
+      if (o.contact && o.segment == flank_) {
+        const double s = (o.x - a[0]) * l[0] + (o.y - a[1]) * l[1];
+        smin = std::min(smin, s), smax = std::max(smax, s);
+      }
+    double c = 0;
+    for (const auto &o : all) {
+      const double s = (o.x - a[0]) * l[0] + (o.y - a[1]) * l[1];
+      if (s > smin && s < smax) c = std::max(c, (o.x - a[0]) * n[0] + (o.y - a[1]) * n[1]);
+    }
+    row.c_over_t = c / opt_.tube_t;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+};
+
+} // namespace
+
+std::unique_ptr<Scene> CreateToolScene(const Options &opt) { return std::make_unique<ToolScene>(opt); }
+
+} // namespace tf

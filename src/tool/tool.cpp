@@ -1,0 +1,172 @@
+#include "tubeform/tool/tool.hpp"
+
+#include <cmath>
+
+namespace tf {
+
+namespace {
+double Dot(const Vec2 &a, const Vec2 &b) { return a[0] * b[0] + a[1] * b[1]; }
+Vec2 Sub(const Vec2 &a, const Vec2 &b) { return {a[0] - b[0], a[1] - b[1]}; }
+Vec2 Add(const Vec2 &a, const Vec2 &b) { return {a[0] + b[0], a[1] + b[1]}; }
+Vec2 Scale(const Vec2 &a, double s) { return {s * a[0], s * a[1]}; }
+Vec2 TangentOf(const Vec2 &n) { return {n[1], -n[0]}; } // n turned by -90 degrees
+
+// Angle of v in [t0, t0 + 2 pi).
+double AngleFrom(const Vec2 &v, double t0)
+{
+  double t = std::atan2(v[1], v[0]);
+  while (t < t0) t += 2 * M_PI;
+  while (t >= t0 + 2 * M_PI) t -= 2 * M_PI;
+  return t;
+}
+} // namespace
+
+Projection Tool::Project(const Vec2 &x) const
+{
+  Projection best;
+  const Vec2 off = Offset();
+  const double tol = 1e-12;
+  for (size_t k = 0; k < segments.size(); ++k) {
+    const Segment &s = segments[k];
+    Projection p;
+    p.segment = static_cast<int>(k);
+    if (s.kind == Segment::Line) {
+      const Vec2 a = Add(s.a, off), b = Add(s.b, off), ab = Sub(b, a);
+      const double len2 = Dot(ab, ab), t = Dot(Sub(x, a), ab) / len2;
+      if (t < -tol || t > 1 + tol) continue;
+      p.point = Add(a, Scale(ab, std::min(1.0, std::max(0.0, t))));
+      p.n = s.n_line;
+      p.curvature = 0;
+    } else {
+      const Vec2 c = Add(s.c, off), d = Sub(x, c);
+      const double r = std::hypot(d[0], d[1]);
+      if (r == 0) continue;
+      const double t = AngleFrom(d, s.t0);
+      if (t > s.t1 + tol) continue;
+      const Vec2 e = {d[0] / r, d[1] / r};
+      p.point = Add(c, Scale(e, s.radius));
+      p.n = s.concave ? Scale(e, -1) : e;
+      p.curvature = (s.concave ? 1.0 : -1.0) / s.radius;
+    }
+    p.l = TangentOf(p.n);
+    p.gap = Dot(Sub(x, p.point), p.n);
+    if (std::abs(p.gap) < std::abs(best.gap)) best = p;
+  }
+  return best;
+}
+
+double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
+{
+  // Relative motion in the tool's frame: y(r) = x - off + r (dx - dU direction).
+  const Vec2 off = Offset(), y0 = Sub(x, off), dy = Sub(dx, Scale(direction, dU));
+  double rmin = 1e300;
+  const double tol = 1e-12;
+  for (const Segment &s : segments) {
+    if (s.kind == Segment::Line) {
+      // (y(r) - a) . n = 0  ->  r = -(y0 - a).n / dy.n, approaching only.
+      const double g0 = Dot(Sub(y0, s.a), s.n_line), dg = Dot(dy, s.n_line);
+      if (!(dg < 0) || g0 < 0) continue;
+      const double r = -g0 / dg;
+      if (r <= 0 || r > 1) continue;
+      const Vec2 ab = Sub(s.b, s.a), hit = Add(y0, Scale(dy, r));
+      const double t = Dot(Sub(hit, s.a), ab) / Dot(ab, ab);
+      if (t < -tol || t > 1 + tol) continue;
+      rmin = std::min(rmin, r);
+    } else {
+      // |y(r) - c|^2 = R^2: A r^2 + B r + C = 0, C = |y0 - c|^2 - R^2.
+      const Vec2 d0 = Sub(y0, s.c);
+      const double qa = Dot(dy, dy), qb = 2 * Dot(d0, dy), qc = Dot(d0, d0) - s.radius * s.radius;
+      if (qa == 0) continue;
+      // Outside the tool: inside the circle for concave arcs (qc < 0), outside for convex.
+      if (s.concave ? qc > 0 : qc < 0) continue;
+      const double disc = qb * qb - 4 * qa * qc;
+      if (disc < 0) continue;
+      const double sq = std::sqrt(disc);
+      for (double r : {(-qb - sq) / (2 * qa), (-qb + sq) / (2 * qa)}) {
+        if (r <= 0 || r > 1) continue;
+        const Vec2 hit = Sub(Add(y0, Scale(dy, r)), s.c);
+        if (AngleFrom(hit, s.t0) > s.t1 + tol) continue;
+        // Only a crossing towards the tool side counts.
+        const Vec2 e = {hit[0], hit[1]};
+        const double radial = Dot(e, dy);
+        if (s.concave ? radial <= 0 : radial >= 0) continue;
+        rmin = std::min(rmin, r);
+        break;
+      }
+    }
+  }
+  return rmin;
+}
+
+Tool BuildVDie(double ro, double r_apex, double u_close, double r_edge)
+{
+  Tool t;
+  t.name = "V-die";
+  const double s2 = std::sqrt(2.0), h = ro * s2;
+  const Vec2 n_flank = {-1 / s2, -1 / s2};
+  Vec2 flank_start = {0, h};
+  if (r_apex > 0) {
+    Segment arc;
+    arc.kind = Segment::Arc;
+    arc.c = {0, h - r_apex * s2};
+    arc.radius = r_apex;
+    arc.t0 = M_PI / 4;
+    arc.t1 = M_PI / 2;
+    arc.concave = true;
+    t.segments.push_back(arc);
+    flank_start = {r_apex / s2, arc.c[1] + r_apex / s2};
+  }
+  Segment flank;
+  flank.n_line = n_flank;
+  flank.a = flank_start;
+  if (u_close > 0) {
+    // Flank meets the parting face y = u_close at x = h - u_close; a convex fillet
+    // of radius r_edge tangent to both has its centre inside the die at
+    // (h - u_close - r_edge tan(22.5 deg) ... ), derived from the two tangencies.
+    const double xe = h - u_close;
+    const double d = r_edge * std::tan(M_PI / 8); // setback of the tangent points from the corner
+    flank.b = {xe - d / s2, u_close + d / s2};
+    t.segments.push_back(flank);
+    if (r_edge > 0) {
+      Segment edge;
+      edge.kind = Segment::Arc;
+      edge.radius = r_edge;
+      edge.c = {xe + d, u_close + r_edge};
+      // From the face tangent point (angle -90 deg) to the flank tangent point (angle -135 deg): t in [-135, -90] deg.
+      edge.t0 = -3 * M_PI / 4 + 2 * M_PI;
+      edge.t1 = -M_PI / 2 + 2 * M_PI;
+      edge.concave = false;
+      t.segments.push_back(edge);
+    }
+    Segment face;
+    face.a = {xe + d, u_close};
+    face.b = {2.0 * ro, u_close};
+    face.n_line = {0, -1};
+    t.segments.push_back(face);
+  } else {
+    flank.b = {1.3 * ro, h - 1.3 * ro};
+    t.segments.push_back(flank);
+  }
+  return t;
+}
+
+Tool BuildFlatPlate(double y0, double x0, double x1)
+{
+  Tool t;
+  t.name = "plate";
+  Segment s;
+  s.a = {x0, y0};
+  s.b = {x1, y0};
+  s.n_line = {0, -1};
+  t.segments.push_back(s);
+  return t;
+}
+
+double StrokeForCornerRadius(double ro, double rc)
+{
+  // Sides on |x| + |y| = d: side 2^(1/2) d, perimeter 4 sqrt2 d - (8 - 2 pi) rc = 2 pi ro.
+  const double d = (2 * M_PI * ro + (8 - 2 * M_PI) * rc) / (4 * std::sqrt(2.0));
+  return ro * std::sqrt(2.0) - d;
+}
+
+} // namespace tf
