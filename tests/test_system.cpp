@@ -180,6 +180,110 @@ static PetscErrorCode RotatedFrameTest(MPI_Comm comm, double alpha)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// The unsymmetric friction row: node p in a rotated frame gets row l += c row n.
+// The solution must satisfy (K du)_l + c R_n = f_l at p (R_n its normal
+// reaction), K du = f at the other free dofs, with K du formed here element by
+// element (independently of the assembled matrix).
+static PetscErrorCode CouplingRowTest(MPI_Comm comm)
+{
+  PetscMPIInt rank;
+  SerialMesh serial;
+  Mesh mesh;
+  System sys;
+  std::vector<double> reactions;
+  const double c = 0.37, angle = 0.4, f_l = 0.8;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  const std::vector<std::string> sets = {"left", "right", "bottom", "top"};
+  if (rank == 0) serial = GenerateRectangle(2.0, 1.0, 4, 2);
+  PetscCall(mesh.Create(comm, serial, sets));
+  PetscCall(sys.Setup(mesh));
+  // The node at the middle of the top edge carries the frame and the coupling.
+  PetscInt p = -1;
+  for (PetscInt n : mesh.node_sets["top"])
+    if (std::abs(mesh.x0[2 * n] - 1.0) < 1e-12) p = n;
+  if (p >= 0) sys.SetFrame(p, angle);
+  PetscCall(AssembleElastic(mesh, sys, fe::Formulation::BBar));
+  for (PetscInt n : mesh.node_sets["bottom"]) sys.Prescribe(n, 0, 0.0), sys.Prescribe(n, 1, 0.0);
+  if (p >= 0) {
+    sys.Prescribe(p, 1, -2e-3); // pushed along its n
+    if (mesh.node_owned[p]) sys.AddFrameForce(p, f_l, 0.0); // a load is added once
+    if (mesh.node_owned[p]) sys.AddRowCoupling(p, c);
+  }
+  Vec du = sys.CreateLocalVector();
+  PetscCall(sys.Solve(du, reactions));
+
+  // K du from the elements, on the local nodes, summed over ranks into a global vector.
+  Vec kdu_local = sys.CreateLocalVector(), kdu;
+  const PetscScalar *d;
+  PetscScalar *k;
+  PetscCall(VecZeroEntries(kdu_local));
+  PetscCall(VecGetArrayRead(du, &d));
+  PetscCall(VecGetArray(kdu_local, &k));
+  const Mat4 dm = IsotropicElasticMatrix(kE, kNu);
+  for (PetscInt e = 0; e < mesh.num_cells; ++e) {
+    double xe[8];
+    fe::ElemVec due, fe_;
+    fe::QuadGeometry geo;
+    Voigt sig[4];
+    for (int q = 0; q < 4; ++q) {
+      const PetscInt n = mesh.cell_nodes[4 * e + q];
+      xe[2 * q] = mesh.x0[2 * n], xe[2 * q + 1] = mesh.x0[2 * n + 1];
+      due[2 * q] = PetscRealPart(d[mesh.node_dof[n]]), due[2 * q + 1] = PetscRealPart(d[mesh.node_dof[n] + 1]);
+    }
+    fe::ComputeGeometry(xe, geo);
+    for (int g = 0; g < 4; ++g) {
+      Voigt de;
+      double w;
+      fe::IncrementKinematics(geo, g, fe::Formulation::BBar, due, de, w);
+      sig[g] = Voigt{};
+      for (int r = 0; r < 4; ++r)
+        for (int cc = 0; cc < 4; ++cc) sig[g][r] += dm[r][cc] * de[cc];
+    }
+    fe::InternalForce(geo, fe::Formulation::BBar, sig, fe_);
+    for (int q = 0; q < 4; ++q) {
+      const PetscInt n = mesh.cell_nodes[4 * e + q];
+      k[mesh.node_dof[n]] += fe_[2 * q], k[mesh.node_dof[n] + 1] += fe_[2 * q + 1];
+    }
+  }
+  PetscCall(VecRestoreArray(kdu_local, &k));
+  PetscCall(VecRestoreArrayRead(du, &d));
+  PetscCall(DMGetGlobalVector(mesh.dm, &kdu));
+  PetscCall(VecZeroEntries(kdu));
+  PetscCall(DMLocalToGlobal(mesh.dm, kdu_local, ADD_VALUES, kdu));
+  PetscCall(DMGlobalToLocal(mesh.dm, kdu, INSERT_VALUES, kdu_local));
+  PetscCall(DMRestoreGlobalVector(mesh.dm, &kdu));
+
+  // Check the rows on owned nodes.
+  const PetscScalar *kk, *react;
+  double err = 0, gerr, scale = 0, gscale;
+  PetscCall(VecGetArrayRead(kdu_local, &kk));
+  PetscCall(VecGetArrayRead(sys.reactions_local(), &react));
+  std::set<PetscInt> fixed(mesh.node_sets["bottom"].begin(), mesh.node_sets["bottom"].end());
+  for (PetscInt n = 0; n < mesh.num_nodes; ++n) {
+    if (!mesh.node_owned[n] || fixed.count(n)) continue;
+    double kx = PetscRealPart(kk[mesh.node_dof[n]]), ky = PetscRealPart(kk[mesh.node_dof[n] + 1]);
+    scale = std::max({scale, std::abs(kx), std::abs(ky)});
+    if (n == p) {
+      // Into the frame: l = (cos, sin), n = (-sin, cos).
+      const double kl = std::cos(angle) * kx + std::sin(angle) * ky, kn = -std::sin(angle) * kx + std::cos(angle) * ky;
+      const double rn = PetscRealPart(react[mesh.node_dof[n] + 1]);
+      err = std::max(err, std::abs(kl + c * rn - f_l));
+      err = std::max(err, std::abs(kn - rn)); // the reaction is K du at the supported dof
+    } else err = std::max({err, std::abs(kx), std::abs(ky)});
+  }
+  PetscCall(VecRestoreArrayRead(sys.reactions_local(), &react));
+  PetscCall(VecRestoreArrayRead(kdu_local, &kk));
+  PetscCall(MPIU_Allreduce(&err, &gerr, 1, MPIU_REAL, MPIU_MAX, comm));
+  PetscCall(MPIU_Allreduce(&scale, &gscale, 1, MPIU_REAL, MPIU_MAX, comm));
+  CHECK(gerr < 1e-10 * gscale);
+  PetscCall(PetscPrintf(comm, "friction correction row: max row error %.2e (forces up to %.2e)\n", gerr, gscale));
+  PetscCall(VecDestroy(&du));
+  PetscCall(VecDestroy(&kdu_local));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   PetscCall(PetscInitialize(&argc, &argv, nullptr, nullptr));
@@ -189,6 +293,7 @@ int main(int argc, char **argv)
   PetscCall(RotatedFrameTest(PETSC_COMM_WORLD, 0.0));
   PetscCall(RotatedFrameTest(PETSC_COMM_WORLD, 0.6));
   PetscCall(RotatedFrameTest(PETSC_COMM_WORLD, 0.5 * M_PI + 0.3));
+  PetscCall(CouplingRowTest(PETSC_COMM_WORLD));
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
   int failures = tftest::failures, total;

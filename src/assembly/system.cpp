@@ -148,6 +148,24 @@ PetscErrorCode System::AddFrameStiffness(PetscInt node, double k_ll)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode System::AddFreeForce(Vec f)
+{
+  const PetscScalar *a;
+  std::vector<char> fixed(2 * mesh_->num_nodes, 0);
+  PetscFunctionBeginUser;
+  for (const auto &p : prescribed_) fixed[2 * p.node + p.comp] = 1;
+  PetscCall(VecGetArrayRead(f, &a));
+  for (PetscInt n = 0; n < mesh_->num_nodes; ++n) {
+    double v[2] = {PetscRealPart(a[mesh_->node_dof[n]]), PetscRealPart(a[mesh_->node_dof[n] + 1])};
+    if (has_frame_[n]) Rotate(n, v[0], v[1], true);
+    for (int k = 0; k < 2; ++k)
+      if (fixed[2 * n + k]) v[k] = 0;
+    AddFrameForce(n, v[0], v[1]);
+  }
+  PetscCall(VecRestoreArrayRead(f, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 void System::AddForce(PetscInt node, double fx, double fy)
 {
   PetscScalar *f;
@@ -178,27 +196,34 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
   PetscCall(DMLocalToGlobal(mesh_->dm, f_local_, ADD_VALUES, rhs_));
 
   // Friction correction rows: row l += c row n (owned rows; same pattern).
+  // All rows n are read first: the matrix is unassembled once values are added.
   {
-    int any = 0, anyg;
+    struct RowAdd {
+      PetscInt row;
+      std::vector<PetscInt> cols;
+      std::vector<PetscScalar> vals;
+    };
+    std::vector<RowAdd> adds;
+    PetscInt lo;
+    PetscScalar *b;
+    PetscCall(VecGetOwnershipRange(rhs_, &lo, nullptr));
+    PetscCall(VecGetArray(rhs_, &b));
     for (const auto &cp : couplings_) {
       if (!mesh_->node_owned[cp.node] || cp.value == 0) continue;
-      PetscInt local[2] = {mesh_->node_dof[cp.node], mesh_->node_dof[cp.node] + 1}, global[2], ncols, lo;
+      PetscInt local[2] = {mesh_->node_dof[cp.node], mesh_->node_dof[cp.node] + 1}, global[2], ncols;
       const PetscInt *cols;
       const PetscScalar *vals;
       PetscCall(ISLocalToGlobalMappingApply(ltog_, 2, local, global));
       PetscCall(MatGetRow(k_, global[1], &ncols, &cols, &vals));
-      std::vector<PetscInt> c(cols, cols + ncols);
-      std::vector<PetscScalar> v(ncols);
-      for (PetscInt j = 0; j < ncols; ++j) v[j] = cp.value * vals[j];
+      RowAdd add{global[0], std::vector<PetscInt>(cols, cols + ncols), std::vector<PetscScalar>(ncols)};
+      for (PetscInt j = 0; j < ncols; ++j) add.vals[j] = cp.value * vals[j];
       PetscCall(MatRestoreRow(k_, global[1], &ncols, &cols, &vals));
-      PetscCall(MatSetValues(k_, 1, &global[0], ncols, c.data(), v.data(), ADD_VALUES));
-      PetscScalar *b;
-      PetscCall(VecGetOwnershipRange(rhs_, &lo, nullptr));
-      PetscCall(VecGetArray(rhs_, &b));
       b[global[0] - lo] += cp.value * b[global[1] - lo];
-      PetscCall(VecRestoreArray(rhs_, &b));
-      any = 1;
+      adds.push_back(std::move(add));
     }
+    PetscCall(VecRestoreArray(rhs_, &b));
+    for (const auto &add : adds) PetscCall(MatSetValues(k_, 1, &add.row, (PetscInt)add.cols.size(), add.cols.data(), add.vals.data(), ADD_VALUES));
+    int any = !adds.empty(), anyg;
     PetscCallMPI(MPI_Allreduce(&any, &anyg, 1, MPI_INT, MPI_LOR, mesh_->comm));
     if (anyg) {
       PetscCall(MatAssemblyBegin(k_, MAT_FINAL_ASSEMBLY));

@@ -145,6 +145,25 @@ PetscErrorCode ContactSet::UpdateIterates(Problem &p, Vec du, double dU, bool &c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode ContactSet::ReleasePulled(Problem &p, bool apply, PetscInt &released)
+{
+  const PetscScalar *react;
+  PetscInt local = 0;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
+  for (PetscInt node : candidates_) {
+    if (!contact_[node]) continue;
+    const double dfn = NormalReaction(p, node, react);
+    if (dfn < 0 && fn_[node] <= 1e-9 * -dfn) {
+      local += p.mesh().node_owned[node];
+      if (apply) contact_[node] = 0, fn_[node] = x_[node] = 0;
+    }
+  }
+  PetscCall(VecRestoreArrayRead(p.system().reactions_local(), &react));
+  PetscCall(MPIU_Allreduce(&local, &released, 1, MPIU_INT, MPI_SUM, p.comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode ContactSet::LimitStep(Problem &p, Vec du, double dU, StepLimit &limit)
 {
   const PetscScalar *d, *react;

@@ -8,7 +8,7 @@
 namespace tf {
 
 namespace {
-const char *const kScenes[] = {"squaring", "flattening", "pressure", "shear", "rotation", "column", "tension"};
+const char *const kScenes[] = {"squaring", "flattening", "pressure", "shear", "rotation", "column", "tension", "slide"};
 const char *const kElements[] = {"q4", "bbar", "qm6"};
 const char *const kMaterials[] = {"aluminum", "copper", "custom"};
 const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
@@ -26,7 +26,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
 
   PetscOptionsBegin(comm, "", "tubeform: scene and geometry", "tubeform");
   choice = static_cast<PetscInt>(opt.scene);
-  PetscCall(PetscOptionsEList("-scene", "Scene to run", "tubeform", kScenes, 7, kScenes[choice], &choice, &set));
+  PetscCall(PetscOptionsEList("-scene", "Scene to run", "tubeform", kScenes, 8, kScenes[choice], &choice, &set));
   opt.scene = static_cast<SceneKind>(choice);
   opt.scene_name = kScenes[choice];
   PetscCall(PetscOptionsReal("-tube_ro", "Outer radius of the tube (mm)", "tubeform", opt.tube_ro, &opt.tube_ro, nullptr));
@@ -107,6 +107,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
     opt.unload = unloads[choice];
   }
   PetscCall(PetscOptionsReal("-shear_gamma", "shear scene: final shear strain gamma", "tubeform", opt.shear_gamma, &opt.shear_gamma, nullptr));
+  PetscCall(PetscOptionsReal("-slide_n", "slide scene: normal force pressing the block (N/mm)", "tubeform", opt.slide_n, &opt.slide_n, nullptr));
+  PetscCall(PetscOptionsReal("-slide_push", "slide scene: sideways displacement of the block's top (mm)", "tubeform", opt.slide_push, &opt.slide_push, nullptr));
   PetscCall(PetscOptionsReal("-tension_strain", "tension scene: final nominal strain in x (negative: compression)", "tubeform", opt.tension_strain, &opt.tension_strain, nullptr));
   PetscCall(PetscOptionsReal("-rotation_angle", "rotation scene: rigid rotation after the prestretch (degrees)", "tubeform", opt.rotation_angle, &opt.rotation_angle, nullptr));
   PetscCall(PetscOptionsReal("-rotation_strain", "rotation scene: uniaxial prestretch strain in x before the rotation", "tubeform", opt.rotation_strain, &opt.rotation_strain, nullptr));
@@ -160,6 +162,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
   PetscCheck(opt.friction_tol > 0 && opt.friction_max_iters >= 1, comm, PETSC_ERR_USER_INPUT, "-friction_tol %g, -friction_max_iters %d: need tol > 0 and at least one iteration", opt.friction_tol, (int)opt.friction_max_iters);
   PetscCheck(opt.rmin_dphi > 0 && opt.rmin_dphi <= 2, comm, PETSC_ERR_USER_INPUT, "-rmin_dphi %g: must lie in (0, 2]", opt.rmin_dphi);
   PetscCheck(opt.stroke_corner_radius >= 0, comm, PETSC_ERR_USER_INPUT, "-stroke_corner_radius %g: must be non-negative", opt.stroke_corner_radius);
+  PetscCheck(opt.slide_n > 0 && opt.slide_push > 0, comm, PETSC_ERR_USER_INPUT, "-slide_n %g, -slide_push %g: must be positive", opt.slide_n, opt.slide_push);
   PetscCheck(opt.pressure_u > 0, comm, PETSC_ERR_USER_INPUT, "-pressure_u %g: must be positive (mm)", opt.pressure_u);
   PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);
   PetscCheck(std::isfinite(opt.shear_gamma) && opt.shear_gamma != 0, comm, PETSC_ERR_USER_INPUT, "-shear_gamma %g: must be a finite non-zero shear strain", opt.shear_gamma);

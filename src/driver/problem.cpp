@@ -10,9 +10,6 @@
 
 namespace tf {
 
-// A point within this relative distance of the yield surface counts as on it
-// (an event resolved up to round-off of a re-solved step is not a new event).
-constexpr double kOnSurface = 1e-6;
 // Events of a re-solved (friction) step found this far beyond its end are taken with it.
 constexpr double kEventSlack = 1e-2;
 
@@ -291,12 +288,7 @@ PetscErrorCode Problem::SolveTrial(double lambda, double dl, Vec du, StepLimit &
     PetscCall(AssembleTangent());
     PetscCall(VecZeroEntries(f_inc_));
     PetscCall(scene_->Load(*this, lambda, dl, f_inc_));
-    if (opt_.residual_correction) {
-      const PetscScalar *fr;
-      PetscCall(VecGetArrayRead(f_res_, &fr));
-      for (PetscInt n = 0; n < mesh_.num_nodes; ++n) system_.AddForce(n, PetscRealPart(fr[mesh_.node_dof[n]]), PetscRealPart(fr[mesh_.node_dof[n] + 1]));
-      PetscCall(VecRestoreArrayRead(f_res_, &fr));
-    }
+    if (opt_.residual_correction) PetscCall(system_.AddFreeForce(f_res_));
     PetscCall(system_.Solve(du, reactions));
     ++iterations;
     bool converged = true;
@@ -304,6 +296,9 @@ PetscErrorCode Problem::SolveTrial(double lambda, double dl, Vec du, StepLimit &
     limit = StepLimit{};
     const bool may_switch = redo < opt_.rmin_max_redo;
     PetscCall(ScanTrial(du, may_switch, limit, switches));
+    PetscInt scene_switches = 0;
+    PetscCall(scene_->Switches(*this, du, may_switch, scene_switches));
+    switches += scene_switches;
     if (switches > 0 && may_switch) ++redo;
     if (converged && (switches == 0 || !may_switch)) break;
     PetscCheck(it < opt_.friction_max_iters + opt_.rmin_max_redo, comm_, PETSC_ERR_NOT_CONVERGED, "friction iterations did not converge in %d iterations at lambda = %g: lower -rmin_dphi or raise -friction_vcri", (int)opt_.friction_max_iters, lambda);
@@ -432,21 +427,22 @@ PetscErrorCode Problem::Run()
     if (limit.r < 1.0) r = limit.r, who = limit.who, where = limit.where;
     PetscCheck(r > 1e-10, comm_, PETSC_ERR_NOT_CONVERGED, "r_min = %g (%s at %d) at lambda = %g: the increment cannot advance", r, LimiterName((int)limit.who), (int)limit.where, lambda);
     if (r < 1.0 && scene_->Iterative()) {
-      // Friction is not linear in r: solve the shortened step again; what is
-      // left of any event is taken by a last linear scaling.
-      dl *= r;
-      PetscInt redo2 = 0;
-      PetscCall(SolveTrial(lambda, dl, du, limit, redo2, iterations));
-      redo += redo2;
-      // The shortened step was aimed at the event: one found just past its end
-      // (the re-solve moved it by the friction non-linearity) is taken now.
-      r_event = limit.r >= 1.0 ? (limit.r <= 1.0 + kEventSlack ? 1.0 + kEventSlack : 1.0) : limit.r;
-      if (r_event < 1.0) {
-        PetscCall(VecScale(du, r_event));
-        react_scale = r_event;
-        dl *= r_event;
-        r *= r_event;
+      // Friction is not linear in r: the shortened step is solved again (and
+      // again while the re-solve still finds an event well inside it: the
+      // friction non-linearity moves events). The last solution is taken as
+      // it is: scaling it would break the friction forces' equilibrium;
+      // events slightly past its end are taken with it.
+      double taken = r;
+      for (int attempt = 0;; ++attempt) {
+        dl *= taken;
+        PetscInt redo2 = 0;
+        PetscCall(SolveTrial(lambda, dl, du, limit, redo2, iterations));
+        redo += redo2;
+        if (limit.r >= 1.0 - kEventSlack || attempt == 2) break;
+        taken = limit.r;
+        r *= taken;
       }
+      r_event = std::max(1.0 + kEventSlack, std::min(limit.r, 1.0));
     } else {
       PetscCall(VecScale(du, r));
       react_scale = r_event = r;

@@ -333,7 +333,8 @@ std::unique_ptr<Scene> CreateScene(const Options &opt)
   case SceneKind::Rotation: return std::make_unique<RotationScene>(opt);
   case SceneKind::Tension: return std::make_unique<TensionScene>(opt);
   case SceneKind::Squaring:
-  case SceneKind::Flattening: return CreateToolScene(opt);
+  case SceneKind::Flattening:
+  case SceneKind::Slide: return CreateToolScene(opt);
   case SceneKind::Column: return std::make_unique<ColumnScene>(opt);
   default: return nullptr;
   }

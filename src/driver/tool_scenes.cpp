@@ -15,6 +15,7 @@
 #include "tubeform/core.hpp"
 #include "tubeform/driver/problem.hpp"
 #include "tubeform/driver/scene_util.hpp"
+#include "tubeform/mesh/generator.hpp"
 
 namespace tf {
 
@@ -146,6 +147,11 @@ public:
   void ResetIterates() override { contact_.ResetIterates(); }
   PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged) override { return contact_.UpdateIterates(p, du, dU_, converged); }
   PetscErrorCode LimitStep(Problem &p, Vec du, StepLimit &limit) override { return unloading_ ? 0 : contact_.LimitStep(p, du, dU_, limit); }
+  PetscErrorCode Switches(Problem &p, Vec, bool apply, PetscInt &n) override
+  {
+    n = 0;
+    return unloading_ ? 0 : contact_.ReleasePulled(p, apply, n);
+  }
   PetscErrorCode CommitIncrement(Problem &p, Vec du, double react_scale, double r, double &w_friction) override
   {
     w_friction = 0;
@@ -194,6 +200,7 @@ private:
   bool unloading_ = false;
   Vec reversed_ = nullptr;
   double reversed_total_[2] = {0, 0};
+  double smin_loaded_ = 1e300, smax_loaded_ = -1e300; // flank contact region at the end of loading
 
   double Stroke(double lambda) const
   {
@@ -215,24 +222,133 @@ private:
     if (!squaring_) PetscFunctionReturn(PETSC_SUCCESS);
     const Segment &fl = tool_.segments[flank_];
     const Vec2 off = tool_.Offset(), a = {fl.a[0] + off[0], fl.a[1] + off[1]}, n = fl.n_line, l = {n[1], -n[0]};
+    for (const auto &o : all) row.n_contact_apex += o.contact && flank_ == 1 && o.segment == 0;
     double smin = 1e300, smax = -1e300;
+    if (unloading_) smin = smin_loaded_, smax = smax_loaded_; // the former contact region
     for (const auto &o : all)
-      if (o.contact && o.segment == flank_) {
+      if (!unloading_ && o.contact && o.segment == flank_) {
         const double s = (o.x - a[0]) * l[0] + (o.y - a[1]) * l[1];
         smin = std::min(smin, s), smax = std::max(smax, s);
       }
-    double c = 0;
+    // Loaded: gaps to the flank. Unloaded (no die): the side's deviation from
+    // straight over the former contact region, largest minus smallest gap to
+    // the final flank line.
+    double cmax = -1e300, cmin = 1e300;
     for (const auto &o : all) {
       const double s = (o.x - a[0]) * l[0] + (o.y - a[1]) * l[1];
-      if (s > smin && s < smax) c = std::max(c, (o.x - a[0]) * n[0] + (o.y - a[1]) * n[1]);
+      if (s < smin || s > smax) continue;
+      const double g = (o.x - a[0]) * n[0] + (o.y - a[1]) * n[1];
+      cmax = std::max(cmax, g), cmin = std::min(cmin, g);
     }
-    row.c_over_t = c / opt_.tube_t;
+    if (cmax < cmin) row.c_over_t = 0;
+    else row.c_over_t = (unloading_ ? cmax - cmin : std::max(cmax, 0.0)) / opt_.tube_t;
+    if (!unloading_) smin_loaded_ = smin, smax_loaded_ = smax;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+};
+
+// A block on a rigid floor (friction check, METHOD.md sec. 7): lambda in
+// [0, 1] presses its top edge down with a total force -slide_n (top held in
+// x); lambda in [1, 2] pushes the top edge sideways by -slide_push.
+// History: stroke = top displacement (mm), load = tangential force T (N/mm).
+class SlideScene : public Scene {
+public:
+  explicit SlideScene(const Options &opt) : opt_(opt), floor_(BuildFlatPlate(0.0, -1e3, 1e3, true)) {}
+  std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
+  {
+    mesh = GenerateRectangle(kWidth, kHeight, (int)opt.mesh_ntheta, (int)opt.mesh_nt);
+    return "";
+  }
+  std::vector<double> Breakpoints() const override { return {1.0}; }
+  double PathEnd() const override { return 2.0; }
+  PetscErrorCode Initialize(Problem &p) override
+  {
+    ContactParams prm;
+    prm.mu = opt_.friction_mu;
+    prm.vcri = opt_.friction_vcri > 0 ? opt_.friction_vcri : 1e-3;
+    prm.dphi_max = opt_.rmin_dphi;
+    prm.tol = opt_.friction_tol;
+    prm.group_tol = opt_.rmin_group_tol;
+    contact_.Setup(p, &floor_, "bottom", {}, prm);
+    return contact_.Initialize(p);
+  }
+  PetscErrorCode BeginIncrement(Problem &p, double) override { return contact_.BeginIncrement(p); }
+  PetscErrorCode Load(Problem &p, double lambda, double dlambda, Vec dforce) override
+  {
+    PetscFunctionBeginUser;
+    PetscCall(contact_.Constrain(p, 0.0));
+    const double dn = lambda < 1.0 ? dlambda * opt_.slide_n : 0.0, push = lambda < 1.0 ? 0.0 : dlambda * opt_.slide_push;
+    PetscCall(TopLoad(p, -dn, dforce, true));
+    for (PetscInt n : p.mesh().node_sets["top"]) p.system().Prescribe(n, 0, push);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscErrorCode ExternalForce(Problem &p, double lambda, Vec f) override
+  {
+    PetscFunctionBeginUser;
+    PetscCall(VecZeroEntries(f));
+    PetscCall(TopLoad(p, -std::min(lambda, 1.0) * opt_.slide_n, f, false));
+    PetscCall(contact_.AddFrictionForces(p, f));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  bool Iterative() const override { return contact_.friction(); }
+  void ResetIterates() override { contact_.ResetIterates(); }
+  PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged) override { return contact_.UpdateIterates(p, du, 0.0, converged); }
+  PetscErrorCode LimitStep(Problem &p, Vec du, StepLimit &limit) override { return contact_.LimitStep(p, du, 0.0, limit); }
+  PetscErrorCode Switches(Problem &p, Vec, bool apply, PetscInt &n) override { return contact_.ReleasePulled(p, apply, n); }
+  PetscErrorCode CommitIncrement(Problem &p, Vec du, double react_scale, double r, double &w_friction) override { return contact_.Commit(p, du, 0.0, react_scale, r, w_friction); }
+  PetscErrorCode Measure(Problem &p, double lambda, Vec f_int, HistoryRow &row) override
+  {
+    PetscFunctionBeginUser;
+    row.stroke = lambda <= 1.0 ? 0.0 : (lambda - 1.0) * opt_.slide_push;
+    PetscCall(SetForce(p, "top", f_int, [](PetscInt, double d[2]) { d[0] = 1, d[1] = 0; }, row.load));
+    PetscInt n;
+    PetscCall(contact_.Count(p, n));
+    row.n_contact = n;
+    PetscCall(contact_.Violations(p, row.penetration, row.tension));
+    // Mean slip of the bottom on the floor, in x_max's place.
+    double local[2] = {0, 0}, g[2];
+    for (PetscInt k : p.mesh().node_sets["bottom"])
+      if (p.mesh().node_owned[k]) local[0] += p.displacement()[2 * k], local[1] += 1;
+    PetscCallMPI(MPI_Allreduce(local, g, 2, MPI_DOUBLE, MPI_SUM, p.comm()));
+    row.x_max = g[0] / g[1];
+    double force[2];
+    PetscCall(contact_.TotalForce(p, force));
+    row.y_max = force[1]; // the floor's normal force on the block (= -slide_n when pressed)
+    row.deviation_ratio = force[0];
+    row.stage = lambda > 1.0 + 1e-12 ? 1 : 0;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+private:
+  static constexpr double kWidth = 10.0, kHeight = 2.0;
+  Options opt_;
+  Tool floor_;
+  ContactSet contact_;
+  // A uniform vertical traction on the top edge with resultant fy (end nodes half weight).
+  PetscErrorCode TopLoad(Problem &p, double fy, Vec f, bool to_system)
+  {
+    PetscScalar *a;
+    PetscFunctionBeginUser;
+    const double per = fy / opt_.mesh_ntheta;
+    PetscCall(VecGetArray(f, &a));
+    for (PetscInt n : p.mesh().node_sets["top"]) {
+      if (!p.mesh().node_owned[n]) continue;
+      const double x = p.mesh().x0[2 * n], w = (x < 1e-9 || x > kWidth - 1e-9) ? 0.5 : 1.0;
+      a[p.mesh().node_dof[n] + 1] += w * per;
+      if (to_system) p.system().AddForce(n, 0.0, w * per);
+    }
+    PetscCall(VecRestoreArray(f, &a));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 };
 
 } // namespace
 
-std::unique_ptr<Scene> CreateToolScene(const Options &opt) { return std::make_unique<ToolScene>(opt); }
+std::unique_ptr<Scene> CreateToolScene(const Options &opt)
+{
+  if (opt.scene == SceneKind::Slide) return std::make_unique<SlideScene>(opt);
+  return std::make_unique<ToolScene>(opt);
+}
 
 } // namespace tf

@@ -40,6 +40,7 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"penetration", &HistoryRow::penetration, "largest penetration of a node into a tool (mm)"},
     {"tension", &HistoryRow::tension, "largest tensile (negative) normal force of a contact node"},
     {"stage", &HistoryRow::stage, "0 loading, 1 unloading"},
+    {"n_contact_apex", &HistoryRow::n_contact_apex, "contact nodes on the V-die's apex fillet"},
   };
   return cols;
 }

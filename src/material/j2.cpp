@@ -99,9 +99,9 @@ double J2Plasticity::YieldOnset(const PointState &s, const Voigt &deps, double o
   const auto dot = [](const Voigt &x, const Voigt &y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + 2 * x[3] * y[3]; };
   const double sy = h_->YieldStress(s.ep);
   const double qa = 1.5 * dot(d1, d1), qb = 3 * dot(s0, d1), qc = 1.5 * dot(s0, s0) - sy * sy;
-  // Already on (or past) the surface: an event now if it loads by the same
-  // criterion as Loading (s : de > 0), else none.
-  if (qc >= 0) return DevDotStrain(s0, deps) > 0 ? 0.0 : 1e300;
+  // On the surface (within kOnSurface) or past it: not an r1 event; a loading
+  // point there is switched to plastic by Loading, or marked at the commit.
+  if (VonMises(s.sigma) >= (1 - kOnSurface) * sy) return 1e300;
   if (qa <= 0) return 1e300;
   const double root = std::sqrt(qb * qb - 4 * qa * qc); // real since qc < 0 < qa
   // The positive root, in the form free of cancellation for either sign of qb.
@@ -112,8 +112,7 @@ bool J2Plasticity::Loading(const PointState &s, const Voigt &deps) const
 {
   const double a = DevDotStrain(Deviator(s.sigma), deps);
   if (s.plastic) return a > 0;
-  // An elastic point counts as on the surface within a relative 1e-9.
-  return a > 0 && VonMises(s.sigma) >= (1 - 1e-9) * h_->YieldStress(s.ep);
+  return a > 0 && VonMises(s.sigma) >= (1 - kOnSurface) * h_->YieldStress(s.ep);
 }
 
 } // namespace tf

@@ -150,14 +150,14 @@ Tool BuildVDie(double ro, double r_apex, double u_close, double r_edge)
   return t;
 }
 
-Tool BuildFlatPlate(double y0, double x0, double x1)
+Tool BuildFlatPlate(double y0, double x0, double x1, bool floor)
 {
   Tool t;
-  t.name = "plate";
+  t.name = floor ? "floor" : "plate";
   Segment s;
   s.a = {x0, y0};
   s.b = {x1, y0};
-  s.n_line = {0, -1};
+  s.n_line = {0, floor ? 1.0 : -1.0};
   t.segments.push_back(s);
   return t;
 }

@@ -50,6 +50,9 @@ public:
   void AddFrameForce(PetscInt node, double fl, double fn);
   // k on the node's l dof (l l^T in the global frame): a tangential spring.
   PetscErrorCode AddFrameStiffness(PetscInt node, double k_ll);
+  // Adds an out-of-balance force (global frame, contribution vector) to the
+  // loads of the free dofs; call after the prescribed dofs are known.
+  PetscErrorCode AddFreeForce(Vec f);
   // Owned nodes only: after assembly, row l of the node's frame gets
   // coeff x (row n, with its load): the unsymmetric friction correction row
   // (METHOD.md sec. 3). Rows l and n of a node share their pattern.

@@ -44,6 +44,9 @@ public:
   // After a solve: new slip iterates; converged when the friction forces changed
   // by less than tol (relative to mu f_n) on every rank.
   PetscErrorCode UpdateIterates(Problem &p, Vec du, double dU, bool &converged);
+  // Nodes that came into contact without force and that the solution du would
+  // pull off the tool: counted, and released with `apply` (the step is then re-solved).
+  PetscErrorCode ReleasePulled(Problem &p, bool apply, PetscInt &released);
   // r4 (contact), r5 (separation), r6 (stick / reversal) for the solution du of step dU.
   PetscErrorCode LimitStep(Problem &p, Vec du, double dU, StepLimit &limit);
   // Accepts the increment (du for tool step dU, reactions scaled by react_scale,

@@ -12,7 +12,7 @@
 
 namespace tf {
 
-enum class SceneKind { Squaring, Flattening, Pressure, Shear, Rotation, Column, Tension };
+enum class SceneKind { Squaring, Flattening, Pressure, Shear, Rotation, Column, Tension, Slide };
 
 struct Options {
   SceneKind scene = SceneKind::Pressure;
@@ -50,6 +50,7 @@ struct Options {
   double rmin_dphi = 1.0;
   std::string unload = "reverse";
   double shear_gamma = 1.0;
+  double slide_n = 100.0, slide_push = 0.2; // slide scene: normal force (N/mm), push (mm)
   double tension_strain = 0.1;        // signed: < 0 compresses
   double rotation_angle = 90.0;        // degrees
   double rotation_strain = 1e-3;       // prestretch before the rotation

@@ -44,6 +44,13 @@ public:
   virtual std::vector<double> Breakpoints() const { return {}; }
   // Scene-specific limits on the trial increment (contact: r4-r6).
   virtual PetscErrorCode LimitStep(Problem &p, Vec du_trial, StepLimit &limit) { return 0; }
+  // State switches the trial solution calls for (contact nodes pulled off the
+  // tool without force): counted, applied with `apply`; the step is re-solved.
+  virtual PetscErrorCode Switches(Problem &p, Vec du, bool apply, PetscInt &n)
+  {
+    n = 0;
+    return 0;
+  }
   // Non-linear loads (friction): the increment is solved by iteration.
   virtual bool Iterative() const { return false; }
   virtual void ResetIterates() {}

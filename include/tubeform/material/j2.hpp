@@ -11,6 +11,10 @@
 
 namespace tf {
 
+// A point within this relative distance of the yield surface counts as on it:
+// events resolved to round-off (or by a re-solved step) are not new events.
+constexpr double kOnSurface = 1e-6;
+
 class J2Plasticity : public Material {
 public:
   // dep_ref: plastic strain step over which H' is taken (as a secant) before a

@@ -56,8 +56,9 @@ public:
 // a convex edge fillet of radius r_edge. Moves down by the stroke.
 Tool BuildVDie(double ro, double r_apex, double u_close = 0, double r_edge = 0);
 
-// A flat plate y = y0 from x = x0 to x1, pressing down (body below).
-Tool BuildFlatPlate(double y0, double x0, double x1);
+// A flat plate y = y0 from x = x0 to x1, pressing down (body below), or with
+// `floor` a support with the body above it.
+Tool BuildFlatPlate(double y0, double x0, double x1, bool floor = false);
 
 // The paper's stroke rule: the stroke at which a rounded square of corner
 // radius rc, with its sides on the closed dies' flanks, has the perimeter of
