@@ -35,7 +35,8 @@ int main()
     CHECK_NEAR(glin, g(du_lk, dfnk), 1e-9 * fn0);
   }
   // Limits of the law: sliding far (x >> VCRI) carries mu f_n; tiny slip is a spring of stiffness 3 mu f_n / VCRI.
-  CHECK_NEAR(friction::Phi(friction::Cap(1.0, vcri), vcri), 1.0, 2e-5); // capped at 2 VCRI: tanh(6)
+  CHECK_NEAR(friction::Phi(1.0, vcri), 1.0, 2e-5); // capped at 2 VCRI: tanh(6)
+  CHECK(friction::DPhi(1.0, vcri) == 0);            // no change past the cap
   CHECK_NEAR(friction::DPhi(0, vcri), 3 / vcri, 1e-12);
   CHECK_NEAR(friction::Cap(-1.0, vcri), -2 * vcri, 0);
   // Increment independence: accumulating slip in 1 or 100 pieces gives the same force.

@@ -20,10 +20,12 @@ void ContactSet::Setup(Problem &p, Tool *tool, const std::string &candidates, co
   const PetscInt n = p.mesh().num_nodes;
   candidates_ = p.mesh().node_sets[candidates];
   contact_.assign(n, 0);
+  released_.assign(n, 0);
+  frozen_.assign(n, 0);
   global_frame_.assign(n, 0);
   sym_dir_.assign(n, Vec2{0, 0});
   segment_.assign(n, -1);
-  for (auto *v : {&fn_, &x_, &gap_, &kappa_, &dxk_, &fnk_, &rate_}) v->assign(n, 0.0);
+  for (auto *v : {&fn_, &x_, &gap_, &kappa_, &dxk_, &fnk_, &rate_, &last_dx_}) v->assign(n, 0.0);
   r4_.assign(n, 1e300);
   r5_.assign(n, 1e300);
   n_.assign(n, Vec2{0, -1});
@@ -47,6 +49,12 @@ PetscErrorCode ContactSet::Initialize(Problem &p)
 PetscErrorCode ContactSet::BeginIncrement(Problem &p)
 {
   PetscFunctionBeginUser;
+  // Force scale of "zero" (grazing nodes): a millionth of the largest contact force.
+  double fmax = 0;
+  for (PetscInt node : candidates_)
+    if (contact_[node]) fmax = std::max(fmax, fn_[node]);
+  PetscCallMPI(MPI_Allreduce(&fmax, &f_small_, 1, MPI_DOUBLE, MPI_MAX, p.comm()));
+  f_small_ *= 1e-6;
   for (PetscInt node : candidates_) {
     if (!contact_[node]) continue;
     const Projection pr = tool_->Project({p.position()[2 * node], p.position()[2 * node + 1]});
@@ -74,6 +82,8 @@ PetscErrorCode ContactSet::BeginIncrement(Problem &p)
 
 void ContactSet::ResetIterates()
 {
+  std::fill(released_.begin(), released_.end(), 0);
+  std::fill(frozen_.begin(), frozen_.end(), 0);
   // The first iterate is predicted in Constrain from the latest slip per unit stroke.
   predict_ = true;
   fnk_ = fn_;
@@ -83,8 +93,10 @@ PetscErrorCode ContactSet::Constrain(Problem &p, double dU)
 {
   PetscFunctionBeginUser;
   const Vec2 dir = tool_->direction;
+  // Moving tool: the slip per unit stroke of the latest solution; static tool:
+  // the last increment's slip.
   if (predict_)
-    for (PetscInt node : candidates_) dxk_[node] = contact_[node] ? rate_[node] * dU : 0.0;
+    for (PetscInt node : candidates_) dxk_[node] = !contact_[node] ? 0.0 : dU != 0 ? rate_[node] * dU : last_dx_[node];
   predict_ = false;
   for (PetscInt node : candidates_) {
     if (!contact_[node]) continue;
@@ -145,20 +157,31 @@ PetscErrorCode ContactSet::UpdateIterates(Problem &p, Vec du, double dU, bool &c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::ReleasePulled(Problem &p, bool apply, PetscInt &released)
+PetscErrorCode ContactSet::ReleasePulled(Problem &p, Vec du, double dU, bool apply, PetscInt &released)
 {
-  const PetscScalar *react;
+  const PetscScalar *react, *d;
   PetscInt local = 0;
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
+  PetscCall(VecGetArrayRead(du, &d));
   for (PetscInt node : candidates_) {
-    if (!contact_[node]) continue;
-    const double dfn = NormalReaction(p, node, react);
-    if (dfn < 0 && fn_[node] <= 1e-9 * -dfn) {
+    const PetscInt o = p.mesh().node_dof[node];
+    if (!contact_[node]) {
+      if (!released_[node]) continue;
+      const double r4 = tool_->FirstContact({p.position()[2 * node], p.position()[2 * node + 1]}, {PetscRealPart(d[o]), PetscRealPart(d[o + 1])}, dU);
+      if (r4 > 1e-6) continue;
       local += p.mesh().node_owned[node];
-      if (apply) contact_[node] = 0, fn_[node] = x_[node] = 0;
+      if (apply) contact_[node] = frozen_[node] = 1, released_[node] = 0;
+      continue;
+    }
+    // Only a clear pull counts: a grazing node (force ~ 0 either way) stays.
+    const double dfn = NormalReaction(p, node, react);
+    if (!frozen_[node] && dfn < -f_small_ && fn_[node] <= 1e-9 * -dfn) {
+      local += p.mesh().node_owned[node];
+      if (apply) contact_[node] = 0, fn_[node] = x_[node] = 0, released_[node] = 1;
     }
   }
+  PetscCall(VecRestoreArrayRead(du, &d));
   PetscCall(VecRestoreArrayRead(p.system().reactions_local(), &react));
   PetscCall(MPIU_Allreduce(&local, &released, 1, MPIU_INT, MPI_SUM, p.comm()));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -184,7 +207,7 @@ PetscErrorCode ContactSet::LimitStep(Problem &p, Vec du, double dU, StepLimit &l
     }
     // r5: the normal force reaches zero.
     const double dfn = NormalReaction(p, node, react);
-    if (dfn < 0) r5_[node] = std::max(fn_[node], 0.0) / -dfn;
+    if (dfn < -f_small_) r5_[node] = std::max(fn_[node], 0.0) / -dfn;
     leave.Offer(r5_[node], Limiter::Separation, id);
     // r6: the friction mobilization f_l / (mu f_n) changes by at most dphi_max.
     if (friction() && SlipFree(node)) {
@@ -220,12 +243,13 @@ PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_sc
         const Vec2 u = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
         const double dx = Dot(u, l_[node]) - dU * Dot(tool_->direction, l_[node]);
         x_[node] = friction::Cap(x_[node] + dx, prm_.vcri);
+        last_dx_[node] = dx;
         const double fl_new = -prm_.mu * fn_[node] * friction::Phi(x_[node], prm_.vcri);
         if (p.mesh().node_owned[node]) local_w -= 0.5 * (fl_old + fl_new) * dx; // dissipated by sliding
       }
       // r5: released when its normal force has reached zero (up to round-off
       // of a re-solved step).
-      if (r5_[node] <= event || fn_[node] <= 1e-9 * fn_old) {
+      if (r5_[node] <= event || (fn_[node] <= 1e-9 * fn_old && fn_[node] < -f_small_)) {
         contact_[node] = 0;
         fn_[node] = x_[node] = 0;
       }
@@ -238,6 +262,8 @@ PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_sc
   PetscCall(VecRestoreArrayRead(du, &d));
   PetscCallMPI(MPI_Allreduce(&local_w, &w_friction, 1, MPI_DOUBLE, MPI_SUM, p.comm()));
 
+  // The tool has moved by dU with the increment.
+  tool_->stroke += dU;
   // Gaps on the new geometry: contact nodes keep theirs for the next increment
   // to close (on arcs, sliding along the tangent leaves a second-order gap);
   // a free node that reached the surface up to round-off is in contact.

@@ -147,10 +147,10 @@ public:
   void ResetIterates() override { contact_.ResetIterates(); }
   PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged) override { return contact_.UpdateIterates(p, du, dU_, converged); }
   PetscErrorCode LimitStep(Problem &p, Vec du, StepLimit &limit) override { return unloading_ ? 0 : contact_.LimitStep(p, du, dU_, limit); }
-  PetscErrorCode Switches(Problem &p, Vec, bool apply, PetscInt &n) override
+  PetscErrorCode Switches(Problem &p, Vec du, bool apply, PetscInt &n) override
   {
     n = 0;
-    return unloading_ ? 0 : contact_.ReleasePulled(p, apply, n);
+    return unloading_ ? 0 : contact_.ReleasePulled(p, du, dU_, apply, n);
   }
   PetscErrorCode CommitIncrement(Problem &p, Vec du, double react_scale, double r, double &w_friction) override
   {
@@ -295,7 +295,7 @@ public:
   void ResetIterates() override { contact_.ResetIterates(); }
   PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged) override { return contact_.UpdateIterates(p, du, 0.0, converged); }
   PetscErrorCode LimitStep(Problem &p, Vec du, StepLimit &limit) override { return contact_.LimitStep(p, du, 0.0, limit); }
-  PetscErrorCode Switches(Problem &p, Vec, bool apply, PetscInt &n) override { return contact_.ReleasePulled(p, apply, n); }
+  PetscErrorCode Switches(Problem &p, Vec du, bool apply, PetscInt &n) override { return contact_.ReleasePulled(p, du, 0.0, apply, n); }
   PetscErrorCode CommitIncrement(Problem &p, Vec du, double react_scale, double r, double &w_friction) override { return contact_.Commit(p, du, 0.0, react_scale, r, w_friction); }
   PetscErrorCode Measure(Problem &p, double lambda, Vec f_int, HistoryRow &row) override
   {

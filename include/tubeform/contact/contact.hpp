@@ -46,7 +46,9 @@ public:
   PetscErrorCode UpdateIterates(Problem &p, Vec du, double dU, bool &converged);
   // Nodes that came into contact without force and that the solution du would
   // pull off the tool: counted, and released with `apply` (the step is then re-solved).
-  PetscErrorCode ReleasePulled(Problem &p, bool apply, PetscInt &released);
+  // A released node that the next solution drives straight into the tool is
+  // grazing: it goes back into contact and stays for the rest of the step.
+  PetscErrorCode ReleasePulled(Problem &p, Vec du, double dU, bool apply, PetscInt &released);
   // r4 (contact), r5 (separation), r6 (stick / reversal) for the solution du of step dU.
   PetscErrorCode LimitStep(Problem &p, Vec du, double dU, StepLimit &limit);
   // Accepts the increment (du for tool step dU, reactions scaled by react_scale,
@@ -79,8 +81,11 @@ private:
   std::vector<Vec2> sym_dir_;      // held direction on a symmetry plane, {0, 0} if none
   std::vector<int> segment_;
   std::vector<double> fn_, x_, gap_, kappa_, dxk_, fnk_, r4_, r5_;
-  std::vector<double> rate_; // slip per unit stroke of the latest solution: predicts the next iterate
+  std::vector<double> rate_;    // slip per unit stroke of the latest solution: predicts the next iterate
+  std::vector<double> last_dx_; // slip of the last increment (predictor for static tools)
   bool predict_ = true;
+  std::vector<char> released_, frozen_; // within the current step
+  double f_small_ = 0; // contact forces below this count as zero (1e-6 of the largest)
   std::vector<Vec2> n_, l_;
 
   bool SlipFree(PetscInt node) const { return contact_[node] && !global_frame_[node] && sym_dir_[node][0] == 0 && sym_dir_[node][1] == 0; }

@@ -12,13 +12,16 @@
 
 namespace tf::friction {
 
-inline double Phi(double x, double vcri) { return std::tanh(3.0 * x / vcri); }
+inline double Cap(double x, double vcri) { return std::max(-2 * vcri, std::min(2 * vcri, x)); }
+// The mobilization of the (capped) slip state, and its derivative: zero past
+// the cap, where more slip no longer changes the state.
+inline double Phi(double x, double vcri) { return std::tanh(3.0 * Cap(x, vcri) / vcri); }
 inline double DPhi(double x, double vcri)
 {
+  if (std::abs(x) >= 2 * vcri) return 0.0;
   const double t = Phi(x, vcri);
   return 3.0 * (1 - t * t) / vcri;
 }
-inline double Cap(double x, double vcri) { return std::max(-2 * vcri, std::min(2 * vcri, x)); }
 
 // Terms of the linearized l-row of a contact node for friction iterate k
 // (paper eq. 14-15). With t = phi(x0 + dx_k), t' = phi'(x0 + dx_k),

@@ -1,0 +1,48 @@
+"""Friction on a flat rigid tool (options/slide.opts): a 10 x 2 elastic block
+pressed on a floor by N = 100 N/mm, then its top pushed sideways.
+References (Coulomb): the tangential force T stays below mu N while the block
+sticks and slides at T = mu N; friction dissipation = mu N x slip.
+  - slide at mu N within 1 % (the issue's tolerance), at 20 and at 200
+    increments (the law accumulates slip, so the increment size must not
+    matter: equal within 1e-3);
+  - stick: while T < mu N / 2 the bottom's slip stays below VCRI (1e-3 mm);
+  - dissipation over the sliding stage = mu N x its slip within 1 % (the
+    micro-slip below VCRI dissipates a little less than mu N per mm);
+  - contact: no penetration beyond 1e-6 mm, no tensile contact force.
+"""
+import numpy as np
+
+from tfcheck import Checks, args, out, run
+
+tf, mpirun, src = args()
+k = Checks("slide")
+mu, N, vcri = 0.2, 100.0, 1e-3
+
+
+def history(extra, name):
+    f = out(name)
+    run(tf, mpirun, 1, ["-options_file", f"{src}/options/slide.opts", "-output", f, "-output_every", 100000] + extra)
+    import h5py
+    with h5py.File(f, "r") as h:
+        return {c: h["/history"][c][:] for c in h["/history"]}
+
+
+plateau = {}
+for n in (20, 200):
+    H = history(["-increments", n], f"slide_{n}.h5")
+    plateau[n] = H["load"][-1]
+    k.check(abs(plateau[n] / (mu * N) - 1) < 0.01, f"{n} increments: sliding force {plateau[n]:.4f} vs mu N = {mu * N:g}")
+    if n == 20:
+        s1 = int(np.nonzero(H["stage"] == 0)[0][-1])
+        slip = H["x_max"][-1] - H["x_max"][s1]
+        wf = H["w_friction"][-1] - H["w_friction"][s1]
+        k.check(abs(wf / (mu * N * slip) - 1) < 0.01, f"friction dissipation {wf:.5f} vs mu N slip {mu * N * slip:.5f} ({wf / (mu * N * slip) - 1:+.2%})")
+        k.check(H["penetration"].max() <= 1e-6 and H["tension"].max() <= 0, f"no penetration ({H['penetration'].max():.1e} mm), no tension ({H['tension'].max():.1e})")
+k.check(abs(plateau[20] / plateau[200] - 1) < 1e-3, f"sliding force independent of the increment size: {plateau[20]:.5f} vs {plateau[200]:.5f}")
+
+H = history(["-slide_push", 0.002, "-increments", 200], "slide_stick.h5")
+stage2 = H["stage"] == 1
+low = stage2 & (H["load"] < 0.5 * mu * N)
+k.check(low.sum() >= 3 and np.abs(H["x_max"][low]).max() < vcri, f"stick: {low.sum()} increments with T < mu N / 2, largest slip {np.abs(H['x_max'][low]).max():.2e} mm < VCRI")
+k.check(H["load"][stage2].max() <= mu * N * 1.001, f"T never exceeds mu N ({H['load'][stage2].max():.4f})")
+k.done()
