@@ -82,6 +82,7 @@ PetscErrorCode ContactSet::BeginIncrement(Problem &p)
 
 void ContactSet::ResetIterates()
 {
+  iteration_ = 0;
   std::fill(released_.begin(), released_.end(), 0);
   std::fill(frozen_.begin(), frozen_.end(), 0);
   // The first iterate is predicted in Constrain from the latest slip per unit stroke.
@@ -133,6 +134,7 @@ PetscErrorCode ContactSet::UpdateIterates(Problem &p, Vec du, double dU, bool &c
 {
   const PetscScalar *d, *react;
   int local = 1, global;
+  const double relax = ++iteration_ > 6 ? 0.5 : 1.0;
 
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(du, &d));
@@ -145,8 +147,10 @@ PetscErrorCode ContactSet::UpdateIterates(Problem &p, Vec du, double dU, bool &c
     const double fn = fn_[node] + NormalReaction(p, node, react);
     const double before = fnk_[node] * friction::Phi(x_[node] + dxk_[node], prm_.vcri), after = fn * friction::Phi(x_[node] + dx, prm_.vcri);
     if (std::abs(after - before) > prm_.tol * std::max(std::abs(fn), 1e-12)) local = 0;
-    dxk_[node] = dx;
-    fnk_[node] = fn;
+    // Under-relaxed after a few iterations: the tanh law can make plain
+    // iterates oscillate between sticking and sliding.
+    dxk_[node] += relax * (dx - dxk_[node]);
+    fnk_[node] += relax * (fn - fnk_[node]);
     if (dU != 0) rate_[node] = dx / dU;
   }
   PetscCall(VecRestoreArrayRead(p.system().reactions_local(), &react));
@@ -205,9 +209,11 @@ PetscErrorCode ContactSet::LimitStep(Problem &p, Vec du, double dU, StepLimit &l
       touch.Offer(r4_[node], Limiter::Contact, id);
       continue;
     }
-    // r5: the normal force reaches zero.
+    // r5: the normal force reaches zero. Grazing nodes (held at zero force for
+    // this step) and nodes without force that are pulled (released at the
+    // commit) do not limit.
     const double dfn = NormalReaction(p, node, react);
-    if (dfn < -f_small_) r5_[node] = std::max(fn_[node], 0.0) / -dfn;
+    if (dfn < -f_small_ && !frozen_[node] && fn_[node] > 1e-9 * -dfn) r5_[node] = fn_[node] / -dfn;
     leave.Offer(r5_[node], Limiter::Separation, id);
     // r6: the friction mobilization f_l / (mu f_n) changes by at most dphi_max.
     if (friction() && SlipFree(node)) {
@@ -248,8 +254,9 @@ PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_sc
         if (p.mesh().node_owned[node]) local_w -= 0.5 * (fl_old + fl_new) * dx; // dissipated by sliding
       }
       // r5: released when its normal force has reached zero (up to round-off
-      // of a re-solved step).
-      if (r5_[node] <= event || (fn_[node] <= 1e-9 * fn_old && fn_[node] < -f_small_)) {
+      // of a re-solved step); a grazing node stays, at zero force.
+      if (frozen_[node] && fn_[node] < 0) fn_[node] = 0;
+      else if (r5_[node] <= event || (fn_[node] <= 1e-9 * fn_old && fn_[node] < -f_small_)) {
         contact_[node] = 0;
         fn_[node] = x_[node] = 0;
       }
@@ -336,6 +343,16 @@ PetscErrorCode ContactSet::Count(Problem &p, PetscInt &n) const
   PetscFunctionBeginUser;
   for (PetscInt node : candidates_) local += contact_[node] && p.mesh().node_owned[node];
   PetscCall(MPIU_Allreduce(&local, &n, 1, MPIU_INT, MPI_SUM, p.comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::NormalForceSum(Problem &p, double &sum) const
+{
+  double local = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt node : candidates_)
+    if (contact_[node] && p.mesh().node_owned[node]) local += fn_[node];
+  PetscCallMPI(MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, p.comm()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

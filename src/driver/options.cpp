@@ -108,6 +108,12 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
   }
   PetscCall(PetscOptionsReal("-shear_gamma", "shear scene: final shear strain gamma", "tubeform", opt.shear_gamma, &opt.shear_gamma, nullptr));
   PetscCall(PetscOptionsReal("-slide_n", "slide scene: normal force pressing the block (N/mm)", "tubeform", opt.slide_n, &opt.slide_n, nullptr));
+  {
+    const char *const tools[] = {"flat", "arc"};
+    choice = opt.slide_tool == "flat" ? 0 : 1;
+    PetscCall(PetscOptionsEList("-slide_tool", "slide scene: a block on a flat floor, or a quarter ring turned inside a cylinder (arc)", "tubeform", tools, 2, tools[choice], &choice, nullptr));
+    opt.slide_tool = tools[choice];
+  }
   PetscCall(PetscOptionsReal("-slide_push", "slide scene: sideways displacement of the block's top (mm)", "tubeform", opt.slide_push, &opt.slide_push, nullptr));
   PetscCall(PetscOptionsReal("-tension_strain", "tension scene: final nominal strain in x (negative: compression)", "tubeform", opt.tension_strain, &opt.tension_strain, nullptr));
   PetscCall(PetscOptionsReal("-rotation_angle", "rotation scene: rigid rotation after the prestretch (degrees)", "tubeform", opt.rotation_angle, &opt.rotation_angle, nullptr));

@@ -301,8 +301,12 @@ PetscErrorCode Problem::SolveTrial(double lambda, double dl, Vec du, StepLimit &
     switches += scene_switches;
     if (switches > 0 && may_switch) ++redo;
     if (converged && (switches == 0 || !may_switch)) break;
-    PetscCheck(it < opt_.friction_max_iters + opt_.rmin_max_redo, comm_, PETSC_ERR_NOT_CONVERGED, "friction iterations did not converge in %d iterations at lambda = %g: lower -rmin_dphi or raise -friction_vcri", (int)opt_.friction_max_iters, lambda);
+    if (it >= opt_.friction_max_iters + opt_.rmin_max_redo) {
+      converged_ = false; // the caller shortens the step
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
   }
+  converged_ = true;
   PetscCall(scene_->LimitStep(*this, du, limit));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -420,7 +424,13 @@ PetscErrorCode Problem::Run()
     StepLimit limit;
     PetscInt redo = 0, iterations = 0;
     PetscCall(scene_->BeginIncrement(*this, lambda));
-    PetscCall(SolveTrial(lambda, dl, du, limit, redo, iterations));
+    // A step whose iterations do not settle is halved (up to 10 times).
+    for (int cut = 0;; ++cut) {
+      PetscCall(SolveTrial(lambda, dl, du, limit, redo, iterations));
+      if (converged_) break;
+      PetscCheck(cut < 10, comm_, PETSC_ERR_NOT_CONVERGED, "friction iterations did not converge at lambda = %g even for a step of %g: lower -rmin_dphi, raise -friction_vcri or -friction_tol", lambda, dl);
+      dl *= 0.5;
+    }
     Limiter who = lambda + dl >= end - eps ? Limiter::Final : Limiter::Trial;
     PetscInt where = -1;
     double r = 1.0, react_scale = 1.0, r_event = 1.0;
@@ -438,6 +448,11 @@ PetscErrorCode Problem::Run()
         PetscInt redo2 = 0;
         PetscCall(SolveTrial(lambda, dl, du, limit, redo2, iterations));
         redo += redo2;
+        for (int cut = 0; !converged_ && cut < 10; ++cut) {
+          dl *= 0.5;
+          PetscCall(SolveTrial(lambda, dl, du, limit, redo2, iterations));
+        }
+        PetscCheck(converged_, comm_, PETSC_ERR_NOT_CONVERGED, "friction iterations did not converge at lambda = %g: lower -rmin_dphi, raise -friction_vcri or -friction_tol", lambda);
         if (limit.r >= 1.0 - kEventSlack || attempt == 2) break;
         taken = limit.r;
         r *= taken;

@@ -343,10 +343,100 @@ private:
   }
 };
 
+// Friction on an arc: a quarter ring (outer radius R = -tube_ro, wall -tube_t)
+// inside a rigid cylinder of radius R (a concave arc tool). lambda in [0, 1]:
+// an internal pressure pushes it onto the cylinder (inner nodes held in the
+// tangential direction); lambda in [1, 2]: the inner surface is turned about
+// the centre by -slide_push / R. Coulomb: the moment needed is
+// mu R sum f_n = mu R p r_i pi/2 (sum f_n = p x inner arc length).
+// History: stroke = turn of the inner surface (rad), load = moment (N mm/mm).
+class ArcSlideScene : public Scene {
+public:
+  explicit ArcSlideScene(const Options &opt) : opt_(opt)
+  {
+    Segment arc;
+    arc.kind = Segment::Arc;
+    arc.c = {0, 0};
+    arc.radius = opt.tube_ro;
+    arc.t0 = -M_PI / 3;
+    arc.t1 = M_PI / 2 + M_PI / 3;
+    arc.concave = true;
+    tool_.name = "cylinder";
+    tool_.segments = {arc};
+  }
+  std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
+  std::vector<double> Breakpoints() const override { return {1.0}; }
+  double PathEnd() const override { return 2.0; }
+  PetscErrorCode Initialize(Problem &p) override
+  {
+    ContactParams prm;
+    prm.mu = opt_.friction_mu;
+    prm.vcri = opt_.friction_vcri > 0 ? opt_.friction_vcri : 1e-3;
+    prm.dphi_max = opt_.rmin_dphi;
+    prm.tol = opt_.friction_tol;
+    prm.group_tol = opt_.rmin_group_tol;
+    contact_.Setup(p, &tool_, "outer", {}, prm);
+    return contact_.Initialize(p);
+  }
+  PetscErrorCode BeginIncrement(Problem &p, double) override
+  {
+    PetscFunctionBeginUser;
+    for (PetscInt n : p.mesh().node_sets["inner"]) p.system().SetFrame(n, std::atan2(p.position()[2 * n + 1], p.position()[2 * n]));
+    PetscCall(contact_.BeginIncrement(p));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscErrorCode Load(Problem &p, double lambda, double dlambda, Vec dforce) override
+  {
+    PetscFunctionBeginUser;
+    PetscCall(contact_.Constrain(p, 0.0));
+    const double ri = opt_.tube_ro - opt_.tube_t;
+    if (lambda < 1.0) PetscCall(AddEdgePressure(p, "inner", dlambda * opt_.slide_n, dforce, true, lambda * opt_.slide_n));
+    const double turn = lambda < 1.0 ? 0.0 : dlambda * opt_.slide_push / opt_.tube_ro;
+    for (PetscInt n : p.mesh().node_sets["inner"]) p.system().Prescribe(n, 1, turn * ri); // tangential (frame l = radial)
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscErrorCode ExternalForce(Problem &p, double lambda, Vec f) override
+  {
+    PetscFunctionBeginUser;
+    PetscCall(VecZeroEntries(f));
+    PetscCall(AddEdgePressure(p, "inner", std::min(lambda, 1.0) * opt_.slide_n, f, false));
+    PetscCall(contact_.AddFrictionForces(p, f));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  bool Iterative() const override { return contact_.friction(); }
+  void ResetIterates() override { contact_.ResetIterates(); }
+  PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged) override { return contact_.UpdateIterates(p, du, 0.0, converged); }
+  PetscErrorCode LimitStep(Problem &p, Vec du, StepLimit &limit) override { return contact_.LimitStep(p, du, 0.0, limit); }
+  PetscErrorCode Switches(Problem &p, Vec du, bool apply, PetscInt &n) override { return contact_.ReleasePulled(p, du, 0.0, apply, n); }
+  PetscErrorCode CommitIncrement(Problem &p, Vec du, double react_scale, double r, double &w_friction) override { return contact_.Commit(p, du, 0.0, react_scale, r, w_friction); }
+  PetscErrorCode Measure(Problem &p, double lambda, Vec f_int, HistoryRow &row) override
+  {
+    PetscFunctionBeginUser;
+    row.stroke = lambda <= 1.0 ? 0.0 : (lambda - 1.0) * opt_.slide_push / opt_.tube_ro;
+    // Moment about the centre of the internal forces at the inner nodes (their supports).
+    const auto &x = p.position();
+    PetscCall(SetForce(p, "inner", f_int, [&](PetscInt n, double d[2]) { d[0] = -x[2 * n + 1], d[1] = x[2 * n]; }, row.load));
+    PetscInt n;
+    PetscCall(contact_.Count(p, n));
+    row.n_contact = n;
+    PetscCall(contact_.Violations(p, row.penetration, row.tension));
+    PetscCall(contact_.NormalForceSum(p, row.y_max)); // sum of f_n, in y_max's place
+    row.stage = lambda > 1.0 + 1e-12 ? 1 : 0;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+private:
+  Options opt_;
+  Tool tool_;
+  ContactSet contact_;
+};
+
 } // namespace
 
 std::unique_ptr<Scene> CreateToolScene(const Options &opt)
 {
+  if (opt.scene == SceneKind::Slide && opt.slide_tool == "arc") return std::make_unique<ArcSlideScene>(opt);
   if (opt.scene == SceneKind::Slide) return std::make_unique<SlideScene>(opt);
   return std::make_unique<ToolScene>(opt);
 }

@@ -65,6 +65,8 @@ public:
   // Sum over owned contact nodes of the force on the body (global frame), over ranks.
   PetscErrorCode TotalForce(Problem &p, double force[2]) const;
   PetscErrorCode Count(Problem &p, PetscInt &n) const;
+  // Sum over contact nodes of the normal force magnitude f_n.
+  PetscErrorCode NormalForceSum(Problem &p, double &sum) const;
   // Largest penetration (>= 0) and largest tension (normal force < 0) over contact nodes.
   PetscErrorCode Violations(Problem &p, double &penetration, double &tension) const;
 
@@ -84,6 +86,7 @@ private:
   std::vector<double> rate_;    // slip per unit stroke of the latest solution: predicts the next iterate
   std::vector<double> last_dx_; // slip of the last increment (predictor for static tools)
   bool predict_ = true;
+  int iteration_ = 0;
   std::vector<char> released_, frozen_; // within the current step
   double f_small_ = 0; // contact forces below this count as zero (1e-6 of the largest)
   std::vector<Vec2> n_, l_;

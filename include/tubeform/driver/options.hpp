@@ -50,7 +50,8 @@ struct Options {
   double rmin_dphi = 1.0;
   std::string unload = "reverse";
   double shear_gamma = 1.0;
-  double slide_n = 100.0, slide_push = 0.2; // slide scene: normal force (N/mm), push (mm)
+  double slide_n = 100.0, slide_push = 0.2; // slide scene: normal force (N/mm, arc: pressure MPa), push (mm)
+  std::string slide_tool = "flat";
   double tension_strain = 0.1;        // signed: < 0 compresses
   double rotation_angle = 90.0;        // degrees
   double rotation_strain = 1e-3;       // prestretch before the rotation

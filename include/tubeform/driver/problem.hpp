@@ -137,6 +137,7 @@ private:
   bool CellInternalForce(PetscInt e, const double xe[8], const fe::QuadGeometry &geo, const Voigt s[4], fe::ElemVec &f) const;
   std::vector<double> x_, u_;      // per local node, global frame
   History history_;
+  bool converged_ = true; // did the last SolveTrial settle
   Vec f_inc_ = nullptr, f_res_ = nullptr; // load of the trial step; out-of-balance force of the last increment
 
   PetscErrorCode ElasticEnergy(double &w);
