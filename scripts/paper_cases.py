@@ -51,10 +51,11 @@ with ThreadPoolExecutor(max_workers=jobs) as pool:
         last = np.nonzero(load)[0][-1]
         rows.append(f"| {name} | " + " | ".join(f"{v:.1f}" for v in at) +
                     f" | {H['c_over_t'][last]:.3f} | {H['deviation_ratio'][last]:.4f} | {H['c_over_t'][-1]:.3f} | {H['deviation_ratio'][-1]:.4f}"
+                    f" | {np.abs(H['energy_error'][1:][load[1:]]).max():.1e} | {H['penetration'].max():.1e}"
                     f" | {len(H['stroke']) - 1} | {info} | {wall:.0f} |")
         print(rows[-1], flush=True)
-head = ("| case | P(U=1) | P(2) | P(3) | P(4.2) N/mm | C/t at 4.2 | C1/C2 at 4.2 | C/t after springback | C1/C2 after | increments | solves | wall (s) |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|")
+head = ("| case | P(U=1) | P(2) | P(3) | P(4.2) N/mm | C/t at 4.2 | C1/C2 at 4.2 | C/t after springback | C1/C2 after | max energy error | max penetration (mm) | increments | solves | wall (s) |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 table = head + "\n" + "\n".join(rows)
 open(os.path.join(root, "results", "paper_cases.md"), "w").write(table + "\n")
 print(table)
