@@ -11,7 +11,6 @@ namespace tf {
 
 namespace {
 double Dot(const Vec2 &a, const Vec2 &b) { return a[0] * b[0] + a[1] * b[1]; }
-constexpr double kGrazing = 1e-6; // r4 below this: the node is touching already
 } // namespace
 
 void ContactSet::Setup(Problem &p, Tool *tool, const std::string &candidates, const std::vector<std::pair<std::string, Vec2>> &symmetry, const ContactParams &prm)
@@ -21,6 +20,8 @@ void ContactSet::Setup(Problem &p, Tool *tool, const std::string &candidates, co
   const PetscInt n = p.mesh().num_nodes;
   candidates_ = p.mesh().node_sets[candidates];
   contact_.assign(n, 0);
+  released_.assign(n, 0);
+  frozen_.assign(n, 0);
   global_frame_.assign(n, 0);
   sym_dir_.assign(n, Vec2{0, 0});
   segment_.assign(n, -1);
@@ -82,6 +83,8 @@ PetscErrorCode ContactSet::BeginIncrement(Problem &p)
 void ContactSet::ResetIterates()
 {
   iteration_ = 0;
+  std::fill(released_.begin(), released_.end(), 0);
+  std::fill(frozen_.begin(), frozen_.end(), 0);
   // The first iterate is predicted in Constrain from the latest slip per unit stroke.
   predict_ = true;
   fnk_ = fn_;
@@ -158,21 +161,31 @@ PetscErrorCode ContactSet::UpdateIterates(Problem &p, Vec du, double dU, bool &c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::ReleasePulled(Problem &p, Vec, double, bool apply, PetscInt &released)
+PetscErrorCode ContactSet::ReleasePulled(Problem &p, Vec du, double dU, bool apply, PetscInt &released)
 {
-  const PetscScalar *react;
+  const PetscScalar *react, *d;
   PetscInt local = 0;
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
+  PetscCall(VecGetArrayRead(du, &d));
   for (PetscInt node : candidates_) {
-    if (!contact_[node]) continue;
+    const PetscInt o = p.mesh().node_dof[node];
+    if (!contact_[node]) {
+      if (!released_[node]) continue;
+      const double r4 = tool_->FirstContact({p.position()[2 * node], p.position()[2 * node + 1]}, {PetscRealPart(d[o]), PetscRealPart(d[o + 1])}, dU);
+      if (r4 > 1e-6) continue;
+      local += p.mesh().node_owned[node];
+      if (apply) contact_[node] = frozen_[node] = 1, released_[node] = 0;
+      continue;
+    }
     // Only a clear pull counts: a grazing node (force ~ 0 either way) stays.
     const double dfn = NormalReaction(p, node, react);
-    if (dfn < -f_small_ && fn_[node] <= 1e-9 * -dfn) {
+    if (!frozen_[node] && dfn < -f_small_ && fn_[node] <= 1e-9 * -dfn) {
       local += p.mesh().node_owned[node];
-      if (apply) contact_[node] = 0, fn_[node] = x_[node] = 0;
+      if (apply) contact_[node] = 0, fn_[node] = x_[node] = 0, released_[node] = 1;
     }
   }
+  PetscCall(VecRestoreArrayRead(du, &d));
   PetscCall(VecRestoreArrayRead(p.system().reactions_local(), &react));
   PetscCall(MPIU_Allreduce(&local, &released, 1, MPIU_INT, MPI_SUM, p.comm()));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -193,15 +206,12 @@ PetscErrorCode ContactSet::LimitStep(Problem &p, Vec du, double dU, StepLimit &l
     if (!contact_[node]) {
       // r4: exact first touch along the increment.
       r4_[node] = tool_->FirstContact({p.position()[2 * node], p.position()[2 * node + 1]}, u, dU);
-      // A node already touching (grazing, just released) is not an event: it
-      // is taken into contact at the commit and its gap closed next increment.
-      if (r4_[node] > kGrazing) touch.Offer(r4_[node], Limiter::Contact, id);
+      touch.Offer(r4_[node], Limiter::Contact, id);
       continue;
     }
-    // r5: the normal force reaches zero. A node without force that is pulled
-    // does not limit: it is released at the commit.
+    // r5: the normal force reaches zero.
     const double dfn = NormalReaction(p, node, react);
-    if (dfn < -f_small_ && fn_[node] > 1e-9 * -dfn) r5_[node] = fn_[node] / -dfn;
+    if (dfn < -f_small_ && !frozen_[node]) r5_[node] = std::max(fn_[node], 0.0) / -dfn; // grazing nodes do not limit
     leave.Offer(r5_[node], Limiter::Separation, id);
     // r6: the friction mobilization f_l / (mu f_n) changes by at most dphi_max.
     if (friction() && SlipFree(node)) {
@@ -264,7 +274,7 @@ PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_sc
   for (PetscInt node : candidates_) {
     const Projection pr = tool_->Project({p.position()[2 * node], p.position()[2 * node + 1]});
     if (pr.segment < 0) continue;
-    if (!contact_[node] && (pr.gap <= prm_.gap_tol || r4_[node] <= kGrazing)) {
+    if (!contact_[node] && pr.gap <= prm_.gap_tol) {
       contact_[node] = 1;
       fn_[node] = x_[node] = 0;
     }

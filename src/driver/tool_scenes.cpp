@@ -168,6 +168,7 @@ public:
       for (int k = 0; k < 2; ++k) force[k] = (2.0 - lambda) * reversed_total_[k];
     } else PetscCall(contact_.TotalForce(p, force));
     row.load = -2.0 * force[1]; // full tube: both halves push the die up
+    row.tool_fx = -force[0], row.tool_fy = -force[1];
     PetscCall(contact_.Count(p, n));
     row.n_contact = n;
     PetscCall(OuterExtents(p, row));

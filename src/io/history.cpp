@@ -41,6 +41,8 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"tension", &HistoryRow::tension, "largest tensile (negative) normal force of a contact node"},
     {"stage", &HistoryRow::stage, "0 loading, 1 unloading"},
     {"n_contact_apex", &HistoryRow::n_contact_apex, "contact nodes on the V-die's apex fillet"},
+    {"tool_fx", &HistoryRow::tool_fx, "force of the quarter model on the tool, x (N/mm)"},
+    {"tool_fy", &HistoryRow::tool_fy, "force of the quarter model on the tool, y (N/mm)"},
   };
   return cols;
 }

@@ -46,6 +46,8 @@ public:
   PetscErrorCode UpdateIterates(Problem &p, Vec du, double dU, bool &converged);
   // Nodes that came into contact without force and that the solution du would
   // pull off the tool: counted, and released with `apply` (the step is then re-solved).
+  // A released node that the next solution drives straight into the tool is
+  // grazing: it goes back into contact and stays for the rest of the step.
   PetscErrorCode ReleasePulled(Problem &p, Vec du, double dU, bool apply, PetscInt &released);
   // r4 (contact), r5 (separation), r6 (stick / reversal) for the solution du of step dU.
   PetscErrorCode LimitStep(Problem &p, Vec du, double dU, StepLimit &limit);
@@ -85,6 +87,7 @@ private:
   std::vector<double> last_dx_; // slip of the last increment (predictor for static tools)
   bool predict_ = true;
   int iteration_ = 0;
+  std::vector<char> released_, frozen_; // within the current step
   double f_small_ = 0; // contact forces below this count as zero (1e-6 of the largest)
   std::vector<Vec2> n_, l_;
 

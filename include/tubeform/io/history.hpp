@@ -21,6 +21,7 @@ struct HistoryRow {
   double c_over_t = 0, x_max = 0, y_max = 0, deviation_ratio = 1;
   double redo = 0, drift = 0;
   double r_corner_x = 0, r_corner_y = 0, penetration = 0, tension = 0, stage = 0, n_contact_apex = 0;
+  double tool_fx = 0, tool_fy = 0;
 };
 
 struct HistoryColumn {
