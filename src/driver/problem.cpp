@@ -375,6 +375,7 @@ PetscErrorCode Problem::Run()
   Vec du, f_ext, f_int, f_ext0, f_int0;
   HistoryRow row;
   double lambda = 0, w_ext = 0, w_int = 0, w_plastic = 0, w_friction = 0;
+  bool warned = false;
   PetscInt step = 0, inc = 0;
 
   PetscFunctionBeginUser;
@@ -519,6 +520,10 @@ PetscErrorCode Problem::Run()
     row.energy_error = (w_ext - w_int - w_friction) / std::max(std::abs(w_ext), 1e-300);
     PetscCall(scene_->Measure(*this, lambda, f_int, row));
     history_.Append(row);
+    if (!warned && std::abs(row.energy_error) > 0.05 && inc > 10) {
+      warned = true;
+      PetscCall(PetscPrintf(comm_, "tubeform: warning: energy balance error %.1f %% at increment %d (lambda %.4f): the solution is drifting from equilibrium; try smaller -rmin_deps / -increments, or see docs/theory.md\n", 100 * row.energy_error, (int)inc, lambda));
+    }
     if (opt_.monitor)
       PetscCall(PetscPrintf(comm_, "inc %5d  lambda %.5f  stroke %-11.5g load %-11.5g r_min %.3g (%s%s)  plastic %d  contact %d  iters %d  residual %.2e (rel %.1e)  energy err %.1e\n", (int)inc, lambda, row.stroke, row.load, r, LimiterName((int)who),
                             where >= 0 ? (" @" + std::to_string(where)).c_str() : "", (int)ci.n_plastic, (int)row.n_contact, (int)iterations, residual, residual / std::max(fnorm, 1e-300), row.energy_error));
