@@ -49,6 +49,19 @@ PetscErrorCode GatherOuter(Problem &p, const ContactSet &c, std::vector<OuterNod
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// Contact parameters from the options; default_vcri when -friction_vcri is 0.
+ContactParams MakeContactParams(const Options &opt, double default_vcri)
+{
+  ContactParams prm;
+  prm.mu = opt.friction_mu;
+  prm.vcri = opt.friction_vcri > 0 ? opt.friction_vcri : default_vcri;
+  prm.dphi_max = opt.rmin_dphi;
+  prm.tol = opt.friction_tol;
+  prm.max_iters = (int)opt.friction_max_iters;
+  prm.group_tol = opt.rmin_group_tol;
+  return prm;
+}
+
 // Radius of the circle centred on the symmetry axis through a node on the axis
 // and its neighbour along the surface: the local corner radius there.
 double AxisCornerRadius(double on_axis, double nx, double ny)
@@ -77,15 +90,8 @@ public:
   PetscErrorCode Initialize(Problem &p) override
   {
     PetscFunctionBeginUser;
-    ContactParams prm;
-    prm.mu = opt_.friction_mu;
     // Default VCRI: 2 % of the circumferential element size of the outer surface.
-    prm.vcri = opt_.friction_vcri > 0 ? opt_.friction_vcri : 0.02 * opt_.tube_ro * 0.5 * M_PI / opt_.mesh_ntheta;
-    prm.dphi_max = opt_.rmin_dphi;
-    prm.tol = opt_.friction_tol;
-    prm.max_iters = (int)opt_.friction_max_iters;
-    prm.group_tol = opt_.rmin_group_tol;
-    contact_.Setup(p, &tool_, "outer", {{"x0", {1, 0}}, {"y0", {0, 1}}}, prm);
+    contact_.Setup(p, &tool_, "outer", {{"x0", {1, 0}}, {"y0", {0, 1}}}, MakeContactParams(opt_, 0.02 * opt_.tube_ro * 0.5 * M_PI / opt_.mesh_ntheta));
     PetscCall(contact_.Initialize(p));
     if (opt_.stroke_corner_radius > 0) PetscCall(PetscPrintf(p.comm(), "tubeform: stroke %.4f mm gives an outer corner radius of %.4g mm (perimeter-conserving rounded square)\n", stroke_, opt_.stroke_corner_radius));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -265,13 +271,7 @@ public:
   double PathEnd() const override { return 2.0; }
   PetscErrorCode Initialize(Problem &p) override
   {
-    ContactParams prm;
-    prm.mu = opt_.friction_mu;
-    prm.vcri = opt_.friction_vcri > 0 ? opt_.friction_vcri : 1e-3;
-    prm.dphi_max = opt_.rmin_dphi;
-    prm.tol = opt_.friction_tol;
-    prm.group_tol = opt_.rmin_group_tol;
-    contact_.Setup(p, &floor_, "bottom", {}, prm);
+    contact_.Setup(p, &floor_, "bottom", {}, MakeContactParams(opt_, 1e-3));
     return contact_.Initialize(p);
   }
   PetscErrorCode BeginIncrement(Problem &p, double) override { return contact_.BeginIncrement(p); }
@@ -371,13 +371,7 @@ public:
   double PathEnd() const override { return 2.0; }
   PetscErrorCode Initialize(Problem &p) override
   {
-    ContactParams prm;
-    prm.mu = opt_.friction_mu;
-    prm.vcri = opt_.friction_vcri > 0 ? opt_.friction_vcri : 1e-3;
-    prm.dphi_max = opt_.rmin_dphi;
-    prm.tol = opt_.friction_tol;
-    prm.group_tol = opt_.rmin_group_tol;
-    contact_.Setup(p, &tool_, "outer", {}, prm);
+    contact_.Setup(p, &tool_, "outer", {}, MakeContactParams(opt_, 1e-3));
     return contact_.Initialize(p);
   }
   PetscErrorCode BeginIncrement(Problem &p, double) override
