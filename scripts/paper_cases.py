@@ -9,6 +9,7 @@ and wall time; writes the table to results/paper_cases.md.
 """
 import glob
 import os
+import re
 import subprocess
 import sys
 import time
@@ -35,7 +36,8 @@ def run(path):
     wall = time.time() - t0
     if p.returncode != 0:
         return name, None, wall, p.stderr.strip().splitlines()[-1] if p.stderr.strip() else "failed"
-    solves = int(p.stdout.split("increments, ")[1].split()[0]) if "increments, " in p.stdout else -1
+    m = re.search(r"done, \d+ increments, (\d+) factorizations", p.stdout)
+    solves = int(m.group(1)) if m else -1
     return name, read(out)["history"], wall, solves
 
 

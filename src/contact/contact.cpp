@@ -211,7 +211,7 @@ PetscErrorCode ContactSet::LimitStep(Problem &p, Vec du, double dU, StepLimit &l
     }
     // r5: the normal force reaches zero.
     const double dfn = NormalReaction(p, node, react);
-    if (dfn < -f_small_) r5_[node] = std::max(fn_[node], 0.0) / -dfn;
+    if (dfn < -f_small_ && !frozen_[node]) r5_[node] = std::max(fn_[node], 0.0) / -dfn; // a grazing node held for this step does not limit
     leave.Offer(r5_[node], Limiter::Separation, id);
     // r6: the friction mobilization f_l / (mu f_n) changes by at most dphi_max.
     if (friction() && SlipFree(node)) {
