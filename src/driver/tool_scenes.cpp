@@ -57,7 +57,6 @@ ContactParams MakeContactParams(const Options &opt, double default_vcri)
   prm.vcri = opt.friction_vcri > 0 ? opt.friction_vcri : default_vcri;
   prm.dphi_max = opt.rmin_dphi;
   prm.tol = opt.friction_tol;
-  prm.max_iters = (int)opt.friction_max_iters;
   prm.group_tol = opt.rmin_group_tol;
   return prm;
 }
@@ -254,11 +253,26 @@ private:
   }
 };
 
+// A scene whose tool stays put (slide checks): the contact hooks forward to
+// the ContactSet with a zero tool step.
+class StaticContactScene : public Scene {
+public:
+  bool Iterative() const override { return contact_.friction(); }
+  void ResetIterates() override { contact_.ResetIterates(); }
+  PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged) override { return contact_.UpdateIterates(p, du, 0.0, converged); }
+  PetscErrorCode LimitStep(Problem &p, Vec du, StepLimit &limit) override { return contact_.LimitStep(p, du, 0.0, limit); }
+  PetscErrorCode Switches(Problem &p, Vec du, bool apply, PetscInt &n) override { return contact_.ReleasePulled(p, du, 0.0, apply, n); }
+  PetscErrorCode CommitIncrement(Problem &p, Vec du, double react_scale, double r, double &w_friction) override { return contact_.Commit(p, du, 0.0, react_scale, r, w_friction); }
+
+protected:
+  ContactSet contact_;
+};
+
 // A block on a rigid floor (friction check, METHOD.md sec. 7): lambda in
 // [0, 1] presses its top edge down with a total force -slide_n (top held in
 // x); lambda in [1, 2] pushes the top edge sideways by -slide_push.
 // History: stroke = top displacement (mm), load = tangential force T (N/mm).
-class SlideScene : public Scene {
+class SlideScene : public StaticContactScene {
 public:
   explicit SlideScene(const Options &opt) : opt_(opt), floor_(BuildFlatPlate(0.0, -1e3, 1e3, true)) {}
   std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
@@ -292,12 +306,6 @@ public:
     PetscCall(contact_.AddFrictionForces(p, f));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  bool Iterative() const override { return contact_.friction(); }
-  void ResetIterates() override { contact_.ResetIterates(); }
-  PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged) override { return contact_.UpdateIterates(p, du, 0.0, converged); }
-  PetscErrorCode LimitStep(Problem &p, Vec du, StepLimit &limit) override { return contact_.LimitStep(p, du, 0.0, limit); }
-  PetscErrorCode Switches(Problem &p, Vec du, bool apply, PetscInt &n) override { return contact_.ReleasePulled(p, du, 0.0, apply, n); }
-  PetscErrorCode CommitIncrement(Problem &p, Vec du, double react_scale, double r, double &w_friction) override { return contact_.Commit(p, du, 0.0, react_scale, r, w_friction); }
   PetscErrorCode Measure(Problem &p, double lambda, Vec f_int, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
@@ -325,7 +333,6 @@ private:
   static constexpr double kWidth = 10.0, kHeight = 2.0;
   Options opt_;
   Tool floor_;
-  ContactSet contact_;
   // A uniform vertical traction on the top edge with resultant fy (end nodes half weight).
   PetscErrorCode TopLoad(Problem &p, double fy, Vec f, bool to_system)
   {
@@ -351,7 +358,7 @@ private:
 // the centre by -slide_push / R. Coulomb: the moment needed is
 // mu R sum f_n = mu R p r_i pi/2 (sum f_n = p x inner arc length).
 // History: stroke = turn of the inner surface (rad), load = moment (N mm/mm).
-class ArcSlideScene : public Scene {
+class ArcSlideScene : public StaticContactScene {
 public:
   explicit ArcSlideScene(const Options &opt) : opt_(opt)
   {
@@ -399,12 +406,6 @@ public:
     PetscCall(contact_.AddFrictionForces(p, f));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  bool Iterative() const override { return contact_.friction(); }
-  void ResetIterates() override { contact_.ResetIterates(); }
-  PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged) override { return contact_.UpdateIterates(p, du, 0.0, converged); }
-  PetscErrorCode LimitStep(Problem &p, Vec du, StepLimit &limit) override { return contact_.LimitStep(p, du, 0.0, limit); }
-  PetscErrorCode Switches(Problem &p, Vec du, bool apply, PetscInt &n) override { return contact_.ReleasePulled(p, du, 0.0, apply, n); }
-  PetscErrorCode CommitIncrement(Problem &p, Vec du, double react_scale, double r, double &w_friction) override { return contact_.Commit(p, du, 0.0, react_scale, r, w_friction); }
   PetscErrorCode Measure(Problem &p, double lambda, Vec f_int, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
@@ -424,7 +425,6 @@ public:
 private:
   Options opt_;
   Tool tool_;
-  ContactSet contact_;
 };
 
 } // namespace

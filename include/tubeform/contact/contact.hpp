@@ -23,7 +23,6 @@ struct ContactParams {
   double vcri = 0.01;     // quasi-stick slip (mm)
   double dphi_max = 1.0;  // r6: largest change of f_l / (mu f_n) in an increment
   double tol = 1e-4;      // friction iterations: change of f_l / (mu f_n) between iterates
-  int max_iters = 20;
   double group_tol = 1e-6; // contact/separation events within (1 + tol) r_min go together
   double gap_tol = 1e-7;   // a free node this close to the surface (mm) is in contact
 };
