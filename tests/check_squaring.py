@@ -4,6 +4,7 @@ paper's springback, on 1 and 2 ranks; and the frictionless case.
     1 % of the external work at every increment (the issue's tolerance;
     measured 0.8 % with 300 trial increments, first-order in the step);
   - no node penetrates a tool by more than 1e-6 mm; no contact node in tension;
+    every step's friction iterations settle (none taken unsettled);
   - 1 vs 2 ranks: load, C1, C2, C/t and external work interpolated at the same
     strokes within 1e-6 relative (increments are cut at events found to
     round-off, so rows do not pair one to one; measured ~1e-9);
@@ -30,6 +31,7 @@ e = np.abs(h["energy_error"][1:][load_stage[1:]]).max()
 k.check(e < 0.01, f"energy balance over the loading: max error {e:.2e}")
 k.check(h["penetration"].max() <= 1e-6, f"largest penetration {h['penetration'].max():.1e} mm")
 k.check(h["tension"].max() <= 0, f"largest tensile contact force {h['tension'].max():.1e}")
+k.check(H[1]["unsettled"][-1] == 0 and H[2]["unsettled"][-1] == 0, "every trial step's friction iterations settled (no step taken unsettled)")
 grid = np.linspace(0.2, 4.2, 41)
 for col in ("load", "x_max", "y_max", "c_over_t", "w_ext"):
     curves = [np.interp(grid, H[n]["stroke"][H[n]["stage"] == 0], H[n][col][H[n]["stage"] == 0]) for n in (1, 2)]

@@ -71,5 +71,63 @@ int main()
     const double u = StrokeForCornerRadius(10.0, 0.0), d = 10 * std::sqrt(2.0) - u;
     CHECK_NEAR(4 * std::sqrt(2.0) * d, 2 * M_PI * 10.0, 1e-12);
   }
+  // The V-die closed by a parting face y = u_close through a convex edge fillet
+  // (METHOD.md sec. 1). References from the construction: the chain apex arc ->
+  // flank -> edge fillet -> face is continuous with one normal at every joint
+  // (C1), a point at distance delta from any piece projects back onto it with
+  // gap delta, and first contact on the face and on the fillet is found where
+  // straight-line motion meets them.
+  {
+    const double ro = 17.5, ra = 3, uc = 2, re = 1.5, s2 = std::sqrt(2.0);
+    const Tool die = BuildVDie(ro, ra, uc, re);
+    CHECK(die.segments.size() == 4);
+    const auto end_point = [](const Segment &s, bool first) -> Vec2 {
+      if (s.kind == Segment::Line) return first ? s.a : s.b;
+      const double t = first ? s.t0 : s.t1;
+      return {s.c[0] + s.radius * std::cos(t), s.c[1] + s.radius * std::sin(t)};
+    };
+    // Joints: apex arc (t0 end) - flank a; flank b - fillet (t0 end); fillet (t1 end) - face a.
+    const Vec2 joints[3][2] = {{end_point(die.segments[0], true), die.segments[1].a}, {die.segments[1].b, end_point(die.segments[2], true)}, {end_point(die.segments[2], false), die.segments[3].a}};
+    for (const auto &j : joints) {
+      CHECK_NEAR(j[0][0], j[1][0], 1e-12);
+      CHECK_NEAR(j[0][1], j[1][1], 1e-12);
+      const Projection pj = die.Project(j[0]);
+      CHECK_NEAR(pj.gap, 0.0, 1e-12);
+    }
+    // The fillet's normals at its ends are the flank's and the face's.
+    const Segment &edge = die.segments[2];
+    CHECK_NEAR(std::cos(edge.t0), -1 / s2, 1e-12);
+    CHECK_NEAR(std::sin(edge.t1), -1.0, 1e-12);
+    // The flank meets the face line (corner before rounding) at x = ro sqrt2 - uc.
+    CHECK_NEAR(die.segments[1].n_line[0] * (ro * s2 - uc) + die.segments[1].n_line[1] * uc, -ro, 1e-12);
+    // Points at distance delta (body side) from every piece project back with gap delta.
+    const double delta = 0.05;
+    for (size_t k = 0; k < die.segments.size(); ++k) {
+      const Segment &s = die.segments[k];
+      for (double f : {0.1, 0.5, 0.9}) {
+        Vec2 q, n;
+        if (s.kind == Segment::Line) {
+          q = {s.a[0] + f * (s.b[0] - s.a[0]), s.a[1] + f * (s.b[1] - s.a[1])};
+          n = s.n_line;
+        } else {
+          const double t = s.t0 + f * (s.t1 - s.t0), sg = s.concave ? -1.0 : 1.0;
+          n = {sg * std::cos(t), sg * std::sin(t)};
+          q = {s.c[0] + s.radius * std::cos(t), s.c[1] + s.radius * std::sin(t)};
+        }
+        const Projection pq = die.Project({q[0] + delta * n[0], q[1] + delta * n[1]});
+        CHECK(pq.segment == (int)k);
+        CHECK_NEAR(pq.gap, delta, 1e-12);
+        CHECK_NEAR(pq.n[0], n[0], 1e-12);
+        CHECK_NEAR(pq.n[1], n[1], 1e-12);
+      }
+    }
+    // First contact: a point below the face rising by 1 while the die comes
+    // down by 1 meets the face y = uc - U when its height y0 + r = uc - r.
+    const double xf = 0.5 * (die.segments[3].a[0] + die.segments[3].b[0]);
+    CHECK_NEAR(die.FirstContact({xf, 0.5}, {0.0, 1.0}, 1.0), (uc - 0.5) / 2, 1e-12);
+    // A point 0.5 left of the fillet's centre (static die) rising by 4 meets the
+    // circle at y = c_y - sqrt(re^2 - 0.25).
+    CHECK_NEAR(die.FirstContact({edge.c[0] - 0.5, 0.0}, {0.0, 4.0}, 0.0), (edge.c[1] - std::sqrt(re * re - 0.25)) / 4, 1e-12);
+  }
   return ReportChecks("test_friction");
 }

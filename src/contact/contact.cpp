@@ -83,6 +83,10 @@ PetscErrorCode ContactSet::BeginIncrement(Problem &p)
 void ContactSet::ResetIterates()
 {
   iteration_ = 0;
+  // A new trial starts from the committed active set: releases decided for
+  // an earlier trial of this increment (a longer step) are undone.
+  for (PetscInt node : candidates_)
+    if (released_[node]) contact_[node] = 1;
   std::fill(released_.begin(), released_.end(), 0);
   std::fill(frozen_.begin(), frozen_.end(), 0);
   // The first iterate is predicted in Constrain from the latest slip per unit stroke.
@@ -145,8 +149,9 @@ PetscErrorCode ContactSet::UpdateIterates(Problem &p, Vec du, double dU, bool &c
     const Vec2 u = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
     const double dx = Dot(u, l_[node]) - dU * Dot(tool_->direction, l_[node]);
     const double fn = fn_[node] + NormalReaction(p, node, react);
-    const double before = fnk_[node] * friction::Phi(x_[node] + dxk_[node], prm_.vcri), after = fn * friction::Phi(x_[node] + dx, prm_.vcri);
-    if (std::abs(after - before) > prm_.tol * std::max(std::abs(fn), 1e-12)) local = 0;
+    const double before = friction::Force(prm_.mu, prm_.vcri, fnk_[node], x_[node] + dxk_[node]), after = friction::Force(prm_.mu, prm_.vcri, fn, x_[node] + dx);
+    // Relative to the node's own force, but not below a thousandth of the largest contact force.
+    if (std::abs(after - before) > prm_.mu * prm_.tol * std::max(std::abs(fn), 1e3 * f_small_)) local = 0;
     // Under-relaxed after a few iterations: the tanh law can make plain
     // iterates oscillate between sticking and sliding.
     dxk_[node] += relax * (dx - dxk_[node]);
@@ -172,17 +177,21 @@ PetscErrorCode ContactSet::ReleasePulled(Problem &p, Vec du, double dU, bool app
     const PetscInt o = p.mesh().node_dof[node];
     if (!contact_[node]) {
       if (!released_[node]) continue;
-      const double r4 = tool_->FirstContact({p.position()[2 * node], p.position()[2 * node + 1]}, {PetscRealPart(d[o]), PetscRealPart(d[o + 1])}, dU);
-      if (r4 > 1e-6) continue;
+      // Where the released node ends, relative to the tool at the end of the
+      // step: inside means the release was wrong (the node grazes the tool).
+      const Vec2 end = {p.position()[2 * node] + PetscRealPart(d[o]) - dU * tool_->direction[0], p.position()[2 * node + 1] + PetscRealPart(d[o + 1]) - dU * tool_->direction[1]};
+      const Projection pr = tool_->Project(end);
+      if (pr.segment < 0 || pr.gap >= 0) continue;
       local += p.mesh().node_owned[node];
       if (apply) contact_[node] = frozen_[node] = 1, released_[node] = 0;
       continue;
     }
     // Only a clear pull counts: a grazing node (force ~ 0 either way) stays.
+    // The node's state (force, slip) is kept until the increment is committed.
     const double dfn = NormalReaction(p, node, react);
     if (!frozen_[node] && dfn < -f_small_ && fn_[node] <= 1e-9 * -dfn) {
       local += p.mesh().node_owned[node];
-      if (apply) contact_[node] = 0, fn_[node] = x_[node] = 0, released_[node] = 1;
+      if (apply) contact_[node] = 0, released_[node] = 1;
     }
   }
   PetscCall(VecRestoreArrayRead(du, &d));
@@ -241,14 +250,14 @@ PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_sc
   for (PetscInt node : candidates_) {
     const PetscInt o = p.mesh().node_dof[node];
     if (contact_[node]) {
-      const double fl_old = -prm_.mu * fn_[node] * friction::Phi(x_[node], prm_.vcri), fn_old = fn_[node];
+      const double fl_old = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]), fn_old = fn_[node];
       fn_[node] += react_scale * NormalReaction(p, node, react);
       if (SlipFree(node)) {
         const Vec2 u = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
         const double dx = Dot(u, l_[node]) - dU * Dot(tool_->direction, l_[node]);
         x_[node] = friction::Cap(x_[node] + dx, prm_.vcri);
         last_dx_[node] = dx;
-        const double fl_new = -prm_.mu * fn_[node] * friction::Phi(x_[node], prm_.vcri);
+        const double fl_new = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
         if (p.mesh().node_owned[node]) local_w -= 0.5 * (fl_old + fl_new) * dx; // dissipated by sliding
       }
       // r5: released when its normal force has reached zero (up to round-off
@@ -257,6 +266,10 @@ PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_sc
         contact_[node] = 0;
         fn_[node] = x_[node] = 0;
       }
+    } else if (released_[node]) {
+      // Released in this step (pulled off without force).
+      fn_[node] = x_[node] = 0;
+      released_[node] = 0;
     } else if (r4_[node] <= event) {
       contact_[node] = 1;
       fn_[node] = x_[node] = rate_[node] = 0;
@@ -286,6 +299,8 @@ PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_sc
 void ContactSet::ReleaseAll()
 {
   std::fill(contact_.begin(), contact_.end(), 0);
+  std::fill(released_.begin(), released_.end(), 0);
+  std::fill(frozen_.begin(), frozen_.end(), 0);
   std::fill(fn_.begin(), fn_.end(), 0.0);
   std::fill(x_.begin(), x_.end(), 0.0);
 }
@@ -298,7 +313,7 @@ PetscErrorCode ContactSet::AddFrictionForces(Problem &p, Vec f) const
   PetscCall(VecGetArray(f, &a));
   for (PetscInt node : candidates_) {
     if (!SlipFree(node) || !p.mesh().node_owned[node]) continue;
-    const double fl = -prm_.mu * fn_[node] * friction::Phi(x_[node], prm_.vcri);
+    const double fl = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
     a[p.mesh().node_dof[node]] += fl * l_[node][0];
     a[p.mesh().node_dof[node] + 1] += fl * l_[node][1];
   }
@@ -313,7 +328,7 @@ PetscErrorCode ContactSet::AddContactForces(Problem &p, Vec f) const
   PetscCall(VecGetArray(f, &a));
   for (PetscInt node : candidates_) {
     if (!contact_[node] || !p.mesh().node_owned[node]) continue;
-    const double fl = SlipFree(node) ? -prm_.mu * fn_[node] * friction::Phi(x_[node], prm_.vcri) : 0.0;
+    const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
     a[p.mesh().node_dof[node]] += fn_[node] * n_[node][0] + fl * l_[node][0];
     a[p.mesh().node_dof[node] + 1] += fn_[node] * n_[node][1] + fl * l_[node][1];
   }
@@ -327,7 +342,7 @@ PetscErrorCode ContactSet::TotalForce(Problem &p, double force[2]) const
   PetscFunctionBeginUser;
   for (PetscInt node : candidates_) {
     if (!contact_[node] || !p.mesh().node_owned[node]) continue;
-    const double fl = SlipFree(node) ? -prm_.mu * fn_[node] * friction::Phi(x_[node], prm_.vcri) : 0.0;
+    const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
     for (int k = 0; k < 2; ++k) local[k] += fn_[node] * n_[node][k] + fl * l_[node][k];
   }
   PetscCallMPI(MPI_Allreduce(local, force, 2, MPI_DOUBLE, MPI_SUM, p.comm()));

@@ -75,7 +75,7 @@ public:
   explicit ToolScene(const Options &opt) : opt_(opt), squaring_(opt.scene == SceneKind::Squaring)
   {
     stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius) : opt.stroke;
-    back_ = std::min(stroke_, std::max(0.5, 0.2 * stroke_));
+    back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
     if (squaring_) tool_ = BuildVDie(opt.tube_ro, opt.die_r_apex, opt.die_u_close, opt.die_r_edge);
     else tool_ = BuildFlatPlate(opt.tube_ro, -0.1 * opt.tube_ro, 1.5 * opt.tube_ro);
     flank_ = squaring_ && opt.die_r_apex > 0 ? 1 : 0;

@@ -101,37 +101,17 @@ bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const
   if (!ComputeGradients(xe, gr)) return false;
   double k[kAll][kAll] = {};
   for (int g = 0; g < kGauss; ++g) {
-    double b[kVoigt][kAll], cb[kVoigt][kAll];
+    double b[kVoigt][kAll];
     StrainMatrix12(gr, g, b);
-    Mat4 c = tangent[g];
-    if (geometric) {
-      const Mat4 q = StressCorrection(sigma[g]);
-      for (int r = 0; r < kVoigt; ++r)
-        for (int s = 0; s < kVoigt; ++s) c[r][s] -= q[r][s];
-    }
     // k += w det J  B12^T (C - Q) B12
-    for (int r = 0; r < kVoigt; ++r)
-      for (int j = 0; j < kAll; ++j) {
-        double sum = 0;
-        for (int s = 0; s < kVoigt; ++s) sum += c[r][s] * b[s][j];
-        cb[r][j] = sum;
+    AddBtCB(b, JaumannTangent(tangent[g], sigma[g], geometric), gr.wdet[g], k);
+    if (!geometric) continue;
+    // Initial-stress stiffness (grad P_s . sigma . grad P_t) I over nodes and modes alike.
+    for (int s = 0; s < kShapes; ++s)
+      for (int t = 0; t < kShapes; ++t) {
+        const double kst = gr.wdet[g] * InitialStress(gr.g[g][s], gr.g[g][t], sigma[g]);
+        for (int comp = 0; comp < 2; ++comp) k[Dof(s, comp)][Dof(t, comp)] += kst;
       }
-    for (int i = 0; i < kAll; ++i)
-      for (int j = 0; j < kAll; ++j) {
-        double sum = 0;
-        for (int r = 0; r < kVoigt; ++r) sum += b[r][i] * cb[r][j];
-        k[i][j] += gr.wdet[g] * sum;
-      }
-    if (geometric) {
-      // Initial-stress stiffness (grad P_s . sigma . grad P_t) I over nodes and modes alike.
-      const double sxx = sigma[g][0], syy = sigma[g][1], sxy = sigma[g][3];
-      for (int s = 0; s < kShapes; ++s)
-        for (int t = 0; t < kShapes; ++t) {
-          const double *gs = gr.g[g][s], *gt = gr.g[g][t];
-          const double kst = gs[0] * (sxx * gt[0] + sxy * gt[1]) + gs[1] * (sxy * gt[0] + syy * gt[1]);
-          for (int comp = 0; comp < 2; ++comp) k[Dof(s, comp)][Dof(t, comp)] += gr.wdet[g] * kst;
-        }
-    }
   }
   // cond = -Kii^{-1} Kic, then K* = Kcc + Kci cond.
   double kii[kInternal][kInternal], x[kInternal][kDofs];

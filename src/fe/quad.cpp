@@ -79,42 +79,32 @@ Mat4 StressCorrection(const Voigt &s)
   return q;
 }
 
+Mat4 JaumannTangent(const Mat4 &tangent, const Voigt &sigma, bool geometric)
+{
+  Mat4 c = tangent;
+  if (!geometric) return c;
+  const Mat4 q = StressCorrection(sigma);
+  for (int r = 0; r < kVoigt; ++r)
+    for (int s = 0; s < kVoigt; ++s) c[r][s] -= q[r][s];
+  return c;
+}
+
 void ElementStiffness(const QuadGeometry &geo, Formulation f, const Mat4 tangent[kGauss], const Voigt sigma[kGauss], bool geometric, ElemMat &ke)
 {
   for (auto &row : ke) row.fill(0.0);
   for (int g = 0; g < kGauss; ++g) {
-    double b[kVoigt][kDofs], cb[kVoigt][kDofs];
+    double b[kVoigt][kDofs];
     StrainMatrix(geo, g, f, b);
-    Mat4 c = tangent[g];
-    if (geometric) {
-      const Mat4 q = StressCorrection(sigma[g]);
-      for (int r = 0; r < kVoigt; ++r)
-        for (int s = 0; s < kVoigt; ++s) c[r][s] -= q[r][s];
-    }
     // ke += w det J  B^T (C - Q) B
-    for (int r = 0; r < kVoigt; ++r)
-      for (int j = 0; j < kDofs; ++j) {
-        double sum = 0;
-        for (int s = 0; s < kVoigt; ++s) sum += c[r][s] * b[s][j];
-        cb[r][j] = sum;
+    AddBtCB(b, JaumannTangent(tangent[g], sigma[g], geometric), geo.wdet[g], ke);
+    if (!geometric) continue;
+    // Initial-stress stiffness: (grad N_a . sigma . grad N_b) on both components.
+    for (int a = 0; a < kNodes; ++a)
+      for (int bn = 0; bn < kNodes; ++bn) {
+        const double k = geo.wdet[g] * InitialStress(geo.dndx[g][a], geo.dndx[g][bn], sigma[g]);
+        ke[2 * a][2 * bn] += k;
+        ke[2 * a + 1][2 * bn + 1] += k;
       }
-    for (int i = 0; i < kDofs; ++i)
-      for (int j = 0; j < kDofs; ++j) {
-        double sum = 0;
-        for (int r = 0; r < kVoigt; ++r) sum += b[r][i] * cb[r][j];
-        ke[i][j] += geo.wdet[g] * sum;
-      }
-    if (geometric) {
-      // Initial-stress stiffness: (grad N_a . sigma . grad N_b) on both components.
-      const double sxx = sigma[g][0], syy = sigma[g][1], sxy = sigma[g][3];
-      for (int a = 0; a < kNodes; ++a)
-        for (int bn = 0; bn < kNodes; ++bn) {
-          const double *ga = geo.dndx[g][a], *gb = geo.dndx[g][bn];
-          const double k = ga[0] * (sxx * gb[0] + sxy * gb[1]) + ga[1] * (sxy * gb[0] + syy * gb[1]);
-          ke[2 * a][2 * bn] += geo.wdet[g] * k;
-          ke[2 * a + 1][2 * bn + 1] += geo.wdet[g] * k;
-        }
-    }
   }
 }
 

@@ -34,6 +34,7 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"y_max", &HistoryRow::y_max, "C2: outer vertical half-extent (mm)"},
     {"deviation_ratio", &HistoryRow::deviation_ratio, "min(C1, C2) / max(C1, C2)"},
     {"redo", &HistoryRow::redo, "re-solves of the increment for loading/unloading switches"},
+    {"unsettled", &HistoryRow::unsettled, "trial steps so far taken with unsettled friction iterations (see docs/theory.md)"},
     {"drift", &HistoryRow::drift, "largest |sbar / sigma_y - 1| of a plastic update (before any drift correction)"},
     {"r_corner_x", &HistoryRow::r_corner_x, "outer corner radius on the x axis (3-node estimate, mm)"},
     {"r_corner_y", &HistoryRow::r_corner_y, "outer corner radius on the y axis (3-node estimate, mm)"},

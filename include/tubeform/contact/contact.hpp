@@ -36,7 +36,7 @@ public:
 
   // Frames of the contact nodes on the current geometry (before assembly).
   PetscErrorCode BeginIncrement(Problem &p);
-  // New friction iteration sequence for a tool step.
+  // New trial of a tool step: the committed active set, a new friction iteration sequence.
   void ResetIterates();
   // Prescribed normal motion (tool step dU, closing any gap) and friction rows.
   PetscErrorCode Constrain(Problem &p, double dU);
@@ -44,9 +44,11 @@ public:
   // by less than tol (relative to mu f_n) on every rank.
   PetscErrorCode UpdateIterates(Problem &p, Vec du, double dU, bool &converged);
   // Nodes that came into contact without force and that the solution du would
-  // pull off the tool: counted, and released with `apply` (the step is then re-solved).
-  // A released node that the next solution drives straight into the tool is
-  // grazing: it goes back into contact and stays for the rest of the step.
+  // pull off the tool: counted, and released with `apply` for this trial (the
+  // step is then re-solved; their force and slip state are dropped only when
+  // the increment is committed, and a new trial starts from the committed set).
+  // A released node that the next solution leaves inside the tool is grazing:
+  // it goes back into contact and stays for the rest of the trial.
   PetscErrorCode ReleasePulled(Problem &p, Vec du, double dU, bool apply, PetscInt &released);
   // r4 (contact), r5 (separation), r6 (stick / reversal) for the solution du of step dU.
   PetscErrorCode LimitStep(Problem &p, Vec du, double dU, StepLimit &limit);

@@ -8,6 +8,7 @@
 // mu f_n however small r_min makes the increments (decision, docs/theory.md).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace tf::friction {
@@ -37,10 +38,18 @@ struct RowTerms {
   double rhs = 0;         // added to the l load
 };
 
+// The friction force on the body along l for normal force fn and slip state x.
+inline double Force(double mu, double vcri, double fn, double x) { return -mu * fn * Phi(x, vcri); }
+
+// The stiffness of the stick spring, mu f_nk phi', is taken with the positive
+// part of f_nk: a tensile iterate (a node about to separate, its step cut by
+// r5) would otherwise give a negative tangential stiffness and can make the
+// iterations diverge. Only the iteration matrix changes, not the converged
+// solution: the same factor multiplies du_l and its right-hand-side partner.
 inline RowTerms Linearize(double mu, double vcri, double fn0, double fnk, double x0, double dxk, double dU_l, double kappa)
 {
   RowTerms t;
-  const double tk = Phi(x0 + dxk, vcri), dtk = DPhi(x0 + dxk, vcri);
+  const double tk = Phi(x0 + dxk, vcri), dtk = DPhi(x0 + dxk, vcri) * (fnk > 0 ? 1.0 : 0.0);
   t.row_n_coeff = mu * tk;
   t.diag = mu * fnk * dtk + fnk * kappa;
   t.rhs = mu * fn0 * (Phi(x0, vcri) - tk) + mu * fnk * dtk * (dxk + dU_l) + fnk * kappa * dU_l;

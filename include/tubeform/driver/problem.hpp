@@ -138,13 +138,17 @@ private:
   std::vector<double> x_, u_;      // per local node, global frame
   History history_;
   bool converged_ = true; // did the last SolveTrial settle
+  PetscInt unsettled_ = 0; // trial steps taken without settled iterations (after kMaxCuts halvings)
+  static constexpr int kMaxCuts = 6;
   Vec f_inc_ = nullptr, f_res_ = nullptr; // load of the trial step; out-of-balance force of the last increment
 
   PetscErrorCode ElasticEnergy(double &w);
   PetscErrorCode CreateMaterial();
   // One trial solution for the load step dl: friction iterations and
-  // loading/unloading re-solves, then the r factors into `limit`.
-  PetscErrorCode SolveTrial(double lambda, double dl, Vec du, StepLimit &limit, PetscInt &redo, PetscInt &iterations);
+  // loading/unloading re-solves, then the r factors into `limit`. A trial whose
+  // iterations do not settle sets converged_ = false, unless it is the `last`
+  // try (then its solution is taken and counted in unsettled_).
+  PetscErrorCode SolveTrial(double lambda, double dl, Vec du, StepLimit &limit, PetscInt &redo, PetscInt &iterations, bool last);
   PetscErrorCode WriteOutputs(class ResultWriter &writer, PetscInt step, double t);
 };
 

@@ -44,6 +44,33 @@ void StrainMatrix(const QuadGeometry &geo, int g, Formulation f, double b[kVoigt
 // Stress-correction matrix Q of METHOD.md sec. 2 (from -2 sigma.D : dD), 4x4 form.
 Mat4 StressCorrection(const Voigt &sigma);
 
+// The material part of the updated-Lagrangian tangent at a Gauss point:
+// C - Q(sigma) with `geometric`, else C.
+Mat4 JaumannTangent(const Mat4 &tangent, const Voigt &sigma, bool geometric);
+
+// The initial-stress product grad_a . sigma . grad_b of two shape gradients.
+inline double InitialStress(const double ga[2], const double gb[2], const Voigt &s) { return ga[0] * (s[0] * gb[0] + s[3] * gb[1]) + ga[1] * (s[3] * gb[0] + s[1] * gb[1]); }
+
+// k += w B^T C B for a strain matrix of N columns (8 for Q4/B-bar, 12 for
+// QM6 with its incompatible modes); K is any N x N indexable matrix.
+template <int N, class K>
+void AddBtCB(const double (&b)[kVoigt][N], const Mat4 &c, double w, K &k)
+{
+  double cb[kVoigt][N];
+  for (int r = 0; r < kVoigt; ++r)
+    for (int j = 0; j < N; ++j) {
+      double sum = 0;
+      for (int s = 0; s < kVoigt; ++s) sum += c[r][s] * b[s][j];
+      cb[r][j] = sum;
+    }
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      double sum = 0;
+      for (int r = 0; r < kVoigt; ++r) sum += b[r][i] * cb[r][j];
+      k[i][j] += w * sum;
+    }
+}
+
 // Element tangent  K = sum_g w det J [ Bbar^T (C_g - Q(sigma_g)) Bbar + G^T S_g G ],
 // with C_g the tangent relating the Jaumann rate of Kirchhoff stress to d, and
 // the initial-stress part G^T S G = (grad N_a . sigma . grad N_b) I.

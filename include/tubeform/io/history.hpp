@@ -19,7 +19,7 @@ struct HistoryRow {
   double n_contact = 0, n_plastic = 0, friction_iters = 0, residual = 0;
   double w_ext = 0, w_int = 0, w_plastic = 0, w_friction = 0, w_elastic = 0, energy_error = 0;
   double c_over_t = 0, x_max = 0, y_max = 0, deviation_ratio = 1;
-  double redo = 0, drift = 0;
+  double redo = 0, drift = 0, unsettled = 0;
   double r_corner_x = 0, r_corner_y = 0, penetration = 0, tension = 0, stage = 0, n_contact_apex = 0;
   double tool_fx = 0, tool_fy = 0;
 };
