@@ -39,6 +39,9 @@ def run(path):
         return name, None, time.time() - t0, f"not finished within {timeout} s"
     wall = time.time() - t0
     if p.returncode != 0:
+        # A stalled run (-rmin_stall_increments) still writes its results up to the stall.
+        if "stalled" in p.stderr and os.path.exists(out):
+            return name, read(out)["history"], wall, "stalled"
         return name, None, wall, p.stderr.strip().splitlines()[-1] if p.stderr.strip() else "failed"
     m = re.search(r"done, \d+ increments, (\d+) factorizations", p.stdout)
     solves = int(m.group(1)) if m else -1
@@ -53,10 +56,15 @@ with ThreadPoolExecutor(max_workers=jobs) as pool:
             continue
         load = H["stage"] == 0
         U, P = H["stroke"][load], H["load"][load]
-        at = [np.interp(u, U, P) for u in (1, 2, 3, 4.2)]
+        at = [f"{np.interp(u, U, P):.1f}" if u <= U[-1] + 1e-9 else "-" for u in (1, 2, 3, 4.2)]
         last = np.nonzero(load)[0][-1]
-        rows.append(f"| {name} | " + " | ".join(f"{v:.1f}" for v in at) +
-                    f" | {H['c_over_t'][last]:.3f} | {H['deviation_ratio'][last]:.4f} | {H['c_over_t'][-1]:.3f} | {H['deviation_ratio'][-1]:.4f}"
+        if info == "stalled":
+            # Loading stopped short: no 4.2 mm state, no springback.
+            shape = f"stalled at U = {U[-1]:.3f} | | | "
+            info = "-"
+        else:
+            shape = f"{H['c_over_t'][last]:.3f} | {H['deviation_ratio'][last]:.4f} | {H['c_over_t'][-1]:.3f} | {H['deviation_ratio'][-1]:.4f}"
+        rows.append(f"| {name} | " + " | ".join(at) + f" | {shape}"
                     f" | {np.abs(H['energy_error'][1:][load[1:]]).max():.1e} | {H['penetration'].max():.1e}"
                     f" | {len(H['stroke']) - 1} | {info} | {int(H['unsettled'][-1])} | {wall:.0f} |")
         print(rows[-1], flush=True)

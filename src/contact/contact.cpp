@@ -94,6 +94,14 @@ void ContactSet::ResetIterates()
   fnk_ = fn_;
 }
 
+void ContactSet::LinearizeAtStart()
+{
+  iteration_ = 0;
+  predict_ = false;
+  std::fill(dxk_.begin(), dxk_.end(), 0.0);
+  fnk_ = fn_;
+}
+
 PetscErrorCode ContactSet::Constrain(Problem &p, double dU)
 {
   PetscFunctionBeginUser;

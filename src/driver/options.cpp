@@ -70,6 +70,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
   PetscCall(PetscOptionsReal("-rmin_domega", "r3: largest rotation increment (rad)", "tubeform", opt.rmin_domega, &opt.rmin_domega, nullptr));
   PetscCall(PetscOptionsReal("-rmin_group_tol", "Events within (1 + tol) r_min are taken in the same increment", "tubeform", opt.rmin_group_tol, &opt.rmin_group_tol, nullptr));
   PetscCall(PetscOptionsInt("-rmin_max_increments", "Stop with an error after this many increments", "tubeform", opt.rmin_max_increments, &opt.rmin_max_increments, nullptr));
+  PetscCall(PetscOptionsInt("-rmin_stall_increments", "Stop (results so far written) when this many increments advance the load path by less than 1e-6", "tubeform", opt.rmin_stall_increments, &opt.rmin_stall_increments, nullptr));
   PetscCall(PetscOptionsInt("-rmin_max_redo", "Re-solves per increment when points switch between loading and unloading", "tubeform", opt.rmin_max_redo, &opt.rmin_max_redo, nullptr));
   PetscCall(PetscOptionsBool("-drift_correction", "Scale plastic stresses back onto the yield surface after each update", "tubeform", opt.drift_correction, &opt.drift_correction, nullptr));
   PetscCall(PetscOptionsBool("-residual_correction", "Add the out-of-balance force to the next increment's load", "tubeform", opt.residual_correction, &opt.residual_correction, nullptr));
@@ -149,6 +150,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
   PetscCheck(opt.rmin_domega > 0 && opt.rmin_domega <= 0.5, comm, PETSC_ERR_USER_INPUT, "-rmin_domega %g: the rotation increment limit must lie in (0, 0.5] rad", opt.rmin_domega);
   PetscCheck(opt.rmin_group_tol >= 0 && opt.rmin_group_tol <= 1, comm, PETSC_ERR_USER_INPUT, "-rmin_group_tol %g: must lie in [0, 1]", opt.rmin_group_tol);
   PetscCheck(opt.rmin_max_increments >= 1, comm, PETSC_ERR_USER_INPUT, "-rmin_max_increments %d: must be at least 1", (int)opt.rmin_max_increments);
+  PetscCheck(opt.rmin_stall_increments >= 10, comm, PETSC_ERR_USER_INPUT, "-rmin_stall_increments %d: must be at least 10", (int)opt.rmin_stall_increments);
   PetscCheck(opt.rmin_max_redo >= 0, comm, PETSC_ERR_USER_INPUT, "-rmin_max_redo %d: must be non-negative", (int)opt.rmin_max_redo);
   if (m.law == "swift") PetscCheck(m.K > 0, comm, PETSC_ERR_USER_INPUT, "-material_k %g: the Swift law needs K > 0", m.K);
   if (m.law == "table") {

@@ -283,34 +283,49 @@ PetscErrorCode Problem::SolveTrial(double lambda, double dl, Vec du, StepLimit &
   // One loop re-solves until nothing changes: friction forces linearized
   // about the last iterate, and points whose loading state (alpha) disagreed
   // with the last solution switched (at most -rmin_max_redo times).
-  scene_->ResetIterates();
-  for (PetscInt it = 0;; ++it) {
+  const auto solve = [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
     PetscCall(AssembleTangent());
     PetscCall(VecZeroEntries(f_inc_));
     PetscCall(scene_->Load(*this, lambda, dl, f_inc_));
     if (opt_.residual_correction) PetscCall(system_.AddFreeForce(f_res_));
     PetscCall(system_.Solve(du, reactions));
     ++iterations;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  };
+  scene_->ResetIterates();
+  for (PetscInt it = 0;; ++it) {
+    PetscCall(solve());
     bool converged = true;
     if (scene_->Iterative()) PetscCall(scene_->UpdateIterates(*this, du, converged));
     limit = StepLimit{};
     const bool may_switch = redo < opt_.rmin_max_redo;
     PetscCall(ScanTrial(du, may_switch, limit, switches));
+    // The scene's switches (contact nodes pulled off without force) always
+    // apply: they are finite by construction (a node is released at most once
+    // per trial and a grazing one then stays), and a node left in contact in
+    // tension would carry a wrong force; Gauss-point switches have a budget.
     PetscInt scene_switches = 0;
-    PetscCall(scene_->Switches(*this, du, may_switch, scene_switches));
-    switches += scene_switches;
-    if (switches > 0 && may_switch) ++redo;
-    if (converged && (switches == 0 || !may_switch)) break;
+    PetscCall(scene_->Switches(*this, du, true, scene_switches));
+    const bool material = switches > 0 && may_switch;
+    if (material) ++redo;
+    if (converged && !material && scene_switches == 0) break;
     if (it >= opt_.friction_max_iters + opt_.rmin_max_redo) {
       if (!last) {
         converged_ = false; // the caller shortens the step
         PetscFunctionReturn(PETSC_SUCCESS);
       }
       // The shortest step still wanders (friction iterates drifting along a
-      // nearly free slip mode, or a loading switch cycle): its last solution is
-      // taken, counted in the history (`unsettled`), and the energy balance
-      // shows what it cost.
+      // nearly free slip mode, or a loading switch cycle): it is solved once
+      // more the paper's way, the friction linearized about the start of the
+      // increment with the trial's active sets, and that solution is taken
+      // (r4-r6 and r1 still limit it). Counted in the history (`unsettled`);
+      // the energy balance shows what it cost.
       ++unsettled_;
+      scene_->LinearizeAtStart();
+      PetscCall(solve());
+      limit = StepLimit{};
+      PetscCall(ScanTrial(du, false, limit, switches));
       break;
     }
   }
@@ -419,7 +434,20 @@ PetscErrorCode Problem::Run()
   std::vector<char> started(breaks.size(), 0);
   const double dlambda_trial = 1.0 / opt_.increments;
   PetscCall(PetscLogStagePush(Log::load_stage));
+  // Stall watch: a window of -rmin_stall_increments increments that together
+  // advance lambda by less than kStall ends the loading (results so far kept).
+  const double kStall = 1e-6;
+  double lambda_mark = 0;
+  PetscInt inc_mark = 0;
+  bool stalled = false;
   while (lambda < end - eps) {
+    if (inc - inc_mark >= opt_.rmin_stall_increments) {
+      if (lambda - lambda_mark < kStall) {
+        stalled = true;
+        break;
+      }
+      lambda_mark = lambda, inc_mark = inc;
+    }
     PetscCheck(++inc <= opt_.rmin_max_increments, comm_, PETSC_ERR_NOT_CONVERGED, "no convergence of the load path: %d increments reached lambda = %g; raise -rmin_max_increments or relax -rmin_deps / -rmin_domega", (int)opt_.rmin_max_increments, lambda);
     for (size_t b = 0; b + 1 < breaks.size(); ++b)
       if (!started[b] && lambda >= breaks[b] - eps) {
@@ -538,16 +566,17 @@ PetscErrorCode Problem::Run()
                             where >= 0 ? (" @" + std::to_string(where)).c_str() : "", (int)ci.n_plastic, (int)row.n_contact, (int)iterations, residual, residual / std::max(fnorm, 1e-300), row.energy_error));
     if (inc % opt_.output_every == 0 || lambda >= end - eps) PetscCall(WriteOutputs(writer, step++, lambda));
   }
+  if (stalled && inc % opt_.output_every != 0) PetscCall(WriteOutputs(writer, step++, lambda));
   PetscCall(PetscLogStagePop());
 
   PetscCall(PetscLogStagePush(Log::output_stage));
   const HistoryRow &last = history_.rows().back();
-  std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke}, {"final_load", last.load}, {"x_max", last.x_max}, {"y_max", last.y_max}};
+  std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke}, {"final_load", last.load}, {"x_max", last.x_max}, {"y_max", last.y_max}, {"stalled", stalled ? 1.0 : 0.0}};
   for (const auto &m : scene_->FinalMetrics(history_)) metrics.push_back(m);
   PetscCall(writer.Close(history_, metrics));
   PetscCheck(history_.FinishCsv(), comm_, PETSC_ERR_FILE_WRITE, "-history_csv %s: cannot rename the finished file into place", opt_.history_csv.c_str());
   PetscCall(PetscLogStagePop());
-  PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n", opt_.scene_name.c_str(), (int)inc, (int)system_.factorizations(), opt_.output.c_str()));
+  if (!stalled) PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n", opt_.scene_name.c_str(), (int)inc, (int)system_.factorizations(), opt_.output.c_str()));
   PetscCall(VecDestroy(&du));
   PetscCall(VecDestroy(&f_inc_));
   PetscCall(VecDestroy(&f_res_));
@@ -555,6 +584,8 @@ PetscErrorCode Problem::Run()
   PetscCall(VecDestroy(&f_int));
   PetscCall(VecDestroy(&f_ext0));
   PetscCall(VecDestroy(&f_int0));
+  // A stall is a failure of the run, reported after its results are written.
+  PetscCheck(!stalled, comm_, PETSC_ERR_NOT_CONVERGED, "the load path stalled at stroke %g (lambda %.6f): %d increments advanced lambda by less than %g (yield/contact events of an unstable state, see docs/theory.md \"Stalls\"); results up to there are in %s", history_.rows().back().stroke, lambda, (int)opt_.rmin_stall_increments, kStall, opt_.output.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -150,6 +150,7 @@ public:
 
   bool Iterative() const override { return !unloading_ && contact_.friction(); }
   void ResetIterates() override { contact_.ResetIterates(); }
+  void LinearizeAtStart() override { contact_.LinearizeAtStart(); }
   PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged) override { return contact_.UpdateIterates(p, du, dU_, converged); }
   PetscErrorCode LimitStep(Problem &p, Vec du, StepLimit &limit) override { return unloading_ ? 0 : contact_.LimitStep(p, du, dU_, limit); }
   PetscErrorCode Switches(Problem &p, Vec du, bool apply, PetscInt &n) override
@@ -259,6 +260,7 @@ class StaticContactScene : public Scene {
 public:
   bool Iterative() const override { return contact_.friction(); }
   void ResetIterates() override { contact_.ResetIterates(); }
+  void LinearizeAtStart() override { contact_.LinearizeAtStart(); }
   PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged) override { return contact_.UpdateIterates(p, du, 0.0, converged); }
   PetscErrorCode LimitStep(Problem &p, Vec du, StepLimit &limit) override { return contact_.LimitStep(p, du, 0.0, limit); }
   PetscErrorCode Switches(Problem &p, Vec du, bool apply, PetscInt &n) override { return contact_.ReleasePulled(p, du, 0.0, apply, n); }

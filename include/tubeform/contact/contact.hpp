@@ -38,6 +38,9 @@ public:
   PetscErrorCode BeginIncrement(Problem &p);
   // New trial of a tool step: the committed active set, a new friction iteration sequence.
   void ResetIterates();
+  // Friction iterate back to the increment's start (slip 0, committed f_n), no
+  // predictor; the trial's releases stand.
+  void LinearizeAtStart();
   // Prescribed normal motion (tool step dU, closing any gap) and friction rows.
   PetscErrorCode Constrain(Problem &p, double dU);
   // After a solve: new slip iterates; converged when the friction forces changed

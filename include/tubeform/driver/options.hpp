@@ -32,6 +32,7 @@ struct Options {
   double rmin_domega = 1e-2;           // r3: largest rotation increment (rad)
   double rmin_group_tol = 1e-6;        // events within (1 + tol) r_min are taken together
   PetscInt rmin_max_increments = 100000;
+  PetscInt rmin_stall_increments = 1000; // stop when this many increments advance lambda by < 1e-6 together
   PetscInt rmin_max_redo = 10;         // re-solves per increment for loading/unloading switches
   PetscInt friction_max_iters = 30;
   PetscBool drift_correction = PETSC_FALSE;

@@ -54,6 +54,9 @@ public:
   // Non-linear loads (friction): the increment is solved by iteration.
   virtual bool Iterative() const { return false; }
   virtual void ResetIterates() {}
+  // The friction linearized once about the state at the start of the
+  // increment (the paper's one-solve step), keeping the trial's active set.
+  virtual void LinearizeAtStart() {}
   virtual PetscErrorCode UpdateIterates(Problem &p, Vec du, bool &converged)
   {
     converged = true;
