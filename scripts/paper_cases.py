@@ -1,13 +1,20 @@
 #!/usr/bin/python3
 """The paper's squaring cases (options/squaring_*_mu*.opts): three tubes,
 three friction coefficients. Prints, per case, the punch load at U = 1, 2, 3
-and 4.2 mm, C/t and C1/C2 at 4.2 mm and after springback, increments,
-solves (factorizations, friction and loading/unloading iterations included),
-unsettled trial steps (taken after the step halvings ran out) and wall time; writes the table to results/paper_cases.md.
+and 4.2 mm, C/t and C1/C2 at 4.2 mm and after springback, the smallest C1/C2
+over the loading and where, the largest energy balance error and penetration,
+increments, solves (factorizations, friction and loading/unloading
+iterations included), unsettled trial steps (taken after the step halvings
+ran out) and wall time; writes the table to results/paper_cases.md.
 
-    /usr/bin/python3 scripts/paper_cases.py [JOBS]     (JOBS runs at a time, default 2)
+    /usr/bin/python3 scripts/paper_cases.py [JOBS]    run the cases (JOBS at a time, default 2)
+    /usr/bin/python3 scripts/paper_cases.py --table   tabulate the last runs again (no runs)
+
+Each run leaves results/squaring_<case>.h5 and a small .json beside it
+(status, solves, wall time) that --table reads.
 """
 import glob
+import json
 import os
 import re
 import subprocess
@@ -22,54 +29,73 @@ import numpy as np  # noqa: E402
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-jobs = int(sys.argv[1]) if len(sys.argv) > 1 else 2
 timeout = 1800  # seconds per case
 cases = sorted(glob.glob(os.path.join(root, "options", "squaring_*_mu*.opts")))
-os.makedirs(os.path.join(root, "results"), exist_ok=True)
+results = os.path.join(root, "results")
+os.makedirs(results, exist_ok=True)
+
+
+def case_name(path):
+    return os.path.basename(path)[len("squaring_"):-len(".opts")]
 
 
 def run(path):
-    name = os.path.basename(path)[len("squaring_"):-len(".opts")]
-    out = os.path.join(root, "results", f"squaring_{name}.h5")
+    """Runs one case; records status, solves and wall time beside its result."""
+    name = case_name(path)
+    out = os.path.join(results, f"squaring_{name}.h5")
     t0 = time.time()
     try:
         p = subprocess.run([f"{root}/build/tubeform", "-options_file", os.path.relpath(path, root), "-output", out, "-output_every", "50"],
                            cwd=root, env=env, capture_output=True, text=True, timeout=timeout)
-    except subprocess.TimeoutExpired:
-        return name, None, time.time() - t0, f"not finished within {timeout} s"
-    wall = time.time() - t0
-    if p.returncode != 0:
-        # A stalled run (-rmin_stall_increments) still writes its results up to the stall.
-        if "stalled" in p.stderr and os.path.exists(out):
-            return name, read(out)["history"], wall, "stalled"
-        return name, None, wall, p.stderr.strip().splitlines()[-1] if p.stderr.strip() else "failed"
-    m = re.search(r"done, \d+ increments, (\d+) factorizations", p.stdout)
-    solves = int(m.group(1)) if m else -1
-    return name, read(out)["history"], wall, solves
-
-
-rows = []
-with ThreadPoolExecutor(max_workers=jobs) as pool:
-    for name, H, wall, info in pool.map(run, cases):
-        if H is None:
-            rows.append(f"| {name} | failed: {info} |")
-            continue
-        load = H["stage"] == 0
-        U, P = H["stroke"][load], H["load"][load]
-        at = [f"{np.interp(u, U, P):.1f}" if u <= U[-1] + 1e-9 else "-" for u in (1, 2, 3, 4.2)]
-        last = np.nonzero(load)[0][-1]
-        if info == "stalled":
-            # Loading stopped short: no 4.2 mm state, no springback.
-            shape = f"stalled at U = {U[-1]:.3f} | | | "
-            info = "-"
+        m = re.search(r"done, \d+ increments, (\d+) factorizations", p.stdout)
+        if p.returncode == 0:
+            info = {"status": "done", "solves": int(m.group(1)) if m else -1}
+        elif "stalled" in p.stderr and os.path.exists(out):
+            # A stalled run (-rmin_stall_increments) still writes its results up to the stall.
+            info = {"status": "stalled", "solves": -1}
         else:
-            shape = f"{H['c_over_t'][last]:.3f} | {H['deviation_ratio'][last]:.4f} | {H['c_over_t'][-1]:.3f} | {H['deviation_ratio'][-1]:.4f}"
-        rows.append(f"| {name} | " + " | ".join(at) + f" | {shape}"
-                    f" | {np.abs(H['energy_error'][1:][load[1:]]).max():.1e} | {H['penetration'].max():.1e}"
-                    f" | {len(H['stroke']) - 1} | {info} | {int(H['unsettled'][-1])} | {wall:.0f} |")
-        print(rows[-1], flush=True)
-head = ("| case | P(U=1) | P(2) | P(3) | P(4.2) N/mm | C/t at 4.2 | C1/C2 at 4.2 | C/t after springback | C1/C2 after | max energy error | max penetration (mm) | increments | solves | unsettled | wall (s) |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-table = head + "\n" + "\n".join(rows)
-open(os.path.join(root, "results", "paper_cases.md"), "w").write(table + "\n")
+            info = {"status": "failed: " + (p.stderr.strip().splitlines()[-1] if p.stderr.strip() else "no message"), "solves": -1}
+    except subprocess.TimeoutExpired:
+        info = {"status": f"failed: not finished within {timeout} s", "solves": -1}
+    info["wall"] = time.time() - t0
+    json.dump(info, open(out[:-3] + ".json", "w"))
+    return name
+
+
+def row(name):
+    """One table row from a case's result file and its .json."""
+    out = os.path.join(results, f"squaring_{name}.h5")
+    try:
+        info = json.load(open(out[:-3] + ".json"))
+    except OSError:
+        return f"| {name} | not run |"
+    if info["status"].startswith("failed") or not os.path.exists(out):
+        return f"| {name} | {info['status']} |"
+    H = read(out)["history"]
+    load = H["stage"] == 0
+    U, P, D = H["stroke"][load], H["load"][load], H["deviation_ratio"][load]
+    at = [f"{np.interp(u, U, P):.1f}" if u <= U[-1] + 1e-9 else "-" for u in (1, 2, 3, 4.2)]
+    last = np.nonzero(load)[0][-1]
+    if info["status"] == "stalled":
+        # Loading stopped short: no 4.2 mm state, no springback.
+        shape = f"stalled at U = {U[-1]:.3f} | | |"
+    else:
+        shape = f"{H['c_over_t'][last]:.3f} | {D[-1]:.4f} | {H['c_over_t'][-1]:.3f} | {H['deviation_ratio'][-1]:.4f}"
+    i = np.argmin(D)
+    solves = info["solves"] if info["solves"] >= 0 else "-"
+    return (f"| {name} | " + " | ".join(at) + f" | {shape} | {D[i]:.3f} at {U[i]:.2f}"
+            f" | {np.abs(H['energy_error'][1:][load[1:]]).max():.1e} | {H['penetration'].max():.1e}"
+            f" | {len(H['stroke']) - 1} | {solves} | {int(H['unsettled'][-1])} | {info['wall']:.0f} |")
+
+
+if "--table" not in sys.argv:
+    jobs = int(sys.argv[1]) if len(sys.argv) > 1 else 2
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        for name in pool.map(run, cases):
+            print(row(name), flush=True)
+head = ("| case | P(U=1) | P(2) | P(3) | P(4.2) N/mm | C/t at 4.2 | C1/C2 at 4.2 | C/t after springback | C1/C2 after | min C1/C2 at U (mm) "
+        "| max energy error | max penetration (mm) | increments | solves | unsettled | wall (s) |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+table = head + "\n" + "\n".join(row(case_name(c)) for c in cases)
+open(os.path.join(results, "paper_cases.md"), "w").write(table + "\n")
 print(table)

@@ -1,8 +1,11 @@
 """Bad input: a one-line error naming the option or file, a non-zero exit,
 no hang (timeout) and no core dump, on 1 and 2 ranks; and an earlier result
-file is left untouched by the failed run."""
+file is left untouched by the failed run. Also the stall watch
+(-rmin_stall_increments): error, non-zero exit, results written and flagged."""
 import hashlib
 import os
+
+import h5py
 
 from tfcheck import Checks, args, out, run
 
@@ -38,4 +41,19 @@ for np_, subset in ((1, cases), (2, [cases[0], cases[4], cases[8], cases[9]])):
         k.check(ok, f"np={np_} {' '.join(extra)}: exit {p.returncode}, message: {lines[0] if lines else '(none)'}")
         k.check(not os.path.exists("core"), "no core dump")
 k.check(hashlib.sha256(open("keep.h5", "rb").read()).hexdigest() == digest, "earlier result file unchanged")
+
+# A run that cannot advance (every increment cut to nothing, here by an
+# absurd strain limit) stops at the stall watch: a one-line error naming the
+# option, a non-zero exit on every rank, and its results up to the stall
+# written and flagged (history attribute stalled = 1), nothing left .partial.
+for np_ in (1, 2):
+    f = out(f"stall_np{np_}.h5")
+    p = run(tf, mpirun, np_, base + ["-rmin_deps", "1e-12", "-rmin_stall_increments", "10", "-output", f], check=False, timeout=60)
+    lines = [l for l in (p.stderr + p.stdout).splitlines() if "error" in l.lower()]
+    ok = p.returncode != 0 and p.returncode < 128 and len(lines) >= 1 and "-rmin_stall_increments" in lines[0]
+    k.check(ok, f"np={np_} stall: exit {p.returncode}, message: {lines[0] if lines else '(none)'}")
+    with h5py.File(f, "r") as h:
+        n = len(h["/history"]["stroke"])
+        k.check(h["/history"].attrs["stalled"] == 1 and n == 11, f"np={np_} stall: results written and flagged ({n} history rows)")
+    k.check(not os.path.exists(f + ".partial"), f"np={np_} stall: no .partial file left")
 k.done()

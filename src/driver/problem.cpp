@@ -585,7 +585,7 @@ PetscErrorCode Problem::Run()
   PetscCall(VecDestroy(&f_ext0));
   PetscCall(VecDestroy(&f_int0));
   // A stall is a failure of the run, reported after its results are written.
-  PetscCheck(!stalled, comm_, PETSC_ERR_NOT_CONVERGED, "the load path stalled at stroke %g (lambda %.6f): %d increments advanced lambda by less than %g (yield/contact events of an unstable state, see docs/theory.md \"Stalls\"); results up to there are in %s", history_.rows().back().stroke, lambda, (int)opt_.rmin_stall_increments, kStall, opt_.output.c_str());
+  PetscCheck(!stalled, comm_, PETSC_ERR_NOT_CONVERGED, "the load path stalled at stroke %g (lambda %.6g): %d increments (-rmin_stall_increments) advanced lambda by less than %g; the history column limiter names what cut them (docs/theory.md, \"Stalls\"); results up to there are in %s", history_.rows().back().stroke, lambda, (int)opt_.rmin_stall_increments, kStall, opt_.output.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -150,7 +150,8 @@ private:
   // One trial solution for the load step dl: friction iterations and
   // loading/unloading re-solves, then the r factors into `limit`. A trial whose
   // iterations do not settle sets converged_ = false, unless it is the `last`
-  // try (then its solution is taken and counted in unsettled_).
+  // try (then it is solved once with the friction linearized at the increment
+  // start, taken, and counted in unsettled_).
   PetscErrorCode SolveTrial(double lambda, double dl, Vec du, StepLimit &limit, PetscInt &redo, PetscInt &iterations, bool last);
   PetscErrorCode WriteOutputs(class ResultWriter &writer, PetscInt step, double t);
 };
