@@ -29,7 +29,7 @@ import numpy as np  # noqa: E402
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-timeout = 1800  # seconds per case
+timeout = 3600  # seconds per case (a stalled run spends up to ~30 min before the stall watch ends it)
 cases = sorted(glob.glob(os.path.join(root, "options", "squaring_*_mu*.opts")))
 results = os.path.join(root, "results")
 os.makedirs(results, exist_ok=True)
