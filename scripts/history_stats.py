@@ -1,0 +1,57 @@
+#!/usr/bin/python3
+"""Numbers read from result histories (the commands behind figures quoted in docs/).
+
+    /usr/bin/python3 scripts/history_stats.py compare A.h5 B.h5
+        Two runs of one tool scene (e.g. 1 and 2 ranks) at equal strokes over
+        the loading (41 strokes from 0.2 mm to the end): the largest difference
+        of load, x_max, y_max, c_over_t and w_ext relative to the column's
+        largest value, and the first stroke where it passes 1e-6.
+
+    /usr/bin/python3 scripts/history_stats.py windows F.h5 [F.h5 ...]
+        The smallest advance of the load path (stroke / target stroke) over any
+        100, 300 and 1000 consecutive increments of the loading: what the stall
+        watch (-rmin_stall_increments, threshold 1e-6) sees.
+"""
+import sys
+
+import h5py
+import numpy as np
+
+
+def loading(path):
+    """The loading rows of a history, and the stroke the loading aims at."""
+    with h5py.File(path, "r") as h:
+        H = {c: h["/history"][c][:] for c in h["/history"]}
+        target = h["/history"].attrs.get("final_stroke_target", H["stroke"][-1])
+    keep = H["stage"] == 0
+    H = {c: v[keep] for c, v in H.items()}
+    H["target"] = float(target)
+    return H
+
+
+def compare(a, b):
+    A, B = loading(a), loading(b)
+    end = min(A["stroke"][-1], B["stroke"][-1])
+    grid = np.linspace(0.2, end, 41)
+    for col in ("load", "x_max", "y_max", "c_over_t", "w_ext"):
+        ca, cb = np.interp(grid, A["stroke"], A[col]), np.interp(grid, B["stroke"], B[col])
+        rel = np.abs(ca - cb) / max(np.abs(ca).max(), 1e-300)
+        first = f"{grid[np.argmax(rel > 1e-6)]:.2f}" if (rel > 1e-6).any() else "never"
+        print(f"{col:9s} largest difference {rel.max():.2e} (at U = {grid[np.argmax(rel)]:.2f}); first above 1e-6 at U = {first}")
+
+
+def windows(paths):
+    for path in paths:
+        H = loading(path)
+        lam = H["stroke"] / H["target"]  # lambda of the loading
+        out = [f"{n}: {np.min(lam[n:] - lam[:-n]):.1e}" for n in (100, 300, 1000) if len(lam) > n]
+        print(f"{path}: smallest advance over " + ", ".join(out))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) == 4 and sys.argv[1] == "compare":
+        compare(sys.argv[2], sys.argv[3])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "windows":
+        windows(sys.argv[2:])
+    else:
+        raise SystemExit(__doc__)
