@@ -11,7 +11,17 @@ namespace tf {
 
 namespace {
 double Dot(const Vec2 &a, const Vec2 &b) { return a[0] * b[0] + a[1] * b[1]; }
+Vec2 Position(Problem &p, PetscInt node) { return {p.position()[2 * node], p.position()[2 * node + 1]}; }
+Vec2 Increment(Problem &p, const PetscScalar *d, PetscInt node)
+{
+  const PetscInt o = p.mesh().node_dof[node];
+  return {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
+}
 } // namespace
+
+// Slip of a contact node relative to the tool in an increment: its motion
+// along l minus the tool's.
+double ContactSet::Slip(PetscInt node, const Vec2 &u, double dU) const { return Dot(u, l_[node]) - dU * Dot(tool_->direction, l_[node]); }
 
 void ContactSet::Setup(Problem &p, Tool *tool, const std::string &candidates, const std::vector<std::pair<std::string, Vec2>> &symmetry, const ContactParams &prm)
 {
@@ -40,7 +50,7 @@ PetscErrorCode ContactSet::Initialize(Problem &p)
   // A node already on the surface (within round-off of the mesh) starts in contact.
   const double tol = 1e-9 * (1 + std::abs(p.mesh().x0.empty() ? 1.0 : p.mesh().x0[0]));
   for (PetscInt node : candidates_) {
-    const Projection pr = tool_->Project({p.position()[2 * node], p.position()[2 * node + 1]});
+    const Projection pr = tool_->Project(Position(p, node));
     if (pr.segment >= 0 && std::abs(pr.gap) <= std::max(tol, 1e-9)) contact_[node] = 1;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -57,7 +67,7 @@ PetscErrorCode ContactSet::BeginIncrement(Problem &p)
   f_small_ *= 1e-6;
   for (PetscInt node : candidates_) {
     if (!contact_[node]) continue;
-    const Projection pr = tool_->Project({p.position()[2 * node], p.position()[2 * node + 1]});
+    const Projection pr = tool_->Project(Position(p, node));
     if (pr.segment < 0) {
       // Slid off the end of the tool: released.
       contact_[node] = 0;
@@ -153,9 +163,7 @@ PetscErrorCode ContactSet::UpdateIterates(Problem &p, Vec du, double dU, bool &c
   PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
   for (PetscInt node : candidates_) {
     if (!SlipFree(node)) continue;
-    const PetscInt o = p.mesh().node_dof[node];
-    const Vec2 u = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
-    const double dx = Dot(u, l_[node]) - dU * Dot(tool_->direction, l_[node]);
+    const double dx = Slip(node, Increment(p, d, node), dU);
     const double fn = fn_[node] + NormalReaction(p, node, react);
     const double before = friction::Force(prm_.mu, prm_.vcri, fnk_[node], x_[node] + dxk_[node]), after = friction::Force(prm_.mu, prm_.vcri, fn, x_[node] + dx);
     // Relative to the node's own force, but not below a thousandth of the largest contact force.
@@ -182,12 +190,12 @@ PetscErrorCode ContactSet::ReleasePulled(Problem &p, Vec du, double dU, bool app
   PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
   PetscCall(VecGetArrayRead(du, &d));
   for (PetscInt node : candidates_) {
-    const PetscInt o = p.mesh().node_dof[node];
     if (!contact_[node]) {
       if (!released_[node]) continue;
       // Where the released node ends, relative to the tool at the end of the
       // step: inside means the release was wrong (the node grazes the tool).
-      const Vec2 end = {p.position()[2 * node] + PetscRealPart(d[o]) - dU * tool_->direction[0], p.position()[2 * node + 1] + PetscRealPart(d[o + 1]) - dU * tool_->direction[1]};
+      const Vec2 x = Position(p, node), u = Increment(p, d, node);
+      const Vec2 end = {x[0] + u[0] - dU * tool_->direction[0], x[1] + u[1] - dU * tool_->direction[1]};
       const Projection pr = tool_->Project(end);
       if (pr.segment < 0 || pr.gap >= 0) continue;
       local += p.mesh().node_owned[node];
@@ -217,12 +225,12 @@ PetscErrorCode ContactSet::LimitStep(Problem &p, Vec du, double dU, StepLimit &l
   PetscCall(VecGetArrayRead(du, &d));
   PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
   for (PetscInt node : candidates_) {
-    const PetscInt o = p.mesh().node_dof[node], id = p.mesh().node_orig[node];
-    const Vec2 u = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
+    const PetscInt id = p.mesh().node_orig[node];
+    const Vec2 u = Increment(p, d, node);
     r4_[node] = r5_[node] = 1e300;
     if (!contact_[node]) {
       // r4: exact first touch along the increment.
-      r4_[node] = tool_->FirstContact({p.position()[2 * node], p.position()[2 * node + 1]}, u, dU);
+      r4_[node] = tool_->FirstContact(Position(p, node), u, dU);
       touch.Offer(r4_[node], Limiter::Contact, id);
       continue;
     }
@@ -232,7 +240,7 @@ PetscErrorCode ContactSet::LimitStep(Problem &p, Vec du, double dU, StepLimit &l
     leave.Offer(r5_[node], Limiter::Separation, id);
     // r6: the friction mobilization f_l / (mu f_n) changes by at most dphi_max.
     if (friction() && SlipFree(node)) {
-      const double dx = Dot(u, l_[node]) - dU * Dot(tool_->direction, l_[node]);
+      const double dx = Slip(node, u, dU);
       const double dphi = std::abs(friction::Phi(x_[node] + dx, prm_.vcri) - friction::Phi(x_[node], prm_.vcri));
       if (dphi > prm_.dphi_max) stick.Offer(prm_.dphi_max / dphi, Limiter::Stick, id);
     }
@@ -256,13 +264,11 @@ PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_sc
   PetscCall(VecGetArrayRead(du, &d));
   PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
   for (PetscInt node : candidates_) {
-    const PetscInt o = p.mesh().node_dof[node];
     if (contact_[node]) {
       const double fl_old = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]), fn_old = fn_[node];
       fn_[node] += react_scale * NormalReaction(p, node, react);
       if (SlipFree(node)) {
-        const Vec2 u = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
-        const double dx = Dot(u, l_[node]) - dU * Dot(tool_->direction, l_[node]);
+        const double dx = Slip(node, Increment(p, d, node), dU);
         x_[node] = friction::Cap(x_[node] + dx, prm_.vcri);
         last_dx_[node] = dx;
         const double fl_new = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
@@ -293,7 +299,7 @@ PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_sc
   // to close (on arcs, sliding along the tangent leaves a second-order gap);
   // a free node that reached the surface up to round-off is in contact.
   for (PetscInt node : candidates_) {
-    const Projection pr = tool_->Project({p.position()[2 * node], p.position()[2 * node + 1]});
+    const Projection pr = tool_->Project(Position(p, node));
     if (pr.segment < 0) continue;
     if (!contact_[node] && pr.gap <= prm_.gap_tol) {
       contact_[node] = 1;
@@ -381,7 +387,7 @@ PetscErrorCode ContactSet::Violations(Problem &p, double &penetration, double &t
   double local[2] = {0, 0}, global[2];
   PetscFunctionBeginUser;
   for (PetscInt node : candidates_) {
-    const Projection pr = tool_->Project({p.position()[2 * node], p.position()[2 * node + 1]});
+    const Projection pr = tool_->Project(Position(p, node));
     if (pr.segment >= 0) local[0] = std::max(local[0], -pr.gap);
     if (contact_[node]) local[1] = std::max(local[1], -fn_[node]);
   }

@@ -97,6 +97,7 @@ private:
 
   bool SlipFree(PetscInt node) const { return contact_[node] && !global_frame_[node] && sym_dir_[node][0] == 0 && sym_dir_[node][1] == 0; }
   double NormalReaction(Problem &p, PetscInt node, const PetscScalar *react) const;
+  double Slip(PetscInt node, const Vec2 &u, double dU) const;
 };
 
 } // namespace tf
