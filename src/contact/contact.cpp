@@ -229,7 +229,9 @@ PetscErrorCode ContactSet::LimitStep(Problem &p, Vec du, double dU, StepLimit &l
     const Vec2 u = Increment(p, d, node);
     r4_[node] = r5_[node] = 1e300;
     if (!contact_[node]) {
-      // r4: exact first touch along the increment.
+      // r4: exact first touch along the increment. A node released in this
+      // trial starts on the surface: where it ends is checked by ReleasePulled.
+      if (released_[node]) continue;
       r4_[node] = tool_->FirstContact(Position(p, node), u, dU);
       touch.Offer(r4_[node], Limiter::Contact, id);
       continue;
