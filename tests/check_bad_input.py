@@ -26,6 +26,10 @@ cases = [
     (["-scene", "nonsense"], "-scene"),
     (["-increments", "0"], "-increments"),
     (["-rmin_stall_increments", "5"], "-rmin_stall_increments"),
+    (["-dynamics", "explicit"], "-dynamics"),
+    (["-punch_speed", "0"], "-punch_speed"),
+    (["-dynamics_time", "-1"], "-dynamics_time"),
+    (["-material_density", "0"], "-material_density"),
     (["-mesh_file", "no/such/mesh.msh"], "no/such/mesh.msh"),
     (["-mesh_file", f"{src}/options/pressure.opts"], "pressure.opts"),
     (["-output", out("keep.csv/out.h5")], "-output"),          # parent is a file
@@ -34,7 +38,7 @@ cases = [
 # Every case on 1 rank; on 2 ranks one of each kind (option value, option
 # choice, mesh file, output path), since mpirun takes ~2 s to wind down a
 # failed job.
-for np_, subset in ((1, cases), (2, [cases[0], cases[4], cases[9], cases[10]])):
+for np_, subset in ((1, cases), (2, [cases[0], cases[4], cases[13], cases[14]])):
     for extra, needle in subset:
         p = run(tf, mpirun, np_, base + ["-output", out("keep.h5"), "-history_csv", out("keep.csv")] + extra, check=False, timeout=60)
         lines = [l for l in (p.stderr + p.stdout).splitlines() if "error" in l.lower()]

@@ -51,6 +51,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
   PetscCall(PetscOptionsReal("-material_sy", "Initial yield stress (MPa)", "tubeform", opt.material.sy, &opt.material.sy, nullptr));
   PetscCall(PetscOptionsReal("-material_k", "Hardening coefficient K (MPa)", "tubeform", opt.material.K, &opt.material.K, nullptr));
   PetscCall(PetscOptionsReal("-material_n", "Hardening exponent n", "tubeform", opt.material.n, &opt.material.n, nullptr));
+  PetscCall(PetscOptionsReal("-material_density", "Mass density (t/mm^3; aluminum 2.70e-9), used by -dynamics implicit", "tubeform", opt.material.density, &opt.material.density, nullptr));
   choice = 1;
   for (PetscInt k = 0; k < 4; ++k)
     if (opt.material.law == kLaws[k]) choice = k;
@@ -73,6 +74,14 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
   PetscCall(PetscOptionsInt("-rmin_stall_increments", "Stop (results so far written) when this many increments advance the load path by less than 1e-6", "tubeform", opt.rmin_stall_increments, &opt.rmin_stall_increments, nullptr));
   PetscCall(PetscOptionsInt("-rmin_max_redo", "Re-solves per increment when points switch between loading and unloading", "tubeform", opt.rmin_max_redo, &opt.rmin_max_redo, nullptr));
   PetscCall(PetscOptionsBool("-drift_correction", "Scale plastic stresses back onto the yield surface after each update", "tubeform", opt.drift_correction, &opt.drift_correction, nullptr));
+  {
+    const char *const kinds[] = {"quasistatic", "implicit", "auto"};
+    choice = static_cast<int>(opt.dynamics);
+    PetscCall(PetscOptionsEList("-dynamics", "quasistatic (no inertia), implicit (lumped mass, backward Euler in time), auto (quasi-static until an increment's friction iterations do not settle, implicit from then on)", "tubeform", kinds, 3, kinds[choice], &choice, nullptr));
+    opt.dynamics = static_cast<Dynamics>(choice);
+  }
+  PetscCall(PetscOptionsReal("-dynamics_time", "Duration (s) of the load path lambda 0 -> 1 with -dynamics implicit (scenes without tools)", "tubeform", opt.dynamics_time, &opt.dynamics_time, nullptr));
+  PetscCall(PetscOptionsReal("-punch_speed", "Tool speed (mm/s) with -dynamics implicit in squaring/flattening: the stroke takes stroke / speed", "tubeform", opt.punch_speed, &opt.punch_speed, nullptr));
   PetscCall(PetscOptionsBool("-residual_correction", "Add the out-of-balance force to the next increment's load", "tubeform", opt.residual_correction, &opt.residual_correction, nullptr));
   {
     const char *const schemes[] = {"forward", "midpoint"};
@@ -145,6 +154,9 @@ PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt)
   PetscCheck(m.sy > 0, comm, PETSC_ERR_USER_INPUT, "-material_sy %g: the yield stress must be positive (MPa)", m.sy);
   PetscCheck(m.K >= 0, comm, PETSC_ERR_USER_INPUT, "-material_k %g: the hardening coefficient must be non-negative (MPa)", m.K);
   PetscCheck(m.n > 0 && m.n <= 1, comm, PETSC_ERR_USER_INPUT, "-material_n %g: the hardening exponent must lie in (0, 1]", m.n);
+  PetscCheck(m.density > 0 && std::isfinite(m.density), comm, PETSC_ERR_USER_INPUT, "-material_density %g: the mass density must be positive (t/mm^3; aluminum 2.70e-9)", m.density);
+  PetscCheck(opt.dynamics_time > 0 && std::isfinite(opt.dynamics_time), comm, PETSC_ERR_USER_INPUT, "-dynamics_time %g: the duration of the load path must be positive (s)", opt.dynamics_time);
+  PetscCheck(opt.punch_speed > 0 && std::isfinite(opt.punch_speed), comm, PETSC_ERR_USER_INPUT, "-punch_speed %g: the tool speed must be positive (mm/s)", opt.punch_speed);
   PetscCheck(opt.increments >= 1 && opt.increments <= 10000000, comm, PETSC_ERR_USER_INPUT, "-increments %d: must be between 1 and 1e7", (int)opt.increments);
   PetscCheck(opt.rmin_deps > 0 && opt.rmin_deps <= 0.5, comm, PETSC_ERR_USER_INPUT, "-rmin_deps %g: the strain increment limit must lie in (0, 0.5]", opt.rmin_deps);
   PetscCheck(opt.rmin_domega > 0 && opt.rmin_domega <= 0.5, comm, PETSC_ERR_USER_INPUT, "-rmin_domega %g: the rotation increment limit must lie in (0, 0.5] rad", opt.rmin_domega);

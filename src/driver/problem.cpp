@@ -12,6 +12,13 @@ namespace tf {
 
 // Events of a re-solved (friction) step found this far beyond its end are taken with it.
 constexpr double kEventSlack = 1e-2;
+// Solves of a shortened non-linear step before it is taken with an event inside.
+constexpr int kMaxResolves = 3;
+// -dynamics implicit: no step shorter than this fraction of the trial step.
+// Events closer than that (a node whose normal force is all but zero, a point
+// a hair from the yield surface) are taken with it; shorter steps would make
+// M / dt^2 swamp K (precision) for no gain in resolution.
+constexpr double kMinDynamicStep = 1e-6;
 
 Problem::~Problem() = default;
 
@@ -84,6 +91,17 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
   if (opt_.element == fe::Formulation::QM6) condensation_.assign(mesh_.num_cells, fe::Condensation{});
   x_ = mesh_.x0;
   u_.assign(2 * mesh_.num_nodes, 0.0);
+  inertia_ = opt_.dynamics == Dynamics::Implicit;
+  if (opt_.dynamics != Dynamics::Quasistatic) {
+    mass_.assign(fe::kNodes * mesh_.num_cells, 0.0);
+    v_.assign(2 * mesh_.num_nodes, 0.0);
+    a_.assign(2 * mesh_.num_nodes, 0.0);
+    double xe[8];
+    for (PetscInt e = 0; e < mesh_.num_cells; ++e) {
+      CellCoordinates(e, xe);
+      fe::LumpedMass(xe, opt_.material.density, &mass_[fe::kNodes * e]);
+    }
+  }
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -157,6 +175,12 @@ PetscErrorCode Problem::AssembleTangent()
       bad = mesh_.cell_orig[e];
       continue;
     }
+    if (dt_ > 0)
+      for (int a = 0; a < fe::kNodes; ++a) {
+        const double m = mass_[fe::kNodes * e + a] / (dt_ * dt_);
+        ke[2 * a][2 * a] += m;
+        ke[2 * a + 1][2 * a + 1] += m;
+      }
     PetscCall(system_.AddElement(e, ke));
   }
   PetscCall(MPIU_Allreduce(&bad, &anybad, 1, MPIU_INT, MPI_MAX, comm_));
@@ -285,9 +309,11 @@ PetscErrorCode Problem::SolveTrial(double lambda, double dl, Vec du, StepLimit &
   // with the last solution switched (at most -rmin_max_redo times).
   const auto solve = [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
+    dt_ = inertia_ ? dl * duration_ : 0.0;
     PetscCall(AssembleTangent());
     PetscCall(VecZeroEntries(f_inc_));
     PetscCall(scene_->Load(*this, lambda, dl, f_inc_));
+    if (dt_ > 0) PetscCall(AddInertiaLoad());
     if (opt_.residual_correction) PetscCall(system_.AddFreeForce(f_res_));
     PetscCall(system_.Solve(du, reactions));
     ++iterations;
@@ -315,6 +341,16 @@ PetscErrorCode Problem::SolveTrial(double lambda, double dl, Vec du, StepLimit &
         converged_ = false; // the caller shortens the step
         PetscFunctionReturn(PETSC_SUCCESS);
       }
+      if (opt_.dynamics == Dynamics::Auto && !inertia_) {
+        // Quasi-static steps cannot settle here: inertia from now on, and
+        // this (shortest) step solved again with it.
+        inertia_ = true;
+        PetscCall(PetscPrintf(comm_, "tubeform: friction iterations do not settle at lambda %.6g: inertia on from here (-dynamics auto, docs/theory.md \"Inertia\")\n", lambda));
+        scene_->ResetIterates();
+        redo = 0;
+        it = -1;
+        continue;
+      }
       // The shortest step still wanders (friction iterates drifting along a
       // nearly free slip mode, or a loading switch cycle): it is solved once
       // more the paper's way, the friction linearized about the start of the
@@ -331,6 +367,76 @@ PetscErrorCode Problem::SolveTrial(double lambda, double dl, Vec du, StepLimit &
   }
   converged_ = true;
   PetscCall(scene_->LimitStep(*this, du, limit));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Calls f(node, m) for every node of every local cell with the cell's lumped
+// mass share: contributions that sum to M over the ranks (cells are owned once).
+template <class F>
+void Problem::ForEachMassShare(F &&f) const
+{
+  for (PetscInt e = 0; e < mesh_.num_cells; ++e)
+    for (int a = 0; a < fe::kNodes; ++a) f(mesh_.cell_nodes[fe::kNodes * e + a], mass_[fe::kNodes * e + a]);
+}
+
+PetscErrorCode Problem::AddInertiaLoad()
+{
+  PetscFunctionBeginUser;
+  ForEachMassShare([&](PetscInt n, double m) { system_.AddForce(n, m * (a_[2 * n] + v_[2 * n] / dt_), m * (a_[2 * n + 1] + v_[2 * n + 1] / dt_)); });
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::AdvanceInertia(Vec du_local, double &dw_inertia)
+{
+  const PetscScalar *du;
+  double local = 0;
+
+  PetscFunctionBeginUser;
+  dw_inertia = 0;
+  PetscCall(VecGetArrayRead(du_local, &du));
+  if (!inertia_) {
+    // -dynamics auto before the switch: the velocity of the quasi-static path
+    // (the motion inertia starts from), no acceleration.
+    for (PetscInt n = 0; n < mesh_.num_nodes; ++n)
+      for (int k = 0; k < 2; ++k) v_[2 * n + k] = PetscRealPart(du[mesh_.node_dof[n] + k]) / dt_;
+    PetscCall(VecRestoreArrayRead(du_local, &du));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  std::vector<double> a_old = a_;
+  for (PetscInt n = 0; n < mesh_.num_nodes; ++n)
+    for (int k = 0; k < 2; ++k) {
+      const double v = PetscRealPart(du[mesh_.node_dof[n] + k]) / dt_;
+      a_[2 * n + k] = (v - v_[2 * n + k]) / dt_;
+      v_[2 * n + k] = v;
+    }
+  ForEachMassShare([&](PetscInt n, double m) {
+    for (int k = 0; k < 2; ++k) local += m * 0.5 * (a_old[2 * n + k] + a_[2 * n + k]) * PetscRealPart(du[mesh_.node_dof[n] + k]);
+  });
+  PetscCall(VecRestoreArrayRead(du_local, &du));
+  PetscCall(MPIU_Allreduce(&local, &dw_inertia, 1, MPIU_REAL, MPIU_SUM, comm_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::AddInertiaForce(Vec f_local)
+{
+  PetscScalar *f;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(f_local, &f));
+  ForEachMassShare([&](PetscInt n, double m) {
+    for (int k = 0; k < 2; ++k) f[mesh_.node_dof[n] + k] += m * a_[2 * n + k];
+  });
+  PetscCall(VecRestoreArray(f_local, &f));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::KineticEnergy(double &w)
+{
+  double local = 0;
+
+  PetscFunctionBeginUser;
+  ForEachMassShare([&](PetscInt n, double m) { local += 0.5 * m * (v_[2 * n] * v_[2 * n] + v_[2 * n + 1] * v_[2 * n + 1]); });
+  PetscCall(MPIU_Allreduce(&local, &w, 1, MPIU_REAL, MPIU_SUM, comm_));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -397,7 +503,7 @@ PetscErrorCode Problem::Run()
   ResultWriter writer;
   Vec du, f_ext, f_int, f_ext0, f_int0;
   HistoryRow row;
-  double lambda = 0, w_ext = 0, w_int = 0, w_plastic = 0, w_friction = 0;
+  double lambda = 0, w_ext = 0, w_int = 0, w_plastic = 0, w_friction = 0, w_inertia = 0;
   bool warned = false;
   PetscInt step = 0, inc = 0;
 
@@ -429,6 +535,7 @@ PetscErrorCode Problem::Run()
   PetscCall(WriteOutputs(writer, step++, 0.0));
 
   const double end = scene_->PathEnd(), eps = 1e-12;
+  duration_ = scene_->Duration(opt_);
   std::vector<double> breaks = scene_->Breakpoints();
   breaks.push_back(end);
   std::vector<char> started(breaks.size(), 0);
@@ -472,13 +579,14 @@ PetscErrorCode Problem::Run()
     PetscInt where = -1;
     double r = 1.0, react_scale = 1.0, r_event = 1.0;
     if (limit.r < 1.0) r = limit.r, who = limit.who, where = limit.where;
+    if (inertia_) r = std::min(1.0, std::max(r, kMinDynamicStep * dlambda_trial / dl));
     PetscCheck(r > 1e-10, comm_, PETSC_ERR_NOT_CONVERGED, "r_min = %g (%s at %d) at lambda = %g: the increment cannot advance", r, LimiterName((int)limit.who), (int)limit.where, lambda);
-    if (r < 1.0 && scene_->Iterative()) {
-      // Friction is not linear in r: the shortened step is solved again (and
-      // again while the re-solve still finds an event well inside it: the
-      // friction non-linearity moves events). The last solution is taken as
-      // it is: scaling it would break the friction forces' equilibrium;
-      // events slightly past its end are taken with it.
+    if (r < 1.0 && (scene_->Iterative() || inertia_)) {
+      // Friction is not linear in r, nor is inertia (M / dt^2): the shortened
+      // step is solved again (and again while the re-solve still finds an
+      // event well inside it: the non-linearity moves events). The last
+      // solution is taken as it is: scaling it would break the friction
+      // forces' equilibrium; events slightly past its end are taken with it.
       double taken = r;
       for (int attempt = 0;; ++attempt) {
         dl *= taken;
@@ -490,8 +598,10 @@ PetscErrorCode Problem::Run()
           r *= 0.5;
           PetscCall(SolveTrial(lambda, dl, du, limit, redo2, iterations, cut == kMaxCuts));
         }
-        if (limit.r >= 1.0 - kEventSlack || attempt == 2) break;
+        if (limit.r >= 1.0 - kEventSlack || attempt == kMaxResolves - 1) break;
         taken = limit.r;
+        if (inertia_) taken = std::max(taken, kMinDynamicStep * dlambda_trial / dl);
+        if (taken >= 1.0) break;
         r *= taken;
       }
       r_event = std::max(1.0 + kEventSlack, std::min(limit.r, 1.0));
@@ -507,6 +617,11 @@ PetscErrorCode Problem::Run()
     PetscCall(VecCopy(f_ext, f_ext0));
     PetscCall(VecCopy(f_int, f_int0));
     PetscCall(Commit(du, r_event, ci));
+    double dw_inertia = 0;
+    if (opt_.dynamics != Dynamics::Quasistatic) {
+      dt_ = dl * duration_;
+      PetscCall(AdvanceInertia(du, dw_inertia));
+    }
     PetscCall(scene_->CommitIncrement(*this, du, react_scale, r_event, dw_friction));
     lambda = std::abs(lambda + dl - next_break) < 1e-9 * dlambda_trial ? next_break : lambda + dl;
 
@@ -517,6 +632,7 @@ PetscErrorCode Problem::Run()
     double residual, fnorm, dw_body;
     PetscCall(scene_->ExternalForce(*this, lambda, f_ext));
     PetscCall(InternalForce(f_int));
+    if (inertia_) PetscCall(AddInertiaForce(f_int)); // f_int + M a: what the loads and reactions balance
     PetscCall(VecAXPBY(f_ext0, 0.5, 0.5, f_ext));
     PetscCall(VecAXPBY(f_int0, 0.5, 0.5, f_int));
     PetscCall(system_.ExternalWork(f_ext0, f_int0, du, dw_body));
@@ -524,6 +640,7 @@ PetscErrorCode Problem::Run()
     w_friction += dw_friction;
     w_int += ci.dw_int;
     w_plastic += ci.dw_plastic;
+    w_inertia += dw_inertia;
     PetscCall(VecWAXPY(f_res_, -1.0, f_int, f_ext));
     PetscCall(system_.FreeNorm(f_res_, residual));
     {
@@ -553,8 +670,11 @@ PetscErrorCode Problem::Run()
     row.w_int = w_int;
     row.w_plastic = w_plastic;
     row.w_friction = w_friction;
+    row.w_inertia = w_inertia;
+    row.inertia = inertia_ ? 1 : 0;
     PetscCall(ElasticEnergy(row.w_elastic));
-    row.energy_error = (w_ext - w_int - w_friction) / std::max(std::abs(w_ext), 1e-300);
+    if (inertia_) PetscCall(KineticEnergy(row.w_kinetic));
+    row.energy_error = (w_ext - w_int - w_friction - w_inertia) / std::max(std::abs(w_ext), 1e-300);
     PetscCall(scene_->Measure(*this, lambda, f_int, row));
     history_.Append(row);
     if (!warned && std::abs(row.energy_error) > 0.05 && inc > 10) {

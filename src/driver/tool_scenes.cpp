@@ -84,6 +84,7 @@ public:
   std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
   double PathEnd() const override { return opt_.unload == "none" ? 1.0 : 2.0; }
+  double Duration(const Options &opt) const override { return stroke_ / opt.punch_speed; }
   std::vector<double> Breakpoints() const override { return {1.0}; }
 
   PetscErrorCode Initialize(Problem &p) override

@@ -20,6 +20,20 @@ void ShapeFunctions(double xi, double eta, double n[kNodes], double dn[kNodes][2
   }
 }
 
+void LumpedMass(const double xe[2 * kNodes], double rho, double m[kNodes])
+{
+  for (int a = 0; a < kNodes; ++a) m[a] = 0;
+  for (int g = 0; g < kGauss; ++g) {
+    double n[kNodes], dn[kNodes][2], j[2][2] = {{0, 0}, {0, 0}};
+    ShapeFunctions(kXiGauss[g][0], kXiGauss[g][1], n, dn);
+    for (int a = 0; a < kNodes; ++a)
+      for (int r = 0; r < 2; ++r)
+        for (int s = 0; s < 2; ++s) j[r][s] += xe[2 * a + r] * dn[a][s];
+    const double det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+    for (int a = 0; a < kNodes; ++a) m[a] += rho * n[a] * det; // unit weights
+  }
+}
+
 bool ComputeGeometry(const double xe[2 * kNodes], QuadGeometry &geo)
 {
   geo.area = 0;

@@ -28,7 +28,7 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"w_plastic", &HistoryRow::w_plastic, "plastic dissipation"},
     {"w_friction", &HistoryRow::w_friction, "friction dissipation"},
     {"w_elastic", &HistoryRow::w_elastic, "stored elastic energy"},
-    {"energy_error", &HistoryRow::energy_error, "(w_ext - w_int - w_friction) / max(|w_ext|, tiny)"},
+    {"energy_error", &HistoryRow::energy_error, "(w_ext - w_int - w_friction - w_inertia) / max(|w_ext|, tiny)"},
     {"c_over_t", &HistoryRow::c_over_t, "collapse ratio C/t"},
     {"x_max", &HistoryRow::x_max, "C1: outer horizontal half-extent (mm)"},
     {"y_max", &HistoryRow::y_max, "C2: outer vertical half-extent (mm)"},
@@ -44,6 +44,9 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"n_contact_apex", &HistoryRow::n_contact_apex, "contact nodes on the V-die's apex fillet"},
     {"tool_fx", &HistoryRow::tool_fx, "force of the quarter model on the tool, x (N/mm)"},
     {"tool_fy", &HistoryRow::tool_fy, "force of the quarter model on the tool, y (N/mm)"},
+    {"w_kinetic", &HistoryRow::w_kinetic, "kinetic energy (-dynamics implicit; 0 quasi-static)"},
+    {"w_inertia", &HistoryRow::w_inertia, "work of the inertia forces: kinetic energy + what backward Euler damped out"},
+    {"inertia", &HistoryRow::inertia, "1 if the increment was solved with inertia (-dynamics implicit, or auto once switched on)"},
   };
   return cols;
 }

@@ -12,6 +12,10 @@
 
 namespace tf {
 
+// Inertia: none, always, or switched on at the first increment whose friction
+// iterations do not settle in quasi-static steps (docs/theory.md, "Inertia").
+enum class Dynamics { Quasistatic, Implicit, Auto };
+
 enum class SceneKind { Squaring, Flattening, Pressure, Shear, Rotation, Column, Tension, Slide };
 
 struct Options {
@@ -37,6 +41,9 @@ struct Options {
   PetscInt friction_max_iters = 30;
   PetscBool drift_correction = PETSC_FALSE;
   PetscBool residual_correction = PETSC_FALSE;
+  Dynamics dynamics = Dynamics::Quasistatic; // implicit/auto: lumped mass, backward Euler
+  double dynamics_time = 1.0;          // s for lambda 0 -> 1 (scenes without tools)
+  double punch_speed = 1.0;            // mm/s (tool scenes: duration = stroke / speed)
   ObjectiveScheme kinematics = ObjectiveScheme::Forward; // METHOD.md sec. 2 as written
   // Scene parameters
   double pressure_p = 50.0;

@@ -71,6 +71,8 @@ public:
   }
   // The load path runs over lambda in [0, PathEnd()] (> 1 with an unloading stage).
   virtual double PathEnd() const { return 1.0; }
+  // Time (s) of lambda 0 -> 1 for -dynamics implicit (tool scenes: stroke / punch speed).
+  virtual double Duration(const Options &opt) const { return opt.dynamics_time; }
   // Called before the first increment that starts at a breakpoint.
   virtual PetscErrorCode BeginStage(Problem &p, double lambda) { return 0; }
   // Scene metrics written as attributes at the end.
@@ -144,6 +146,25 @@ private:
   PetscInt unsettled_ = 0; // trial steps taken without settled iterations (after kMaxCuts halvings)
   static constexpr int kMaxCuts = 6;
   Vec f_inc_ = nullptr, f_res_ = nullptr; // load of the trial step; out-of-balance force of the last increment
+
+  // -dynamics implicit (docs/theory.md, "Inertia"): row-sum lumped masses (4
+  // per local cell, on the initial configuration: mass is conserved), node
+  // velocity and acceleration (2 per local node, global frame), and the time
+  // step of the system being assembled (0: quasi-static, no inertia terms).
+  std::vector<double> mass_, v_, a_;
+  double dt_ = 0, duration_ = 1; // duration_: time (s) of lambda 0 -> 1
+  bool inertia_ = false;          // inertia in the increments (-dynamics implicit, or auto once switched)
+  // Backward Euler about (v_, a_): adds M / dt^2 to the cell blocks (in
+  // AssembleTangent) and M (a + v / dt) to the loads (here).
+  PetscErrorCode AddInertiaLoad();
+  // New velocity and acceleration after the increment du over dt_; returns the
+  // work of the inertia forces over it (trapezoidal, as the external work).
+  PetscErrorCode AdvanceInertia(Vec du, double &dw_inertia);
+  // Adds M a (per-cell contributions, global frame) to a local force vector.
+  PetscErrorCode AddInertiaForce(Vec f_local);
+  PetscErrorCode KineticEnergy(double &w);
+  template <class F>
+  void ForEachMassShare(F &&f) const;
 
   PetscErrorCode ElasticEnergy(double &w);
   PetscErrorCode CreateMaterial();

@@ -35,6 +35,10 @@ struct QuadGeometry {
 // Gauss point natural coordinates (+-1/sqrt 3) and the shape functions there.
 void ShapeFunctions(double xi, double eta, double n[kNodes], double dn[kNodes][2]);
 
+// Row-sum lumped mass of a cell: m_a = rho * integral of N_a over the cell
+// (2x2 Gauss), per unit thickness. Exact for the bilinear shape functions.
+void LumpedMass(const double xe[2 * kNodes], double rho, double m[kNodes]);
+
 // Fills `geo`; returns false when det J <= 0 at a Gauss point (inverted cell).
 bool ComputeGeometry(const double xe[2 * kNodes], QuadGeometry &geo);
 

@@ -22,6 +22,7 @@ struct HistoryRow {
   double redo = 0, drift = 0, unsettled = 0;
   double r_corner_x = 0, r_corner_y = 0, penetration = 0, tension = 0, stage = 0, n_contact_apex = 0;
   double tool_fx = 0, tool_fy = 0;
+  double w_kinetic = 0, w_inertia = 0, inertia = 0;
 };
 
 struct HistoryColumn {

@@ -30,6 +30,7 @@ struct MaterialParams {
   std::string name = "aluminum";
   std::string law = "ludwik";
   double E = 75000, nu = 0.34, sy = 165.3, K = 673.5, n = 0.927;
+  double density = 2.70e-9; // t/mm^3 (N, mm, s units): only -dynamics implicit uses it
 };
 
 // Fills `p` with a named preset; false when the name is unknown.
