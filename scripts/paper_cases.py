@@ -9,8 +9,11 @@ ran out) and wall time; writes the table to results/paper_cases.md.
 
     /usr/bin/python3 scripts/paper_cases.py [JOBS]    run the cases (JOBS at a time, default 2)
     /usr/bin/python3 scripts/paper_cases.py --table   tabulate the last runs again (no runs)
+    ... --tag NAME -- OPTIONS                          a variant: OPTIONS added to every run,
+                                                      results named squaring_<case>_NAME.h5
+                                                      and paper_cases_NAME.md
 
-Each run leaves results/squaring_<case>.h5 and a small .json beside it
+Each run leaves results/squaring_<case>[_NAME].h5 and a small .json beside it
 (status, solves, wall time) that --table reads.
 """
 import glob
@@ -33,6 +36,16 @@ timeout = 3600  # seconds per case (a stalled run spends up to ~30 min before th
 cases = sorted(glob.glob(os.path.join(root, "options", "squaring_*_mu*.opts")))
 results = os.path.join(root, "results")
 os.makedirs(results, exist_ok=True)
+args = sys.argv[1:]
+extra = args[args.index("--") + 1:] if "--" in args else []
+args = args[:args.index("--")] if "--" in args else args
+tag = ""
+if "--tag" in args:
+    i = args.index("--tag")
+    tag = "_" + args[i + 1]
+    del args[i:i + 2]
+tabulate_only = "--table" in args
+args = [a for a in args if a != "--table"]
 
 
 def case_name(path):
@@ -42,10 +55,10 @@ def case_name(path):
 def run(path):
     """Runs one case; records status, solves and wall time beside its result."""
     name = case_name(path)
-    out = os.path.join(results, f"squaring_{name}.h5")
+    out = os.path.join(results, f"squaring_{name}{tag}.h5")
     t0 = time.time()
     try:
-        p = subprocess.run([f"{root}/build/tubeform", "-options_file", os.path.relpath(path, root), "-output", out, "-output_every", "50"],
+        p = subprocess.run([f"{root}/build/tubeform", "-options_file", os.path.relpath(path, root), "-output", out, "-output_every", "50"] + extra,
                            cwd=root, env=env, capture_output=True, text=True, timeout=timeout)
         m = re.search(r"done, \d+ increments, (\d+) factorizations", p.stdout)
         if p.returncode == 0:
@@ -64,7 +77,7 @@ def run(path):
 
 def row(name):
     """One table row from a case's result file and its .json."""
-    out = os.path.join(results, f"squaring_{name}.h5")
+    out = os.path.join(results, f"squaring_{name}{tag}.h5")
     try:
         info = json.load(open(out[:-3] + ".json"))
     except OSError:
@@ -88,8 +101,8 @@ def row(name):
             f" | {len(H['stroke']) - 1} | {solves} | {int(H['unsettled'][-1])} | {info['wall']:.0f} |")
 
 
-if "--table" not in sys.argv:
-    jobs = int(sys.argv[1]) if len(sys.argv) > 1 else 2
+if not tabulate_only:
+    jobs = int(args[0]) if args else 2
     with ThreadPoolExecutor(max_workers=jobs) as pool:
         for name in pool.map(run, cases):
             print(row(name), flush=True)
@@ -97,5 +110,5 @@ head = ("| case | P(U=1) | P(2) | P(3) | P(4.2) N/mm | C/t at 4.2 | C1/C2 at 4.2
         "| max energy error | max penetration (mm) | increments | solves | unsettled | wall (s) |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 table = head + "\n" + "\n".join(row(case_name(c)) for c in cases)
-open(os.path.join(results, "paper_cases.md"), "w").write(table + "\n")
+open(os.path.join(results, f"paper_cases{tag}.md"), "w").write(table + "\n")
 print(table)
