@@ -11,6 +11,11 @@
         The smallest advance of the load path (stroke / target stroke) over any
         100, 300 and 1000 consecutive increments of the loading: what the stall
         watch (-rmin_stall_increments, threshold 1e-6) sees.
+
+    /usr/bin/python3 scripts/history_stats.py snaps F.h5 [F.h5 ...]
+        Runs with inertia: the median kinetic energy of the loading (the tube
+        moving with the punch) and every local peak above ten times it (a
+        local snap), with its stroke and its share of the work done by then.
 """
 import sys
 
@@ -48,10 +53,22 @@ def windows(paths):
         print(f"{path}: smallest advance over " + ", ".join(out))
 
 
+def snaps(paths):
+    for path in paths:
+        H = loading(path)
+        ke = H["w_kinetic"]
+        base = np.median(ke[1:])
+        peaks = [i for i in range(1, len(ke) - 1) if ke[i] > ke[i - 1] and ke[i] >= ke[i + 1] and ke[i] > 10 * base]
+        print(f"{path}: median kinetic energy {base:.1e} N mm/mm; peaks above 10x: " +
+              (", ".join(f"U = {H['stroke'][i]:.2f} mm {ke[i]:.1e} ({ke[i] / H['w_ext'][i]:.1e} of w_ext)" for i in peaks) or "none"))
+
+
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "compare":
         compare(sys.argv[2], sys.argv[3])
     elif len(sys.argv) >= 3 and sys.argv[1] == "windows":
         windows(sys.argv[2:])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "snaps":
+        snaps(sys.argv[2:])
     else:
         raise SystemExit(__doc__)
