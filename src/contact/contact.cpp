@@ -101,6 +101,7 @@ void ContactSet::ResetIterates()
   std::fill(frozen_.begin(), frozen_.end(), 0);
   // The first iterate is predicted in Constrain from the latest slip per unit stroke.
   predict_ = true;
+  settled_ = true;
   fnk_ = fn_;
 }
 
@@ -178,6 +179,7 @@ PetscErrorCode ContactSet::UpdateIterates(Problem &p, Vec du, double dU, bool &c
   PetscCall(VecRestoreArrayRead(du, &d));
   PetscCallMPI(MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_LAND, p.comm()));
   converged = global;
+  settled_ = converged;
 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -191,9 +193,11 @@ PetscErrorCode ContactSet::ReleasePulled(Problem &p, Vec du, double dU, bool app
   PetscCall(VecGetArrayRead(du, &d));
   for (PetscInt node : candidates_) {
     if (!contact_[node]) {
-      if (!released_[node]) continue;
+      if (!released_[node] || !settled_) continue;
       // Where the released node ends, relative to the tool at the end of the
       // step: inside means the release was wrong (the node grazes the tool).
+      // Judged on settled friction iterates only: a passing iterate can swing
+      // the node through the tool and would hold it there for the trial.
       const Vec2 x = Position(p, node), u = Increment(p, d, node);
       const Vec2 end = {x[0] + u[0] - dU * tool_->direction[0], x[1] + u[1] - dU * tool_->direction[1]};
       const Projection pr = tool_->Project(end);
@@ -205,7 +209,7 @@ PetscErrorCode ContactSet::ReleasePulled(Problem &p, Vec du, double dU, bool app
     // Only a clear pull counts: a grazing node (force ~ 0 either way) stays.
     // The node's state (force, slip) is kept until the increment is committed.
     const double dfn = NormalReaction(p, node, react);
-    if (!frozen_[node] && dfn < -f_small_ && fn_[node] <= 1e-9 * -dfn) {
+    if (!frozen_[node] && dfn < -f_small_ && fn_[node] <= p.release_fraction() * -dfn) {
       local += p.mesh().node_owned[node];
       if (apply) contact_[node] = 0, released_[node] = 1;
     }

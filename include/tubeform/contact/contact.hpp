@@ -90,6 +90,7 @@ private:
   std::vector<double> rate_;    // slip per unit stroke of the latest solution: predicts the next iterate
   std::vector<double> last_dx_; // slip of the last increment (predictor for static tools)
   bool predict_ = true;
+  bool settled_ = true; // the last friction iterate met the tolerance (or there is no friction)
   int iteration_ = 0;
   std::vector<char> released_, frozen_; // within the current step
   double f_small_ = 0; // contact forces below this count as zero (1e-6 of the largest)

@@ -123,6 +123,10 @@ public:
   MPI_Comm comm() const { return comm_; }
   PetscMPIInt rank() const { return rank_; }
   const History &history() const { return history_; }
+  // A contact node whose normal force would reach zero within this fraction of
+  // the step being solved is released in the trial instead of limiting it (r5):
+  // round-off without inertia; with inertia, the shortest step it may take.
+  double release_fraction() const { return release_fraction_; }
 
 private:
   MPI_Comm comm_ = MPI_COMM_NULL;
@@ -153,7 +157,8 @@ private:
   // step of the system being assembled (0: quasi-static, no inertia terms).
   std::vector<double> mass_, v_, a_;
   double dt_ = 0, duration_ = 1; // duration_: time (s) of lambda 0 -> 1
-  bool inertia_ = false;          // inertia in the increments (-dynamics implicit, or auto once switched)
+  bool inertia_ = false;
+  double release_fraction_ = 1e-9, dlambda_trial_ = 1.0;          // inertia in the increments (-dynamics implicit, or auto once switched)
   // Backward Euler about (v_, a_): adds M / dt^2 to the cell blocks (in
   // AssembleTangent) and M (a + v / dt) to the loads (here).
   PetscErrorCode AddInertiaLoad();
