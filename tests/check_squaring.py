@@ -13,9 +13,12 @@ paper's springback, on 1 and 2 ranks; and the frictionless case.
     load, C1, C2, C/t and external work interpolated at the same strokes
     within 1e-6 relative up to U = 2.6 mm (increments are cut at events found
     to round-off, so rows do not pair one to one; measured ~1e-11), and within
-    1e-5 beyond, where the wall collapses: there the difference grows from
-    1e-12 at U = 2.6 mm to ~1e-6 at 3.2 mm (round-off amplified by the
-    collapse, which the dynamic steps follow; quasi-static steps keep 1e-9);
+    1e-4 beyond, where the wall collapses: there the difference grows from
+    1e-12 at U = 2.6 mm to 1e-6..2e-5 at 4.2 mm, depending on the run's
+    round-off (1.1e-6 and 1.9e-5 for C/t in two runs of one commit): the
+    collapse amplifies it, and the dynamic steps follow (quasi-static steps
+    keep 1e-9). A missing or doubled contribution at the partition boundary
+    would show at 1e-2 or more;
   - mu = 0: the problem is symmetric about the 45-degree line while no node
     touches the apex fillet, so C1/C2 = 1 within 1e-6 up to U = 3.5 mm
     (beyond, the collapsing side amplifies round-off: reported).
@@ -45,10 +48,10 @@ before = grid <= 2.6
 for col in ("load", "x_max", "y_max", "c_over_t", "w_ext"):
     curves = [np.interp(grid, H[n]["stroke"][H[n]["stage"] == 0], H[n][col][H[n]["stage"] == 0]) for n in (1, 2)]
     rel = np.abs(curves[0] - curves[1]) / np.abs(curves[0]).max()
-    k.check(rel[before].max() < 1e-6 and rel.max() < 1e-5, f"1 vs 2 ranks, {col}(U): {rel[before].max():.1e} relative up to U = 2.6 mm (1e-6), {rel.max():.1e} to 4.2 mm (1e-5)")
+    k.check(rel[before].max() < 1e-6 and rel.max() < 1e-4, f"1 vs 2 ranks, {col}(U): {rel[before].max():.1e} relative up to U = 2.6 mm (1e-6), {rel.max():.1e} to 4.2 mm (1e-4)")
 for col in ("x_max", "y_max", "c_over_t"):
     rel = abs(H[1][col][-1] - H[2][col][-1]) / max(abs(H[1][col][-1]), 1e-12)
-    k.check(rel < 1e-5, f"1 vs 2 ranks after springback, {col}: {rel:.1e} (1e-5)")
+    k.check(rel < 1e-4, f"1 vs 2 ranks after springback, {col}: {rel:.1e} (1e-4)")
 print(f"       U = 4.2: load {np.interp(4.2, h['stroke'][load_stage], h['load'][load_stage]):.2f} N/mm, "
       f"C/t {h['c_over_t'][load_stage][-1]:.3f}, C1/C2 {h['deviation_ratio'][load_stage][-1]:.4f}; "
       f"after springback C/t {h['c_over_t'][-1]:.3f}, C1/C2 {h['deviation_ratio'][-1]:.4f}")
