@@ -310,7 +310,7 @@ PetscErrorCode Problem::SolveTrial(double lambda, double dl, Vec du, StepLimit &
   const auto solve = [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
     dt_ = inertia_ ? dl * duration_ : 0.0;
-    release_fraction_ = inertia_ ? std::max(1e-9, kMinDynamicStep * dlambda_trial_ / dl) : 1e-9;
+    release_fraction_ = inertia_ ? std::max(1e-9, kMinDynamicStep / (opt_.increments * dl)) : 1e-9;
     PetscCall(AssembleTangent());
     PetscCall(VecZeroEntries(f_inc_));
     PetscCall(scene_->Load(*this, lambda, dl, f_inc_));
@@ -540,7 +540,7 @@ PetscErrorCode Problem::Run()
   std::vector<double> breaks = scene_->Breakpoints();
   breaks.push_back(end);
   std::vector<char> started(breaks.size(), 0);
-  const double dlambda_trial = dlambda_trial_ = 1.0 / opt_.increments;
+  const double dlambda_trial = 1.0 / opt_.increments;
   PetscCall(PetscLogStagePush(Log::load_stage));
   // Stall watch: a window of -rmin_stall_increments increments that together
   // advance lambda by less than kStall ends the loading (results so far kept).

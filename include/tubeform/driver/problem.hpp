@@ -157,8 +157,8 @@ private:
   // step of the system being assembled (0: quasi-static, no inertia terms).
   std::vector<double> mass_, v_, a_;
   double dt_ = 0, duration_ = 1; // duration_: time (s) of lambda 0 -> 1
-  bool inertia_ = false;
-  double release_fraction_ = 1e-9, dlambda_trial_ = 1.0;          // inertia in the increments (-dynamics implicit, or auto once switched)
+  bool inertia_ = false;          // inertia in the increments (-dynamics implicit, or auto once switched)
+  double release_fraction_ = 1e-9; // see release_fraction()
   // Backward Euler about (v_, a_): adds M / dt^2 to the cell blocks (in
   // AssembleTangent) and M (a + v / dt) to the loads (here).
   PetscErrorCode AddInertiaLoad();
