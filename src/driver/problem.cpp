@@ -310,7 +310,7 @@ PetscErrorCode Problem::SolveTrial(double lambda, double dl, Vec du, StepLimit &
   const auto solve = [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
     dt_ = inertia_ ? dl * duration_ : 0.0;
-    release_fraction_ = inertia_ ? std::max(1e-9, kMinDynamicStep / (opt_.increments * dl)) : 1e-9;
+    release_fraction_ = inertia_ ? std::max(1e-9, MinStepFraction(dl)) : 1e-9;
     PetscCall(AssembleTangent());
     PetscCall(VecZeroEntries(f_inc_));
     PetscCall(scene_->Load(*this, lambda, dl, f_inc_));
@@ -380,6 +380,8 @@ void Problem::ForEachMassShare(F &&f) const
     for (int a = 0; a < fe::kNodes; ++a) f(mesh_.cell_nodes[fe::kNodes * e + a], mass_[fe::kNodes * e + a]);
 }
 
+double Problem::MinStepFraction(double dl) const { return kMinDynamicStep / (opt_.increments * dl); }
+
 PetscErrorCode Problem::AddInertiaLoad()
 {
   PetscFunctionBeginUser;
@@ -403,16 +405,16 @@ PetscErrorCode Problem::AdvanceInertia(Vec du_local, double &dw_inertia)
     PetscCall(VecRestoreArrayRead(du_local, &du));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  std::vector<double> a_old = a_;
+  // The work with the old and new accelerations first, then the update.
+  const auto a_new = [&](PetscInt n, int k) { return (PetscRealPart(du[mesh_.node_dof[n] + k]) / dt_ - v_[2 * n + k]) / dt_; };
+  ForEachMassShare([&](PetscInt n, double m) {
+    for (int k = 0; k < 2; ++k) local += m * 0.5 * (a_[2 * n + k] + a_new(n, k)) * PetscRealPart(du[mesh_.node_dof[n] + k]);
+  });
   for (PetscInt n = 0; n < mesh_.num_nodes; ++n)
     for (int k = 0; k < 2; ++k) {
-      const double v = PetscRealPart(du[mesh_.node_dof[n] + k]) / dt_;
-      a_[2 * n + k] = (v - v_[2 * n + k]) / dt_;
-      v_[2 * n + k] = v;
+      a_[2 * n + k] = a_new(n, k);
+      v_[2 * n + k] = PetscRealPart(du[mesh_.node_dof[n] + k]) / dt_;
     }
-  ForEachMassShare([&](PetscInt n, double m) {
-    for (int k = 0; k < 2; ++k) local += m * 0.5 * (a_old[2 * n + k] + a_[2 * n + k]) * PetscRealPart(du[mesh_.node_dof[n] + k]);
-  });
   PetscCall(VecRestoreArrayRead(du_local, &du));
   PetscCall(MPIU_Allreduce(&local, &dw_inertia, 1, MPIU_REAL, MPIU_SUM, comm_));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -580,7 +582,7 @@ PetscErrorCode Problem::Run()
     PetscInt where = -1;
     double r = 1.0, react_scale = 1.0, r_event = 1.0;
     if (limit.r < 1.0) r = limit.r, who = limit.who, where = limit.where;
-    if (inertia_) r = std::min(1.0, std::max(r, kMinDynamicStep * dlambda_trial / dl));
+    if (inertia_) r = std::min(1.0, std::max(r, MinStepFraction(dl)));
     PetscCheck(r > 1e-10, comm_, PETSC_ERR_NOT_CONVERGED, "r_min = %g (%s at %d) at lambda = %g: the increment cannot advance", r, LimiterName((int)limit.who), (int)limit.where, lambda);
     if (r < 1.0 && (scene_->Iterative() || inertia_)) {
       // Friction is not linear in r, nor is inertia (M / dt^2): the shortened
@@ -601,7 +603,7 @@ PetscErrorCode Problem::Run()
         }
         if (limit.r >= 1.0 - kEventSlack || attempt == kMaxResolves - 1) break;
         taken = limit.r;
-        if (inertia_) taken = std::max(taken, kMinDynamicStep * dlambda_trial / dl);
+        if (inertia_) taken = std::max(taken, MinStepFraction(dl));
         if (taken >= 1.0) break;
         r *= taken;
       }

@@ -168,6 +168,8 @@ private:
   // Adds M a (per-cell contributions, global frame) to a local force vector.
   PetscErrorCode AddInertiaForce(Vec f_local);
   PetscErrorCode KineticEnergy(double &w);
+  // The shortest step inertia allows, as a fraction of a step of dl.
+  double MinStepFraction(double dl) const;
   template <class F>
   void ForEachMassShare(F &&f) const;
 
