@@ -7,6 +7,13 @@
         of load, x_max, y_max, c_over_t and w_ext relative to the column's
         largest value, and the first stroke where it passes 1e-6.
 
+    /usr/bin/python3 scripts/history_stats.py same A.h5 B.h5
+        Two runs expected to be identical (e.g. before and after a change that
+        must not alter results, or two runs of one commit): for every history
+        column the two files share, whether it is bitwise equal, else the first
+        row that differs and the largest relative difference; columns found in
+        one file only are listed. Exit code 1 if any shared column differs.
+
     /usr/bin/python3 scripts/history_stats.py windows F.h5 [F.h5 ...]
         The smallest advance of the load path (stroke / target stroke) over any
         100, 300 and 1000 consecutive increments of the loading: what the stall
@@ -45,6 +52,29 @@ def compare(a, b):
         print(f"{col:9s} largest difference {rel.max():.2e} (at U = {grid[np.argmax(rel)]:.2f}); first above 1e-6 at U = {first}")
 
 
+def same(a, b):
+    with h5py.File(a, "r") as ha, h5py.File(b, "r") as hb:
+        A = {c: ha["/history"][c][:] for c in ha["/history"]}
+        B = {c: hb["/history"][c][:] for c in hb["/history"]}
+    print(f"{a}: {len(A['stroke'])} rows; {b}: {len(B['stroke'])} rows")
+    differ = []
+    for c in sorted(set(A) & set(B)):
+        x, y = A[c], B[c]
+        n = min(len(x), len(y))
+        bad = np.nonzero(x[:n] != y[:n])[0]
+        if len(x) == len(y) and not len(bad):
+            continue
+        first = bad[0] if len(bad) else n
+        scale = max(np.abs(x[:n]).max(), np.abs(y[:n]).max(), 1e-300)
+        rel = np.abs(x[:n] - y[:n]).max() / scale
+        differ.append(c)
+        print(f"  {c:16s} differs from row {first} (largest difference {rel:.1e} of the column's largest value)")
+    for c in sorted(set(A) ^ set(B)):
+        print(f"  {c:16s} only in {a if c in A else b}")
+    print("identical" if not differ else f"{len(differ)} shared columns differ")
+    return 1 if differ else 0
+
+
 def windows(paths):
     for path in paths:
         H = loading(path)
@@ -66,6 +96,8 @@ def snaps(paths):
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "compare":
         compare(sys.argv[2], sys.argv[3])
+    elif len(sys.argv) == 4 and sys.argv[1] == "same":
+        sys.exit(same(sys.argv[2], sys.argv[3]))
     elif len(sys.argv) >= 3 and sys.argv[1] == "windows":
         windows(sys.argv[2:])
     elif len(sys.argv) >= 3 and sys.argv[1] == "snaps":

@@ -6,9 +6,10 @@
 //   build/tubeform -help
 #include <petscsys.h>
 
-#include "tubeform/core.hpp"
-#include "tubeform/driver/options.hpp"
+#include "tubeform/core/core.hpp"
 #include "tubeform/driver/problem.hpp"
+#include "tubeform/io/options.hpp"
+#include "tubeform/scenes/registry.hpp"
 
 static const char help[] =
   "tubeform: updated-Lagrangian elasto-plastic FE analysis of tube squaring (plane strain).\n"
@@ -21,7 +22,7 @@ static PetscErrorCode Run(bool &collective)
   tf::Options opt;
   PetscFunctionBeginUser;
   collective = true;
-  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, opt));
+  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneNames(), opt));
   collective = false;
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
   tf::Problem problem;

@@ -10,24 +10,25 @@ inline int failures = 0;
 inline int checks = 0;
 } // namespace tftest
 
-#define CHECK(cond)                                                                   \
-  do {                                                                                \
-    ++tftest::checks;                                                                 \
-    if (!(cond)) {                                                                    \
-      ++tftest::failures;                                                             \
-      std::printf("FAILED %s:%d: %s\n", __FILE__, __LINE__, #cond);                   \
-    }                                                                                 \
+#define CHECK(cond)                                                                                                    \
+  do {                                                                                                                 \
+    ++tftest::checks;                                                                                                  \
+    if (!(cond)) {                                                                                                     \
+      ++tftest::failures;                                                                                              \
+      std::printf("FAILED %s:%d: %s\n", __FILE__, __LINE__, #cond);                                                    \
+    }                                                                                                                  \
   } while (0)
 
 // |a - b| <= tol, reporting both values.
-#define CHECK_NEAR(a, b, tol)                                                         \
-  do {                                                                                \
-    ++tftest::checks;                                                                 \
-    const double a_ = (a), b_ = (b);                                                  \
-    if (!(std::fabs(a_ - b_) <= (tol))) {                                             \
-      ++tftest::failures;                                                             \
-      std::printf("FAILED %s:%d: %s = %.15g vs %s = %.15g (tol %g)\n", __FILE__, __LINE__, #a, a_, #b, b_, (double)(tol)); \
-    }                                                                                 \
+#define CHECK_NEAR(a, b, tol)                                                                                          \
+  do {                                                                                                                 \
+    ++tftest::checks;                                                                                                  \
+    const double a_ = (a), b_ = (b);                                                                                   \
+    if (!(std::fabs(a_ - b_) <= (tol))) {                                                                              \
+      ++tftest::failures;                                                                                              \
+      std::printf("FAILED %s:%d: %s = %.15g vs %s = %.15g (tol %g)\n", __FILE__, __LINE__, #a, a_, #b, b_,             \
+                  (double)(tol));                                                                                      \
+    }                                                                                                                  \
   } while (0)
 
 inline int ReportChecks(const char *name)

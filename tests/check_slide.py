@@ -39,7 +39,7 @@ for n in (20, 200):
     k.check(abs(plateau[n] / (mu * N) - 1) < 0.01, f"{n} increments: sliding force {plateau[n]:.4f} vs mu N = {mu * N:g}")
     if n == 20:
         s1 = int(np.nonzero(H["stage"] == 0)[0][-1])
-        slip = H["x_max"][-1] - H["x_max"][s1]
+        slip = H["slip"][-1] - H["slip"][s1]
         wf = H["w_friction"][-1] - H["w_friction"][s1]
         k.check(abs(wf / (mu * N * slip) - 1) < 0.01, f"friction dissipation {wf:.5f} vs mu N slip {mu * N * slip:.5f} ({wf / (mu * N * slip) - 1:+.2%})")
         k.check(H["penetration"].max() <= 1e-6 and H["tension"].max() <= 0, f"no penetration ({H['penetration'].max():.1e} mm), no tension ({H['tension'].max():.1e})")
@@ -48,14 +48,14 @@ k.check(abs(plateau[20] / plateau[200] - 1) < 1e-3, f"sliding force independent 
 H = history(["-slide_push", 0.002, "-increments", 200], "slide_stick.h5")
 stage2 = H["stage"] == 1
 low = stage2 & (H["load"] < 0.5 * mu * N)
-k.check(low.sum() >= 3 and np.abs(H["x_max"][low]).max() < vcri, f"stick: {low.sum()} increments with T < mu N / 2, largest slip {np.abs(H['x_max'][low]).max():.2e} mm < VCRI")
+k.check(low.sum() >= 3 and np.abs(H["slip"][low]).max() < vcri, f"stick: {low.sum()} increments with T < mu N / 2, largest slip {np.abs(H['slip'][low]).max():.2e} mm < VCRI")
 k.check(H["load"][stage2].max() <= mu * N * 1.001, f"T never exceeds mu N ({H['load'][stage2].max():.4f})")
 import h5py  # noqa: E402
 f = out("slide_arc.h5")
 run(tf, mpirun, 1, ["-options_file", f"{src}/options/slide_arc.opts", "-output", f, "-output_every", 100000])
 with h5py.File(f, "r") as hf:
     A = {c: hf["/history"][c][:] for c in hf["/history"]}
-R, sum_fn = 10.0, A["y_max"][-1]
+R, sum_fn = 10.0, A["fn_sum"][-1]
 k.check(abs(A["load"][-1] / (mu * R * sum_fn) - 1) < 0.01, f"arc: moment {A['load'][-1]:.3f} vs mu R sum f_n {mu * R * sum_fn:.3f}")
 # Steady sliding (the second half of the turn): dissipation = moment x turn.
 mid = int(np.nonzero(A["stage"] == 1)[0][len(np.nonzero(A["stage"] == 1)[0]) // 2])

@@ -14,15 +14,16 @@
 // shear-locking-free element.
 #include <petscsys.h>
 
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
 #include "check.hpp"
-#include "tubeform/core.hpp"
+#include "tubeform/core/core.hpp"
 #include "tubeform/driver/problem.hpp"
 #include "tubeform/mesh/generator.hpp"
+#include "tubeform/scenes/scene.hpp"
 
 using namespace tf;
 
@@ -32,17 +33,19 @@ namespace {
 struct NodalLoad {
   std::vector<std::pair<PetscInt, double>> nodes; // local node, weight (sum 1 over ranks)
   double fx = 0, fy = 0;
-  void Add(Problem &p, double scale, Vec f, bool to_system) const
+  void Add(Model &m, double scale, Vec f, bool to_system) const
   {
-    PetscScalar *a;
-    VecGetArray(f, &a);
+    PetscScalar *a = nullptr;
+    if (f) VecGetArray(f, &a);
     for (const auto &nw : nodes) {
-      if (!p.mesh().node_owned[nw.first]) continue; // each node's load once
-      a[p.mesh().node_dof[nw.first]] += scale * nw.second * fx;
-      a[p.mesh().node_dof[nw.first] + 1] += scale * nw.second * fy;
-      if (to_system) p.system().AddForce(nw.first, scale * nw.second * fx, scale * nw.second * fy);
+      if (!m.mesh.node_owned[nw.first]) continue; // each node's load once
+      if (a) {
+        a[m.mesh.node_dof[nw.first]] += scale * nw.second * fx;
+        a[m.mesh.node_dof[nw.first] + 1] += scale * nw.second * fy;
+      }
+      if (to_system) m.system.AddForce(nw.first, scale * nw.second * fx, scale * nw.second * fy);
     }
-    VecRestoreArray(f, &a);
+    if (f) VecRestoreArray(f, &a);
   }
 };
 
@@ -53,7 +56,7 @@ PetscErrorCode DisplacementAt(Problem &p, double x, double y, int k, double &u)
   PetscFunctionBeginUser;
   for (PetscInt n = 0; n < p.mesh().num_nodes; ++n) {
     const double d = std::hypot(p.mesh().x0[2 * n] - x, p.mesh().x0[2 * n + 1] - y);
-    if (p.mesh().node_owned[n] && d < 1e-8 && d < best) best = d, local = p.displacement()[2 * n + k];
+    if (p.mesh().node_owned[n] && d < 1e-8 && d < best) best = d, local = p.body().displacement()[2 * n + k];
   }
   PetscCall(MPIU_Allreduce(&local, &u, 1, MPIU_REAL, MPIU_SUM, p.comm()));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -70,31 +73,32 @@ public:
     mesh = GenerateQuarterAnnulus(ro_, t_, 2, ntheta_);
     return "";
   }
-  PetscErrorCode Load(Problem &p, double, double dlambda, Vec f) override
+  PetscErrorCode Load(Model &m, double, double dlambda) override
   {
-    Loads(p).Add(p, dlambda, f, true);
-    for (PetscInt n : p.mesh().node_sets["x0"]) p.system().Prescribe(n, 0, 0.0);
-    for (PetscInt n : p.mesh().node_sets["y0"]) p.system().Prescribe(n, 1, 0.0);
+    Loads(m).Add(m, dlambda, nullptr, true);
+    for (PetscInt n : m.mesh.node_sets["x0"]) m.system.Prescribe(n, 0, 0.0);
+    for (PetscInt n : m.mesh.node_sets["y0"]) m.system.Prescribe(n, 1, 0.0);
     return 0;
   }
-  PetscErrorCode ExternalForce(Problem &p, double lambda, Vec f) override
+  PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) override
   {
     VecZeroEntries(f);
-    Loads(p).Add(p, lambda, f, false);
+    Loads(m).Add(m, lambda, f, false);
     return 0;
   }
-  PetscErrorCode Measure(Problem &, double, Vec, HistoryRow &) override { return 0; }
+  PetscErrorCode Measure(Model &, double, Vec, HistoryRow &) override { return 0; }
+  LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}}; }
 
 private:
   double ro_, t_;
   int ntheta_;
   double p_;
-  NodalLoad Loads(Problem &p) const
+  NodalLoad Loads(Model &m) const
   {
     NodalLoad l;
     l.fy = -0.5 * p_;
-    for (PetscInt n : p.mesh().node_sets["x0"]) {
-      const double r = p.mesh().x0[2 * n + 1];
+    for (PetscInt n : m.mesh.node_sets["x0"]) {
+      const double r = m.mesh.x0[2 * n + 1];
       l.nodes.push_back({n, std::abs(r - (ro_ - 0.5 * t_)) < 1e-9 ? 0.5 : 0.25});
     }
     return l;
@@ -118,29 +122,30 @@ public:
     }
     return "";
   }
-  PetscErrorCode Load(Problem &p, double, double dlambda, Vec f) override
+  PetscErrorCode Load(Model &m, double, double dlambda) override
   {
-    Loads(p).Add(p, dlambda, f, true);
-    for (PetscInt k : p.mesh().node_sets["left"]) p.system().Prescribe(k, 0, 0.0), p.system().Prescribe(k, 1, 0.0);
+    Loads(m).Add(m, dlambda, nullptr, true);
+    for (PetscInt k : m.mesh.node_sets["left"]) m.system.Prescribe(k, 0, 0.0), m.system.Prescribe(k, 1, 0.0);
     return 0;
   }
-  PetscErrorCode ExternalForce(Problem &p, double lambda, Vec f) override
+  PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) override
   {
     VecZeroEntries(f);
-    Loads(p).Add(p, lambda, f, false);
+    Loads(m).Add(m, lambda, f, false);
     return 0;
   }
-  PetscErrorCode Measure(Problem &, double, Vec, HistoryRow &) override { return 0; }
+  PetscErrorCode Measure(Model &, double, Vec, HistoryRow &) override { return 0; }
+  LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}}; }
 
 private:
   int n_;
   double f_;
-  NodalLoad Loads(Problem &p) const
+  NodalLoad Loads(Model &m) const
   {
     NodalLoad l;
     l.fy = f_;
-    for (PetscInt k : p.mesh().node_sets["right"]) {
-      const double y = p.mesh().x0[2 * k + 1];
+    for (PetscInt k : m.mesh.node_sets["right"]) {
+      const double y = m.mesh.x0[2 * k + 1];
       l.nodes.push_back({k, (std::abs(y - 44) < 1e-9 || std::abs(y - 60) < 1e-9) ? 0.5 / n_ : 1.0 / n_});
     }
     return l;
@@ -160,7 +165,10 @@ Options Base(fe::Formulation f, double e, double nu)
   return opt;
 }
 
-const char *Name(fe::Formulation f) { return f == fe::Formulation::Q4 ? "q4" : f == fe::Formulation::BBar ? "bbar" : "qm6"; }
+const char *Name(fe::Formulation f)
+{
+  return f == fe::Formulation::Q4 ? "q4" : f == fe::Formulation::BBar ? "bbar" : "qm6";
+}
 
 } // namespace
 
@@ -181,7 +189,8 @@ int main(int argc, char **argv)
       double v;
       PetscCall(DisplacementAt(prob, 0.0, rm, 1, v));
       const double ratio = p / (-2 * v) / stiffness;
-      PetscCall(PetscPrintf(comm, "ring R/t = 20, 2 x 96 elements, %-4s: P/delta / (E'I/(0.1488 Rm^3)) = %.4f\n", Name(f), ratio));
+      PetscCall(PetscPrintf(comm, "ring R/t = 20, 2 x 96 elements, %-4s: P/delta / (E'I/(0.1488 Rm^3)) = %.4f\n",
+                            Name(f), ratio));
       if (f == fe::Formulation::QM6) CHECK(std::abs(ratio - 1) < 0.02);
     }
   }
@@ -203,7 +212,8 @@ int main(int argc, char **argv)
         PetscCall(DisplacementAt(prob, 48, 60, 1, tip[k]));
         tip[k] /= scale;
       }
-      PetscCall(PetscPrintf(comm, "Cook %s, %2d x %-2d: tip deflection q4 %.3f  bbar %.3f  qm6 %.3f\n", stress ? "plane stress nu=1/3" : "plane strain nu=0.4999", n, n, tip[0], tip[1], tip[2]));
+      PetscCall(PetscPrintf(comm, "Cook %s, %2d x %-2d: tip deflection q4 %.3f  bbar %.3f  qm6 %.3f\n",
+                            stress ? "plane stress nu=1/3" : "plane strain nu=0.4999", n, n, tip[0], tip[1], tip[2]));
       for (int k = 0; k < 3; ++k) tips[n][k] = tip[k];
     }
     const double ref = tips[64][2];

@@ -36,7 +36,7 @@ int main()
   }
   // Limits of the law: sliding far (x >> VCRI) carries mu f_n; tiny slip is a spring of stiffness 3 mu f_n / VCRI.
   CHECK_NEAR(friction::Phi(1.0, vcri), 1.0, 2e-5); // capped at 2 VCRI: tanh(6)
-  CHECK(friction::DPhi(1.0, vcri) == 0);            // no change past the cap
+  CHECK(friction::DPhi(1.0, vcri) == 0);           // no change past the cap
   CHECK_NEAR(friction::DPhi(0, vcri), 3 / vcri, 1e-12);
   CHECK_NEAR(friction::Cap(-1.0, vcri), -2 * vcri, 0);
   // Increment independence: accumulating slip in 1 or 100 pieces gives the same force.
@@ -87,7 +87,9 @@ int main()
       return {s.c[0] + s.radius * std::cos(t), s.c[1] + s.radius * std::sin(t)};
     };
     // Joints: apex arc (t0 end) - flank a; flank b - fillet (t0 end); fillet (t1 end) - face a.
-    const Vec2 joints[3][2] = {{end_point(die.segments[0], true), die.segments[1].a}, {die.segments[1].b, end_point(die.segments[2], true)}, {end_point(die.segments[2], false), die.segments[3].a}};
+    const Vec2 joints[3][2] = {{end_point(die.segments[0], true), die.segments[1].a},
+                               {die.segments[1].b, end_point(die.segments[2], true)},
+                               {end_point(die.segments[2], false), die.segments[3].a}};
     for (const auto &j : joints) {
       CHECK_NEAR(j[0][0], j[1][0], 1e-12);
       CHECK_NEAR(j[0][1], j[1][1], 1e-12);
@@ -127,7 +129,8 @@ int main()
     CHECK_NEAR(die.FirstContact({xf, 0.5}, {0.0, 1.0}, 1.0), (uc - 0.5) / 2, 1e-12);
     // A point 0.5 left of the fillet's centre (static die) rising by 4 meets the
     // circle at y = c_y - sqrt(re^2 - 0.25).
-    CHECK_NEAR(die.FirstContact({edge.c[0] - 0.5, 0.0}, {0.0, 4.0}, 0.0), (edge.c[1] - std::sqrt(re * re - 0.25)) / 4, 1e-12);
+    CHECK_NEAR(die.FirstContact({edge.c[0] - 0.5, 0.0}, {0.0, 4.0}, 0.0), (edge.c[1] - std::sqrt(re * re - 0.25)) / 4,
+               1e-12);
   }
   return ReportChecks("test_friction");
 }

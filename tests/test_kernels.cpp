@@ -85,7 +85,8 @@ static void StiffnessTests(fe::Formulation f)
   }
   // Uniform strain: the internal force equals K u and the strain is exact.
   fe::ElemVec du;
-  for (int a = 0; a < 4; ++a) du[2 * a] = 0.01 * kCell[2 * a] + 0.004 * kCell[2 * a + 1], du[2 * a + 1] = -0.002 * kCell[2 * a + 1];
+  for (int a = 0; a < 4; ++a)
+    du[2 * a] = 0.01 * kCell[2 * a] + 0.004 * kCell[2 * a + 1], du[2 * a + 1] = -0.002 * kCell[2 * a + 1];
   for (int g = 0; g < 4; ++g) {
     Voigt de;
     double w;

@@ -54,9 +54,11 @@ void ProportionalPath(const char *name, std::unique_ptr<Hardening> law, std::uni
     eps += d;
     const double ep = ExactEp(*ref, eps);
     worst_ep = std::max(worst_ep, std::abs(s.ep - ep) / std::max(ep, 1e-3));
-    worst_s = std::max(worst_s, std::abs(VonMises(s.sigma) - ref->YieldStress(s.ep)) / ref->YieldStress(s.ep) * (s.plastic ? 1 : 0));
+    worst_s = std::max(worst_s, std::abs(VonMises(s.sigma) - ref->YieldStress(s.ep)) / ref->YieldStress(s.ep) *
+                                  (s.plastic ? 1 : 0));
   }
-  std::printf("%-22s eps = 0.1: ep = %.6f (exact %.6f), max rel. error ep %.1e, sbar vs sy(ep) %.1e, drift %.1e\n", name, s.ep, ExactEp(*ref, eps), worst_ep, worst_s, drift);
+  std::printf("%-22s eps = 0.1: ep = %.6f (exact %.6f), max rel. error ep %.1e, sbar vs sy(ep) %.1e, drift %.1e\n",
+              name, s.ep, ExactEp(*ref, eps), worst_ep, worst_s, drift);
   // Round-off level: the update is exact on this path.
   CHECK(worst_ep < 1e-9);
   CHECK(worst_s < 1e-9);
@@ -65,13 +67,19 @@ void ProportionalPath(const char *name, std::unique_ptr<Hardening> law, std::uni
 
 int main()
 {
-  ProportionalPath("ludwik aluminum", std::make_unique<LudwikHardening>(165.3, 673.5, 0.927), std::make_unique<LudwikHardening>(165.3, 673.5, 0.927));
-  ProportionalPath("ludwik n = 1", std::make_unique<LudwikHardening>(165.3, 673.5, 1.0), std::make_unique<LudwikHardening>(165.3, 673.5, 1.0));
-  ProportionalPath("ludwik n = 0.1", std::make_unique<LudwikHardening>(165.3, 673.5, 0.1), std::make_unique<LudwikHardening>(165.3, 673.5, 0.1));
-  ProportionalPath("perfectly plastic", std::make_unique<LudwikHardening>(165.3, 0.0, 1.0), std::make_unique<LudwikHardening>(165.3, 0.0, 1.0));
-  ProportionalPath("swift", std::make_unique<SwiftHardening>(165.3, 500.0, 0.2), std::make_unique<SwiftHardening>(165.3, 500.0, 0.2));
-  ProportionalPath("table", std::make_unique<TableHardening>(std::vector<double>{0, 0.01, 0.05}, std::vector<double>{165, 200, 240}),
-                   std::make_unique<TableHardening>(std::vector<double>{0, 0.01, 0.05}, std::vector<double>{165, 200, 240}));
+  ProportionalPath("ludwik aluminum", std::make_unique<LudwikHardening>(165.3, 673.5, 0.927),
+                   std::make_unique<LudwikHardening>(165.3, 673.5, 0.927));
+  ProportionalPath("ludwik n = 1", std::make_unique<LudwikHardening>(165.3, 673.5, 1.0),
+                   std::make_unique<LudwikHardening>(165.3, 673.5, 1.0));
+  ProportionalPath("ludwik n = 0.1", std::make_unique<LudwikHardening>(165.3, 673.5, 0.1),
+                   std::make_unique<LudwikHardening>(165.3, 673.5, 0.1));
+  ProportionalPath("perfectly plastic", std::make_unique<LudwikHardening>(165.3, 0.0, 1.0),
+                   std::make_unique<LudwikHardening>(165.3, 0.0, 1.0));
+  ProportionalPath("swift", std::make_unique<SwiftHardening>(165.3, 500.0, 0.2),
+                   std::make_unique<SwiftHardening>(165.3, 500.0, 0.2));
+  ProportionalPath(
+    "table", std::make_unique<TableHardening>(std::vector<double>{0, 0.01, 0.05}, std::vector<double>{165, 200, 240}),
+    std::make_unique<TableHardening>(std::vector<double>{0, 0.01, 0.05}, std::vector<double>{165, 200, 240}));
 
   // Swift starts at sy0; the table interpolates and stays flat past its end.
   CHECK_NEAR(SwiftHardening(165.3, 500.0, 0.2).YieldStress(0), 165.3, 1e-9);

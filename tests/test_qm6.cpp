@@ -242,7 +242,8 @@ static void CantileverTests()
     const double ep = e / (1 - nu * nu), g = e / (2 * (1 + nu));
     const double beam = p * len * len * len / (3 * ep * h * h * h / 12) + p * len / (5.0 / 6.0 * g * h);
     const double qm6 = CantileverTip(true, e, nu, len, h, 10, p), q4 = CantileverTip(false, e, nu, len, h, 10, p);
-    std::printf("cantilever L/h = 10, nu = %g: beam %.6g, QM6 %.6g (ratio %.4f), Q4 %.6g (ratio %.4f)\n", nu, beam, qm6, qm6 / beam, q4, q4 / beam);
+    std::printf("cantilever L/h = 10, nu = %g: beam %.6g, QM6 %.6g (ratio %.4f), Q4 %.6g (ratio %.4f)\n", nu, beam, qm6,
+                qm6 / beam, q4, q4 / beam);
     CHECK_NEAR(qm6 / beam, 1.0, nu < 0.45 ? 0.02 : 0.03);
     CHECK(q4 / beam < 0.8); // shear locking of full-integration Q4
   }

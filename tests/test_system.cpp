@@ -8,14 +8,14 @@
 //    and the exact reaction.
 #include <petscsys.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "check.hpp"
 #include "tubeform/assembly/system.hpp"
-#include "tubeform/core.hpp"
-#include "tubeform/driver/log.hpp"
+#include "tubeform/core/core.hpp"
+#include "tubeform/core/log.hpp"
 #include "tubeform/material/elastic.hpp"
 #include "tubeform/mesh/generator.hpp"
 #include "tubeform/mesh/mesh.hpp"
@@ -119,7 +119,8 @@ static PetscErrorCode PatchTest(MPI_Comm comm, fe::Formulation f)
   // Round-off level: displacements ~1e-2 and stresses ~1 in these units.
   CHECK(gerr < 1e-14);
   CHECK(gserr < 1e-11);
-  PetscCall(PetscPrintf(comm, "patch test (%s): max displacement error %.2e, max stress error %.2e\n", f == fe::Formulation::Q4 ? "q4" : "bbar", gerr, gserr));
+  PetscCall(PetscPrintf(comm, "patch test (%s): max displacement error %.2e, max stress error %.2e\n",
+                        f == fe::Formulation::Q4 ? "q4" : "bbar", gerr, gserr));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -165,7 +166,8 @@ static PetscErrorCode RotatedFrameTest(MPI_Comm comm, double alpha)
     const double xl = std::cos(alpha) * x + std::sin(alpha) * y, yl = -std::sin(alpha) * x + std::cos(alpha) * y;
     const double ul = ex * xl, vl = ey * yl;
     const double ux = std::cos(alpha) * ul - std::sin(alpha) * vl, uy = std::sin(alpha) * ul + std::cos(alpha) * vl;
-    err = std::max({err, std::fabs(PetscRealPart(d[mesh.node_dof[n]]) - ux), std::fabs(PetscRealPart(d[mesh.node_dof[n] + 1]) - uy)});
+    err = std::max({err, std::fabs(PetscRealPart(d[mesh.node_dof[n]]) - ux),
+                    std::fabs(PetscRealPart(d[mesh.node_dof[n] + 1]) - uy)});
   }
   PetscCall(VecRestoreArrayRead(du, &d));
   PetscCall(VecDestroy(&du));
@@ -174,9 +176,10 @@ static PetscErrorCode RotatedFrameTest(MPI_Comm comm, double alpha)
     if (pres[q].value == delta) fsum += reactions[q]; // entries of unowned nodes are 0
   PetscCall(MPIU_Allreduce(&err, &gerr, 1, MPIU_REAL, MPIU_MAX, comm));
   PetscCall(MPIU_Allreduce(&fsum, &gfsum, 1, MPIU_REAL, MPIU_SUM, comm));
-  CHECK(gerr < 1e-14);                        // displacements ~1e-3: round-off
+  CHECK(gerr < 1e-14);                         // displacements ~1e-3: round-off
   CHECK_NEAR(gfsum, sx * ly, 1e-11 * sx * ly); // reaction = sigma_l * height
-  PetscCall(PetscPrintf(comm, "rotated frame alpha=%.3f: max displacement error %.2e, reaction %.12g (exact %.12g)\n", alpha, gerr, gfsum, sx * ly));
+  PetscCall(PetscPrintf(comm, "rotated frame alpha=%.3f: max displacement error %.2e, reaction %.12g (exact %.12g)\n",
+                        alpha, gerr, gfsum, sx * ly));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -207,7 +210,7 @@ static PetscErrorCode CouplingRowTest(MPI_Comm comm)
   PetscCall(AssembleElastic(mesh, sys, fe::Formulation::BBar));
   for (PetscInt n : mesh.node_sets["bottom"]) sys.Prescribe(n, 0, 0.0), sys.Prescribe(n, 1, 0.0);
   if (p >= 0) {
-    sys.Prescribe(p, 1, -2e-3); // pushed along its n
+    sys.Prescribe(p, 1, -2e-3);                             // pushed along its n
     if (mesh.node_owned[p]) sys.AddFrameForce(p, f_l, 0.0); // a load is added once
     if (mesh.node_owned[p]) sys.AddRowCoupling(p, c);
   }
@@ -271,7 +274,8 @@ static PetscErrorCode CouplingRowTest(MPI_Comm comm)
       const double rn = PetscRealPart(react[mesh.node_dof[n] + 1]);
       err = std::max(err, std::abs(kl + c * rn - f_l));
       err = std::max(err, std::abs(kn - rn)); // the reaction is K du at the supported dof
-    } else err = std::max({err, std::abs(kx), std::abs(ky)});
+    } else
+      err = std::max({err, std::abs(kx), std::abs(ky)});
   }
   PetscCall(VecRestoreArrayRead(sys.reactions_local(), &react));
   PetscCall(VecRestoreArrayRead(kdu_local, &kk));

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "tubeform/core.hpp"
-#include "tubeform/driver/log.hpp"
+#include "tubeform/core/core.hpp"
+#include "tubeform/core/log.hpp"
 
 namespace tf {
 
@@ -62,10 +62,12 @@ void System::SetFrame(PetscInt node, double angle)
 bool System::PrescribeAlong(PetscInt node, double dx, double dy, double value)
 {
   const double dl = cos_[node] * dx + sin_[node] * dy, dn = -sin_[node] * dx + cos_[node] * dy;
-  const double tol = 1e-12;
-  if (std::abs(std::abs(dl) - 1) < tol) Prescribe(node, 0, dl * value);
-  else if (std::abs(std::abs(dn) - 1) < tol) Prescribe(node, 1, dn * value);
-  else return false;
+  if (std::abs(std::abs(dl) - 1) < kAxisTol)
+    Prescribe(node, 0, dl * value);
+  else if (std::abs(std::abs(dn) - 1) < kAxisTol)
+    Prescribe(node, 1, dn * value);
+  else
+    return false;
   return true;
 }
 
@@ -222,7 +224,8 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
       adds.push_back(std::move(add));
     }
     PetscCall(VecRestoreArray(rhs_, &b));
-    for (const auto &add : adds) PetscCall(MatSetValues(k_, 1, &add.row, (PetscInt)add.cols.size(), add.cols.data(), add.vals.data(), ADD_VALUES));
+    for (const auto &add : adds)
+      PetscCall(MatSetValues(k_, 1, &add.row, (PetscInt)add.cols.size(), add.cols.data(), add.vals.data(), ADD_VALUES));
     int any = !adds.empty(), anyg;
     PetscCallMPI(MPI_Allreduce(&any, &anyg, 1, MPI_INT, MPI_LOR, mesh_->comm));
     if (anyg) {
@@ -250,7 +253,8 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
     PetscCall(MatGetOwnershipRange(k_, &lo, &hi));
     PetscCall(ISCreateGeneral(mesh_->comm, (PetscInt)rows.size(), rows.data(), PETSC_COPY_VALUES, &isrow));
     PetscCall(ISCreateStride(mesh_->comm, hi - lo, lo, 1, &iscol));
-    PetscCall(MatCreateSubMatrix(k_, isrow, iscol, reaction_rows_ ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &reaction_rows_));
+    PetscCall(
+      MatCreateSubMatrix(k_, isrow, iscol, reaction_rows_ ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &reaction_rows_));
     PetscCall(ISDestroy(&isrow));
     PetscCall(ISDestroy(&iscol));
   }
@@ -269,7 +273,10 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
   PetscCall(KSPSetOperators(ksp_, k_, k_));
   PetscCall(KSPSolve(ksp_, rhs_, sol_));
   PetscCall(KSPGetConvergedReason(ksp_, &reason));
-  PetscCheck(reason >= 0, mesh_->comm, PETSC_ERR_NOT_CONVERGED, "Linear solve failed (%s): the stiffness is singular or the solver options are wrong; check that the scene's supports remove every rigid-body motion", KSPConvergedReasons[reason]);
+  PetscCheck(reason >= 0, mesh_->comm, PETSC_ERR_NOT_CONVERGED,
+             "Linear solve failed (%s): the stiffness is singular or the solver options are wrong; check that the "
+             "scene's supports remove every rigid-body motion",
+             KSPConvergedReasons[reason]);
   ++nsolves_;
   PetscCall(PetscLogEventEnd(Log::solve, 0, 0, 0, 0));
 
@@ -352,7 +359,9 @@ PetscErrorCode System::ExternalWork(Vec f_ext, Vec f_int, Vec du, double &work)
   PetscCall(VecGetArrayRead(du, &d));
   for (PetscInt n = 0; n < mesh_->num_nodes; ++n) {
     const PetscInt o = mesh_->node_dof[n];
-    double e[2] = {PetscRealPart(fe[o]), PetscRealPart(fe[o + 1])}, i[2] = {PetscRealPart(fi[o]), PetscRealPart(fi[o + 1])}, u[2] = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
+    double e[2] = {PetscRealPart(fe[o]), PetscRealPart(fe[o + 1])},
+           i[2] = {PetscRealPart(fi[o]), PetscRealPart(fi[o + 1])},
+           u[2] = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
     if (has_frame_[n]) {
       Rotate(n, e[0], e[1], true);
       Rotate(n, i[0], i[1], true);

@@ -4,31 +4,37 @@
 #include <cmath>
 
 #include "tubeform/contact/friction.hpp"
-#include "tubeform/core.hpp"
-#include "tubeform/driver/problem.hpp"
+#include "tubeform/core/log.hpp"
 
 namespace tf {
 
 namespace {
 double Dot(const Vec2 &a, const Vec2 &b) { return a[0] * b[0] + a[1] * b[1]; }
-Vec2 Position(Problem &p, PetscInt node) { return {p.position()[2 * node], p.position()[2 * node + 1]}; }
-Vec2 Increment(Problem &p, const PetscScalar *d, PetscInt node)
+} // namespace
+
+Vec2 ContactSet::Increment(const PetscScalar *d, PetscInt node) const
 {
-  const PetscInt o = p.mesh().node_dof[node];
+  const PetscInt o = mesh_->node_dof[node];
   return {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
 }
-} // namespace
 
 // Slip of a contact node relative to the tool in an increment: its motion
 // along l minus the tool's.
-double ContactSet::Slip(PetscInt node, const Vec2 &u, double dU) const { return Dot(u, l_[node]) - dU * Dot(tool_->direction, l_[node]); }
-
-void ContactSet::Setup(Problem &p, Tool *tool, const std::string &candidates, const std::vector<std::pair<std::string, Vec2>> &symmetry, const ContactParams &prm)
+double ContactSet::Slip(PetscInt node, const Vec2 &u, double dU) const
 {
-  tool_ = tool;
-  prm_ = prm;
-  const PetscInt n = p.mesh().num_nodes;
-  candidates_ = p.mesh().node_sets[candidates];
+  return Dot(u, l_[node]) - dU * Dot(tool_.direction, l_[node]);
+}
+
+void ContactSet::Setup(Mesh &mesh, System &system, const std::vector<double> &x, ContactSpec spec)
+{
+  mesh_ = &mesh;
+  system_ = &system;
+  x_body_ = &x;
+  tool_ = std::move(spec.tool);
+  prm_ = spec.params;
+  removed_ = false;
+  const PetscInt n = mesh.num_nodes;
+  candidates_ = mesh.node_sets[spec.candidates];
   contact_.assign(n, 0);
   released_.assign(n, 0);
   frozen_.assign(n, 0);
@@ -36,38 +42,48 @@ void ContactSet::Setup(Problem &p, Tool *tool, const std::string &candidates, co
   sym_dir_.assign(n, Vec2{0, 0});
   segment_.assign(n, -1);
   for (auto *v : {&fn_, &x_, &gap_, &kappa_, &dxk_, &fnk_, &rate_, &last_dx_}) v->assign(n, 0.0);
-  r4_.assign(n, 1e300);
-  r5_.assign(n, 1e300);
+  r4_.assign(n, kNever);
+  r5_.assign(n, kNever);
   n_.assign(n, Vec2{0, -1});
   l_.assign(n, Vec2{-1, 0});
-  for (const auto &s : symmetry)
-    for (PetscInt node : p.mesh().node_sets[s.first]) sym_dir_[node] = s.second;
+  for (const auto &s : spec.symmetry)
+    for (PetscInt node : mesh.node_sets[s.first]) sym_dir_[node] = s.second;
 }
 
-PetscErrorCode ContactSet::Initialize(Problem &p)
+PetscErrorCode ContactSet::Initialize()
 {
   PetscFunctionBeginUser;
   // A node already on the surface (within round-off of the mesh) starts in contact.
-  const double tol = 1e-9 * (1 + std::abs(p.mesh().x0.empty() ? 1.0 : p.mesh().x0[0]));
+  const double tol = kStartGap * (1 + std::abs(mesh_->x0.empty() ? 1.0 : mesh_->x0[0]));
   for (PetscInt node : candidates_) {
-    const Projection pr = tool_->Project(Position(p, node));
-    if (pr.segment >= 0 && std::abs(pr.gap) <= std::max(tol, 1e-9)) contact_[node] = 1;
+    const Projection pr = tool_.Project(Position(node));
+    if (pr.segment >= 0 && std::abs(pr.gap) <= std::max(tol, kStartGap)) contact_[node] = 1;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::BeginIncrement(Problem &p)
+void ContactSet::Remove()
+{
+  std::fill(contact_.begin(), contact_.end(), 0);
+  std::fill(released_.begin(), released_.end(), 0);
+  std::fill(frozen_.begin(), frozen_.end(), 0);
+  std::fill(fn_.begin(), fn_.end(), 0.0);
+  std::fill(x_.begin(), x_.end(), 0.0);
+  removed_ = true;
+}
+
+PetscErrorCode ContactSet::BeginIncrement()
 {
   PetscFunctionBeginUser;
   // Force scale of "zero" (grazing nodes): a millionth of the largest contact force.
   double fmax = 0;
   for (PetscInt node : candidates_)
     if (contact_[node]) fmax = std::max(fmax, fn_[node]);
-  PetscCallMPI(MPI_Allreduce(&fmax, &f_small_, 1, MPI_DOUBLE, MPI_MAX, p.comm()));
-  f_small_ *= 1e-6;
+  PetscCallMPI(MPI_Allreduce(&fmax, &f_small_, 1, MPI_DOUBLE, MPI_MAX, comm()));
+  f_small_ *= kSmallForce;
   for (PetscInt node : candidates_) {
     if (!contact_[node]) continue;
-    const Projection pr = tool_->Project(Position(p, node));
+    const Projection pr = tool_.Project(Position(node));
     if (pr.segment < 0) {
       // Slid off the end of the tool: released.
       contact_[node] = 0;
@@ -84,8 +100,8 @@ PetscErrorCode ContactSet::BeginIncrement(Problem &p)
     // frame and both its components are prescribed.
     const Vec2 s = sym_dir_[node];
     const bool on_plane = s[0] != 0 || s[1] != 0;
-    global_frame_[node] = on_plane && std::abs(std::abs(Dot(s, pr.l)) - 1) > 1e-9;
-    p.system().SetFrame(node, global_frame_[node] ? 0.0 : std::atan2(pr.l[1], pr.l[0]));
+    global_frame_[node] = on_plane && std::abs(std::abs(Dot(s, pr.l)) - 1) > kFrameAxisTol;
+    system_->SetFrame(node, global_frame_[node] ? 0.0 : std::atan2(pr.l[1], pr.l[0]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -113,10 +129,10 @@ void ContactSet::LinearizeAtStart()
   fnk_ = fn_;
 }
 
-PetscErrorCode ContactSet::Constrain(Problem &p, double dU)
+PetscErrorCode ContactSet::Constrain(double dU)
 {
   PetscFunctionBeginUser;
-  const Vec2 dir = tool_->direction;
+  const Vec2 dir = tool_.direction;
   // Moving tool: the slip per unit stroke of the latest solution; static tool:
   // the last increment's slip.
   if (predict_)
@@ -130,22 +146,23 @@ PetscErrorCode ContactSet::Constrain(Problem &p, double dU)
       // du . n = dn with the held component zero: the free global component follows.
       const Vec2 s = sym_dir_[node];
       const int held = std::abs(s[0]) > 0.5 ? 0 : 1, free = 1 - held;
-      p.system().Prescribe(node, free, dn / n_[node][free]);
+      system_->Prescribe(node, free, dn / n_[node][free]);
       continue; // the symmetry support itself is prescribed by the scene
     }
-    p.system().Prescribe(node, 1, dn);
-    if (!friction() || !SlipFree(node) || !p.mesh().node_owned[node]) continue;
-    const friction::RowTerms t = friction::Linearize(prm_.mu, prm_.vcri, fn_[node], fnk_[node], x_[node], dxk_[node], dU * Dot(dir, l_[node]), kappa_[node]);
-    p.system().AddRowCoupling(node, t.row_n_coeff);
-    PetscCall(p.system().AddFrameStiffness(node, t.diag));
-    p.system().AddFrameForce(node, t.rhs, 0.0);
+    system_->Prescribe(node, 1, dn);
+    if (!friction() || !SlipFree(node) || !mesh_->node_owned[node]) continue;
+    const friction::RowTerms t = friction::Linearize(prm_.mu, prm_.vcri, fn_[node], fnk_[node], x_[node], dxk_[node],
+                                                     dU * Dot(dir, l_[node]), kappa_[node]);
+    system_->AddRowCoupling(node, t.row_n_coeff);
+    PetscCall(system_->AddFrameStiffness(node, t.diag));
+    system_->AddFrameForce(node, t.rhs, 0.0);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-double ContactSet::NormalReaction(Problem &p, PetscInt node, const PetscScalar *react) const
+double ContactSet::NormalReaction(PetscInt node, const PetscScalar *react) const
 {
-  const PetscInt o = p.mesh().node_dof[node];
+  const PetscInt o = mesh_->node_dof[node];
   if (!global_frame_[node]) return PetscRealPart(react[o + 1]);
   // Global frame: the free component's reaction is the normal force's share.
   const Vec2 s = sym_dir_[node];
@@ -153,43 +170,45 @@ double ContactSet::NormalReaction(Problem &p, PetscInt node, const PetscScalar *
   return PetscRealPart(react[o + free]) / n_[node][free];
 }
 
-PetscErrorCode ContactSet::UpdateIterates(Problem &p, Vec du, double dU, bool &converged)
+PetscErrorCode ContactSet::UpdateIterates(Vec du, double dU, bool &converged)
 {
   const PetscScalar *d, *react;
   int local = 1, global;
-  const double relax = ++iteration_ > 6 ? 0.5 : 1.0;
+  const double relax = ++iteration_ > kPlainIterations ? kRelax : 1.0;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::contact, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(du, &d));
-  PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
+  PetscCall(VecGetArrayRead(system_->reactions_local(), &react));
   for (PetscInt node : candidates_) {
     if (!SlipFree(node)) continue;
-    const double dx = Slip(node, Increment(p, d, node), dU);
-    const double fn = fn_[node] + NormalReaction(p, node, react);
-    const double before = friction::Force(prm_.mu, prm_.vcri, fnk_[node], x_[node] + dxk_[node]), after = friction::Force(prm_.mu, prm_.vcri, fn, x_[node] + dx);
-    // Relative to the node's own force, but not below a thousandth of the largest contact force.
-    if (std::abs(after - before) > prm_.mu * prm_.tol * std::max(std::abs(fn), 1e3 * f_small_)) local = 0;
+    const double dx = Slip(node, Increment(d, node), dU);
+    const double fn = fn_[node] + NormalReaction(node, react);
+    const double before = friction::Force(prm_.mu, prm_.vcri, fnk_[node], x_[node] + dxk_[node]);
+    const double after = friction::Force(prm_.mu, prm_.vcri, fn, x_[node] + dx);
+    if (std::abs(after - before) > prm_.mu * prm_.tol * std::max(std::abs(fn), kFloorOfSmallForces * f_small_))
+      local = 0;
     // Under-relaxed after a few iterations: the tanh law can make plain
     // iterates oscillate between sticking and sliding.
     dxk_[node] += relax * (dx - dxk_[node]);
     fnk_[node] += relax * (fn - fnk_[node]);
     if (dU != 0) rate_[node] = dx / dU;
   }
-  PetscCall(VecRestoreArrayRead(p.system().reactions_local(), &react));
+  PetscCall(VecRestoreArrayRead(system_->reactions_local(), &react));
   PetscCall(VecRestoreArrayRead(du, &d));
-  PetscCallMPI(MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_LAND, p.comm()));
+  PetscCallMPI(MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_LAND, comm()));
   converged = global;
   settled_ = converged;
-
+  PetscCall(PetscLogEventEnd(Log::contact, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::ReleasePulled(Problem &p, Vec du, double dU, bool apply, PetscInt &released)
+PetscErrorCode ContactSet::ReleasePulled(Vec du, double dU, double release_fraction, bool apply, PetscInt &released)
 {
   const PetscScalar *react, *d;
   PetscInt local = 0;
   PetscFunctionBeginUser;
-  PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
+  PetscCall(VecGetArrayRead(system_->reactions_local(), &react));
   PetscCall(VecGetArrayRead(du, &d));
   for (PetscInt node : candidates_) {
     if (!contact_[node]) {
@@ -198,51 +217,53 @@ PetscErrorCode ContactSet::ReleasePulled(Problem &p, Vec du, double dU, bool app
       // step: inside means the release was wrong (the node grazes the tool).
       // Judged on settled friction iterates only: a passing iterate can swing
       // the node through the tool and would hold it there for the trial.
-      const Vec2 x = Position(p, node), u = Increment(p, d, node);
-      const Vec2 end = {x[0] + u[0] - dU * tool_->direction[0], x[1] + u[1] - dU * tool_->direction[1]};
-      const Projection pr = tool_->Project(end);
+      const Vec2 x = Position(node), u = Increment(d, node);
+      const Vec2 end = {x[0] + u[0] - dU * tool_.direction[0], x[1] + u[1] - dU * tool_.direction[1]};
+      const Projection pr = tool_.Project(end);
       if (pr.segment < 0 || pr.gap >= 0) continue;
-      local += p.mesh().node_owned[node];
+      local += mesh_->node_owned[node];
       if (apply) contact_[node] = frozen_[node] = 1, released_[node] = 0;
       continue;
     }
     // Only a clear pull counts: a grazing node (force ~ 0 either way) stays.
     // The node's state (force, slip) is kept until the increment is committed.
-    const double dfn = NormalReaction(p, node, react);
-    if (!frozen_[node] && dfn < -f_small_ && fn_[node] <= p.release_fraction() * -dfn) {
-      local += p.mesh().node_owned[node];
+    const double dfn = NormalReaction(node, react);
+    if (!frozen_[node] && dfn < -f_small_ && fn_[node] <= release_fraction * -dfn) {
+      local += mesh_->node_owned[node];
       if (apply) contact_[node] = 0, released_[node] = 1;
     }
   }
   PetscCall(VecRestoreArrayRead(du, &d));
-  PetscCall(VecRestoreArrayRead(p.system().reactions_local(), &react));
-  PetscCall(MPIU_Allreduce(&local, &released, 1, MPIU_INT, MPI_SUM, p.comm()));
+  PetscCall(VecRestoreArrayRead(system_->reactions_local(), &react));
+  PetscCall(MPIU_Allreduce(&local, &released, 1, MPIU_INT, MPI_SUM, comm()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::LimitStep(Problem &p, Vec du, double dU, StepLimit &limit)
+PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
 {
   const PetscScalar *d, *react;
   StepLimit touch, leave, stick;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::contact, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(du, &d));
-  PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
+  PetscCall(VecGetArrayRead(system_->reactions_local(), &react));
   for (PetscInt node : candidates_) {
-    const PetscInt id = p.mesh().node_orig[node];
-    const Vec2 u = Increment(p, d, node);
-    r4_[node] = r5_[node] = 1e300;
+    const PetscInt id = mesh_->node_orig[node];
+    const Vec2 u = Increment(d, node);
+    r4_[node] = r5_[node] = kNever;
     if (!contact_[node]) {
       // r4: exact first touch along the increment. A node released in this
       // trial starts on the surface: where it ends is checked by ReleasePulled.
       if (released_[node]) continue;
-      r4_[node] = tool_->FirstContact(Position(p, node), u, dU);
+      r4_[node] = tool_.FirstContact(Position(node), u, dU);
       touch.Offer(r4_[node], Limiter::Contact, id);
       continue;
     }
     // r5: the normal force reaches zero.
-    const double dfn = NormalReaction(p, node, react);
-    if (dfn < -f_small_ && !frozen_[node]) r5_[node] = std::max(fn_[node], 0.0) / -dfn; // a grazing node held for this step does not limit
+    const double dfn = NormalReaction(node, react);
+    if (dfn < -f_small_ && !frozen_[node])
+      r5_[node] = std::max(fn_[node], 0.0) / -dfn; // a grazing node held for this step does not limit
     leave.Offer(r5_[node], Limiter::Separation, id);
     // r6: the friction mobilization f_l / (mu f_n) changes by at most dphi_max.
     if (friction() && SlipFree(node)) {
@@ -251,38 +272,40 @@ PetscErrorCode ContactSet::LimitStep(Problem &p, Vec du, double dU, StepLimit &l
       if (dphi > prm_.dphi_max) stick.Offer(prm_.dphi_max / dphi, Limiter::Stick, id);
     }
   }
-  PetscCall(VecRestoreArrayRead(p.system().reactions_local(), &react));
+  PetscCall(VecRestoreArrayRead(system_->reactions_local(), &react));
   PetscCall(VecRestoreArrayRead(du, &d));
   for (StepLimit *l : {&touch, &leave, &stick}) {
-    PetscCall(ReduceStepLimit(p.comm(), *l));
+    PetscCall(ReduceStepLimit(comm(), *l));
     limit.Offer(l->r, l->who, l->where);
   }
+  PetscCall(PetscLogEventEnd(Log::contact, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_scale, double r, double &w_friction)
+PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double r, double &w_friction)
 {
   const PetscScalar *d, *react;
   double local_w = 0;
   const double event = r * (1 + prm_.group_tol);
 
   PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::contact, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(du, &d));
-  PetscCall(VecGetArrayRead(p.system().reactions_local(), &react));
+  PetscCall(VecGetArrayRead(system_->reactions_local(), &react));
   for (PetscInt node : candidates_) {
     if (contact_[node]) {
       const double fl_old = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]), fn_old = fn_[node];
-      fn_[node] += react_scale * NormalReaction(p, node, react);
+      fn_[node] += react_scale * NormalReaction(node, react);
       if (SlipFree(node)) {
-        const double dx = Slip(node, Increment(p, d, node), dU);
+        const double dx = Slip(node, Increment(d, node), dU);
         x_[node] = friction::Cap(x_[node] + dx, prm_.vcri);
         last_dx_[node] = dx;
         const double fl_new = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
-        if (p.mesh().node_owned[node]) local_w -= 0.5 * (fl_old + fl_new) * dx; // dissipated by sliding
+        if (mesh_->node_owned[node]) local_w -= 0.5 * (fl_old + fl_new) * dx; // dissipated by sliding
       }
       // r5: released when its normal force has reached zero (up to round-off
       // of a re-solved step).
-      if (r5_[node] <= event || (fn_[node] <= 1e-9 * fn_old && fn_[node] < -f_small_)) {
+      if (r5_[node] <= event || (fn_[node] <= kSeparated * fn_old && fn_[node] < -f_small_)) {
         contact_[node] = 0;
         fn_[node] = x_[node] = 0;
       }
@@ -295,17 +318,17 @@ PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_sc
       fn_[node] = x_[node] = rate_[node] = 0;
     }
   }
-  PetscCall(VecRestoreArrayRead(p.system().reactions_local(), &react));
+  PetscCall(VecRestoreArrayRead(system_->reactions_local(), &react));
   PetscCall(VecRestoreArrayRead(du, &d));
-  PetscCallMPI(MPI_Allreduce(&local_w, &w_friction, 1, MPI_DOUBLE, MPI_SUM, p.comm()));
+  PetscCallMPI(MPI_Allreduce(&local_w, &w_friction, 1, MPI_DOUBLE, MPI_SUM, comm()));
 
   // The tool has moved by dU with the increment.
-  tool_->stroke += dU;
+  tool_.stroke += dU;
   // Gaps on the new geometry: contact nodes keep theirs for the next increment
   // to close (on arcs, sliding along the tangent leaves a second-order gap);
   // a free node that reached the surface up to round-off is in contact.
   for (PetscInt node : candidates_) {
-    const Projection pr = tool_->Project(Position(p, node));
+    const Projection pr = tool_.Project(Position(node));
     if (pr.segment < 0) continue;
     if (!contact_[node] && pr.gap <= prm_.gap_tol) {
       contact_[node] = 1;
@@ -313,91 +336,83 @@ PetscErrorCode ContactSet::Commit(Problem &p, Vec du, double dU, double react_sc
     }
     gap_[node] = pr.gap;
   }
+  PetscCall(PetscLogEventEnd(Log::contact, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-void ContactSet::ReleaseAll()
-{
-  std::fill(contact_.begin(), contact_.end(), 0);
-  std::fill(released_.begin(), released_.end(), 0);
-  std::fill(frozen_.begin(), frozen_.end(), 0);
-  std::fill(fn_.begin(), fn_.end(), 0.0);
-  std::fill(x_.begin(), x_.end(), 0.0);
-}
-
-PetscErrorCode ContactSet::AddFrictionForces(Problem &p, Vec f) const
+PetscErrorCode ContactSet::AddFrictionForces(Vec f) const
 {
   PetscScalar *a;
   PetscFunctionBeginUser;
   if (!friction()) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(VecGetArray(f, &a));
   for (PetscInt node : candidates_) {
-    if (!SlipFree(node) || !p.mesh().node_owned[node]) continue;
+    if (!SlipFree(node) || !mesh_->node_owned[node]) continue;
     const double fl = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
-    a[p.mesh().node_dof[node]] += fl * l_[node][0];
-    a[p.mesh().node_dof[node] + 1] += fl * l_[node][1];
+    a[mesh_->node_dof[node]] += fl * l_[node][0];
+    a[mesh_->node_dof[node] + 1] += fl * l_[node][1];
   }
   PetscCall(VecRestoreArray(f, &a));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::AddContactForces(Problem &p, Vec f) const
+PetscErrorCode ContactSet::AddContactForces(Vec f) const
 {
   PetscScalar *a;
   PetscFunctionBeginUser;
   PetscCall(VecGetArray(f, &a));
   for (PetscInt node : candidates_) {
-    if (!contact_[node] || !p.mesh().node_owned[node]) continue;
+    if (!contact_[node] || !mesh_->node_owned[node]) continue;
     const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
-    a[p.mesh().node_dof[node]] += fn_[node] * n_[node][0] + fl * l_[node][0];
-    a[p.mesh().node_dof[node] + 1] += fn_[node] * n_[node][1] + fl * l_[node][1];
+    a[mesh_->node_dof[node]] += fn_[node] * n_[node][0] + fl * l_[node][0];
+    a[mesh_->node_dof[node] + 1] += fn_[node] * n_[node][1] + fl * l_[node][1];
   }
   PetscCall(VecRestoreArray(f, &a));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::TotalForce(Problem &p, double force[2]) const
+PetscErrorCode ContactSet::TotalForce(double force[2]) const
 {
   double local[2] = {0, 0};
   PetscFunctionBeginUser;
   for (PetscInt node : candidates_) {
-    if (!contact_[node] || !p.mesh().node_owned[node]) continue;
+    if (!contact_[node] || !mesh_->node_owned[node]) continue;
     const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
     for (int k = 0; k < 2; ++k) local[k] += fn_[node] * n_[node][k] + fl * l_[node][k];
   }
-  PetscCallMPI(MPI_Allreduce(local, force, 2, MPI_DOUBLE, MPI_SUM, p.comm()));
+  PetscCallMPI(MPI_Allreduce(local, force, 2, MPI_DOUBLE, MPI_SUM, comm()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::Count(Problem &p, PetscInt &n) const
+PetscErrorCode ContactSet::Count(PetscInt &n) const
 {
   PetscInt local = 0;
   PetscFunctionBeginUser;
-  for (PetscInt node : candidates_) local += contact_[node] && p.mesh().node_owned[node];
-  PetscCall(MPIU_Allreduce(&local, &n, 1, MPIU_INT, MPI_SUM, p.comm()));
+  for (PetscInt node : candidates_) local += contact_[node] && mesh_->node_owned[node];
+  PetscCall(MPIU_Allreduce(&local, &n, 1, MPIU_INT, MPI_SUM, comm()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::NormalForceSum(Problem &p, double &sum) const
+PetscErrorCode ContactSet::NormalForceSum(double &sum) const
 {
   double local = 0;
   PetscFunctionBeginUser;
   for (PetscInt node : candidates_)
-    if (contact_[node] && p.mesh().node_owned[node]) local += fn_[node];
-  PetscCallMPI(MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, p.comm()));
+    if (contact_[node] && mesh_->node_owned[node]) local += fn_[node];
+  PetscCallMPI(MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, comm()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::Violations(Problem &p, double &penetration, double &tension) const
+PetscErrorCode ContactSet::Violations(double &penetration, double &tension) const
 {
   double local[2] = {0, 0}, global[2];
   PetscFunctionBeginUser;
   for (PetscInt node : candidates_) {
-    const Projection pr = tool_->Project(Position(p, node));
+    const Projection pr = tool_.Project(Position(node));
     if (pr.segment >= 0) local[0] = std::max(local[0], -pr.gap);
     if (contact_[node]) local[1] = std::max(local[1], -fn_[node]);
   }
-  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, p.comm()));
+  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, comm()));
   penetration = global[0];
   tension = global[1];
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -74,7 +74,7 @@ bool Solve4(double a[kInternal][kInternal], double x[kInternal][kDofs])
     int p = k;
     for (int i = k + 1; i < kInternal; ++i)
       if (std::fabs(a[i][k]) > std::fabs(a[p][k])) p = i;
-    if (!(std::fabs(a[p][k]) > 1e-13 * amax)) return false;
+    if (!(std::fabs(a[p][k]) > kPivotTol * amax)) return false;
     if (p != k) {
       std::swap(a[p], a[k]);
       std::swap(x[p], x[k]);
@@ -95,7 +95,8 @@ bool Solve4(double a[kInternal][kInternal], double x[kInternal][kDofs])
 }
 } // namespace
 
-bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond)
+bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const Voigt sigma[kGauss], bool geometric,
+                  ElemMat &ke, Condensation &cond)
 {
   Gradients gr;
   if (!ComputeGradients(xe, gr)) return false;
@@ -131,7 +132,8 @@ bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const
   return true;
 }
 
-bool QM6Kinematics(const double xe[2 * kNodes], int g, const ElemVec &du, const InternalVec &alpha, Voigt &deps, double &omega)
+bool QM6Kinematics(const double xe[2 * kNodes], int g, const ElemVec &du, const InternalVec &alpha, Voigt &deps,
+                   double &omega)
 {
   Gradients gr;
   if (!ComputeGradients(xe, gr)) return false;

@@ -103,7 +103,8 @@ Mat4 JaumannTangent(const Mat4 &tangent, const Voigt &sigma, bool geometric)
   return c;
 }
 
-void ElementStiffness(const QuadGeometry &geo, Formulation f, const Mat4 tangent[kGauss], const Voigt sigma[kGauss], bool geometric, ElemMat &ke)
+void ElementStiffness(const QuadGeometry &geo, Formulation f, const Mat4 tangent[kGauss], const Voigt sigma[kGauss],
+                      bool geometric, ElemMat &ke)
 {
   for (auto &row : ke) row.fill(0.0);
   for (int g = 0; g < kGauss; ++g) {

@@ -2,13 +2,9 @@
 
 #include <cstdio>
 
-namespace tf {
+#include "tubeform/step/rmin.hpp"
 
-const char *LimiterName(int code)
-{
-  static const char *names[kNumLimiters] = {"trial", "final", "yield", "strain", "rotation", "contact", "separation", "stick"};
-  return code >= 0 && code < kNumLimiters ? names[code] : "unknown";
-}
+namespace tf {
 
 const std::vector<HistoryColumn> &HistoryColumns()
 {
@@ -34,7 +30,8 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"y_max", &HistoryRow::y_max, "C2: outer vertical half-extent (mm)"},
     {"deviation_ratio", &HistoryRow::deviation_ratio, "min(C1, C2) / max(C1, C2)"},
     {"redo", &HistoryRow::redo, "re-solves of the increment for loading/unloading switches"},
-    {"unsettled", &HistoryRow::unsettled, "trial steps so far taken with unsettled friction iterations (see docs/theory.md)"},
+    {"unsettled", &HistoryRow::unsettled,
+     "trial steps so far taken with unsettled friction iterations (see docs/theory.md)"},
     {"drift", &HistoryRow::drift, "largest |sbar / sigma_y - 1| of a plastic update (before any drift correction)"},
     {"r_corner_x", &HistoryRow::r_corner_x, "outer corner radius on the x axis (3-node estimate, mm)"},
     {"r_corner_y", &HistoryRow::r_corner_y, "outer corner radius on the y axis (3-node estimate, mm)"},
@@ -45,8 +42,12 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"tool_fx", &HistoryRow::tool_fx, "force of the quarter model on the tool, x (N/mm)"},
     {"tool_fy", &HistoryRow::tool_fy, "force of the quarter model on the tool, y (N/mm)"},
     {"w_kinetic", &HistoryRow::w_kinetic, "kinetic energy (-dynamics implicit; 0 quasi-static)"},
-    {"w_inertia", &HistoryRow::w_inertia, "work of the inertia forces: kinetic energy + what backward Euler damped out"},
-    {"inertia", &HistoryRow::inertia, "1 if the increment was solved with inertia (-dynamics implicit, or auto once switched on)"},
+    {"w_inertia", &HistoryRow::w_inertia,
+     "work of the inertia forces: kinetic energy + what backward Euler damped out"},
+    {"inertia", &HistoryRow::inertia,
+     "1 if the increment was solved with inertia (-dynamics implicit, or auto once switched on)"},
+    {"slip", &HistoryRow::slip, "slide scene: mean slip of the contact surface along the floor (mm)"},
+    {"fn_sum", &HistoryRow::fn_sum, "sum of the contact nodes' normal forces (N/mm)"},
   };
   return cols;
 }
@@ -76,8 +77,10 @@ void History::Append(const HistoryRow &row)
   for (size_t c = 0; c < cols.size(); ++c) {
     const double v = row.*(cols[c].field);
     if (c) std::fputc(',', csv_);
-    if (cols[c].field == &HistoryRow::limiter) std::fprintf(csv_, "%s", LimiterName(static_cast<int>(v)));
-    else std::fprintf(csv_, "%.12g", v);
+    if (cols[c].field == &HistoryRow::limiter)
+      std::fprintf(csv_, "%s", LimiterName(static_cast<int>(v)));
+    else
+      std::fprintf(csv_, "%.12g", v);
   }
   std::fputc('\n', csv_);
   std::fflush(csv_); // a long run can be watched (tail -f) while it goes

@@ -6,8 +6,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "tubeform/core.hpp"
-#include "tubeform/driver/log.hpp"
+#include "tubeform/core/core.hpp"
+#include "tubeform/core/log.hpp"
+#include "tubeform/step/rmin.hpp"
 
 namespace tf {
 
@@ -35,7 +36,8 @@ PetscErrorCode CheckWritable(MPI_Comm comm, const std::string &path, const char 
     }
   }
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
-  PetscCheck(ok, comm, PETSC_ERR_USER_INPUT, "%s %s: cannot create the file (does the directory exist and is it writable?)", option, path.c_str());
+  PetscCheck(ok, comm, PETSC_ERR_USER_INPUT,
+             "%s %s: cannot create the file (does the directory exist and is it writable?)", option, path.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -56,7 +58,8 @@ PetscErrorCode ResultWriter::Open(const Mesh &mesh, const std::string &path)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::vector<double> &u, const std::vector<CellField> &cells)
+PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::vector<double> &u,
+                                       const std::vector<CellField> &cells)
 {
   Vec local, global;
   PetscScalar *a;
@@ -117,10 +120,11 @@ PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std
     hid_t space, dset;
     for (hsize_t r = 0; r < n; ++r) column[r] = history.rows()[r].*(col.field);
     space = H5Screate_simple(1, &n, nullptr);
-  TF_CHECK_HDF5(space);
+    TF_CHECK_HDF5(space);
     dset = H5Dcreate2(group, col.name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  TF_CHECK_HDF5(dset);
-    if (rank == 0 && n > 0) TF_CHECK_HDF5(H5Dwrite(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, column.data()));
+    TF_CHECK_HDF5(dset);
+    if (rank == 0 && n > 0)
+      TF_CHECK_HDF5(H5Dwrite(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, column.data()));
     TF_CHECK_HDF5(H5Dclose(dset));
     TF_CHECK_HDF5(H5Sclose(space));
   }
@@ -130,7 +134,8 @@ PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std
   std::string names;
   for (int k = 0; k < kNumLimiters; ++k) names += std::string(k ? "," : "") + LimiterName(k);
   PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/history", "limiter_names", PETSC_STRING, names.c_str()));
-  for (const auto &m : metrics) PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/history", m.first.c_str(), PETSC_DOUBLE, &m.second));
+  for (const auto &m : metrics)
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/history", m.first.c_str(), PETSC_DOUBLE, &m.second));
   PetscCall(PetscOptionsGetAll(nullptr, &all_options));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/", "options", PETSC_STRING, all_options));
   PetscCall(PetscFree(all_options));
@@ -144,7 +149,8 @@ PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std
     if (ok) PetscCall(WriteXdmf());
   }
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, mesh_->comm));
-  PetscCheck(ok, mesh_->comm, PETSC_ERR_FILE_WRITE, "-output %s: cannot rename the finished file into place", path_.c_str());
+  PetscCheck(ok, mesh_->comm, PETSC_ERR_FILE_WRITE, "-output %s: cannot rename the finished file into place",
+             path_.c_str());
   PetscCall(PetscLogEventEnd(Log::output, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -166,13 +172,20 @@ PetscErrorCode ResultWriter::WriteXdmf() const
     x << " <Grid Name=\"step" << k << "\" GridType=\"Uniform\">\n";
     x << "  <Time Value=\"" << times_[k] << "\"/>\n";
     x << "  <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << nc << "\">\n";
-    x << "   <DataItem Format=\"HDF\" DataType=\"Int\" Dimensions=\"" << nc << " 4\">" << h5 << ":/viz/topology/cells</DataItem>\n  </Topology>\n";
+    x << "   <DataItem Format=\"HDF\" DataType=\"Int\" Dimensions=\"" << nc << " 4\">" << h5
+      << ":/viz/topology/cells</DataItem>\n  </Topology>\n";
     x << "  <Geometry GeometryType=\"XY\">\n";
-    x << "   <DataItem Format=\"HDF\" Dimensions=\"" << nv << " 2\">" << h5 << ":/geometry/vertices</DataItem>\n  </Geometry>\n";
+    x << "   <DataItem Format=\"HDF\" Dimensions=\"" << nv << " 2\">" << h5
+      << ":/geometry/vertices</DataItem>\n  </Geometry>\n";
     const auto hyperslab = [&](const std::string &path, PetscInt n, int comps) {
-      x << "   <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << n << (comps > 1 ? " " + std::to_string(comps) : "") << "\">\n";
-      x << "    <DataItem Dimensions=\"3 " << (comps > 1 ? 3 : 2) << "\" Format=\"XML\">" << k << " 0" << (comps > 1 ? " 0" : "") << " 1 1" << (comps > 1 ? " 1" : "") << " 1 " << n << (comps > 1 ? " " + std::to_string(comps) : "") << "</DataItem>\n";
-      x << "    <DataItem Format=\"HDF\" Dimensions=\"" << nt << " " << n << (comps > 1 ? " " + std::to_string(comps) : "") << "\">" << h5 << ":" << path << "</DataItem>\n   </DataItem>\n";
+      x << "   <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << n << (comps > 1 ? " " + std::to_string(comps) : "")
+        << "\">\n";
+      x << "    <DataItem Dimensions=\"3 " << (comps > 1 ? 3 : 2) << "\" Format=\"XML\">" << k << " 0"
+        << (comps > 1 ? " 0" : "") << " 1 1" << (comps > 1 ? " 1" : "") << " 1 " << n
+        << (comps > 1 ? " " + std::to_string(comps) : "") << "</DataItem>\n";
+      x << "    <DataItem Format=\"HDF\" Dimensions=\"" << nt << " " << n
+        << (comps > 1 ? " " + std::to_string(comps) : "") << "\">" << h5 << ":" << path
+        << "</DataItem>\n   </DataItem>\n";
     };
     x << "  <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n";
     hyperslab("/vertex_fields/displacement_u", nv, 2);

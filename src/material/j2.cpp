@@ -5,9 +5,8 @@
 namespace tf {
 
 J2Plasticity::J2Plasticity(double e, double nu, std::unique_ptr<Hardening> h, double dep_ref, bool drift_correction)
-  : elastic_(e, nu), h_(std::move(h)), g_(e / (2 * (1 + nu))), dep_ref_(dep_ref), drift_correction_(drift_correction)
-{
-}
+    : elastic_(e, nu), h_(std::move(h)), g_(e / (2 * (1 + nu))), dep_ref_(dep_ref), drift_correction_(drift_correction)
+{}
 
 Mat4 J2Plasticity::Tangent(const PointState &s) const
 {
@@ -32,7 +31,7 @@ double J2Plasticity::PlasticStep(double ep, double a, double sbar) const
   double lo = 0, hi = a / sbar, glo = g(lo), ghi = g(hi);
   if (ghi <= 0) return hi;
   int side = 0;
-  for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
+  for (int it = 0; it < kPlasticStepIterations && hi - lo > kPlasticStepTol * hi; ++it) {
     const double x = (lo * ghi - hi * glo) / (ghi - glo), gx = g(x);
     if (gx == 0) return x;
     if (gx < 0) {
@@ -84,7 +83,7 @@ UpdateInfo J2Plasticity::Update(PointState &s, const Voigt &deps) const
 
 double J2Plasticity::YieldOnset(const PointState &s, const Voigt &deps, double omega) const
 {
-  if (s.plastic) return 1e300;
+  if (s.plastic) return kNever;
   // Linear stress path sigma + r dsigma (elastic law, spin and Kirchhoff term);
   // 3/2 |dev(sigma + r dsigma)|^2 = sigma_y^2 is a quadratic in r.
   Voigt ds{};
@@ -96,13 +95,15 @@ double J2Plasticity::YieldOnset(const PointState &s, const Voigt &deps, double o
   const double trace = deps[0] + deps[1] + deps[2];
   for (int r = 0; r < 4; ++r) ds[r] += rotated[r] - s.sigma[r] - s.sigma[r] * trace;
   const Voigt s0 = Deviator(s.sigma), d1 = Deviator(ds);
-  const auto dot = [](const Voigt &x, const Voigt &y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + 2 * x[3] * y[3]; };
+  const auto dot = [](const Voigt &x, const Voigt &y) {
+    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + 2 * x[3] * y[3];
+  };
   const double sy = h_->YieldStress(s.ep);
   const double qa = 1.5 * dot(d1, d1), qb = 3 * dot(s0, d1), qc = 1.5 * dot(s0, s0) - sy * sy;
   // On the surface (within kOnSurface) or past it: not an r1 event; a loading
   // point there is switched to plastic by Loading, or marked at the commit.
-  if (VonMises(s.sigma) >= (1 - kOnSurface) * sy) return 1e300;
-  if (qa <= 0) return 1e300;
+  if (VonMises(s.sigma) >= (1 - kOnSurface) * sy) return kNever;
+  if (qa <= 0) return kNever;
   const double root = std::sqrt(qb * qb - 4 * qa * qc); // real since qc < 0 < qa
   // The positive root, in the form free of cancellation for either sign of qb.
   return qb >= 0 ? -2 * qc / (qb + root) : (-qb + root) / (2 * qa);

@@ -41,7 +41,8 @@ SerialMesh GenerateRectangle(double lx, double ly, int nx, int ny)
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) m.xy.insert(m.xy.end(), {lx * i / nx, ly * j / ny});
   for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) m.quads.insert(m.quads.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+    for (int i = 0; i < nx; ++i)
+      m.quads.insert(m.quads.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
   for (int i = 0; i < nx; ++i) {
     m.edge_sets["bottom"].push_back({id(i, 0), id(i + 1, 0)});
     m.edge_sets["top"].push_back({id(i, ny), id(i + 1, ny)});

@@ -46,7 +46,8 @@ std::string ReadGmsh(const std::string &path, SerialMesh &mesh)
   int filetype = -1, datasize = 0;
   if (!(r.in >> version >> filetype >> datasize)) return "mesh file '" + path + "': unreadable $MeshFormat line";
   if (version < 4.09 || version > 4.11 || filetype != 0)
-    return "mesh file '" + path + "': only Gmsh format 4.1 ASCII is supported (re-export with 'gmsh -format msh41 -save')";
+    return "mesh file '" + path +
+           "': only Gmsh format 4.1 ASCII is supported (re-export with 'gmsh -format msh41 -save')";
 
   // Physical names of dimension 1 (curves).
   std::unordered_map<int, std::string> curve_names;
@@ -134,7 +135,9 @@ std::string ReadGmsh(const std::string &path, SerialMesh &mesh)
       size_t n;
       r.in >> edim >> etag >> etype >> n;
       const int nper = etype == 1 ? 2 : etype == 2 ? 3 : etype == 3 ? 4 : etype == 15 ? 1 : -1;
-      if (nper < 0) return "mesh file '" + path + "': element type " + std::to_string(etype) + " is not supported (use 4-node quads, 'Recombine' in the .geo)";
+      if (nper < 0)
+        return "mesh file '" + path + "': element type " + std::to_string(etype) +
+               " is not supported (use 4-node quads, 'Recombine' in the .geo)";
       for (size_t k = 0; k < n; ++k) {
         size_t tag;
         r.in >> tag;
@@ -143,11 +146,15 @@ std::string ReadGmsh(const std::string &path, SerialMesh &mesh)
           size_t nt;
           r.in >> nt;
           auto it = node_index.find(nt);
-          if (it == node_index.end()) return "mesh file '" + path + "': element " + std::to_string(tag) + " refers to unknown node " + std::to_string(nt);
+          if (it == node_index.end())
+            return "mesh file '" + path + "': element " + std::to_string(tag) + " refers to unknown node " +
+                   std::to_string(nt);
           ids[q] = it->second;
         }
-        if (etype == 3) mesh.quads.insert(mesh.quads.end(), ids, ids + 4);
-        else if (etype == 2 && edim == 2) ++unsupported;
+        if (etype == 3)
+          mesh.quads.insert(mesh.quads.end(), ids, ids + 4);
+        else if (etype == 2 && edim == 2)
+          ++unsupported;
         else if (etype == 1) {
           auto ph = curve_physicals.find(etag);
           if (ph == curve_physicals.end()) continue;
@@ -160,7 +167,9 @@ std::string ReadGmsh(const std::string &path, SerialMesh &mesh)
       }
     }
     if (!r.in) return "mesh file '" + path + "': truncated $Elements section";
-    if (unsupported) return "mesh file '" + path + "' has " + std::to_string(unsupported) + " triangles: only quadrilateral meshes are supported (add 'Recombine Surface' to the .geo)";
+    if (unsupported)
+      return "mesh file '" + path + "' has " + std::to_string(unsupported) +
+             " triangles: only quadrilateral meshes are supported (add 'Recombine Surface' to the .geo)";
   }
 
   // Keep only the nodes the cells use (geometry points may carry nodes of their own).
@@ -176,7 +185,8 @@ std::string ReadGmsh(const std::string &path, SerialMesh &mesh)
   }
   for (auto &set : mesh.edge_sets)
     for (auto &e : set.second) {
-      if (renum[e[0]] < 0 || renum[e[1]] < 0) return "mesh file '" + path + "': boundary set '" + set.first + "' has an edge not on any quadrilateral";
+      if (renum[e[0]] < 0 || renum[e[1]] < 0)
+        return "mesh file '" + path + "': boundary set '" + set.first + "' has an edge not on any quadrilateral";
       e = {renum[e[0]], renum[e[1]]};
     }
   mesh.xy.swap(xy);

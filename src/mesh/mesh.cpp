@@ -2,7 +2,7 @@
 
 #include <petscsf.h>
 
-#include "tubeform/core.hpp"
+#include "tubeform/core/core.hpp"
 #include "tubeform/mesh/partition.hpp"
 
 namespace tf {
@@ -28,7 +28,8 @@ PetscErrorCode Mesh::Create(MPI_Comm c, const SerialMesh &serial, const std::vec
   // 1. Rank 0 builds the whole mesh; the others contribute nothing.
   const PetscInt nc = rank == 0 ? serial.num_cells() : 0, nv = rank == 0 ? serial.num_nodes() : 0;
   std::vector<PetscInt> cells(serial.quads.begin(), serial.quads.end());
-  PetscCall(DMPlexCreateFromCellListPetsc(comm, 2, nc, nv, 4, PETSC_TRUE, rank == 0 ? cells.data() : nullptr, 2, rank == 0 ? serial.xy.data() : nullptr, &serial_dm));
+  PetscCall(DMPlexCreateFromCellListPetsc(comm, 2, nc, nv, 4, PETSC_TRUE, rank == 0 ? cells.data() : nullptr, 2,
+                                          rank == 0 ? serial.xy.data() : nullptr, &serial_dm));
   PetscCall(PetscObjectSetName((PetscObject)serial_dm, "mesh"));
 
   // 2. Boundary sets become labels on edges (and, completed, their vertices);
@@ -43,7 +44,9 @@ PetscErrorCode Mesh::Create(MPI_Comm c, const SerialMesh &serial, const std::vec
         PetscInt njoin;
         const PetscInt *join;
         PetscCall(DMPlexGetJoin(serial_dm, 2, verts, &njoin, &join));
-        PetscCheck(njoin == 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Boundary set '%s': nodes %d and %d are not joined by a cell edge", name.c_str(), (int)e[0], (int)e[1]);
+        PetscCheck(njoin == 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+                   "Boundary set '%s': nodes %d and %d are not joined by a cell edge", name.c_str(), (int)e[0],
+                   (int)e[1]);
         PetscCall(DMLabelSetValue(label, join[0], 1));
         PetscCall(DMPlexRestoreJoin(serial_dm, 2, verts, &njoin, &join));
       }
@@ -61,7 +64,8 @@ PetscErrorCode Mesh::Create(MPI_Comm c, const SerialMesh &serial, const std::vec
       std::vector<std::vector<PetscInt>> byrank(size);
       for (PetscInt cidx = 0; cidx < nc; ++cidx) byrank[part[cidx]].push_back(cidx);
       for (int r = 0; r < size; ++r) {
-        PetscCheck(!byrank[r].empty(), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "METIS left rank %d without cells: use fewer ranks or a finer mesh", r);
+        PetscCheck(!byrank[r].empty(), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+                   "METIS left rank %d without cells: use fewer ranks or a finer mesh", r);
         sizes[r] = (PetscInt)byrank[r].size();
         points.insert(points.end(), byrank[r].begin(), byrank[r].end());
       }
@@ -75,7 +79,8 @@ PetscErrorCode Mesh::Create(MPI_Comm c, const SerialMesh &serial, const std::vec
   if (dist) {
     PetscCall(DMDestroy(&serial_dm));
     dm = dist;
-  } else dm = serial_dm;
+  } else
+    dm = serial_dm;
   PetscCall(PetscObjectSetName((PetscObject)dm, "mesh"));
 
   // 4. Two displacement dofs per vertex; one value per cell on the clone.
@@ -206,7 +211,8 @@ PetscErrorCode Mesh::BuildTables(const std::vector<std::string> &sets, PetscSF m
     PetscCall(ISGetIndices(is, &pts));
     for (PetscInt q = 0; q < n; ++q) {
       const PetscInt p = pts[q];
-      if (p >= vstart_ && p < ve) nodes.push_back(p - vstart_);
+      if (p >= vstart_ && p < ve)
+        nodes.push_back(p - vstart_);
       else if (p < cstart_ || p >= ce) {
         PetscInt nsupp, ncone;
         const PetscInt *supp, *cone;

@@ -2,7 +2,7 @@
 
 #include <metis.h>
 
-#include "tubeform/core.hpp"
+#include "tubeform/core/core.hpp"
 
 namespace tf {
 
@@ -12,7 +12,8 @@ PetscErrorCode PartitionCells(const SerialMesh &mesh, int nparts, std::vector<in
   idx_t ne = mesh.num_cells(), nn = mesh.num_nodes();
   part.assign(ne, 0);
   if (nparts <= 1 || ne == 0) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(ne >= nparts, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Mesh has %d cells, fewer than the %d MPI ranks: use fewer ranks or a finer mesh", (int)ne, nparts);
+  PetscCheck(ne >= nparts, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "Mesh has %d cells, fewer than the %d MPI ranks: use fewer ranks or a finer mesh", (int)ne, nparts);
 
   std::vector<idx_t> eptr(ne + 1), eind(mesh.quads.begin(), mesh.quads.end()), epart(ne), npart(nn);
   for (idx_t c = 0; c <= ne; ++c) eptr[c] = 4 * c;
@@ -21,7 +22,8 @@ PetscErrorCode PartitionCells(const SerialMesh &mesh, int nparts, std::vector<in
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_SEED] = 7; // deterministic partitions, run to run
   PetscStackPushExternal("METIS_PartMeshDual");
-  const int err = METIS_PartMeshDual(&ne, &nn, eptr.data(), eind.data(), nullptr, nullptr, &ncommon, &np, nullptr, options, &objval, epart.data(), npart.data());
+  const int err = METIS_PartMeshDual(&ne, &nn, eptr.data(), eind.data(), nullptr, nullptr, &ncommon, &np, nullptr,
+                                     options, &objval, epart.data(), npart.data());
   PetscStackPop;
   PetscCheck(err == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "METIS_PartMeshDual failed with code %d", err);
   for (idx_t c = 0; c < ne; ++c) part[c] = static_cast<int>(epart[c]);

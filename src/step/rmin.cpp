@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tubeform/core.hpp"
-
 namespace tf {
+
+const char *LimiterName(int code)
+{
+  static const char *names[kNumLimiters] = {"trial",    "final",   "yield",      "strain",
+                                            "rotation", "contact", "separation", "stick"};
+  return code >= 0 && code < kNumLimiters ? names[code] : "unknown";
+}
 
 double MaxPrincipalStrain(const fe::Voigt &e)
 {

@@ -25,7 +25,6 @@ Projection Tool::Project(const Vec2 &x) const
 {
   Projection best;
   const Vec2 off = Offset();
-  const double tol = 1e-12;
   for (size_t k = 0; k < segments.size(); ++k) {
     const Segment &s = segments[k];
     Projection p;
@@ -33,7 +32,7 @@ Projection Tool::Project(const Vec2 &x) const
     if (s.kind == Segment::Line) {
       const Vec2 a = Add(s.a, off), b = Add(s.b, off), ab = Sub(b, a);
       const double len2 = Dot(ab, ab), t = Dot(Sub(x, a), ab) / len2;
-      if (t < -tol || t > 1 + tol) continue;
+      if (t < -kOnSegment || t > 1 + kOnSegment) continue;
       p.point = Add(a, Scale(ab, std::min(1.0, std::max(0.0, t))));
       p.n = s.n_line;
       p.curvature = 0;
@@ -42,7 +41,7 @@ Projection Tool::Project(const Vec2 &x) const
       const double r = std::hypot(d[0], d[1]);
       if (r == 0) continue;
       const double t = AngleFrom(d, s.t0);
-      if (t > s.t1 + tol) continue;
+      if (t > s.t1 + kOnSegment) continue;
       const Vec2 e = {d[0] / r, d[1] / r};
       p.point = Add(c, Scale(e, s.radius));
       p.n = s.concave ? Scale(e, -1) : e;
@@ -59,8 +58,7 @@ double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
 {
   // Relative motion in the tool's frame: y(r) = x - off + r (dx - dU direction).
   const Vec2 off = Offset(), y0 = Sub(x, off), dy = Sub(dx, Scale(direction, dU));
-  double rmin = 1e300;
-  const double tol = 1e-12;
+  double rmin = kNever;
   for (const Segment &s : segments) {
     if (s.kind == Segment::Line) {
       // (y(r) - a) . n = 0  ->  r = -(y0 - a).n / dy.n, approaching only.
@@ -70,7 +68,7 @@ double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
       if (r <= 0 || r > 1) continue;
       const Vec2 ab = Sub(s.b, s.a), hit = Add(y0, Scale(dy, r));
       const double t = Dot(Sub(hit, s.a), ab) / Dot(ab, ab);
-      if (t < -tol || t > 1 + tol) continue;
+      if (t < -kOnSegment || t > 1 + kOnSegment) continue;
       rmin = std::min(rmin, r);
     } else {
       // |y(r) - c|^2 = R^2: A r^2 + B r + C = 0, C = |y0 - c|^2 - R^2.
@@ -85,7 +83,7 @@ double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
       for (double r : {(-qb - sq) / (2 * qa), (-qb + sq) / (2 * qa)}) {
         if (r <= 0 || r > 1) continue;
         const Vec2 hit = Sub(Add(y0, Scale(dy, r)), s.c);
-        if (AngleFrom(hit, s.t0) > s.t1 + tol) continue;
+        if (AngleFrom(hit, s.t0) > s.t1 + kOnSegment) continue;
         // Only a crossing towards the tool side counts.
         const Vec2 e = {hit[0], hit[1]};
         const double radial = Dot(e, dy);

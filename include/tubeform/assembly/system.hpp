@@ -18,10 +18,14 @@
 
 namespace tf {
 
+// A direction counts as a node frame's axis when its component along the axis
+// is 1 within this (round-off of the frame angle's sine and cosine).
+constexpr double kAxisTol = 1e-12;
+
 struct Prescribed {
-  PetscInt node;  // local node
-  int comp;       // 0 = x (or l), 1 = y (or n) in the node's frame
-  double value;   // displacement increment
+  PetscInt node; // local node
+  int comp;      // 0 = x (or l), 1 = y (or n) in the node's frame
+  double value;  // displacement increment
 };
 
 class System {

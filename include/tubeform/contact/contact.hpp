@@ -4,87 +4,130 @@
 // its normal force is the reaction, and friction enters as an unsymmetric
 // correction of its l row. State lives on every rank for its local nodes
 // (owned and ghost) and is updated identically from ghost-filled vectors.
+// The driver holds the set; scenes read its forces for their measurements.
 #pragma once
 
 #include <petscvec.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "tubeform/assembly/system.hpp"
+#include "tubeform/mesh/mesh.hpp"
 #include "tubeform/step/rmin.hpp"
 #include "tubeform/tool/tool.hpp"
 
 namespace tf {
 
-class Problem;
+// Tolerances of the contact set.
+// A node on the tool surface within this (relative to the coordinates' size) starts in contact.
+constexpr double kStartGap = 1e-9;
+// A contact force below this fraction of the largest counts as zero (a grazing node).
+constexpr double kSmallForce = 1e-6;
+// Friction iterations measure the change of f_l against f_n, but not below
+// this many "zero" forces (a thousandth of the largest): a node carrying
+// almost nothing does not hold the iteration.
+constexpr double kFloorOfSmallForces = 1e3;
+// After this many friction iterates the updates are under-relaxed by kRelax:
+// the tanh law can make plain iterates oscillate between sticking and sliding.
+constexpr int kPlainIterations = 6;
+constexpr double kRelax = 0.5;
+// A node whose normal force fell to this fraction of its start value (and below
+// zero) in a committed step separates: the round-off of a re-solved step.
+constexpr double kSeparated = 1e-9;
+// A node whose normal force would vanish within this fraction of a
+// quasi-static step is released in the trial rather than cutting the step
+// (round-off; with inertia the controller passes its shortest step instead).
+constexpr double kReleaseWithin = 1e-9;
+// The frame (l, n) contains a symmetry plane's held direction when |s.l| = 1 within this.
+constexpr double kFrameAxisTol = 1e-9;
 
 struct ContactParams {
-  double mu = 0;          // Coulomb coefficient
-  double vcri = 0.01;     // quasi-stick slip (mm)
-  double dphi_max = 1.0;  // r6: largest change of f_l / (mu f_n) in an increment
-  double tol = 1e-4;      // friction iterations: change of f_l / (mu f_n) between iterates
+  double mu = 0;           // Coulomb coefficient
+  double vcri = 0.01;      // quasi-stick slip (mm)
+  double dphi_max = 1.0;   // r6: largest change of f_l / (mu f_n) in an increment
+  double tol = 1e-4;       // friction iterations: change of f_l / (mu f_n) between iterates
   double group_tol = 1e-6; // contact/separation events within (1 + tol) r_min go together
   double gap_tol = 1e-7;   // a free node this close to the surface (mm) is in contact
 };
 
+// What a scene asks of the driver's contact set.
+struct ContactSpec {
+  Tool tool;
+  std::string candidates; // the node set that may touch the tool (e.g. "outer")
+  // Node sets whose component along a global axis is held (e.g. x0 -> (1, 0)).
+  std::vector<std::pair<std::string, Vec2>> symmetry;
+  ContactParams params;
+};
+
 class ContactSet {
 public:
-  // `candidates`: the node set that may touch the tool (e.g. "outer").
-  // `symmetry`: node sets whose component along a global axis is held (e.g. x0 -> (1, 0)).
-  void Setup(Problem &p, Tool *tool, const std::string &candidates, const std::vector<std::pair<std::string, Vec2>> &symmetry, const ContactParams &prm);
-  PetscErrorCode Initialize(Problem &p); // nodes touching the tool at stroke 0
+  // `x`: the body's current coordinates (2 per local node), read at each call.
+  void Setup(Mesh &mesh, System &system, const std::vector<double> &x, ContactSpec spec);
+  PetscErrorCode Initialize(); // nodes touching the tool at stroke 0
+
+  // The tools are removed (the paper's unloading): every node is released and
+  // the set takes no further part in the increments.
+  void Remove();
+  bool active() const { return !removed_; }
+  void SetStroke(double stroke) { tool_.stroke = stroke; }
 
   // Frames of the contact nodes on the current geometry (before assembly).
-  PetscErrorCode BeginIncrement(Problem &p);
+  PetscErrorCode BeginIncrement();
   // New trial of a tool step: the committed active set, a new friction iteration sequence.
   void ResetIterates();
   // Friction iterate back to the increment's start (slip 0, committed f_n), no
   // predictor; the trial's releases stand.
   void LinearizeAtStart();
   // Prescribed normal motion (tool step dU, closing any gap) and friction rows.
-  PetscErrorCode Constrain(Problem &p, double dU);
+  PetscErrorCode Constrain(double dU);
   // After a solve: new slip iterates; converged when the friction forces changed
   // by less than tol (relative to mu f_n) on every rank.
-  PetscErrorCode UpdateIterates(Problem &p, Vec du, double dU, bool &converged);
+  PetscErrorCode UpdateIterates(Vec du, double dU, bool &converged);
   // Nodes that came into contact without force and that the solution du would
   // pull off the tool: counted, and released with `apply` for this trial (the
   // step is then re-solved; their force and slip state are dropped only when
   // the increment is committed, and a new trial starts from the committed set).
-  // A released node that the next solution leaves inside the tool is grazing:
-  // it goes back into contact and stays for the rest of the trial.
-  PetscErrorCode ReleasePulled(Problem &p, Vec du, double dU, bool apply, PetscInt &released);
+  // A node whose force would vanish within `release_fraction` of the step is
+  // released rather than limiting it. A released node that the next solution
+  // leaves inside the tool is grazing: it goes back into contact and stays for
+  // the rest of the trial.
+  PetscErrorCode ReleasePulled(Vec du, double dU, double release_fraction, bool apply, PetscInt &released);
   // r4 (contact), r5 (separation), r6 (stick / reversal) for the solution du of step dU.
-  PetscErrorCode LimitStep(Problem &p, Vec du, double dU, StepLimit &limit);
+  PetscErrorCode LimitStep(Vec du, double dU, StepLimit &limit);
   // Accepts the increment (du for tool step dU, reactions scaled by react_scale,
   // r the accepted fraction of the trial): forces, slip, events, and the
   // projection of contact nodes back onto the tool. Returns the friction work.
-  PetscErrorCode Commit(Problem &p, Vec du, double dU, double react_scale, double r, double &w_friction);
-  // Releases every node (tools removed) after recording their forces.
-  void ReleaseAll();
+  PetscErrorCode Commit(Vec du, double dU, double react_scale, double r, double &w_friction);
 
   // Friction forces on the body (owned nodes, global frame) into a contribution vector.
-  PetscErrorCode AddFrictionForces(Problem &p, Vec f) const;
+  PetscErrorCode AddFrictionForces(Vec f) const;
   // Contact force on the body of every owned contact node, global frame, added to f.
-  PetscErrorCode AddContactForces(Problem &p, Vec f) const;
-  // Sum over owned contact nodes of the force on the body (global frame), over ranks.
-  PetscErrorCode TotalForce(Problem &p, double force[2]) const;
-  PetscErrorCode Count(Problem &p, PetscInt &n) const;
-  // Sum over contact nodes of the normal force magnitude f_n.
-  PetscErrorCode NormalForceSum(Problem &p, double &sum) const;
-  // Largest penetration (>= 0) and largest tension (normal force < 0) over contact nodes.
-  PetscErrorCode Violations(Problem &p, double &penetration, double &tension) const;
+  PetscErrorCode AddContactForces(Vec f) const;
+  // Collective: sum over contact nodes of the force on the body (global frame).
+  PetscErrorCode TotalForce(double force[2]) const;
+  PetscErrorCode Count(PetscInt &n) const;
+  // Collective: sum over contact nodes of the normal force f_n.
+  PetscErrorCode NormalForceSum(double &sum) const;
+  // Collective: largest penetration (>= 0) and largest tension (normal force < 0) over contact nodes.
+  PetscErrorCode Violations(double &penetration, double &tension) const;
 
   bool InContact(PetscInt node) const { return contact_[node]; }
   int Segment(PetscInt node) const { return segment_[node]; }
-  const Tool &tool() const { return *tool_; }
+  const Tool &tool() const { return tool_; }
   bool friction() const { return prm_.mu > 0; }
 
 private:
-  Tool *tool_ = nullptr;
+  Mesh *mesh_ = nullptr;
+  System *system_ = nullptr;
+  const std::vector<double> *x_body_ = nullptr;
+  Tool tool_;
   ContactParams prm_;
+  bool removed_ = false;
   std::vector<PetscInt> candidates_;
   std::vector<char> contact_, global_frame_;
-  std::vector<Vec2> sym_dir_;      // held direction on a symmetry plane, {0, 0} if none
+  std::vector<Vec2> sym_dir_; // held direction on a symmetry plane, {0, 0} if none
   std::vector<int> segment_;
   std::vector<double> fn_, x_, gap_, kappa_, dxk_, fnk_, r4_, r5_;
   std::vector<double> rate_;    // slip per unit stroke of the latest solution: predicts the next iterate
@@ -93,11 +136,17 @@ private:
   bool settled_ = true; // the last friction iterate met the tolerance (or there is no friction)
   int iteration_ = 0;
   std::vector<char> released_, frozen_; // within the current step
-  double f_small_ = 0; // contact forces below this count as zero (1e-6 of the largest)
+  double f_small_ = 0;                  // contact forces below this count as zero
   std::vector<Vec2> n_, l_;
 
-  bool SlipFree(PetscInt node) const { return contact_[node] && !global_frame_[node] && sym_dir_[node][0] == 0 && sym_dir_[node][1] == 0; }
-  double NormalReaction(Problem &p, PetscInt node, const PetscScalar *react) const;
+  MPI_Comm comm() const { return mesh_->comm; }
+  bool SlipFree(PetscInt node) const
+  {
+    return contact_[node] && !global_frame_[node] && sym_dir_[node][0] == 0 && sym_dir_[node][1] == 0;
+  }
+  Vec2 Position(PetscInt node) const { return {(*x_body_)[2 * node], (*x_body_)[2 * node + 1]}; }
+  Vec2 Increment(const PetscScalar *d, PetscInt node) const;
+  double NormalReaction(PetscInt node, const PetscScalar *react) const;
   double Slip(PetscInt node, const Vec2 &u, double dU) const;
 };
 

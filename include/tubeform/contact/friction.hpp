@@ -46,7 +46,8 @@ inline double Force(double mu, double vcri, double fn, double x) { return -mu * 
 // r5) would otherwise give a negative tangential stiffness and can make the
 // iterations diverge. Only the iteration matrix changes, not the converged
 // solution: the same factor multiplies du_l and its right-hand-side partner.
-inline RowTerms Linearize(double mu, double vcri, double fn0, double fnk, double x0, double dxk, double dU_l, double kappa)
+inline RowTerms Linearize(double mu, double vcri, double fn0, double fnk, double x0, double dxk, double dU_l,
+                          double kappa)
 {
   RowTerms t;
   const double tk = Phi(x0 + dxk, vcri), dtk = DPhi(x0 + dxk, vcri) * (fnk > 0 ? 1.0 : 0.0);

@@ -17,6 +17,9 @@
 namespace tf::fe {
 
 constexpr int kInternal = 4;
+// Kii is taken as singular when a pivot falls below this fraction of its
+// largest entry (a degenerate cell: the modes cannot be condensed).
+constexpr double kPivotTol = 1e-13;
 
 // cond = -Kii^{-1} Kic (4 x 8): internal dofs of an increment, alpha = cond * du.
 using Condensation = std::array<std::array<double, kDofs>, kInternal>;
@@ -26,12 +29,14 @@ using InternalVec = std::array<double, kInternal>;
 // + (grad P_s . sigma_g . grad P_t) I over the 6 shape functions (4 nodal + 2 modes) ].
 // `geometric` = false drops Q and the initial-stress term. Returns false if
 // det J <= 0 at a Gauss point (inverted cell) or Kii is singular.
-bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond);
+bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const Voigt sigma[kGauss], bool geometric,
+                  ElemMat &ke, Condensation &cond);
 
 // deps = B12 [du; alpha] (zz = 0) and omega = (L_xy - L_yx) / 2 at Gauss point g,
 // L_ij = d(du_i)/dx_j including the modes, gradients on the configuration xe
 // (e.g. the mid-increment one). Returns false for an inverted cell.
-bool QM6Kinematics(const double xe[2 * kNodes], int g, const ElemVec &du, const InternalVec &alpha, Voigt &deps, double &omega);
+bool QM6Kinematics(const double xe[2 * kNodes], int g, const ElemVec &du, const InternalVec &alpha, Voigt &deps,
+                   double &omega);
 
 // f* = f_c + cond^T f_i with f_c = sum_g w det J B_c^T sigma_g and f_i the same
 // over the modes (f_i = 0 for a uniform stress). Returns false for an inverted cell.

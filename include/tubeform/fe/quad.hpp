@@ -53,7 +53,10 @@ Mat4 StressCorrection(const Voigt &sigma);
 Mat4 JaumannTangent(const Mat4 &tangent, const Voigt &sigma, bool geometric);
 
 // The initial-stress product grad_a . sigma . grad_b of two shape gradients.
-inline double InitialStress(const double ga[2], const double gb[2], const Voigt &s) { return ga[0] * (s[0] * gb[0] + s[3] * gb[1]) + ga[1] * (s[3] * gb[0] + s[1] * gb[1]); }
+inline double InitialStress(const double ga[2], const double gb[2], const Voigt &s)
+{
+  return ga[0] * (s[0] * gb[0] + s[3] * gb[1]) + ga[1] * (s[3] * gb[0] + s[1] * gb[1]);
+}
 
 // k += w B^T C B for a strain matrix of N columns (8 for Q4/B-bar, 12 for
 // QM6 with its incompatible modes); K is any N x N indexable matrix.
@@ -79,7 +82,8 @@ void AddBtCB(const double (&b)[kVoigt][N], const Mat4 &c, double w, K &k)
 // with C_g the tangent relating the Jaumann rate of Kirchhoff stress to d, and
 // the initial-stress part G^T S G = (grad N_a . sigma . grad N_b) I.
 // `geometric` = false drops the Q and initial-stress terms (small-strain tangent).
-void ElementStiffness(const QuadGeometry &geo, Formulation f, const Mat4 tangent[kGauss], const Voigt sigma[kGauss], bool geometric, ElemMat &ke);
+void ElementStiffness(const QuadGeometry &geo, Formulation f, const Mat4 tangent[kGauss], const Voigt sigma[kGauss],
+                      bool geometric, ElemMat &ke);
 
 // Increment kinematics at Gauss point g from the nodal increments du:
 // strain increment (Voigt, B-bar if chosen) and the spin increment

@@ -8,12 +8,6 @@
 
 namespace tf {
 
-// What set the size of an increment (the r_min factor that won, or the end
-// of the load path). Stored in the history as its integer code.
-enum class Limiter : int { Trial = 0, Final = 1, Yield = 2, Strain = 3, Rotation = 4, Contact = 5, Separation = 6, Stick = 7 };
-const char *LimiterName(int code);
-constexpr int kNumLimiters = 8;
-
 struct HistoryRow {
   double increment = 0, stroke = 0, load = 0, rmin = 1, limiter = 0, limiter_where = -1;
   double n_contact = 0, n_plastic = 0, friction_iters = 0, residual = 0;
@@ -23,6 +17,7 @@ struct HistoryRow {
   double r_corner_x = 0, r_corner_y = 0, penetration = 0, tension = 0, stage = 0, n_contact_apex = 0;
   double tool_fx = 0, tool_fy = 0;
   double w_kinetic = 0, w_inertia = 0, inertia = 0;
+  double slip = 0, fn_sum = 0;
 };
 
 struct HistoryColumn {

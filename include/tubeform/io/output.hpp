@@ -26,7 +26,8 @@ public:
   // Collective. Checks the path first: a clear error if it cannot be written.
   PetscErrorCode Open(const Mesh &mesh, const std::string &path);
   // Collective: one time-series entry. `u` holds 2 values per local node.
-  PetscErrorCode WriteStep(PetscInt step, double time, const std::vector<double> &u, const std::vector<CellField> &cells);
+  PetscErrorCode WriteStep(PetscInt step, double time, const std::vector<double> &u,
+                           const std::vector<CellField> &cells);
   // Collective: history, attributes, the .xmf, then the rename.
   PetscErrorCode Close(const History &history, const std::vector<std::pair<std::string, double>> &metrics);
 

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "tubeform/core/core.hpp"
 #include "tubeform/fe/quad.hpp"
 
 namespace tf {
@@ -13,9 +15,9 @@ using fe::Voigt;
 
 // State carried at each Gauss point from increment to increment.
 struct PointState {
-  Voigt sigma{};     // Cauchy stress {xx, yy, zz, xy}
-  double ep = 0;     // equivalent plastic strain
-  double hslope = 0; // hardening modulus H' of the last plastic update (0: not yet plastic)
+  Voigt sigma{};        // Cauchy stress {xx, yy, zz, xy}
+  double ep = 0;        // equivalent plastic strain
+  double hslope = 0;    // hardening modulus H' of the last plastic update (0: not yet plastic)
   bool plastic = false; // alpha of METHOD.md sec. 2: on the yield surface and loading
 };
 
@@ -30,7 +32,8 @@ struct MaterialParams {
   std::string name = "aluminum";
   std::string law = "ludwik";
   double E = 75000, nu = 0.34, sy = 165.3, K = 673.5, n = 0.927;
-  double density = 2.70e-9; // t/mm^3 (N, mm, s units): only -dynamics implicit uses it
+  double density = 2.70e-9;  // t/mm^3 (N, mm, s units): only -dynamics implicit uses it
+  std::vector<double> table; // ep0, sy0, ep1, sy1, ... for law "table"
 };
 
 // Fills `p` with a named preset; false when the name is unknown.
@@ -50,12 +53,12 @@ public:
   virtual double ElasticEnergy(const Voigt &sigma) const = 0;
   // r1 of METHOD.md sec. 4: the fraction of the trial increment (deps, omega)
   // at which an elastic point reaches the yield surface; infinity if never.
-  virtual double YieldOnset(const PointState &, const Voigt &, double) const { return 1e300; }
+  virtual double YieldOnset(const PointState &, const Voigt &, double) const { return kNever; }
   // alpha for the coming increment given the trial strain increment: a plastic
   // point that unloads (s : deps < 0) turns elastic; an elastic point on the
   // yield surface that loads turns plastic.
   virtual bool Loading(const PointState &, const Voigt &) const { return false; }
-  virtual double YieldStress(double) const { return 1e300; }
+  virtual double YieldStress(double) const { return kNever; }
   virtual bool plastic_law() const { return false; }
 };
 
@@ -94,6 +97,9 @@ void RotateStress(ObjectiveScheme scheme, double omega, Voigt &sigma, double fra
 Voigt Deviator(const Voigt &s);
 double VonMises(const Voigt &s);
 // s : e with e in Voigt strain form (gamma_xy = 2 e_xy).
-inline double DevDotStrain(const Voigt &s, const Voigt &e) { return s[0] * e[0] + s[1] * e[1] + s[2] * e[2] + s[3] * e[3]; }
+inline double DevDotStrain(const Voigt &s, const Voigt &e)
+{
+  return s[0] * e[0] + s[1] * e[1] + s[2] * e[2] + s[3] * e[3];
+}
 
 } // namespace tf

@@ -14,6 +14,11 @@ namespace tf {
 // A point within this relative distance of the yield surface counts as on it:
 // events resolved to round-off (or by a re-solved step) are not new events.
 constexpr double kOnSurface = 1e-6;
+// The plastic step (T2) is solved by regula falsi to this relative width of
+// its bracket (round-off), within this many iterations (Illinois converges in
+// a few dozen; the cap only guards against a non-monotone table).
+constexpr double kPlasticStepTol = 1e-15;
+constexpr int kPlasticStepIterations = 200;
 
 class J2Plasticity : public Material {
 public:

@@ -14,8 +14,8 @@
 namespace tf {
 
 struct BoundaryEdge {
-  PetscInt cell;     // local cell the edge bounds
-  PetscInt node[2];  // local node indices
+  PetscInt cell;    // local cell the edge bounds
+  PetscInt node[2]; // local node indices
 };
 
 class Mesh {
@@ -33,14 +33,14 @@ public:
   DM dm = nullptr;      // 2 displacement dofs per vertex
   DM cell_dm = nullptr; // 1 dof per cell, for cell (quadrature-averaged) fields
 
-  PetscInt num_cells = 0, num_nodes = 0;             // local, nodes include ghosts
+  PetscInt num_cells = 0, num_nodes = 0; // local, nodes include ghosts
   PetscInt num_global_cells = 0, num_global_nodes = 0;
-  std::vector<PetscInt> cell_nodes; // 4 local node ids per local cell, counter-clockwise
-  std::vector<PetscInt> node_dof;   // local vector offset of each node's first dof
-  std::vector<char> node_owned;     // 1 where this rank owns the node
-  std::vector<PetscInt> node_orig;  // node id in the serial (input) mesh
-  std::vector<PetscInt> cell_orig;  // cell id in the serial (input) mesh
-  std::vector<double> x0;           // initial coordinates, 2 per local node
+  std::vector<PetscInt> cell_nodes;                           // 4 local node ids per local cell, counter-clockwise
+  std::vector<PetscInt> node_dof;                             // local vector offset of each node's first dof
+  std::vector<char> node_owned;                               // 1 where this rank owns the node
+  std::vector<PetscInt> node_orig;                            // node id in the serial (input) mesh
+  std::vector<PetscInt> cell_orig;                            // cell id in the serial (input) mesh
+  std::vector<double> x0;                                     // initial coordinates, 2 per local node
   std::map<std::string, std::vector<PetscInt>> node_sets;     // local node ids
   std::map<std::string, std::vector<BoundaryEdge>> edge_sets; // edges of local cells
 

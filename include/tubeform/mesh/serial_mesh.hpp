@@ -13,8 +13,8 @@ namespace tf {
 inline const std::array<std::string, 4> kBoundaryNames = {"inner", "outer", "x0", "y0"};
 
 struct SerialMesh {
-  std::vector<double> xy;                 // 2 * num_nodes coordinates
-  std::vector<int> quads;                 // 4 * num_cells node ids, counter-clockwise
+  std::vector<double> xy;                                           // 2 * num_nodes coordinates
+  std::vector<int> quads;                                           // 4 * num_cells node ids, counter-clockwise
   std::map<std::string, std::vector<std::array<int, 2>>> edge_sets; // boundary edges by name
 
   int num_nodes() const { return static_cast<int>(xy.size() / 2); }

@@ -1,21 +1,37 @@
-// The r_min controller of METHOD.md section 4 (Yamada et al. 1968; paper eq. 16):
-// every increment is a linear solution for a trial step, scaled by
-//   r_min = min(1, r1, ..., r6)
-// so that nothing that would make it non-linear happens inside it. Each factor
-// is a named function here; contact adds r4-r6 with the tools.
+// The r factors of the r_min controller (METHOD.md section 4; Yamada et al.
+// 1968; paper eq. 16): every increment is a linear solution for a trial step,
+// scaled by r_min = min(1, r1, ..., r6) so that nothing that would make it
+// non-linear happens inside it. The Gauss-point factors (r1-r3) are computed
+// by the body, the contact factors (r4-r6) by the contact set; this header
+// names them and keeps the running minimum.
 #pragma once
 
 #include <petscsys.h>
 
+#include "tubeform/core/core.hpp"
 #include "tubeform/fe/quad.hpp"
-#include "tubeform/io/history.hpp"
 
 namespace tf {
+
+// What set the size of an increment (the r_min factor that won, or the end of
+// the load path). Stored in the history as its integer code.
+enum class Limiter : int {
+  Trial = 0,
+  Final = 1,
+  Yield = 2,
+  Strain = 3,
+  Rotation = 4,
+  Contact = 5,
+  Separation = 6,
+  Stick = 7
+};
+constexpr int kNumLimiters = 8;
+const char *LimiterName(int code);
 
 // The smallest factor offered so far, what it was and where (input numbering of
 // the element or node).
 struct StepLimit {
-  double r = 1e300;
+  double r = kNever;
   Limiter who = Limiter::Trial;
   PetscInt where = -1;
   void Offer(double factor, Limiter what, PetscInt at)
@@ -34,10 +50,13 @@ double MaxPrincipalStrain(const fe::Voigt &e);
 inline double StrainFactor(const fe::Voigt &deps, double deps_max)
 {
   const double e = MaxPrincipalStrain(deps);
-  return e > 0 ? deps_max / e : 1e300;
+  return e > 0 ? deps_max / e : kNever;
 }
 
 // r3: the factor that brings the rotation increment |omega| to domega_max.
-inline double RotationFactor(double omega, double domega_max) { return omega != 0 ? domega_max / std::abs(omega) : 1e300; }
+inline double RotationFactor(double omega, double domega_max)
+{
+  return omega != 0 ? domega_max / std::abs(omega) : kNever;
+}
 
 } // namespace tf

@@ -6,18 +6,25 @@
 #include <string>
 #include <vector>
 
+#include "tubeform/core/core.hpp"
+
 namespace tf {
 
 using Vec2 = std::array<double, 2>;
+
+// A point whose projection falls this far (in units of the segment's length
+// or angle range) past a segment's end still projects on it: joints between
+// segments are found to round-off.
+constexpr double kOnSegment = 1e-12;
 
 // One piece of a tool's working surface. The body lies on the side the
 // outward normal n points to; l = n turned by -90 degrees (so (l, n) is a
 // right-handed frame).
 struct Segment {
   enum Kind { Line, Arc } kind = Line;
-  Vec2 a{}, b{};       // line: end points
-  Vec2 c{};            // arc: centre
-  double radius = 0;   // arc radius
+  Vec2 a{}, b{};         // line: end points
+  Vec2 c{};              // arc: centre
+  double radius = 0;     // arc radius
   double t0 = 0, t1 = 0; // arc: angle range [t0, t1] (radians, t0 < t1)
   bool concave = false;  // arc: the body is inside the circle (n points to the centre)
   Vec2 n_line{};         // line: outward normal (towards the body)
@@ -25,10 +32,10 @@ struct Segment {
 
 // Where a point is with respect to the tool surface.
 struct Projection {
-  int segment = -1;    // closest segment; -1 if the point projects on none
-  Vec2 point{};        // closest point on the surface
-  Vec2 n{}, l{};       // outward normal and tangent there
-  double gap = 1e300;  // signed distance along n: > 0 outside the tool, < 0 penetrating
+  int segment = -1;     // closest segment; -1 if the point projects on none
+  Vec2 point{};         // closest point on the surface
+  Vec2 n{}, l{};        // outward normal and tangent there
+  double gap = kNever;  // signed distance along n: > 0 outside the tool, < 0 penetrating
   double curvature = 0; // +1/radius on concave arcs, -1/radius on convex ones, 0 on lines
 };
 

@@ -1,4 +1,5 @@
-// PETSc log events and stages: -log_view is tubeform's profiler.
+// PETSc log events and stages: -log_view is tubeform's profiler (one event per
+// hot routine, one stage per phase of a run).
 #pragma once
 
 #include <petscsys.h>
@@ -6,7 +7,7 @@
 namespace tf {
 
 struct Log {
-  static PetscLogEvent assemble, apply_bc, solve, update, output, mesh;
+  static PetscLogEvent mesh, assemble, apply_bc, solve, scan, contact, commit, measure, output;
   static PetscLogStage setup_stage, load_stage, output_stage;
   // Registers the events once; later calls do nothing.
   static PetscErrorCode Register();

@@ -1,10 +1,11 @@
-#include "tubeform/driver/log.hpp"
+#include "tubeform/core/log.hpp"
 
-#include "tubeform/core.hpp"
+#include "tubeform/core/core.hpp"
 
 namespace tf {
 
-PetscLogEvent Log::assemble = 0, Log::apply_bc = 0, Log::solve = 0, Log::update = 0, Log::output = 0, Log::mesh = 0;
+PetscLogEvent Log::mesh = 0, Log::assemble = 0, Log::apply_bc = 0, Log::solve = 0, Log::scan = 0, Log::contact = 0,
+              Log::commit = 0, Log::measure = 0, Log::output = 0;
 PetscLogStage Log::setup_stage = 0, Log::load_stage = 0, Log::output_stage = 0;
 
 PetscErrorCode Log::Register()
@@ -19,7 +20,10 @@ PetscErrorCode Log::Register()
   PetscCall(PetscLogEventRegister("TfAssemble", id, &assemble));
   PetscCall(PetscLogEventRegister("TfApplyBC", id, &apply_bc));
   PetscCall(PetscLogEventRegister("TfSolve", id, &solve));
-  PetscCall(PetscLogEventRegister("TfUpdate", id, &update));
+  PetscCall(PetscLogEventRegister("TfScan", id, &scan));
+  PetscCall(PetscLogEventRegister("TfContact", id, &contact));
+  PetscCall(PetscLogEventRegister("TfCommit", id, &commit));
+  PetscCall(PetscLogEventRegister("TfMeasure", id, &measure));
   PetscCall(PetscLogEventRegister("TfOutput", id, &output));
   PetscCall(PetscLogStageRegister("TfSetup", &setup_stage));
   PetscCall(PetscLogStageRegister("TfLoading", &load_stage));

@@ -16,11 +16,8 @@ namespace tf {
 // iterations do not settle in quasi-static steps (docs/theory.md, "Inertia").
 enum class Dynamics { Quasistatic, Implicit, Auto };
 
-enum class SceneKind { Squaring, Flattening, Pressure, Shear, Rotation, Column, Tension, Slide };
-
 struct Options {
-  SceneKind scene = SceneKind::Pressure;
-  std::string scene_name = "pressure";
+  std::string scene = "pressure"; // a name of the scene registry (scenes/registry.hpp)
   // Geometry and mesh
   double tube_ro = 17.5, tube_t = 1.5;
   PetscInt mesh_nt = 4, mesh_ntheta = 48;
@@ -29,28 +26,27 @@ struct Options {
   std::string element_name = "bbar";
   // Material
   MaterialParams material;
-  std::vector<double> material_table; // ep0, sy0, ep1, sy1, ... for -material_law table
   // Incremental driver (METHOD.md sec. 4)
-  PetscInt increments = 10;            // trial increments over the load path
-  double rmin_deps = 2e-3;             // r2: largest principal strain increment
-  double rmin_domega = 1e-2;           // r3: largest rotation increment (rad)
-  double rmin_group_tol = 1e-6;        // events within (1 + tol) r_min are taken together
+  PetscInt increments = 10;     // trial increments over the load path
+  double rmin_deps = 2e-3;      // r2: largest principal strain increment
+  double rmin_domega = 1e-2;    // r3: largest rotation increment (rad)
+  double rmin_group_tol = 1e-6; // events within (1 + tol) r_min are taken together
   PetscInt rmin_max_increments = 100000;
   PetscInt rmin_stall_increments = 1000; // stop when this many increments advance lambda by < 1e-6 together
-  PetscInt rmin_max_redo = 10;         // re-solves per increment for loading/unloading switches
+  PetscInt rmin_max_redo = 10;           // re-solves per increment for loading/unloading switches
   PetscInt friction_max_iters = 30;
   PetscBool drift_correction = PETSC_FALSE;
   PetscBool residual_correction = PETSC_FALSE;
-  Dynamics dynamics = Dynamics::Quasistatic; // implicit/auto: lumped mass, backward Euler
-  double dynamics_time = 1.0;          // s for lambda 0 -> 1 (scenes without tools)
-  double punch_speed = 1.0;            // mm/s (tool scenes: duration = stroke / speed)
+  Dynamics dynamics = Dynamics::Quasistatic;             // implicit/auto: lumped mass, backward Euler
+  double dynamics_time = 1.0;                            // s for lambda 0 -> 1 (scenes without tools)
+  double punch_speed = 1.0;                              // mm/s (tool scenes: duration = stroke / speed)
   ObjectiveScheme kinematics = ObjectiveScheme::Forward; // METHOD.md sec. 2 as written
   // Scene parameters
   double pressure_p = 50.0;
   std::string pressure_control = "load";
   double pressure_u = 0.1;
-  double stroke = 4.2;                 // final tool stroke / prescribed end displacement (mm)
-  double stroke_corner_radius = 0;     // > 0: stroke from the paper's corner-radius rule
+  double stroke = 4.2;             // final tool stroke / prescribed end displacement (mm)
+  double stroke_corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
   // Tools, contact, friction (METHOD.md sec. 1, 3)
   double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
   double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
@@ -60,9 +56,9 @@ struct Options {
   double shear_gamma = 1.0;
   double slide_n = 100.0, slide_push = 0.2; // slide scene: normal force (N/mm, arc: pressure MPa), push (mm)
   std::string slide_tool = "flat";
-  double tension_strain = 0.1;        // signed: < 0 compresses
-  double rotation_angle = 90.0;        // degrees
-  double rotation_strain = 1e-3;       // prestretch before the rotation
+  double tension_strain = 0.1;   // signed: < 0 compresses
+  double rotation_angle = 90.0;  // degrees
+  double rotation_strain = 1e-3; // prestretch before the rotation
   double column_l = 25.0, column_t = 1.0, column_imperfection = 0.025;
   // Output
   std::string output = "results/tubeform.h5";
@@ -72,8 +68,9 @@ struct Options {
   PetscBool help = PETSC_FALSE;
 };
 
-// Collective: reads and validates the options. Errors are PETSC_ERR_USER_INPUT
-// with a message naming the option and what is allowed.
-PetscErrorCode ReadOptions(MPI_Comm comm, Options &opt);
+// Collective: reads and validates the options; `scenes` are the names -scene
+// accepts. Errors are PETSC_ERR_USER_INPUT with a message naming the option
+// and what is allowed.
+PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes, Options &opt);
 
 } // namespace tf

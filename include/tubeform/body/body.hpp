@@ -1,0 +1,83 @@
+// The deformable body: its current coordinates and displacements, the state
+// of every Gauss point, the material law and the element formulation, and
+// the loops over the cells that the incremental method needs (METHOD.md
+// sections 2 and 4): the tangent K into the global system, the scan of a
+// trial increment for r1-r3 and loading switches, the commit of an
+// increment, the internal force and the stored elastic energy.
+#pragma once
+
+#include <petscvec.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "tubeform/assembly/system.hpp"
+#include "tubeform/fe/formulation.hpp"
+#include "tubeform/material/elastic.hpp"
+#include "tubeform/mesh/mesh.hpp"
+#include "tubeform/step/rmin.hpp"
+
+namespace tf {
+
+struct BodyParams {
+  fe::Formulation element = fe::Formulation::BBar;
+  MaterialParams material;
+  double rmin_deps = 2e-3;   // r2: largest principal strain increment
+  double rmin_domega = 1e-2; // r3: largest rotation increment (rad)
+  double group_tol = 1e-6;   // points reaching yield within (1 + tol) r_min turn plastic together
+  bool drift_correction = false;
+  ObjectiveScheme kinematics = ObjectiveScheme::Forward;
+};
+
+class Body {
+public:
+  // Collective: the material and the initial state on the cells of `mesh`.
+  PetscErrorCode Setup(const Mesh &mesh, const BodyParams &prm);
+
+  // Adds to each cell block before it enters the system (the inertia's M / dt^2).
+  using CellTerm = std::function<void(PetscInt cell, fe::ElemMat &ke)>;
+  // Collective: K of the current state into `system` (after System::Begin).
+  PetscErrorCode AssembleTangent(System &system, const CellTerm &cell_term);
+  // What the trial increment du would do at the Gauss points: r1 (yield
+  // onset), r2 (strain), r3 (rotation) into `limit`; `switches` counts the
+  // points whose loading state (alpha) disagrees with du, and with `apply`
+  // those points are switched.
+  PetscErrorCode ScanTrial(Vec du, bool apply, StepLimit &limit, PetscInt &switches);
+  struct CommitInfo {
+    double dw_int = 0, dw_plastic = 0, drift = 0;
+    PetscInt n_plastic = 0;
+  };
+  // Advances stress, coordinates and displacement by du (local vector).
+  // Elastic points whose yield factor (from the last ScanTrial) is within
+  // (1 + group_tol) of `r` turn plastic.
+  PetscErrorCode Commit(Vec du, double r, CommitInfo &info);
+  // Collective-free: the nodal forces of the stresses (local contribution vector).
+  PetscErrorCode InternalForce(Vec f_local) const;
+  // Collective: the elastic energy stored in the stresses.
+  PetscErrorCode ElasticEnergy(double &w) const;
+  // From now on every point is elastic (the paper's unloading).
+  void SetElasticOnly();
+
+  // Current cell corner coordinates.
+  void CellCoordinates(PetscInt cell, double xe[2 * fe::kNodes]) const;
+  const Mesh &mesh() const { return *mesh_; }
+  MPI_Comm comm() const { return mesh_->comm; }
+  const std::vector<PointState> &state() const { return state_; } // kGauss per local cell
+  const std::vector<double> &position() const { return x_; }      // current coordinates, 2 per local node
+  const std::vector<double> &displacement() const { return u_; }  // total displacement, 2 per local node
+
+private:
+  const Mesh *mesh_ = nullptr;
+  BodyParams prm_;
+  std::unique_ptr<Material> material_;
+  fe::CellFormulation cells_;
+  std::vector<PointState> state_;
+  std::vector<double> yield_factor_; // r1 of each Gauss point from the last ScanTrial
+  std::vector<double> x_, u_;
+};
+
+// Element dofs of cell e from a local vector.
+void GatherCell(const Mesh &mesh, PetscInt e, const PetscScalar *v, fe::ElemVec &ve);
+
+} // namespace tf

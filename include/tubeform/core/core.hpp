@@ -1,0 +1,27 @@
+// The lowest layer of tubeform: error-code conventions, plane-strain sizes and
+// the constants every component shares. Nothing here includes another
+// tubeform header (docs/architecture.md, "Layers").
+#pragma once
+
+#include <petscsys.h>
+
+#ifndef PETSC_SUCCESS
+#define PETSC_SUCCESS 0 // PETSc 3.18 predates the named constant.
+#endif
+
+namespace tf {
+
+// Voigt order used everywhere: {xx, yy, zz, xy}; strains carry gamma_xy = 2 eps_xy.
+constexpr int kNumStress = 4;
+
+// Number of displacement components per node (plane strain).
+constexpr int kDim = 2;
+
+// The r factor of an event that does not happen within the step (and the
+// start value of a running minimum): larger than any factor a step can have.
+constexpr double kNever = 1e300;
+
+// Floor of a denominator that may be zero (a relative error of zero work).
+constexpr double kTiny = 1e-300;
+
+} // namespace tf

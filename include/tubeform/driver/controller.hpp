@@ -1,0 +1,86 @@
+// The increment controller of METHOD.md section 4: solves a trial step,
+// iterates friction and loading switches inside it, halves it when the
+// iterations do not settle, and cuts it by r_min (paper eq. 16) — by scaling
+// the linear solution, or, where the step is not linear in r (friction,
+// inertia), by solving the shortened step again. It returns what it took;
+// the driver commits it.
+#pragma once
+
+#include <petscvec.h>
+
+#include "tubeform/body/inertia.hpp"
+#include "tubeform/io/options.hpp"
+#include "tubeform/scenes/scene.hpp"
+#include "tubeform/step/rmin.hpp"
+
+namespace tf {
+
+// Halvings of a trial step whose iterations do not settle; the last is taken unsettled.
+constexpr int kMaxCuts = 6;
+// Solves of a shortened non-linear step before it is taken with an event inside.
+constexpr int kMaxResolves = 3;
+// Events of a re-solved (friction, inertia) step found this far beyond its end are taken with it.
+constexpr double kEventSlack = 1e-2;
+// -dynamics implicit: no step shorter than this fraction of the trial step.
+// Events closer than that (a node whose normal force is all but zero, a point
+// a hair from the yield surface) are taken with it; shorter steps would make
+// M / dt^2 swamp K (precision) for no gain in resolution.
+constexpr double kMinDynamicStep = 1e-6;
+// A step cut below this fraction of its trial step cannot advance the load path.
+constexpr double kMinRmin = 1e-10;
+
+// One increment as the controller took it.
+struct Increment {
+  double dl = 0;                // load step taken (of lambda)
+  double r = 1;                 // its fraction of the increment's first trial step: r_min
+  Limiter who = Limiter::Trial; // what set r
+  PetscInt where = -1;          // element or node (input numbering) of the limiter
+  double react_scale = 1;       // the last solution's reactions enter scaled by this
+  double r_event = 1;           // events of the last solution up to this factor happen in the step
+  double dU = 0;                // tool step of the last solution
+  PetscInt solves = 0;          // factorizations, friction iterations and re-solves included
+  PetscInt redo = 0;            // re-solves for loading/unloading switches
+  PetscInt unsettled = 0;       // trial steps taken with unsettled iterations
+};
+
+class Controller {
+public:
+  Controller(Model &model, Scene &scene, Inertia *inertia, const Options &opt, double duration);
+  // The out-of-balance force added to every load (-residual_correction).
+  void SetResidual(Vec f_res) { f_res_ = f_res; }
+  // Collective: the increment from lambda with trial step dl (`end`: the end of
+  // the load path); du (local vector) receives it.
+  PetscErrorCode Advance(double lambda, double dl, double end, Vec du, Increment &inc);
+
+private:
+  struct Trial {
+    StepLimit limit;     // r1..r6 of the solution
+    bool settled = true; // its iterations settled (or it was taken unsettled)
+    double dU = 0;       // tool step
+    PetscInt redo = 0;   // loading switches applied
+  };
+  Model &m_;
+  Scene &scene_;
+  Inertia *inertia_;
+  const Options &opt_;
+  double duration_;
+  Vec f_res_ = nullptr;
+  double release_fraction_ = 0; // of the step being solved (ContactSet::ReleasePulled)
+
+  bool ContactActive() const { return m_.contact && m_.contact->active(); }
+  bool Iterative() const { return ContactActive() && m_.contact->friction(); }
+  bool InertiaActive() const { return inertia_ && inertia_->active(); }
+  // The shortest step inertia allows, as a fraction of a step of dl.
+  double MinStepFraction(double dl) const { return kMinDynamicStep / (opt_.increments * dl); }
+  // One linear solve of the step dl with the current iterates.
+  PetscErrorCode Solve(double lambda, double dl, Vec du, double &dU, Increment &inc);
+  // One trial: solves until friction iterates and loading switches settle. A
+  // trial that does not settle within the iteration budget reports settled =
+  // false, unless it is the `last` try: then it is solved once more with the
+  // friction linearized at the increment start and taken.
+  PetscErrorCode SolveTrial(double lambda, double dl, Vec du, bool last, Trial &t, Increment &inc);
+  // A trial halved until it settles (kMaxCuts times at most); returns the halvings.
+  PetscErrorCode SettledTrial(double lambda, double &dl, Vec du, Trial &t, Increment &inc, int &halvings);
+};
+
+} // namespace tf

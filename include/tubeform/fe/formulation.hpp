@@ -1,0 +1,38 @@
+// The element formulation of a body behind one interface (METHOD.md section 2,
+// "Element"): q4, bbar or qm6. QM6's condensation of each cell's internal
+// modes, cond = -Kii^-1 Kic, is computed by the stiffness and used by the
+// kinematics and internal force of the same increment, so this object owns it.
+// Pure (no PETSc).
+#pragma once
+
+#include <vector>
+
+#include "tubeform/fe/qm6.hpp"
+#include "tubeform/fe/quad.hpp"
+
+namespace tf::fe {
+
+class CellFormulation {
+public:
+  CellFormulation() = default;
+  CellFormulation(Formulation f, int num_cells);
+
+  Formulation kind() const { return kind_; }
+
+  // Element tangent of cell e (corners xe, point tangents c, stresses s); for
+  // qm6 the cell's condensation is stored. False for an inverted cell.
+  bool Stiffness(int e, const double xe[2 * kNodes], const Mat4 c[kGauss], const Voigt s[kGauss], ElemMat &ke);
+  // Strain and spin increments at Gauss point g of cell e for the nodal
+  // increments du (qm6: its modes from the last stiffness of the cell).
+  bool Kinematics(int e, const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du, Voigt &deps,
+                  double &omega) const;
+  // Nodal forces of the cell's Gauss-point stresses.
+  bool InternalForce(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss],
+                     ElemVec &f) const;
+
+private:
+  Formulation kind_ = Formulation::BBar;
+  std::vector<Condensation> condensation_; // qm6: per cell, from the last Stiffness
+};
+
+} // namespace tf::fe

@@ -1,0 +1,41 @@
+// Shape metrics of a pressed tube (METHOD.md section 6): the collapse gap C
+// of a side against a straight line, the outer corner radii. Pure geometry
+// on the outer-surface points (no PETSc), so unit tests need no mesh.
+#pragma once
+
+#include <vector>
+
+#include "tubeform/core/core.hpp"
+#include "tubeform/tool/tool.hpp"
+
+namespace tf {
+
+// A node of the outer surface: current position, whether it touches the tool
+// and on which of the tool's segments.
+struct SurfacePoint {
+  double x = 0, y = 0;
+  int contact = 0, segment = -1;
+};
+
+// A straight line through `a` with unit normal `n` (pointing into the body)
+// and tangent l = n turned by -90 degrees.
+struct Line {
+  Vec2 a{}, n{}, l{};
+  double Along(const SurfacePoint &p) const { return (p.x - a[0]) * l[0] + (p.y - a[1]) * l[1]; }
+  double Gap(const SurfacePoint &p) const { return (p.x - a[0]) * n[0] + (p.y - a[1]) * n[1]; }
+};
+
+// The largest and smallest gap to a line over the points whose coordinate
+// along it lies in [smin, smax]; empty when no point does.
+struct GapRange {
+  double min = kNever, max = -kNever;
+  bool empty() const { return max < min; }
+};
+GapRange GapsTo(const std::vector<SurfacePoint> &points, const Line &line, double smin, double smax);
+
+// Radius of the circle centred on a symmetry axis through a node on the axis
+// (at distance on_axis from the origin) and its neighbour (nx along the axis,
+// ny across it): the local corner radius there.
+double AxisCornerRadius(double on_axis, double nx, double ny);
+
+} // namespace tf

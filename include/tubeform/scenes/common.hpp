@@ -1,0 +1,59 @@
+// Pieces the scenes share: loads, supports and measurements of the quarter
+// models.
+#pragma once
+
+#include <petscvec.h>
+
+#include <string>
+
+#include "tubeform/scenes/scene.hpp"
+
+namespace tf {
+
+// Uniform pressure on the edges of a boundary set (current geometry): nodal
+// forces into f_local (if given) and into the system (with to_system), and
+// the follower-load stiffness of the pressure stiffness_p into the system.
+PetscErrorCode AddEdgePressure(Model &m, const std::string &set, double pressure, Vec f_local, bool to_system,
+                               double stiffness_p = 0);
+// u_x = 0 on x = 0, u_y = 0 on y = 0, in each node's frame.
+PetscErrorCode QuarterSymmetry(Model &m);
+// C1 = x_max, C2 = y_max of the outer surface and their ratio.
+PetscErrorCode OuterExtents(Model &m, HistoryRow &row);
+// The tube mesh of the options: structured or -mesh_file.
+std::string TubeMesh(const Options &opt, SerialMesh &mesh);
+// The history's stage: 0 up to lambda = 1, 1 beyond (unloading, or a scene's second stage).
+inline double StageOf(double lambda) { return lambda > 1.0 + kLambdaTol ? 1 : 0; }
+
+// Sum over ranks of each rank's element contributions at the nodes of a set
+// (owned and ghost: every contribution is counted once), dotted with `dir(n)`.
+template <class Dir>
+PetscErrorCode SetForce(Model &m, const std::string &set, Vec f_local, Dir dir, double &total)
+{
+  const PetscScalar *f;
+  double local = 0;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(f_local, &f));
+  for (PetscInt n : m.mesh.node_sets[set]) {
+    double d[2];
+    dir(n, d);
+    const PetscInt o = m.mesh.node_dof[n];
+    local += d[0] * PetscRealPart(f[o]) + d[1] * PetscRealPart(f[o + 1]);
+  }
+  PetscCall(VecRestoreArrayRead(f_local, &f));
+  PetscCall(MPIU_Allreduce(&local, &total, 1, MPIU_REAL, MPIU_SUM, m.comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Volume-free average over all Gauss points of a function of the point state.
+template <class F>
+PetscErrorCode PointAverage(Model &m, F f, double &avg)
+{
+  double local[2] = {0, 0}, g[2];
+  PetscFunctionBeginUser;
+  for (const auto &ps : m.body.state()) local[0] += f(ps), local[1] += 1;
+  PetscCall(MPIU_Allreduce(local, g, 2, MPIU_REAL, MPIU_SUM, m.comm));
+  avg = g[0] / g[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

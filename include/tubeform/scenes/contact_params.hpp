@@ -1,0 +1,21 @@
+// Contact parameters of the tool scenes from the options.
+#pragma once
+
+#include "tubeform/contact/contact.hpp"
+#include "tubeform/io/options.hpp"
+
+namespace tf {
+
+// default_vcri is used when -friction_vcri is 0 (automatic).
+inline ContactParams MakeContactParams(const Options &opt, double default_vcri)
+{
+  ContactParams prm;
+  prm.mu = opt.friction_mu;
+  prm.vcri = opt.friction_vcri > 0 ? opt.friction_vcri : default_vcri;
+  prm.dphi_max = opt.rmin_dphi;
+  prm.tol = opt.friction_tol;
+  prm.group_tol = opt.rmin_group_tol;
+  return prm;
+}
+
+} // namespace tf

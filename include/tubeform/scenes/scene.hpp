@@ -1,0 +1,73 @@
+// What a scene decides (METHOD.md section 1): its mesh, its load path, its
+// tools, its supports and loads per increment, and what `stroke` and `load`
+// mean in its history. The driver owns everything else: the body, the
+// global system, the increments, and the contact set the scene asks for.
+#pragma once
+
+#include <petscvec.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tubeform/assembly/system.hpp"
+#include "tubeform/body/body.hpp"
+#include "tubeform/contact/contact.hpp"
+#include "tubeform/io/history.hpp"
+#include "tubeform/io/options.hpp"
+#include "tubeform/mesh/mesh.hpp"
+#include "tubeform/mesh/serial_mesh.hpp"
+
+namespace tf {
+
+// Values of the load parameter lambda this close are the same point of the path.
+constexpr double kLambdaTol = 1e-12;
+
+// What a scene sees of a run.
+struct Model {
+  MPI_Comm comm;
+  Mesh &mesh;
+  System &system;
+  Body &body;
+  ContactSet *contact; // the driver's contact set; null when the scene has no tools
+};
+
+// The load path: lambda runs over [0, end]; lambda 0 -> 1 takes `duration`
+// seconds of -dynamics implicit; an increment never crosses a breakpoint.
+struct LoadPath {
+  double end = 1.0;
+  double duration = 1.0;
+  std::vector<double> breakpoints;
+};
+
+class Scene {
+public:
+  virtual ~Scene() = default;
+
+  // Rank 0 only: the serial mesh (structured or read from -mesh_file) and the
+  // boundary sets it must carry.
+  virtual std::vector<std::string> BoundarySets() const = 0;
+  virtual std::string BuildMesh(const Options &opt, SerialMesh &mesh) const = 0;
+  virtual LoadPath Path(const Options &opt) const = 0;
+
+  // Once, before the first increment: the tools the scene presses against the
+  // body (`tools` left without a candidate set: no contact at all).
+  virtual PetscErrorCode Initialize(Model &m, ContactSpec &tools) { return 0; }
+  // Tool stroke at lambda (the tools move rigidly by it along their direction).
+  virtual double ToolStroke(double lambda) const { return 0; }
+  // Before the first increment that starts at a breakpoint.
+  virtual PetscErrorCode BeginStage(Model &m, double lambda) { return 0; }
+  // Before each increment's assembly (node frames the scene's supports need).
+  virtual PetscErrorCode BeginIncrement(Model &m, double lambda) { return 0; }
+  // Supports and loads of the increment lambda -> lambda + dlambda into the system.
+  virtual PetscErrorCode Load(Model &m, double lambda, double dlambda) = 0;
+  // Total external load vector at lambda on the current geometry (local vector).
+  virtual PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) = 0;
+  // Fills stroke and load (and scene metrics) of the history row. `f_int` is
+  // the internal force of the current state (local vector, global frame).
+  virtual PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) = 0;
+  // Scene metrics written as attributes at the end.
+  virtual std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const { return {}; }
+};
+
+} // namespace tf

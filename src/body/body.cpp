@@ -1,0 +1,229 @@
+#include "tubeform/body/body.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tubeform/core/log.hpp"
+#include "tubeform/material/factory.hpp"
+#include "tubeform/material/j2.hpp"
+
+namespace tf {
+
+void GatherCell(const Mesh &mesh, PetscInt e, const PetscScalar *v, fe::ElemVec &ve)
+{
+  for (int a = 0; a < fe::kNodes; ++a) {
+    const PetscInt n = mesh.cell_nodes[fe::kNodes * e + a];
+    ve[2 * a] = PetscRealPart(v[mesh.node_dof[n]]);
+    ve[2 * a + 1] = PetscRealPart(v[mesh.node_dof[n] + 1]);
+  }
+}
+
+PetscErrorCode Body::Setup(const Mesh &mesh, const BodyParams &prm)
+{
+  PetscFunctionBeginUser;
+  mesh_ = &mesh;
+  prm_ = prm;
+  // Before a point has yielded, H' is the secant over one strain-limit step.
+  material_ = MakeMaterial(prm.material, prm.rmin_deps, prm.drift_correction);
+  cells_ = fe::CellFormulation(prm.element, (int)mesh.num_cells);
+  state_.assign(fe::kGauss * mesh.num_cells, PointState{});
+  yield_factor_.assign(state_.size(), kNever);
+  x_ = mesh.x0;
+  u_.assign(2 * mesh.num_nodes, 0.0);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void Body::CellCoordinates(PetscInt cell, double xe[2 * fe::kNodes]) const
+{
+  for (int a = 0; a < fe::kNodes; ++a) {
+    const PetscInt n = mesh_->cell_nodes[fe::kNodes * cell + a];
+    xe[2 * a] = x_[2 * n];
+    xe[2 * a + 1] = x_[2 * n + 1];
+  }
+}
+
+PetscErrorCode Body::AssembleTangent(System &system, const CellTerm &cell_term)
+{
+  fe::ElemMat ke;
+  Mat4 c[fe::kGauss];
+  Voigt s[fe::kGauss];
+  double xe[2 * fe::kNodes];
+  PetscInt bad = -1, anybad;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::assemble, 0, 0, 0, 0));
+  for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
+    CellCoordinates(e, xe);
+    for (int g = 0; g < fe::kGauss; ++g) {
+      c[g] = material_->Tangent(state_[fe::kGauss * e + g]);
+      s[g] = state_[fe::kGauss * e + g].sigma;
+    }
+    if (!cells_.Stiffness((int)e, xe, c, s, ke)) {
+      bad = mesh_->cell_orig[e];
+      continue;
+    }
+    if (cell_term) cell_term(e, ke);
+    PetscCall(system.AddElement(e, ke));
+  }
+  PetscCall(MPIU_Allreduce(&bad, &anybad, 1, MPIU_INT, MPI_MAX, comm()));
+  PetscCheck(
+    anybad < 0, comm(), PETSC_ERR_USER_INPUT,
+    "element %d is inverted (det J <= 0): the increment is too large (lower -rmin_deps) or the mesh is tangled",
+    (int)anybad);
+  PetscCall(PetscLogEventEnd(Log::assemble, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, PetscInt &switches)
+{
+  const PetscScalar *du;
+  fe::QuadGeometry geo;
+  double xe[2 * fe::kNodes];
+  PetscInt local_switches = 0;
+  StepLimit yield, strain, rotation;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::scan, 0, 0, 0, 0));
+  PetscCall(VecGetArrayRead(du_local, &du));
+  for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
+    fe::ElemVec due;
+    CellCoordinates(e, xe);
+    if (!fe::ComputeGeometry(xe, geo)) continue;
+    GatherCell(*mesh_, e, du, due);
+    for (int g = 0; g < fe::kGauss; ++g) {
+      Voigt deps;
+      double omega;
+      PointState &ps = state_[fe::kGauss * e + g];
+      // The trial increment is linear in r on the start configuration.
+      cells_.Kinematics((int)e, xe, geo, g, due, deps, omega);
+      if (material_->plastic_law() && material_->Loading(ps, deps) != ps.plastic) {
+        ++local_switches;
+        if (apply) ps.plastic = !ps.plastic;
+      }
+      double &r1 = yield_factor_[fe::kGauss * e + g];
+      r1 = material_->YieldOnset(ps, deps, omega);
+      yield.Offer(r1, Limiter::Yield, mesh_->cell_orig[e]);
+      strain.Offer(StrainFactor(deps, prm_.rmin_deps), Limiter::Strain, mesh_->cell_orig[e]);
+      rotation.Offer(RotationFactor(omega, prm_.rmin_domega), Limiter::Rotation, mesh_->cell_orig[e]);
+    }
+  }
+  PetscCall(VecRestoreArrayRead(du_local, &du));
+  PetscCall(MPIU_Allreduce(&local_switches, &switches, 1, MPIU_INT, MPI_SUM, comm()));
+  for (StepLimit *l : {&yield, &strain, &rotation}) {
+    PetscCall(ReduceStepLimit(comm(), *l));
+    limit.Offer(l->r, l->who, l->where);
+  }
+  PetscCall(PetscLogEventEnd(Log::scan, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
+{
+  const PetscScalar *du;
+  fe::QuadGeometry geo;
+  double xe[2 * fe::kNodes], local[3] = {0, 0, 0}, global[3];
+  PetscInt nplastic = 0;
+  const bool midpoint = prm_.kinematics == ObjectiveScheme::Midpoint;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::commit, 0, 0, 0, 0));
+  PetscCall(VecGetArrayRead(du_local, &du));
+  for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
+    fe::ElemVec due;
+    GatherCell(*mesh_, e, du, due);
+    CellCoordinates(e, xe);
+    // Gradients on the mid-increment configuration (Hughes-Winget: a rigid
+    // rotation then gives zero strain and an exact rotation of the stress),
+    // or on the start configuration (the paper's forward form).
+    if (midpoint)
+      for (int k = 0; k < 2 * fe::kNodes; ++k) xe[k] += 0.5 * due[k];
+    if (!fe::ComputeGeometry(xe, geo)) continue; // reported by the next assembly
+    for (int g = 0; g < fe::kGauss; ++g) {
+      Voigt deps;
+      double omega;
+      PointState &ps = state_[fe::kGauss * e + g];
+      cells_.Kinematics((int)e, xe, geo, g, due, deps, omega);
+      const Voigt old = ps.sigma;
+      // Strang splitting: half the rotation, the constitutive increment in the
+      // mid-rotated frame, the other half (forward scheme: all at once, first order).
+      const double first = midpoint ? 0.5 : 1.0;
+      RotateStress(prm_.kinematics, omega, ps.sigma, first);
+      const UpdateInfo u = material_->Update(ps, deps);
+      if (midpoint) RotateStress(prm_.kinematics, omega, ps.sigma, 0.5);
+      // Points that reach the yield surface in this increment (the limiter and
+      // those grouped with it), or pass it, are plastic from now on.
+      const bool reached = yield_factor_[fe::kGauss * e + g] <= r * (1 + prm_.group_tol);
+      const bool on_surface = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
+      if (!ps.plastic && material_->plastic_law() && (reached || on_surface)) ps.plastic = true;
+      nplastic += ps.plastic;
+      for (int c = 0; c < kNumStress; ++c) local[0] += geo.wdet[g] * 0.5 * (old[c] + ps.sigma[c]) * deps[c];
+      local[1] += geo.wdet[g] * u.dwp;
+      local[2] = std::max(local[2], std::abs(u.drift));
+    }
+  }
+  for (PetscInt n = 0; n < mesh_->num_nodes; ++n)
+    for (int k = 0; k < kDim; ++k) {
+      const double d = PetscRealPart(du[mesh_->node_dof[n] + k]);
+      x_[2 * n + k] += d;
+      u_[2 * n + k] += d;
+    }
+  PetscCall(VecRestoreArrayRead(du_local, &du));
+  PetscCall(MPIU_Allreduce(local, global, 2, MPIU_REAL, MPIU_SUM, comm()));
+  PetscCall(MPIU_Allreduce(&local[2], &global[2], 1, MPIU_REAL, MPIU_MAX, comm()));
+  PetscCall(MPIU_Allreduce(&nplastic, &info.n_plastic, 1, MPIU_INT, MPI_SUM, comm()));
+  info.dw_int = global[0];
+  info.dw_plastic = global[1];
+  info.drift = global[2];
+  PetscCall(PetscLogEventEnd(Log::commit, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void Body::SetElasticOnly()
+{
+  material_ = std::make_unique<Elastic>(prm_.material.E, prm_.material.nu);
+  for (auto &ps : state_) ps.plastic = false;
+}
+
+PetscErrorCode Body::InternalForce(Vec f_local) const
+{
+  PetscScalar *f;
+  fe::QuadGeometry geo;
+  double xe[2 * fe::kNodes];
+
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(f_local));
+  PetscCall(VecGetArray(f_local, &f));
+  for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
+    Voigt s[fe::kGauss];
+    fe::ElemVec fe_;
+    CellCoordinates(e, xe);
+    if (!fe::ComputeGeometry(xe, geo)) continue;
+    for (int g = 0; g < fe::kGauss; ++g) s[g] = state_[fe::kGauss * e + g].sigma;
+    cells_.InternalForce((int)e, xe, geo, s, fe_);
+    for (int a = 0; a < fe::kNodes; ++a) {
+      const PetscInt n = mesh_->cell_nodes[fe::kNodes * e + a];
+      f[mesh_->node_dof[n]] += fe_[2 * a];
+      f[mesh_->node_dof[n] + 1] += fe_[2 * a + 1];
+    }
+  }
+  PetscCall(VecRestoreArray(f_local, &f));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Body::ElasticEnergy(double &w) const
+{
+  fe::QuadGeometry geo;
+  double xe[2 * fe::kNodes], local = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
+    CellCoordinates(e, xe);
+    if (!fe::ComputeGeometry(xe, geo)) continue;
+    for (int g = 0; g < fe::kGauss; ++g)
+      local += geo.wdet[g] * material_->ElasticEnergy(state_[fe::kGauss * e + g].sigma);
+  }
+  PetscCall(MPIU_Allreduce(&local, &w, 1, MPIU_REAL, MPIU_SUM, comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

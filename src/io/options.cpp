@@ -1,0 +1,328 @@
+#include "tubeform/io/options.hpp"
+
+#include <cmath>
+#include <fstream>
+
+#include "tubeform/core/core.hpp"
+
+namespace tf {
+
+namespace {
+const char *const kElements[] = {"q4", "bbar", "qm6"};
+const char *const kMaterials[] = {"aluminum", "copper", "custom"};
+const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
+
+} // namespace
+
+PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes, Options &opt)
+{
+  PetscInt choice;
+  char buf[PETSC_MAX_PATH_LEN];
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasHelp(nullptr, &opt.help));
+
+  PetscOptionsBegin(comm, "", "tubeform: scene and geometry", "tubeform");
+  {
+    std::vector<const char *> names;
+    for (const auto &s : scenes) names.push_back(s.c_str());
+    choice = 0;
+    for (size_t k = 0; k < scenes.size(); ++k)
+      if (scenes[k] == opt.scene) choice = (PetscInt)k;
+    PetscCall(PetscOptionsEList("-scene", "Scene to run", "tubeform", names.data(), (PetscInt)names.size(),
+                                names[choice], &choice, &set));
+    opt.scene = scenes[choice];
+  }
+  PetscCall(
+    PetscOptionsReal("-tube_ro", "Outer radius of the tube (mm)", "tubeform", opt.tube_ro, &opt.tube_ro, nullptr));
+  PetscCall(PetscOptionsReal("-tube_t", "Wall thickness (mm)", "tubeform", opt.tube_t, &opt.tube_t, nullptr));
+  PetscCall(PetscOptionsInt("-mesh_nt", "Elements through the wall (structured mesh)", "tubeform", opt.mesh_nt,
+                            &opt.mesh_nt, nullptr));
+  PetscCall(PetscOptionsInt("-mesh_ntheta", "Elements around the quarter (structured mesh)", "tubeform",
+                            opt.mesh_ntheta, &opt.mesh_ntheta, nullptr));
+  buf[0] = 0;
+  PetscCall(PetscOptionsString(
+    "-mesh_file", "Gmsh 4.1 ASCII quad mesh with physical curves inner, outer, x0, y0 (replaces the structured mesh)",
+    "tubeform", buf, buf, sizeof(buf), &set));
+  if (set) opt.mesh_file = buf;
+  choice = 1;
+  PetscCall(PetscOptionsEList("-element",
+                              "Element formulation: q4 (full integration), bbar (mean dilatation), qm6 (incompatible "
+                              "modes: no shear locking in bending)",
+                              "tubeform", kElements, 3, kElements[choice], &choice, nullptr));
+  opt.element = choice == 0 ? fe::Formulation::Q4 : choice == 1 ? fe::Formulation::BBar : fe::Formulation::QM6;
+  opt.element_name = kElements[choice];
+  PetscOptionsEnd();
+
+  PetscOptionsBegin(comm, "", "tubeform: material", "tubeform");
+  choice = 0;
+  PetscCall(PetscOptionsEList("-material", "Material preset (Huang 2008, Table 1) or custom", "tubeform", kMaterials, 3,
+                              kMaterials[choice], &choice, nullptr));
+  MaterialPreset(kMaterials[choice], opt.material);
+  PetscCall(
+    PetscOptionsReal("-material_e", "Young's modulus E (MPa)", "tubeform", opt.material.E, &opt.material.E, nullptr));
+  PetscCall(
+    PetscOptionsReal("-material_nu", "Poisson's ratio", "tubeform", opt.material.nu, &opt.material.nu, nullptr));
+  PetscCall(PetscOptionsReal("-material_sy", "Initial yield stress (MPa)", "tubeform", opt.material.sy,
+                             &opt.material.sy, nullptr));
+  PetscCall(PetscOptionsReal("-material_k", "Hardening coefficient K (MPa)", "tubeform", opt.material.K,
+                             &opt.material.K, nullptr));
+  PetscCall(
+    PetscOptionsReal("-material_n", "Hardening exponent n", "tubeform", opt.material.n, &opt.material.n, nullptr));
+  PetscCall(PetscOptionsReal("-material_density", "Mass density (t/mm^3; aluminum 2.70e-9), used by -dynamics implicit",
+                             "tubeform", opt.material.density, &opt.material.density, nullptr));
+  choice = 1;
+  for (PetscInt k = 0; k < 4; ++k)
+    if (opt.material.law == kLaws[k]) choice = k;
+  PetscCall(PetscOptionsEList("-material_law",
+                              "Flow curve: elastic (no yield), ludwik sy+K ep^n, swift K(ep0+ep)^n, table", "tubeform",
+                              kLaws, 4, kLaws[choice], &choice, nullptr));
+  opt.material.law = kLaws[choice];
+  {
+    PetscReal table[200];
+    PetscInt n = 200;
+    PetscCall(PetscOptionsRealArray("-material_table",
+                                    "Flow curve for -material_law table: ep0,sy0,ep1,sy1,... (ep0 = 0, ep increasing)",
+                                    "tubeform", table, &n, &set));
+    if (set) opt.material.table.assign(table, table + n);
+  }
+  PetscOptionsEnd();
+
+  PetscOptionsBegin(comm, "", "tubeform: incremental driver (r_min method)", "tubeform");
+  PetscCall(PetscOptionsInt("-increments", "Trial increments over the load path (r_min may cut each)", "tubeform",
+                            opt.increments, &opt.increments, nullptr));
+  PetscCall(PetscOptionsReal("-rmin_deps", "r2: largest principal strain increment", "tubeform", opt.rmin_deps,
+                             &opt.rmin_deps, nullptr));
+  PetscCall(PetscOptionsReal("-rmin_domega", "r3: largest rotation increment (rad)", "tubeform", opt.rmin_domega,
+                             &opt.rmin_domega, nullptr));
+  PetscCall(PetscOptionsReal("-rmin_group_tol", "Events within (1 + tol) r_min are taken in the same increment",
+                             "tubeform", opt.rmin_group_tol, &opt.rmin_group_tol, nullptr));
+  PetscCall(PetscOptionsInt("-rmin_max_increments", "Stop with an error after this many increments", "tubeform",
+                            opt.rmin_max_increments, &opt.rmin_max_increments, nullptr));
+  PetscCall(
+    PetscOptionsInt("-rmin_stall_increments",
+                    "Stop (results so far written) when this many increments advance the load path by less than 1e-6",
+                    "tubeform", opt.rmin_stall_increments, &opt.rmin_stall_increments, nullptr));
+  PetscCall(PetscOptionsInt("-rmin_max_redo",
+                            "Re-solves per increment when points switch between loading and unloading", "tubeform",
+                            opt.rmin_max_redo, &opt.rmin_max_redo, nullptr));
+  PetscCall(PetscOptionsBool("-drift_correction",
+                             "Scale plastic stresses back onto the yield surface after each update", "tubeform",
+                             opt.drift_correction, &opt.drift_correction, nullptr));
+  {
+    const char *const kinds[] = {"quasistatic", "implicit", "auto"};
+    choice = static_cast<int>(opt.dynamics);
+    PetscCall(
+      PetscOptionsEList("-dynamics",
+                        "quasistatic (no inertia), implicit (lumped mass, backward Euler in time), auto (quasi-static "
+                        "until an increment's friction iterations do not settle, implicit from then on)",
+                        "tubeform", kinds, 3, kinds[choice], &choice, nullptr));
+    opt.dynamics = static_cast<Dynamics>(choice);
+  }
+  PetscCall(PetscOptionsReal(
+    "-dynamics_time", "Duration (s) of the load path lambda 0 -> 1 with -dynamics implicit (scenes without tools)",
+    "tubeform", opt.dynamics_time, &opt.dynamics_time, nullptr));
+  PetscCall(PetscOptionsReal(
+    "-punch_speed", "Tool speed (mm/s) with -dynamics implicit in squaring/flattening: the stroke takes stroke / speed",
+    "tubeform", opt.punch_speed, &opt.punch_speed, nullptr));
+  PetscCall(PetscOptionsBool("-residual_correction", "Add the out-of-balance force to the next increment's load",
+                             "tubeform", opt.residual_correction, &opt.residual_correction, nullptr));
+  {
+    const char *const schemes[] = {"forward", "midpoint"};
+    choice = opt.kinematics == ObjectiveScheme::Forward ? 0 : 1;
+    PetscCall(PetscOptionsEList(
+      "-kinematics",
+      "Strain/spin increments: forward (start configuration, W sigma - sigma W) or midpoint (Hughes-Winget)",
+      "tubeform", schemes, 2, schemes[choice], &choice, nullptr));
+    opt.kinematics = choice == 0 ? ObjectiveScheme::Forward : ObjectiveScheme::Midpoint;
+  }
+  PetscOptionsEnd();
+
+  PetscOptionsBegin(comm, "", "tubeform: loading and output", "tubeform");
+  PetscCall(PetscOptionsReal("-pressure_p", "pressure scene: final internal pressure (MPa), -pressure_control load",
+                             "tubeform", opt.pressure_p, &opt.pressure_p, nullptr));
+  {
+    const char *const controls[] = {"load", "displacement"};
+    choice = opt.pressure_control == "load" ? 0 : 1;
+    PetscCall(PetscOptionsEList(
+      "-pressure_control", "pressure scene: ramp the pressure (load) or the inner radial displacement (displacement)",
+      "tubeform", controls, 2, controls[choice], &choice, nullptr));
+    opt.pressure_control = controls[choice];
+  }
+  PetscCall(PetscOptionsReal("-pressure_u",
+                             "pressure scene: final inner radial displacement (mm), -pressure_control displacement",
+                             "tubeform", opt.pressure_u, &opt.pressure_u, nullptr));
+  PetscCall(PetscOptionsReal("-stroke",
+                             "Final stroke U (mm): tool travel, or the prescribed end shortening of the column",
+                             "tubeform", opt.stroke, &opt.stroke, nullptr));
+  PetscCall(PetscOptionsReal("-stroke_corner_radius",
+                             "Choose the stroke by the paper's rule: outer corner radius (mm) of the "
+                             "perimeter-conserving rounded square (e.g. 4 t)",
+                             "tubeform", opt.stroke_corner_radius, &opt.stroke_corner_radius, nullptr));
+  PetscCall(PetscOptionsReal("-die_r_apex", "V-die apex fillet radius (mm)", "tubeform", opt.die_r_apex,
+                             &opt.die_r_apex, nullptr));
+  PetscCall(PetscOptionsReal(
+    "-die_u_close", "V-die parting face at y = u_close - U: the dies close at stroke u_close (mm; 0: no parting face)",
+    "tubeform", opt.die_u_close, &opt.die_u_close, nullptr));
+  PetscCall(PetscOptionsReal("-die_r_edge", "V-die edge fillet radius between flank and parting face (mm)", "tubeform",
+                             opt.die_r_edge, &opt.die_r_edge, nullptr));
+  PetscCall(PetscOptionsReal("-friction_mu", "Coulomb friction coefficient (0: frictionless, no friction work at all)",
+                             "tubeform", opt.friction_mu, &opt.friction_mu, nullptr));
+  PetscCall(PetscOptionsReal("-friction_vcri",
+                             "Quasi-stick slip VCRI (mm) of the tanh law; 0: 2% of the circumferential element size",
+                             "tubeform", opt.friction_vcri, &opt.friction_vcri, nullptr));
+  PetscCall(PetscOptionsReal("-friction_tol", "Friction iterations: largest change of f_l / (mu f_n) between iterates",
+                             "tubeform", opt.friction_tol, &opt.friction_tol, nullptr));
+  PetscCall(PetscOptionsInt("-friction_max_iters", "Friction iterations per increment before giving up", "tubeform",
+                            opt.friction_max_iters, &opt.friction_max_iters, nullptr));
+  PetscCall(PetscOptionsReal("-rmin_dphi",
+                             "r6: largest change of the friction mobilization f_l / (mu f_n) in an increment",
+                             "tubeform", opt.rmin_dphi, &opt.rmin_dphi, nullptr));
+  {
+    const char *const unloads[] = {"reverse", "withdraw", "none"};
+    choice = opt.unload == "reverse" ? 0 : opt.unload == "withdraw" ? 1 : 2;
+    PetscCall(PetscOptionsEList(
+      "-unload",
+      "Springback: reverse (paper: elastic, contact forces reversed, tools removed), withdraw (tools move back), none",
+      "tubeform", unloads, 3, unloads[choice], &choice, nullptr));
+    opt.unload = unloads[choice];
+  }
+  PetscCall(PetscOptionsReal("-shear_gamma", "shear scene: final shear strain gamma", "tubeform", opt.shear_gamma,
+                             &opt.shear_gamma, nullptr));
+  PetscCall(PetscOptionsReal("-slide_n", "slide scene: normal force pressing the block (N/mm)", "tubeform", opt.slide_n,
+                             &opt.slide_n, nullptr));
+  {
+    const char *const tools[] = {"flat", "arc"};
+    choice = opt.slide_tool == "flat" ? 0 : 1;
+    PetscCall(PetscOptionsEList(
+      "-slide_tool", "slide scene: a block on a flat floor, or a quarter ring turned inside a cylinder (arc)",
+      "tubeform", tools, 2, tools[choice], &choice, nullptr));
+    opt.slide_tool = tools[choice];
+  }
+  PetscCall(PetscOptionsReal("-slide_push", "slide scene: sideways displacement of the block's top (mm)", "tubeform",
+                             opt.slide_push, &opt.slide_push, nullptr));
+  PetscCall(PetscOptionsReal("-tension_strain", "tension scene: final nominal strain in x (negative: compression)",
+                             "tubeform", opt.tension_strain, &opt.tension_strain, nullptr));
+  PetscCall(PetscOptionsReal("-rotation_angle", "rotation scene: rigid rotation after the prestretch (degrees)",
+                             "tubeform", opt.rotation_angle, &opt.rotation_angle, nullptr));
+  PetscCall(PetscOptionsReal("-rotation_strain", "rotation scene: uniaxial prestretch strain in x before the rotation",
+                             "tubeform", opt.rotation_strain, &opt.rotation_strain, nullptr));
+  PetscCall(PetscOptionsReal("-column_l", "column scene: length between the pins (mm)", "tubeform", opt.column_l,
+                             &opt.column_l, nullptr));
+  PetscCall(
+    PetscOptionsReal("-column_t", "column scene: thickness (mm)", "tubeform", opt.column_t, &opt.column_t, nullptr));
+  PetscCall(PetscOptionsReal("-column_imperfection", "column scene: amplitude of the initial sine-shaped bow (mm)",
+                             "tubeform", opt.column_imperfection, &opt.column_imperfection, nullptr));
+  PetscCall(PetscStrncpy(buf, opt.output.c_str(), sizeof(buf)));
+  PetscCall(PetscOptionsString("-output", "HDF5 result file (an .xmf for ParaView is written beside it)", "tubeform",
+                               buf, buf, sizeof(buf), nullptr));
+  opt.output = buf;
+  buf[0] = 0;
+  PetscCall(PetscOptionsString("-history_csv", "Also write the history as CSV to this file", "tubeform", buf, buf,
+                               sizeof(buf), &set));
+  if (set) opt.history_csv = buf;
+  PetscCall(PetscOptionsInt("-output_every", "Write fields every k-th increment (the last is always written)",
+                            "tubeform", opt.output_every, &opt.output_every, nullptr));
+  PetscCall(PetscOptionsBool("-monitor", "Print one line per increment on rank 0", "tubeform", opt.monitor,
+                             &opt.monitor, nullptr));
+  PetscOptionsEnd();
+
+  if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
+
+  // Validation: one message per problem, naming the option and the allowed range.
+  const auto &m = opt.material;
+  PetscCheck(opt.tube_ro > 0 && std::isfinite(opt.tube_ro), comm, PETSC_ERR_USER_INPUT,
+             "-tube_ro %g: the outer radius must be a positive number of mm", opt.tube_ro);
+  PetscCheck(opt.tube_t > 0 && opt.tube_t < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,
+             "-tube_t %g: the wall thickness must be positive and smaller than -tube_ro %g", opt.tube_t, opt.tube_ro);
+  PetscCheck(opt.mesh_nt >= 1 && opt.mesh_nt <= 1000, comm, PETSC_ERR_USER_INPUT,
+             "-mesh_nt %d: must be between 1 and 1000", (int)opt.mesh_nt);
+  PetscCheck(opt.mesh_ntheta >= 2 && opt.mesh_ntheta <= 100000, comm, PETSC_ERR_USER_INPUT,
+             "-mesh_ntheta %d: must be between 2 and 100000", (int)opt.mesh_ntheta);
+  PetscCheck(m.E > 0, comm, PETSC_ERR_USER_INPUT, "-material_e %g: Young's modulus must be positive (MPa)", m.E);
+  PetscCheck(m.nu > -1 && m.nu < 0.5, comm, PETSC_ERR_USER_INPUT,
+             "-material_nu %g: Poisson's ratio must lie in (-1, 0.5)", m.nu);
+  PetscCheck(m.sy > 0, comm, PETSC_ERR_USER_INPUT, "-material_sy %g: the yield stress must be positive (MPa)", m.sy);
+  PetscCheck(m.K >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-material_k %g: the hardening coefficient must be non-negative (MPa)", m.K);
+  PetscCheck(m.n > 0 && m.n <= 1, comm, PETSC_ERR_USER_INPUT,
+             "-material_n %g: the hardening exponent must lie in (0, 1]", m.n);
+  PetscCheck(m.density > 0 && std::isfinite(m.density), comm, PETSC_ERR_USER_INPUT,
+             "-material_density %g: the mass density must be positive (t/mm^3; aluminum 2.70e-9)", m.density);
+  PetscCheck(opt.dynamics_time > 0 && std::isfinite(opt.dynamics_time), comm, PETSC_ERR_USER_INPUT,
+             "-dynamics_time %g: the duration of the load path must be positive (s)", opt.dynamics_time);
+  PetscCheck(opt.punch_speed > 0 && std::isfinite(opt.punch_speed), comm, PETSC_ERR_USER_INPUT,
+             "-punch_speed %g: the tool speed must be positive (mm/s)", opt.punch_speed);
+  PetscCheck(opt.increments >= 1 && opt.increments <= 10000000, comm, PETSC_ERR_USER_INPUT,
+             "-increments %d: must be between 1 and 1e7", (int)opt.increments);
+  PetscCheck(opt.rmin_deps > 0 && opt.rmin_deps <= 0.5, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_deps %g: the strain increment limit must lie in (0, 0.5]", opt.rmin_deps);
+  PetscCheck(opt.rmin_domega > 0 && opt.rmin_domega <= 0.5, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_domega %g: the rotation increment limit must lie in (0, 0.5] rad", opt.rmin_domega);
+  PetscCheck(opt.rmin_group_tol >= 0 && opt.rmin_group_tol <= 1, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_group_tol %g: must lie in [0, 1]", opt.rmin_group_tol);
+  PetscCheck(opt.rmin_max_increments >= 1, comm, PETSC_ERR_USER_INPUT, "-rmin_max_increments %d: must be at least 1",
+             (int)opt.rmin_max_increments);
+  PetscCheck(opt.rmin_stall_increments >= 10, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_stall_increments %d: must be at least 10", (int)opt.rmin_stall_increments);
+  PetscCheck(opt.rmin_max_redo >= 0, comm, PETSC_ERR_USER_INPUT, "-rmin_max_redo %d: must be non-negative",
+             (int)opt.rmin_max_redo);
+  if (m.law == "swift")
+    PetscCheck(m.K > 0, comm, PETSC_ERR_USER_INPUT, "-material_k %g: the Swift law needs K > 0", m.K);
+  if (m.law == "table") {
+    const auto &t = opt.material.table;
+    PetscCheck(t.size() >= 2 && t.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
+               "-material_table: give pairs ep,sigma_y (at least one pair) for -material_law table");
+    PetscCheck(t[0] == 0, comm, PETSC_ERR_USER_INPUT, "-material_table: the first plastic strain must be 0 (got %g)",
+               t[0]);
+    for (size_t i = 2; i < t.size(); i += 2) {
+      PetscCheck(t[i] > t[i - 2], comm, PETSC_ERR_USER_INPUT,
+                 "-material_table: plastic strains must increase (%g after %g)", t[i], t[i - 2]);
+      PetscCheck(t[i + 1] >= t[i - 1], comm, PETSC_ERR_USER_INPUT,
+                 "-material_table: the flow stress must not decrease (%g after %g)", t[i + 1], t[i - 1]);
+    }
+    PetscCheck(t[1] > 0, comm, PETSC_ERR_USER_INPUT,
+               "-material_table: the initial yield stress must be positive (got %g)", t[1]);
+  }
+  PetscCheck(opt.die_r_apex >= 0 && opt.die_r_apex < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,
+             "-die_r_apex %g: must lie in [0, -tube_ro)", opt.die_r_apex);
+  PetscCheck(opt.die_u_close >= 0 && opt.die_r_edge >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-die_u_close %g, -die_r_edge %g: must be non-negative", opt.die_u_close, opt.die_r_edge);
+  PetscCheck(opt.friction_mu >= 0 && opt.friction_mu <= 2, comm, PETSC_ERR_USER_INPUT,
+             "-friction_mu %g: the friction coefficient must lie in [0, 2]", opt.friction_mu);
+  PetscCheck(opt.friction_vcri >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-friction_vcri %g: must be non-negative (0: automatic)", opt.friction_vcri);
+  PetscCheck(opt.friction_tol > 0 && opt.friction_max_iters >= 1, comm, PETSC_ERR_USER_INPUT,
+             "-friction_tol %g, -friction_max_iters %d: need tol > 0 and at least one iteration", opt.friction_tol,
+             (int)opt.friction_max_iters);
+  PetscCheck(opt.rmin_dphi > 0 && opt.rmin_dphi <= 2, comm, PETSC_ERR_USER_INPUT, "-rmin_dphi %g: must lie in (0, 2]",
+             opt.rmin_dphi);
+  PetscCheck(opt.stroke_corner_radius >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-stroke_corner_radius %g: must be non-negative", opt.stroke_corner_radius);
+  PetscCheck(opt.slide_n > 0 && opt.slide_push > 0, comm, PETSC_ERR_USER_INPUT,
+             "-slide_n %g, -slide_push %g: must be positive", opt.slide_n, opt.slide_push);
+  PetscCheck(opt.pressure_u > 0, comm, PETSC_ERR_USER_INPUT, "-pressure_u %g: must be positive (mm)", opt.pressure_u);
+  PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);
+  PetscCheck(std::isfinite(opt.shear_gamma) && opt.shear_gamma != 0, comm, PETSC_ERR_USER_INPUT,
+             "-shear_gamma %g: must be a finite non-zero shear strain", opt.shear_gamma);
+  PetscCheck(std::isfinite(opt.tension_strain) && opt.tension_strain != 0 && std::fabs(opt.tension_strain) < 1, comm,
+             PETSC_ERR_USER_INPUT, "-tension_strain %g: must be non-zero with |strain| < 1", opt.tension_strain);
+  PetscCheck(std::fabs(opt.rotation_angle) <= 3600, comm, PETSC_ERR_USER_INPUT,
+             "-rotation_angle %g: must lie within +-3600 degrees", opt.rotation_angle);
+  PetscCheck(opt.column_l > 0 && opt.column_t > 0 && opt.column_t < opt.column_l, comm, PETSC_ERR_USER_INPUT,
+             "-column_l %g, -column_t %g: need 0 < t < L", opt.column_l, opt.column_t);
+  PetscCheck(std::isfinite(opt.pressure_p), comm, PETSC_ERR_USER_INPUT,
+             "-pressure_p %g: must be a finite pressure (MPa)", opt.pressure_p);
+  PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
+             (int)opt.output_every);
+  PetscCheck(!opt.output.empty(), comm, PETSC_ERR_USER_INPUT, "-output: an HDF5 file name is required");
+  if (!opt.mesh_file.empty()) {
+    std::ifstream probe(opt.mesh_file);
+    PetscCheck(probe.good(), comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: cannot open the file (missing or unreadable)",
+               opt.mesh_file.c_str());
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

@@ -1,0 +1,24 @@
+#include "tubeform/material/factory.hpp"
+
+#include "tubeform/material/hardening.hpp"
+#include "tubeform/material/j2.hpp"
+
+namespace tf {
+
+std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, bool drift_correction)
+{
+  if (m.law == "elastic") return std::make_unique<Elastic>(m.E, m.nu);
+  std::unique_ptr<Hardening> h;
+  if (m.law == "ludwik")
+    h = std::make_unique<LudwikHardening>(m.sy, m.K, m.n);
+  else if (m.law == "swift")
+    h = std::make_unique<SwiftHardening>(m.sy, m.K, m.n);
+  else {
+    std::vector<double> ep, sy;
+    for (size_t i = 0; i + 1 < m.table.size(); i += 2) ep.push_back(m.table[i]), sy.push_back(m.table[i + 1]);
+    h = std::make_unique<TableHardening>(ep, sy);
+  }
+  return std::make_unique<J2Plasticity>(m.E, m.nu, std::move(h), dep_ref, drift_correction);
+}
+
+} // namespace tf

@@ -1,0 +1,93 @@
+#include "tubeform/scenes/common.hpp"
+
+#include <algorithm>
+
+#include "tubeform/mesh/generator.hpp"
+#include "tubeform/mesh/gmsh_reader.hpp"
+
+namespace tf {
+
+// Each edge pushes its two nodes by -p n L / 2 (n outward from the body). With
+// n L = (y_b - y_a, x_a - x_b) the nodal force changes by
+// (p/2) (du_ya - du_yb, du_xb - du_xa) as the edge moves; moving that to the
+// left-hand side adds its negative to K.
+PetscErrorCode AddEdgePressure(Model &m, const std::string &set, double pressure, Vec f_local, bool to_system,
+                               double stiffness_p)
+{
+  PetscScalar *f = nullptr;
+  Mesh &mesh = m.mesh;
+  const auto &x = m.body.position();
+
+  PetscFunctionBeginUser;
+  if (f_local) PetscCall(VecGetArray(f_local, &f));
+  for (const auto &edge : mesh.edge_sets[set]) {
+    double cx = 0, cy = 0;
+    for (int k = 0; k < 4; ++k) {
+      const PetscInt n = mesh.cell_nodes[4 * edge.cell + k];
+      cx += 0.25 * x[2 * n];
+      cy += 0.25 * x[2 * n + 1];
+    }
+    PetscInt a = edge.node[0], b = edge.node[1];
+    const double mx = 0.5 * (x[2 * a] + x[2 * b]) - cx, my = 0.5 * (x[2 * a + 1] + x[2 * b + 1]) - cy;
+    // Orient a -> b so that n points out of the cell.
+    if ((x[2 * b + 1] - x[2 * a + 1]) * mx - (x[2 * b] - x[2 * a]) * my < 0) std::swap(a, b);
+    const double nx = x[2 * b + 1] - x[2 * a + 1], ny = -(x[2 * b] - x[2 * a]); // |n| = edge length
+    if (stiffness_p != 0) {
+      const double h = 0.5 * stiffness_p;
+      const PetscInt nodes[2] = {a, b};
+      // dofs (a_x, a_y, b_x, b_y); both nodes get the same rows.
+      double k[16] = {0};
+      for (int r = 0; r < 2; ++r) {
+        k[(2 * r) * 4 + 1] = -h, k[(2 * r) * 4 + 3] = h;         // row x: -(dF_x/d y_a, dF_x/d y_b)
+        k[(2 * r + 1) * 4 + 0] = h, k[(2 * r + 1) * 4 + 2] = -h; // row y: -(dF_y/d x_a, dF_y/d x_b)
+      }
+      PetscCall(m.system.AddBlock(nodes, 2, k));
+    }
+    for (PetscInt node : {a, b}) {
+      const double fx = -0.5 * pressure * nx, fy = -0.5 * pressure * ny;
+      if (f) {
+        f[mesh.node_dof[node]] += fx;
+        f[mesh.node_dof[node] + 1] += fy;
+      }
+      if (to_system) m.system.AddForce(node, fx, fy);
+    }
+  }
+  if (f_local) PetscCall(VecRestoreArray(f_local, &f));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode QuarterSymmetry(Model &m)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt n : m.mesh.node_sets["x0"])
+    PetscCheck(m.system.PrescribeAlong(n, 1, 0, 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "symmetry support not along a node frame axis");
+  for (PetscInt n : m.mesh.node_sets["y0"])
+    PetscCheck(m.system.PrescribeAlong(n, 0, 1, 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "symmetry support not along a node frame axis");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode OuterExtents(Model &m, HistoryRow &row)
+{
+  double ext[2] = {0, 0}, g[2];
+  PetscFunctionBeginUser;
+  for (PetscInt n : m.mesh.node_sets["outer"]) {
+    ext[0] = std::max(ext[0], m.body.position()[2 * n]);
+    ext[1] = std::max(ext[1], m.body.position()[2 * n + 1]);
+  }
+  PetscCall(MPIU_Allreduce(ext, g, 2, MPIU_REAL, MPIU_MAX, m.comm));
+  row.x_max = g[0];
+  row.y_max = g[1];
+  row.deviation_ratio = std::max(g[0], g[1]) > 0 ? std::min(g[0], g[1]) / std::max(g[0], g[1]) : 1.0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+std::string TubeMesh(const Options &opt, SerialMesh &mesh)
+{
+  if (!opt.mesh_file.empty()) return ReadGmsh(opt.mesh_file, mesh);
+  mesh = GenerateQuarterAnnulus(opt.tube_ro, opt.tube_t, (int)opt.mesh_nt, (int)opt.mesh_ntheta);
+  return "";
+}
+
+} // namespace tf

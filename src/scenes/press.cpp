@@ -1,0 +1,223 @@
+// The tool scenes of METHOD.md section 1: `squaring` (quarter tube, upper
+// V-die) and `flattening` (quarter ring, flat plate), with unloading.
+//
+// Load path: lambda in [0, 1] presses the tool to the final stroke; with
+// -unload reverse or withdraw, lambda in [1, 2] unloads:
+//   reverse  (the paper): every point elastic, the contact forces at the end
+//            of loading applied reversed as nodal loads, tools removed;
+//   withdraw: the tool moves back and releases the nodes one by one (r5).
+// History: stroke = tool stroke U (mm), load = punch load on the full tube,
+// 2 x the quarter's vertical tool force (N/mm).
+#include <algorithm>
+#include <cmath>
+
+#include "tubeform/metrics/shape.hpp"
+#include "tubeform/scenes/common.hpp"
+#include "tubeform/scenes/contact_params.hpp"
+
+namespace tf {
+
+namespace {
+
+// Outer-surface nodes of the whole mesh on every rank, along the surface from
+// the x axis to the y axis.
+PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all)
+{
+  std::vector<double> mine;
+  PetscMPIInt size;
+  PetscFunctionBeginUser;
+  const auto &x = m.body.position();
+  for (PetscInt n : m.mesh.node_sets["outer"])
+    if (m.mesh.node_owned[n])
+      mine.insert(mine.end(), {x[2 * n], x[2 * n + 1], double(m.contact->InContact(n)), double(m.contact->Segment(n))});
+  PetscCallMPI(MPI_Comm_size(m.comm, &size));
+  std::vector<int> counts(size), displs(size);
+  int count = (int)mine.size();
+  PetscCallMPI(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, m.comm));
+  int total = 0;
+  for (int r = 0; r < size; ++r) displs[r] = total, total += counts[r];
+  std::vector<double> buf(total);
+  PetscCallMPI(
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, buf.data(), counts.data(), displs.data(), MPI_DOUBLE, m.comm));
+  all.clear();
+  for (int k = 0; k + 3 < total; k += 4) all.push_back({buf[k], buf[k + 1], (int)buf[k + 2], (int)buf[k + 3]});
+  std::sort(all.begin(), all.end(),
+            [](const SurfacePoint &a, const SurfacePoint &b) { return std::atan2(a.y, a.x) < std::atan2(b.y, b.x); });
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+class PressScene : public Scene {
+public:
+  PressScene(const Options &opt, bool squaring) : opt_(opt), squaring_(squaring)
+  {
+    stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius) : opt.stroke;
+    back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
+    flank_ = squaring_ && opt.die_r_apex > 0 ? 1 : 0;
+  }
+
+  std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
+  LoadPath Path(const Options &opt) const override
+  {
+    return {opt_.unload == "none" ? 1.0 : 2.0, stroke_ / opt.punch_speed, {1.0}};
+  }
+  double ToolStroke(double lambda) const override
+  {
+    if (lambda <= 1.0) return lambda * stroke_;
+    return opt_.unload == "withdraw" ? stroke_ - (lambda - 1.0) * back_ : stroke_;
+  }
+
+  PetscErrorCode Initialize(Model &m, ContactSpec &tools) override
+  {
+    PetscFunctionBeginUser;
+    if (squaring_)
+      tools.tool = BuildVDie(opt_.tube_ro, opt_.die_r_apex, opt_.die_u_close, opt_.die_r_edge);
+    else
+      tools.tool = BuildFlatPlate(opt_.tube_ro, -0.1 * opt_.tube_ro, 1.5 * opt_.tube_ro);
+    tools.candidates = "outer";
+    tools.symmetry = {{"x0", {1, 0}}, {"y0", {0, 1}}};
+    // Default VCRI: 2 % of the circumferential element size of the outer surface.
+    tools.params = MakeContactParams(opt_, 0.02 * opt_.tube_ro * 0.5 * M_PI / opt_.mesh_ntheta);
+    if (opt_.stroke_corner_radius > 0)
+      PetscCall(PetscPrintf(m.comm,
+                            "tubeform: stroke %.4f mm gives an outer corner radius of %.4g mm (perimeter-conserving "
+                            "rounded square)\n",
+                            stroke_, opt_.stroke_corner_radius));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  PetscErrorCode BeginStage(Model &m, double lambda) override
+  {
+    PetscFunctionBeginUser;
+    if (opt_.unload != "reverse") PetscFunctionReturn(PETSC_SUCCESS);
+    // The paper's unloading: contact forces become loads, tools go, all elastic.
+    PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
+    PetscCall(VecZeroEntries(reversed_));
+    PetscCall(m.contact->AddContactForces(reversed_));
+    PetscCall(m.contact->TotalForce(reversed_total_));
+    m.contact->Remove();
+    m.system.ClearFrames();
+    m.body.SetElasticOnly();
+    unloading_ = true;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  PetscErrorCode Load(Model &m, double lambda, double dlambda) override
+  {
+    PetscFunctionBeginUser;
+    if (unloading_) {
+      // Reversed contact forces: from F at lambda = 1 to 0 at lambda = 2.
+      const PetscScalar *f;
+      PetscCall(VecGetArrayRead(reversed_, &f));
+      for (PetscInt n = 0; n < m.mesh.num_nodes; ++n) {
+        const double fx = -dlambda * PetscRealPart(f[m.mesh.node_dof[n]]);
+        const double fy = -dlambda * PetscRealPart(f[m.mesh.node_dof[n] + 1]);
+        if (fx != 0 || fy != 0) m.system.AddForce(n, fx, fy);
+      }
+      PetscCall(VecRestoreArrayRead(reversed_, &f));
+    }
+    PetscCall(QuarterSymmetry(m));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) override
+  {
+    PetscFunctionBeginUser;
+    PetscCall(VecZeroEntries(f));
+    if (unloading_)
+      PetscCall(VecAXPY(f, 2.0 - lambda, reversed_));
+    else
+      PetscCall(m.contact->AddFrictionForces(f));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
+  {
+    double force[2];
+    PetscInt n;
+    PetscFunctionBeginUser;
+    row.stroke = ToolStroke(lambda);
+    if (unloading_) {
+      for (int k = 0; k < 2; ++k) force[k] = (2.0 - lambda) * reversed_total_[k];
+    } else
+      PetscCall(m.contact->TotalForce(force));
+    row.load = -2.0 * force[1]; // full tube: both halves push the die up
+    row.tool_fx = -force[0], row.tool_fy = -force[1];
+    PetscCall(m.contact->Count(n));
+    row.n_contact = n;
+    PetscCall(OuterExtents(m, row));
+    if (!unloading_) PetscCall(m.contact->Violations(row.penetration, row.tension)); // no tools while unloading
+    PetscCall(Shape(m, row));
+    row.stage = StageOf(lambda);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const override
+  {
+    // Loaded state: the last row of the loading stage.
+    const HistoryRow *loaded = &h.rows().front();
+    for (const auto &r : h.rows())
+      if (r.stage == 0) loaded = &r;
+    const HistoryRow &last = h.rows().back();
+    return {{"loaded_c_over_t", loaded->c_over_t}, {"loaded_deviation_ratio", loaded->deviation_ratio},
+            {"loaded_x_max", loaded->x_max},       {"loaded_y_max", loaded->y_max},
+            {"unloaded_c_over_t", last.c_over_t},  {"unloaded_deviation_ratio", last.deviation_ratio},
+            {"unloaded_x_max", last.x_max},        {"unloaded_y_max", last.y_max},
+            {"final_stroke_target", stroke_}};
+  }
+
+  ~PressScene() override { (void)VecDestroy(&reversed_); }
+
+private:
+  Options opt_;
+  bool squaring_;
+  double stroke_ = 0, back_ = 0;
+  int flank_ = 0;
+  bool unloading_ = false;
+  Vec reversed_ = nullptr;
+  double reversed_total_[2] = {0, 0};
+  double smin_loaded_ = kNever, smax_loaded_ = -kNever; // flank contact region at the end of loading
+
+  // C/t (METHOD.md sec. 6): the largest gap between the flank and the outer
+  // surface between the outermost nodes touching the flank; and the corner radii.
+  PetscErrorCode Shape(Model &m, HistoryRow &row)
+  {
+    std::vector<SurfacePoint> all;
+    PetscFunctionBeginUser;
+    PetscCall(GatherOuter(m, all));
+    if (all.size() >= 2) {
+      row.r_corner_x = AxisCornerRadius(all.front().x, all[1].x, all[1].y);
+      row.r_corner_y = AxisCornerRadius(all.back().y, all[all.size() - 2].y, all[all.size() - 2].x);
+    }
+    if (!squaring_) PetscFunctionReturn(PETSC_SUCCESS);
+    const Tool &tool = m.contact->tool();
+    const Segment &fl = tool.segments[flank_];
+    const Vec2 off = tool.Offset();
+    const Line flank{{fl.a[0] + off[0], fl.a[1] + off[1]}, fl.n_line, {fl.n_line[1], -fl.n_line[0]}};
+    for (const auto &o : all) row.n_contact_apex += o.contact && flank_ == 1 && o.segment == 0;
+    double smin = kNever, smax = -kNever;
+    if (unloading_) smin = smin_loaded_, smax = smax_loaded_; // the former contact region
+    for (const auto &o : all)
+      if (!unloading_ && o.contact && o.segment == flank_) {
+        const double s = flank.Along(o);
+        smin = std::min(smin, s), smax = std::max(smax, s);
+      }
+    // Loaded: gaps to the flank. Unloaded (no die): the side's deviation from
+    // straight over the former contact region, largest minus smallest gap to
+    // the final flank line.
+    const GapRange g = GapsTo(all, flank, smin, smax);
+    if (g.empty())
+      row.c_over_t = 0;
+    else
+      row.c_over_t = (unloading_ ? g.max - g.min : std::max(g.max, 0.0)) / opt_.tube_t;
+    if (!unloading_) smin_loaded_ = smin, smax_loaded_ = smax;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+};
+
+} // namespace
+
+std::unique_ptr<Scene> MakeSquaringScene(const Options &opt) { return std::make_unique<PressScene>(opt, true); }
+std::unique_ptr<Scene> MakeFlatteningScene(const Options &opt) { return std::make_unique<PressScene>(opt, false); }
+
+} // namespace tf

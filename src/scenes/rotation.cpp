@@ -1,0 +1,49 @@
+// A block stretched in x (uniaxial strain -rotation_strain, lambda in [0, 0.1])
+// then turned rigidly about the origin by -rotation_angle (lambda in [0.1, 1]):
+// objectivity (METHOD.md section 7).
+// History: stroke = rotation angle so far (degrees), load = mean von Mises stress.
+#include <cmath>
+
+#include "tubeform/scenes/block.hpp"
+
+namespace tf {
+
+namespace {
+
+class RotationScene : public BlockScene {
+public:
+  using BlockScene::BlockScene;
+  LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {kStretch}}; }
+  PetscErrorCode Load(Model &m, double lambda, double dlambda) override
+  {
+    if (lambda < kStretch - kLambdaTol) {
+      const double de = dlambda / kStretch * opt_.rotation_strain;
+      PrescribeBoundary(m, [&](PetscInt n, double d[2]) { d[0] = de * m.mesh.x0[2 * n], d[1] = 0; });
+    } else {
+      const double dth = dlambda / (1 - kStretch) * opt_.rotation_angle * M_PI / 180;
+      const double c = std::cos(dth), s = std::sin(dth);
+      PrescribeBoundary(m, [&](PetscInt n, double d[2]) {
+        const double x = m.body.position()[2 * n], y = m.body.position()[2 * n + 1];
+        d[0] = (c - 1) * x - s * y, d[1] = s * x + (c - 1) * y;
+      });
+    }
+    return 0;
+  }
+  PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
+  {
+    PetscFunctionBeginUser;
+    row.stroke = lambda <= kStretch ? 0.0 : (lambda - kStretch) / (1 - kStretch) * opt_.rotation_angle;
+    PetscCall(PointAverage(
+      m, [](const PointState &s) { return VonMises(s.sigma); }, row.load));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+private:
+  static constexpr double kStretch = 0.1; // the share of the load path that stretches the block
+};
+
+} // namespace
+
+std::unique_ptr<Scene> MakeRotationScene(const Options &opt) { return std::make_unique<RotationScene>(opt); }
+
+} // namespace tf

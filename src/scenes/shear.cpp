@@ -1,0 +1,33 @@
+// Simple shear x = X + gamma Y to -shear_gamma (METHOD.md section 7).
+// History: stroke = gamma, load = mean sigma_xy (MPa). Hypoelastic Jaumann
+// reference: sigma_xy = G sin(gamma), sigma_xx = -sigma_yy = G (1 - cos(gamma)).
+#include "tubeform/scenes/block.hpp"
+
+namespace tf {
+
+namespace {
+
+class ShearScene : public BlockScene {
+public:
+  using BlockScene::BlockScene;
+  PetscErrorCode Load(Model &m, double, double dlambda) override
+  {
+    const double dgamma = dlambda * opt_.shear_gamma;
+    PrescribeBoundary(m, [&](PetscInt n, double d[2]) { d[0] = dgamma * m.body.position()[2 * n + 1], d[1] = 0; });
+    return 0;
+  }
+  PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
+  {
+    PetscFunctionBeginUser;
+    row.stroke = lambda * opt_.shear_gamma;
+    PetscCall(PointAverage(
+      m, [](const PointState &s) { return s.sigma[3]; }, row.load));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+};
+
+} // namespace
+
+std::unique_ptr<Scene> MakeShearScene(const Options &opt) { return std::make_unique<ShearScene>(opt); }
+
+} // namespace tf

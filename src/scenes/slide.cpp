@@ -1,0 +1,100 @@
+// A block on a rigid floor (friction check, METHOD.md section 7): lambda in
+// [0, 1] presses its top edge down with a total force -slide_n (top held in
+// x); lambda in [1, 2] pushes the top edge sideways by -slide_push.
+// History: stroke = top displacement (mm), load = tangential force T (N/mm);
+// slip = mean slip of the bottom on the floor, tool_fx / tool_fy = the
+// block's force on the floor.
+#include "tubeform/mesh/generator.hpp"
+#include "tubeform/scenes/common.hpp"
+#include "tubeform/scenes/contact_params.hpp"
+
+namespace tf {
+
+namespace {
+
+class SlideScene : public Scene {
+public:
+  explicit SlideScene(const Options &opt) : opt_(opt) {}
+  std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
+  {
+    mesh = GenerateRectangle(kWidth, kHeight, (int)opt.mesh_ntheta, (int)opt.mesh_nt);
+    return "";
+  }
+  LoadPath Path(const Options &opt) const override { return {2.0, opt.dynamics_time, {1.0}}; }
+  PetscErrorCode Initialize(Model &, ContactSpec &tools) override
+  {
+    tools.tool = BuildFlatPlate(0.0, -kFloorHalfLength, kFloorHalfLength, true);
+    tools.candidates = "bottom";
+    tools.params = MakeContactParams(opt_, kVcri);
+    return 0;
+  }
+  PetscErrorCode Load(Model &m, double lambda, double dlambda) override
+  {
+    PetscFunctionBeginUser;
+    const double dn = lambda < 1.0 ? dlambda * opt_.slide_n : 0.0,
+                 push = lambda < 1.0 ? 0.0 : dlambda * opt_.slide_push;
+    PetscCall(TopLoad(m, -dn, nullptr, true));
+    for (PetscInt n : m.mesh.node_sets["top"]) m.system.Prescribe(n, 0, push);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) override
+  {
+    PetscFunctionBeginUser;
+    PetscCall(VecZeroEntries(f));
+    PetscCall(TopLoad(m, -std::min(lambda, 1.0) * opt_.slide_n, f, false));
+    PetscCall(m.contact->AddFrictionForces(f));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
+  {
+    PetscFunctionBeginUser;
+    row.stroke = lambda <= 1.0 ? 0.0 : (lambda - 1.0) * opt_.slide_push;
+    PetscCall(SetForce(
+      m, "top", f_int, [](PetscInt, double d[2]) { d[0] = 1, d[1] = 0; }, row.load));
+    PetscInt n;
+    PetscCall(m.contact->Count(n));
+    row.n_contact = n;
+    PetscCall(m.contact->Violations(row.penetration, row.tension));
+    double local[2] = {0, 0}, g[2];
+    for (PetscInt k : m.mesh.node_sets["bottom"])
+      if (m.mesh.node_owned[k]) local[0] += m.body.displacement()[2 * k], local[1] += 1;
+    PetscCallMPI(MPI_Allreduce(local, g, 2, MPI_DOUBLE, MPI_SUM, m.comm));
+    row.slip = g[0] / g[1];
+    double force[2];
+    PetscCall(m.contact->TotalForce(force));
+    row.tool_fx = -force[0], row.tool_fy = -force[1];
+    PetscCall(m.contact->NormalForceSum(row.fn_sum));
+    row.stage = StageOf(lambda);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+private:
+  static constexpr double kWidth = 10.0, kHeight = 2.0; // block (mm)
+  static constexpr double kFloorHalfLength = 1e3;       // the floor reaches far past the block (mm)
+  static constexpr double kVcri = 1e-3;                 // default quasi-stick slip (mm)
+  Options opt_;
+  // A uniform vertical traction on the top edge with resultant fy (end nodes
+  // half weight), into f (if given) and the system (with to_system).
+  PetscErrorCode TopLoad(Model &m, double fy, Vec f, bool to_system)
+  {
+    PetscScalar *a = nullptr;
+    PetscFunctionBeginUser;
+    const double per = fy / opt_.mesh_ntheta, tol = 1e-9 * kWidth;
+    if (f) PetscCall(VecGetArray(f, &a));
+    for (PetscInt n : m.mesh.node_sets["top"]) {
+      if (!m.mesh.node_owned[n]) continue;
+      const double x = m.mesh.x0[2 * n], w = (x < tol || x > kWidth - tol) ? 0.5 : 1.0;
+      if (a) a[m.mesh.node_dof[n] + 1] += w * per;
+      if (to_system) m.system.AddForce(n, 0.0, w * per);
+    }
+    if (f) PetscCall(VecRestoreArray(f, &a));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+};
+
+} // namespace
+
+std::unique_ptr<Scene> MakeSlideScene(const Options &opt) { return std::make_unique<SlideScene>(opt); }
+
+} // namespace tf

@@ -1,0 +1,89 @@
+// Friction on an arc: a quarter ring (outer radius R = -tube_ro, wall -tube_t)
+// inside a rigid cylinder of radius R (a concave arc tool). lambda in [0, 1]:
+// an internal pressure pushes it onto the cylinder (inner nodes held in the
+// tangential direction); lambda in [1, 2]: the inner surface is turned about
+// the centre by -slide_push / R. Coulomb: the moment needed is
+// mu R sum f_n = mu R p r_i pi/2 (sum f_n = p x inner arc length).
+// History: stroke = turn of the inner surface (rad), load = moment (N mm/mm),
+// fn_sum = sum of the normal forces.
+#include <cmath>
+
+#include "tubeform/scenes/common.hpp"
+#include "tubeform/scenes/contact_params.hpp"
+
+namespace tf {
+
+namespace {
+
+class ArcSlideScene : public Scene {
+public:
+  explicit ArcSlideScene(const Options &opt) : opt_(opt) {}
+  std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
+  LoadPath Path(const Options &opt) const override { return {2.0, opt.dynamics_time, {1.0}}; }
+  PetscErrorCode Initialize(Model &, ContactSpec &tools) override
+  {
+    Segment arc;
+    arc.kind = Segment::Arc;
+    arc.c = {0, 0};
+    arc.radius = opt_.tube_ro;
+    arc.t0 = -M_PI / 3; // past both symmetry planes: the ring's ends stay on the arc
+    arc.t1 = M_PI / 2 + M_PI / 3;
+    arc.concave = true;
+    tools.tool.name = "cylinder";
+    tools.tool.segments = {arc};
+    tools.candidates = "outer";
+    tools.params = MakeContactParams(opt_, kVcri);
+    return 0;
+  }
+  PetscErrorCode BeginIncrement(Model &m, double) override
+  {
+    const auto &x = m.body.position();
+    for (PetscInt n : m.mesh.node_sets["inner"]) m.system.SetFrame(n, std::atan2(x[2 * n + 1], x[2 * n]));
+    return 0;
+  }
+  PetscErrorCode Load(Model &m, double lambda, double dlambda) override
+  {
+    PetscFunctionBeginUser;
+    const double ri = opt_.tube_ro - opt_.tube_t;
+    if (lambda < 1.0)
+      PetscCall(AddEdgePressure(m, "inner", dlambda * opt_.slide_n, nullptr, true, lambda * opt_.slide_n));
+    const double turn = lambda < 1.0 ? 0.0 : dlambda * opt_.slide_push / opt_.tube_ro;
+    for (PetscInt n : m.mesh.node_sets["inner"]) m.system.Prescribe(n, 1, turn * ri); // tangential (frame l = radial)
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) override
+  {
+    PetscFunctionBeginUser;
+    PetscCall(VecZeroEntries(f));
+    PetscCall(AddEdgePressure(m, "inner", std::min(lambda, 1.0) * opt_.slide_n, f, false));
+    PetscCall(m.contact->AddFrictionForces(f));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
+  {
+    PetscFunctionBeginUser;
+    row.stroke = lambda <= 1.0 ? 0.0 : (lambda - 1.0) * opt_.slide_push / opt_.tube_ro;
+    // Moment about the centre of the internal forces at the inner nodes (their supports).
+    const auto &x = m.body.position();
+    PetscCall(SetForce(
+      m, "inner", f_int, [&](PetscInt n, double d[2]) { d[0] = -x[2 * n + 1], d[1] = x[2 * n]; }, row.load));
+    PetscInt n;
+    PetscCall(m.contact->Count(n));
+    row.n_contact = n;
+    PetscCall(m.contact->Violations(row.penetration, row.tension));
+    PetscCall(m.contact->NormalForceSum(row.fn_sum));
+    row.stage = StageOf(lambda);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+private:
+  static constexpr double kVcri = 1e-3; // default quasi-stick slip (mm)
+  Options opt_;
+};
+
+} // namespace
+
+std::unique_ptr<Scene> MakeArcSlideScene(const Options &opt) { return std::make_unique<ArcSlideScene>(opt); }
+
+} // namespace tf
