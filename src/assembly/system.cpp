@@ -39,11 +39,23 @@ PetscErrorCode System::Setup(const Mesh &mesh)
   PetscCall(PetscObjectSetName((PetscObject)sol_, "displacement"));
 
   // Direct solve by default; options (e.g. options/solver.opts) may override.
+  // Every rank factors the whole (gathered) matrix with sequential MUMPS
+  // (PCREDUNDANT): runs are then reproducible bit for bit at a given rank
+  // count. MUMPS's distributed factorization is not: its dynamic scheduling
+  // changes the order of floating-point operations from run to run (two
+  // 2-rank runs of one commit received bitwise equal matrices and right-hand
+  // sides and returned different solutions; docs/performance.md, "Solver").
+  KSP inner;
+  PC inner_pc;
   PetscCall(KSPCreate(mesh.comm, &ksp_));
   PetscCall(KSPSetType(ksp_, KSPPREONLY));
   PetscCall(KSPGetPC(ksp_, &pc));
-  PetscCall(PCSetType(pc, PCLU));
-  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(PCSetType(pc, PCREDUNDANT));
+  PetscCall(PCRedundantGetKSP(pc, &inner));
+  PetscCall(KSPSetType(inner, KSPPREONLY));
+  PetscCall(KSPGetPC(inner, &inner_pc));
+  PetscCall(PCSetType(inner_pc, PCLU));
+  PetscCall(PCFactorSetMatSolverType(inner_pc, MATSOLVERMUMPS));
   PetscCall(KSPSetFromOptions(ksp_));
 
   has_frame_.assign(mesh.num_nodes, 0);
