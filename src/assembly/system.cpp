@@ -360,19 +360,19 @@ namespace tf {
 
 PetscErrorCode System::ExternalWork(Vec f_ext, Vec f_int, Vec du, double &work)
 {
-  const PetscScalar *fe, *fi, *d;
+  const PetscScalar *fe, *fi = nullptr, *d;
   std::vector<char> fixed(2 * mesh_->num_nodes, 0);
   double local = 0;
 
   PetscFunctionBeginUser;
   for (const auto &p : prescribed_) fixed[2 * p.node + p.comp] = 1;
   PetscCall(VecGetArrayRead(f_ext, &fe));
-  PetscCall(VecGetArrayRead(f_int, &fi));
+  if (f_int) PetscCall(VecGetArrayRead(f_int, &fi));
   PetscCall(VecGetArrayRead(du, &d));
   for (PetscInt n = 0; n < mesh_->num_nodes; ++n) {
     const PetscInt o = mesh_->node_dof[n];
     double e[2] = {PetscRealPart(fe[o]), PetscRealPart(fe[o + 1])},
-           i[2] = {PetscRealPart(fi[o]), PetscRealPart(fi[o + 1])},
+           i[2] = {fi ? PetscRealPart(fi[o]) : 0.0, fi ? PetscRealPart(fi[o + 1]) : 0.0},
            u[2] = {PetscRealPart(d[o]), PetscRealPart(d[o + 1])};
     if (has_frame_[n]) {
       Rotate(n, e[0], e[1], true);
@@ -382,7 +382,7 @@ PetscErrorCode System::ExternalWork(Vec f_ext, Vec f_int, Vec du, double &work)
     for (int k = 0; k < 2; ++k) local += (fixed[2 * n + k] ? i[k] : e[k]) * u[k];
   }
   PetscCall(VecRestoreArrayRead(du, &d));
-  PetscCall(VecRestoreArrayRead(f_int, &fi));
+  if (f_int) PetscCall(VecRestoreArrayRead(f_int, &fi));
   PetscCall(VecRestoreArrayRead(f_ext, &fe));
   PetscCall(MPIU_Allreduce(&local, &work, 1, MPIU_REAL, MPIU_SUM, mesh_->comm));
   PetscFunctionReturn(PETSC_SUCCESS);

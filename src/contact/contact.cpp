@@ -53,11 +53,14 @@ void ContactSet::Setup(Mesh &mesh, System &system, const std::vector<double> &x,
 PetscErrorCode ContactSet::Initialize()
 {
   PetscFunctionBeginUser;
-  // A node already on the surface (within round-off of the mesh) starts in contact.
-  const double tol = kStartGap * (1 + std::abs(mesh_->x0.empty() ? 1.0 : mesh_->x0[0]));
+  // A node already on the surface (within round-off of the coordinates) starts in contact.
+  double size = 0, global_size;
+  for (double x : mesh_->x0) size = std::max(size, std::abs(x));
+  PetscCallMPI(MPI_Allreduce(&size, &global_size, 1, MPI_DOUBLE, MPI_MAX, comm()));
+  const double tol = kStartGap * (1 + global_size);
   for (PetscInt node : candidates_) {
     const Projection pr = tool_.Project(Position(node));
-    if (pr.segment >= 0 && std::abs(pr.gap) <= std::max(tol, kStartGap)) contact_[node] = 1;
+    if (pr.segment >= 0 && std::abs(pr.gap) <= tol) contact_[node] = 1;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -282,10 +285,10 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double r, double &w_friction)
+PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double r, ContactCommit &report)
 {
   const PetscScalar *d, *react;
-  double local_w = 0;
+  double local[3] = {0, 0, 0}, global[3]; // friction work; tension, force dropped (maxima)
   const double event = r * (1 + prm_.group_tol);
 
   PetscFunctionBeginUser;
@@ -293,6 +296,7 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double 
   PetscCall(VecGetArrayRead(du, &d));
   PetscCall(VecGetArrayRead(system_->reactions_local(), &react));
   for (PetscInt node : candidates_) {
+    const bool owned = mesh_->node_owned[node];
     if (contact_[node]) {
       const double fl_old = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]), fn_old = fn_[node];
       fn_[node] += react_scale * NormalReaction(node, react);
@@ -301,16 +305,19 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double 
         x_[node] = friction::Cap(x_[node] + dx, prm_.vcri);
         last_dx_[node] = dx;
         const double fl_new = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
-        if (mesh_->node_owned[node]) local_w -= 0.5 * (fl_old + fl_new) * dx; // dissipated by sliding
+        if (owned) local[0] -= 0.5 * (fl_old + fl_new) * dx; // dissipated by sliding
       }
+      if (owned) local[1] = std::max(local[1], -fn_[node]); // measured before any release
       // r5: released when its normal force has reached zero (up to round-off
       // of a re-solved step).
       if (r5_[node] <= event || (fn_[node] <= kSeparated * fn_old && fn_[node] < -f_small_)) {
+        if (owned) local[2] = std::max(local[2], fn_[node]);
         contact_[node] = 0;
         fn_[node] = x_[node] = 0;
       }
     } else if (released_[node]) {
       // Released in this step (pulled off without force).
+      if (owned) local[2] = std::max(local[2], fn_[node]);
       fn_[node] = x_[node] = 0;
       released_[node] = 0;
     } else if (r4_[node] <= event) {
@@ -320,13 +327,18 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double 
   }
   PetscCall(VecRestoreArrayRead(system_->reactions_local(), &react));
   PetscCall(VecRestoreArrayRead(du, &d));
-  PetscCallMPI(MPI_Allreduce(&local_w, &w_friction, 1, MPI_DOUBLE, MPI_SUM, comm()));
+  PetscCallMPI(MPI_Allreduce(&local[0], &global[0], 1, MPI_DOUBLE, MPI_SUM, comm()));
+  PetscCallMPI(MPI_Allreduce(&local[1], &global[1], 2, MPI_DOUBLE, MPI_MAX, comm()));
+  report.w_friction = global[0];
+  report.tension = global[1];
+  report.release_force = global[2];
 
   // The tool has moved by dU with the increment.
   tool_.stroke += dU;
   // Gaps on the new geometry: contact nodes keep theirs for the next increment
   // to close (on arcs, sliding along the tangent leaves a second-order gap);
   // a free node that reached the surface up to round-off is in contact.
+  double gap = 0;
   for (PetscInt node : candidates_) {
     const Projection pr = tool_.Project(Position(node));
     if (pr.segment < 0) continue;
@@ -335,86 +347,10 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double 
       fn_[node] = x_[node] = 0;
     }
     gap_[node] = pr.gap;
+    if (contact_[node] && mesh_->node_owned[node]) gap = std::max(gap, pr.gap);
   }
+  PetscCallMPI(MPI_Allreduce(&gap, &report.gap, 1, MPI_DOUBLE, MPI_MAX, comm()));
   PetscCall(PetscLogEventEnd(Log::contact, 0, 0, 0, 0));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode ContactSet::AddFrictionForces(Vec f) const
-{
-  PetscScalar *a;
-  PetscFunctionBeginUser;
-  if (!friction()) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(VecGetArray(f, &a));
-  for (PetscInt node : candidates_) {
-    if (!SlipFree(node) || !mesh_->node_owned[node]) continue;
-    const double fl = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
-    a[mesh_->node_dof[node]] += fl * l_[node][0];
-    a[mesh_->node_dof[node] + 1] += fl * l_[node][1];
-  }
-  PetscCall(VecRestoreArray(f, &a));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode ContactSet::AddContactForces(Vec f) const
-{
-  PetscScalar *a;
-  PetscFunctionBeginUser;
-  PetscCall(VecGetArray(f, &a));
-  for (PetscInt node : candidates_) {
-    if (!contact_[node] || !mesh_->node_owned[node]) continue;
-    const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
-    a[mesh_->node_dof[node]] += fn_[node] * n_[node][0] + fl * l_[node][0];
-    a[mesh_->node_dof[node] + 1] += fn_[node] * n_[node][1] + fl * l_[node][1];
-  }
-  PetscCall(VecRestoreArray(f, &a));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode ContactSet::TotalForce(double force[2]) const
-{
-  double local[2] = {0, 0};
-  PetscFunctionBeginUser;
-  for (PetscInt node : candidates_) {
-    if (!contact_[node] || !mesh_->node_owned[node]) continue;
-    const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
-    for (int k = 0; k < 2; ++k) local[k] += fn_[node] * n_[node][k] + fl * l_[node][k];
-  }
-  PetscCallMPI(MPI_Allreduce(local, force, 2, MPI_DOUBLE, MPI_SUM, comm()));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode ContactSet::Count(PetscInt &n) const
-{
-  PetscInt local = 0;
-  PetscFunctionBeginUser;
-  for (PetscInt node : candidates_) local += contact_[node] && mesh_->node_owned[node];
-  PetscCall(MPIU_Allreduce(&local, &n, 1, MPIU_INT, MPI_SUM, comm()));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode ContactSet::NormalForceSum(double &sum) const
-{
-  double local = 0;
-  PetscFunctionBeginUser;
-  for (PetscInt node : candidates_)
-    if (contact_[node] && mesh_->node_owned[node]) local += fn_[node];
-  PetscCallMPI(MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, comm()));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode ContactSet::Violations(double &penetration, double &tension) const
-{
-  double local[2] = {0, 0}, global[2];
-  PetscFunctionBeginUser;
-  for (PetscInt node : candidates_) {
-    const Projection pr = tool_.Project(Position(node));
-    if (pr.segment >= 0) local[0] = std::max(local[0], -pr.gap);
-    if (contact_[node]) local[1] = std::max(local[1], -fn_[node]);
-  }
-  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, comm()));
-  penetration = global[0];
-  tension = global[1];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -58,6 +58,7 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
     if (ContactActive()) PetscCall(m_.contact->ReleasePulled(du, t.dU, release_fraction_, true, released));
     const bool material = switches > 0 && may_switch;
     if (material) ++t.redo;
+    t.left = may_switch ? 0 : switches;
     if (converged && !material && released == 0) break;
     if (it < opt_.friction_max_iters + opt_.rmin_max_redo) continue;
     // -dynamics auto before the switch: the caller turns inertia on instead.
@@ -75,6 +76,7 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
     PetscCall(Solve(lambda, dl, du, t.dU, inc));
     t.limit = StepLimit{};
     PetscCall(m_.body.ScanTrial(du, false, t.limit, switches));
+    t.left = switches;
     break;
   }
   if (ContactActive()) PetscCall(m_.contact->LimitStep(du, t.dU, t.limit));
@@ -121,7 +123,8 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   PetscCheck(r > kMinRmin, m_.comm, PETSC_ERR_NOT_CONVERGED,
              "r_min = %g (%s at %d) at lambda = %g: the increment cannot advance", r, LimiterName((int)t.limit.who),
              (int)t.limit.where, lambda);
-  if (r < 1.0 && (Iterative() || InertiaActive())) {
+  const bool resolve = r < 1.0 && (Iterative() || InertiaActive());
+  if (resolve) {
     // 2a. Friction is not linear in r, nor is inertia (M / dt^2): the
     // shortened step is solved again (and again while the re-solve still finds
     // an event well inside it: the non-linearity moves events). The last
@@ -148,6 +151,10 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   inc.dl = dl;
   inc.r = r;
   inc.dU = t.dU;
+  inc.inconsistent = t.left;
+  // Events of the solution taken lie at factors t.limit.r of it; a scaled step
+  // ends at its first event, a re-solved one may end past one.
+  inc.event_inside = resolve && t.limit.r * (1 + opt_.rmin_group_tol) < 1.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

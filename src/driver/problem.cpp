@@ -95,7 +95,8 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
 PetscErrorCode Problem::CreateForces(Vec like)
 {
   PetscFunctionBeginUser;
-  for (Vec *v : {&forces_.f_ext, &forces_.f_int, &forces_.f_ext0, &forces_.f_int0, &forces_.f_res})
+  for (Vec *v : {&forces_.f_app, &forces_.f_app0, &forces_.f_ext, &forces_.f_ext0, &forces_.f_int, &forces_.f_int0,
+                 &forces_.f_res, &forces_.f_net})
     PetscCall(VecDuplicate(like, v));
   PetscCall(VecZeroEntries(forces_.f_res));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -104,7 +105,8 @@ PetscErrorCode Problem::CreateForces(Vec like)
 PetscErrorCode Problem::DestroyForces()
 {
   PetscFunctionBeginUser;
-  for (Vec *v : {&forces_.f_ext, &forces_.f_int, &forces_.f_ext0, &forces_.f_int0, &forces_.f_res})
+  for (Vec *v : {&forces_.f_app, &forces_.f_app0, &forces_.f_ext, &forces_.f_ext0, &forces_.f_int, &forces_.f_int0,
+                 &forces_.f_res, &forces_.f_net})
     PetscCall(VecDestroy(v));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -142,7 +144,8 @@ PetscErrorCode Problem::Run()
     model_->contact = contact_.get();
   }
   PetscCall(body_.InternalForce(forces_.f_int));
-  PetscCall(scene_->ExternalForce(*model_, 0.0, forces_.f_ext));
+  PetscCall(ExternalForces(0.0));
+  PetscCall(ContactColumns(ContactCommit{}, row));
   PetscCall(scene_->Measure(*model_, 0.0, forces_.f_int, row));
   history_.Append(row);
   PetscCall(WriteFields(writer, step++, 0.0));
@@ -194,20 +197,23 @@ PetscErrorCode Problem::Run()
     PetscCall(controller.Advance(lambda, dl, end, du, taken));
 
     // 5. Commit: stresses, plastic states and geometry; inertia; contact.
-    Body::CommitInfo ci;
-    double dw_inertia = 0, dw_friction = 0;
-    PetscCall(VecCopy(forces_.f_ext, forces_.f_ext0));
-    PetscCall(VecCopy(forces_.f_int, forces_.f_int0));
-    PetscCall(body_.Commit(du, taken.r_event, ci));
-    if (inertia_) PetscCall(inertia_->Advance(du, taken.dl * path_.duration, dw_inertia));
+    Committed done;
+    for (auto [now, start] : {std::pair{forces_.f_app, forces_.f_app0}, std::pair{forces_.f_ext, forces_.f_ext0},
+                              std::pair{forces_.f_int, forces_.f_int0}})
+      PetscCall(VecCopy(now, start));
+    PetscCall(body_.Commit(du, taken.r_event, done.body));
+    if (inertia_) PetscCall(inertia_->Advance(du, taken.dl * path_.duration, done.dw_inertia));
     if (contact_ && contact_->active())
-      PetscCall(contact_->Commit(du, taken.react_scale * taken.dU, taken.react_scale, taken.r_event, dw_friction));
+      PetscCall(contact_->Commit(du, taken.react_scale * taken.dU, taken.react_scale, taken.r_event, done.contact));
+    const double lambda0 = lambda;
     const bool on_break = std::abs(lambda + taken.dl - next_break) < kSnapToBreak * dlambda_trial;
     lambda = on_break ? next_break : lambda + taken.dl;
     unsettled_ += taken.unsettled;
+    events_inside_ += taken.event_inside;
+    inconsistent_ += taken.inconsistent > 0;
 
     // 6. Forces, energies and the scene's measurements on the new configuration.
-    PetscCall(Record(inc, lambda, taken, ci, dw_friction, dw_inertia, du));
+    PetscCall(Record(inc, lambda0, lambda, taken, done, du));
     if (inc % opt_.output_every == 0 || lambda >= end - kLambdaTol) PetscCall(WriteFields(writer, step++, lambda));
   }
   if (stalled && inc % opt_.output_every != 0) PetscCall(WriteFields(writer, step++, lambda));
@@ -226,9 +232,15 @@ PetscErrorCode Problem::Run()
   PetscCheck(history_.FinishCsv(), comm_, PETSC_ERR_FILE_WRITE,
              "-history_csv %s: cannot rename the finished file into place", opt_.history_csv.c_str());
   PetscCall(PetscLogStagePop());
-  if (!stalled)
+  if (!stalled) {
     PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n",
                           opt_.scene.c_str(), (int)inc, (int)system_.factorizations(), opt_.output.c_str()));
+    PetscCall(PetscPrintf(comm_,
+                          "tubeform: self-checks: energy balance within %.2g %%, internal work within %.2g %%; "
+                          "compromises: %d steps past an event, %d unsettled, %d with inconsistent loading states\n",
+                          100 * worst_error_, 100 * worst_internal_, (int)events_inside_, (int)unsettled_,
+                          (int)inconsistent_));
+  }
   PetscCall(VecDestroy(&du));
   PetscCall(DestroyForces());
   // A stall is a failure of the run, reported after its results are written.
@@ -240,30 +252,52 @@ PetscErrorCode Problem::Run()
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode Problem::Record(PetscInt inc, double lambda, const Increment &taken, const Body::CommitInfo &ci,
-                               double dw_friction, double dw_inertia, Vec du)
+PetscErrorCode Problem::ContactColumns(const ContactCommit &report, HistoryRow &row) const
 {
-  Vec f_ext = forces_.f_ext, f_int = forces_.f_int;
-  double residual, dw_body;
+  PetscFunctionBeginUser;
+  if (!contact_) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscInt n;
+  PetscCall(contact_->Count(n));
+  row.n_contact = n;
+  PetscCall(contact_->NormalForceSum(row.fn_sum));
+  if (!contact_->active()) PetscFunctionReturn(PETSC_SUCCESS); // the tools are gone
+  PetscCall(contact_->Penetration(row.penetration));
+  row.tension = report.tension;
+  row.release_force = report.release_force;
+  row.contact_gap = report.gap;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::ExternalForces(double lambda)
+{
+  PetscFunctionBeginUser;
+  PetscCall(scene_->ExternalForce(*model_, lambda, forces_.f_app));
+  PetscCall(VecCopy(forces_.f_app, forces_.f_ext));
+  if (contact_ && contact_->active()) PetscCall(contact_->AddFrictionForces(forces_.f_ext));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, const Increment &taken,
+                               const Committed &done, Vec du)
+{
+  Vec f_int = forces_.f_int;
+  double residual, dw_body, dw_applied;
   const bool inertia = inertia_ && inertia_->active();
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::measure, 0, 0, 0, 0));
-  // External work by the trapezoidal rule: loads on free dofs, reactions on
-  // supported ones. The tools' work is the body's external work plus what
-  // friction dissipated.
-  PetscCall(scene_->ExternalForce(*model_, lambda, f_ext));
+  // Work of the increment by the trapezoidal rule: of the loads and supports
+  // at the nodes (loads on free dofs, reactions on supported ones), and of
+  // the scene's applied loads alone.
+  PetscCall(ExternalForces(lambda));
   PetscCall(body_.InternalForce(f_int));
   if (inertia) PetscCall(inertia_->AddForce(f_int)); // f_int + M a: what the loads and reactions balance
-  PetscCall(VecAXPBY(forces_.f_ext0, 0.5, 0.5, f_ext));
-  PetscCall(VecAXPBY(forces_.f_int0, 0.5, 0.5, f_int));
+  for (auto [start, now] : {std::pair{forces_.f_app0, forces_.f_app}, std::pair{forces_.f_ext0, forces_.f_ext},
+                            std::pair{forces_.f_int0, f_int}})
+    PetscCall(VecAXPBY(start, 0.5, 0.5, now));
   PetscCall(system_.ExternalWork(forces_.f_ext0, forces_.f_int0, du, dw_body));
-  energy_.w_ext += dw_body + dw_friction;
-  energy_.w_friction += dw_friction;
-  energy_.w_int += ci.dw_int;
-  energy_.w_plastic += ci.dw_plastic;
-  energy_.w_inertia += dw_inertia;
-  PetscCall(VecWAXPY(forces_.f_res, -1.0, f_int, f_ext));
+  PetscCall(system_.ExternalWork(forces_.f_app0, nullptr, du, dw_applied));
+  PetscCall(VecWAXPY(forces_.f_res, -1.0, f_int, forces_.f_ext));
   PetscCall(system_.FreeNorm(forces_.f_res, residual));
 
   HistoryRow row;
@@ -271,25 +305,59 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda, const Increment &tak
   row.rmin = taken.r;
   row.limiter = static_cast<double>(taken.who);
   row.limiter_where = taken.where;
-  row.n_plastic = ci.n_plastic;
+  row.n_plastic = done.body.n_plastic;
   row.friction_iters = taken.solves;
   row.residual = residual;
   row.redo = taken.redo;
-  row.drift = ci.drift;
+  row.drift = done.body.drift;
   row.unsettled = unsettled_;
+  row.events_inside = events_inside_;
+  row.inconsistent = inconsistent_;
+  row.inertia = inertia ? 1 : 0;
+  PetscCall(ContactColumns(done.contact, row));
+  if (contact_ && contact_->active()) {
+    // The net force the body needs at the contact nodes, f_int - f_app, ghost-summed.
+    Vec g;
+    PetscCall(VecWAXPY(forces_.f_net, -1.0, forces_.f_app, f_int));
+    PetscCall(DMGetGlobalVector(mesh_.dm, &g));
+    PetscCall(VecZeroEntries(g));
+    PetscCall(DMLocalToGlobal(mesh_.dm, forces_.f_net, ADD_VALUES, g));
+    PetscCall(DMGlobalToLocal(mesh_.dm, g, INSERT_VALUES, forces_.f_net));
+    PetscCall(DMRestoreGlobalVector(mesh_.dm, &g));
+    PetscCall(contact_->NormalForceMismatch(forces_.f_net, row.fn_mismatch));
+  }
+  PetscCall(scene_->Measure(*model_, lambda, f_int, row));
+
+  // Check (a)'s input: from the reported load and stroke where the scene
+  // says they are work-conjugate in this stage, else the loads' and supports'
+  // work plus what friction dissipated (the tools' side of it).
+  const HistoryRow &prev = history_.rows().back();
+  const double share = scene_->LoadWorkShare(0.5 * (lambda0 + lambda));
+  const double dw_tool = share * 0.5 * (prev.load + row.load) * (row.stroke - prev.stroke);
+  energy_.w_tool += dw_tool;
+  energy_.w_ext += share > 0 ? dw_tool + dw_applied : dw_body + done.contact.w_friction;
+  energy_.w_friction += done.contact.w_friction;
+  energy_.w_int += done.body.dw_int;
+  energy_.w_plastic += done.body.dw_plastic;
+  energy_.w_inertia += done.dw_inertia;
   row.w_ext = energy_.w_ext;
+  row.w_tool = energy_.w_tool;
   row.w_int = energy_.w_int;
   row.w_plastic = energy_.w_plastic;
   row.w_friction = energy_.w_friction;
   row.w_inertia = energy_.w_inertia;
-  row.inertia = inertia ? 1 : 0;
   PetscCall(body_.ElasticEnergy(row.w_elastic));
   if (inertia) PetscCall(inertia_->KineticEnergy(row.w_kinetic));
-  row.energy_error = energy_.Error();
-  PetscCall(scene_->Measure(*model_, lambda, f_int, row));
+  row.w_damped = energy_.Damped(row.w_kinetic);
+  row.energy_error = energy_.BalanceError(row.w_kinetic);
+  row.internal_error = energy_.InternalError(row.w_elastic);
   history_.Append(row);
   PetscCall(PetscLogEventEnd(Log::measure, 0, 0, 0, 0));
 
+  if (inc > kEnergyWarningAfter) {
+    worst_error_ = std::max(worst_error_, std::abs(row.energy_error));
+    worst_internal_ = std::max(worst_internal_, std::abs(row.internal_error));
+  }
   if (!warned_ && std::abs(row.energy_error) > kEnergyWarning && inc > kEnergyWarningAfter) {
     warned_ = true;
     PetscCall(PetscPrintf(comm_,

@@ -1,6 +1,8 @@
 #include "tubeform/metrics/shape.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace tf {
 
@@ -14,6 +16,19 @@ GapRange GapsTo(const std::vector<SurfacePoint> &points, const Line &line, doubl
     g.max = std::max(g.max, gap), g.min = std::min(g.min, gap);
   }
   return g;
+}
+
+double ChordGap(const std::vector<SurfacePoint> &points, size_t first, size_t last)
+{
+  if (first > last) std::swap(first, last);
+  const SurfacePoint &a = points[first], &b = points[last];
+  const double lx = b.x - a.x, ly = b.y - a.y, len = std::hypot(lx, ly);
+  if (last - first < 2 || !(len > 0)) return 0;
+  Line chord{{a.x, a.y}, {-ly / len, lx / len}, {}};
+  if (chord.n[0] * -a.x + chord.n[1] * -a.y < 0) chord.n = {-chord.n[0], -chord.n[1]}; // towards the origin
+  double c = 0;
+  for (size_t k = first + 1; k < last; ++k) c = std::max(c, chord.Gap(points[k]));
+  return c;
 }
 
 double AxisCornerRadius(double on_axis, double nx, double ny)

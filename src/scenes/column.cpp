@@ -28,6 +28,8 @@ public:
     return "";
   }
   LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}}; }
+  // The axial force and the end shortening are work-conjugate.
+  double LoadWorkShare(double) const override { return 1.0; }
   PetscErrorCode Load(Model &m, double, double dlambda) override
   {
     for (PetscInt n : Pins(m, "bottom")) m.system.Prescribe(n, 0, 0.0), m.system.Prescribe(n, 1, 0.0);

@@ -29,7 +29,8 @@ PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all)
   const auto &x = m.body.position();
   for (PetscInt n : m.mesh.node_sets["outer"])
     if (m.mesh.node_owned[n])
-      mine.insert(mine.end(), {x[2 * n], x[2 * n + 1], double(m.contact->InContact(n)), double(m.contact->Segment(n))});
+      mine.insert(mine.end(), {x[2 * n], x[2 * n + 1], double(m.contact->InContact(n)), double(m.contact->Segment(n)),
+                               double(m.mesh.node_orig[n])});
   PetscCallMPI(MPI_Comm_size(m.comm, &size));
   std::vector<int> counts(size), displs(size);
   int count = (int)mine.size();
@@ -40,7 +41,8 @@ PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all)
   PetscCallMPI(
     MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, buf.data(), counts.data(), displs.data(), MPI_DOUBLE, m.comm));
   all.clear();
-  for (int k = 0; k + 3 < total; k += 4) all.push_back({buf[k], buf[k + 1], (int)buf[k + 2], (int)buf[k + 3]});
+  for (int k = 0; k + 4 < total; k += 5)
+    all.push_back({buf[k], buf[k + 1], (int)buf[k + 2], (int)buf[k + 3], (long)buf[k + 4]});
   std::sort(all.begin(), all.end(),
             [](const SurfacePoint &a, const SurfacePoint &b) { return std::atan2(a.y, a.x) < std::atan2(b.y, b.x); });
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -61,6 +63,10 @@ public:
   {
     return {opt_.unload == "none" ? 1.0 : 2.0, stroke_ / opt.punch_speed, {1.0}};
   }
+  // The quarter model carries half the punch load of the full tube (the
+  // other half pushes the left quarter); the reversed loads of the paper's
+  // unloading do no work along the stroke.
+  double LoadWorkShare(double lambda) const override { return lambda > 1.0 && opt_.unload == "reverse" ? 0.0 : 0.5; }
   double ToolStroke(double lambda) const override
   {
     if (lambda <= 1.0) return lambda * stroke_;
@@ -124,17 +130,13 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
-    if (unloading_)
-      PetscCall(VecAXPY(f, 2.0 - lambda, reversed_));
-    else
-      PetscCall(m.contact->AddFrictionForces(f));
+    if (unloading_) PetscCall(VecAXPY(f, 2.0 - lambda, reversed_));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
   PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
   {
     double force[2];
-    PetscInt n;
     PetscFunctionBeginUser;
     row.stroke = ToolStroke(lambda);
     if (unloading_) {
@@ -143,11 +145,8 @@ public:
       PetscCall(m.contact->TotalForce(force));
     row.load = -2.0 * force[1]; // full tube: both halves push the die up
     row.tool_fx = -force[0], row.tool_fy = -force[1];
-    PetscCall(m.contact->Count(n));
-    row.n_contact = n;
     PetscCall(OuterExtents(m, row));
-    if (!unloading_) PetscCall(m.contact->Violations(row.penetration, row.tension)); // no tools while unloading
-    PetscCall(Shape(m, row));
+    PetscCall(Shape(m, lambda, row));
     row.stage = StageOf(lambda);
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -176,11 +175,13 @@ private:
   bool unloading_ = false;
   Vec reversed_ = nullptr;
   double reversed_total_[2] = {0, 0};
-  double smin_loaded_ = kNever, smax_loaded_ = -kNever; // flank contact region at the end of loading
+  long side_ends_[2] = {-1, -1}; // input node numbers of the outermost flank contacts (latest loading state)
 
-  // C/t (METHOD.md sec. 6): the largest gap between the flank and the outer
-  // surface between the outermost nodes touching the flank; and the corner radii.
-  PetscErrorCode Shape(Model &m, HistoryRow &row)
+  // C/t (METHOD.md sec. 6) and the corner radii. Loading: the largest gap
+  // between the flank and the outer surface between the outermost nodes
+  // touching the flank, which are remembered as the side's ends. Unloading:
+  // the largest gap between the side and the chord through those two nodes.
+  PetscErrorCode Shape(Model &m, double lambda, HistoryRow &row)
   {
     std::vector<SurfacePoint> all;
     PetscFunctionBeginUser;
@@ -190,27 +191,30 @@ private:
       row.r_corner_y = AxisCornerRadius(all.back().y, all[all.size() - 2].y, all[all.size() - 2].x);
     }
     if (!squaring_) PetscFunctionReturn(PETSC_SUCCESS);
+    for (const auto &o : all) row.n_contact_apex += o.contact && flank_ == 1 && o.segment == 0;
+    if (StageOf(lambda) > 0) {
+      size_t ends[2] = {all.size(), all.size()};
+      for (size_t k = 0; k < all.size(); ++k)
+        for (int e = 0; e < 2; ++e)
+          if (all[k].id == side_ends_[e]) ends[e] = k;
+      const bool found = ends[0] < all.size() && ends[1] < all.size();
+      row.c_over_t = found ? ChordGap(all, ends[0], ends[1]) / opt_.tube_t : 0.0;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
     const Tool &tool = m.contact->tool();
     const Segment &fl = tool.segments[flank_];
     const Vec2 off = tool.Offset();
     const Line flank{{fl.a[0] + off[0], fl.a[1] + off[1]}, fl.n_line, {fl.n_line[1], -fl.n_line[0]}};
-    for (const auto &o : all) row.n_contact_apex += o.contact && flank_ == 1 && o.segment == 0;
     double smin = kNever, smax = -kNever;
-    if (unloading_) smin = smin_loaded_, smax = smax_loaded_; // the former contact region
+    side_ends_[0] = side_ends_[1] = -1;
     for (const auto &o : all)
-      if (!unloading_ && o.contact && o.segment == flank_) {
+      if (o.contact && o.segment == flank_) {
         const double s = flank.Along(o);
-        smin = std::min(smin, s), smax = std::max(smax, s);
+        if (s < smin) smin = s, side_ends_[0] = o.id;
+        if (s > smax) smax = s, side_ends_[1] = o.id;
       }
-    // Loaded: gaps to the flank. Unloaded (no die): the side's deviation from
-    // straight over the former contact region, largest minus smallest gap to
-    // the final flank line.
     const GapRange g = GapsTo(all, flank, smin, smax);
-    if (g.empty())
-      row.c_over_t = 0;
-    else
-      row.c_over_t = (unloading_ ? g.max - g.min : std::max(g.max, 0.0)) / opt_.tube_t;
-    if (!unloading_) smin_loaded_ = smin, smax_loaded_ = smax;
+    row.c_over_t = g.empty() ? 0.0 : std::max(g.max, 0.0) / opt_.tube_t;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 };

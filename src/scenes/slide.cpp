@@ -22,6 +22,8 @@ public:
     return "";
   }
   LoadPath Path(const Options &opt) const override { return {2.0, opt.dynamics_time, {1.0}}; }
+  // While the top is pushed, T and its displacement are work-conjugate.
+  double LoadWorkShare(double lambda) const override { return lambda > 1.0 ? 1.0 : 0.0; }
   PetscErrorCode Initialize(Model &, ContactSpec &tools) override
   {
     tools.tool = BuildFlatPlate(0.0, -kFloorHalfLength, kFloorHalfLength, true);
@@ -43,7 +45,6 @@ public:
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
     PetscCall(TopLoad(m, -std::min(lambda, 1.0) * opt_.slide_n, f, false));
-    PetscCall(m.contact->AddFrictionForces(f));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
@@ -52,10 +53,6 @@ public:
     row.stroke = lambda <= 1.0 ? 0.0 : (lambda - 1.0) * opt_.slide_push;
     PetscCall(SetForce(
       m, "top", f_int, [](PetscInt, double d[2]) { d[0] = 1, d[1] = 0; }, row.load));
-    PetscInt n;
-    PetscCall(m.contact->Count(n));
-    row.n_contact = n;
-    PetscCall(m.contact->Violations(row.penetration, row.tension));
     double local[2] = {0, 0}, g[2];
     for (PetscInt k : m.mesh.node_sets["bottom"])
       if (m.mesh.node_owned[k]) local[0] += m.body.displacement()[2 * k], local[1] += 1;
@@ -64,7 +61,6 @@ public:
     double force[2];
     PetscCall(m.contact->TotalForce(force));
     row.tool_fx = -force[0], row.tool_fy = -force[1];
-    PetscCall(m.contact->NormalForceSum(row.fn_sum));
     row.stage = StageOf(lambda);
     PetscFunctionReturn(PETSC_SUCCESS);
   }

@@ -21,6 +21,8 @@ public:
   std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
   LoadPath Path(const Options &opt) const override { return {2.0, opt.dynamics_time, {1.0}}; }
+  // While the inner surface is turned, the moment and the turn are work-conjugate.
+  double LoadWorkShare(double lambda) const override { return lambda > 1.0 ? 1.0 : 0.0; }
   PetscErrorCode Initialize(Model &, ContactSpec &tools) override
   {
     Segment arc;
@@ -45,11 +47,14 @@ public:
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     PetscFunctionBeginUser;
-    const double ri = opt_.tube_ro - opt_.tube_t;
     if (lambda < 1.0)
       PetscCall(AddEdgePressure(m, "inner", dlambda * opt_.slide_n, nullptr, true, lambda * opt_.slide_n));
     const double turn = lambda < 1.0 ? 0.0 : dlambda * opt_.slide_push / opt_.tube_ro;
-    for (PetscInt n : m.mesh.node_sets["inner"]) m.system.Prescribe(n, 1, turn * ri); // tangential (frame l = radial)
+    // A rigid turn of the inner surface: tangential (frame n; l is radial)
+    // displacement = turn x current radius, so the moment and the turn are
+    // work-conjugate.
+    const auto &x = m.body.position();
+    for (PetscInt n : m.mesh.node_sets["inner"]) m.system.Prescribe(n, 1, turn * std::hypot(x[2 * n], x[2 * n + 1]));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) override
@@ -57,7 +62,6 @@ public:
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
     PetscCall(AddEdgePressure(m, "inner", std::min(lambda, 1.0) * opt_.slide_n, f, false));
-    PetscCall(m.contact->AddFrictionForces(f));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
@@ -68,11 +72,6 @@ public:
     const auto &x = m.body.position();
     PetscCall(SetForce(
       m, "inner", f_int, [&](PetscInt n, double d[2]) { d[0] = -x[2 * n + 1], d[1] = x[2 * n]; }, row.load));
-    PetscInt n;
-    PetscCall(m.contact->Count(n));
-    row.n_contact = n;
-    PetscCall(m.contact->Violations(row.penetration, row.tension));
-    PetscCall(m.contact->NormalForceSum(row.fn_sum));
     row.stage = StageOf(lambda);
     PetscFunctionReturn(PETSC_SUCCESS);
   }

@@ -84,9 +84,9 @@ public:
 
   // Collective: work of an increment du of the external actions, component by
   // component in the node frames: the applied force f_ext on free dofs and the
-  // support reaction (= internal force f_int) on prescribed ones. Forces are
-  // per-rank contribution vectors (local, not ghost-summed), e.g. trapezoidal
-  // means of the start and end of the increment.
+  // support reaction (= internal force f_int; none if f_int is null) on
+  // prescribed ones. Forces are per-rank contribution vectors (local, not
+  // ghost-summed), e.g. trapezoidal means of the start and end of the increment.
   PetscErrorCode ExternalWork(Vec f_ext, Vec f_int, Vec du, double &work);
 
 private:

@@ -52,6 +52,15 @@ struct ContactParams {
   double gap_tol = 1e-7;   // a free node this close to the surface (mm) is in contact
 };
 
+// What a commit did, for the history (docs/output.md): the friction work and
+// the diagnostics that show whether the step's events were resolved.
+struct ContactCommit {
+  double w_friction = 0;    // friction dissipation of the increment, -sum f_l,mid dslip
+  double tension = 0;       // largest tensile normal force of a contact node at the end of the step, before releases
+  double release_force = 0; // largest compressive normal force dropped by a release in the step
+  double gap = 0;           // largest gap (>= 0) of a node in contact after the commit (mm)
+};
+
 // What a scene asks of the driver's contact set.
 struct ContactSpec {
   Tool tool;
@@ -98,8 +107,8 @@ public:
   PetscErrorCode LimitStep(Vec du, double dU, StepLimit &limit);
   // Accepts the increment (du for tool step dU, reactions scaled by react_scale,
   // r the accepted fraction of the trial): forces, slip, events, and the
-  // projection of contact nodes back onto the tool. Returns the friction work.
-  PetscErrorCode Commit(Vec du, double dU, double react_scale, double r, double &w_friction);
+  // projection of contact nodes back onto the tool.
+  PetscErrorCode Commit(Vec du, double dU, double react_scale, double r, ContactCommit &report);
 
   // Friction forces on the body (owned nodes, global frame) into a contribution vector.
   PetscErrorCode AddFrictionForces(Vec f) const;
@@ -110,8 +119,16 @@ public:
   PetscErrorCode Count(PetscInt &n) const;
   // Collective: sum over contact nodes of the normal force f_n.
   PetscErrorCode NormalForceSum(double &sum) const;
-  // Collective: largest penetration (>= 0) and largest tension (normal force < 0) over contact nodes.
-  PetscErrorCode Violations(double &penetration, double &tension) const;
+  // Collective: largest penetration (>= 0) of a candidate node into the tool (mm).
+  PetscErrorCode Penetration(double &penetration) const;
+  // Collective: the largest difference between a contact node's stored normal
+  // force and the normal component, on the current geometry, of the force the
+  // body needs there (f_net = f_int - f_applied, ghost-summed local vector),
+  // relative to the largest normal force: how far the force bookkeeping has
+  // drifted from the body's equilibrium. Nodes whose both components are held
+  // (global frame on a symmetry plane) share their force with the support and
+  // are left out.
+  PetscErrorCode NormalForceMismatch(Vec f_net, double &mismatch) const;
 
   bool InContact(PetscInt node) const { return contact_[node]; }
   int Segment(PetscInt node) const { return segment_[node]; }

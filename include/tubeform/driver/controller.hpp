@@ -41,6 +41,8 @@ struct Increment {
   PetscInt solves = 0;          // factorizations, friction iterations and re-solves included
   PetscInt redo = 0;            // re-solves for loading/unloading switches
   PetscInt unsettled = 0;       // trial steps taken with unsettled iterations
+  bool event_inside = false;    // the step taken goes past an event of its own solution (a compromise)
+  PetscInt inconsistent = 0;    // Gauss points whose loading state disagrees with the solution taken
 };
 
 class Controller {
@@ -58,6 +60,7 @@ private:
     bool settled = true; // its iterations settled (or it was taken unsettled)
     double dU = 0;       // tool step
     PetscInt redo = 0;   // loading switches applied
+    PetscInt left = 0;   // loading switches called for but not applied (the -rmin_max_redo budget ran out)
   };
   Model &m_;
   Scene &scene_;

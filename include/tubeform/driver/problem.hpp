@@ -55,20 +55,35 @@ private:
   History history_;
 
   // The state of the loop between increments.
+  // Forces at the end of the last increment (local contribution vectors) and at its start (0).
   struct Forces {
-    Vec f_ext = nullptr, f_int = nullptr;   // at the end of the last increment (local contribution vectors)
-    Vec f_ext0 = nullptr, f_int0 = nullptr; // at its start
-    Vec f_res = nullptr;                    // out-of-balance force f_ext - f_int
+    Vec f_app = nullptr, f_app0 = nullptr; // the scene's applied loads
+    Vec f_ext = nullptr, f_ext0 = nullptr; // applied loads + friction forces
+    Vec f_int = nullptr, f_int0 = nullptr; // internal forces (+ inertia forces)
+    Vec f_res = nullptr;                   // out-of-balance force f_ext - f_int
+    Vec f_net = nullptr;                   // f_int - f_app ghost-summed: the contact forces the body needs
   } forces_;
   EnergyAccount energy_;
-  PetscInt unsettled_ = 0; // trial steps taken unsettled, so far
-  bool warned_ = false;    // the energy warning was printed
+  // Compromises so far (history columns of those names).
+  PetscInt unsettled_ = 0, events_inside_ = 0, inconsistent_ = 0;
+  double worst_error_ = 0, worst_internal_ = 0; // largest |energy_error|, |internal_error| so far
+  bool warned_ = false;                         // the energy warning was printed
 
   PetscErrorCode CreateForces(Vec like);
   PetscErrorCode DestroyForces();
-  // Step 4 of Run: the increment's forces, energies and the scene's measurements into the history.
-  PetscErrorCode Record(PetscInt inc, double lambda, const Increment &step, const Body::CommitInfo &ci,
-                        double dw_friction, double dw_inertia, Vec du);
+  // What a committed increment did, for its history row.
+  struct Committed {
+    Body::CommitInfo body;
+    ContactCommit contact;
+    double dw_inertia = 0;
+  };
+  // Step 6 of Run: the increment's forces, energies and the scene's measurements into the history.
+  PetscErrorCode Record(PetscInt inc, double lambda0, double lambda, const Increment &step, const Committed &done,
+                        Vec du);
+  // The contact set's columns of a history row (none without tools).
+  PetscErrorCode ContactColumns(const ContactCommit &report, HistoryRow &row) const;
+  // The scene's applied loads and the friction forces at lambda into f_app and f_ext.
+  PetscErrorCode ExternalForces(double lambda);
   PetscErrorCode PrintMonitor(PetscInt inc, double lambda, const Increment &step, const HistoryRow &row);
   PetscErrorCode WriteFields(ResultWriter &writer, PetscInt step, double t);
 };

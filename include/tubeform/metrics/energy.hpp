@@ -1,5 +1,18 @@
-// The energy accounts of a run (per unit length of the modelled part, N mm/mm),
-// accumulated increment by increment (METHOD.md section 6).
+// The energy accounts of a run and its two self-checks (docs/theory.md,
+// "Self-checks"), per unit length of the modelled part (N mm/mm), accumulated
+// increment by increment. Each side of a check comes from other quantities:
+//   (a) work put in  = internal work + friction dissipation + kinetic energy
+//                      + energy damped by backward Euler (inertia work -
+//                      kinetic energy: all works by the same trapezoidal rule),
+//       the input taken from the reported load and stroke where they are
+//       work-conjugate (a tool: half the punch load times the stroke for the
+//       quarter tube), else from the loads and supports at the nodes; the
+//       friction dissipation from the contact slips, the internal work from
+//       stresses and strain increments, the kinetic and damped energies from
+//       the velocities;
+//   (b) internal work = plastic dissipation + stored elastic energy,
+//       the plastic part from the flow stress and plastic strain increments,
+//       the elastic part from the current stresses.
 #pragma once
 
 #include <algorithm>
@@ -10,14 +23,25 @@
 namespace tf {
 
 struct EnergyAccount {
-  double w_ext = 0;      // the tools' and loads' work: body external work + friction dissipation
+  double w_ext = 0;      // work put into the model (check (a)'s input)
+  double w_tool = 0;     // the part of w_ext measured from the reported load and stroke
   double w_int = 0;      // stress work, sum sigma_mid : deps dV
   double w_plastic = 0;  // plastic dissipation, sum sigma_y,mid dep dV
   double w_friction = 0; // friction dissipation, -sum f_l,mid dslip
-  double w_inertia = 0;  // work of the inertia forces (trapezoidal)
+  double w_inertia = 0;  // work of the inertia forces (trapezoidal) = kinetic + damped energy
 
-  // (w_ext - w_int - w_friction - w_inertia) / |w_ext|
-  double Error() const { return (w_ext - w_int - w_friction - w_inertia) / std::max(std::abs(w_ext), kTiny); }
+  // Energy damped by backward Euler so far: the inertia work that is not kinetic energy.
+  double Damped(double w_kinetic) const { return w_inertia - w_kinetic; }
+  // (a) (w_ext - w_int - w_friction - w_kinetic - w_damped) / |w_ext|
+  double BalanceError(double w_kinetic) const
+  {
+    return (w_ext - w_int - w_friction - w_kinetic - Damped(w_kinetic)) / std::max(std::abs(w_ext), kTiny);
+  }
+  // (b) (w_int - w_plastic - w_elastic) / |w_int|
+  double InternalError(double w_elastic) const
+  {
+    return (w_int - w_plastic - w_elastic) / std::max(std::abs(w_int), kTiny);
+  }
 };
 
 } // namespace tf

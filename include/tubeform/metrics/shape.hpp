@@ -15,6 +15,7 @@ namespace tf {
 struct SurfacePoint {
   double x = 0, y = 0;
   int contact = 0, segment = -1;
+  long id = -1; // node number of the input mesh
 };
 
 // A straight line through `a` with unit normal `n` (pointing into the body)
@@ -32,6 +33,13 @@ struct GapRange {
   bool empty() const { return max < min; }
 };
 GapRange GapsTo(const std::vector<SurfacePoint> &points, const Line &line, double smin, double smax);
+
+// C of a side without a tool (METHOD.md sec. 6, after unloading): the largest
+// gap between the chord through points[first] and points[last] and the points
+// between them, measured towards the origin (the tube's centre): the side
+// bowing inwards. 0 for a straight or outward-bowing side, whatever its tilt
+// or shift (a rigid motion of the side counts nothing).
+double ChordGap(const std::vector<SurfacePoint> &points, size_t first, size_t last);
 
 // Radius of the circle centred on a symmetry axis through a node on the axis
 // (at distance on_axis from the origin) and its neighbour (nx along the axis,

@@ -61,11 +61,18 @@ public:
   virtual PetscErrorCode BeginIncrement(Model &m, double lambda) { return 0; }
   // Supports and loads of the increment lambda -> lambda + dlambda into the system.
   virtual PetscErrorCode Load(Model &m, double lambda, double dlambda) = 0;
-  // Total external load vector at lambda on the current geometry (local vector).
+  // The scene's applied loads at lambda on the current geometry (local vector;
+  // the contact forces are the driver's).
   virtual PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) = 0;
   // Fills stroke and load (and scene metrics) of the history row. `f_int` is
   // the internal force of the current state (local vector, global frame).
   virtual PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) = 0;
+  // Work done on the model per unit of load x stroke (history columns) in the
+  // stage at lambda, where the two are work-conjugate (a tool pressing the
+  // quarter tube: 0.5, the load being the full tube's); 0 where they are not.
+  // The energy check then takes its input from the reported load
+  // (docs/theory.md, "Self-checks").
+  virtual double LoadWorkShare(double lambda) const { return 0; }
   // Scene metrics written as attributes at the end.
   virtual std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const { return {}; }
 };

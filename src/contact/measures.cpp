@@ -1,0 +1,106 @@
+// What the contact set reports: forces on the body, counts, penetration.
+#include <algorithm>
+#include <cmath>
+
+#include "tubeform/contact/contact.hpp"
+#include "tubeform/contact/friction.hpp"
+
+namespace tf {
+
+PetscErrorCode ContactSet::AddFrictionForces(Vec f) const
+{
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  if (!friction()) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecGetArray(f, &a));
+  for (PetscInt node : candidates_) {
+    if (!SlipFree(node) || !mesh_->node_owned[node]) continue;
+    const double fl = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
+    a[mesh_->node_dof[node]] += fl * l_[node][0];
+    a[mesh_->node_dof[node] + 1] += fl * l_[node][1];
+  }
+  PetscCall(VecRestoreArray(f, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::AddContactForces(Vec f) const
+{
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(f, &a));
+  for (PetscInt node : candidates_) {
+    if (!contact_[node] || !mesh_->node_owned[node]) continue;
+    const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
+    a[mesh_->node_dof[node]] += fn_[node] * n_[node][0] + fl * l_[node][0];
+    a[mesh_->node_dof[node] + 1] += fn_[node] * n_[node][1] + fl * l_[node][1];
+  }
+  PetscCall(VecRestoreArray(f, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::TotalForce(double force[2]) const
+{
+  double local[2] = {0, 0};
+  PetscFunctionBeginUser;
+  for (PetscInt node : candidates_) {
+    if (!contact_[node] || !mesh_->node_owned[node]) continue;
+    const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
+    for (int k = 0; k < 2; ++k) local[k] += fn_[node] * n_[node][k] + fl * l_[node][k];
+  }
+  PetscCallMPI(MPI_Allreduce(local, force, 2, MPI_DOUBLE, MPI_SUM, comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::Count(PetscInt &n) const
+{
+  PetscInt local = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt node : candidates_) local += contact_[node] && mesh_->node_owned[node];
+  PetscCall(MPIU_Allreduce(&local, &n, 1, MPIU_INT, MPI_SUM, comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::NormalForceSum(double &sum) const
+{
+  double local = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt node : candidates_)
+    if (contact_[node] && mesh_->node_owned[node]) local += fn_[node];
+  PetscCallMPI(MPI_Allreduce(&local, &sum, 1, MPI_DOUBLE, MPI_SUM, comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::Penetration(double &penetration) const
+{
+  double local = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt node : candidates_) {
+    const Projection pr = tool_.Project(Position(node));
+    if (pr.segment >= 0) local = std::max(local, -pr.gap);
+  }
+  PetscCallMPI(MPI_Allreduce(&local, &penetration, 1, MPI_DOUBLE, MPI_MAX, comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::NormalForceMismatch(Vec f_net, double &mismatch) const
+{
+  const PetscScalar *f;
+  double local[2] = {0, 0}, global[2];
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(f_net, &f));
+  for (PetscInt node : candidates_) {
+    if (!contact_[node] || global_frame_[node] || !mesh_->node_owned[node]) continue;
+    const Projection pr = tool_.Project(Position(node));
+    if (pr.segment < 0) continue;
+    const PetscInt o = mesh_->node_dof[node];
+    const double fn_body = pr.n[0] * PetscRealPart(f[o]) + pr.n[1] * PetscRealPart(f[o + 1]);
+    local[0] = std::max(local[0], std::abs(fn_[node] - fn_body));
+    local[1] = std::max(local[1], std::abs(fn_[node]));
+  }
+  PetscCall(VecRestoreArrayRead(f_net, &f));
+  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, comm()));
+  mismatch = global[1] > 0 ? global[0] / global[1] : 0.0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

@@ -1,0 +1,88 @@
+// Shape metrics of METHOD.md section 6 on constructed outer surfaces, against
+// their geometric definitions (no mesh, no MPI):
+//  - C after unloading (chord): a straight side gives 0 however it is tilted
+//    or shifted (a rigid motion of the side counts nothing: the defect of the
+//    old measure against the fixed 45-degree flank line, issue 9); a side
+//    bowed inwards by a circular sag s gives s, bowed outwards 0, and
+//    rotating the bowed side rigidly keeps s;
+//  - C while loaded (flank line): a straight side on the flank gives 0, a
+//    sag s between the outermost contacts gives s;
+//  - the corner radius of a circle through the axis node is the circle's.
+// Tolerance 1e-12 mm: exact geometry up to round-off of coordinates ~20 mm.
+#include <cmath>
+#include <vector>
+
+#include "check.hpp"
+#include "tubeform/metrics/shape.hpp"
+
+using namespace tf;
+
+namespace {
+
+// n + 1 points along the 45-degree flank x + y = h sqrt2 from s = -L to L,
+// bowed towards the origin by sag * (1 - (s/L)^2) (a parabola: its largest gap
+// is `sag`, at the middle).
+std::vector<SurfacePoint> Side(double h, double L, double sag, int n)
+{
+  std::vector<SurfacePoint> p;
+  const double r2 = 1 / std::sqrt(2.0);
+  for (int k = 0; k <= n; ++k) {
+    const double s = -L + 2 * L * k / n, g = sag * (1 - (s / L) * (s / L));
+    // Point on the line, then moved along the inward normal (-1, -1)/sqrt2 by g.
+    const double x = h * r2 + s * r2 - g * r2, y = h * r2 - s * r2 - g * r2;
+    p.push_back({x, y, 1, 1, k});
+  }
+  return p;
+}
+
+// The points turned by angle a about (cx, cy) and shifted by (dx, dy).
+std::vector<SurfacePoint> Moved(std::vector<SurfacePoint> p, double a, double cx, double cy, double dx, double dy)
+{
+  const double c = std::cos(a), s = std::sin(a);
+  for (auto &q : p) {
+    const double x = q.x - cx, y = q.y - cy;
+    q.x = cx + c * x - s * y + dx, q.y = cy + s * x + c * y + dy;
+  }
+  return p;
+}
+
+} // namespace
+
+int main()
+{
+  const double h = 17.5, L = 6.0, tol = 1e-12; // flank x + y = h sqrt2, a side 2L long
+  // Chord after unloading.
+  const auto straight = Side(h, L, 0.0, 24);
+  CHECK_NEAR(ChordGap(straight, 0, straight.size() - 1), 0.0, tol);
+  for (double a : {0.05, -0.2, 0.7}) {
+    const auto turned = Moved(straight, a, 3.0, 14.0, 0.4, -1.1);
+    CHECK_NEAR(ChordGap(turned, 0, turned.size() - 1), 0.0, tol);
+  }
+  const double sag = 0.37;
+  const auto bowed = Side(h, L, sag, 24);
+  CHECK_NEAR(ChordGap(bowed, 0, bowed.size() - 1), sag, tol);
+  CHECK_NEAR(ChordGap(bowed, bowed.size() - 1, 0), sag, tol); // ends in either order
+  const auto bowed_turned = Moved(bowed, 0.3, 5.0, 9.0, 0.2, 0.1);
+  CHECK_NEAR(ChordGap(bowed_turned, 0, bowed_turned.size() - 1), sag, 1e-11);
+  const auto outward = Side(h, L, -sag, 24);
+  CHECK_NEAR(ChordGap(outward, 0, outward.size() - 1), 0.0, tol);
+  // Only the points between the two ends count: the chord y = 10 from x = -1 to
+  // 1 with a point 0.5 inside it, and one far inside beyond the end.
+  const std::vector<SurfacePoint> few = {{-1, 10}, {0, 9.5}, {1, 10}, {2, 3}};
+  CHECK_NEAR(ChordGap(few, 0, 2), 0.5, tol);
+
+  // Loaded: gaps to the flank line between the outermost contacts.
+  const double r2 = 1 / std::sqrt(2.0);
+  const Line flank{{h * r2, h * r2}, {-r2, -r2}, {-r2, r2}};
+  const GapRange g0 = GapsTo(straight, flank, -L, L);
+  CHECK(!g0.empty());
+  CHECK_NEAR(std::max(g0.max, 0.0), 0.0, tol);
+  const GapRange g1 = GapsTo(bowed, flank, -L, L);
+  CHECK_NEAR(g1.max, sag, tol);
+  CHECK(GapsTo(bowed, flank, 2 * L, 3 * L).empty());
+
+  // Corner radius: nodes on a circle of radius R centred on the x axis at c.
+  const double R = 4.0, c = 13.5, t = 0.15;
+  CHECK_NEAR(AxisCornerRadius(c + R, c + R * std::cos(t), R * std::sin(t)), R, 1e-10);
+  return ReportChecks("test_metrics");
+}
