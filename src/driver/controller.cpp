@@ -126,22 +126,23 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   const bool resolve = r < 1.0 && (Iterative() || InertiaActive());
   if (resolve) {
     // 2a. Friction is not linear in r, nor is inertia (M / dt^2): the
-    // shortened step is solved again (and again while the re-solve still finds
-    // an event well inside it: the non-linearity moves events). The last
-    // solution is taken as it is: scaling it would break the friction forces'
-    // equilibrium; events slightly past its end are taken with it.
+    // shortened step is solved again, and again while the re-solve finds its
+    // first event more than -rmin_event_tol inside it (the non-linearity moves
+    // events), kMaxResolves times at most. The last solution is taken as it
+    // is (scaling it would break the friction forces' equilibrium), and the
+    // events of that solution up to its end happen in it: none past the end.
     double taken = r;
     for (int attempt = 0;; ++attempt) {
       dl *= taken;
       PetscCall(SettledTrial(lambda, dl, du, t, inc, halvings));
       for (int h = 0; h < halvings; ++h) r *= 0.5;
-      if (t.limit.r >= 1.0 - kEventSlack || attempt == kMaxResolves - 1) break;
+      if (t.limit.r >= 1.0 - opt_.rmin_event_tol || attempt == kMaxResolves - 1) break;
       taken = t.limit.r;
       if (InertiaActive()) taken = std::max(taken, MinStepFraction(dl));
       if (taken >= 1.0) break;
       r *= taken;
     }
-    inc.r_event = std::max(1.0 + kEventSlack, std::min(t.limit.r, 1.0));
+    inc.r_event = 1.0;
   } else {
     // 2b. A linear step: the solution scaled by r is the solution of the scaled step.
     PetscCall(VecScale(du, r));
@@ -152,9 +153,10 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   inc.r = r;
   inc.dU = t.dU;
   inc.inconsistent = t.left;
-  // Events of the solution taken lie at factors t.limit.r of it; a scaled step
-  // ends at its first event, a re-solved one may end past one.
-  inc.event_inside = resolve && t.limit.r * (1 + opt_.rmin_group_tol) < 1.0;
+  // A scaled step ends at its first event; a re-solved one may end past one:
+  // within -rmin_event_tol that is the event's location tolerance, beyond it
+  // (the re-solves ran out) a compromise.
+  inc.event_inside = resolve && t.limit.r < 1.0 - opt_.rmin_event_tol;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

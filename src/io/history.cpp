@@ -35,7 +35,7 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"redo", &HistoryRow::redo, "re-solves of the increment for loading/unloading switches"},
     {"unsettled", &HistoryRow::unsettled, "trial steps so far taken with unsettled iterations (compromise)"},
     {"events_inside", &HistoryRow::events_inside,
-     "re-solved steps so far taken past an event of their own solution (compromise)"},
+     "re-solved steps so far taken past an event by more than -rmin_event_tol (compromise)"},
     {"inconsistent", &HistoryRow::inconsistent,
      "increments so far taken with Gauss points whose loading state disagrees with the solution (compromise)"},
     {"drift", &HistoryRow::drift, "largest |sbar / sigma_y - 1| of a plastic update (before any drift correction)"},

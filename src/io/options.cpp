@@ -98,6 +98,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                              &opt.rmin_domega, nullptr));
   PetscCall(PetscOptionsReal("-rmin_group_tol", "Events within (1 + tol) r_min are taken in the same increment",
                              "tubeform", opt.rmin_group_tol, &opt.rmin_group_tol, nullptr));
+  PetscCall(PetscOptionsReal("-rmin_event_tol",
+                             "Steps that are not linear in r (friction, inertia) are solved again until their first "
+                             "event lies within this fraction of the step's end",
+                             "tubeform", opt.rmin_event_tol, &opt.rmin_event_tol, nullptr));
   PetscCall(PetscOptionsInt("-rmin_max_increments", "Stop with an error after this many increments", "tubeform",
                             opt.rmin_max_increments, &opt.rmin_max_increments, nullptr));
   PetscCall(
@@ -262,6 +266,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-rmin_domega %g: the rotation increment limit must lie in (0, 0.5] rad", opt.rmin_domega);
   PetscCheck(opt.rmin_group_tol >= 0 && opt.rmin_group_tol <= 1, comm, PETSC_ERR_USER_INPUT,
              "-rmin_group_tol %g: must lie in [0, 1]", opt.rmin_group_tol);
+  PetscCheck(opt.rmin_event_tol > 0 && opt.rmin_event_tol <= 0.5, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_event_tol %g: must lie in (0, 0.5]", opt.rmin_event_tol);
   PetscCheck(opt.rmin_max_increments >= 1, comm, PETSC_ERR_USER_INPUT, "-rmin_max_increments %d: must be at least 1",
              (int)opt.rmin_max_increments);
   PetscCheck(opt.rmin_stall_increments >= 10, comm, PETSC_ERR_USER_INPUT,

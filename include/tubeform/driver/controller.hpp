@@ -19,8 +19,6 @@ namespace tf {
 constexpr int kMaxCuts = 6;
 // Solves of a shortened non-linear step before it is taken with an event inside.
 constexpr int kMaxResolves = 3;
-// Events of a re-solved (friction, inertia) step found this far beyond its end are taken with it.
-constexpr double kEventSlack = 1e-2;
 // -dynamics implicit: no step shorter than this fraction of the trial step.
 // Events closer than that (a node whose normal force is all but zero, a point
 // a hair from the yield surface) are taken with it; shorter steps would make
@@ -41,7 +39,7 @@ struct Increment {
   PetscInt solves = 0;          // factorizations, friction iterations and re-solves included
   PetscInt redo = 0;            // re-solves for loading/unloading switches
   PetscInt unsettled = 0;       // trial steps taken with unsettled iterations
-  bool event_inside = false;    // the step taken goes past an event of its own solution (a compromise)
+  bool event_inside = false;    // the step taken goes past an event by more than -rmin_event_tol (a compromise)
   PetscInt inconsistent = 0;    // Gauss points whose loading state disagrees with the solution taken
 };
 

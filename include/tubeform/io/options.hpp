@@ -31,6 +31,7 @@ struct Options {
   double rmin_deps = 2e-3;      // r2: largest principal strain increment
   double rmin_domega = 1e-2;    // r3: largest rotation increment (rad)
   double rmin_group_tol = 1e-6; // events within (1 + tol) r_min are taken together
+  double rmin_event_tol = 1e-2; // re-solved steps locate their events to this fraction of the step
   PetscInt rmin_max_increments = 100000;
   PetscInt rmin_stall_increments = 1000; // stop when this many increments advance lambda by < 1e-6 together
   PetscInt rmin_max_redo = 10;           // re-solves per increment for loading/unloading switches
