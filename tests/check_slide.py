@@ -6,9 +6,19 @@ sticks and slides at T = mu N; friction dissipation = mu N x slip.
     increments (the law accumulates slip, so the increment size must not
     matter: equal within 1e-3);
   - stick: while T < mu N / 2 the bottom's slip stays below VCRI (1e-3 mm);
-  - dissipation over the sliding stage = mu N x its slip within 1 % (the
-    micro-slip below VCRI dissipates a little less than mu N per mm);
+  - dissipation = mu N x slip in steady sliding (the second half of the
+    push) within 1e-3 (Coulomb's law is exact there; measured 1.2e-5); over
+    the whole push it may only be less (|f_l| <= mu f_n; the stick-to-slide
+    transition of the regularized law dissipates less per mm, by ~VCRI/slip);
   - contact: no penetration beyond 1e-6 mm, no tensile contact force;
+  - r6 (slide to stick, METHOD.md sec. 4): the top pushed back (-slide_back)
+    reverses the slip; with -rmin_dphi 0.5 each increment may lower a node's
+    mobilization f_l / (mu f_n) by at most 0.5, so while T is still positive
+    it falls by at most 0.5 mu N per increment (2 %: the normal forces shift
+    between the nodes a little as the block rocks), and r6 limits at least
+    two increments; with the bound off (-rmin_dphi 2) T falls from mu N to
+    -mu N in one increment (the same check then fails: the bound is what
+    limits);
   - the same on an arc tool (options/slide_arc.opts: a quarter ring turned
     inside a rigid cylinder, which exercises the curvature terms): the moment
     about the centre = mu R sum f_n within 1 %, and the dissipation = that
@@ -38,10 +48,13 @@ for n in (20, 200):
     plateau[n] = H["load"][-1]
     k.check(abs(plateau[n] / (mu * N) - 1) < 0.01, f"{n} increments: sliding force {plateau[n]:.4f} vs mu N = {mu * N:g}")
     if n == 20:
-        s1 = int(np.nonzero(H["stage"] == 0)[0][-1])
-        slip = H["slip"][-1] - H["slip"][s1]
-        wf = H["w_friction"][-1] - H["w_friction"][s1]
-        k.check(abs(wf / (mu * N * slip) - 1) < 0.01, f"friction dissipation {wf:.5f} vs mu N slip {mu * N * slip:.5f} ({wf / (mu * N * slip) - 1:+.2%})")
+        push = np.nonzero(H["stage"] == 1)[0]
+        for name, i0 in (("steady sliding (second half)", push[len(push) // 2]), ("whole push", push[0] - 1)):
+            slip = H["slip"][-1] - H["slip"][i0]
+            wf = H["w_friction"][-1] - H["w_friction"][i0]
+            ratio = wf / (mu * N * slip) - 1
+            ok = abs(ratio) < 1e-3 if name.startswith("steady") else ratio <= 1e-12
+            k.check(ok, f"friction dissipation, {name}: {wf:.5f} vs mu N slip {mu * N * slip:.5f} ({ratio:+.2e})")
         k.check(H["penetration"].max() <= 1e-6 and H["tension"].max() <= 0, f"no penetration ({H['penetration'].max():.1e} mm), no tension ({H['tension'].max():.1e})")
 k.check(abs(plateau[20] / plateau[200] - 1) < 1e-3, f"sliding force independent of the increment size: {plateau[20]:.5f} vs {plateau[200]:.5f}")
 
@@ -50,6 +63,23 @@ stage2 = H["stage"] == 1
 low = stage2 & (H["load"] < 0.5 * mu * N)
 k.check(low.sum() >= 3 and np.abs(H["slip"][low]).max() < vcri, f"stick: {low.sum()} increments with T < mu N / 2, largest slip {np.abs(H['slip'][low]).max():.2e} mm < VCRI")
 k.check(H["load"][stage2].max() <= mu * N * 1.001, f"T never exceeds mu N ({H['load'][stage2].max():.4f})")
+
+
+def reversal(dphi):
+    H = history(["-slide_back", 0.4, "-increments", 20, "-rmin_dphi", dphi], f"slide_back_{dphi}.h5")
+    back = np.nonzero(H["stage"] == 2)[0]
+    T = H["load"][back[0] - 1:back[-1] + 1]
+    falls = -np.diff(T)[T[:-1] > 0]
+    return falls.max(), int((H["limiter"][back] == 7).sum()), H["load"][-1]
+
+
+fall, limited, end = reversal(0.5)
+k.check(fall <= 0.5 * mu * N * 1.02 and limited >= 2,
+        f"r6 bounds slide to stick: largest fall of T from T > 0 {fall:.3f} <= 0.5 mu N = {0.5 * mu * N:g} (2 %), "
+        f"{limited} increments limited by r6; T ends at {end:.3f}")
+fall_off, limited_off, _ = reversal(2)
+k.check(fall_off > 0.5 * mu * N * 1.02 and limited_off == 0,
+        f"without the bound (-rmin_dphi 2) T falls by {fall_off:.3f} in one increment (r6 limited {limited_off})")
 import h5py  # noqa: E402
 f = out("slide_arc.h5")
 run(tf, mpirun, 1, ["-options_file", f"{src}/options/slide_arc.opts", "-output", f, "-output_every", 100000])

@@ -1,7 +1,11 @@
 // Unit tests of the friction law and its linearization (METHOD.md sec. 3):
 // the l-row terms of friction::Linearize against finite differences of the
-// friction force f_l = -mu f_n phi(x0 + dx) (plus the curvature term), and
-// the law's limits (stick spring, sliding at mu f_n, increment independence).
+// friction force f_l = -mu f_n phi(x0 + dx) (plus the curvature terms, the
+// normal force increment being the n-row reaction less kappa f_l dx); the
+// n-row term's sign against the geometry of a force carried along concave
+// and convex arcs; r6 (slide to stick) landing exactly where the mobilization
+// has fallen by dphi_max; the law's limits (stick spring, sliding at mu f_n,
+// increment independence).
 // Tools: first contact with lines and arcs against closed forms.
 #include <cmath>
 
@@ -22,18 +26,61 @@ int main()
   };
   for (double dxk : {0.0, 0.003, -0.02}) {
     const double dfnk = 7.0, fnk = fn0 + dfnk, du_lk = dxk + dU_l;
+    // The row sees the reaction R_n; the normal force changes by R_n - kappa f_lk dx
+    // (f_lk: the iterate's friction force, fixed within the solve).
+    const double f_lk = -mu * fnk * friction::Phi(x0 + dxk, vcri);
+    const auto g_of_r = [&](double du_l, double r_n) { return g(du_l, r_n - kappa * f_lk * (du_l - dU_l)); };
+    const double rk = dfnk + kappa * f_lk * dxk;
+    CHECK_NEAR(friction::NormalIncrement(rk, kappa, f_lk, dxk), dfnk, 1e-12 * fn0);
     const friction::RowTerms t = friction::Linearize(mu, vcri, fn0, fnk, x0, dxk, dU_l, kappa);
-    // Row: (K du)_l + coeff dfn + diag du_l = dF_l + rhs, i.e. the linear model of G is
-    // G_lin(du_l, dfn) = rhs - coeff dfn - diag du_l (up to the second-order kappa dfn dx term).
+    // Row: (K du)_l + coeff R_n + diag du_l = dF_l + rhs, i.e. the linear model of G is
+    // G_lin(du_l, R_n) = rhs - coeff R_n - diag du_l (up to the second-order kappa dfn dx term).
     const double h = 1e-7;
-    const double dg_du = (g(du_lk + h, dfnk) - g(du_lk - h, dfnk)) / (2 * h);
-    const double dg_dfn = (g(du_lk, dfnk + h) - g(du_lk, dfnk - h)) / (2 * h);
-    CHECK_NEAR(-t.diag, dg_du, 1e-6 * (1 + std::abs(dg_du)));
-    CHECK_NEAR(-t.row_n_coeff, dg_dfn + kappa * dxk, 1e-6); // G has the (dropped) kappa dfn dx term
+    const double dg_du = (g_of_r(du_lk + h, rk) - g_of_r(du_lk - h, rk)) / (2 * h);
+    const double dg_dr = (g_of_r(du_lk, rk + h) - g_of_r(du_lk, rk - h)) / (2 * h);
+    // The dropped second-order term kappa dfn dx contributes kappa dxk (kappa f_lk) to d/du and kappa dxk to d/dR.
+    CHECK_NEAR(-t.diag, dg_du - kappa * dxk * kappa * f_lk, 1e-6 * (1 + std::abs(dg_du)));
+    CHECK_NEAR(-t.row_n_coeff, dg_dr + kappa * dxk, 1e-6);
     // The linear model matches G at the linearization point.
-    const double glin = t.rhs - t.row_n_coeff * dfnk - t.diag * du_lk;
-    CHECK_NEAR(glin, g(du_lk, dfnk), 1e-9 * fn0);
+    const double glin = t.rhs - t.row_n_coeff * rk - t.diag * du_lk;
+    CHECK_NEAR(glin, g_of_r(du_lk, rk), 1e-9 * fn0);
   }
+  // The n-row term's sign from geometry: a contact force f_n n + f_l l carried
+  // along an arc of radius rho by a slip s, with f_n and f_l changing linearly
+  // in s. Its change along the start normal is the reaction R_n; NormalIncrement
+  // must return the change of f_n to O(s^2) (without the term: an error kappa f_l s).
+  for (const bool concave : {true, false}) {
+    const double rho = 3.0, th0 = 0.7, fn_0 = 40, fl_0 = -6, a = 900, b = -150, s = 1e-4;
+    const double k = (concave ? 1.0 : -1.0) / rho;
+    const auto frame = [&](double slip, double n[2], double l[2]) {
+      // Concave: n = -e_r, l = e_theta (slip turns theta forward); convex: n = e_r, l = -e_theta.
+      const double th = th0 + (concave ? 1 : -1) * slip / rho, er[2] = {std::cos(th), std::sin(th)};
+      const double et[2] = {-std::sin(th), std::cos(th)}, sn = concave ? -1 : 1;
+      n[0] = sn * er[0], n[1] = sn * er[1], l[0] = -sn * et[0], l[1] = -sn * et[1]; // l = n turned by -90 degrees
+    };
+    double n0[2], l0[2], n1[2], l1[2];
+    frame(0, n0, l0);
+    frame(s, n1, l1);
+    const double fn_s = fn_0 + a * s, fl_s = fl_0 + b * s;
+    const double r_n = (fn_s * n1[0] + fl_s * l1[0] - fn_0 * n0[0] - fl_0 * l0[0]) * n0[0] +
+                       (fn_s * n1[1] + fl_s * l1[1] - fn_0 * n0[1] - fl_0 * l0[1]) * n0[1];
+    // The second-order remainder: the change of f_l times the turn (b s k s) and
+    // the turn's own curvature on both forces ((|f_n| + |f_l|) k^2 s^2 / 2), doubled.
+    const double second = 2 * (std::abs(b * k) + (std::abs(fn_0) + std::abs(fl_0)) * k * k) * s * s;
+    CHECK_NEAR(friction::NormalIncrement(r_n, k, fl_0, s), a * s, second);
+    CHECK(std::abs(r_n - a * s) > 100 * std::abs(friction::NormalIncrement(r_n, k, fl_0, s) - a * s));
+  }
+  // r6, slide to stick: from sliding (phi ~ 1) a reversal of 4 VCRI is cut where
+  // phi has fallen by dphi_max; stick to slide and small falls are not limited.
+  for (const double dphi : {0.5, 0.25, 1.0}) {
+    const double xs = 2 * vcri, dx = -4 * vcri, r = friction::StickFactor(xs, dx, vcri, dphi);
+    CHECK(r > 0 && r < 1);
+    CHECK_NEAR(friction::Phi(xs, vcri) - friction::Phi(xs + r * dx, vcri), dphi, 1e-12);
+    CHECK_NEAR(friction::StickFactor(-xs, -dx, vcri, dphi), r, 1e-15); // the mirror image
+  }
+  CHECK(friction::StickFactor(0.0, 4 * vcri, vcri, 0.5) > 1e299);      // stick to slide: no limit
+  CHECK(friction::StickFactor(2 * vcri, 5 * vcri, vcri, 0.5) > 1e299); // sliding on: no limit
+  CHECK(friction::StickFactor(2 * vcri, -0.1 * vcri, vcri, 0.5) > 1);  // a fall below dphi_max: no limit
   // Limits of the law: sliding far (x >> VCRI) carries mu f_n; tiny slip is a spring of stiffness 3 mu f_n / VCRI.
   CHECK_NEAR(friction::Phi(1.0, vcri), 1.0, 2e-5); // capped at 2 VCRI: tanh(6)
   CHECK(friction::DPhi(1.0, vcri) == 0);           // no change past the cap

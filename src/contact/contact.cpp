@@ -163,6 +163,12 @@ PetscErrorCode ContactSet::Constrain(double dU)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+double ContactSet::NormalIncrement(PetscInt node, double reaction_n, double s) const
+{
+  const double f_lk = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fnk_[node], x_[node] + dxk_[node]) : 0.0;
+  return friction::NormalIncrement(reaction_n, kappa_[node], f_lk, s);
+}
+
 double ContactSet::NormalReaction(PetscInt node, const PetscScalar *react) const
 {
   const PetscInt o = mesh_->node_dof[node];
@@ -186,7 +192,7 @@ PetscErrorCode ContactSet::UpdateIterates(Vec du, double dU, bool &converged)
   for (PetscInt node : candidates_) {
     if (!SlipFree(node)) continue;
     const double dx = Slip(node, Increment(d, node), dU);
-    const double fn = fn_[node] + NormalReaction(node, react);
+    const double fn = fn_[node] + NormalIncrement(node, NormalReaction(node, react), dx);
     const double before = friction::Force(prm_.mu, prm_.vcri, fnk_[node], x_[node] + dxk_[node]);
     const double after = friction::Force(prm_.mu, prm_.vcri, fn, x_[node] + dx);
     if (std::abs(after - before) > prm_.mu * prm_.tol * std::max(std::abs(fn), kFloorOfSmallForces * f_small_))
@@ -230,7 +236,7 @@ PetscErrorCode ContactSet::ReleasePulled(Vec du, double dU, double release_fract
     }
     // Only a clear pull counts: a grazing node (force ~ 0 either way) stays.
     // The node's state (force, slip) is kept until the increment is committed.
-    const double dfn = NormalReaction(node, react);
+    const double dfn = NormalIncrement(node, NormalReaction(node, react), Slip(node, Increment(d, node), dU));
     if (!frozen_[node] && dfn < -f_small_ && fn_[node] <= release_fraction * -dfn) {
       local += mesh_->node_owned[node];
       if (apply) contact_[node] = 0, released_[node] = 1;
@@ -264,16 +270,13 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
       continue;
     }
     // r5: the normal force reaches zero.
-    const double dfn = NormalReaction(node, react);
+    const double dfn = NormalIncrement(node, NormalReaction(node, react), Slip(node, u, dU));
     if (dfn < -f_small_ && !frozen_[node])
       r5_[node] = std::max(fn_[node], 0.0) / -dfn; // a grazing node held for this step does not limit
     leave.Offer(r5_[node], Limiter::Separation, id);
-    // r6: the friction mobilization f_l / (mu f_n) changes by at most dphi_max.
-    if (friction() && SlipFree(node)) {
-      const double dx = Slip(node, u, dU);
-      const double dphi = std::abs(friction::Phi(x_[node] + dx, prm_.vcri) - friction::Phi(x_[node], prm_.vcri));
-      if (dphi > prm_.dphi_max) stick.Offer(prm_.dphi_max / dphi, Limiter::Stick, id);
-    }
+    // r6: slide to stick; the friction mobilization f_l / (mu f_n) falls by at most dphi_max.
+    if (friction() && SlipFree(node))
+      stick.Offer(friction::StickFactor(x_[node], Slip(node, u, dU), prm_.vcri, prm_.dphi_max), Limiter::Stick, id);
   }
   PetscCall(VecRestoreArrayRead(system_->reactions_local(), &react));
   PetscCall(VecRestoreArrayRead(du, &d));
@@ -299,9 +302,9 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double 
     const bool owned = mesh_->node_owned[node];
     if (contact_[node]) {
       const double fl_old = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]), fn_old = fn_[node];
-      fn_[node] += react_scale * NormalReaction(node, react);
+      const double dx = Slip(node, Increment(d, node), dU);
+      fn_[node] += NormalIncrement(node, react_scale * NormalReaction(node, react), dx);
       if (SlipFree(node)) {
-        const double dx = Slip(node, Increment(d, node), dU);
         x_[node] = friction::Cap(x_[node] + dx, prm_.vcri);
         last_dx_[node] = dx;
         const double fl_new = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);

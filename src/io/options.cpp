@@ -181,7 +181,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(PetscOptionsInt("-friction_max_iters", "Friction iterations per increment before giving up", "tubeform",
                             opt.friction_max_iters, &opt.friction_max_iters, nullptr));
   PetscCall(PetscOptionsReal("-rmin_dphi",
-                             "r6: largest change of the friction mobilization f_l / (mu f_n) in an increment",
+                             "r6, slide to stick: largest fall of the friction mobilization f_l / (mu f_n), towards "
+                             "stick or through it into a reversal, in an increment",
                              "tubeform", opt.rmin_dphi, &opt.rmin_dphi, nullptr));
   {
     const char *const unloads[] = {"reverse", "withdraw", "none"};
@@ -206,6 +207,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   }
   PetscCall(PetscOptionsReal("-slide_push", "slide scene: sideways displacement of the block's top (mm)", "tubeform",
                              opt.slide_push, &opt.slide_push, nullptr));
+  PetscCall(PetscOptionsReal("-slide_back",
+                             "slide scene (flat): then push the top back by this much (mm; 0: no third stage), "
+                             "reversing the slip",
+                             "tubeform", opt.slide_back, &opt.slide_back, nullptr));
   PetscCall(PetscOptionsReal("-tension_strain", "tension scene: final nominal strain in x (negative: compression)",
                              "tubeform", opt.tension_strain, &opt.tension_strain, nullptr));
   PetscCall(PetscOptionsReal("-rotation_angle", "rotation scene: rigid rotation after the prestretch (degrees)",
@@ -308,6 +313,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-stroke_corner_radius %g: must be non-negative", opt.stroke_corner_radius);
   PetscCheck(opt.slide_n > 0 && opt.slide_push > 0, comm, PETSC_ERR_USER_INPUT,
              "-slide_n %g, -slide_push %g: must be positive", opt.slide_n, opt.slide_push);
+  PetscCheck(opt.slide_back >= 0 && std::isfinite(opt.slide_back), comm, PETSC_ERR_USER_INPUT,
+             "-slide_back %g: must be a non-negative distance (mm)", opt.slide_back);
   PetscCheck(opt.pressure_u > 0, comm, PETSC_ERR_USER_INPUT, "-pressure_u %g: must be positive (mm)", opt.pressure_u);
   PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);
   PetscCheck(std::isfinite(opt.shear_gamma) && opt.shear_gamma != 0, comm, PETSC_ERR_USER_INPUT,

@@ -1,6 +1,8 @@
 // A block on a rigid floor (friction check, METHOD.md section 7): lambda in
 // [0, 1] presses its top edge down with a total force -slide_n (top held in
-// x); lambda in [1, 2] pushes the top edge sideways by -slide_push.
+// x); lambda in [1, 2] pushes the top edge sideways by -slide_push; with
+// -slide_back, lambda in [2, 3] pushes it back by that much (the slip
+// reverses: r6, slide to stick).
 // History: stroke = top displacement (mm), load = tangential force T (N/mm);
 // slip = mean slip of the bottom on the floor, tool_fx / tool_fy = the
 // block's force on the floor.
@@ -21,7 +23,11 @@ public:
     mesh = GenerateRectangle(kWidth, kHeight, (int)opt.mesh_ntheta, (int)opt.mesh_nt);
     return "";
   }
-  LoadPath Path(const Options &opt) const override { return {2.0, opt.dynamics_time, {1.0}}; }
+  LoadPath Path(const Options &opt) const override
+  {
+    if (opt.slide_back > 0) return {3.0, opt.dynamics_time, {1.0, 2.0}};
+    return {2.0, opt.dynamics_time, {1.0}};
+  }
   // While the top is pushed, T and its displacement are work-conjugate.
   double LoadWorkShare(double lambda) const override { return lambda > 1.0 ? 1.0 : 0.0; }
   PetscErrorCode Initialize(Model &, ContactSpec &tools) override
@@ -34,8 +40,8 @@ public:
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     PetscFunctionBeginUser;
-    const double dn = lambda < 1.0 ? dlambda * opt_.slide_n : 0.0,
-                 push = lambda < 1.0 ? 0.0 : dlambda * opt_.slide_push;
+    const double dn = lambda < 1.0 ? dlambda * opt_.slide_n : 0.0;
+    const double push = lambda < 1.0 ? 0.0 : lambda < 2.0 ? dlambda * opt_.slide_push : -dlambda * opt_.slide_back;
     PetscCall(TopLoad(m, -dn, nullptr, true));
     for (PetscInt n : m.mesh.node_sets["top"]) m.system.Prescribe(n, 0, push);
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -50,7 +56,7 @@ public:
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
-    row.stroke = lambda <= 1.0 ? 0.0 : (lambda - 1.0) * opt_.slide_push;
+    row.stroke = Top(lambda);
     PetscCall(SetForce(
       m, "top", f_int, [](PetscInt, double d[2]) { d[0] = 1, d[1] = 0; }, row.load));
     double local[2] = {0, 0}, g[2];
@@ -61,11 +67,18 @@ public:
     double force[2];
     PetscCall(m.contact->TotalForce(force));
     row.tool_fx = -force[0], row.tool_fy = -force[1];
-    row.stage = StageOf(lambda);
+    row.stage = lambda > 2.0 + kLambdaTol ? 2 : StageOf(lambda); // 2: pushed back
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
 private:
+  // Sideways displacement of the top at lambda.
+  double Top(double lambda) const
+  {
+    if (lambda <= 1.0) return 0.0;
+    if (lambda <= 2.0) return (lambda - 1.0) * opt_.slide_push;
+    return opt_.slide_push - (lambda - 2.0) * opt_.slide_back;
+  }
   static constexpr double kWidth = 10.0, kHeight = 2.0; // block (mm)
   static constexpr double kFloorHalfLength = 1e3;       // the floor reaches far past the block (mm)
   static constexpr double kVcri = 1e-3;                 // default quasi-stick slip (mm)

@@ -46,7 +46,7 @@ constexpr double kFrameAxisTol = 1e-9;
 struct ContactParams {
   double mu = 0;           // Coulomb coefficient
   double vcri = 0.01;      // quasi-stick slip (mm)
-  double dphi_max = 1.0;   // r6: largest change of f_l / (mu f_n) in an increment
+  double dphi_max = 0.5;   // r6: largest fall of f_l / (mu f_n) towards stick or reversal in an increment
   double tol = 1e-4;       // friction iterations: change of f_l / (mu f_n) between iterates
   double group_tol = 1e-6; // contact/separation events within (1 + tol) r_min go together
   double gap_tol = 1e-7;   // a free node this close to the surface (mm) is in contact
@@ -164,6 +164,10 @@ private:
   Vec2 Position(PetscInt node) const { return {(*x_body_)[2 * node], (*x_body_)[2 * node + 1]}; }
   Vec2 Increment(const PetscScalar *d, PetscInt node) const;
   double NormalReaction(PetscInt node, const PetscScalar *react) const;
+  // The normal force increment of a solution with normal reaction reaction_n
+  // and slip s: the reaction less the turning of the friction force on arcs
+  // (friction::NormalIncrement, with the friction force of the iterate).
+  double NormalIncrement(PetscInt node, double reaction_n, double s) const;
   double Slip(PetscInt node, const Vec2 &u, double dU) const;
 };
 

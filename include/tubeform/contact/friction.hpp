@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tubeform/core/core.hpp"
+
 namespace tf::friction {
 
 inline double Cap(double x, double vcri) { return std::max(-2 * vcri, std::min(2 * vcri, x)); }
@@ -24,19 +26,47 @@ inline double DPhi(double x, double vcri)
   return 3.0 * (1 - t * t) / vcri;
 }
 
+// Sliding on an arc turns the node's frame (paper eq. 13): with slip s along l
+// and kappa = +1/rho on concave arcs, -1/rho on convex ones, 0 on lines,
+//   dn = -kappa s l,  dl = kappa s n,
+// so the contact force F = f_n n + f_l l changes in the frame of the step's
+// start by
+//   dF.n = df_n + kappa f_l s,   dF.l = df_l - kappa f_n s   (eq. 15).
+// The system's n row gives dF.n as the reaction R_n; the normal force itself
+// changes by
+inline double NormalIncrement(double reaction_n, double kappa, double f_l, double s)
+{
+  return reaction_n - kappa * f_l * s;
+}
+
 // Terms of the linearized l-row of a contact node for friction iterate k
 // (paper eq. 14-15). With t = phi(x0 + dx_k), t' = phi'(x0 + dx_k),
-// dx = du_l - dU_l and df_n the normal reaction increment:
+// dx = du_l - dU_l, and df_n = R_n - kappa f_lk dx (NormalIncrement, with the
+// iterate's friction force f_lk = -mu f_nk t):
 //   (K du)_l + mu t df_n + (mu f_nk t' + f_nk kappa) du_l
-//       = dF_l + mu f_n0 (phi(x0) - t) + mu f_nk t' (dx_k + dU_l) + f_nk kappa dU_l
-// (kappa = +-1/rho on arcs: the turning of the normal force as the node slides,
-// eq. 15; 0 on lines). df_n = (K du)_n - dF_n is row n of the system, so
-// row_l += (mu t) row_n: the unsymmetric correction row.
+//       = dF_l + mu f_n0 (phi(x0) - t) + mu f_nk t' (dx_k + dU_l) + f_nk kappa dU_l.
+// R_n = (K du)_n - dF_n is row n of the system, so row_l += (mu t) row_n (the
+// unsymmetric correction row) and the curvature part of df_n,
+// mu t kappa mu f_nk t dx, joins the diagonal and load.
 struct RowTerms {
   double row_n_coeff = 0; // multiplier of row n (and its load) added to row l
   double diag = 0;        // added to K_ll
   double rhs = 0;         // added to the l load
 };
+
+// r6 of METHOD.md sec. 4, slide to stick: the fraction r of the slip increment
+// dx (from state x0) at which the mobilization phi = tanh(3x/VCRI) has fallen
+// by dphi_max from phi(x0), towards stick or through it into a reversal;
+// exact on the law (x0 + r dx lands where phi = phi(x0) - sign(phi(x0)) dphi_max).
+// Infinite (no limit) while phi grows in its direction or falls by less.
+inline double StickFactor(double x0, double dx, double vcri, double dphi_max)
+{
+  const double phi0 = Phi(x0, vcri), phi1 = Phi(x0 + dx, vcri);
+  const double fall = phi0 > 0 ? phi0 - phi1 : phi0 < 0 ? phi1 - phi0 : 0.0;
+  if (!(fall > dphi_max)) return kNever;
+  const double target = phi0 > 0 ? phi0 - dphi_max : phi0 + dphi_max; // |target| < 1: the fall exceeds dphi_max
+  return (vcri / 3.0 * std::atanh(target) - Cap(x0, vcri)) / dx;
+}
 
 // The friction force on the body along l for normal force fn and slip state x.
 inline double Force(double mu, double vcri, double fn, double x) { return -mu * fn * Phi(x, vcri); }
@@ -52,8 +82,9 @@ inline RowTerms Linearize(double mu, double vcri, double fn0, double fnk, double
   RowTerms t;
   const double tk = Phi(x0 + dxk, vcri), dtk = DPhi(x0 + dxk, vcri) * (fnk > 0 ? 1.0 : 0.0);
   t.row_n_coeff = mu * tk;
-  t.diag = mu * fnk * dtk + fnk * kappa;
-  t.rhs = mu * fn0 * (Phi(x0, vcri) - tk) + mu * fnk * dtk * (dxk + dU_l) + fnk * kappa * dU_l;
+  const double turn = mu * tk * kappa * mu * fnk * tk; // n-row curvature term through the coupling row
+  t.diag = mu * fnk * dtk + fnk * kappa + turn;
+  t.rhs = mu * fn0 * (Phi(x0, vcri) - tk) + mu * fnk * dtk * (dxk + dU_l) + (fnk * kappa + turn) * dU_l;
   return t;
 }
 

@@ -52,10 +52,11 @@ struct Options {
   double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
   double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
   double friction_tol = 1e-4;
-  double rmin_dphi = 1.0;
+  double rmin_dphi = 0.5; // r6: largest fall of |f_l| / (mu f_n) towards stick in an increment
   std::string unload = "reverse";
   double shear_gamma = 1.0;
   double slide_n = 100.0, slide_push = 0.2; // slide scene: normal force (N/mm, arc: pressure MPa), push (mm)
+  double slide_back = 0;                    // slide scene (flat): push back by this much in a third stage (mm)
   std::string slide_tool = "flat";
   double tension_strain = 0.1;   // signed: < 0 compresses
   double rotation_angle = 90.0;  // degrees
