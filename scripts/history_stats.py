@@ -14,6 +14,16 @@
         row that differs and the largest relative difference; columns found in
         one file only are listed. Exit code 1 if any shared column differs.
 
+    /usr/bin/python3 scripts/history_stats.py checks F.h5 [F.h5 ...]
+        The run's self-checks (docs/theory.md, "Self-checks"), one line per
+        file: the largest |energy_error| (a) and |internal_error| (b) after the
+        first 10 increments, the damped energy (c) and the largest kinetic
+        energy as fractions of the work put in, the largest tension before
+        release and force dropped by a release as fractions of the largest
+        load, the largest normal-force mismatch of a node as a fraction of
+        the largest total normal force, penetration, the compromises (steps
+        past an event, unsettled, inconsistent) and the increments r6 limited.
+
     /usr/bin/python3 scripts/history_stats.py windows F.h5 [F.h5 ...]
         The smallest advance of the load path (stroke / target stroke) over any
         100, 300 and 1000 consecutive increments of the loading: what the stall
@@ -75,6 +85,22 @@ def same(a, b):
     return 1 if differ else 0
 
 
+def checks(paths):
+    print("run | energy (a) | internal (b) | damped/w_ext (c) | max kinetic/w_ext | tension/load | released/load "
+          "| fn mismatch | penetration (mm) | past event | unsettled | inconsistent | r6-limited")
+    for path in paths:
+        with h5py.File(path, "r") as h:
+            H = {c: h["/history"][c][:] for c in h["/history"]}
+        late = slice(11, None)
+        w = np.maximum(np.abs(H["w_ext"]), 1e-300)
+        load = max(np.abs(H["load"]).max(), 1e-300)
+        print(f"{path} | {np.abs(H['energy_error'][late]).max():.1e} | {np.abs(H['internal_error'][late]).max():.1e}"
+              f" | {H['w_damped'][-1] / w[-1]:.1e} | {(H['w_kinetic'][late] / w[late]).max():.1e}"
+              f" | {H['tension'].max() / load:.1e} | {H['release_force'].max() / load:.1e} | {H['fn_mismatch'].max() / max(H['fn_sum'].max(), 1e-300):.1e}"
+              f" | {H['penetration'].max():.1e} | {int(H['events_inside'][-1])} | {int(H['unsettled'][-1])}"
+              f" | {int(H['inconsistent'][-1])} | {int((H['limiter'] == 7).sum())}")
+
+
 def windows(paths):
     for path in paths:
         H = loading(path)
@@ -98,6 +124,8 @@ if __name__ == "__main__":
         compare(sys.argv[2], sys.argv[3])
     elif len(sys.argv) == 4 and sys.argv[1] == "same":
         sys.exit(same(sys.argv[2], sys.argv[3]))
+    elif len(sys.argv) >= 3 and sys.argv[1] == "checks":
+        checks(sys.argv[2:])
     elif len(sys.argv) >= 3 and sys.argv[1] == "windows":
         windows(sys.argv[2:])
     elif len(sys.argv) >= 3 and sys.argv[1] == "snaps":

@@ -1,23 +1,34 @@
-"""Squaring, aluminum 17.5/1.5, mu = 0.05 (options/squaring.opts), with the
-paper's springback, on 1 and 2 ranks; and the frictionless case.
-  - energy balance (tool work = internal work + friction dissipation) within
-    1 % of the external work at every increment (the issue's tolerance;
-    measured 0.8 % with 300 trial increments, first-order in the step);
-  - no node penetrates a tool by more than 1e-6 mm; no contact node in
-    tension beyond a millionth of the punch load (the contact code's "zero":
-    a node whose force change is smaller is grazing, neither pulled nor
-    pressed; steps re-solved for friction and inertia end such nodes a few
-    micro-newtons either side of zero);
-    every step's friction iterations settle (none taken unsettled);
-  - 1 vs 2 ranks (the default: inertia at 1 mm/s, docs/theory.md "Inertia"):
-    load, C1, C2, C/t and external work interpolated at the same strokes
-    within 1e-6 relative up to U = 2.6 mm (increments are cut at events found
-    to round-off, so rows do not pair one to one; measured ~1e-11), and within
-    1e-4 beyond, where the wall collapses: there the difference grows from
-    1e-12 at U = 2.6 mm to 1e-6..2e-5 at 4.2 mm, depending on the run's
-    round-off (1.1e-6 and 1.9e-5 for C/t in two runs of one commit): the
-    collapse amplifies it, and the dynamic steps follow (quasi-static steps
-    keep 1e-9). A missing or doubled contribution at the partition boundary
+"""Squaring, aluminum 17.5/1.5, mu = 0.05 (options/squaring.opts, inertia at
+1 mm/s), with the paper's springback, on 1 and 2 ranks; and the frictionless
+case. Every check compares quantities computed independently of each other
+(docs/theory.md, "Self-checks"):
+  - (a) energy balance: the press's work from the reported punch load,
+    1/2 integral of load dU for the quarter, against internal work (stresses)
+    + friction dissipation (contact slips) + kinetic + damped energy, within
+    0.5 % at every increment after the first 10 (measured 0.24 %: the
+    incremental method's first-order drift at 300 trial increments; friction
+    alone is 4.9 % of the work, so a lost term would fail);
+  - (b) internal work against plastic dissipation + stored elastic energy,
+    within 0.3 % (measured 0.13 %; 0.09 % at the end of loading);
+  - (c) the damped energy (inertia work - kinetic energy) below 1e-6 of the
+    work at the end, and the kinetic energy below 1e-6 of the work at every
+    increment (measured 1e-8 and 1.3e-8): at a press speed the tube moves
+    quasi-statically; a snap would show orders of magnitude more;
+  - no node penetrates a tool by more than 1e-6 mm; no contact node ends a
+    step in tension, measured before the commit releases it, beyond 1e-6 of
+    the largest load (the contact code's grazing "zero"; measured 3e-7), and
+    no release drops a compressive force beyond that (measured 2e-8);
+  - no compromise: every step's iterations settled and every loading state
+    is consistent with its solution (steps past an event beyond
+    -rmin_event_tol are reported);
+  - 1 vs 2 ranks (each deterministic: parallel_determinism_np2): load, C1,
+    C2, C/t and external work interpolated at the same strokes within 1e-6
+    relative up to U = 2.6 mm (measured below 1e-6 up to 3.2 mm), and within
+    3e-5 beyond, where the wall collapses and the path amplifies round-off:
+    a perturbation of 1.3e-13 in E moves load and C/t of the 1-rank run by up
+    to 2.6e-6 and 3.3e-6 there, the ranks differ by 2.7e-6 and 6.2e-6
+    (scripts/history_stats.py compare), and 3e-5 is ten times that
+    sensitivity. A missing or doubled contribution at the partition boundary
     would show at 1e-2 or more;
   - mu = 0: the problem is symmetric about the 45-degree line while no node
     touches the apex fillet, so C1/C2 = 1 within 1e-6 up to U = 3.5 mm
@@ -37,24 +48,37 @@ for n in (1, 2):
     with h5py.File(f, "r") as h:
         H[n] = {c: h["/history"][c][:] for c in h["/history"]}
 h = H[1]
+late = np.arange(len(h["stroke"])) > 10
 load_stage = h["stage"] == 0
-e = np.abs(h["energy_error"][1:][load_stage[1:]]).max()
-k.check(e < 0.01, f"energy balance over the loading: max error {e:.2e}")
+w = np.maximum(np.abs(h["w_ext"]), 1e-300)
+e = np.abs(h["energy_error"][late]).max()
+k.check(e < 5e-3, f"(a) press work from the reported load = internal + friction + kinetic + damped within {e:.2e} (5e-3)")
+i = np.abs(h["internal_error"][late]).max()
+k.check(i < 3e-3, f"(b) internal work = plastic + elastic energy within {i:.2e} (3e-3)")
+damped, kinetic = h["w_damped"][-1] / w[-1], (h["w_kinetic"][late] / w[late]).max()
+k.check(damped < 1e-6 and kinetic < 1e-6, f"(c) damped energy {damped:.1e} of the work, kinetic at most {kinetic:.1e} (1e-6)")
 k.check(h["penetration"].max() <= 1e-6, f"largest penetration {h['penetration'].max():.1e} mm")
-k.check(h["tension"].max() <= 1e-6 * h["load"].max(), f"largest tensile contact force {h['tension'].max():.1e} N/mm (1e-6 of the largest load, {h['load'].max():.0f} N/mm)")
-k.check(H[1]["unsettled"][-1] == 0 and H[2]["unsettled"][-1] == 0, "every trial step's friction iterations settled (no step taken unsettled)")
+top = h["load"].max()
+k.check(h["tension"].max() <= 1e-6 * top and h["release_force"].max() <= 1e-6 * top,
+        f"largest tensile contact force before release {h['tension'].max():.1e} N/mm, force dropped by a release "
+        f"{h['release_force'].max():.1e} N/mm (1e-6 of the largest load, {top:.0f} N/mm)")
+k.check(all(H[n]["unsettled"][-1] == 0 and H[n]["inconsistent"][-1] == 0 for n in (1, 2)),
+        f"no unsettled step, no inconsistent loading state ({int(h['events_inside'][-1])} steps past an event by "
+        f"more than -rmin_event_tol)")
 grid = np.linspace(0.2, 4.2, 41)
 before = grid <= 2.6
 for col in ("load", "x_max", "y_max", "c_over_t", "w_ext"):
     curves = [np.interp(grid, H[n]["stroke"][H[n]["stage"] == 0], H[n][col][H[n]["stage"] == 0]) for n in (1, 2)]
     rel = np.abs(curves[0] - curves[1]) / np.abs(curves[0]).max()
-    k.check(rel[before].max() < 1e-6 and rel.max() < 1e-4, f"1 vs 2 ranks, {col}(U): {rel[before].max():.1e} relative up to U = 2.6 mm (1e-6), {rel.max():.1e} to 4.2 mm (1e-4)")
+    k.check(rel[before].max() < 1e-6 and rel.max() < 3e-5,
+            f"1 vs 2 ranks, {col}(U): {rel[before].max():.1e} relative up to U = 2.6 mm (1e-6), {rel.max():.1e} to 4.2 mm (3e-5)")
 for col in ("x_max", "y_max", "c_over_t"):
     rel = abs(H[1][col][-1] - H[2][col][-1]) / max(abs(H[1][col][-1]), 1e-12)
-    k.check(rel < 1e-4, f"1 vs 2 ranks after springback, {col}: {rel:.1e} (1e-4)")
+    k.check(rel < 3e-5, f"1 vs 2 ranks after springback, {col}: {rel:.1e} (3e-5)")
 print(f"       U = 4.2: load {np.interp(4.2, h['stroke'][load_stage], h['load'][load_stage]):.2f} N/mm, "
       f"C/t {h['c_over_t'][load_stage][-1]:.3f}, C1/C2 {h['deviation_ratio'][load_stage][-1]:.4f}; "
-      f"after springback C/t {h['c_over_t'][-1]:.3f}, C1/C2 {h['deviation_ratio'][-1]:.4f}")
+      f"after springback C/t {h['c_over_t'][-1]:.3f}, C1/C2 {h['deviation_ratio'][-1]:.4f}; "
+      f"largest normal-force mismatch {h['fn_mismatch'].max():.3f} N/mm (drift of the incremental method)")
 
 f = out("squaring_mu0.h5")
 run(tf, mpirun, 1, ["-options_file", f"{src}/options/squaring.opts", "-friction_mu", 0, "-unload", "none", "-output", f, "-output_every", 100000])

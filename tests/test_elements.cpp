@@ -4,12 +4,13 @@
 //    wall: P/delta against the thin-ring value E' I / (0.1488 Rm^3);
 //  - Cook's membrane (plane stress E = 1, nu = 1/3 as the equivalent plane
 //    strain E* = 0.9375, nu* = 0.25, shear load 1; and nearly incompressible
-//    plane strain E = 250, nu = 0.4999, load 100): every element's tip
-//    deflection at 8x8, 16x16, 64x64 is reported; the reference is the 64x64
-//    value on which all three elements agree (within 0.5 %), and qm6 must be
-//    within 2 % of it at 16x16. (The often-quoted 23.96 is not reproduced: an
-//    independent NumPy Q4 code gives our Q4 values, 22.67 and 24.27 at 8x8 and
-//    16x16, converging near 25.1; see docs/verification.md.)
+//    plane strain E = 250, nu = 0.4999, load 100): the tip deflection at the
+//    corner (48, 60) and at the middle of the right edge (48, 52) against the
+//    converged values of an independent solver (scripts/reference_cook.py:
+//    quadratic and quartic elements on graded meshes, Richardson-extrapolated,
+//    25.1894 / 23.9677 and 7.7713 / 7.4048, settled to 1e-4). The often-quoted
+//    23.96-23.97 is the mid-edge value (FinEtools, Abaqus); at the corner it is
+//    25.19.
 // Each element (q4, bbar, qm6) is reported; the checks apply to qm6, the
 // shear-locking-free element.
 #include <petscsys.h>
@@ -194,12 +195,24 @@ int main(int argc, char **argv)
       if (f == fe::Formulation::QM6) CHECK(std::abs(ratio - 1) < 0.02);
     }
   }
-  // Cook's membrane.
+  // Cook's membrane: the converged corner and mid-edge deflections of
+  // scripts/reference_cook.py. Bilinear elements converge slowly on uniform
+  // meshes (the clamped corners are singular: order ~1.1), so the tolerances
+  // are those of the discretization at 64 x 64. Plane stress: bounded by the
+  // independent Q4 on the same mesh (0.58 % below the corner value, 0.18 %
+  // below the mid-edge one), which bbar and qm6 must match or beat (0.6 %,
+  // 0.3 %); and our q4 must equal that independent Q4 (same discretization:
+  // 1e-4, the reference's printed digits). nu = 0.4999 (q4 locks): 1 % and
+  // 0.5 %, as the mixed Q9/P3 on the same uniform meshes is itself still
+  // 0.08 % and 0.03 % short at 64 x 64 and a bilinear element's error is
+  // several times a quadratic one's. All must improve from 16 x 16 to 64 x 64.
+  const std::map<int, std::array<double, 2>> q4_reference = {
+    {8, {22.6726, 22.0792}}, {16, {24.2720, 23.4304}}, {64, {25.0433, 23.9245}}}; // reference_cook.py --full
   for (const double nu : {1.0 / 3.0, 0.4999}) {
     const bool stress = nu < 0.4;
-    std::map<int, std::array<double, 3>> tips;
+    const double ref[2] = {stress ? 25.1894 : 7.7713, stress ? 23.9677 : 7.4048}; // corner, mid-edge
+    std::map<int, std::array<std::array<double, 2>, 3>> tips;
     for (int n : {8, 16, 64}) {
-      double tip[3];
       for (int k = 0; k < 3; ++k) {
         Problem prob;
         // Plane stress (E, nu) = plane strain (E (1 + 2 nu) / (1 + nu)^2, nu / (1 + nu)).
@@ -209,18 +222,28 @@ int main(int argc, char **argv)
         const double load = stress ? 1.0 : 100.0, scale = 1e-6;
         PetscCall(prob.Setup(comm, Base(forms[k], es, nus), std::make_unique<CookScene>(n, scale * load)));
         PetscCall(prob.Run());
-        PetscCall(DisplacementAt(prob, 48, 60, 1, tip[k]));
-        tip[k] /= scale;
+        for (int at = 0; at < 2; ++at) {
+          PetscCall(DisplacementAt(prob, 48, at == 0 ? 60 : 52, 1, tips[n][k][at]));
+          tips[n][k][at] /= scale;
+        }
       }
-      PetscCall(PetscPrintf(comm, "Cook %s, %2d x %-2d: tip deflection q4 %.3f  bbar %.3f  qm6 %.3f\n",
-                            stress ? "plane stress nu=1/3" : "plane strain nu=0.4999", n, n, tip[0], tip[1], tip[2]));
-      for (int k = 0; k < 3; ++k) tips[n][k] = tip[k];
+      PetscCall(PetscPrintf(comm,
+                            "Cook %s, %2d x %-2d: corner q4 %.3f  bbar %.3f  qm6 %.3f (ref %.4f); mid-edge q4 %.3f  "
+                            "bbar %.3f  qm6 %.3f (ref %.4f)\n",
+                            stress ? "plane stress nu=1/3" : "plane strain nu=0.4999", n, n, tips[n][0][0],
+                            tips[n][1][0], tips[n][2][0], ref[0], tips[n][0][1], tips[n][1][1], tips[n][2][1], ref[1]));
     }
-    const double ref = tips[64][2];
-    CHECK(std::abs(tips[64][1] / ref - 1) < 5e-3);
-    if (stress) CHECK(std::abs(tips[64][0] / ref - 1) < 5e-3); // q4 locks volumetrically at nu = 0.4999
-    CHECK(std::abs(tips[16][2] / ref - 1) < 0.02);
-    CHECK(tips[8][0] < tips[8][2]); // shear locking makes q4 the stiffest
+    const double tol[2] = {stress ? 6e-3 : 1e-2, stress ? 3e-3 : 5e-3};
+    for (int k = 1; k < 3; ++k) // bbar, qm6 (q4 locks volumetrically at nu = 0.4999)
+      for (int at = 0; at < 2; ++at) {
+        const double err64 = std::abs(tips[64][k][at] / ref[at] - 1), err16 = std::abs(tips[16][k][at] / ref[at] - 1);
+        CHECK(err64 < tol[at]);
+        CHECK(err64 < err16);
+      }
+    if (stress)
+      for (const auto &[n, v] : q4_reference)
+        for (int at = 0; at < 2; ++at) CHECK_NEAR(tips[n][0][at] / v[at], 1.0, 1e-4);
+    CHECK(tips[8][0][0] < tips[8][2][0]); // shear locking makes q4 the stiffest
   }
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));

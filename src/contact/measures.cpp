@@ -85,7 +85,7 @@ PetscErrorCode ContactSet::Penetration(double &penetration) const
 PetscErrorCode ContactSet::NormalForceMismatch(Vec f_net, double &mismatch) const
 {
   const PetscScalar *f;
-  double local[2] = {0, 0}, global[2];
+  double local = 0;
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(f_net, &f));
   for (PetscInt node : candidates_) {
@@ -94,12 +94,10 @@ PetscErrorCode ContactSet::NormalForceMismatch(Vec f_net, double &mismatch) cons
     if (pr.segment < 0) continue;
     const PetscInt o = mesh_->node_dof[node];
     const double fn_body = pr.n[0] * PetscRealPart(f[o]) + pr.n[1] * PetscRealPart(f[o + 1]);
-    local[0] = std::max(local[0], std::abs(fn_[node] - fn_body));
-    local[1] = std::max(local[1], std::abs(fn_[node]));
+    local = std::max(local, std::abs(fn_[node] - fn_body));
   }
   PetscCall(VecRestoreArrayRead(f_net, &f));
-  PetscCallMPI(MPI_Allreduce(local, global, 2, MPI_DOUBLE, MPI_MAX, comm()));
-  mismatch = global[1] > 0 ? global[0] / global[1] : 0.0;
+  PetscCallMPI(MPI_Allreduce(&local, &mismatch, 1, MPI_DOUBLE, MPI_MAX, comm()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -47,7 +47,7 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"release_force", &HistoryRow::release_force, "largest compressive normal force dropped by a release (N/mm)"},
     {"contact_gap", &HistoryRow::contact_gap, "largest gap of a node in contact after the increment (mm)"},
     {"fn_mismatch", &HistoryRow::fn_mismatch,
-     "largest |stored normal force - normal force the body's nodal forces need| / largest normal force"},
+     "largest |stored normal force - the normal force the body's nodal forces need| of a contact node (N/mm)"},
     {"stage", &HistoryRow::stage,
      "0 loading, 1 unloading (or the scene's second stage), 2 the slide scene's push back"},
     {"n_contact_apex", &HistoryRow::n_contact_apex, "contact nodes on the V-die's apex fillet"},

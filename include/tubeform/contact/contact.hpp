@@ -107,7 +107,8 @@ public:
   PetscErrorCode LimitStep(Vec du, double dU, StepLimit &limit);
   // Accepts the increment (du for tool step dU, reactions scaled by react_scale,
   // r the accepted fraction of the trial): forces, slip, events, and the
-  // projection of contact nodes back onto the tool.
+  // projection of contact nodes back onto the tool. Call after the body's
+  // commit: the projection reads the positions at the end of the step.
   PetscErrorCode Commit(Vec du, double dU, double react_scale, double r, ContactCommit &report);
 
   // Friction forces on the body (owned nodes, global frame) into a contribution vector.
@@ -124,8 +125,7 @@ public:
   // Collective: the largest difference between a contact node's stored normal
   // force and the normal component, on the current geometry, of the force the
   // body needs there (f_net = f_int - f_applied, ghost-summed local vector),
-  // relative to the largest normal force: how far the force bookkeeping has
-  // drifted from the body's equilibrium. Nodes whose both components are held
+  // (N/mm): how far the force bookkeeping has drifted from the body's equilibrium. Nodes whose both components are held
   // (global frame on a symmetry plane) share their force with the support and
   // are left out.
   PetscErrorCode NormalForceMismatch(Vec f_net, double &mismatch) const;
