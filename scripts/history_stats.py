@@ -96,7 +96,8 @@ def checks(paths):
         load = max(np.abs(H["load"]).max(), 1e-300)
         print(f"{path} | {np.abs(H['energy_error'][late]).max():.1e} | {np.abs(H['internal_error'][late]).max():.1e}"
               f" | {H['w_damped'][-1] / w[-1]:.1e} | {(H['w_kinetic'][late] / w[late]).max():.1e}"
-              f" | {H['tension'].max() / load:.1e} | {H['release_force'].max() / load:.1e} | {H['fn_mismatch'].max() / max(H['fn_sum'].max(), 1e-300):.1e}"
+              f" | {H['tension'].max() / load:.1e} | {H['release_force'].max() / load:.1e}"
+              f" | {H['fn_mismatch'].max() / max(H['fn_sum'].max(), 1e-300):.1e}"
               f" | {H['penetration'].max():.1e} | {int(H['events_inside'][-1])} | {int(H['unsettled'][-1])}"
               f" | {int(H['inconsistent'][-1])} | {int((H['limiter'] == 7).sum())}")
 

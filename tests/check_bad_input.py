@@ -34,6 +34,9 @@ cases = [
     (["-mesh_file", f"{src}/options/pressure.opts"], "pressure.opts"),
     (["-output", out("keep.csv/out.h5")], "-output"),          # parent is a file
     (["-history_csv", out("keep.csv/h.csv")], "-history_csv"),
+    (["-rmin_event_tol", "0"], "-rmin_event_tol"),
+    (["-rmin_dphi", "3"], "-rmin_dphi"),
+    (["-slide_back", "-1"], "-slide_back"),
 ]
 # Every case on 1 rank; on 2 ranks one of each kind (option value, option
 # choice, mesh file, output path), since mpirun takes ~2 s to wind down a

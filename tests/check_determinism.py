@@ -24,7 +24,8 @@ for rep in (1, 2):
     with h5py.File(f, "r") as h:
         H.append({c: h["/history"][c][:] for c in h["/history"]})
 a, b = H
-k.check(len(a["stroke"]) == len(b["stroke"]), f"same number of increments ({len(a['stroke']) - 1}, {len(b['stroke']) - 1})")
+na, nb = len(a["stroke"]) - 1, len(b["stroke"]) - 1
+k.check(na == nb, f"same number of increments ({na}, {nb})")
 n = min(len(a["stroke"]), len(b["stroke"]))
 differ = [c for c in a if not np.array_equal(a[c][:n], b[c][:n])]
 k.check(not differ, "every history column bitwise equal" + (": " + ", ".join(differ) if differ else ""))

@@ -9,16 +9,17 @@ sticks and slides at T = mu N; friction dissipation = mu N x slip.
   - dissipation = mu N x slip in steady sliding (the second half of the
     push) within 1e-3 (Coulomb's law is exact there; measured 1.2e-5); over
     the whole push it may only be less (|f_l| <= mu f_n; the stick-to-slide
-    transition of the regularized law dissipates less per mm, by ~VCRI/slip);
+    transition of the regularized law dissipates less per mm, by ~VCRI/slip),
+    to round-off (1e-12 of the dissipation);
   - contact: no penetration beyond 1e-6 mm, no tensile contact force;
   - r6 (slide to stick, METHOD.md sec. 4): the top pushed back (-slide_back)
     reverses the slip; with -rmin_dphi 0.5 each increment may lower a node's
     mobilization f_l / (mu f_n) by at most 0.5, so while T is still positive
     it falls by at most 0.5 mu N per increment (2 %: the normal forces shift
     between the nodes a little as the block rocks), and r6 limits at least
-    two increments; with the bound off (-rmin_dphi 2) T falls from mu N to
-    -mu N in one increment (the same check then fails: the bound is what
-    limits);
+    two increments; with the bound off (-rmin_dphi 2, more than any fall can
+    be) T falls from mu N to -mu N in one increment, so the same check
+    fails: the bound is what limits;
   - the same on an arc tool (options/slide_arc.opts: a quarter ring turned
     inside a rigid cylinder, which exercises the curvature terms): the moment
     about the centre = mu R sum f_n within 1 %, and the dissipation = that
@@ -77,9 +78,8 @@ fall, limited, end = reversal(0.5)
 k.check(fall <= 0.5 * mu * N * 1.02 and limited >= 2,
         f"r6 bounds slide to stick: largest fall of T from T > 0 {fall:.3f} <= 0.5 mu N = {0.5 * mu * N:g} (2 %), "
         f"{limited} increments limited by r6; T ends at {end:.3f}")
-fall_off, limited_off, _ = reversal(2)
-k.check(fall_off > 0.5 * mu * N * 1.02 and limited_off == 0,
-        f"without the bound (-rmin_dphi 2) T falls by {fall_off:.3f} in one increment (r6 limited {limited_off})")
+fall_off, _, _ = reversal(2)
+k.check(fall_off > 0.5 * mu * N * 1.02, f"without the bound (-rmin_dphi 2) T falls by {fall_off:.3f} in one increment")
 import h5py  # noqa: E402
 f = out("slide_arc.h5")
 run(tf, mpirun, 1, ["-options_file", f"{src}/options/slide_arc.opts", "-output", f, "-output_every", 100000])

@@ -4,16 +4,19 @@ case. Every check compares quantities computed independently of each other
 (docs/theory.md, "Self-checks"):
   - (a) energy balance: the press's work from the reported punch load,
     1/2 integral of load dU for the quarter, against internal work (stresses)
-    + friction dissipation (contact slips) + kinetic + damped energy, within
+    + friction dissipation (contact slips) + inertia work (kinetic energy +
+    the energy backward Euler damps, from the accelerations), within
     0.5 % at every increment after the first 10 (measured 0.24 %: the
     incremental method's first-order drift at 300 trial increments; friction
     alone is 4.9 % of the work, so a lost term would fail);
   - (b) internal work against plastic dissipation + stored elastic energy,
     within 0.3 % (measured 0.13 %; 0.09 % at the end of loading);
   - (c) the damped energy (inertia work - kinetic energy) below 1e-6 of the
-    work at the end, and the kinetic energy below 1e-6 of the work at every
-    increment (measured 1e-8 and 1.3e-8): at a press speed the tube moves
-    quasi-statically; a snap would show orders of magnitude more;
+    work in magnitude at the end (it is not sign-definite step by step), and
+    the kinetic energy below 1e-6 of the work at every increment (measured
+    1e-8 and 1.3e-8): at a press speed the tube moves quasi-statically; a
+    snap would show orders of magnitude more (copper 14.5/0.5 snapping in the
+    paper's unloading: 4e-3);
   - no node penetrates a tool by more than 1e-6 mm; no contact node ends a
     step in tension, measured before the commit releases it, beyond 1e-6 of
     the largest load (the contact code's grazing "zero"; measured 3e-7), and
@@ -52,11 +55,12 @@ late = np.arange(len(h["stroke"])) > 10
 load_stage = h["stage"] == 0
 w = np.maximum(np.abs(h["w_ext"]), 1e-300)
 e = np.abs(h["energy_error"][late]).max()
-k.check(e < 5e-3, f"(a) press work from the reported load = internal + friction + kinetic + damped within {e:.2e} (5e-3)")
+k.check(e < 5e-3, f"(a) press work from the reported load = internal + friction + inertia work within {e:.2e} (5e-3)")
 i = np.abs(h["internal_error"][late]).max()
 k.check(i < 3e-3, f"(b) internal work = plastic + elastic energy within {i:.2e} (3e-3)")
-damped, kinetic = h["w_damped"][-1] / w[-1], (h["w_kinetic"][late] / w[late]).max()
-k.check(damped < 1e-6 and kinetic < 1e-6, f"(c) damped energy {damped:.1e} of the work, kinetic at most {kinetic:.1e} (1e-6)")
+damped, kinetic = abs(h["w_damped"][-1]) / w[-1], (h["w_kinetic"][late] / w[late]).max()
+k.check(damped < 1e-6 and kinetic < 1e-6,
+        f"(c) damped energy {damped:.1e} of the work, kinetic at most {kinetic:.1e} (1e-6)")
 k.check(h["penetration"].max() <= 1e-6, f"largest penetration {h['penetration'].max():.1e} mm")
 top = h["load"].max()
 k.check(h["tension"].max() <= 1e-6 * top and h["release_force"].max() <= 1e-6 * top,
@@ -71,7 +75,8 @@ for col in ("load", "x_max", "y_max", "c_over_t", "w_ext"):
     curves = [np.interp(grid, H[n]["stroke"][H[n]["stage"] == 0], H[n][col][H[n]["stage"] == 0]) for n in (1, 2)]
     rel = np.abs(curves[0] - curves[1]) / np.abs(curves[0]).max()
     k.check(rel[before].max() < 1e-6 and rel.max() < 3e-5,
-            f"1 vs 2 ranks, {col}(U): {rel[before].max():.1e} relative up to U = 2.6 mm (1e-6), {rel.max():.1e} to 4.2 mm (3e-5)")
+            f"1 vs 2 ranks, {col}(U): {rel[before].max():.1e} relative up to U = 2.6 mm (1e-6), "
+            f"{rel.max():.1e} to 4.2 mm (3e-5)")
 for col in ("x_max", "y_max", "c_over_t"):
     rel = abs(H[1][col][-1] - H[2][col][-1]) / max(abs(H[1][col][-1]), 1e-12)
     k.check(rel < 3e-5, f"1 vs 2 ranks after springback, {col}: {rel:.1e} (3e-5)")

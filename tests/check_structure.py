@@ -57,11 +57,14 @@ for f in files:
     if n > 450:
         long_files.append(f"{rel} ({n} lines)")
 
-k.check(not unknown, f"every component is placed in a layer{': missing ' + ', '.join(sorted(unknown)) if unknown else ''}")
+missing = f": missing {', '.join(sorted(unknown))}" if unknown else ""
+k.check(not unknown, f"every component is placed in a layer{missing}")
 k.check(not upward, f"no include runs upward ({len(files)} files)" + "".join("\n         " + u for u in upward))
 k.check(not long_files, "no file over 450 lines" + "".join("\n         " + u for u in long_files))
-code = [f for f in files] + [os.path.join(src, "tests", n) for n in os.listdir(os.path.join(src, "tests")) if n.endswith((".cpp", ".hpp"))]
-p = subprocess.run(["clang-format", "--dry-run", "--Werror", f"--style=file:{src}/.clang-format"] + code, capture_output=True, text=True)
+tests = os.path.join(src, "tests")
+code = files + [os.path.join(tests, n) for n in os.listdir(tests) if n.endswith((".cpp", ".hpp"))]
+p = subprocess.run(["clang-format", "--dry-run", "--Werror", f"--style=file:{src}/.clang-format"] + code,
+                   capture_output=True, text=True)
 bad = sorted({line.split(":")[0] for line in p.stderr.splitlines() if "error:" in line})
 k.check(p.returncode == 0, "formatted by .clang-format" + "".join("\n         " + os.path.relpath(b, src) for b in bad))
 k.done()

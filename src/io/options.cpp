@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/step/rmin.hpp"
 
 namespace tf {
 
@@ -102,12 +103,13 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                              "Steps that are not linear in r (friction, inertia) are solved again until their first "
                              "event lies within this fraction of the step's end",
                              "tubeform", opt.rmin_event_tol, &opt.rmin_event_tol, nullptr));
+  const std::string stall_help =
+    "Stop (results so far written) when this many increments advance the load path by less than " +
+    std::to_string(kStallAdvance);
   PetscCall(PetscOptionsInt("-rmin_max_increments", "Stop with an error after this many increments", "tubeform",
                             opt.rmin_max_increments, &opt.rmin_max_increments, nullptr));
-  PetscCall(
-    PetscOptionsInt("-rmin_stall_increments",
-                    "Stop (results so far written) when this many increments advance the load path by less than 1e-6",
-                    "tubeform", opt.rmin_stall_increments, &opt.rmin_stall_increments, nullptr));
+  PetscCall(PetscOptionsInt("-rmin_stall_increments", stall_help.c_str(), "tubeform", opt.rmin_stall_increments,
+                            &opt.rmin_stall_increments, nullptr));
   PetscCall(PetscOptionsInt("-rmin_max_redo",
                             "Re-solves per increment when points switch between loading and unloading", "tubeform",
                             opt.rmin_max_redo, &opt.rmin_max_redo, nullptr));
@@ -315,6 +317,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-slide_n %g, -slide_push %g: must be positive", opt.slide_n, opt.slide_push);
   PetscCheck(opt.slide_back >= 0 && std::isfinite(opt.slide_back), comm, PETSC_ERR_USER_INPUT,
              "-slide_back %g: must be a non-negative distance (mm)", opt.slide_back);
+  PetscCheck(opt.slide_back == 0 || opt.slide_tool == "flat", comm, PETSC_ERR_USER_INPUT,
+             "-slide_back %g: only the flat slide (-slide_tool flat) has a push-back stage", opt.slide_back);
   PetscCheck(opt.pressure_u > 0, comm, PETSC_ERR_USER_INPUT, "-pressure_u %g: must be positive (mm)", opt.pressure_u);
   PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);
   PetscCheck(std::isfinite(opt.shear_gamma) && opt.shear_gamma != 0, comm, PETSC_ERR_USER_INPUT,

@@ -79,7 +79,7 @@ public:
     if (squaring_)
       tools.tool = BuildVDie(opt_.tube_ro, opt_.die_r_apex, opt_.die_u_close, opt_.die_r_edge);
     else
-      tools.tool = BuildFlatPlate(opt_.tube_ro, -0.1 * opt_.tube_ro, 1.5 * opt_.tube_ro);
+      tools.tool = BuildFlatPlate(opt_.tube_ro, -kPlateOverhang * opt_.tube_ro, (1 + kPlateReach) * opt_.tube_ro);
     tools.candidates = "outer";
     tools.symmetry = {{"x0", {1, 0}}, {"y0", {0, 1}}};
     // Default VCRI: 2 % of the circumferential element size of the outer surface.
@@ -168,6 +168,9 @@ public:
   ~PressScene() override { (void)VecDestroy(&reversed_); }
 
 private:
+  // The flat plate reaches past the ring on both sides (fractions of ro): a
+  // crushed quarter ring widens by much less than half its radius.
+  static constexpr double kPlateOverhang = 0.1, kPlateReach = 0.5;
   Options opt_;
   bool squaring_;
   double stroke_ = 0, back_ = 0;

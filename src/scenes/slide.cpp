@@ -82,6 +82,7 @@ private:
   static constexpr double kWidth = 10.0, kHeight = 2.0; // block (mm)
   static constexpr double kFloorHalfLength = 1e3;       // the floor reaches far past the block (mm)
   static constexpr double kVcri = 1e-3;                 // default quasi-stick slip (mm)
+  static constexpr double kOnEnd = 1e-9;                // a top node this close to an end (of the width) is an end node
   Options opt_;
   // A uniform vertical traction on the top edge with resultant fy (end nodes
   // half weight), into f (if given) and the system (with to_system).
@@ -89,7 +90,7 @@ private:
   {
     PetscScalar *a = nullptr;
     PetscFunctionBeginUser;
-    const double per = fy / opt_.mesh_ntheta, tol = 1e-9 * kWidth;
+    const double per = fy / opt_.mesh_ntheta, tol = kOnEnd * kWidth;
     if (f) PetscCall(VecGetArray(f, &a));
     for (PetscInt n : m.mesh.node_sets["top"]) {
       if (!m.mesh.node_owned[n]) continue;

@@ -9,6 +9,7 @@
 
 #include <petscvec.h>
 
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,15 +34,10 @@ constexpr double kFloorOfSmallForces = 1e3;
 // the tanh law can make plain iterates oscillate between sticking and sliding.
 constexpr int kPlainIterations = 6;
 constexpr double kRelax = 0.5;
-// A node whose normal force fell to this fraction of its start value (and below
-// zero) in a committed step separates: the round-off of a re-solved step.
-constexpr double kSeparated = 1e-9;
 // A node whose normal force would vanish within this fraction of a
 // quasi-static step is released in the trial rather than cutting the step
 // (round-off; with inertia the controller passes its shortest step instead).
 constexpr double kReleaseWithin = 1e-9;
-// The frame (l, n) contains a symmetry plane's held direction when |s.l| = 1 within this.
-constexpr double kFrameAxisTol = 1e-9;
 
 struct ContactParams {
   double mu = 0;           // Coulomb coefficient
@@ -57,8 +53,9 @@ struct ContactParams {
 struct ContactCommit {
   double w_friction = 0;    // friction dissipation of the increment, -sum f_l,mid dslip
   double tension = 0;       // largest tensile normal force of a contact node at the end of the step, before releases
-  double release_force = 0; // largest compressive normal force dropped by a release in the step
+  double release_force = 0; // largest compressive normal force dropped by a release (or a slide off the tool's end)
   double gap = 0;           // largest gap (>= 0) of a node in contact after the commit (mm)
+  double penetration = 0;   // largest penetration (>= 0) of a candidate node into the tool after the commit (mm)
 };
 
 // What a scene asks of the driver's contact set.
@@ -105,11 +102,13 @@ public:
   PetscErrorCode ReleasePulled(Vec du, double dU, double release_fraction, bool apply, PetscInt &released);
   // r4 (contact), r5 (separation), r6 (stick / reversal) for the solution du of step dU.
   PetscErrorCode LimitStep(Vec du, double dU, StepLimit &limit);
-  // Accepts the increment (du for tool step dU, reactions scaled by react_scale,
-  // r the accepted fraction of the trial): forces, slip, events, and the
-  // projection of contact nodes back onto the tool. Call after the body's
-  // commit: the projection reads the positions at the end of the step.
-  PetscErrorCode Commit(Vec du, double dU, double react_scale, double r, ContactCommit &report);
+  // Accepts the increment du with tool step dU, the last solution scaled by r
+  // (its reactions scaled by r, its events up to r (1 + group_tol) happen):
+  // forces, slips, events, and the projection of every candidate on the
+  // moved tool (frames of the contact nodes at the end of the step). Call
+  // after the body's commit: the projection reads the positions at the end
+  // of the step.
+  PetscErrorCode Commit(Vec du, double dU, double r, ContactCommit &report);
 
   // Friction forces on the body (owned nodes, global frame) into a contribution vector.
   PetscErrorCode AddFrictionForces(Vec f) const;
@@ -120,11 +119,12 @@ public:
   PetscErrorCode Count(PetscInt &n) const;
   // Collective: sum over contact nodes of the normal force f_n.
   PetscErrorCode NormalForceSum(double &sum) const;
-  // Collective: largest penetration (>= 0) of a candidate node into the tool (mm).
+  // Collective: largest penetration (>= 0) of a candidate node into the tool (mm)
+  // (Commit reports it for every increment; this is for the initial state).
   PetscErrorCode Penetration(double &penetration) const;
   // Collective: the largest difference between a contact node's stored normal
-  // force and the normal component, on the current geometry, of the force the
-  // body needs there (f_net = f_int - f_applied, ghost-summed local vector),
+  // force and the normal component (in its frame after the last commit) of
+  // the force the body needs there (f_net = f_int - f_applied, ghost-summed local vector),
   // (N/mm): how far the force bookkeeping has drifted from the body's equilibrium. Nodes whose both components are held
   // (global frame on a symmetry plane) share their force with the support and
   // are left out.
@@ -154,6 +154,7 @@ private:
   int iteration_ = 0;
   std::vector<char> released_, frozen_; // within the current step
   double f_small_ = 0;                  // contact forces below this count as zero
+  double slid_off_ = 0;                 // largest normal force dropped by a slide off the tool's end (next report)
   std::vector<Vec2> n_, l_;
 
   MPI_Comm comm() const { return mesh_->comm; }
@@ -162,6 +163,10 @@ private:
     return contact_[node] && !global_frame_[node] && sym_dir_[node][0] == 0 && sym_dir_[node][1] == 0;
   }
   Vec2 Position(PetscInt node) const { return {(*x_body_)[2 * node], (*x_body_)[2 * node + 1]}; }
+  // A symmetry plane's held direction is a global axis: the index of that axis.
+  static int HeldComponent(const Vec2 &s) { return std::abs(s[0]) > std::abs(s[1]) ? 0 : 1; }
+  // Frame, gap and curvature of a contact node from its projection on the tool.
+  void TakeFrame(PetscInt node, const Projection &pr);
   Vec2 Increment(const PetscScalar *d, PetscInt node) const;
   double NormalReaction(PetscInt node, const PetscScalar *react) const;
   // The normal force increment of a solution with normal reaction reaction_n

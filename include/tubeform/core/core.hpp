@@ -5,6 +5,8 @@
 
 #include <petscsys.h>
 
+#include <array>
+
 #ifndef PETSC_SUCCESS
 #define PETSC_SUCCESS 0 // PETSc 3.18 predates the named constant.
 #endif
@@ -23,5 +25,8 @@ constexpr double kNever = 1e300;
 
 // Floor of a denominator that may be zero (a relative error of zero work).
 constexpr double kTiny = 1e-300;
+
+// A point or direction in the plane.
+using Vec2 = std::array<double, 2>;
 
 } // namespace tf

@@ -30,12 +30,12 @@ constexpr double kMinRmin = 1e-10;
 // One increment as the controller took it.
 struct Increment {
   double dl = 0;                // load step taken (of lambda)
-  double r = 1;                 // its fraction of the increment's first trial step: r_min
+  double r = 1;                 // r_min: the step taken as a fraction of the increment's trial step
   Limiter who = Limiter::Trial; // what set r
   PetscInt where = -1;          // element or node (input numbering) of the limiter
-  double react_scale = 1;       // the last solution's reactions enter scaled by this
-  double r_event = 1;           // events of the last solution up to this factor happen in the step
-  double dU = 0;                // tool step of the last solution
+  double scale = 1;             // the step taken is the last solution scaled by this (1: re-solved):
+                                // its reactions scale with it, its events up to it happen
+  double dU = 0;                // tool step of the step taken
   PetscInt solves = 0;          // factorizations, friction iterations and re-solves included
   PetscInt redo = 0;            // re-solves for loading/unloading switches
   PetscInt unsettled = 0;       // trial steps taken with unsettled iterations
@@ -66,7 +66,6 @@ private:
   const Options &opt_;
   double duration_;
   Vec f_res_ = nullptr;
-  double release_fraction_ = 0; // of the step being solved (ContactSet::ReleasePulled)
 
   bool ContactActive() const { return m_.contact && m_.contact->active(); }
   bool Iterative() const { return ContactActive() && m_.contact->friction(); }
@@ -80,8 +79,8 @@ private:
   // false, unless it is the `last` try: then it is solved once more with the
   // friction linearized at the increment start and taken.
   PetscErrorCode SolveTrial(double lambda, double dl, Vec du, bool last, Trial &t, Increment &inc);
-  // A trial halved until it settles (kMaxCuts times at most); returns the halvings.
-  PetscErrorCode SettledTrial(double lambda, double &dl, Vec du, Trial &t, Increment &inc, int &halvings);
+  // A trial halved until it settles (kMaxCuts times at most; dl is halved with it).
+  PetscErrorCode SettledTrial(double lambda, double &dl, Vec du, Trial &t, Increment &inc);
 };
 
 } // namespace tf

@@ -29,7 +29,8 @@ public:
   ~Problem();
 
   // Collective: the scene of -scene (or one made by the caller, for tests),
-  // its mesh partitioned and distributed, the body, system, inertia, contact.
+  // its mesh partitioned and distributed, the body, the system, inertia (the
+  // contact set is made by Run from the scene's tools).
   PetscErrorCode Setup(MPI_Comm comm, const Options &opt);
   PetscErrorCode Setup(MPI_Comm comm, const Options &opt, std::unique_ptr<Scene> scene);
   // Collective: the load path from lambda = 0 to its end; results written.
@@ -80,8 +81,9 @@ private:
   // Step 6 of Run: the increment's forces, energies and the scene's measurements into the history.
   PetscErrorCode Record(PetscInt inc, double lambda0, double lambda, const Increment &step, const Committed &done,
                         Vec du);
-  // The contact set's columns of a history row (none without tools).
-  PetscErrorCode ContactColumns(const ContactCommit &report, HistoryRow &row) const;
+  // The contact set's columns of a history row from a commit's report (none
+  // without tools; report null: the initial state).
+  PetscErrorCode ContactColumns(const ContactCommit *report, HistoryRow &row);
   // The scene's applied loads and the friction forces at lambda into f_app and f_ext.
   PetscErrorCode ExternalForces(double lambda);
   PetscErrorCode PrintMonitor(PetscInt inc, double lambda, const Increment &step, const HistoryRow &row);

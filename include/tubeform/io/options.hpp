@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "tubeform/body/body.hpp"
+#include "tubeform/contact/contact.hpp"
 #include "tubeform/fe/quad.hpp"
 #include "tubeform/material/elastic.hpp"
 
@@ -27,13 +29,13 @@ struct Options {
   // Material
   MaterialParams material;
   // Incremental driver (METHOD.md sec. 4)
-  PetscInt increments = 10;     // trial increments over the load path
-  double rmin_deps = 2e-3;      // r2: largest principal strain increment
-  double rmin_domega = 1e-2;    // r3: largest rotation increment (rad)
-  double rmin_group_tol = 1e-6; // events within (1 + tol) r_min are taken together
-  double rmin_event_tol = 1e-2; // re-solved steps locate their events to this fraction of the step
+  PetscInt increments = 10;                       // trial increments over the load path
+  double rmin_deps = BodyParams{}.rmin_deps;      // r2: largest principal strain increment
+  double rmin_domega = BodyParams{}.rmin_domega;  // r3: largest rotation increment (rad)
+  double rmin_group_tol = BodyParams{}.group_tol; // events within (1 + tol) r_min are taken together
+  double rmin_event_tol = 1e-2;                   // re-solved steps locate their events to this fraction of the step
   PetscInt rmin_max_increments = 100000;
-  PetscInt rmin_stall_increments = 1000; // stop when this many increments advance lambda by < 1e-6 together
+  PetscInt rmin_stall_increments = 1000; // stop when this many increments advance lambda by < kStallAdvance
   PetscInt rmin_max_redo = 10;           // re-solves per increment for loading/unloading switches
   PetscInt friction_max_iters = 30;
   PetscBool drift_correction = PETSC_FALSE;
@@ -51,8 +53,8 @@ struct Options {
   // Tools, contact, friction (METHOD.md sec. 1, 3)
   double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
   double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
-  double friction_tol = 1e-4;
-  double rmin_dphi = 0.5; // r6: largest fall of |f_l| / (mu f_n) towards stick in an increment
+  double friction_tol = ContactParams{}.tol;
+  double rmin_dphi = ContactParams{}.dphi_max; // r6: largest fall of f_l / (mu f_n) towards stick in an increment
   std::string unload = "reverse";
   double shear_gamma = 1.0;
   double slide_n = 100.0, slide_push = 0.2; // slide scene: normal force (N/mm, arc: pressure MPa), push (mm)

@@ -1,15 +1,14 @@
 // The energy accounts of a run and its two self-checks (docs/theory.md,
 // "Self-checks"), per unit length of the modelled part (N mm/mm), accumulated
 // increment by increment. Each side of a check comes from other quantities:
-//   (a) work put in  = internal work + friction dissipation + kinetic energy
-//                      + energy damped by backward Euler (inertia work -
-//                      kinetic energy: all works by the same trapezoidal rule),
+//   (a) work put in = internal work + friction dissipation + inertia work,
 //       the input taken from the reported load and stroke where they are
 //       work-conjugate (a tool: half the punch load times the stroke for the
 //       quarter tube), else from the loads and supports at the nodes; the
 //       friction dissipation from the contact slips, the internal work from
-//       stresses and strain increments, the kinetic and damped energies from
-//       the velocities;
+//       stresses and strain increments, the inertia work (= kinetic energy +
+//       the energy backward Euler damps) from the accelerations, all by the
+//       same trapezoidal rule;
 //   (b) internal work = plastic dissipation + stored elastic energy,
 //       the plastic part from the flow stress and plastic strain increments,
 //       the elastic part from the current stresses.
@@ -30,13 +29,8 @@ struct EnergyAccount {
   double w_friction = 0; // friction dissipation, -sum f_l,mid dslip
   double w_inertia = 0;  // work of the inertia forces (trapezoidal) = kinetic + damped energy
 
-  // Energy damped by backward Euler so far: the inertia work that is not kinetic energy.
-  double Damped(double w_kinetic) const { return w_inertia - w_kinetic; }
-  // (a) (w_ext - w_int - w_friction - w_kinetic - w_damped) / |w_ext|
-  double BalanceError(double w_kinetic) const
-  {
-    return (w_ext - w_int - w_friction - w_kinetic - Damped(w_kinetic)) / std::max(std::abs(w_ext), kTiny);
-  }
+  // (a) (w_ext - w_int - w_friction - w_inertia) / |w_ext|
+  double BalanceError() const { return (w_ext - w_int - w_friction - w_inertia) / std::max(std::abs(w_ext), kTiny); }
   // (b) (w_int - w_plastic - w_elastic) / |w_int|
   double InternalError(double w_elastic) const
   {

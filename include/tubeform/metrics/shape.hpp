@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "tubeform/core/core.hpp"
-#include "tubeform/tool/tool.hpp"
 
 namespace tf {
 

@@ -28,6 +28,12 @@ enum class Limiter : int {
 constexpr int kNumLimiters = 8;
 const char *LimiterName(int code);
 
+// The stall watch (-rmin_stall_increments): a window of increments that
+// together advance the load parameter by less than this is a stall (the
+// finished paper runs advance by at least 4.9e-5 over any 1000 increments,
+// the stalled ones by 3.2e-7 and 1.6e-7: docs/theory.md, "Stalls").
+constexpr double kStallAdvance = 1e-6;
+
 // The smallest factor offered so far, what it was and where (input numbering of
 // the element or node).
 struct StepLimit {

@@ -10,8 +10,6 @@
 
 namespace tf {
 
-using Vec2 = std::array<double, 2>;
-
 // A point whose projection falls this far (in units of the segment's length
 // or angle range) past a segment's end still projects on it: joints between
 // segments are found to round-off.

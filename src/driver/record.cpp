@@ -1,0 +1,193 @@
+// What a run records: the history row of each increment (forces on the new
+// geometry, the energy accounts and self-checks, the contact columns, the
+// scene's measurements), the -monitor line, and the cell fields.
+#include <algorithm>
+#include <cmath>
+
+#include "tubeform/core/log.hpp"
+#include "tubeform/driver/problem.hpp"
+
+namespace tf {
+
+namespace {
+// The energy balance error above which the run warns once.
+constexpr double kEnergyWarning = 0.05;
+// The first increments are left out of the warning and the summary's worst
+// self-checks: their work is too small for a relative error to mean much.
+constexpr PetscInt kEnergyWarningAfter = 10;
+
+// g (a global vector) = the rank sum of the per-rank contributions f_local.
+PetscErrorCode SumContributions(DM dm, Vec f_local, Vec g)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(g));
+  PetscCall(DMLocalToGlobal(dm, f_local, ADD_VALUES, g));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+} // namespace
+
+PetscErrorCode Problem::ContactColumns(const ContactCommit *report, HistoryRow &row)
+{
+  PetscFunctionBeginUser;
+  if (!contact_) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscInt n;
+  PetscCall(contact_->Count(n));
+  row.n_contact = n;
+  PetscCall(contact_->NormalForceSum(row.fn_sum));
+  if (!contact_->active()) PetscFunctionReturn(PETSC_SUCCESS); // the tools are gone
+  if (!report) {                                               // the initial state
+    PetscCall(contact_->Penetration(row.penetration));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  row.penetration = report->penetration;
+  row.tension = report->tension;
+  row.release_force = report->release_force;
+  row.contact_gap = report->gap;
+  // The normal forces the body needs at the contact nodes: f_int - f_app, rank-summed.
+  Vec g;
+  PetscCall(VecWAXPY(forces_.f_net, -1.0, forces_.f_app, forces_.f_int));
+  PetscCall(DMGetGlobalVector(mesh_.dm, &g));
+  PetscCall(SumContributions(mesh_.dm, forces_.f_net, g));
+  PetscCall(DMGlobalToLocal(mesh_.dm, g, INSERT_VALUES, forces_.f_net));
+  PetscCall(DMRestoreGlobalVector(mesh_.dm, &g));
+  PetscCall(contact_->NormalForceMismatch(forces_.f_net, row.fn_mismatch));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::ExternalForces(double lambda)
+{
+  PetscFunctionBeginUser;
+  PetscCall(scene_->ExternalForce(*model_, lambda, forces_.f_app));
+  PetscCall(VecCopy(forces_.f_app, forces_.f_ext));
+  if (contact_ && contact_->active()) PetscCall(contact_->AddFrictionForces(forces_.f_ext));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, const Increment &taken,
+                               const Committed &done, Vec du)
+{
+  double residual;
+  const bool inertia = inertia_ && inertia_->active();
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::measure, 0, 0, 0, 0));
+  // Forces on the new geometry (f_int + M a: what the loads and reactions
+  // balance), the mean of start and end for the trapezoidal work, the
+  // out-of-balance force of the free dofs.
+  PetscCall(ExternalForces(lambda));
+  PetscCall(body_.InternalForce(forces_.f_int));
+  if (inertia) PetscCall(inertia_->AddForce(forces_.f_int));
+  for (auto [start, now] : {std::pair{forces_.f_app0, forces_.f_app}, std::pair{forces_.f_ext0, forces_.f_ext},
+                            std::pair{forces_.f_int0, forces_.f_int}})
+    PetscCall(VecAXPBY(start, 0.5, 0.5, now));
+  PetscCall(VecWAXPY(forces_.f_res, -1.0, forces_.f_int, forces_.f_ext));
+  PetscCall(system_.FreeNorm(forces_.f_res, residual));
+
+  HistoryRow row;
+  row.increment = inc;
+  row.rmin = taken.r;
+  row.limiter = static_cast<double>(taken.who);
+  row.limiter_where = taken.where;
+  row.n_plastic = done.body.n_plastic;
+  row.friction_iters = taken.solves;
+  row.residual = residual;
+  row.redo = taken.redo;
+  row.drift = done.body.drift;
+  row.unsettled = unsettled_;
+  row.events_inside = events_inside_;
+  row.inconsistent = inconsistent_;
+  row.inertia = inertia ? 1 : 0;
+  PetscCall(ContactColumns(&done.contact, row));
+  PetscCall(scene_->Measure(*model_, lambda, forces_.f_int, row));
+
+  // Check (a)'s input: from the reported load and stroke (and the scene's
+  // applied loads) where the scene says they are work-conjugate in this
+  // stage; else the work of the loads and supports at the nodes plus what
+  // friction dissipated (the tools' side of it).
+  const HistoryRow &prev = history_.rows().back();
+  const double share = scene_->LoadWorkShare(0.5 * (lambda0 + lambda));
+  double dw_in;
+  if (share > 0) {
+    const double dw_tool = share * 0.5 * (prev.load + row.load) * (row.stroke - prev.stroke);
+    PetscCall(system_.ExternalWork(forces_.f_app0, nullptr, du, dw_in));
+    dw_in += dw_tool;
+    energy_.w_tool += dw_tool;
+  } else {
+    PetscCall(system_.ExternalWork(forces_.f_ext0, forces_.f_int0, du, dw_in));
+    dw_in += done.contact.w_friction;
+  }
+  energy_.w_ext += dw_in;
+  energy_.w_friction += done.contact.w_friction;
+  energy_.w_int += done.body.dw_int;
+  energy_.w_plastic += done.body.dw_plastic;
+  energy_.w_inertia += done.dw_inertia;
+  row.w_ext = energy_.w_ext;
+  row.w_tool = energy_.w_tool;
+  row.w_int = energy_.w_int;
+  row.w_plastic = energy_.w_plastic;
+  row.w_friction = energy_.w_friction;
+  row.w_inertia = energy_.w_inertia;
+  PetscCall(body_.ElasticEnergy(row.w_elastic));
+  if (inertia) PetscCall(inertia_->KineticEnergy(row.w_kinetic));
+  row.w_damped = energy_.w_inertia - row.w_kinetic;
+  row.energy_error = energy_.BalanceError();
+  row.internal_error = energy_.InternalError(row.w_elastic);
+  history_.Append(row);
+  PetscCall(PetscLogEventEnd(Log::measure, 0, 0, 0, 0));
+
+  if (inc > kEnergyWarningAfter) {
+    worst_error_ = std::max(worst_error_, std::abs(row.energy_error));
+    worst_internal_ = std::max(worst_internal_, std::abs(row.internal_error));
+    if (!warned_ && std::abs(row.energy_error) > kEnergyWarning) {
+      warned_ = true;
+      PetscCall(PetscPrintf(comm_,
+                            "tubeform: warning: energy balance error %.1f %% at increment %d (lambda %.4f): the "
+                            "solution is drifting from equilibrium; try smaller -rmin_deps / -increments, or see "
+                            "docs/theory.md\n",
+                            100 * row.energy_error, (int)inc, lambda));
+    }
+  }
+  if (opt_.monitor) PetscCall(PrintMonitor(inc, lambda, taken, row));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::PrintMonitor(PetscInt inc, double lambda, const Increment &taken, const HistoryRow &row)
+{
+  Vec g;
+  PetscReal fnorm;
+
+  PetscFunctionBeginUser;
+  // Scale of the forces: the internal force over all dofs.
+  PetscCall(DMGetGlobalVector(mesh_.dm, &g));
+  PetscCall(SumContributions(mesh_.dm, forces_.f_int, g));
+  PetscCall(VecNorm(g, NORM_2, &fnorm));
+  PetscCall(DMRestoreGlobalVector(mesh_.dm, &g));
+  const std::string where = taken.where >= 0 ? " @" + std::to_string(taken.where) : "";
+  PetscCall(PetscPrintf(comm_, "inc %5d  lambda %.5f  stroke %-11.5g load %-11.5g r_min %.3g (%s%s)", (int)inc, lambda,
+                        row.stroke, row.load, taken.r, LimiterName((int)taken.who), where.c_str()));
+  PetscCall(PetscPrintf(comm_, "  plastic %d  contact %d  iters %d", (int)row.n_plastic, (int)row.n_contact,
+                        (int)taken.solves));
+  PetscCall(PetscPrintf(comm_, "  residual %.2e (rel %.1e)  energy err %.1e\n", row.residual,
+                        row.residual / std::max((double)fnorm, kTiny), row.energy_error));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::WriteFields(ResultWriter &writer, PetscInt step, double t)
+{
+  std::vector<CellField> cells = {{"sigma_xx", {}},  {"sigma_yy", {}}, {"sigma_zz", {}}, {"sigma_xy", {}},
+                                  {"von_mises", {}}, {"eps_p", {}},    {"plastic", {}}};
+  PetscFunctionBeginUser;
+  for (auto &c : cells) c.values.assign(mesh_.num_cells, 0.0);
+  // Cell values are Gauss-point averages.
+  for (PetscInt e = 0; e < mesh_.num_cells; ++e)
+    for (int g = 0; g < fe::kGauss; ++g) {
+      const PointState &ps = body_.state()[fe::kGauss * e + g];
+      const Voigt &s = ps.sigma;
+      const double vals[7] = {s[0], s[1], s[2], s[3], VonMises(s), ps.ep, ps.plastic ? 1.0 : 0.0};
+      for (int k = 0; k < 7; ++k) cells[k].values[e] += vals[k] / fe::kGauss;
+    }
+  PetscCall(writer.WriteStep(step, t, body_.displacement(), cells));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
