@@ -53,7 +53,7 @@ struct NodalLoad {
 // Value of component k of the displacement at the node nearest (x, y), from its owner.
 PetscErrorCode DisplacementAt(Problem &p, double x, double y, int k, double &u)
 {
-  double local = 0, best = 1e300;
+  double local = 0, best = kNever;
   PetscFunctionBeginUser;
   for (PetscInt n = 0; n < p.mesh().num_nodes; ++n) {
     const double d = std::hypot(p.mesh().x0[2 * n] - x, p.mesh().x0[2 * n + 1] - y);
