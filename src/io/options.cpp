@@ -13,6 +13,22 @@ const char *const kElements[] = {"q4", "bbar", "qm6"};
 const char *const kMaterials[] = {"aluminum", "copper", "custom"};
 const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
 
+// One of a list of words for a string-valued option; the current value is the default. Called between
+// PetscOptionsBegin and PetscOptionsEnd (it needs their PetscOptionsObject).
+template <PetscInt N>
+PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, const char *name, const char *help,
+                          const char *const (&words)[N], std::string &value)
+{
+  PetscInt choice = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < N; ++k)
+    if (value == words[k]) choice = k;
+  PetscCall(PetscOptionsEList(name, help, "tubeform", words, N, words[choice], &choice, nullptr));
+  value = words[choice];
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes, Options &opt)
@@ -150,11 +166,9 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                              "tubeform", opt.pressure_p, &opt.pressure_p, nullptr));
   {
     const char *const controls[] = {"load", "displacement"};
-    choice = opt.pressure_control == "load" ? 0 : 1;
-    PetscCall(PetscOptionsEList(
-      "-pressure_control", "pressure scene: ramp the pressure (load) or the inner radial displacement (displacement)",
-      "tubeform", controls, 2, controls[choice], &choice, nullptr));
-    opt.pressure_control = controls[choice];
+    PetscCall(ChooseWord(PetscOptionsObject, "-pressure_control",
+                         "pressure scene: ramp the pressure (load) or the inner radial displacement (displacement)",
+                         controls, opt.pressure_control));
   }
   PetscCall(PetscOptionsReal("-pressure_u",
                              "pressure scene: final inner radial displacement (mm), -pressure_control displacement",
@@ -188,12 +202,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                              "tubeform", opt.rmin_dphi, &opt.rmin_dphi, nullptr));
   {
     const char *const unloads[] = {"reverse", "withdraw", "none"};
-    choice = opt.unload == "reverse" ? 0 : opt.unload == "withdraw" ? 1 : 2;
-    PetscCall(PetscOptionsEList(
-      "-unload",
+    PetscCall(ChooseWord(
+      PetscOptionsObject, "-unload",
       "Springback: reverse (paper: elastic, contact forces reversed, tools removed), withdraw (tools move back), none",
-      "tubeform", unloads, 3, unloads[choice], &choice, nullptr));
-    opt.unload = unloads[choice];
+      unloads, opt.unload));
   }
   PetscCall(PetscOptionsReal("-shear_gamma", "shear scene: final shear strain gamma", "tubeform", opt.shear_gamma,
                              &opt.shear_gamma, nullptr));
@@ -201,11 +213,9 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                              &opt.slide_n, nullptr));
   {
     const char *const tools[] = {"flat", "arc"};
-    choice = opt.slide_tool == "flat" ? 0 : 1;
-    PetscCall(PetscOptionsEList(
-      "-slide_tool", "slide scene: a block on a flat floor, or a quarter ring turned inside a cylinder (arc)",
-      "tubeform", tools, 2, tools[choice], &choice, nullptr));
-    opt.slide_tool = tools[choice];
+    PetscCall(ChooseWord(PetscOptionsObject, "-slide_tool",
+                         "slide scene: a block on a flat floor, or a quarter ring turned inside a cylinder (arc)",
+                         tools, opt.slide_tool));
   }
   PetscCall(PetscOptionsReal("-slide_push", "slide scene: sideways displacement of the block's top (mm)", "tubeform",
                              opt.slide_push, &opt.slide_push, nullptr));
