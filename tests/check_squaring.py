@@ -6,7 +6,7 @@ case. Every check compares quantities computed independently of each other
     1/2 integral of load dU for the quarter, against internal work (stresses)
     + friction dissipation (contact slips) + inertia work (kinetic energy +
     the energy backward Euler damps, from the accelerations), within
-    0.5 % at every increment after the first 10 (measured 0.24 %: the
+    0.5 % at every increment (measured 0.23 %: the
     incremental method's first-order drift at 300 trial increments; friction
     alone is 4.9 % of the work, so a lost term would fail);
   - (b) internal work against plastic dissipation + stored elastic energy,
@@ -14,7 +14,8 @@ case. Every check compares quantities computed independently of each other
   - (c) the damped energy (inertia work - kinetic energy) below 1e-6 of the
     work in magnitude at the end (it is not sign-definite step by step), and
     the kinetic energy below 1e-6 of the work at every increment (measured
-    1e-8 and 1.3e-8): at a press speed the tube moves quasi-statically; a
+    1e-8; kinetic 3.6e-7 at the first increment, where the punch starts at
+    full speed, 1.3e-8 after the tenth): at a press speed the tube moves quasi-statically; a
     snap would show orders of magnitude more (copper 14.5/0.5 snapping in the
     paper's unloading: 4e-3);
   - no node penetrates a tool by more than 1e-6 mm; no contact node ends a
@@ -51,14 +52,13 @@ for n in (1, 2):
     with h5py.File(f, "r") as h:
         H[n] = {c: h["/history"][c][:] for c in h["/history"]}
 h = H[1]
-late = np.arange(len(h["stroke"])) > 10
 load_stage = h["stage"] == 0
 w = np.maximum(np.abs(h["w_ext"]), 1e-300)
-e = np.abs(h["energy_error"][late]).max()
+e = np.abs(h["energy_error"]).max()
 k.check(e < 5e-3, f"(a) press work from the reported load = internal + friction + inertia work within {e:.2e} (5e-3)")
-i = np.abs(h["internal_error"][late]).max()
+i = np.abs(h["internal_error"]).max()
 k.check(i < 3e-3, f"(b) internal work = plastic + elastic energy within {i:.2e} (3e-3)")
-damped, kinetic = abs(h["w_damped"][-1]) / w[-1], (h["w_kinetic"][late] / w[late]).max()
+damped, kinetic = abs(h["w_damped"][-1]) / w[-1], (h["w_kinetic"] / w).max()
 k.check(damped < 1e-6 and kinetic < 1e-6,
         f"(c) damped energy {damped:.1e} of the work, kinetic at most {kinetic:.1e} (1e-6)")
 k.check(h["penetration"].max() <= 1e-6, f"largest penetration {h['penetration'].max():.1e} mm")

@@ -34,10 +34,11 @@ namespace {
 struct NodalLoad {
   std::vector<std::pair<PetscInt, double>> nodes; // local node, weight (sum 1 over ranks)
   double fx = 0, fy = 0;
-  void Add(Model &m, double scale, Vec f, bool to_system) const
+  PetscErrorCode Add(Model &m, double scale, Vec f, bool to_system) const
   {
     PetscScalar *a = nullptr;
-    if (f) VecGetArray(f, &a);
+    PetscFunctionBeginUser;
+    if (f) PetscCall(VecGetArray(f, &a));
     for (const auto &nw : nodes) {
       if (!m.mesh.node_owned[nw.first]) continue; // each node's load once
       if (a) {
@@ -46,7 +47,8 @@ struct NodalLoad {
       }
       if (to_system) m.system.AddForce(nw.first, scale * nw.second * fx, scale * nw.second * fy);
     }
-    if (f) VecRestoreArray(f, &a);
+    if (f) PetscCall(VecRestoreArray(f, &a));
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
 };
 
@@ -76,16 +78,18 @@ public:
   }
   PetscErrorCode Load(Model &m, double, double dlambda) override
   {
-    Loads(m).Add(m, dlambda, nullptr, true);
+    PetscFunctionBeginUser;
+    PetscCall(Loads(m).Add(m, dlambda, nullptr, true));
     for (PetscInt n : m.mesh.node_sets["x0"]) m.system.Prescribe(n, 0, 0.0);
     for (PetscInt n : m.mesh.node_sets["y0"]) m.system.Prescribe(n, 1, 0.0);
-    return 0;
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) override
   {
-    VecZeroEntries(f);
-    Loads(m).Add(m, lambda, f, false);
-    return 0;
+    PetscFunctionBeginUser;
+    PetscCall(VecZeroEntries(f));
+    PetscCall(Loads(m).Add(m, lambda, f, false));
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscErrorCode Measure(Model &, double, Vec, HistoryRow &) override { return 0; }
   LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}}; }
@@ -125,15 +129,17 @@ public:
   }
   PetscErrorCode Load(Model &m, double, double dlambda) override
   {
-    Loads(m).Add(m, dlambda, nullptr, true);
+    PetscFunctionBeginUser;
+    PetscCall(Loads(m).Add(m, dlambda, nullptr, true));
     for (PetscInt k : m.mesh.node_sets["left"]) m.system.Prescribe(k, 0, 0.0), m.system.Prescribe(k, 1, 0.0);
-    return 0;
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) override
   {
-    VecZeroEntries(f);
-    Loads(m).Add(m, lambda, f, false);
-    return 0;
+    PetscFunctionBeginUser;
+    PetscCall(VecZeroEntries(f));
+    PetscCall(Loads(m).Add(m, lambda, f, false));
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscErrorCode Measure(Model &, double, Vec, HistoryRow &) override { return 0; }
   LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}}; }

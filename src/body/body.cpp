@@ -121,8 +121,8 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
 {
   const PetscScalar *du;
   fe::QuadGeometry geo;
-  double xe[2 * fe::kNodes], local[3] = {0, 0, 0}, global[3];
-  PetscInt nplastic = 0;
+  // Sums (internal work, plastic work, plastic points: exact in a double) and a maximum (drift).
+  double xe[2 * fe::kNodes], sums[3] = {0, 0, 0}, global_sums[3], drift = 0;
   const bool midpoint = prm_.kinematics == ObjectiveScheme::Midpoint;
 
   PetscFunctionBeginUser;
@@ -155,10 +155,10 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
       const bool reached = yield_factor_[fe::kGauss * e + g] <= r * (1 + prm_.group_tol);
       const bool on_surface = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
       if (!ps.plastic && material_->plastic_law() && (reached || on_surface)) ps.plastic = true;
-      nplastic += ps.plastic;
-      for (int c = 0; c < kNumStress; ++c) local[0] += geo.wdet[g] * 0.5 * (old[c] + ps.sigma[c]) * deps[c];
-      local[1] += geo.wdet[g] * u.dwp;
-      local[2] = std::max(local[2], std::abs(u.drift));
+      sums[2] += ps.plastic;
+      for (int c = 0; c < kNumStress; ++c) sums[0] += geo.wdet[g] * 0.5 * (old[c] + ps.sigma[c]) * deps[c];
+      sums[1] += geo.wdet[g] * u.dwp;
+      drift = std::max(drift, std::abs(u.drift));
     }
   }
   for (PetscInt n = 0; n < mesh_->num_nodes; ++n)
@@ -168,12 +168,11 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
       u_[2 * n + k] += d;
     }
   PetscCall(VecRestoreArrayRead(du_local, &du));
-  PetscCall(MPIU_Allreduce(local, global, 2, MPIU_REAL, MPIU_SUM, comm()));
-  PetscCall(MPIU_Allreduce(&local[2], &global[2], 1, MPIU_REAL, MPIU_MAX, comm()));
-  PetscCall(MPIU_Allreduce(&nplastic, &info.n_plastic, 1, MPIU_INT, MPI_SUM, comm()));
-  info.dw_int = global[0];
-  info.dw_plastic = global[1];
-  info.drift = global[2];
+  PetscCall(MPIU_Allreduce(sums, global_sums, 3, MPIU_REAL, MPIU_SUM, comm()));
+  PetscCall(MPIU_Allreduce(&drift, &info.drift, 1, MPIU_REAL, MPIU_MAX, comm()));
+  info.dw_int = global_sums[0];
+  info.dw_plastic = global_sums[1];
+  info.n_plastic = (PetscInt)global_sums[2];
   PetscCall(PetscLogEventEnd(Log::commit, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -7,6 +7,13 @@
 
 namespace tf {
 
+Vec2 ContactSet::NodeForce(PetscInt node, bool with_normal) const
+{
+  const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
+  const double fn = with_normal ? fn_[node] : 0.0;
+  return {fn * n_[node][0] + fl * l_[node][0], fn * n_[node][1] + fl * l_[node][1]};
+}
+
 PetscErrorCode ContactSet::AddFrictionForces(Vec f) const
 {
   PetscScalar *a;
@@ -15,9 +22,8 @@ PetscErrorCode ContactSet::AddFrictionForces(Vec f) const
   PetscCall(VecGetArray(f, &a));
   for (PetscInt node : candidates_) {
     if (!SlipFree(node) || !mesh_->node_owned[node]) continue;
-    const double fl = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
-    a[mesh_->node_dof[node]] += fl * l_[node][0];
-    a[mesh_->node_dof[node] + 1] += fl * l_[node][1];
+    const Vec2 fc = NodeForce(node, false);
+    for (int k = 0; k < 2; ++k) a[mesh_->node_dof[node] + k] += fc[k];
   }
   PetscCall(VecRestoreArray(f, &a));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -30,9 +36,8 @@ PetscErrorCode ContactSet::AddContactForces(Vec f) const
   PetscCall(VecGetArray(f, &a));
   for (PetscInt node : candidates_) {
     if (!contact_[node] || !mesh_->node_owned[node]) continue;
-    const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
-    a[mesh_->node_dof[node]] += fn_[node] * n_[node][0] + fl * l_[node][0];
-    a[mesh_->node_dof[node] + 1] += fn_[node] * n_[node][1] + fl * l_[node][1];
+    const Vec2 fc = NodeForce(node, true);
+    for (int k = 0; k < 2; ++k) a[mesh_->node_dof[node] + k] += fc[k];
   }
   PetscCall(VecRestoreArray(f, &a));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -44,8 +49,8 @@ PetscErrorCode ContactSet::TotalForce(double force[2]) const
   PetscFunctionBeginUser;
   for (PetscInt node : candidates_) {
     if (!contact_[node] || !mesh_->node_owned[node]) continue;
-    const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
-    for (int k = 0; k < 2; ++k) local[k] += fn_[node] * n_[node][k] + fl * l_[node][k];
+    const Vec2 fc = NodeForce(node, true);
+    for (int k = 0; k < 2; ++k) local[k] += fc[k];
   }
   PetscCallMPI(MPI_Allreduce(local, force, 2, MPI_DOUBLE, MPI_SUM, comm()));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -118,8 +118,7 @@ PetscErrorCode Problem::Run()
   if (!opt_.history_csv.empty()) PetscCall(CheckWritable(comm_, opt_.history_csv, "-history_csv"));
   PetscCall(writer.Open(mesh_, opt_.output));
   {
-    const std::string err = history_.OpenCsv(opt_.history_csv, rank_);
-    int ok = err.empty();
+    int ok = history_.OpenCsv(opt_.history_csv, rank_);
     PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
     PetscCheck(ok, comm_, PETSC_ERR_USER_INPUT,
                "-history_csv %s: cannot create the file (does the directory exist and is it writable?)",
@@ -224,8 +223,12 @@ PetscErrorCode Problem::Run()
                                                          {"stalled", stalled ? 1.0 : 0.0}};
   for (const auto &m : scene_->FinalMetrics(history_)) metrics.push_back(m);
   PetscCall(writer.Close(history_, metrics));
-  PetscCheck(history_.FinishCsv(), comm_, PETSC_ERR_FILE_WRITE,
-             "-history_csv %s: cannot rename the finished file into place", opt_.history_csv.c_str());
+  {
+    int ok = history_.FinishCsv(); // rank 0 holds the file; every rank learns the outcome
+    PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
+    PetscCheck(ok, comm_, PETSC_ERR_FILE_WRITE, "-history_csv %s: cannot rename the finished file into place",
+               opt_.history_csv.c_str());
+  }
   PetscCall(PetscLogStagePop());
   if (!stalled) {
     PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n",

@@ -71,16 +71,16 @@ History::~History()
   if (csv_) std::fclose(csv_);
 }
 
-std::string History::OpenCsv(const std::string &path, int rank)
+bool History::OpenCsv(const std::string &path, int rank)
 {
   csv_path_ = path;
-  if (rank != 0 || path.empty()) return "";
+  if (rank != 0 || path.empty()) return true;
   csv_ = std::fopen((path + ".partial").c_str(), "w");
-  if (!csv_) return "-history_csv " + path + ": cannot create the file (does the directory exist and is it writable?)";
+  if (!csv_) return false;
   const auto &cols = HistoryColumns();
   for (size_t c = 0; c < cols.size(); ++c) std::fprintf(csv_, "%s%s", c ? "," : "", cols[c].name);
   std::fprintf(csv_, "\n");
-  return "";
+  return true;
 }
 
 void History::Append(const HistoryRow &row)

@@ -163,6 +163,8 @@ private:
     return contact_[node] && !global_frame_[node] && sym_dir_[node][0] == 0 && sym_dir_[node][1] == 0;
   }
   Vec2 Position(PetscInt node) const { return {(*x_body_)[2 * node], (*x_body_)[2 * node + 1]}; }
+  // The force the tool puts on a contact node: friction only, or normal plus friction.
+  Vec2 NodeForce(PetscInt node, bool with_normal) const;
   // A symmetry plane's held direction is a global axis: the index of that axis.
   static int HeldComponent(const Vec2 &s) { return std::abs(s[0]) > std::abs(s[1]) ? 0 : 1; }
   // Frame, gap and curvature of a contact node from its projection on the tool.

@@ -31,9 +31,9 @@ const std::vector<HistoryColumn> &HistoryColumns();
 class History {
 public:
   ~History();
-  // Opens `<path>.partial` on rank 0 (renamed to `path` by Finish). Returns
-  // an empty string or the reason the file cannot be written.
-  std::string OpenCsv(const std::string &path, int rank);
+  // Opens `<path>.partial` on rank 0 (renamed to `path` by FinishCsv); false
+  // when rank 0 cannot create it. The caller broadcasts the outcome.
+  bool OpenCsv(const std::string &path, int rank);
   void Append(const HistoryRow &row);
   bool FinishCsv(); // rename on success
   const std::vector<HistoryRow> &rows() const { return rows_; }
