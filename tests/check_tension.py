@@ -16,7 +16,9 @@ Swift, a table, perfect plasticity, and compression.
    with the initial hardening slope (errors at 100 and 200 increments,
    measured when this test was written: aluminum 1.7e-3, 7.2e-4; Ludwik
    n = 0.1 2.9e-2, 1.45e-2; Swift 7.3e-3, 4.1e-3; compression 2.0e-3,
-   1.0e-3). So the test is convergence: for every law the error falls by at
+   1.0e-3). The same holds with -rmin_yield inside, where the step that
+   crosses the yield surface is not cut but split at the onset. So the test
+   is convergence: for every law the error falls by at
    least 1.6 from 100 to 200 increments (first order: 2; a wrong limit would
    give ~1; measured 1.81-2.39), and stays below 2e-2 at 200 (first-order
    constant N x error below 4; n = 0.1, the steepest law, has 2.9). Past a
@@ -118,6 +120,10 @@ cases = [
     ("table", ["-material_law", "table", "-material_table", ",".join(f"{e},{s}" for e, s in table)],
      (table_sy, table_h)),
     ("compression", ["-tension_strain", -0.1], ludwik(165.3, 673.5, 0.927)),
+    # Points yield inside a step (the increment is not cut at the onset): the
+    # same reference and the same convergence.
+    ("yield inside, aluminum", ["-rmin_yield", "inside"], ludwik(165.3, 673.5, 0.927)),
+    ("yield inside, n=0.1", ["-rmin_yield", "inside", "-material_n", 0.1], ludwik(165.3, 673.5, 0.1)),
 ]
 for name, extra, (sy, hp) in cases:
     # 1. Drift-corrected stress path against the rate problem, at 100 and 200 increments.

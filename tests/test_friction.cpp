@@ -80,6 +80,18 @@ int main()
   CHECK(friction::StickFactor(0.0, 4 * vcri, vcri, 0.5) > 1e299);      // stick to slide: no limit
   CHECK(friction::StickFactor(2 * vcri, 5 * vcri, vcri, 0.5) > 1e299); // sliding on: no limit
   CHECK(friction::StickFactor(2 * vcri, -0.1 * vcri, vcri, 0.5) > 1);  // a fall below dphi_max: no limit
+  // Stick to slide (-rmin_dphi_rise): r lands where |phi| has risen by exactly dphi, either direction;
+  // no limit for a smaller rise, a fall, a reversal (StickFactor's), or dphi >= 1.
+  for (double dphi : {0.1, 0.25, 0.5}) {
+    const double x0 = 0.1 * vcri, dx = 3 * vcri, r = friction::SlideFactor(x0, dx, vcri, dphi);
+    CHECK(r > 0 && r < 1);
+    CHECK_NEAR(friction::Phi(x0 + r * dx, vcri) - friction::Phi(x0, vcri), dphi, 1e-12);
+    CHECK_NEAR(friction::SlideFactor(-x0, -dx, vcri, dphi), r, 1e-15); // the mirror image
+  }
+  CHECK(friction::SlideFactor(0.0, 4 * vcri, vcri, 1.0) > 1e299);         // dphi 1: no bound
+  CHECK(friction::SlideFactor(0.0, 0.01 * vcri, vcri, 0.25) > 1e299);     // a small rise
+  CHECK(friction::SlideFactor(2 * vcri, -0.5 * vcri, vcri, 0.1) > 1e299); // a fall
+  CHECK(friction::SlideFactor(0.5 * vcri, -3 * vcri, vcri, 0.1) > 1e299); // a reversal
   // Limits of the law: sliding far (x >> VCRI) carries mu f_n; tiny slip is a spring of stiffness 3 mu f_n / VCRI.
   CHECK_NEAR(friction::Phi(1.0, vcri), 1.0, 2e-5); // capped at 2 VCRI: tanh(6)
   CHECK(friction::DPhi(1.0, vcri) == 0);           // no change past the cap

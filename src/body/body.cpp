@@ -28,6 +28,8 @@ PetscErrorCode Body::Setup(const Mesh &mesh, const BodyParams &prm)
   cells_ = fe::CellFormulation(prm.element, (int)mesh.num_cells);
   state_.assign(fe::kGauss * mesh.num_cells, PointState{});
   yield_factor_.assign(state_.size(), kNever);
+  fraction_.assign(state_.size(), 1.0);
+  onset_.assign(state_.size(), PointState{});
   x_ = mesh.x0;
   u_.assign(2 * mesh.num_nodes, 0.0);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -55,8 +57,9 @@ PetscErrorCode Body::AssembleTangent(System &system, const CellTerm &cell_term)
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
     CellCoordinates(e, xe);
     for (int g = 0; g < fe::kGauss; ++g) {
-      c[g] = material_->Tangent(state_[fe::kGauss * e + g]);
-      s[g] = state_[fe::kGauss * e + g].sigma;
+      const size_t i = fe::kGauss * e + g;
+      c[g] = fraction_[i] < 1 ? TransitionTangent(i) : material_->Tangent(state_[i]);
+      s[g] = state_[i].sigma;
     }
     if (!cells_.Stiffness((int)e, xe, c, s, ke)) {
       bad = mesh_->cell_orig[e];
@@ -74,12 +77,31 @@ PetscErrorCode Body::AssembleTangent(System &system, const CellTerm &cell_term)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, PetscInt &switches)
+Mat4 Body::TransitionTangent(size_t i) const
+{
+  // m D_e + (1 - m) D_ep, D_ep at the onset state (its H' the secant over the step's plastic part).
+  const Mat4 de = material_->Tangent(state_[i]), dep = material_->Tangent(onset_[i]);
+  const double m = fraction_[i];
+  Mat4 c;
+  for (int r = 0; r < 4; ++r)
+    for (int k = 0; k < 4; ++k) c[r][k] = m * de[r][k] + (1 - m) * dep[r][k];
+  return c;
+}
+
+void Body::ResetTransitions() { std::fill(fraction_.begin(), fraction_.end(), 1.0); }
+
+void Body::ScaleTransitions(double factor)
+{
+  for (double &m : fraction_)
+    if (m < 1) m = std::min(1.0, m / factor);
+}
+
+PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, PetscInt &switches, PetscInt &transitions)
 {
   const PetscScalar *du;
   fe::QuadGeometry geo;
   double xe[2 * fe::kNodes];
-  PetscInt local_switches = 0;
+  PetscInt local_switches = 0, local_transitions = 0;
   StepLimit yield, strain, rotation;
 
   PetscFunctionBeginUser;
@@ -100,15 +122,45 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
         ++local_switches;
         if (apply) ps.plastic = !ps.plastic;
       }
-      double &r1 = yield_factor_[fe::kGauss * e + g];
+      const size_t i = fe::kGauss * e + g;
+      double &r1 = yield_factor_[i];
       r1 = material_->YieldOnset(ps, deps, omega);
-      yield.Offer(r1, Limiter::Yield, mesh_->cell_orig[e]);
+      if (!prm_.yield_inside) {
+        yield.Offer(r1, Limiter::Yield, mesh_->cell_orig[e]);
+      } else if (material_->plastic_law() && !ps.plastic) {
+        const double m = std::min(1.0, r1);
+        local_transitions += m < 1;
+        if (std::abs(m - fraction_[i]) > prm_.yield_tol) {
+          ++local_switches;
+          if (apply) fraction_[i] = m;
+          if (apply && m < 1) {
+            // The state at the onset on the linear elastic path (Update of an
+            // elastic point), and H' as the secant over the plastic part of
+            // the step (the rate form's own update of it, then discarded).
+            PointState on = ps, rest;
+            RotateStress(ObjectiveScheme::Forward, m * omega, on.sigma);
+            Voigt d1, d2;
+            for (int c = 0; c < kNumStress; ++c) d1[c] = m * deps[c], d2[c] = (1 - m) * deps[c];
+            material_->Update(on, d1);
+            on.plastic = true;
+            rest = on;
+            material_->Update(rest, d2);
+            on.hslope = rest.hslope;
+            onset_[i] = on;
+          }
+        }
+      }
       strain.Offer(StrainFactor(deps, prm_.rmin_deps), Limiter::Strain, mesh_->cell_orig[e]);
       rotation.Offer(RotationFactor(omega, prm_.rmin_domega), Limiter::Rotation, mesh_->cell_orig[e]);
     }
   }
   PetscCall(VecRestoreArrayRead(du_local, &du));
-  PetscCall(MPIU_Allreduce(&local_switches, &switches, 1, MPIU_INT, MPI_SUM, comm()));
+  {
+    PetscInt local[2] = {local_switches, local_transitions}, global[2];
+    PetscCall(MPIU_Allreduce(local, global, 2, MPIU_INT, MPI_SUM, comm()));
+    switches = global[0];
+    transitions = global[1];
+  }
   for (StepLimit *l : {&yield, &strain, &rotation}) {
     PetscCall(ReduceStepLimit(comm(), *l));
     limit.Offer(l->r, l->who, l->where);
@@ -148,11 +200,24 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
       // mid-rotated frame, the other half (forward scheme: all at once, first order).
       const double first = midpoint ? 0.5 : 1.0;
       RotateStress(prm_.kinematics, omega, ps.sigma, first);
-      const UpdateInfo u = material_->Update(ps, deps);
+      // yield_inside: a point that meets the surface inside the step takes the
+      // part up to it elastically and the rest with the plastic law.
+      const double yf = yield_factor_[fe::kGauss * e + g];
+      UpdateInfo u;
+      if (prm_.yield_inside && material_->plastic_law() && !ps.plastic && yf < r) {
+        const double m = yf / r;
+        Voigt d1, d2;
+        for (int c = 0; c < kNumStress; ++c) d1[c] = m * deps[c], d2[c] = (1 - m) * deps[c];
+        material_->Update(ps, d1);
+        ps.plastic = true;
+        u = material_->Update(ps, d2);
+      } else {
+        u = material_->Update(ps, deps);
+      }
       if (midpoint) RotateStress(prm_.kinematics, omega, ps.sigma, 0.5);
       // Points that reach the yield surface in this increment (the limiter and
       // those grouped with it), or pass it, are plastic from now on.
-      const bool reached = yield_factor_[fe::kGauss * e + g] <= r * (1 + prm_.group_tol);
+      const bool reached = !prm_.yield_inside && yf <= r * (1 + prm_.group_tol);
       const bool on_surface = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
       if (!ps.plastic && material_->plastic_law() && (reached || on_surface)) ps.plastic = true;
       sums[2] += ps.plastic;

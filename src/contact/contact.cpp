@@ -248,7 +248,7 @@ PetscErrorCode ContactSet::ReleasePulled(Vec du, double dU, double release_fract
 PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
 {
   const PetscScalar *d, *react;
-  StepLimit touch, leave, stick;
+  StepLimit touch, leave, stick, slide;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::contact, 0, 0, 0, 0));
@@ -271,13 +271,17 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
     if (dfn < -f_small_ && !frozen_[node])
       r5_[node] = std::max(fn_[node], 0.0) / -dfn; // a grazing node held for this step does not limit
     leave.Offer(r5_[node], Limiter::Separation, id);
-    // r6: slide to stick; the friction mobilization f_l / (mu f_n) falls by at most dphi_max.
-    if (friction() && SlipFree(node))
-      stick.Offer(friction::StickFactor(x_[node], Slip(node, u, dU), prm_.vcri, prm_.dphi_max), Limiter::Stick, id);
+    // r6: slide to stick, the friction mobilization f_l / (mu f_n) falls by at most
+    // dphi_max; stick to slide, its magnitude rises by at most dphi_rise.
+    if (friction() && SlipFree(node)) {
+      const double s = Slip(node, u, dU);
+      stick.Offer(friction::StickFactor(x_[node], s, prm_.vcri, prm_.dphi_max), Limiter::Stick, id);
+      slide.Offer(friction::SlideFactor(x_[node], s, prm_.vcri, prm_.dphi_rise), Limiter::Slide, id);
+    }
   }
   PetscCall(VecRestoreArrayRead(system_->reactions_local(), &react));
   PetscCall(VecRestoreArrayRead(du, &d));
-  for (StepLimit *l : {&touch, &leave, &stick}) {
+  for (StepLimit *l : {&touch, &leave, &stick, &slide}) {
     PetscCall(ReduceStepLimit(comm(), *l));
     limit.Offer(l->r, l->who, l->where);
   }

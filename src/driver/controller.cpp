@@ -53,7 +53,7 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
     if (Iterative()) PetscCall(m_.contact->UpdateIterates(du, t.dU, converged));
     t.limit = StepLimit{};
     const bool may_switch = t.redo < opt_.rmin_max_redo;
-    PetscCall(m_.body.ScanTrial(du, may_switch, t.limit, switches));
+    PetscCall(m_.body.ScanTrial(du, may_switch, t.limit, switches, t.transitions));
     // Contact releases always apply: they are finite by construction (a node
     // is released at most once per trial and a grazing one then stays), and a
     // node left in contact in tension would carry a wrong force.
@@ -78,7 +78,7 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
     if (ContactActive()) m_.contact->LinearizeAtStart();
     PetscCall(Solve(lambda, dl, du, t.dU, inc));
     t.limit = StepLimit{};
-    PetscCall(m_.body.ScanTrial(du, false, t.limit, switches));
+    PetscCall(m_.body.ScanTrial(du, false, t.limit, switches, t.transitions));
     t.left = switches;
     break;
   }
@@ -104,6 +104,7 @@ PetscErrorCode Controller::SettledTrial(double lambda, double &dl, Vec du, Trial
       continue;
     }
     dl *= 0.5;
+    m_.body.ScaleTransitions(0.5);
     ++cut;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -116,6 +117,7 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   PetscFunctionBeginUser;
   inc = Increment{};
   const double dl_trial = dl;
+  m_.body.ResetTransitions();
   // 1. The trial step and its r_min = min(1, r1..r6).
   PetscCall(SettledTrial(lambda, dl, du, t, inc));
   inc.who = lambda + dl >= end - kLambdaTol ? Limiter::Final : Limiter::Trial;
@@ -125,7 +127,8 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   PetscCheck(r > kMinRmin, m_.comm, PETSC_ERR_NOT_CONVERGED,
              "r_min = %g (%s at %d) at lambda = %g: the increment cannot advance", r, LimiterName((int)t.limit.who),
              (int)t.limit.where, lambda);
-  const bool resolve = r < 1.0 && (Iterative() || InertiaActive());
+  // Points yielding inside the step (-rmin_yield inside) make it non-linear in r too.
+  const bool resolve = r < 1.0 && (Iterative() || InertiaActive() || t.transitions > 0);
   if (resolve) {
     // 2a. Friction is not linear in r, nor is inertia (M / dt^2): the
     // shortened step is solved again, and again while the re-solve finds its
@@ -136,6 +139,7 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
     double taken = r;
     for (int attempt = 0;; ++attempt) {
       dl *= taken;
+      m_.body.ScaleTransitions(taken);
       PetscCall(SettledTrial(lambda, dl, du, t, inc));
       if (t.limit.r >= 1.0 - opt_.rmin_event_tol || attempt == kMaxResolves - 1) break;
       taken = t.limit.r;

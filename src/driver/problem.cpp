@@ -20,6 +20,8 @@ BodyParams MakeBodyParams(const Options &opt)
   b.rmin_deps = opt.rmin_deps;
   b.rmin_domega = opt.rmin_domega;
   b.group_tol = opt.rmin_group_tol;
+  b.yield_inside = opt.rmin_yield == "inside";
+  b.yield_tol = opt.rmin_yield_tol;
   b.drift_correction = opt.drift_correction;
   b.kinematics = opt.kinematics;
   return b;

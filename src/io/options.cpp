@@ -115,6 +115,16 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                              &opt.rmin_domega, nullptr));
   PetscCall(PetscOptionsReal("-rmin_group_tol", "Events within (1 + tol) r_min are taken in the same increment",
                              "tubeform", opt.rmin_group_tol, &opt.rmin_group_tol, nullptr));
+  {
+    const char *const yields[] = {"onset", "inside"};
+    PetscCall(ChooseWord(PetscOptionsObject, "-rmin_yield",
+                         "onset (paper: r1 ends the step where a point meets the yield surface), inside (points "
+                         "yield inside a step: tangent weighted by the elastic fraction, update split at the onset)",
+                         yields, opt.rmin_yield));
+  }
+  PetscCall(PetscOptionsReal("-rmin_yield_tol",
+                             "-rmin_yield inside: re-solve the step while a point's elastic fraction moves by more",
+                             "tubeform", opt.rmin_yield_tol, &opt.rmin_yield_tol, nullptr));
   PetscCall(PetscOptionsReal("-rmin_event_tol",
                              "Steps that are not linear in r (friction, inertia) are solved again until their first "
                              "event lies within this fraction of the step's end",
@@ -200,6 +210,9 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                              "r6, slide to stick: largest fall of the friction mobilization f_l / (mu f_n), towards "
                              "stick or through it into a reversal, in an increment",
                              "tubeform", opt.rmin_dphi, &opt.rmin_dphi, nullptr));
+  PetscCall(PetscOptionsReal("-rmin_dphi_rise",
+                             "r6, stick to slide: largest rise of |f_l / (mu f_n)| in an increment (1: no bound)",
+                             "tubeform", opt.rmin_dphi_rise, &opt.rmin_dphi_rise, nullptr));
   {
     const char *const unloads[] = {"reverse", "withdraw", "none"};
     PetscCall(ChooseWord(
@@ -281,6 +294,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-rmin_deps %g: the strain increment limit must lie in (0, 0.5]", opt.rmin_deps);
   PetscCheck(opt.rmin_domega > 0 && opt.rmin_domega <= 0.5, comm, PETSC_ERR_USER_INPUT,
              "-rmin_domega %g: the rotation increment limit must lie in (0, 0.5] rad", opt.rmin_domega);
+  PetscCheck(opt.rmin_yield_tol > 0 && opt.rmin_yield_tol <= 1, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_yield_tol %g: must lie in (0, 1]", opt.rmin_yield_tol);
   PetscCheck(opt.rmin_group_tol >= 0 && opt.rmin_group_tol <= 1, comm, PETSC_ERR_USER_INPUT,
              "-rmin_group_tol %g: must lie in [0, 1]", opt.rmin_group_tol);
   PetscCheck(opt.rmin_event_tol > 0 && opt.rmin_event_tol <= 0.5, comm, PETSC_ERR_USER_INPUT,
@@ -321,6 +336,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              (int)opt.friction_max_iters);
   PetscCheck(opt.rmin_dphi > 0 && opt.rmin_dphi <= 2, comm, PETSC_ERR_USER_INPUT, "-rmin_dphi %g: must lie in (0, 2]",
              opt.rmin_dphi);
+  PetscCheck(opt.rmin_dphi_rise > 0 && opt.rmin_dphi_rise <= 1, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_dphi_rise %g: must lie in (0, 1]", opt.rmin_dphi_rise);
   PetscCheck(opt.stroke_corner_radius >= 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_corner_radius %g: must be non-negative", opt.stroke_corner_radius);
   PetscCheck(opt.slide_n > 0 && opt.slide_push > 0, comm, PETSC_ERR_USER_INPUT,

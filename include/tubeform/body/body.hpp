@@ -26,6 +26,11 @@ struct BodyParams {
   double rmin_deps = 2e-3;   // r2: largest principal strain increment
   double rmin_domega = 1e-2; // r3: largest rotation increment (rad)
   double group_tol = 1e-6;   // points reaching yield within (1 + tol) r_min turn plastic together
+  // r1 off: points yield inside a step, with the tangent weighted by the step's
+  // elastic fraction m, m D_e + (1 - m) D_ep(onset stress), and the update split
+  // at the onset; the step is re-solved while any m moves by more than yield_tol.
+  bool yield_inside = false;
+  double yield_tol = 0.05;
   bool drift_correction = false;
   ObjectiveScheme kinematics = ObjectiveScheme::Forward;
 };
@@ -43,14 +48,25 @@ public:
   // onset), r2 (strain), r3 (rotation) into `limit`; `switches` counts the
   // points whose loading state (alpha) disagrees with du, and with `apply`
   // those points are switched.
-  PetscErrorCode ScanTrial(Vec du, bool apply, StepLimit &limit, PetscInt &switches);
+  // With yield_inside, r1 does not limit; points that reach the surface inside
+  // the step (elastic fraction m < 1) are counted in `transitions`, and a
+  // change of their m by more than yield_tol since the tangent was assembled
+  // counts as a switch (applied with `apply`: the next tangent uses the new m).
+  PetscErrorCode ScanTrial(Vec du, bool apply, StepLimit &limit, PetscInt &switches, PetscInt &transitions);
+  // yield_inside: a new step starts elastic everywhere; a step shortened by
+  // `factor` keeps its transitions (m / factor).
+  void ResetTransitions();
+  void ScaleTransitions(double factor);
+  bool yield_inside() const { return prm_.yield_inside; }
   struct CommitInfo {
     double dw_int = 0, dw_plastic = 0, drift = 0;
     PetscInt n_plastic = 0;
   };
   // Advances stress, coordinates and displacement by du (local vector).
   // Elastic points whose yield factor (from the last ScanTrial) is within
-  // (1 + group_tol) of `r` turn plastic.
+  // (1 + group_tol) of `r` turn plastic; with yield_inside, those whose yield
+  // factor lies inside the step take the part up to it elastically and the
+  // rest plastically.
   PetscErrorCode Commit(Vec du, double r, CommitInfo &info);
   // Collective-free: the nodal forces of the stresses (local contribution vector).
   PetscErrorCode InternalForce(Vec f_local) const;
@@ -74,7 +90,11 @@ private:
   fe::CellFormulation cells_;
   std::vector<PointState> state_;
   std::vector<double> yield_factor_; // r1 of each Gauss point from the last ScanTrial
+  std::vector<double> fraction_;     // yield_inside: elastic fraction m in the assembled tangent (1: elastic)
+  std::vector<PointState> onset_;    // yield_inside: state where the point meets the surface (plastic)
   std::vector<double> x_, u_;
+
+  Mat4 TransitionTangent(size_t i) const;
 };
 
 // Element dofs of cell e from a local vector.

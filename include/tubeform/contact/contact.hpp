@@ -43,6 +43,7 @@ struct ContactParams {
   double mu = 0;           // Coulomb coefficient
   double vcri = 0.01;      // quasi-stick slip (mm)
   double dphi_max = 0.5;   // r6: largest fall of f_l / (mu f_n) towards stick or reversal in an increment
+  double dphi_rise = 1.0;  // r6, stick to slide: largest rise of |f_l / (mu f_n)| in an increment (1: none)
   double tol = 1e-4;       // friction iterations: change of f_l / (mu f_n) between iterates
   double group_tol = 1e-6; // contact/separation events within (1 + tol) r_min go together
   double gap_tol = 1e-7;   // a free node this close to the surface (mm) is in contact

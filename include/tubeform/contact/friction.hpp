@@ -68,6 +68,18 @@ inline double StickFactor(double x0, double dx, double vcri, double dphi_max)
   return (vcri / 3.0 * std::atanh(target) - Cap(x0, vcri)) / dx;
 }
 
+// The same event the other way, stick to slide: the fraction r of dx at which
+// the mobilization has risen by dphi_max in magnitude (in the direction it
+// moves; a reversal through zero is StickFactor's). Infinite while it rises
+// by less, or with dphi_max >= 1 (a rise never exceeds 1: no bound).
+inline double SlideFactor(double x0, double dx, double vcri, double dphi_max)
+{
+  const double phi0 = Phi(x0, vcri), phi1 = Phi(x0 + dx, vcri);
+  if (phi0 * phi1 < 0 || !(std::abs(phi1) - std::abs(phi0) > dphi_max)) return kNever;
+  const double target = phi1 > 0 ? std::abs(phi0) + dphi_max : -(std::abs(phi0) + dphi_max);
+  return (vcri / 3.0 * std::atanh(target) - Cap(x0, vcri)) / dx;
+}
+
 // The friction force on the body along l for normal force fn and slip state x.
 inline double Force(double mu, double vcri, double fn, double x) { return -mu * fn * Phi(x, vcri); }
 

@@ -54,11 +54,12 @@ public:
 
 private:
   struct Trial {
-    StepLimit limit;     // r1..r6 of the solution
-    bool settled = true; // its iterations settled (or it was taken unsettled)
-    double dU = 0;       // tool step
-    PetscInt redo = 0;   // loading switches applied
-    PetscInt left = 0;   // loading switches called for but not applied (the -rmin_max_redo budget ran out)
+    StepLimit limit;          // r1..r6 of the solution
+    bool settled = true;      // its iterations settled (or it was taken unsettled)
+    double dU = 0;            // tool step
+    PetscInt redo = 0;        // loading switches applied
+    PetscInt left = 0;        // loading switches called for but not applied (the -rmin_max_redo budget ran out)
+    PetscInt transitions = 0; // -rmin_yield inside: points meeting the yield surface inside the step
   };
   Model &m_;
   Scene &scene_;

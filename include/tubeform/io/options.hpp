@@ -33,6 +33,8 @@ struct Options {
   double rmin_deps = BodyParams{}.rmin_deps;      // r2: largest principal strain increment
   double rmin_domega = BodyParams{}.rmin_domega;  // r3: largest rotation increment (rad)
   double rmin_group_tol = BodyParams{}.group_tol; // events within (1 + tol) r_min are taken together
+  std::string rmin_yield = "onset"; // onset: r1 ends a step at each yield onset; inside: points yield inside steps
+  double rmin_yield_tol = BodyParams{}.yield_tol; // inside: re-solve while an elastic fraction moves by more
   double rmin_event_tol = 1e-2;                   // re-solved steps locate their events to this fraction of the step
   PetscInt rmin_max_increments = 100000;
   PetscInt rmin_stall_increments = 1000; // stop when this many increments advance lambda by < kStallAdvance
@@ -54,7 +56,8 @@ struct Options {
   double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
   double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
   double friction_tol = ContactParams{}.tol;
-  double rmin_dphi = ContactParams{}.dphi_max; // r6: largest fall of f_l / (mu f_n) towards stick in an increment
+  double rmin_dphi = ContactParams{}.dphi_max;       // r6: largest fall of f_l / (mu f_n) towards stick in an increment
+  double rmin_dphi_rise = ContactParams{}.dphi_rise; // r6: largest rise of |f_l / (mu f_n)| (stick to slide)
   std::string unload = "reverse";
   double shear_gamma = 1.0;
   double slide_n = 100.0, slide_push = 0.2; // slide scene: normal force (N/mm, arc: pressure MPa), push (mm)

@@ -13,6 +13,7 @@ inline ContactParams MakeContactParams(const Options &opt, double default_vcri)
   prm.mu = opt.friction_mu;
   prm.vcri = opt.friction_vcri > 0 ? opt.friction_vcri : default_vcri;
   prm.dphi_max = opt.rmin_dphi;
+  prm.dphi_rise = opt.rmin_dphi_rise;
   prm.tol = opt.friction_tol;
   prm.group_tol = opt.rmin_group_tol;
   return prm;

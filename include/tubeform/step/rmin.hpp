@@ -23,9 +23,10 @@ enum class Limiter : int {
   Rotation = 4,
   Contact = 5,
   Separation = 6,
-  Stick = 7
+  Stick = 7,
+  Slide = 8
 };
-constexpr int kNumLimiters = 8;
+constexpr int kNumLimiters = 9;
 const char *LimiterName(int code);
 
 // The stall watch (-rmin_stall_increments): a window of increments that
