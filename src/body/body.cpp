@@ -79,7 +79,7 @@ PetscErrorCode Body::AssembleTangent(System &system, const CellTerm &cell_term)
 
 Mat4 Body::TransitionTangent(size_t i) const
 {
-  // m D_e + (1 - m) D_ep, D_ep at the onset state (its H' the secant over the step's plastic part).
+  // m D_e + (1 - m) D_ep, D_ep at the onset state.
   const Mat4 de = material_->Tangent(state_[i]), dep = material_->Tangent(onset_[i]);
   const double m = fraction_[i];
   Mat4 c;
@@ -135,17 +135,13 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
           if (apply) fraction_[i] = m;
           if (apply && m < 1) {
             // The state at the onset on the linear elastic path (Update of an
-            // elastic point), and H' as the secant over the plastic part of
-            // the step (the rate form's own update of it, then discarded).
-            PointState on = ps, rest;
+            // elastic point); its C_ep takes H' as a plastic point would next.
+            PointState on = ps;
             RotateStress(ObjectiveScheme::Forward, m * omega, on.sigma);
-            Voigt d1, d2;
-            for (int c = 0; c < kNumStress; ++c) d1[c] = m * deps[c], d2[c] = (1 - m) * deps[c];
-            material_->Update(on, d1);
+            Voigt dm;
+            for (int c = 0; c < kNumStress; ++c) dm[c] = m * deps[c];
+            material_->Update(on, dm);
             on.plastic = true;
-            rest = on;
-            material_->Update(rest, d2);
-            on.hslope = rest.hslope;
             onset_[i] = on;
           }
         }
