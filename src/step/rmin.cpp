@@ -7,8 +7,8 @@ namespace tf {
 
 const char *LimiterName(int code)
 {
-  static const char *names[kNumLimiters] = {"trial",    "final",   "yield",      "strain",
-                                            "rotation", "contact", "separation", "stick", "slide"};
+  static const char *names[kNumLimiters] = {"trial",   "final",      "yield", "strain", "rotation",
+                                            "contact", "separation", "stick", "slide"};
   return code >= 0 && code < kNumLimiters ? names[code] : "unknown";
 }
 
