@@ -88,6 +88,33 @@ Mat4 Body::TransitionTangent(size_t i) const
   return c;
 }
 
+namespace {
+Voigt Scaled(const Voigt &v, double f)
+{
+  Voigt s;
+  for (int c = 0; c < kNumStress; ++c) s[c] = f * v[c];
+  return s;
+}
+} // namespace
+
+bool Body::ScanTransition(size_t i, const Voigt &deps, double omega, bool apply)
+{
+  const double m = std::min(1.0, yield_factor_[i]);
+  if (!(std::abs(m - fraction_[i]) > prm_.yield_tol)) return false;
+  if (!apply) return true;
+  fraction_[i] = m;
+  if (m < 1) {
+    // The state at the onset on the linear elastic path (Update of an elastic
+    // point); its C_ep takes H' as a plastic point would next.
+    PointState on = state_[i];
+    RotateStress(ObjectiveScheme::Forward, m * omega, on.sigma);
+    material_->Update(on, Scaled(deps, m));
+    on.plastic = true;
+    onset_[i] = on;
+  }
+  return true;
+}
+
 void Body::ResetTransitions() { std::fill(fraction_.begin(), fraction_.end(), 1.0); }
 
 void Body::ScaleTransitions(double factor)
@@ -128,23 +155,8 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
       if (!prm_.yield_inside) {
         yield.Offer(r1, Limiter::Yield, mesh_->cell_orig[e]);
       } else if (material_->plastic_law() && !ps.plastic) {
-        const double m = std::min(1.0, r1);
-        local_transitions += m < 1;
-        if (std::abs(m - fraction_[i]) > prm_.yield_tol) {
-          ++local_switches;
-          if (apply) fraction_[i] = m;
-          if (apply && m < 1) {
-            // The state at the onset on the linear elastic path (Update of an
-            // elastic point); its C_ep takes H' as a plastic point would next.
-            PointState on = ps;
-            RotateStress(ObjectiveScheme::Forward, m * omega, on.sigma);
-            Voigt dm;
-            for (int c = 0; c < kNumStress; ++c) dm[c] = m * deps[c];
-            material_->Update(on, dm);
-            on.plastic = true;
-            onset_[i] = on;
-          }
-        }
+        local_transitions += r1 < 1;
+        local_switches += ScanTransition(i, deps, omega, apply);
       }
       strain.Offer(StrainFactor(deps, prm_.rmin_deps), Limiter::Strain, mesh_->cell_orig[e]);
       rotation.Offer(RotationFactor(omega, prm_.rmin_domega), Limiter::Rotation, mesh_->cell_orig[e]);
@@ -202,11 +214,9 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
       UpdateInfo u;
       if (prm_.yield_inside && material_->plastic_law() && !ps.plastic && yf < r) {
         const double m = yf / r;
-        Voigt d1, d2;
-        for (int c = 0; c < kNumStress; ++c) d1[c] = m * deps[c], d2[c] = (1 - m) * deps[c];
-        material_->Update(ps, d1);
+        material_->Update(ps, Scaled(deps, m));
         ps.plastic = true;
-        u = material_->Update(ps, d2);
+        u = material_->Update(ps, Scaled(deps, 1 - m));
       } else {
         u = material_->Update(ps, deps);
       }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <initializer_list>
 
 #include "tubeform/core/core.hpp"
 #include "tubeform/step/rmin.hpp"
@@ -15,17 +16,18 @@ const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
 
 // One of a list of words for a string-valued option; the current value is the default. Called between
 // PetscOptionsBegin and PetscOptionsEnd (it needs their PetscOptionsObject).
-template <PetscInt N>
 PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, const char *name, const char *help,
-                          const char *const (&words)[N], std::string &value)
+                          std::initializer_list<const char *> words, std::string &value)
 {
+  const char *const *list = words.begin();
+  const PetscInt n = (PetscInt)words.size();
   PetscInt choice = 0;
 
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < N; ++k)
-    if (value == words[k]) choice = k;
-  PetscCall(PetscOptionsEList(name, help, "tubeform", words, N, words[choice], &choice, nullptr));
-  value = words[choice];
+  for (PetscInt k = 0; k < n; ++k)
+    if (value == list[k]) choice = k;
+  PetscCall(PetscOptionsEList(name, help, "tubeform", list, n, list[choice], &choice, nullptr));
+  value = list[choice];
   PetscFunctionReturn(0);
 }
 
@@ -115,13 +117,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                              &opt.rmin_domega, nullptr));
   PetscCall(PetscOptionsReal("-rmin_group_tol", "Events within (1 + tol) r_min are taken in the same increment",
                              "tubeform", opt.rmin_group_tol, &opt.rmin_group_tol, nullptr));
-  {
-    const char *const yields[] = {"onset", "inside"};
-    PetscCall(ChooseWord(PetscOptionsObject, "-rmin_yield",
-                         "onset (paper: r1 ends the step where a point meets the yield surface), inside (points "
-                         "yield inside a step: tangent weighted by the elastic fraction, update split at the onset)",
-                         yields, opt.rmin_yield));
-  }
+  PetscCall(ChooseWord(PetscOptionsObject, "-rmin_yield",
+                       "onset (paper: r1 ends the step where a point meets the yield surface), inside (points "
+                       "yield inside a step: tangent weighted by the elastic fraction, update split at the onset)",
+                       {"onset", "inside"}, opt.rmin_yield));
   PetscCall(PetscOptionsReal("-rmin_yield_tol",
                              "-rmin_yield inside: re-solve the step while a point's elastic fraction moves by more",
                              "tubeform", opt.rmin_yield_tol, &opt.rmin_yield_tol, nullptr));
@@ -174,12 +173,9 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscOptionsBegin(comm, "", "tubeform: loading and output", "tubeform");
   PetscCall(PetscOptionsReal("-pressure_p", "pressure scene: final internal pressure (MPa), -pressure_control load",
                              "tubeform", opt.pressure_p, &opt.pressure_p, nullptr));
-  {
-    const char *const controls[] = {"load", "displacement"};
-    PetscCall(ChooseWord(PetscOptionsObject, "-pressure_control",
-                         "pressure scene: ramp the pressure (load) or the inner radial displacement (displacement)",
-                         controls, opt.pressure_control));
-  }
+  PetscCall(ChooseWord(PetscOptionsObject, "-pressure_control",
+                       "pressure scene: ramp the pressure (load) or the inner radial displacement (displacement)",
+                       {"load", "displacement"}, opt.pressure_control));
   PetscCall(PetscOptionsReal("-pressure_u",
                              "pressure scene: final inner radial displacement (mm), -pressure_control displacement",
                              "tubeform", opt.pressure_u, &opt.pressure_u, nullptr));
@@ -213,23 +209,17 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(PetscOptionsReal("-rmin_dphi_rise",
                              "r6, stick to slide: largest rise of |f_l / (mu f_n)| in an increment (1: no bound)",
                              "tubeform", opt.rmin_dphi_rise, &opt.rmin_dphi_rise, nullptr));
-  {
-    const char *const unloads[] = {"reverse", "withdraw", "none"};
-    PetscCall(ChooseWord(
-      PetscOptionsObject, "-unload",
-      "Springback: reverse (paper: elastic, contact forces reversed, tools removed), withdraw (tools move back), none",
-      unloads, opt.unload));
-  }
+  PetscCall(ChooseWord(
+    PetscOptionsObject, "-unload",
+    "Springback: reverse (paper: elastic, contact forces reversed, tools removed), withdraw (tools move back), none",
+    {"reverse", "withdraw", "none"}, opt.unload));
   PetscCall(PetscOptionsReal("-shear_gamma", "shear scene: final shear strain gamma", "tubeform", opt.shear_gamma,
                              &opt.shear_gamma, nullptr));
   PetscCall(PetscOptionsReal("-slide_n", "slide scene: normal force pressing the block (N/mm)", "tubeform", opt.slide_n,
                              &opt.slide_n, nullptr));
-  {
-    const char *const tools[] = {"flat", "arc"};
-    PetscCall(ChooseWord(PetscOptionsObject, "-slide_tool",
-                         "slide scene: a block on a flat floor, or a quarter ring turned inside a cylinder (arc)",
-                         tools, opt.slide_tool));
-  }
+  PetscCall(ChooseWord(PetscOptionsObject, "-slide_tool",
+                       "slide scene: a block on a flat floor, or a quarter ring turned inside a cylinder (arc)",
+                       {"flat", "arc"}, opt.slide_tool));
   PetscCall(PetscOptionsReal("-slide_push", "slide scene: sideways displacement of the block's top (mm)", "tubeform",
                              opt.slide_push, &opt.slide_push, nullptr));
   PetscCall(PetscOptionsReal("-slide_back",

@@ -57,7 +57,6 @@ public:
   // `factor` keeps its transitions (m / factor).
   void ResetTransitions();
   void ScaleTransitions(double factor);
-  bool yield_inside() const { return prm_.yield_inside; }
   struct CommitInfo {
     double dw_int = 0, dw_plastic = 0, drift = 0;
     PetscInt n_plastic = 0;
@@ -95,6 +94,10 @@ private:
   std::vector<double> x_, u_;
 
   Mat4 TransitionTangent(size_t i) const;
+  // yield_inside, point i elastic: whether its elastic fraction min(1, r1) moved
+  // by more than yield_tol from the assembled one; with `apply` it is taken
+  // (and its onset state computed).
+  bool ScanTransition(size_t i, const Voigt &deps, double omega, bool apply);
 };
 
 // Element dofs of cell e from a local vector.

@@ -54,6 +54,13 @@ struct RowTerms {
   double rhs = 0;         // added to the l load
 };
 
+// The fraction r of the slip increment dx (from state x0) at which the
+// mobilization reaches `target` (|target| < 1), exact on the law.
+inline double FractionReaching(double x0, double dx, double vcri, double target)
+{
+  return (vcri / 3.0 * std::atanh(target) - Cap(x0, vcri)) / dx;
+}
+
 // r6 of METHOD.md sec. 4, slide to stick: the fraction r of the slip increment
 // dx (from state x0) at which the mobilization phi = tanh(3x/VCRI) has fallen
 // by dphi_max from phi(x0), towards stick or through it into a reversal;
@@ -65,7 +72,7 @@ inline double StickFactor(double x0, double dx, double vcri, double dphi_max)
   const double fall = phi0 > 0 ? phi0 - phi1 : phi0 < 0 ? phi1 - phi0 : 0.0;
   if (!(fall > dphi_max)) return kNever;
   const double target = phi0 > 0 ? phi0 - dphi_max : phi0 + dphi_max; // |target| < 1: the fall exceeds dphi_max
-  return (vcri / 3.0 * std::atanh(target) - Cap(x0, vcri)) / dx;
+  return FractionReaching(x0, dx, vcri, target);
 }
 
 // The same event the other way, stick to slide: the fraction r of dx at which
@@ -77,7 +84,7 @@ inline double SlideFactor(double x0, double dx, double vcri, double dphi_max)
   const double phi0 = Phi(x0, vcri), phi1 = Phi(x0 + dx, vcri);
   if (phi0 * phi1 < 0 || !(std::abs(phi1) - std::abs(phi0) > dphi_max)) return kNever;
   const double target = phi1 > 0 ? std::abs(phi0) + dphi_max : -(std::abs(phi0) + dphi_max);
-  return (vcri / 3.0 * std::atanh(target) - Cap(x0, vcri)) / dx;
+  return FractionReaching(x0, dx, vcri, target);
 }
 
 // The friction force on the body along l for normal force fn and slip state x.
