@@ -65,23 +65,15 @@ PetscErrorCode DisplacementAt(Problem &p, double x, double y, int k, double &u)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Quarter ring, diametral load P on the full ring: P/2 on the quarter, spread
-// over the x = 0 section (trapezoidal weights, resultant on the mean radius).
-class RingScene : public Scene {
+// A linear scene of nodal loads (Loads) and fixed components (Supports),
+// ramped over one load step: what the ring and Cook's membrane share.
+class NodalLoadScene : public Scene {
 public:
-  RingScene(double ro, double t, int ntheta, double p) : ro_(ro), t_(t), ntheta_(ntheta), p_(p) {}
-  std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
-  std::string BuildMesh(const Options &, SerialMesh &mesh) const override
-  {
-    mesh = GenerateQuarterAnnulus(ro_, t_, 2, ntheta_);
-    return "";
-  }
   PetscErrorCode Load(Model &m, double, double dlambda) override
   {
     PetscFunctionBeginUser;
     PetscCall(Loads(m).Add(m, dlambda, nullptr, true));
-    for (PetscInt n : m.mesh.node_sets["x0"]) m.system.Prescribe(n, 0, 0.0);
-    for (PetscInt n : m.mesh.node_sets["y0"]) m.system.Prescribe(n, 1, 0.0);
+    Supports(m);
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) override
@@ -94,11 +86,30 @@ public:
   PetscErrorCode Measure(Model &, double, Vec, HistoryRow &) override { return 0; }
   LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}}; }
 
-private:
-  double ro_, t_;
-  int ntheta_;
-  double p_;
-  NodalLoad Loads(Model &m) const
+protected:
+  virtual NodalLoad Loads(Model &m) const = 0;
+  virtual void Supports(Model &m) const = 0;
+};
+
+// Quarter ring, diametral load P on the full ring: P/2 on the quarter, spread
+// over the x = 0 section (trapezoidal weights, resultant on the mean radius).
+class RingScene : public NodalLoadScene {
+public:
+  RingScene(double ro, double t, int ntheta, double p) : ro_(ro), t_(t), ntheta_(ntheta), p_(p) {}
+  std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
+  std::string BuildMesh(const Options &, SerialMesh &mesh) const override
+  {
+    mesh = GenerateQuarterAnnulus(ro_, t_, 2, ntheta_);
+    return "";
+  }
+
+protected:
+  void Supports(Model &m) const override
+  {
+    for (PetscInt n : m.mesh.node_sets["x0"]) m.system.Prescribe(n, 0, 0.0);
+    for (PetscInt n : m.mesh.node_sets["y0"]) m.system.Prescribe(n, 1, 0.0);
+  }
+  NodalLoad Loads(Model &m) const override
   {
     NodalLoad l;
     l.fy = -0.5 * p_;
@@ -108,11 +119,16 @@ private:
     }
     return l;
   }
+
+private:
+  double ro_, t_;
+  int ntheta_;
+  double p_;
 };
 
 // Cook's membrane: corners (0,0), (48,44), (48,60), (0,44); left edge clamped,
 // vertical load F on the right edge (uniform traction: end nodes half weight).
-class CookScene : public Scene {
+class CookScene : public NodalLoadScene {
 public:
   CookScene(int n, double f) : n_(n), f_(f) {}
   std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
@@ -127,27 +143,13 @@ public:
     }
     return "";
   }
-  PetscErrorCode Load(Model &m, double, double dlambda) override
-  {
-    PetscFunctionBeginUser;
-    PetscCall(Loads(m).Add(m, dlambda, nullptr, true));
-    for (PetscInt k : m.mesh.node_sets["left"]) m.system.Prescribe(k, 0, 0.0), m.system.Prescribe(k, 1, 0.0);
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) override
-  {
-    PetscFunctionBeginUser;
-    PetscCall(VecZeroEntries(f));
-    PetscCall(Loads(m).Add(m, lambda, f, false));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  PetscErrorCode Measure(Model &, double, Vec, HistoryRow &) override { return 0; }
-  LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}}; }
 
-private:
-  int n_;
-  double f_;
-  NodalLoad Loads(Model &m) const
+protected:
+  void Supports(Model &m) const override
+  {
+    for (PetscInt k : m.mesh.node_sets["left"]) m.system.Prescribe(k, 0, 0.0), m.system.Prescribe(k, 1, 0.0);
+  }
+  NodalLoad Loads(Model &m) const override
   {
     NodalLoad l;
     l.fy = f_;
@@ -157,6 +159,10 @@ private:
     }
     return l;
   }
+
+private:
+  int n_;
+  double f_;
 };
 
 Options Base(fe::Formulation f, double e, double nu)
