@@ -37,6 +37,9 @@ cases = [
     (["-rmin_event_tol", "0"], "-rmin_event_tol"),
     (["-rmin_dphi", "3"], "-rmin_dphi"),
     (["-slide_back", "-1"], "-slide_back"),
+    (["-rmin_yield", "bogus"], "-rmin_yield"),
+    (["-rmin_yield_tol", "0"], "-rmin_yield_tol"),
+    (["-rmin_dphi_rise", "1.5"], "-rmin_dphi_rise"),
 ]
 # Every case on 1 rank; on 2 ranks one of each kind (option value, option
 # choice, mesh file, output path), since mpirun takes ~2 s to wind down a
