@@ -33,6 +33,10 @@
         Runs with inertia: the median kinetic energy of the loading (the tube
         moving with the punch) and every local peak above ten times it (a
         local snap), with its stroke and its share of the work done by then.
+
+    /usr/bin/python3 scripts/history_stats.py limiters F.h5 [F.h5 ...]
+        What ended the loading increments: the count per limiter name
+        (history column `limiter`), and solves (friction_iters) per increment.
 """
 import sys
 
@@ -120,6 +124,18 @@ def snaps(paths):
               (", ".join(f"U = {H['stroke'][i]:.2f} mm {ke[i]:.1e} ({ke[i] / H['w_ext'][i]:.1e} of w_ext)" for i in peaks) or "none"))
 
 
+def limiters(paths):
+    for path in paths:
+        H = loading(path)
+        with h5py.File(path, "r") as h:
+            names = h["/history"].attrs["limiter_names"]
+        names = (names.decode() if isinstance(names, bytes) else str(names)).split(",")
+        codes = H["limiter"][1:].astype(int)
+        counts = ", ".join(f"{names[c]} {int((codes == c).sum())}" for c in sorted(set(codes)))
+        print(f"{path}: {len(codes)} loading increments: {counts}; "
+              f"{H['friction_iters'][1:].mean():.1f} solves per increment")
+
+
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "compare":
         compare(sys.argv[2], sys.argv[3])
@@ -131,5 +147,7 @@ if __name__ == "__main__":
         windows(sys.argv[2:])
     elif len(sys.argv) >= 3 and sys.argv[1] == "snaps":
         snaps(sys.argv[2:])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "limiters":
+        limiters(sys.argv[2:])
     else:
         raise SystemExit(__doc__)
