@@ -40,6 +40,8 @@ cases = [
     (["-rmin_yield", "bogus"], "-rmin_yield"),
     (["-rmin_yield_tol", "0"], "-rmin_yield_tol"),
     (["-rmin_dphi_rise", "1.5"], "-rmin_dphi_rise"),
+    (["-output_stroke", "-0.1"], "-output_stroke"),
+    (["-output_stroke", "10"], "-output_stroke"),
 ]
 # Every case on 1 rank; on 2 ranks one of each kind (option value, option
 # choice, mesh file, output path), since mpirun takes ~2 s to wind down a

@@ -53,4 +53,30 @@ with open("io.csv") as f:
     rows = list(csv.reader(f))
 k.check(rows[0][:len(columns)] != [] and all(c in rows[0] for c in columns), "CSV header has every column")
 k.check(len(rows) == incs + 2, f"CSV has header + {incs + 1} rows")
+
+# -output_stroke D: fields whenever the loading passes a multiple of D mm of
+# stroke, at the end of the loading stage and at the end; the expected writes
+# follow from the history's stroke column (lambda = U / stroke in loading).
+D, U_end = 0.1, 0.6
+run(tf, mpirun, 2, ["-options_file", f"{src}/options/squaring.opts", "-stroke", U_end, "-rmin_yield", "inside",
+                    "-increments", 40, "-output_stroke", D, "-output", out("stroke.h5")])
+with h5py.File("stroke.h5", "r") as h:
+    t = h["/time"][:, 0]
+    H = {c: h["/history"][c][:] for c in ("stroke", "stage")}
+    steps = h["/vertex_fields/displacement_u"].shape[0]
+U = H["stroke"][H["stage"] == 0]
+expect, last_bin = [0.0], 0
+for i in range(1, len(U)):
+    b = np.floor(U[i] / D + 1e-9)
+    if b > last_bin or i == len(U) - 1:
+        expect.append(U[i] / U_end)
+        last_bin = b
+loading = t[t <= 1 + 1e-12]
+k.check(len(loading) == len(expect) and np.allclose(loading, expect, rtol=0, atol=1e-12),
+        f"-output_stroke {D}: loading writes at the {len(expect)} strokes the history gives (got {len(loading)})")
+k.check(abs(loading[-1] - 1) < 1e-12, "-output_stroke: the end of loading is written")
+unloading = t[t > 1 + 1e-12]
+k.check(1 <= len(unloading) <= U_end / D + 1 and abs(t[-1] - 2) < 1e-12,
+        f"-output_stroke: unloading written {len(unloading)} times (1..{U_end / D + 1:g}), ending at its end")
+k.check(steps == len(t), "one field entry per /time entry")
 k.done()

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tubeform/core/log.hpp"
+#include "tubeform/driver/output_schedule.hpp"
 #include "tubeform/scenes/registry.hpp"
 
 namespace tf {
@@ -154,7 +155,8 @@ PetscErrorCode Problem::Run()
   controller.SetResidual(forces_.f_res);
   double lambda_mark = 0;
   PetscInt inc_mark = 0;
-  bool stalled = false;
+  bool stalled = false, wrote_last = true;
+  OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / opt_.stroke : 0);
   PetscCall(PetscLogStagePush(Log::load_stage));
   while (lambda < end - kLambdaTol) {
     // 1. The stall watch ends a load path that no longer advances.
@@ -210,9 +212,10 @@ PetscErrorCode Problem::Run()
 
     // 6. Forces, energies and the scene's measurements on the new configuration.
     PetscCall(Record(inc, lambda0, lambda, taken, done, du));
-    if (inc % opt_.output_every == 0 || lambda >= end - kLambdaTol) PetscCall(WriteFields(writer, step++, lambda));
+    wrote_last = output.Due(inc, lambda, on_break, lambda >= end - kLambdaTol);
+    if (wrote_last) PetscCall(WriteFields(writer, step++, lambda));
   }
-  if (stalled && inc % opt_.output_every != 0) PetscCall(WriteFields(writer, step++, lambda));
+  if (stalled && !wrote_last) PetscCall(WriteFields(writer, step++, lambda));
   PetscCall(PetscLogStagePop());
 
   // 7. Final metrics and the result file (renamed into place only now).

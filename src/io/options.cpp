@@ -248,6 +248,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   if (set) opt.history_csv = buf;
   PetscCall(PetscOptionsInt("-output_every", "Write fields every k-th increment (the last is always written)",
                             "tubeform", opt.output_every, &opt.output_every, nullptr));
+  PetscCall(PetscOptionsReal("-output_stroke",
+                             "Write fields each time the loading advances this much stroke (mm; later stages: the same "
+                             "fraction of the stage) and at every stage end; 0: every -output_every increments",
+                             "tubeform", opt.output_stroke, &opt.output_stroke, nullptr));
   PetscCall(PetscOptionsBool("-monitor", "Print one line per increment on rank 0", "tubeform", opt.monitor,
                              &opt.monitor, nullptr));
   PetscOptionsEnd();
@@ -350,6 +354,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-pressure_p %g: must be a finite pressure (MPa)", opt.pressure_p);
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);
+  PetscCheck(opt.output_stroke >= 0 && opt.output_stroke <= opt.stroke, comm, PETSC_ERR_USER_INPUT,
+             "-output_stroke %g: must be between 0 (off) and the stroke %g mm", opt.output_stroke, opt.stroke);
   PetscCheck(!opt.output.empty(), comm, PETSC_ERR_USER_INPUT, "-output: an HDF5 file name is required");
   if (!opt.mesh_file.empty()) {
     std::ifstream probe(opt.mesh_file);

@@ -8,6 +8,7 @@
 
 #include "tubeform/core/core.hpp"
 #include "tubeform/core/log.hpp"
+#include "tubeform/io/series.hpp"
 #include "tubeform/step/rmin.hpp"
 
 namespace tf {
@@ -55,6 +56,13 @@ PetscErrorCode ResultWriter::Open(const Mesh &mesh, const std::string &path)
   PetscCall(PetscViewerHDF5Open(mesh.comm, (path + ".partial").c_str(), FILE_MODE_WRITE, &viewer_));
   PetscCall(PetscViewerPushFormat(viewer_, PETSC_VIEWER_HDF5_XDMF));
   PetscCall(DMView(mesh.dm, viewer_));
+  hid_t file;
+  PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
+  for (const char *group : {"/vertex_fields", "/cell_fields"}) {
+    hid_t g = H5Gcreate2(file, group, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    TF_CHECK_HDF5(g);
+    TF_CHECK_HDF5(H5Gclose(g));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -63,11 +71,17 @@ PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::ve
 {
   Vec local, global;
   PetscScalar *a;
+  hid_t file;
+  PetscMPIInt rank;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::output, 0, 0, 0, 0));
+  PetscCallMPI(MPI_Comm_rank(mesh_->comm, &rank));
+  PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
   times_.push_back(time);
-  // Vertex field: displacement (2 components).
+  PetscCall(WriteSeriesValue(file, "/time", time, step, rank == 0));
+  // Vertex field: displacement (2 components), in the global vector's order,
+  // which is the order of /geometry/vertices.
   PetscCall(DMGetLocalVector(mesh_->dm, &local));
   PetscCall(DMGetGlobalVector(mesh_->dm, &global));
   PetscCall(VecGetArray(local, &a));
@@ -77,23 +91,19 @@ PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::ve
   }
   PetscCall(VecRestoreArray(local, &a));
   PetscCall(DMLocalToGlobal(mesh_->dm, local, INSERT_VALUES, global));
-  PetscCall(PetscObjectSetName((PetscObject)global, "displacement"));
-  PetscCall(DMSetOutputSequenceNumber(mesh_->dm, step, time));
-  PetscCall(VecView(global, viewer_));
+  PetscCall(WriteSeriesStep(file, "/vertex_fields/displacement_u", global, 2, step));
   PetscCall(DMRestoreGlobalVector(mesh_->dm, &global));
   PetscCall(DMRestoreLocalVector(mesh_->dm, &local));
 
   // Cell fields: one scalar per cell.
   cell_names_.clear();
-  PetscCall(DMSetOutputSequenceNumber(mesh_->cell_dm, step, time));
   for (const auto &field : cells) {
     cell_names_.push_back(field.name);
     PetscCall(DMGetGlobalVector(mesh_->cell_dm, &global));
     PetscCall(VecGetArray(global, &a));
     for (PetscInt c = 0; c < mesh_->num_cells; ++c) a[c] = field.values[c];
     PetscCall(VecRestoreArray(global, &a));
-    PetscCall(PetscObjectSetName((PetscObject)global, field.name.c_str()));
-    PetscCall(VecView(global, viewer_));
+    PetscCall(WriteSeriesStep(file, ("/cell_fields/" + field.name + "_c").c_str(), global, 1, step));
     PetscCall(DMRestoreGlobalVector(mesh_->cell_dm, &global));
   }
   PetscCall(PetscLogEventEnd(Log::output, 0, 0, 0, 0));

@@ -71,6 +71,7 @@ struct Options {
   std::string output = "results/tubeform.h5";
   std::string history_csv;
   PetscInt output_every = 1;
+  double output_stroke = 0; // > 0: fields every this much stroke (mm) instead of every output_every increments
   PetscBool monitor = PETSC_FALSE;
   PetscBool help = PETSC_FALSE;
 };

@@ -1,0 +1,23 @@
+// Time series in an open HDF5 result file: one dataset per field, dimensions
+// (step, entity[, component]), grown by one step per write, in the layout
+// PETSc's XDMF format uses (/vertex_fields/<name>, /cell_fields/<name>), so the
+// .xmf, ParaView and the scripts read it unchanged. Written with HDF5 directly:
+// PETSc's VecView flushes the file after every vector (an fsync each; 8 ms per
+// field on this machine's disk), which made field output a third of a run.
+#pragma once
+
+#include <petscvec.h>
+#include <petscviewerhdf5.h>
+
+namespace tf {
+
+// Collective: writes the locally owned part of `global` (block size `bs`: 1
+// scalar, 2 vector) as step `step` (0 creates the dataset) of dataset `path`,
+// whose group must exist.
+PetscErrorCode WriteSeriesStep(hid_t file, const char *path, Vec global, PetscInt bs, PetscInt step);
+
+// Collective: `value` as step `step` of the (step, 1) dataset `path`, written by
+// the rank with `writer` true (one rank).
+PetscErrorCode WriteSeriesValue(hid_t file, const char *path, double value, PetscInt step, bool writer);
+
+} // namespace tf

@@ -1,0 +1,58 @@
+"""Running tubeform from the study scripts (scripts/tradeoff, converge, bench)
+and reading the numbers they compare out of a result history."""
+import os
+import re
+import subprocess
+import time
+
+import h5py
+import numpy as np
+
+root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+EXE = os.path.join(root, "build", "tubeform")
+LOAD_AT, CT_AT = (1.0, 2.0, 3.0, 4.2), (2.0, 3.0, 4.2)
+
+
+class RunFailed(RuntimeError):
+    pass
+
+
+def run(case, extra, out, np_=1, exe=EXE, log_view=False):
+    """One run of `case` (an options file) with `extra` options, history and final
+    fields to `out`; returns (wall seconds, increments, factorizations, stdout)."""
+    cmd = ["mpirun", "-n", str(np_), exe, "-options_file", case, "-output", out] + extra
+    if log_view:
+        cmd += ["-log_view", ":" + out[:-3] + "_log.txt"]
+    t0 = time.time()
+    p = subprocess.run(cmd, cwd=root, env=env, capture_output=True, text=True)
+    wall = time.time() - t0
+    if p.returncode != 0:
+        raise RunFailed(f"{' '.join(cmd)} failed:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")
+    m = re.search(r"done, (\d+) increments, (\d+) factorizations", p.stdout)
+    return wall, int(m.group(1)), int(m.group(2)), p.stdout
+
+
+COLUMNS = ("stroke", "load", "c_over_t", "deviation_ratio", "stage", "energy_error", "internal_error", "friction_iters")
+
+
+def history(path):
+    """The loading rows of a run's history; 'spring' is C/t after springback (nan without one)."""
+    with h5py.File(path, "r") as h:
+        H = {c: h["/history"][c][:] for c in COLUMNS}
+        spring = h["/history"].attrs.get("unloaded_c_over_t", float("nan"))
+    keep = H["stage"] == 0
+    H = {c: v[keep] for c, v in H.items()}
+    H["spring"] = float(spring)
+    return H
+
+
+def at(H, col, U):
+    """Column `col` at stroke U (linear between rows); nan where the loading stops short of U."""
+    return float(np.interp(U, H["stroke"], H[col])) if H["stroke"][-1] >= U - 1e-9 else float("nan")
+
+
+def metrics(H):
+    """The compared numbers: P at LOAD_AT, C/t at CT_AT, C1/C2 at the end, C/t after springback."""
+    return ([at(H, "load", u) for u in LOAD_AT], [at(H, "c_over_t", u) for u in CT_AT],
+            float(H["deviation_ratio"][-1]), H["spring"])

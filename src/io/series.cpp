@@ -1,0 +1,108 @@
+#include "tubeform/io/series.hpp"
+
+#include <cstring>
+
+#include "tubeform/core/core.hpp"
+
+namespace tf {
+
+// HDF5 calls return a negative value on failure.
+#define TF_CHECK_HDF5(expr) PetscCheck((expr) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call failed: %s", #expr)
+
+namespace {
+
+// Opens dataset `path` grown to `step` + 1 steps of `dims` (dims[0] ignored),
+// creating it (chunked by step, unlimited in steps) at step 0.
+PetscErrorCode OpenStep(hid_t file, const char *path, int rank, hsize_t dims[], PetscInt step, const char *type,
+                        hid_t *dset)
+{
+  PetscFunctionBeginUser;
+  dims[0] = (hsize_t)step + 1;
+  if (step == 0) {
+    hsize_t maxdims[3] = {H5S_UNLIMITED, dims[1], rank > 2 ? dims[2] : 0}, chunk[3] = {1, dims[1], dims[2]};
+    const hid_t space = H5Screate_simple(rank, dims, maxdims), plist = H5Pcreate(H5P_DATASET_CREATE);
+    TF_CHECK_HDF5(space);
+    TF_CHECK_HDF5(plist);
+    TF_CHECK_HDF5(H5Pset_chunk(plist, rank, chunk));
+    *dset = H5Dcreate2(file, path, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, plist, H5P_DEFAULT);
+    TF_CHECK_HDF5(*dset);
+    TF_CHECK_HDF5(H5Pclose(plist));
+    TF_CHECK_HDF5(H5Sclose(space));
+    // The attributes PETSc's readers and petsc_gen_xdmf.py look for.
+    const int timestepping = 1;
+    const hid_t scalar = H5Screate(H5S_SCALAR), str = H5Tcopy(H5T_C_S1);
+    TF_CHECK_HDF5(H5Tset_size(str, std::strlen(type) + 1));
+    hid_t attr = H5Acreate2(*dset, "timestepping", H5T_NATIVE_INT, scalar, H5P_DEFAULT, H5P_DEFAULT);
+    TF_CHECK_HDF5(attr);
+    TF_CHECK_HDF5(H5Awrite(attr, H5T_NATIVE_INT, &timestepping));
+    TF_CHECK_HDF5(H5Aclose(attr));
+    attr = H5Acreate2(*dset, "vector_field_type", str, scalar, H5P_DEFAULT, H5P_DEFAULT);
+    TF_CHECK_HDF5(attr);
+    TF_CHECK_HDF5(H5Awrite(attr, str, type));
+    TF_CHECK_HDF5(H5Aclose(attr));
+    TF_CHECK_HDF5(H5Tclose(str));
+    TF_CHECK_HDF5(H5Sclose(scalar));
+  } else {
+    *dset = H5Dopen2(file, path, H5P_DEFAULT);
+    TF_CHECK_HDF5(*dset);
+    TF_CHECK_HDF5(H5Dset_extent(*dset, dims));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Writes `count` rows of `dims[1..]` at (step, first) from `values`; count 0: nothing from this rank.
+PetscErrorCode WriteRows(hid_t dset, int rank, const hsize_t dims[], PetscInt step, hsize_t first, hsize_t count,
+                         const double *values)
+{
+  PetscFunctionBeginUser;
+  const hid_t file_space = H5Dget_space(dset);
+  TF_CHECK_HDF5(file_space);
+  hsize_t start[3] = {(hsize_t)step, first, 0}, block[3] = {1, count, dims[2]};
+  const hid_t mem_space = H5Screate_simple(rank, block, nullptr);
+  TF_CHECK_HDF5(mem_space);
+  if (count > 0) {
+    TF_CHECK_HDF5(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, nullptr, block, nullptr));
+  } else {
+    TF_CHECK_HDF5(H5Sselect_none(file_space));
+    TF_CHECK_HDF5(H5Sselect_none(mem_space));
+  }
+  TF_CHECK_HDF5(H5Dwrite(dset, H5T_NATIVE_DOUBLE, mem_space, file_space, H5P_DEFAULT, values));
+  TF_CHECK_HDF5(H5Sclose(mem_space));
+  TF_CHECK_HDF5(H5Sclose(file_space));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace
+
+PetscErrorCode WriteSeriesStep(hid_t file, const char *path, Vec global, PetscInt bs, PetscInt step)
+{
+  PetscInt n, lo, hi;
+  const PetscScalar *a;
+  hid_t dset;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetSize(global, &n));
+  PetscCall(VecGetOwnershipRange(global, &lo, &hi));
+  const int rank = bs > 1 ? 3 : 2;
+  hsize_t dims[3] = {0, (hsize_t)(n / bs), (hsize_t)bs};
+  PetscCall(OpenStep(file, path, rank, dims, step, bs > 1 ? "vector" : "scalar", &dset));
+  PetscCall(VecGetArrayRead(global, &a));
+  PetscCall(WriteRows(dset, rank, dims, step, (hsize_t)(lo / bs), (hsize_t)((hi - lo) / bs), a));
+  PetscCall(VecRestoreArrayRead(global, &a));
+  TF_CHECK_HDF5(H5Dclose(dset));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode WriteSeriesValue(hid_t file, const char *path, double value, PetscInt step, bool writer)
+{
+  hid_t dset;
+
+  PetscFunctionBeginUser;
+  hsize_t dims[3] = {0, 1, 1};
+  PetscCall(OpenStep(file, path, 2, dims, step, "scalar", &dset));
+  PetscCall(WriteRows(dset, 2, dims, step, 0, writer ? 1 : 0, &value));
+  TF_CHECK_HDF5(H5Dclose(dset));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
