@@ -30,6 +30,8 @@ PetscErrorCode Body::Setup(const Mesh &mesh, const BodyParams &prm)
   yield_factor_.assign(state_.size(), kNever);
   fraction_.assign(state_.size(), 1.0);
   onset_.assign(state_.size(), PointState{});
+  ke_.resize(mesh.num_cells);
+  ke_stale_.assign(mesh.num_cells, 1);
   x_ = mesh.x0;
   u_.assign(2 * mesh.num_nodes, 0.0);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -44,6 +46,22 @@ void Body::CellCoordinates(PetscInt cell, double xe[2 * fe::kNodes]) const
   }
 }
 
+const fe::QuadGeometry *Body::CellGeometry(PetscInt e, double xe[2 * fe::kNodes]) const
+{
+  CellCoordinates(e, xe);
+  if (!geometry_.valid) {
+    geometry_.geo.resize(mesh_->num_cells);
+    geometry_.ok.resize(mesh_->num_cells);
+    double x[2 * fe::kNodes];
+    for (PetscInt c = 0; c < mesh_->num_cells; ++c) {
+      CellCoordinates(c, x);
+      geometry_.ok[c] = fe::ComputeGeometry(x, geometry_.geo[c]);
+    }
+    geometry_.valid = true;
+  }
+  return geometry_.ok[e] ? &geometry_.geo[e] : nullptr;
+}
+
 PetscErrorCode Body::AssembleTangent(System &system, const CellTerm &cell_term)
 {
   fe::ElemMat ke;
@@ -55,16 +73,20 @@ PetscErrorCode Body::AssembleTangent(System &system, const CellTerm &cell_term)
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::assemble, 0, 0, 0, 0));
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
-    CellCoordinates(e, xe);
-    for (int g = 0; g < fe::kGauss; ++g) {
-      const size_t i = fe::kGauss * e + g;
-      c[g] = fraction_[i] < 1 ? TransitionTangent(i) : material_->Tangent(state_[i]);
-      s[g] = state_[i].sigma;
+    if (ke_stale_[e]) {
+      CellCoordinates(e, xe);
+      for (int g = 0; g < fe::kGauss; ++g) {
+        const size_t i = fe::kGauss * e + g;
+        c[g] = fraction_[i] < 1 ? TransitionTangent(i) : material_->Tangent(state_[i]);
+        s[g] = state_[i].sigma;
+      }
+      if (!cells_.Stiffness((int)e, xe, c, s, ke_[e])) {
+        bad = mesh_->cell_orig[e];
+        continue;
+      }
+      ke_stale_[e] = 0;
     }
-    if (!cells_.Stiffness((int)e, xe, c, s, ke)) {
-      bad = mesh_->cell_orig[e];
-      continue;
-    }
+    ke = ke_[e];
     if (cell_term) cell_term(e, ke);
     PetscCall(system.AddElement(e, ke));
   }
@@ -103,6 +125,7 @@ bool Body::ScanTransition(size_t i, const Voigt &deps, double omega, bool apply)
   if (!(std::abs(m - fraction_[i]) > prm_.yield_tol)) return false;
   if (!apply) return true;
   fraction_[i] = m;
+  Stale(i);
   if (m < 1) {
     // The state at the onset on the linear elastic path (Update of an elastic
     // point); its C_ep takes H' as a plastic point would next.
@@ -115,18 +138,21 @@ bool Body::ScanTransition(size_t i, const Voigt &deps, double omega, bool apply)
   return true;
 }
 
-void Body::ResetTransitions() { std::fill(fraction_.begin(), fraction_.end(), 1.0); }
+void Body::ResetTransitions()
+{
+  for (size_t i = 0; i < fraction_.size(); ++i)
+    if (fraction_[i] < 1) fraction_[i] = 1, Stale(i);
+}
 
 void Body::ScaleTransitions(double factor)
 {
-  for (double &m : fraction_)
-    if (m < 1) m = std::min(1.0, m / factor);
+  for (size_t i = 0; i < fraction_.size(); ++i)
+    if (fraction_[i] < 1) fraction_[i] = std::min(1.0, fraction_[i] / factor), Stale(i);
 }
 
 PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, PetscInt &switches, PetscInt &transitions)
 {
   const PetscScalar *du;
-  fe::QuadGeometry geo;
   double xe[2 * fe::kNodes];
   PetscInt local_switches = 0, local_transitions = 0;
   StepLimit yield, strain, rotation;
@@ -136,18 +162,18 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
   PetscCall(VecGetArrayRead(du_local, &du));
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
     fe::ElemVec due;
-    CellCoordinates(e, xe);
-    if (!fe::ComputeGeometry(xe, geo)) continue;
+    const fe::QuadGeometry *geo = CellGeometry(e, xe);
+    if (!geo) continue;
     GatherCell(*mesh_, e, du, due);
     for (int g = 0; g < fe::kGauss; ++g) {
       Voigt deps;
       double omega;
       PointState &ps = state_[fe::kGauss * e + g];
       // The trial increment is linear in r on the start configuration.
-      cells_.Kinematics((int)e, xe, geo, g, due, deps, omega);
+      cells_.Kinematics((int)e, xe, *geo, g, due, deps, omega);
       if (material_->plastic_law() && material_->Loading(ps, deps) != ps.plastic) {
         ++local_switches;
-        if (apply) ps.plastic = !ps.plastic;
+        if (apply) ps.plastic = !ps.plastic, Stale(fe::kGauss * e + g);
       }
       const size_t i = fe::kGauss * e + g;
       double &r1 = yield_factor_[i];
@@ -187,6 +213,8 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::commit, 0, 0, 0, 0));
+  StaleAll(); // new geometry and stresses
+  geometry_.valid = false;
   PetscCall(VecGetArrayRead(du_local, &du));
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
     fe::ElemVec due;
@@ -252,12 +280,12 @@ void Body::SetElasticOnly()
 {
   material_ = std::make_unique<Elastic>(prm_.material.E, prm_.material.nu);
   for (auto &ps : state_) ps.plastic = false;
+  StaleAll();
 }
 
 PetscErrorCode Body::InternalForce(Vec f_local) const
 {
   PetscScalar *f;
-  fe::QuadGeometry geo;
   double xe[2 * fe::kNodes];
 
   PetscFunctionBeginUser;
@@ -266,10 +294,10 @@ PetscErrorCode Body::InternalForce(Vec f_local) const
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
     Voigt s[fe::kGauss];
     fe::ElemVec fe_;
-    CellCoordinates(e, xe);
-    if (!fe::ComputeGeometry(xe, geo)) continue;
+    const fe::QuadGeometry *geo = CellGeometry(e, xe);
+    if (!geo) continue;
     for (int g = 0; g < fe::kGauss; ++g) s[g] = state_[fe::kGauss * e + g].sigma;
-    cells_.InternalForce((int)e, xe, geo, s, fe_);
+    cells_.InternalForce((int)e, xe, *geo, s, fe_);
     for (int a = 0; a < fe::kNodes; ++a) {
       const PetscInt n = mesh_->cell_nodes[fe::kNodes * e + a];
       f[mesh_->node_dof[n]] += fe_[2 * a];
@@ -282,15 +310,14 @@ PetscErrorCode Body::InternalForce(Vec f_local) const
 
 PetscErrorCode Body::ElasticEnergy(double &w) const
 {
-  fe::QuadGeometry geo;
   double xe[2 * fe::kNodes], local = 0;
 
   PetscFunctionBeginUser;
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
-    CellCoordinates(e, xe);
-    if (!fe::ComputeGeometry(xe, geo)) continue;
+    const fe::QuadGeometry *geo = CellGeometry(e, xe);
+    if (!geo) continue;
     for (int g = 0; g < fe::kGauss; ++g)
-      local += geo.wdet[g] * material_->ElasticEnergy(state_[fe::kGauss * e + g].sigma);
+      local += geo->wdet[g] * material_->ElasticEnergy(state_[fe::kGauss * e + g].sigma);
   }
   PetscCall(MPIU_Allreduce(&local, &w, 1, MPIU_REAL, MPIU_SUM, comm()));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -28,7 +28,8 @@ bool CellFormulation::Kinematics(int e, const double xe[2 * kNodes], const QuadG
   InternalVec alpha{};
   for (int k = 0; k < kInternal; ++k)
     for (int j = 0; j < kDofs; ++j) alpha[k] += condensation_[e][k][j] * du[j];
-  return QM6Kinematics(xe, g, du, alpha, deps, omega);
+  QM6Kinematics(xe, geo, g, du, alpha, deps, omega);
+  return true;
 }
 
 bool CellFormulation::InternalForce(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss],

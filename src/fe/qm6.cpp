@@ -20,10 +20,9 @@ struct Gradients {
 
 // Taylor's correction: dP/dx = (det J0 / det J_g) J0^{-T} dP/dxi, so that
 // sum_g w det J_g dP/dx = det J0 J0^{-T} sum_g dP/dxi = 0 (dP/dxi is odd).
-bool ComputeGradients(const double xe[2 * kNodes], Gradients &gr)
+// Gradients of the 6 shapes at Gauss point g of a cell with geometry `geo`.
+void GradientsAt(const double xe[2 * kNodes], const QuadGeometry &geo, int g, double out[kShapes][2])
 {
-  QuadGeometry geo;
-  if (!ComputeGeometry(xe, geo)) return false;
   double n[kNodes], dn[kNodes][2], j0[2][2] = {{0, 0}, {0, 0}};
   ShapeFunctions(0, 0, n, dn);
   for (int a = 0; a < kNodes; ++a)
@@ -32,15 +31,22 @@ bool ComputeGradients(const double xe[2 * kNodes], Gradients &gr)
   // det J = a0 + a1 xi + a2 eta on a bilinear cell: det J0 is the mean of the (positive) Gauss values.
   const double det0 = j0[0][0] * j0[1][1] - j0[0][1] * j0[1][0];
   const double inv0[2][2] = {{j0[1][1] / det0, -j0[0][1] / det0}, {-j0[1][0] / det0, j0[0][0] / det0}}; // dxi_s/dx_r
+  for (int a = 0; a < kNodes; ++a)
+    for (int r = 0; r < 2; ++r) out[a][r] = geo.dndx[g][a][r];
+  const double scale = det0 / geo.wdet[g]; // unit weights: wdet = det J_g
+  // dP_1/dxi = (-2 xi, 0), dP_2/dxi = (0, -2 eta).
+  for (int r = 0; r < 2; ++r) {
+    out[kNodes][r] = scale * (-2 * kXiGauss[g][0]) * inv0[0][r];
+    out[kNodes + 1][r] = scale * (-2 * kXiGauss[g][1]) * inv0[1][r];
+  }
+}
+
+bool ComputeGradients(const double xe[2 * kNodes], Gradients &gr)
+{
+  QuadGeometry geo;
+  if (!ComputeGeometry(xe, geo)) return false;
   for (int g = 0; g < kGauss; ++g) {
-    for (int a = 0; a < kNodes; ++a)
-      for (int r = 0; r < 2; ++r) gr.g[g][a][r] = geo.dndx[g][a][r];
-    const double scale = det0 / geo.wdet[g]; // unit weights: wdet = det J_g
-    // dP_1/dxi = (-2 xi, 0), dP_2/dxi = (0, -2 eta).
-    for (int r = 0; r < 2; ++r) {
-      gr.g[g][kNodes][r] = scale * (-2 * kXiGauss[g][0]) * inv0[0][r];
-      gr.g[g][kNodes + 1][r] = scale * (-2 * kXiGauss[g][1]) * inv0[1][r];
-    }
+    GradientsAt(xe, geo, g, gr.g[g]);
     gr.wdet[g] = geo.wdet[g];
   }
   return true;
@@ -135,18 +141,26 @@ bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const
 bool QM6Kinematics(const double xe[2 * kNodes], int g, const ElemVec &du, const InternalVec &alpha, Voigt &deps,
                    double &omega)
 {
-  Gradients gr;
-  if (!ComputeGradients(xe, gr)) return false;
+  QuadGeometry geo;
+  if (!ComputeGeometry(xe, geo)) return false;
+  QM6Kinematics(xe, geo, g, du, alpha, deps, omega);
+  return true;
+}
+
+void QM6Kinematics(const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du,
+                   const InternalVec &alpha, Voigt &deps, double &omega)
+{
+  double gr[kShapes][2];
+  GradientsAt(xe, geo, g, gr);
   // L_ij = d(du_i)/dx_j summed over the nodal shape functions and the modes.
   double l[2][2] = {{0, 0}, {0, 0}};
   for (int s = 0; s < kShapes; ++s)
     for (int c = 0; c < 2; ++c) {
       const double v = s < kNodes ? du[2 * s + c] : alpha[kModes * c + (s - kNodes)];
-      for (int j = 0; j < 2; ++j) l[c][j] += v * gr.g[g][s][j];
+      for (int j = 0; j < 2; ++j) l[c][j] += v * gr[s][j];
     }
   deps = {l[0][0], l[1][1], 0.0, l[0][1] + l[1][0]};
   omega = 0.5 * (l[0][1] - l[1][0]);
-  return true;
 }
 
 bool QM6InternalForce(const double xe[2 * kNodes], const Voigt sigma[kGauss], const Condensation &cond, ElemVec &f)

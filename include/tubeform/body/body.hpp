@@ -8,6 +8,7 @@
 
 #include <petscvec.h>
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -92,7 +93,26 @@ private:
   std::vector<double> fraction_;     // yield_inside: elastic fraction m in the assembled tangent (1: elastic)
   std::vector<PointState> onset_;    // yield_inside: state where the point meets the surface (plastic)
   std::vector<double> x_, u_;
+  // Cell tangents of the last assembly; a cell is recomputed only when its
+  // geometry, stresses or point tangents changed since (the friction
+  // iterations and re-solves of an increment change few or none).
+  std::vector<fe::ElemMat> ke_;
+  std::vector<char> ke_stale_;
 
+  // Cell geometry (gradients, weights) on the current coordinates, computed
+  // once per configuration: the scans, internal forces and energies of an
+  // increment share it. ok_ false: an inverted cell.
+  struct GeometryCache {
+    std::vector<fe::QuadGeometry> geo;
+    std::vector<char> ok;
+    bool valid = false;
+  };
+  mutable GeometryCache geometry_;
+  // The geometry of cell e (nullptr if inverted) and its corners `xe`.
+  const fe::QuadGeometry *CellGeometry(PetscInt e, double xe[2 * fe::kNodes]) const;
+
+  void Stale(size_t point) { ke_stale_[point / fe::kGauss] = 1; }
+  void StaleAll() { std::fill(ke_stale_.begin(), ke_stale_.end(), 1); }
   Mat4 TransitionTangent(size_t i) const;
   // yield_inside, point i elastic: whether its elastic fraction min(1, r1) moved
   // by more than yield_tol from the assembled one; with `apply` it is taken

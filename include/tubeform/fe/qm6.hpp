@@ -37,6 +37,9 @@ bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const
 // (e.g. the mid-increment one). Returns false for an inverted cell.
 bool QM6Kinematics(const double xe[2 * kNodes], int g, const ElemVec &du, const InternalVec &alpha, Voigt &deps,
                    double &omega);
+// The same on a cell whose geometry (ComputeGeometry, not inverted) is known.
+void QM6Kinematics(const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du,
+                   const InternalVec &alpha, Voigt &deps, double &omega);
 
 // f* = f_c + cond^T f_i with f_c = sum_g w det J B_c^T sigma_g and f_i the same
 // over the modes (f_i = 0 for a uniform stress). Returns false for an inverted cell.
