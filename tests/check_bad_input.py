@@ -42,6 +42,7 @@ cases = [
     (["-rmin_dphi_rise", "1.5"], "-rmin_dphi_rise"),
     (["-output_stroke", "-0.1"], "-output_stroke"),
     (["-output_stroke", "10"], "-output_stroke"),
+    (["-unload_increments", "-1"], "-unload_increments"),
 ]
 # Every case on 1 rank; on 2 ranks one of each kind (option value, option
 # choice, mesh file, output path), since mpirun takes ~2 s to wind down a

@@ -151,6 +151,7 @@ PetscErrorCode Problem::Run()
   breaks.push_back(end);
   std::vector<char> started(breaks.size(), 0);
   const double dlambda_trial = 1.0 / opt_.increments;
+  const double dlambda_unload = opt_.unload_increments > 0 ? 1.0 / opt_.unload_increments : dlambda_trial;
   Controller controller(*model_, *scene_, inertia_.get(), opt_, path_.duration);
   controller.SetResidual(forces_.f_res);
   double lambda_mark = 0;
@@ -182,7 +183,8 @@ PetscErrorCode Problem::Run()
       }
     const double next_break =
       *std::find_if(breaks.begin(), breaks.end(), [&](double b) { return b > lambda + kLambdaTol; });
-    const double dl = std::min(dlambda_trial, next_break - lambda);
+    const double dl_stage = lambda >= 1 - kLambdaTol ? dlambda_unload : dlambda_trial;
+    const double dl = std::min(dl_stage, next_break - lambda);
 
     // 3. Frames of the supports and contact nodes on the current geometry.
     PetscCall(scene_->BeginIncrement(*model_, lambda));
@@ -204,7 +206,7 @@ PetscErrorCode Problem::Run()
     if (inertia_) PetscCall(inertia_->Advance(du, taken.dl * path_.duration, done.dw_inertia));
     if (contact_ && contact_->active()) PetscCall(contact_->Commit(du, taken.dU, taken.scale, done.contact));
     const double lambda0 = lambda;
-    const bool on_break = std::abs(lambda + taken.dl - next_break) < kSnapToBreak * dlambda_trial;
+    const bool on_break = std::abs(lambda + taken.dl - next_break) < kSnapToBreak * dl_stage;
     lambda = on_break ? next_break : lambda + taken.dl;
     unsettled_ += taken.unsettled;
     events_inside_ += taken.event_inside;

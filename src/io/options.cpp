@@ -111,6 +111,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscOptionsBegin(comm, "", "tubeform: incremental driver (r_min method)", "tubeform");
   PetscCall(PetscOptionsInt("-increments", "Trial increments over the load path (r_min may cut each)", "tubeform",
                             opt.increments, &opt.increments, nullptr));
+  PetscCall(PetscOptionsInt("-unload_increments",
+                            "Trial increments of the unloading (the path past the end of loading: the tool scenes' "
+                            "springback, the slide scene's later stages); 0: as -increments",
+                            "tubeform", opt.unload_increments, &opt.unload_increments, nullptr));
   PetscCall(PetscOptionsReal("-rmin_deps", "r2: largest principal strain increment", "tubeform", opt.rmin_deps,
                              &opt.rmin_deps, nullptr));
   PetscCall(PetscOptionsReal("-rmin_domega", "r3: largest rotation increment (rad)", "tubeform", opt.rmin_domega,
@@ -354,6 +358,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-pressure_p %g: must be a finite pressure (MPa)", opt.pressure_p);
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);
+  PetscCheck(opt.unload_increments >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-unload_increments %d: must be at least 1 (or 0: as -increments)", (int)opt.unload_increments);
   PetscCheck(opt.output_stroke >= 0 && opt.output_stroke <= opt.stroke, comm, PETSC_ERR_USER_INPUT,
              "-output_stroke %g: must be between 0 (off) and the stroke %g mm", opt.output_stroke, opt.stroke);
   PetscCheck(!opt.output.empty(), comm, PETSC_ERR_USER_INPUT, "-output: an HDF5 file name is required");

@@ -30,6 +30,7 @@ struct Options {
   MaterialParams material;
   // Incremental driver (METHOD.md sec. 4)
   PetscInt increments = 10;                       // trial increments over the load path
+  PetscInt unload_increments = 0;                 // > 0: trial increments per unit of the path past lambda 1
   double rmin_deps = BodyParams{}.rmin_deps;      // r2: largest principal strain increment
   double rmin_domega = BodyParams{}.rmin_domega;  // r3: largest rotation increment (rad)
   double rmin_group_tol = BodyParams{}.group_tol; // events within (1 + tol) r_min are taken together
