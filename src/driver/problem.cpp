@@ -156,7 +156,8 @@ PetscErrorCode Problem::Run()
   controller.SetResidual(forces_.f_res);
   double lambda_mark = 0;
   PetscInt inc_mark = 0;
-  bool stalled = false, wrote_last = true;
+  bool stalled = false, exhausted = false, out_of_time = false, wrote_last = true;
+  const double t_start = MPI_Wtime();
   OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / opt_.stroke : 0);
   PetscCall(PetscLogStagePush(Log::load_stage));
   while (lambda < end - kLambdaTol) {
@@ -168,10 +169,20 @@ PetscErrorCode Problem::Run()
       }
       lambda_mark = lambda, inc_mark = inc;
     }
-    PetscCheck(++inc <= opt_.rmin_max_increments, comm_, PETSC_ERR_NOT_CONVERGED,
-               "no convergence of the load path: %d increments reached lambda = %g; raise -rmin_max_increments or "
-               "relax -rmin_deps / -rmin_domega",
-               (int)opt_.rmin_max_increments, lambda);
+    // ... and so does the increment budget (results up to here are written).
+    if (inc == opt_.rmin_max_increments) {
+      exhausted = true;
+      break;
+    }
+    if (opt_.time_limit > 0) {
+      int over = MPI_Wtime() - t_start > opt_.time_limit, any;
+      PetscCallMPI(MPI_Allreduce(&over, &any, 1, MPI_INT, MPI_LOR, comm_)); // ranks' clocks differ
+      if (any) {
+        out_of_time = true;
+        break;
+      }
+    }
+    ++inc;
 
     // 2. A stage of the load path (the paper's unloading) begins at its
     //    breakpoint; the loads at its start are the new stage's.
@@ -217,7 +228,7 @@ PetscErrorCode Problem::Run()
     wrote_last = output.Due(inc, lambda, on_break, lambda >= end - kLambdaTol);
     if (wrote_last) PetscCall(WriteFields(writer, step++, lambda));
   }
-  if (stalled && !wrote_last) PetscCall(WriteFields(writer, step++, lambda));
+  if ((stalled || exhausted || out_of_time) && !wrote_last) PetscCall(WriteFields(writer, step++, lambda));
   PetscCall(PetscLogStagePop());
 
   // 7. Final metrics and the result file (renamed into place only now).
@@ -227,7 +238,8 @@ PetscErrorCode Problem::Run()
                                                          {"final_load", last.load},
                                                          {"x_max", last.x_max},
                                                          {"y_max", last.y_max},
-                                                         {"stalled", stalled ? 1.0 : 0.0}};
+                                                         {"stalled", stalled ? 1.0 : 0.0},
+                                                         {"stopped", stalled || exhausted || out_of_time ? 1.0 : 0.0}};
   for (const auto &m : scene_->FinalMetrics(history_)) metrics.push_back(m);
   PetscCall(writer.Close(history_, metrics));
   {
@@ -237,7 +249,7 @@ PetscErrorCode Problem::Run()
                opt_.history_csv.c_str());
   }
   PetscCall(PetscLogStagePop());
-  if (!stalled) {
+  if (!stalled && !exhausted && !out_of_time) {
     PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n",
                           opt_.scene.c_str(), (int)inc, (int)system_.factorizations(), opt_.output.c_str()));
     PetscCall(PetscPrintf(comm_,
@@ -248,7 +260,14 @@ PetscErrorCode Problem::Run()
   }
   PetscCall(VecDestroy(&du));
   PetscCall(DestroyForces());
-  // A stall is a failure of the run, reported after its results are written.
+  // A stall or an exhausted budget is a failure of the run, reported after its results are written.
+  PetscCheck(!out_of_time, comm_, PETSC_ERR_NOT_CONVERGED,
+             "-time_limit %g s reached at stroke %g (lambda %.6g) after %d increments; results up to there are in %s",
+             opt_.time_limit, history_.rows().back().stroke, lambda, (int)inc, opt_.output.c_str());
+  PetscCheck(!exhausted, comm_, PETSC_ERR_NOT_CONVERGED,
+             "the load path needs more than -rmin_max_increments %d increments: stopped at stroke %g (lambda %.6g); "
+             "raise -rmin_max_increments or relax -rmin_deps / -rmin_domega; results up to there are in %s",
+             (int)opt_.rmin_max_increments, history_.rows().back().stroke, lambda, opt_.output.c_str());
   PetscCheck(!stalled, comm_, PETSC_ERR_NOT_CONVERGED,
              "the load path stalled at stroke %g (lambda %.6g): %d increments (-rmin_stall_increments) advanced "
              "lambda by less than %g; the history column limiter names what cut them (docs/theory.md, \"Stalls\"); "

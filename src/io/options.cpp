@@ -256,6 +256,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                              "Write fields each time the loading advances this much stroke (mm; later stages: the same "
                              "fraction of the stage) and at every stage end; 0: every -output_every increments",
                              "tubeform", opt.output_stroke, &opt.output_stroke, nullptr));
+  PetscCall(PetscOptionsReal("-time_limit",
+                             "Stop after this many seconds of the incremental loop, results up to there written, with "
+                             "an error (non-zero exit); 0: no limit",
+                             "tubeform", opt.time_limit, &opt.time_limit, nullptr));
   PetscCall(PetscOptionsBool("-monitor", "Print one line per increment on rank 0", "tubeform", opt.monitor,
                              &opt.monitor, nullptr));
   PetscOptionsEnd();
@@ -358,6 +362,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-pressure_p %g: must be a finite pressure (MPa)", opt.pressure_p);
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);
+  PetscCheck(opt.time_limit >= 0 && std::isfinite(opt.time_limit), comm, PETSC_ERR_USER_INPUT,
+             "-time_limit %g: must be 0 (no limit) or a positive number of seconds", opt.time_limit);
   PetscCheck(opt.unload_increments >= 0, comm, PETSC_ERR_USER_INPUT,
              "-unload_increments %d: must be at least 1 (or 0: as -increments)", (int)opt.unload_increments);
   PetscCheck(opt.output_stroke >= 0 && opt.output_stroke <= opt.stroke, comm, PETSC_ERR_USER_INPUT,
