@@ -160,33 +160,44 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::scan, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(du_local, &du));
+  // Kinematics of every point (the trial increment is linear in r on the
+  // start configuration), r2 and r3; then, with a plastic law only, the
+  // loading states, r1 and the transitions (event TfYield).
+  trial_.resize(state_.size());
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
     fe::ElemVec due;
     const fe::QuadGeometry *geo = CellGeometry(e, xe);
     if (!geo) continue;
     GatherCell(*mesh_, e, du, due);
     for (int g = 0; g < fe::kGauss; ++g) {
-      Voigt deps;
-      double omega;
-      PointState &ps = state_[fe::kGauss * e + g];
-      // The trial increment is linear in r on the start configuration.
+      auto &[deps, omega] = trial_[fe::kGauss * e + g];
       cells_.Kinematics((int)e, xe, *geo, g, due, deps, omega);
-      if (material_->plastic_law() && material_->Loading(ps, deps) != ps.plastic) {
-        ++local_switches;
-        if (apply) ps.plastic = !ps.plastic, Stale(fe::kGauss * e + g);
-      }
-      const size_t i = fe::kGauss * e + g;
-      double &r1 = yield_factor_[i];
-      r1 = material_->YieldOnset(ps, deps, omega);
-      if (!prm_.yield_inside) {
-        yield.Offer(r1, Limiter::Yield, mesh_->cell_orig[e]);
-      } else if (material_->plastic_law() && !ps.plastic) {
-        local_transitions += r1 < 1;
-        local_switches += ScanTransition(i, deps, omega, apply);
-      }
       strain.Offer(StrainFactor(deps, prm_.rmin_deps), Limiter::Strain, mesh_->cell_orig[e]);
       rotation.Offer(RotationFactor(omega, prm_.rmin_domega), Limiter::Rotation, mesh_->cell_orig[e]);
     }
+  }
+  if (material_->plastic_law()) {
+    PetscCall(PetscLogEventBegin(Log::yield, 0, 0, 0, 0));
+    for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
+      if (!CellGeometry(e, xe)) continue;
+      for (int g = 0; g < fe::kGauss; ++g) {
+        const size_t i = fe::kGauss * e + g;
+        const auto &[deps, omega] = trial_[i];
+        PointState &ps = state_[i];
+        if (material_->Loading(ps, deps) != ps.plastic) {
+          ++local_switches;
+          if (apply) ps.plastic = !ps.plastic, Stale(i);
+        }
+        const double r1 = yield_factor_[i] = material_->YieldOnset(ps, deps, omega);
+        if (!prm_.yield_inside) {
+          yield.Offer(r1, Limiter::Yield, mesh_->cell_orig[e]);
+        } else if (!ps.plastic) {
+          local_transitions += r1 < 1;
+          local_switches += ScanTransition(i, deps, omega, apply);
+        }
+      }
+    }
+    PetscCall(PetscLogEventEnd(Log::yield, 0, 0, 0, 0));
   }
   PetscCall(VecRestoreArrayRead(du_local, &du));
   {

@@ -183,7 +183,7 @@ PetscErrorCode ContactSet::UpdateIterates(Vec du, double dU, bool &converged)
   const double relax = ++iteration_ > kPlainIterations ? kRelax : 1.0;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(Log::contact, 0, 0, 0, 0));
+  PetscCall(PetscLogEventBegin(Log::friction, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(du, &d));
   PetscCall(VecGetArrayRead(system_->reactions_local(), &react));
   for (PetscInt node : candidates_) {
@@ -205,7 +205,7 @@ PetscErrorCode ContactSet::UpdateIterates(Vec du, double dU, bool &converged)
   PetscCallMPI(MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_LAND, comm()));
   converged = global;
   settled_ = converged;
-  PetscCall(PetscLogEventEnd(Log::contact, 0, 0, 0, 0));
+  PetscCall(PetscLogEventEnd(Log::friction, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

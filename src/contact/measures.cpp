@@ -3,7 +3,9 @@
 #include <cmath>
 
 #include "tubeform/contact/contact.hpp"
+
 #include "tubeform/contact/friction.hpp"
+#include "tubeform/core/log.hpp"
 
 namespace tf {
 
@@ -19,6 +21,7 @@ PetscErrorCode ContactSet::AddFrictionForces(Vec f) const
   PetscScalar *a;
   PetscFunctionBeginUser;
   if (!friction()) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscLogEventBegin(Log::friction, 0, 0, 0, 0));
   PetscCall(VecGetArray(f, &a));
   for (PetscInt node : candidates_) {
     if (!SlipFree(node) || !mesh_->node_owned[node]) continue;
@@ -26,6 +29,7 @@ PetscErrorCode ContactSet::AddFrictionForces(Vec f) const
     for (int k = 0; k < 2; ++k) a[mesh_->node_dof[node] + k] += fc[k];
   }
   PetscCall(VecRestoreArray(f, &a));
+  PetscCall(PetscLogEventEnd(Log::friction, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

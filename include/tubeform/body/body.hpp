@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "tubeform/assembly/system.hpp"
@@ -93,6 +94,7 @@ private:
   std::vector<double> fraction_;     // yield_inside: elastic fraction m in the assembled tangent (1: elastic)
   std::vector<PointState> onset_;    // yield_inside: state where the point meets the surface (plastic)
   std::vector<double> x_, u_;
+  std::vector<std::pair<Voigt, double>> trial_; // ScanTrial: strain and spin increments of each point
   // Cell tangents of the last assembly; a cell is recomputed only when its
   // geometry, stresses or point tangents changed since (the friction
   // iterations and re-solves of an increment change few or none).
