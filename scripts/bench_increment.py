@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """Per-increment cost of the incremental loop, from PETSc's -log_view.
 
-    /usr/bin/python3 scripts/bench_increment.py [NP]
+    /usr/bin/python3 scripts/bench_increment.py [NP] [SOLVER]
+
+SOLVER: mumps (default, options/solver.opts) or petsc (PETSc's own sparse LU
+as the redundant factorization: -redundant_pc_factor_mat_solver_type petsc).
 
 Runs the pressure scene (elastic, output only at the end) on meshes from the
 default (8 x 24) upwards, and prints, per increment, the time of assembly,
@@ -14,15 +17,16 @@ import subprocess
 import sys
 
 np_ = sys.argv[1] if len(sys.argv) > 1 else "1"
+solver = sys.argv[2] if len(sys.argv) > 2 else "mumps"
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
 incs = 20
-print(f"ranks {np_}, {incs} increments; times in ms per increment (max over ranks)")
+print(f"ranks {np_}, {incs} increments, factorization {solver}; times in ms per increment (max over ranks)")
 print(f"{'mesh':>12} {'dofs':>8} {'assemble':>9} {'bc':>7} {'solve':>8} {'  factor':>8} {'commit':>7} {'total':>8} {'sym.fact':>8}")
 for nt, nth in ((8, 24), (4, 48), (8, 192), (16, 384), (32, 768)):
     cmd = ["mpirun", "-n", np_, f"{root}/build/tubeform", "-options_file", "options/pressure.opts", "-mesh_nt", str(nt),
            "-mesh_ntheta", str(nth), "-increments", str(incs), "-output_every", str(incs), "-output", "/tmp/tubeform_bench.h5",
-           "-history_csv", "/tmp/tubeform_bench.csv", "-log_view"]
+           "-history_csv", "/tmp/tubeform_bench.csv", "-log_view", "-redundant_pc_factor_mat_solver_type", solver]
     out = subprocess.run(cmd, capture_output=True, text=True, cwd=root, env=env, check=True).stdout
 
     def ev(name):

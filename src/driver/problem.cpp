@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "tubeform/core/log.hpp"
 #include "tubeform/driver/output_schedule.hpp"
@@ -157,6 +158,8 @@ PetscErrorCode Problem::Run()
   double lambda_mark = 0;
   PetscInt inc_mark = 0;
   bool stalled = false, exhausted = false, out_of_time = false, wrote_last = true;
+  PetscErrorCode failure = 0;
+  std::string failure_text;
   const double t_start = MPI_Wtime();
   OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / opt_.stroke : 0);
   PetscCall(PetscLogStagePush(Log::load_stage));
@@ -205,8 +208,19 @@ PetscErrorCode Problem::Run()
     }
 
     // 4. The trial solution cut by r_min (paper eq. 16).
+    // An increment that fails on every rank alike (an element inverted, r_min
+    // vanishing, a singular system) ends the run after the results so far are
+    // written; errors (main's handler returns them) of other kinds end it at once.
     Increment taken;
-    PetscCall(controller.Advance(lambda, dl, end, du, taken));
+    failure = controller.Advance(lambda, dl, end, du, taken);
+    if (failure == PETSC_ERR_USER_INPUT || failure == PETSC_ERR_NOT_CONVERGED) {
+      const char *specific = nullptr;
+      PetscCall(PetscErrorMessage(failure, nullptr, (char **)&specific));
+      failure_text = specific ? specific : "the increment failed";
+      --inc;
+      break;
+    }
+    PetscCall(failure);
 
     // 5. Commit: stresses, plastic states and geometry; inertia; contact.
     Committed done;
@@ -228,18 +242,19 @@ PetscErrorCode Problem::Run()
     wrote_last = output.Due(inc, lambda, on_break, lambda >= end - kLambdaTol);
     if (wrote_last) PetscCall(WriteFields(writer, step++, lambda));
   }
-  if ((stalled || exhausted || out_of_time) && !wrote_last) PetscCall(WriteFields(writer, step++, lambda));
+  if ((stalled || exhausted || out_of_time || failure) && !wrote_last) PetscCall(WriteFields(writer, step++, lambda));
   PetscCall(PetscLogStagePop());
 
   // 7. Final metrics and the result file (renamed into place only now).
   PetscCall(PetscLogStagePush(Log::output_stage));
   const HistoryRow &last = history_.rows().back();
-  std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke},
-                                                         {"final_load", last.load},
-                                                         {"x_max", last.x_max},
-                                                         {"y_max", last.y_max},
-                                                         {"stalled", stalled ? 1.0 : 0.0},
-                                                         {"stopped", stalled || exhausted || out_of_time ? 1.0 : 0.0}};
+  std::vector<std::pair<std::string, double>> metrics = {
+    {"final_stroke", last.stroke},
+    {"final_load", last.load},
+    {"x_max", last.x_max},
+    {"y_max", last.y_max},
+    {"stalled", stalled ? 1.0 : 0.0},
+    {"stopped", stalled || exhausted || out_of_time || failure ? 1.0 : 0.0}};
   for (const auto &m : scene_->FinalMetrics(history_)) metrics.push_back(m);
   PetscCall(writer.Close(history_, metrics));
   {
@@ -249,7 +264,7 @@ PetscErrorCode Problem::Run()
                opt_.history_csv.c_str());
   }
   PetscCall(PetscLogStagePop());
-  if (!stalled && !exhausted && !out_of_time) {
+  if (!stalled && !exhausted && !out_of_time && !failure) {
     PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n",
                           opt_.scene.c_str(), (int)inc, (int)system_.factorizations(), opt_.output.c_str()));
     PetscCall(PetscPrintf(comm_,
@@ -260,7 +275,11 @@ PetscErrorCode Problem::Run()
   }
   PetscCall(VecDestroy(&du));
   PetscCall(DestroyForces());
-  // A stall or an exhausted budget is a failure of the run, reported after its results are written.
+  // A stall, an exhausted budget or a failed increment is a failure of the run,
+  // reported after its results are written.
+  PetscCheck(!failure, comm_, failure,
+             "%s (stroke %g, lambda %.6g, after %d increments); results up to there are in %s", failure_text.c_str(),
+             history_.rows().back().stroke, lambda, (int)inc, opt_.output.c_str());
   PetscCheck(!out_of_time, comm_, PETSC_ERR_NOT_CONVERGED,
              "-time_limit %g s reached at stroke %g (lambda %.6g) after %d increments; results up to there are in %s",
              opt_.time_limit, history_.rows().back().stroke, lambda, (int)inc, opt_.output.c_str());
