@@ -1,4 +1,4 @@
-"""A subset of the stability suite at the extremes (scripts/extremes.py; the
+"""Stops that write what was computed, then a subset of the stability suite at the extremes (scripts/extremes.py; the
 whole grid: scripts/tradeoff --extremes): no friction, an incompressible
 material, the coarsest mesh and the loosest strain limit, on 2 ranks with the
 default preset. Each run must finish with finite results (history and fields)
@@ -8,13 +8,34 @@ and a stopped run must have said why in one line per rank.
 import os
 import sys
 
-from tfcheck import Checks, args
+import h5py
+import numpy as np
+
+from tfcheck import Checks, args, out, run
 
 tf, mpirun, src = args()
 sys.path.insert(0, os.path.join(src, "scripts"))
 import extremes  # noqa: E402
 
 k = Checks("extremes")
+
+# A run stopped by its increment budget or its time limit: non-zero exit, one
+# error line per job naming the option, the result file in place (no
+# .partial) with the stop flagged and finite histories.
+for option, value, rows in (("-rmin_max_increments", 30, 31), ("-time_limit", 0.5, None)):
+    f = out(f"stop{option}.h5")
+    p = run(tf, mpirun, 2, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
+                            f"{src}/options/preset-fast.opts", option, value, "-output", f], check=False)
+    lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
+    k.check(p.returncode != 0 and len(lines) == 1 and option in lines[0],
+            f"{option} {value}: exit {p.returncode}, {len(lines)} error line(s) naming the option")
+    ok = os.path.exists(f) and not os.path.exists(f + ".partial")
+    if ok:
+        with h5py.File(f, "r") as h:
+            n = h["/history/stroke"].shape[0]
+            ok = h["/history"].attrs["stopped"] == 1 and all(np.isfinite(h["/history"][c][:]).all() for c in h["/history"])
+            ok = ok and (rows is None or n == rows) and h["/vertex_fields/displacement_u"].shape[0] >= 2
+    k.check(ok, f"{option} {value}: results written up to the stop, flagged stopped, finite")
 outdir = os.path.join(os.getcwd(), "extremes")
 os.makedirs(outdir, exist_ok=True)
 for name, extra in extremes.CASES:
