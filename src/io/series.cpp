@@ -13,17 +13,17 @@ namespace {
 
 // Opens dataset `path` grown to `step` + 1 steps of `dims` (dims[0] ignored),
 // creating it (chunked by step, unlimited in steps) at step 0.
-PetscErrorCode OpenStep(hid_t file, const char *path, int rank, hsize_t dims[], PetscInt step, const char *type,
+PetscErrorCode OpenStep(hid_t file, const char *path, int ndims, hsize_t dims[], PetscInt step, const char *type,
                         hid_t *dset)
 {
   PetscFunctionBeginUser;
   dims[0] = (hsize_t)step + 1;
   if (step == 0) {
-    hsize_t maxdims[3] = {H5S_UNLIMITED, dims[1], rank > 2 ? dims[2] : 0}, chunk[3] = {1, dims[1], dims[2]};
-    const hid_t space = H5Screate_simple(rank, dims, maxdims), plist = H5Pcreate(H5P_DATASET_CREATE);
+    hsize_t maxdims[3] = {H5S_UNLIMITED, dims[1], ndims > 2 ? dims[2] : 0}, chunk[3] = {1, dims[1], dims[2]};
+    const hid_t space = H5Screate_simple(ndims, dims, maxdims), plist = H5Pcreate(H5P_DATASET_CREATE);
     TF_CHECK_HDF5(space);
     TF_CHECK_HDF5(plist);
-    TF_CHECK_HDF5(H5Pset_chunk(plist, rank, chunk));
+    TF_CHECK_HDF5(H5Pset_chunk(plist, ndims, chunk));
     *dset = H5Dcreate2(file, path, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, plist, H5P_DEFAULT);
     TF_CHECK_HDF5(*dset);
     TF_CHECK_HDF5(H5Pclose(plist));
@@ -51,14 +51,14 @@ PetscErrorCode OpenStep(hid_t file, const char *path, int rank, hsize_t dims[], 
 }
 
 // Writes `count` rows of `dims[1..]` at (step, first) from `values`; count 0: nothing from this rank.
-PetscErrorCode WriteRows(hid_t dset, int rank, const hsize_t dims[], PetscInt step, hsize_t first, hsize_t count,
+PetscErrorCode WriteRows(hid_t dset, int ndims, const hsize_t dims[], PetscInt step, hsize_t first, hsize_t count,
                          const double *values)
 {
   PetscFunctionBeginUser;
   const hid_t file_space = H5Dget_space(dset);
   TF_CHECK_HDF5(file_space);
   hsize_t start[3] = {(hsize_t)step, first, 0}, block[3] = {1, count, dims[2]};
-  const hid_t mem_space = H5Screate_simple(rank, block, nullptr);
+  const hid_t mem_space = H5Screate_simple(ndims, block, nullptr);
   TF_CHECK_HDF5(mem_space);
   if (count > 0) {
     TF_CHECK_HDF5(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, nullptr, block, nullptr));
@@ -83,11 +83,11 @@ PetscErrorCode WriteSeriesStep(hid_t file, const char *path, Vec global, PetscIn
   PetscFunctionBeginUser;
   PetscCall(VecGetSize(global, &n));
   PetscCall(VecGetOwnershipRange(global, &lo, &hi));
-  const int rank = bs > 1 ? 3 : 2;
+  const int ndims = bs > 1 ? 3 : 2;
   hsize_t dims[3] = {0, (hsize_t)(n / bs), (hsize_t)bs};
-  PetscCall(OpenStep(file, path, rank, dims, step, bs > 1 ? "vector" : "scalar", &dset));
+  PetscCall(OpenStep(file, path, ndims, dims, step, bs > 1 ? "vector" : "scalar", &dset));
   PetscCall(VecGetArrayRead(global, &a));
-  PetscCall(WriteRows(dset, rank, dims, step, (hsize_t)(lo / bs), (hsize_t)((hi - lo) / bs), a));
+  PetscCall(WriteRows(dset, ndims, dims, step, (hsize_t)(lo / bs), (hsize_t)((hi - lo) / bs), a));
   PetscCall(VecRestoreArrayRead(global, &a));
   TF_CHECK_HDF5(H5Dclose(dset));
   PetscFunctionReturn(PETSC_SUCCESS);
