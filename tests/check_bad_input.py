@@ -44,6 +44,7 @@ cases = [
     (["-output_stroke", "10"], "-output_stroke"),
     (["-unload_increments", "-1"], "-unload_increments"),
     (["-time_limit", "-1"], "-time_limit"),
+    (["-max_energy_error", "0"], "-max_energy_error"),
 ]
 # Every case on 1 rank; on 2 ranks one of each kind (option value, option
 # choice, mesh file, output path), since mpirun takes ~2 s to wind down a

@@ -22,7 +22,7 @@ k = Checks("extremes")
 # A run stopped by its increment budget or its time limit: non-zero exit, one
 # error line per job naming the option, the result file in place (no
 # .partial) with the stop flagged and finite histories.
-for option, value, rows in (("-rmin_max_increments", 30, 31), ("-time_limit", 0.5, None)):
+for option, value, rows in (("-rmin_max_increments", 30, 31), ("-time_limit", 0.5, None), ("-max_energy_error", 0.001, None)):
     f = out(f"stop{option}.h5")
     p = run(tf, mpirun, 2, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
                             f"{src}/options/preset-fast.opts", option, value, "-output", f], check=False)

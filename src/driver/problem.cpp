@@ -239,6 +239,15 @@ PetscErrorCode Problem::Run()
 
     // 6. Forces, energies and the scene's measurements on the new configuration.
     PetscCall(Record(inc, lambda0, lambda, taken, done, du));
+    if (diverged_) {
+      char text[256];
+      PetscCall(PetscSNPrintf(text, sizeof(text),
+                              "the energy balance error %.1f %% passed -max_energy_error %g: the solution has left "
+                              "equilibrium (smaller -increments / -rmin_deps; docs/accuracy.md, \"Extremes\")",
+                              100 * history_.rows().back().energy_error, opt_.max_energy_error));
+      failure = PETSC_ERR_NOT_CONVERGED, failure_text = text, wrote_last = false;
+      break;
+    }
     wrote_last = output.Due(inc, lambda, on_break, lambda >= end - kLambdaTol);
     if (wrote_last) PetscCall(WriteFields(writer, step++, lambda));
   }

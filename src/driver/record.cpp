@@ -146,6 +146,7 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
                             "docs/theory.md\n",
                             100 * row.energy_error, (int)inc, lambda));
     }
+    diverged_ = std::abs(row.energy_error) > opt_.max_energy_error;
   }
   if (opt_.monitor) PetscCall(PrintMonitor(inc, lambda, taken, row));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -256,6 +256,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                              "Write fields each time the loading advances this much stroke (mm; later stages: the same "
                              "fraction of the stage) and at every stage end; 0: every -output_every increments",
                              "tubeform", opt.output_stroke, &opt.output_stroke, nullptr));
+  PetscCall(PetscOptionsReal("-max_energy_error",
+                             "Stop (results so far written, non-zero exit) when the energy balance error (self-check "
+                             "(a)) passes this fraction",
+                             "tubeform", opt.max_energy_error, &opt.max_energy_error, nullptr));
   PetscCall(PetscOptionsReal("-time_limit",
                              "Stop after this many seconds of the incremental loop, results up to there written, with "
                              "an error (non-zero exit); 0: no limit",
@@ -362,6 +366,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-pressure_p %g: must be a finite pressure (MPa)", opt.pressure_p);
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);
+  PetscCheck(opt.max_energy_error > 0, comm, PETSC_ERR_USER_INPUT,
+             "-max_energy_error %g: must be a positive fraction (e.g. 0.25)", opt.max_energy_error);
   PetscCheck(opt.time_limit >= 0 && std::isfinite(opt.time_limit), comm, PETSC_ERR_USER_INPUT,
              "-time_limit %g: must be 0 (no limit) or a positive number of seconds", opt.time_limit);
   PetscCheck(opt.unload_increments >= 0, comm, PETSC_ERR_USER_INPUT,

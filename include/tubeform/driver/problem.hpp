@@ -69,6 +69,7 @@ private:
   PetscInt unsettled_ = 0, events_inside_ = 0, inconsistent_ = 0;
   double worst_error_ = 0, worst_internal_ = 0; // largest |energy_error|, |internal_error| so far
   bool warned_ = false;                         // the energy warning was printed
+  bool diverged_ = false;                       // the energy balance error passed -max_energy_error
 
   PetscErrorCode CreateForces(Vec like);
   PetscErrorCode DestroyForces();

@@ -73,7 +73,10 @@ struct Options {
   std::string history_csv;
   PetscInt output_every = 1;
   double output_stroke = 0; // > 0: fields every this much stroke (mm) instead of every output_every increments
-  double time_limit = 0;    // > 0: stop (results written, non-zero exit) after this many seconds of loading
+  // Stop (results written) when the energy balance error passes this: a quarter of the work
+  // unaccounted for means the load-stroke curve is no longer a solution.
+  double max_energy_error = 0.25;
+  double time_limit = 0; // > 0: stop (results written, non-zero exit) after this many seconds of loading
   PetscBool monitor = PETSC_FALSE;
   PetscBool help = PETSC_FALSE;
 };
