@@ -53,7 +53,10 @@ def main(path, png):
     stage = hist.get("stage", np.zeros_like(hist["stroke"]))
     ax1.plot(hist["stroke"][stage == 0], hist["load"][stage == 0], "-", label="loading")
     if (stage == 1).any():
-        ax1.plot(hist["stroke"][stage == 1], hist["load"][stage == 1], "--", label="unloading")
+        # From the last loading row, so that a few long unloading steps still start at the peak.
+        un = np.flatnonzero(stage == 1)
+        un = np.concatenate(([un[0] - 1], un)) if un[0] > 0 else un
+        ax1.plot(hist["stroke"][un], hist["load"][un], "--", label="unloading")
         ax1.legend()
     xlabel, ylabel = "stroke U (mm)", "punch load, full tube (N/mm)"
     if scene == "pressure":
