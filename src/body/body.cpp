@@ -74,13 +74,13 @@ PetscErrorCode Body::AssembleTangent(System &system, const CellTerm &cell_term)
   PetscCall(PetscLogEventBegin(Log::assemble, 0, 0, 0, 0));
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
     if (ke_stale_[e]) {
-      CellCoordinates(e, xe);
+      const fe::QuadGeometry *geo = CellGeometry(e, xe);
       for (int g = 0; g < fe::kGauss; ++g) {
         const size_t i = fe::kGauss * e + g;
         c[g] = fraction_[i] < 1 ? TransitionTangent(i) : material_->Tangent(state_[i]);
         s[g] = state_[i].sigma;
       }
-      if (!cells_.Stiffness((int)e, xe, c, s, ke_[e])) {
+      if (!geo || !cells_.Stiffness((int)e, xe, *geo, c, s, ke_[e])) {
         bad = mesh_->cell_orig[e];
         continue;
       }
@@ -179,7 +179,7 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
   if (material_->plastic_law()) {
     PetscCall(PetscLogEventBegin(Log::yield, 0, 0, 0, 0));
     for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
-      if (!CellGeometry(e, xe)) continue;
+      if (!geometry_.ok[e]) continue; // inverted (the first loop made the cache)
       for (int g = 0; g < fe::kGauss; ++g) {
         const size_t i = fe::kGauss * e + g;
         const auto &[deps, omega] = trial_[i];
@@ -217,31 +217,31 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
 PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
 {
   const PetscScalar *du;
-  fe::QuadGeometry geo;
+  fe::QuadGeometry mid;
   // Sums (internal work, plastic work, plastic points: exact in a double) and a maximum (drift).
   double xe[2 * fe::kNodes], sums[3] = {0, 0, 0}, global_sums[3], drift = 0;
   const bool midpoint = prm_.kinematics == ObjectiveScheme::Midpoint;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::commit, 0, 0, 0, 0));
-  StaleAll(); // new geometry and stresses
-  geometry_.valid = false;
   PetscCall(VecGetArrayRead(du_local, &du));
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
     fe::ElemVec due;
     GatherCell(*mesh_, e, du, due);
-    CellCoordinates(e, xe);
-    // Gradients on the mid-increment configuration (Hughes-Winget: a rigid
-    // rotation then gives zero strain and an exact rotation of the stress),
-    // or on the start configuration (the paper's forward form).
-    if (midpoint)
+    // Gradients on the start configuration (the paper's forward form: the
+    // cached geometry), or on the mid-increment one (Hughes-Winget: a rigid
+    // rotation then gives zero strain and an exact rotation of the stress).
+    const fe::QuadGeometry *geo = CellGeometry(e, xe);
+    if (midpoint) {
       for (int k = 0; k < 2 * fe::kNodes; ++k) xe[k] += 0.5 * due[k];
-    if (!fe::ComputeGeometry(xe, geo)) continue; // reported by the next assembly
+      geo = fe::ComputeGeometry(xe, mid) ? &mid : nullptr;
+    }
+    if (!geo) continue; // reported by the next assembly
     for (int g = 0; g < fe::kGauss; ++g) {
       Voigt deps;
       double omega;
       PointState &ps = state_[fe::kGauss * e + g];
-      cells_.Kinematics((int)e, xe, geo, g, due, deps, omega);
+      cells_.Kinematics((int)e, xe, *geo, g, due, deps, omega);
       const Voigt old = ps.sigma;
       // Strang splitting: half the rotation, the constitutive increment in the
       // mid-rotated frame, the other half (forward scheme: all at once, first order).
@@ -266,8 +266,8 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
       const bool on_surface = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
       if (!ps.plastic && material_->plastic_law() && (reached || on_surface)) ps.plastic = true;
       sums[2] += ps.plastic;
-      for (int c = 0; c < kNumStress; ++c) sums[0] += geo.wdet[g] * 0.5 * (old[c] + ps.sigma[c]) * deps[c];
-      sums[1] += geo.wdet[g] * u.dwp;
+      for (int c = 0; c < kNumStress; ++c) sums[0] += geo->wdet[g] * 0.5 * (old[c] + ps.sigma[c]) * deps[c];
+      sums[1] += geo->wdet[g] * u.dwp;
       drift = std::max(drift, std::abs(u.drift));
     }
   }
@@ -277,6 +277,8 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
       x_[2 * n + k] += d;
       u_[2 * n + k] += d;
     }
+  StaleAll(); // new geometry and stresses
+  geometry_.valid = false;
   PetscCall(VecRestoreArrayRead(du_local, &du));
   PetscCall(MPIU_Allreduce(sums, global_sums, 3, MPIU_REAL, MPIU_SUM, comm()));
   PetscCall(MPIU_Allreduce(&drift, &info.drift, 1, MPIU_REAL, MPIU_MAX, comm()));

@@ -7,37 +7,35 @@ CellFormulation::CellFormulation(Formulation f, int num_cells) : kind_(f)
   if (f == Formulation::QM6) condensation_.assign(num_cells, Condensation{});
 }
 
-bool CellFormulation::Stiffness(int e, const double xe[2 * kNodes], const Mat4 c[kGauss], const Voigt s[kGauss],
-                                ElemMat &ke)
+bool CellFormulation::Stiffness(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 c[kGauss],
+                                const Voigt s[kGauss], ElemMat &ke)
 {
-  if (kind_ == Formulation::QM6) return QM6Stiffness(xe, c, s, true, ke, condensation_[e]);
-  QuadGeometry geo;
-  if (!ComputeGeometry(xe, geo)) return false;
+  if (kind_ == Formulation::QM6) return QM6Stiffness(xe, geo, c, s, true, ke, condensation_[e]);
   ElementStiffness(geo, kind_, c, s, true, ke);
   return true;
 }
 
-bool CellFormulation::Kinematics(int e, const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du,
+void CellFormulation::Kinematics(int e, const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du,
                                  Voigt &deps, double &omega) const
 {
   if (kind_ != Formulation::QM6) {
     IncrementKinematics(geo, g, kind_, du, deps, omega);
-    return true;
+    return;
   }
   // Internal modes of the increment from the condensation of its assembly.
   InternalVec alpha{};
   for (int k = 0; k < kInternal; ++k)
     for (int j = 0; j < kDofs; ++j) alpha[k] += condensation_[e][k][j] * du[j];
   QM6Kinematics(xe, geo, g, du, alpha, deps, omega);
-  return true;
 }
 
-bool CellFormulation::InternalForce(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss],
+void CellFormulation::InternalForce(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss],
                                     ElemVec &f) const
 {
-  if (kind_ == Formulation::QM6) return QM6InternalForce(xe, s, condensation_[e], f);
-  fe::InternalForce(geo, kind_, s, f);
-  return true;
+  if (kind_ == Formulation::QM6)
+    QM6InternalForce(xe, geo, s, condensation_[e], f);
+  else
+    fe::InternalForce(geo, kind_, s, f);
 }
 
 } // namespace tf::fe

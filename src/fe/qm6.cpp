@@ -41,15 +41,12 @@ void GradientsAt(const double xe[2 * kNodes], const QuadGeometry &geo, int g, do
   }
 }
 
-bool ComputeGradients(const double xe[2 * kNodes], Gradients &gr)
+void ComputeGradients(const double xe[2 * kNodes], const QuadGeometry &geo, Gradients &gr)
 {
-  QuadGeometry geo;
-  if (!ComputeGeometry(xe, geo)) return false;
   for (int g = 0; g < kGauss; ++g) {
     GradientsAt(xe, geo, g, gr.g[g]);
     gr.wdet[g] = geo.wdet[g];
   }
-  return true;
 }
 
 // Dof of component c of shape s among the 12: (u_x, u_y) node by node, then alpha[2 c + m].
@@ -104,8 +101,15 @@ bool Solve4(double a[kInternal][kInternal], double x[kInternal][kDofs])
 bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const Voigt sigma[kGauss], bool geometric,
                   ElemMat &ke, Condensation &cond)
 {
+  QuadGeometry geo;
+  return ComputeGeometry(xe, geo) && QM6Stiffness(xe, geo, tangent, sigma, geometric, ke, cond);
+}
+
+bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 tangent[kGauss],
+                  const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond)
+{
   Gradients gr;
-  if (!ComputeGradients(xe, gr)) return false;
+  ComputeGradients(xe, geo, gr);
   double k[kAll][kAll] = {};
   for (int g = 0; g < kGauss; ++g) {
     double b[kVoigt][kAll];
@@ -165,8 +169,17 @@ void QM6Kinematics(const double xe[2 * kNodes], const QuadGeometry &geo, int g, 
 
 bool QM6InternalForce(const double xe[2 * kNodes], const Voigt sigma[kGauss], const Condensation &cond, ElemVec &f)
 {
+  QuadGeometry geo;
+  if (!ComputeGeometry(xe, geo)) return false;
+  QM6InternalForce(xe, geo, sigma, cond, f);
+  return true;
+}
+
+void QM6InternalForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt sigma[kGauss],
+                      const Condensation &cond, ElemVec &f)
+{
   Gradients gr;
-  if (!ComputeGradients(xe, gr)) return false;
+  ComputeGradients(xe, geo, gr);
   // f12 = sum_g w det J B12^T sigma_g: per shape, grad P . sigma on each component.
   double f12[kAll] = {};
   for (int g = 0; g < kGauss; ++g) {
@@ -182,7 +195,6 @@ bool QM6InternalForce(const double xe[2 * kNodes], const Voigt sigma[kGauss], co
     for (int m = 0; m < kInternal; ++m) sum += cond[m][j] * f12[kDofs + m];
     f[j] = sum;
   }
-  return true;
 }
 
 } // namespace tf::fe

@@ -19,15 +19,18 @@ public:
 
   Formulation kind() const { return kind_; }
 
-  // Element tangent of cell e (corners xe, point tangents c, stresses s); for
-  // qm6 the cell's condensation is stored. False for an inverted cell.
-  bool Stiffness(int e, const double xe[2 * kNodes], const Mat4 c[kGauss], const Voigt s[kGauss], ElemMat &ke);
-  // Strain and spin increments at Gauss point g of cell e for the nodal
-  // increments du (qm6: its modes from the last stiffness of the cell).
-  bool Kinematics(int e, const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du, Voigt &deps,
+  // Each on cell e with corners xe and their geometry geo = ComputeGeometry(xe)
+  // (not inverted), computed once by the caller.
+  // Element tangent (point tangents c, stresses s); for qm6 the cell's
+  // condensation is stored. False when qm6's modes cannot be condensed.
+  bool Stiffness(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 c[kGauss],
+                 const Voigt s[kGauss], ElemMat &ke);
+  // Strain and spin increments at Gauss point g for the nodal increments du
+  // (qm6: its modes from the last stiffness of the cell).
+  void Kinematics(int e, const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du, Voigt &deps,
                   double &omega) const;
   // Nodal forces of the cell's Gauss-point stresses.
-  bool InternalForce(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss],
+  void InternalForce(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss],
                      ElemVec &f) const;
 
 private:

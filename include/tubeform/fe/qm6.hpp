@@ -37,12 +37,19 @@ bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const
 // (e.g. the mid-increment one). Returns false for an inverted cell.
 bool QM6Kinematics(const double xe[2 * kNodes], int g, const ElemVec &du, const InternalVec &alpha, Voigt &deps,
                    double &omega);
-// The same on a cell whose geometry (ComputeGeometry, not inverted) is known.
-void QM6Kinematics(const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du,
-                   const InternalVec &alpha, Voigt &deps, double &omega);
 
 // f* = f_c + cond^T f_i with f_c = sum_g w det J B_c^T sigma_g and f_i the same
 // over the modes (f_i = 0 for a uniform stress). Returns false for an inverted cell.
 bool QM6InternalForce(const double xe[2 * kNodes], const Voigt sigma[kGauss], const Condensation &cond, ElemVec &f);
+
+// The same three on a cell whose geometry geo = ComputeGeometry(xe) is known
+// (not inverted): the callers that keep it compute it once per configuration.
+// QM6Stiffness still returns false for a singular Kii.
+bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 tangent[kGauss],
+                  const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond);
+void QM6Kinematics(const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du,
+                   const InternalVec &alpha, Voigt &deps, double &omega);
+void QM6InternalForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt sigma[kGauss],
+                      const Condensation &cond, ElemVec &f);
 
 } // namespace tf::fe
