@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
+#include <cstdio>
 #include <string>
 
 #include "tubeform/core/log.hpp"
@@ -13,6 +15,17 @@ namespace tf {
 namespace {
 // A step ending this close to a breakpoint (in trial steps) ends on it.
 constexpr double kSnapToBreak = 1e-9;
+
+// printf into a string (the run's one-line messages).
+std::string Format(const char *fmt, ...)
+{
+  char buf[512];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(buf, sizeof(buf), fmt, args);
+  va_end(args);
+  return buf;
+}
 
 BodyParams MakeBodyParams(const Options &opt)
 {
@@ -157,9 +170,14 @@ PetscErrorCode Problem::Run()
   controller.SetResidual(forces_.f_res);
   double lambda_mark = 0;
   PetscInt inc_mark = 0;
-  bool stalled = false, exhausted = false, out_of_time = false, wrote_last = true;
-  PetscErrorCode failure = 0;
-  std::string failure_text;
+  // Why the run ends before the end of its path (empty: it does not), reported
+  // with code stop_code after the results so far are written.
+  std::string stop;
+  PetscErrorCode stop_code = 0;
+  bool stalled = false, wrote_last = true;
+  const auto where = [&] {
+    return Format("stroke %g, lambda %.6g, after %d increments", history_.rows().back().stroke, lambda, (int)inc);
+  };
   const double t_start = MPI_Wtime();
   OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / opt_.stroke : 0);
   PetscCall(PetscLogStagePush(Log::load_stage));
@@ -167,21 +185,28 @@ PetscErrorCode Problem::Run()
     // 1. The stall watch ends a load path that no longer advances.
     if (inc - inc_mark >= opt_.rmin_stall_increments) {
       if (lambda - lambda_mark < kStallAdvance) {
-        stalled = true;
+        stalled = true, stop_code = PETSC_ERR_NOT_CONVERGED;
+        stop = Format("the load path stalled (%s): %d increments (-rmin_stall_increments) advanced lambda by less than "
+                      "%g; the history column limiter names what cut them (docs/theory.md, \"Stalls\")",
+                      where().c_str(), (int)opt_.rmin_stall_increments, kStallAdvance);
         break;
       }
       lambda_mark = lambda, inc_mark = inc;
     }
     // ... and so does the increment budget (results up to here are written).
     if (inc == opt_.rmin_max_increments) {
-      exhausted = true;
+      stop_code = PETSC_ERR_NOT_CONVERGED;
+      stop = Format("the load path needs more than -rmin_max_increments %d increments (%s); raise "
+                    "-rmin_max_increments or relax -rmin_deps / -rmin_domega",
+                    (int)opt_.rmin_max_increments, where().c_str());
       break;
     }
     if (opt_.time_limit > 0) {
       int over = MPI_Wtime() - t_start > opt_.time_limit, any;
       PetscCallMPI(MPI_Allreduce(&over, &any, 1, MPI_INT, MPI_LOR, comm_)); // ranks' clocks differ
       if (any) {
-        out_of_time = true;
+        stop_code = PETSC_ERR_NOT_CONVERGED;
+        stop = Format("-time_limit %g s reached (%s)", opt_.time_limit, where().c_str());
         break;
       }
     }
@@ -212,15 +237,16 @@ PetscErrorCode Problem::Run()
     // vanishing, a singular system) ends the run after the results so far are
     // written; errors (main's handler returns them) of other kinds end it at once.
     Increment taken;
-    failure = controller.Advance(lambda, dl, end, du, taken);
-    if (failure == PETSC_ERR_USER_INPUT || failure == PETSC_ERR_NOT_CONVERGED) {
+    const PetscErrorCode failed = controller.Advance(lambda, dl, end, du, taken);
+    if (failed == PETSC_ERR_USER_INPUT || failed == PETSC_ERR_NOT_CONVERGED) {
       const char *specific = nullptr;
-      PetscCall(PetscErrorMessage(failure, nullptr, (char **)&specific));
-      failure_text = specific ? specific : "the increment failed";
+      PetscCall(PetscErrorMessage(failed, nullptr, (char **)&specific));
       --inc;
+      stop_code = failed;
+      stop = Format("%s (%s)", specific ? specific : "the increment failed", where().c_str());
       break;
     }
-    PetscCall(failure);
+    PetscCall(failed);
 
     // 5. Commit: stresses, plastic states and geometry; inertia; contact.
     Committed done;
@@ -240,30 +266,24 @@ PetscErrorCode Problem::Run()
     // 6. Forces, energies and the scene's measurements on the new configuration.
     PetscCall(Record(inc, lambda0, lambda, taken, done, du));
     if (diverged_) {
-      char text[256];
-      PetscCall(PetscSNPrintf(text, sizeof(text),
-                              "the energy balance error %.1f %% passed -max_energy_error %g: the solution has left "
-                              "equilibrium (smaller -increments / -rmin_deps; docs/accuracy.md, \"Extremes\")",
-                              100 * history_.rows().back().energy_error, opt_.max_energy_error));
-      failure = PETSC_ERR_NOT_CONVERGED, failure_text = text, wrote_last = false;
+      stop_code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
+      stop = Format("the energy balance error %.1f %% passed -max_energy_error %g: the solution has left equilibrium "
+                    "(smaller -increments / -rmin_deps; docs/accuracy.md, \"Extremes\") (%s)",
+                    100 * history_.rows().back().energy_error, opt_.max_energy_error, where().c_str());
       break;
     }
     wrote_last = output.Due(inc, lambda, on_break, lambda >= end - kLambdaTol);
     if (wrote_last) PetscCall(WriteFields(writer, step++, lambda));
   }
-  if ((stalled || exhausted || out_of_time || failure) && !wrote_last) PetscCall(WriteFields(writer, step++, lambda));
+  if (!stop.empty() && !wrote_last) PetscCall(WriteFields(writer, step++, lambda));
   PetscCall(PetscLogStagePop());
 
   // 7. Final metrics and the result file (renamed into place only now).
   PetscCall(PetscLogStagePush(Log::output_stage));
   const HistoryRow &last = history_.rows().back();
   std::vector<std::pair<std::string, double>> metrics = {
-    {"final_stroke", last.stroke},
-    {"final_load", last.load},
-    {"x_max", last.x_max},
-    {"y_max", last.y_max},
-    {"stalled", stalled ? 1.0 : 0.0},
-    {"stopped", stalled || exhausted || out_of_time || failure ? 1.0 : 0.0}};
+    {"final_stroke", last.stroke}, {"final_load", last.load},        {"x_max", last.x_max},
+    {"y_max", last.y_max},         {"stalled", stalled ? 1.0 : 0.0}, {"stopped", stop.empty() ? 0.0 : 1.0}};
   for (const auto &m : scene_->FinalMetrics(history_)) metrics.push_back(m);
   PetscCall(writer.Close(history_, metrics));
   {
@@ -273,7 +293,7 @@ PetscErrorCode Problem::Run()
                opt_.history_csv.c_str());
   }
   PetscCall(PetscLogStagePop());
-  if (!stalled && !exhausted && !out_of_time && !failure) {
+  if (stop.empty()) {
     PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n",
                           opt_.scene.c_str(), (int)inc, (int)system_.factorizations(), opt_.output.c_str()));
     PetscCall(PetscPrintf(comm_,
@@ -284,24 +304,8 @@ PetscErrorCode Problem::Run()
   }
   PetscCall(VecDestroy(&du));
   PetscCall(DestroyForces());
-  // A stall, an exhausted budget or a failed increment is a failure of the run,
-  // reported after its results are written.
-  PetscCheck(!failure, comm_, failure,
-             "%s (stroke %g, lambda %.6g, after %d increments); results up to there are in %s", failure_text.c_str(),
-             history_.rows().back().stroke, lambda, (int)inc, opt_.output.c_str());
-  PetscCheck(!out_of_time, comm_, PETSC_ERR_NOT_CONVERGED,
-             "-time_limit %g s reached at stroke %g (lambda %.6g) after %d increments; results up to there are in %s",
-             opt_.time_limit, history_.rows().back().stroke, lambda, (int)inc, opt_.output.c_str());
-  PetscCheck(!exhausted, comm_, PETSC_ERR_NOT_CONVERGED,
-             "the load path needs more than -rmin_max_increments %d increments: stopped at stroke %g (lambda %.6g); "
-             "raise -rmin_max_increments or relax -rmin_deps / -rmin_domega; results up to there are in %s",
-             (int)opt_.rmin_max_increments, history_.rows().back().stroke, lambda, opt_.output.c_str());
-  PetscCheck(!stalled, comm_, PETSC_ERR_NOT_CONVERGED,
-             "the load path stalled at stroke %g (lambda %.6g): %d increments (-rmin_stall_increments) advanced "
-             "lambda by less than %g; the history column limiter names what cut them (docs/theory.md, \"Stalls\"); "
-             "results up to there are in %s",
-             history_.rows().back().stroke, lambda, (int)opt_.rmin_stall_increments, kStallAdvance,
-             opt_.output.c_str());
+  // An early stop is a failure of the run, reported after its results are written.
+  PetscCheck(stop.empty(), comm_, stop_code, "%s; results up to there are in %s", stop.c_str(), opt_.output.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -135,7 +135,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   const std::string stall_help =
     "Stop (results so far written) when this many increments advance the load path by less than " +
     std::to_string(kStallAdvance);
-  PetscCall(PetscOptionsInt("-rmin_max_increments", "Stop with an error after this many increments", "tubeform",
+  PetscCall(PetscOptionsInt("-rmin_max_increments",
+                            "Stop (results so far written, non-zero exit) after this many increments", "tubeform",
                             opt.rmin_max_increments, &opt.rmin_max_increments, nullptr));
   PetscCall(PetscOptionsInt("-rmin_stall_increments", stall_help.c_str(), "tubeform", opt.rmin_stall_increments,
                             &opt.rmin_stall_increments, nullptr));

@@ -13,9 +13,6 @@
 
 namespace tf {
 
-// HDF5 calls return a negative value on failure.
-#define TF_CHECK_HDF5(expr) PetscCheck((expr) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call failed: %s", #expr)
-
 PetscErrorCode CheckWritable(MPI_Comm comm, const std::string &path, const char *option)
 {
   PetscMPIInt rank;

@@ -6,9 +6,6 @@
 
 namespace tf {
 
-// HDF5 calls return a negative value on failure.
-#define TF_CHECK_HDF5(expr) PetscCheck((expr) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call failed: %s", #expr)
-
 namespace {
 
 // Opens dataset `path` grown to `step` + 1 steps of `dims` (dims[0] ignored),
