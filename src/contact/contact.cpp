@@ -1,4 +1,6 @@
 #include "tubeform/contact/contact.hpp"
+#include <cstdio>
+#include <cstdlib>
 
 #include <algorithm>
 #include <cmath>
@@ -45,6 +47,7 @@ void ContactSet::Setup(Mesh &mesh, System &system, const std::vector<double> &x,
   r4_.assign(n, kNever);
   r5_.assign(n, kNever);
   n_.assign(n, Vec2{0, -1});
+  pending_.assign(n, Vec2{0, 0});
   l_.assign(n, Vec2{-1, 0});
   for (const auto &s : spec.symmetry)
     for (PetscInt node : mesh.node_sets[s.first]) sym_dir_[node] = s.second;
@@ -72,6 +75,7 @@ void ContactSet::Remove()
   std::fill(frozen_.begin(), frozen_.end(), 0);
   std::fill(fn_.begin(), fn_.end(), 0.0);
   std::fill(x_.begin(), x_.end(), 0.0);
+  std::fill(pending_.begin(), pending_.end(), Vec2{0, 0}); // the scene has taken them over with the contact forces
   removed_ = true;
 }
 
@@ -88,10 +92,10 @@ PetscErrorCode ContactSet::BeginIncrement()
     if (!contact_[node]) continue;
     const Projection pr = tool_.Project(Position(node));
     if (pr.segment < 0) {
-      // Slid off the end of the tool: released (the force it drops goes into the next report).
+      // Slid off the end of the tool: released, its force unloaded by the next steps (and reported).
       if (mesh_->node_owned[node]) slid_off_ = std::max(slid_off_, fn_[node]);
       contact_[node] = 0;
-      fn_[node] = x_[node] = 0;
+      Leave(node, 1.0);
       continue;
     }
     TakeFrame(node, pr);
@@ -139,6 +143,15 @@ PetscErrorCode ContactSet::Constrain(double dU)
     for (PetscInt node : candidates_) dxk_[node] = !contact_[node] ? 0.0 : dU != 0 ? rate_[node] * dU : last_dx_[node];
   predict_ = false;
   for (PetscInt node : candidates_) {
+    // Forces the tool no longer carries go to zero as loads: pending ones (a
+    // node back in contact hands them to the tool again, through its normal
+    // reaction), and the start force of a node released in this trial.
+    Vec2 f = pending_[node];
+    if (released_[node] && mesh_->node_owned[node]) {
+      const Vec2 start = NodeForce(node, true);
+      f = {f[0] + start[0], f[1] + start[1]};
+    }
+    if (f[0] != 0 || f[1] != 0) system_->AddForce(node, -f[0], -f[1]);
     if (!contact_[node]) continue;
     // Follow the tool along n and close any gap left by the last increment.
     const double dn = dU * Dot(dir, n_[node]) - gap_[node];
@@ -289,6 +302,15 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+void ContactSet::Leave(PetscInt node, double share)
+{
+  // A force below the scale of zero stays zero (round-off of an exact r5 event).
+  const Vec2 f = NodeForce(node, true);
+  if (mesh_->node_owned[node] && share * std::hypot(f[0], f[1]) > f_small_)
+    for (int k = 0; k < 2; ++k) pending_[node][k] += share * f[k];
+  fn_[node] = x_[node] = 0;
+}
+
 void ContactSet::TakeFrame(PetscInt node, const Projection &pr)
 {
   segment_[node] = pr.segment;
@@ -310,6 +332,8 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
   PetscCall(VecGetArrayRead(system_->reactions_local(), &react));
   for (PetscInt node : candidates_) {
     const bool owned = mesh_->node_owned[node];
+    // The step removed the share r of the pending force.
+    for (int k = 0; k < 2; ++k) pending_[node][k] *= 1 - r;
     if (contact_[node]) {
       const double fl_old = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
       const double dx = Slip(node, Increment(d, node), dU);
@@ -322,16 +346,19 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
       }
       if (owned) local[1] = std::max(local[1], -fn_[node]); // measured before any release
       // r5: released when its normal force has reached zero in the step, or
-      // ends it below the force scale of zero (a re-solved step's end).
+      // ends it below the force scale of zero (a re-solved step's end, a
+      // grazing node held for the step in tension); what force is left is
+      // unloaded by the next steps.
       if (r5_[node] <= event || fn_[node] < -f_small_) {
         if (owned) local[2] = std::max(local[2], fn_[node]);
         contact_[node] = 0;
-        fn_[node] = x_[node] = 0;
+        Leave(node, 1.0);
       }
     } else if (released_[node]) {
-      // Released in this step (pulled off without force).
+      // Released in this step (pulled off without force): the step removed
+      // the share r of its start force.
       if (owned) local[2] = std::max(local[2], fn_[node]);
-      fn_[node] = x_[node] = 0;
+      Leave(node, 1 - r);
       released_[node] = 0;
     } else if (r4_[node] <= event) {
       contact_[node] = 1;

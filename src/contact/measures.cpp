@@ -11,7 +11,7 @@ namespace tf {
 
 Vec2 ContactSet::NodeForce(PetscInt node, bool with_normal) const
 {
-  const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
+  const double fl = Frictional(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
   const double fn = with_normal ? fn_[node] : 0.0;
   return {fn * n_[node][0] + fl * l_[node][0], fn * n_[node][1] + fl * l_[node][1]};
 }
@@ -43,6 +43,18 @@ PetscErrorCode ContactSet::AddContactForces(Vec f) const
     const Vec2 fc = NodeForce(node, true);
     for (int k = 0; k < 2; ++k) a[mesh_->node_dof[node] + k] += fc[k];
   }
+  PetscCall(VecRestoreArray(f, &a));
+  PetscCall(AddPendingForces(f));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::AddPendingForces(Vec f) const
+{
+  PetscScalar *a;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(f, &a));
+  for (PetscInt node : candidates_)
+    for (int k = 0; k < 2; ++k) a[mesh_->node_dof[node] + k] += pending_[node][k];
   PetscCall(VecRestoreArray(f, &a));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -58,6 +58,8 @@ PetscErrorCode Problem::ExternalForces(double lambda)
 {
   PetscFunctionBeginUser;
   PetscCall(scene_->ExternalForce(*model_, lambda, forces_.f_app));
+  // Forces of released contact nodes not yet unloaded act as applied loads.
+  if (contact_ && contact_->active()) PetscCall(contact_->AddPendingForces(forces_.f_app));
   PetscCall(VecCopy(forces_.f_app, forces_.f_ext));
   if (contact_ && contact_->active()) PetscCall(contact_->AddFrictionForces(forces_.f_ext));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -4,6 +4,15 @@
 // its normal force is the reaction, and friction enters as an unsymmetric
 // correction of its l row. State lives on every rank for its local nodes
 // (owned and ghost) and is updated identically from ghost-filled vectors.
+//
+// A force the tool stops carrying is unloaded, never dropped: a node released
+// within a step has its start force removed as a load of that step; a node
+// that leaves with force at a commit (a held grazing node ending in tension, a
+// release inside the group tolerance, a slide off the tool's end) keeps it as
+// a pending force, removed as a load over the next increments (the share r of
+// it each commits). Without this the body would keep the released force as a
+// permanent out-of-balance force (the method never corrects equilibrium), and
+// its work would leak out of the energy balance increment after increment.
 // The driver holds the set; scenes read its forces for their measurements.
 #pragma once
 
@@ -52,11 +61,12 @@ struct ContactParams {
 // What a commit did, for the history (docs/output.md): the friction work and
 // the diagnostics that show whether the step's events were resolved.
 struct ContactCommit {
-  double w_friction = 0;    // friction dissipation of the increment, -sum f_l,mid dslip
-  double tension = 0;       // largest tensile normal force of a contact node at the end of the step, before releases
-  double release_force = 0; // largest compressive normal force dropped by a release (or a slide off the tool's end)
-  double gap = 0;           // largest gap (>= 0) of a node in contact after the commit (mm)
-  double penetration = 0;   // largest penetration (>= 0) of a candidate node into the tool after the commit (mm)
+  double w_friction = 0; // friction dissipation of the increment, -sum f_l,mid dslip
+  double tension = 0;    // largest tensile normal force of a contact node at the end of the step, before releases
+  double release_force =
+    0;            // largest compressive normal force left by a release (or a slide off the tool's end) to unload
+  double gap = 0; // largest gap (>= 0) of a node in contact after the commit (mm)
+  double penetration = 0; // largest penetration (>= 0) of a candidate node into the tool after the commit (mm)
 };
 
 // What a scene asks of the driver's contact set.
@@ -113,8 +123,12 @@ public:
 
   // Friction forces on the body (owned nodes, global frame) into a contribution vector.
   PetscErrorCode AddFrictionForces(Vec f) const;
-  // Contact force on the body of every owned contact node, global frame, added to f.
+  // Every force the tool still puts on the body (contact nodes and the pending
+  // forces of released ones), owned nodes, global frame, added to f.
   PetscErrorCode AddContactForces(Vec f) const;
+  // The pending forces of released nodes (owned nodes, global frame) added to
+  // f: applied loads until the following increments have removed them.
+  PetscErrorCode AddPendingForces(Vec f) const;
   // Collective: sum over contact nodes of the force on the body (global frame).
   PetscErrorCode TotalForce(double force[2]) const;
   PetscErrorCode Count(PetscInt &n) const;
@@ -155,17 +169,25 @@ private:
   int iteration_ = 0;
   std::vector<char> released_, frozen_; // within the current step
   double f_small_ = 0;                  // contact forces below this count as zero
-  double slid_off_ = 0;                 // largest normal force dropped by a slide off the tool's end (next report)
+  double slid_off_ = 0;                 // largest normal force left by a slide off the tool's end (next report)
   std::vector<Vec2> n_, l_;
+  std::vector<Vec2>
+    pending_; // force (global frame) a released owned node still puts on the body, unloaded by the next steps
 
   MPI_Comm comm() const { return mesh_->comm; }
-  bool SlipFree(PetscInt node) const
+  // Friction acts along l: not on a node whose both components are held.
+  bool Frictional(PetscInt node) const
   {
-    return contact_[node] && !global_frame_[node] && sym_dir_[node][0] == 0 && sym_dir_[node][1] == 0;
+    return !global_frame_[node] && sym_dir_[node][0] == 0 && sym_dir_[node][1] == 0;
   }
+  bool SlipFree(PetscInt node) const { return contact_[node] && Frictional(node); }
   Vec2 Position(PetscInt node) const { return {(*x_body_)[2 * node], (*x_body_)[2 * node + 1]}; }
-  // The force the tool puts on a contact node: friction only, or normal plus friction.
+  // The force of a node's contact state (f_n, slip) on the body: friction only,
+  // or normal plus friction.
   Vec2 NodeForce(PetscInt node, bool with_normal) const;
+  // The node leaves the tool: `share` of the force of its state becomes
+  // pending (owned nodes), and the state is cleared.
+  void Leave(PetscInt node, double share);
   // A symmetry plane's held direction is a global axis: the index of that axis.
   static int HeldComponent(const Vec2 &s) { return std::abs(s[0]) > std::abs(s[1]) ? 0 : 1; }
   // Frame, gap and curvature of a contact node from its projection on the tool.
