@@ -74,7 +74,7 @@ PetscErrorCode Solve(Block &b, double fy, StepLimit &limit)
   for (PetscInt n : top) mine += b.mesh.node_owned[n];
   PetscCall(MPIU_Allreduce(&mine, &all, 1, MPIU_INT, MPI_SUM, b.mesh.comm));
   PetscCall(b.system.Begin());
-  PetscCall(b.body.AssembleTangent(b.system, nullptr));
+  PetscCall(b.body.AssembleTangent(b.system));
   PetscCall(b.contact.BeginIncrement());
   PetscCall(b.contact.Constrain(0.0));
   for (PetscInt n : top)

@@ -10,10 +10,12 @@ namespace tf {
 System::~System()
 {
   (void)MatDestroy(&k_);
+  (void)MatDestroy(&kb_);
   (void)MatDestroy(&reaction_rows_);
   (void)VecDestroy(&rhs_);
   (void)VecDestroy(&sol_);
   (void)VecDestroy(&fixed_);
+  (void)VecDestroy(&diag_);
   (void)VecDestroy(&f_local_);
   (void)VecDestroy(&reactions_local_);
   (void)VecDestroy(&reactions_global_);
@@ -30,9 +32,13 @@ PetscErrorCode System::Setup(const Mesh &mesh)
   PetscCall(MatSetOption(k_, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
   PetscCall(MatSetOption(k_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
   PetscCall(MatGetLocalToGlobalMapping(k_, &ltog_, nullptr));
+  PetscCall(DMCreateMatrix(mesh.dm, &kb_));
+  PetscCall(MatSetOption(kb_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  target_ = k_;
   PetscCall(DMCreateGlobalVector(mesh.dm, &rhs_));
   PetscCall(VecDuplicate(rhs_, &sol_));
   PetscCall(VecDuplicate(rhs_, &fixed_));
+  PetscCall(VecDuplicate(rhs_, &diag_));
   PetscCall(DMCreateLocalVector(mesh.dm, &f_local_));
   PetscCall(DMCreateLocalVector(mesh.dm, &reactions_local_));
   PetscCall(DMCreateGlobalVector(mesh.dm, &reactions_global_));
@@ -66,9 +72,11 @@ PetscErrorCode System::Setup(const Mesh &mesh)
 
 void System::SetFrame(PetscInt node, double angle)
 {
+  const double c = std::cos(angle), s = std::sin(angle);
+  if (!has_frame_[node] || c != cos_[node] || s != sin_[node]) kb_valid_ = false;
   has_frame_[node] = 1;
-  cos_[node] = std::cos(angle);
-  sin_[node] = std::sin(angle);
+  cos_[node] = c;
+  sin_[node] = s;
 }
 
 bool System::PrescribeAlong(PetscInt node, double dx, double dy, double value)
@@ -85,6 +93,7 @@ bool System::PrescribeAlong(PetscInt node, double dx, double dy, double value)
 
 void System::ClearFrames()
 {
+  kb_valid_ = false;
   std::fill(has_frame_.begin(), has_frame_.end(), 0);
   std::fill(cos_.begin(), cos_.end(), 1.0);
   std::fill(sin_.begin(), sin_.end(), 0.0);
@@ -116,6 +125,44 @@ PetscErrorCode System::Begin()
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode System::BeginBody(bool &rebuild)
+{
+  int mine = rebuild || !kb_valid_, any;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_LOR, mesh_->comm));
+  rebuild = any;
+  if (rebuild) PetscCall(MatZeroEntries(kb_));
+  target_ = kb_;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode System::AddBodyElement(PetscInt cell, const fe::ElemMat &ke)
+{
+  PetscFunctionBeginUser;
+  PetscCall(AddBlock(&mesh_->cell_nodes[4 * cell], fe::kNodes, &ke[0][0]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode System::EndBody()
+{
+  PetscFunctionBeginUser;
+  target_ = k_;
+  PetscCall(MatAssemblyBegin(kb_, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(kb_, MAT_FINAL_ASSEMBLY));
+  kb_valid_ = true;
+  PetscCall(MatCopy(kb_, k_, SAME_NONZERO_PATTERN));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode System::AddDiagonal(Vec d, double scale)
+{
+  PetscFunctionBeginUser;
+  // K is assembled here (EndBody's copy); the diagonal goes in directly.
+  PetscCall(VecAXPBY(diag_, scale, 0.0, d));
+  PetscCall(MatDiagonalSet(k_, diag_, ADD_VALUES));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode System::AddElement(PetscInt cell, const fe::ElemMat &ke)
 {
   PetscFunctionBeginUser;
@@ -143,7 +190,7 @@ PetscErrorCode System::AddBlock(const PetscInt *nodes, int nn, const double *k_i
     idx[2 * a] = mesh_->node_dof[nodes[a]];
     idx[2 * a + 1] = mesh_->node_dof[nodes[a]] + 1;
   }
-  PetscCall(MatSetValuesLocal(k_, nd, idx, nd, idx, k, ADD_VALUES));
+  PetscCall(MatSetValuesLocal(target_, nd, idx, nd, idx, k, ADD_VALUES));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

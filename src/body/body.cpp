@@ -62,9 +62,9 @@ const fe::QuadGeometry *Body::CellGeometry(PetscInt e, double xe[2 * fe::kNodes]
   return geometry_.ok[e] ? &geometry_.geo[e] : nullptr;
 }
 
-PetscErrorCode Body::AssembleTangent(System &system, const CellTerm &cell_term)
+PetscErrorCode Body::AssembleTangent(System &system)
 {
-  fe::ElemMat ke;
+  fe::ElemMat old;
   Mat4 c[fe::kGauss];
   Voigt s[fe::kGauss];
   double xe[2 * fe::kNodes];
@@ -72,8 +72,14 @@ PetscErrorCode Body::AssembleTangent(System &system, const CellTerm &cell_term)
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::assemble, 0, 0, 0, 0));
+  // Rebuilt when most cells changed (a new configuration after a commit): a
+  // kept matrix updated by differences would carry their round-off along.
+  bool rebuild = 2 * std::count(ke_stale_.begin(), ke_stale_.end(), 1) > (long)mesh_->num_cells;
+  PetscCall(system.BeginBody(rebuild));
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
-    if (ke_stale_[e]) {
+    const bool stale = ke_stale_[e];
+    if (stale) {
+      old = ke_[e];
       const fe::QuadGeometry *geo = CellGeometry(e, xe);
       for (int g = 0; g < fe::kGauss; ++g) {
         const size_t i = fe::kGauss * e + g;
@@ -86,15 +92,20 @@ PetscErrorCode Body::AssembleTangent(System &system, const CellTerm &cell_term)
       }
       ke_stale_[e] = 0;
     }
-    ke = ke_[e];
-    if (cell_term) cell_term(e, ke);
-    PetscCall(system.AddElement(e, ke));
+    if (rebuild) {
+      PetscCall(system.AddBodyElement(e, ke_[e]));
+    } else if (stale) {
+      for (int r = 0; r < 2 * fe::kNodes; ++r)
+        for (int k = 0; k < 2 * fe::kNodes; ++k) old[r][k] = ke_[e][r][k] - old[r][k];
+      PetscCall(system.AddBodyElement(e, old));
+    }
   }
   PetscCall(MPIU_Allreduce(&bad, &anybad, 1, MPIU_INT, MPI_MAX, comm()));
   PetscCheck(
     anybad < 0, comm(), PETSC_ERR_USER_INPUT,
     "element %d is inverted (det J <= 0): the increment is too large (lower -rmin_deps) or the mesh is tangled",
     (int)anybad);
+  PetscCall(system.EndBody());
   PetscCall(PetscLogEventEnd(Log::assemble, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

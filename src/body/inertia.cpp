@@ -2,8 +2,11 @@
 
 namespace tf {
 
-void Inertia::Setup(const Body &body, double rho, bool active)
+PetscErrorCode Inertia::Setup(const Body &body, double rho, bool active)
 {
+  Vec local;
+  PetscScalar *m;
+  PetscFunctionBeginUser;
   const Mesh &mesh = body.mesh();
   body_ = &body;
   active_ = active;
@@ -15,15 +18,26 @@ void Inertia::Setup(const Body &body, double rho, bool active)
     body.CellCoordinates(e, xe);
     fe::LumpedMass(xe, rho, &mass_[fe::kNodes * e]);
   }
+  PetscCall(VecDestroy(&mass_global_));
+  PetscCall(DMCreateGlobalVector(mesh.dm, &mass_global_));
+  PetscCall(DMGetLocalVector(mesh.dm, &local));
+  PetscCall(VecZeroEntries(local));
+  PetscCall(VecGetArray(local, &m));
+  ForEachMassShare([&](PetscInt n, double share) {
+    for (int k = 0; k < 2; ++k) m[mesh.node_dof[n] + k] += share;
+  });
+  PetscCall(VecRestoreArray(local, &m));
+  PetscCall(VecZeroEntries(mass_global_));
+  PetscCall(DMLocalToGlobal(mesh.dm, local, ADD_VALUES, mass_global_));
+  PetscCall(DMRestoreLocalVector(mesh.dm, &local));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-void Inertia::AddCellMass(PetscInt e, double dt, fe::ElemMat &ke) const
+PetscErrorCode Inertia::AddMass(System &system, double dt) const
 {
-  for (int a = 0; a < fe::kNodes; ++a) {
-    const double m = mass_[fe::kNodes * e + a] / (dt * dt);
-    ke[2 * a][2 * a] += m;
-    ke[2 * a + 1][2 * a + 1] += m;
-  }
+  PetscFunctionBeginUser;
+  PetscCall(system.AddDiagonal(mass_global_, 1.0 / (dt * dt)));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 void Inertia::AddLoad(System &system, double dt) const

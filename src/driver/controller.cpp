@@ -19,9 +19,8 @@ PetscErrorCode Controller::Solve(double lambda, double dl, Vec du, double &dU, I
   // the tools' prescribed motion and friction rows first, the scene's supports
   // and loads, the inertia load, the carried out-of-balance force.
   PetscCall(m_.system.Begin());
-  Body::CellTerm mass;
-  if (dt > 0) mass = [&](PetscInt e, fe::ElemMat &ke) { inertia_->AddCellMass(e, dt, ke); };
-  PetscCall(m_.body.AssembleTangent(m_.system, mass));
+  PetscCall(m_.body.AssembleTangent(m_.system));
+  if (dt > 0) PetscCall(inertia_->AddMass(m_.system, dt));
   dU = scene_.ToolStroke(lambda + dl) - scene_.ToolStroke(lambda);
   if (ContactActive()) PetscCall(m_.contact->Constrain(dU));
   PetscCall(scene_.Load(m_, lambda, dl));

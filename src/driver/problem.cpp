@@ -95,7 +95,7 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
   PetscCall(body_.Setup(mesh_, MakeBodyParams(opt_)));
   if (opt_.dynamics != Dynamics::Quasistatic) {
     inertia_ = std::make_unique<Inertia>();
-    inertia_->Setup(body_, opt_.material.density, opt_.dynamics == Dynamics::Implicit);
+    PetscCall(inertia_->Setup(body_, opt_.material.density, opt_.dynamics == Dynamics::Implicit));
   }
   model_ = std::make_unique<Model>(Model{comm_, mesh_, system_, body_, nullptr});
   path_ = scene_->Path(opt_);

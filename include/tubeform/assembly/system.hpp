@@ -6,6 +6,13 @@
 // in, and a prescribed component (e.g. the normal of a contact node) is a
 // plain dof of that frame. Prescribed dofs are imposed by zeroing rows and
 // columns (MAT_KEEP_NONZERO_PATTERN), so MUMPS reuses its symbolic analysis.
+//
+// The body's part of K (its cell blocks in the node frames) is kept in a
+// second matrix between the solves of an increment: the friction iterations
+// and re-solves of a step change the tangent of few cells or none, so a solve
+// starts from a copy of it plus the blocks that changed, instead of adding
+// every cell again (Body::AssembleTangent). It is rebuilt whenever a node
+// frame turns.
 #pragma once
 
 #include <petscksp.h>
@@ -46,6 +53,18 @@ public:
   // Assembly of one increment: Begin, Add*, then Solve.
   PetscErrorCode Begin();
   PetscErrorCode AddElement(PetscInt cell, const fe::ElemMat &ke);
+  // The kept body matrix (after Begin, before any other Add*): collective
+  // BeginBody tells whether it must be rebuilt (`rebuild` on input: the
+  // caller's wish, e.g. most cells changed; true on output if it or any rank
+  // needs it: no kept matrix yet, or a frame turned); AddBodyElement adds a
+  // cell block (rebuild) or a change of one (ke_new - ke_old) to it; EndBody
+  // copies it into K.
+  PetscErrorCode BeginBody(bool &rebuild);
+  PetscErrorCode AddBodyElement(PetscInt cell, const fe::ElemMat &ke);
+  PetscErrorCode EndBody();
+  // scale x d (a global vector, e.g. lumped masses) added to the diagonal of K
+  // (rotation invariant when both dofs of a node carry the same value).
+  PetscErrorCode AddDiagonal(Vec d, double scale);
   // Adds a dense block coupling `nn` local nodes (2 nn x 2 nn, row-major,
   // global frame); used for load stiffness and contact rows.
   PetscErrorCode AddBlock(const PetscInt *nodes, int nn, const double *k);
@@ -92,7 +111,10 @@ public:
 private:
   const Mesh *mesh_ = nullptr;
   Mat k_ = nullptr, reaction_rows_ = nullptr;
-  Vec rhs_ = nullptr, sol_ = nullptr, fixed_ = nullptr, f_local_ = nullptr;
+  Mat kb_ = nullptr;      // the body's part of K (see above)
+  bool kb_valid_ = false; // kb_ holds the blocks of the current frames
+  Mat target_ = nullptr;  // where AddBlock puts values: k_, or kb_ between BeginBody and EndBody
+  Vec rhs_ = nullptr, sol_ = nullptr, fixed_ = nullptr, f_local_ = nullptr, diag_ = nullptr;
   KSP ksp_ = nullptr;
   ISLocalToGlobalMapping ltog_ = nullptr;
   std::vector<char> has_frame_;

@@ -9,7 +9,6 @@
 #include <petscvec.h>
 
 #include <algorithm>
-#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -42,10 +41,10 @@ public:
   // Collective: the material and the initial state on the cells of `mesh`.
   PetscErrorCode Setup(const Mesh &mesh, const BodyParams &prm);
 
-  // Adds to each cell block before it enters the system (the inertia's M / dt^2).
-  using CellTerm = std::function<void(PetscInt cell, fe::ElemMat &ke)>;
-  // Collective: K of the current state into `system` (after System::Begin).
-  PetscErrorCode AssembleTangent(System &system, const CellTerm &cell_term);
+  // Collective: K of the current state into `system` (after System::Begin,
+  // before other terms): the system's kept body matrix, updated by the cells
+  // whose tangent changed since the last call, or rebuilt.
+  PetscErrorCode AssembleTangent(System &system);
   // What the trial increment du would do at the Gauss points: r1 (yield
   // onset), r2 (strain), r3 (rotation) into `limit`; `switches` counts the
   // points whose loading state (alpha) disagrees with du, and with `apply`

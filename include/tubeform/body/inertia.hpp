@@ -16,14 +16,19 @@ namespace tf {
 
 class Inertia {
 public:
+  Inertia() = default;
+  Inertia(const Inertia &) = delete;
+  Inertia &operator=(const Inertia &) = delete;
+  ~Inertia() { (void)VecDestroy(&mass_global_); }
+
   // The masses of the body's cells for density rho; `active`: inertia enters
   // the increments from the start (else only once Activate is called).
-  void Setup(const Body &body, double rho, bool active);
+  PetscErrorCode Setup(const Body &body, double rho, bool active);
   bool active() const { return active_; }
   void Activate() { active_ = true; }
 
-  // M / dt^2 on the diagonal of cell e's block.
-  void AddCellMass(PetscInt e, double dt, fe::ElemMat &ke) const;
+  // M / dt^2 on the diagonal of the system (after the body's tangent).
+  PetscErrorCode AddMass(System &system, double dt) const;
   // The backward-Euler load M (a0 + v0 / dt) of a step dt into the system.
   void AddLoad(System &system, double dt) const;
   // Collective: new velocity and acceleration after the increment du over dt.
@@ -40,6 +45,7 @@ private:
   const Body *body_ = nullptr;
   bool active_ = false;
   std::vector<double> mass_;  // kNodes per local cell
+  Vec mass_global_ = nullptr; // lumped mass per dof (both dofs of a node), summed over the ranks
   std::vector<double> v_, a_; // 2 per local node, global frame
 
   // Calls f(node, m) for every node of every local cell with the cell's
