@@ -25,6 +25,9 @@ PetscErrorCode Body::Setup(const Mesh &mesh, const BodyParams &prm)
   prm_ = prm;
   // Before a point has yielded, H' is the secant over one strain-limit step.
   material_ = MakeMaterial(prm.material, prm.rmin_deps, prm.drift_correction);
+  deps_limit_ = prm.rmin_deps;
+  if (prm.rmin_deps_yield > 0 && material_->plastic_law())
+    deps_limit_ = std::min(deps_limit_, prm.rmin_deps_yield * material_->YieldStress(0.0) / prm.material.E);
   cells_ = fe::CellFormulation(prm.element, (int)mesh.num_cells);
   state_.assign(fe::kGauss * mesh.num_cells, PointState{});
   yield_factor_.assign(state_.size(), kNever);
@@ -183,7 +186,7 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
     for (int g = 0; g < fe::kGauss; ++g) {
       auto &[deps, omega] = trial_[fe::kGauss * e + g];
       cells_.Kinematics((int)e, xe, *geo, g, due, deps, omega);
-      strain.Offer(StrainFactor(deps, prm_.rmin_deps), Limiter::Strain, mesh_->cell_orig[e]);
+      strain.Offer(StrainFactor(deps, deps_limit_), Limiter::Strain, mesh_->cell_orig[e]);
       rotation.Offer(RotationFactor(omega, prm_.rmin_domega), Limiter::Rotation, mesh_->cell_orig[e]);
     }
   }

@@ -33,6 +33,7 @@ BodyParams MakeBodyParams(const Options &opt)
   b.element = opt.element;
   b.material = opt.material;
   b.rmin_deps = opt.rmin_deps;
+  b.rmin_deps_yield = opt.rmin_deps_yield;
   b.rmin_domega = opt.rmin_domega;
   b.group_tol = opt.rmin_group_tol;
   b.yield_inside = opt.rmin_yield == "inside";

@@ -117,6 +117,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                             "tubeform", opt.unload_increments, &opt.unload_increments, nullptr));
   PetscCall(PetscOptionsReal("-rmin_deps", "r2: largest principal strain increment", "tubeform", opt.rmin_deps,
                              &opt.rmin_deps, nullptr));
+  PetscCall(PetscOptionsReal("-rmin_deps_yield",
+                             "r2 relative to the material: the strain increment also at most this many initial "
+                             "yield strains sigma_y0 / E (0: off; materials with E / sigma_y in the thousands)",
+                             "tubeform", opt.rmin_deps_yield, &opt.rmin_deps_yield, nullptr));
   PetscCall(PetscOptionsReal("-rmin_domega", "r3: largest rotation increment (rad)", "tubeform", opt.rmin_domega,
                              &opt.rmin_domega, nullptr));
   PetscCall(PetscOptionsReal("-rmin_group_tol", "Events within (1 + tol) r_min are taken in the same increment",
@@ -299,6 +303,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-increments %d: must be between 1 and 1e7", (int)opt.increments);
   PetscCheck(opt.rmin_deps > 0 && opt.rmin_deps <= 0.5, comm, PETSC_ERR_USER_INPUT,
              "-rmin_deps %g: the strain increment limit must lie in (0, 0.5]", opt.rmin_deps);
+  PetscCheck(opt.rmin_deps_yield >= 0 && std::isfinite(opt.rmin_deps_yield), comm, PETSC_ERR_USER_INPUT,
+             "-rmin_deps_yield %g: must be a number of yield strains >= 0 (0: off)", opt.rmin_deps_yield);
   PetscCheck(opt.rmin_domega > 0 && opt.rmin_domega <= 0.5, comm, PETSC_ERR_USER_INPUT,
              "-rmin_domega %g: the rotation increment limit must lie in (0, 0.5] rad", opt.rmin_domega);
   PetscCheck(opt.rmin_yield_tol > 0 && opt.rmin_yield_tol <= 1, comm, PETSC_ERR_USER_INPUT,

@@ -24,7 +24,11 @@ namespace tf {
 struct BodyParams {
   fe::Formulation element = fe::Formulation::BBar;
   MaterialParams material;
-  double rmin_deps = 2e-3;   // r2: largest principal strain increment
+  double rmin_deps = 2e-3; // r2: largest principal strain increment
+  // r2 relative to the material: the strain increment also at most this many
+  // initial yield strains sigma_y0 / E (0: off). A step many yield strains
+  // long carries a point's stress far around the yield surface at once.
+  double rmin_deps_yield = 0;
   double rmin_domega = 1e-2; // r3: largest rotation increment (rad)
   double group_tol = 1e-6;   // points reaching yield within (1 + tol) r_min turn plastic together
   // r1 off: points yield inside a step, with the tangent weighted by the step's
@@ -86,6 +90,7 @@ public:
 private:
   const Mesh *mesh_ = nullptr;
   BodyParams prm_;
+  double deps_limit_ = 0; // r2's bound: rmin_deps, or rmin_deps_yield yield strains if smaller
   std::unique_ptr<Material> material_;
   fe::CellFormulation cells_;
   std::vector<PointState> state_;

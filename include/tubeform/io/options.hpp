@@ -29,11 +29,12 @@ struct Options {
   // Material
   MaterialParams material;
   // Incremental driver (METHOD.md sec. 4)
-  PetscInt increments = 10;                       // trial increments over the load path
-  PetscInt unload_increments = 0;                 // > 0: trial increments per unit of the path past lambda 1
-  double rmin_deps = BodyParams{}.rmin_deps;      // r2: largest principal strain increment
-  double rmin_domega = BodyParams{}.rmin_domega;  // r3: largest rotation increment (rad)
-  double rmin_group_tol = BodyParams{}.group_tol; // events within (1 + tol) r_min are taken together
+  PetscInt increments = 10;                              // trial increments over the load path
+  PetscInt unload_increments = 0;                        // > 0: trial increments per unit of the path past lambda 1
+  double rmin_deps = BodyParams{}.rmin_deps;             // r2: largest principal strain increment
+  double rmin_deps_yield = BodyParams{}.rmin_deps_yield; // r2 also at most this many yield strains (0: off)
+  double rmin_domega = BodyParams{}.rmin_domega;         // r3: largest rotation increment (rad)
+  double rmin_group_tol = BodyParams{}.group_tol;        // events within (1 + tol) r_min are taken together
   std::string rmin_yield = "onset"; // onset: r1 ends a step at each yield onset; inside: points yield inside steps
   double rmin_yield_tol = BodyParams{}.yield_tol; // inside: re-solve while an elastic fraction moves by more
   double rmin_event_tol = 1e-2;                   // re-solved steps locate their events to this fraction of the step
