@@ -91,6 +91,7 @@ PetscErrorCode Body::AssembleTangent(System &system)
       }
       if (!geo || !cells_.Stiffness((int)e, xe, *geo, c, s, ke_[e])) {
         bad = mesh_->cell_orig[e];
+        ke_[e] = old; // still stale
         continue;
       }
       ke_stale_[e] = 0;
@@ -103,12 +104,13 @@ PetscErrorCode Body::AssembleTangent(System &system)
       PetscCall(system.AddBodyElement(e, old));
     }
   }
+  PetscCall(system.EndBody());
   PetscCall(MPIU_Allreduce(&bad, &anybad, 1, MPIU_INT, MPI_MAX, comm()));
+  if (anybad >= 0) system.InvalidateBody(); // it lacks the inverted cell's block
   PetscCheck(
     anybad < 0, comm(), PETSC_ERR_USER_INPUT,
     "element %d is inverted (det J <= 0): the increment is too large (lower -rmin_deps) or the mesh is tangled",
     (int)anybad);
-  PetscCall(system.EndBody());
   PetscCall(PetscLogEventEnd(Log::assemble, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

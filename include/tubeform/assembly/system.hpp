@@ -62,6 +62,8 @@ public:
   PetscErrorCode BeginBody(bool &rebuild);
   PetscErrorCode AddBodyElement(PetscInt cell, const fe::ElemMat &ke);
   PetscErrorCode EndBody();
+  // The kept body matrix no longer matches the cell blocks (rebuilt next time).
+  void InvalidateBody() { kb_valid_ = false; }
   // scale x d (a global vector, e.g. lumped masses) added to the diagonal of K
   // (rotation invariant when both dofs of a node carry the same value).
   PetscErrorCode AddDiagonal(Vec d, double scale);
