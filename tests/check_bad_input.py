@@ -45,6 +45,7 @@ cases = [
     (["-unload_increments", "-1"], "-unload_increments"),
     (["-time_limit", "-1"], "-time_limit"),
     (["-max_energy_error", "0"], "-max_energy_error"),
+    (["-rmin_deps_yield", "-1"], "-rmin_deps_yield"),
 ]
 # Every case on 1 rank; on 2 ranks one of each kind (option value, option
 # choice, mesh file, output path), since mpirun takes ~2 s to wind down a

@@ -21,7 +21,7 @@ import extremes  # noqa: E402
 
 k = Checks("extremes")
 
-# A run stopped by its increment budget or its time limit: non-zero exit, one
+# A run stopped by its increment budget, its time limit or its energy error: non-zero exit, one
 # error line per job naming the option, the result file in place (no
 # .partial) with the stop flagged and finite histories.
 for option, value, rows in (("-rmin_max_increments", 30, 31), ("-time_limit", 0.5, None), ("-max_energy_error", 0.001, None)):

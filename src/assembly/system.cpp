@@ -136,13 +136,6 @@ PetscErrorCode System::BeginBody(bool &rebuild)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode System::AddBodyElement(PetscInt cell, const fe::ElemMat &ke)
-{
-  PetscFunctionBeginUser;
-  PetscCall(AddBlock(&mesh_->cell_nodes[4 * cell], fe::kNodes, &ke[0][0]));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode System::EndBody()
 {
   PetscFunctionBeginUser;

@@ -97,11 +97,11 @@ PetscErrorCode Body::AssembleTangent(System &system)
       ke_stale_[e] = 0;
     }
     if (rebuild) {
-      PetscCall(system.AddBodyElement(e, ke_[e]));
+      PetscCall(system.AddElement(e, ke_[e]));
     } else if (stale) {
       for (int r = 0; r < 2 * fe::kNodes; ++r)
         for (int k = 0; k < 2 * fe::kNodes; ++k) old[r][k] = ke_[e][r][k] - old[r][k];
-      PetscCall(system.AddBodyElement(e, old));
+      PetscCall(system.AddElement(e, old));
     }
   }
   PetscCall(system.EndBody());

@@ -1,6 +1,4 @@
 #include "tubeform/contact/contact.hpp"
-#include <cstdio>
-#include <cstdlib>
 
 #include <algorithm>
 #include <cmath>

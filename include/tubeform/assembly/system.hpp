@@ -52,15 +52,14 @@ public:
 
   // Assembly of one increment: Begin, Add*, then Solve.
   PetscErrorCode Begin();
+  // A cell block into K, or between BeginBody and EndBody into the kept body
+  // matrix (a whole block when rebuilding, else a change ke_new - ke_old).
   PetscErrorCode AddElement(PetscInt cell, const fe::ElemMat &ke);
   // The kept body matrix (after Begin, before any other Add*): collective
   // BeginBody tells whether it must be rebuilt (`rebuild` on input: the
   // caller's wish, e.g. most cells changed; true on output if it or any rank
-  // needs it: no kept matrix yet, or a frame turned); AddBodyElement adds a
-  // cell block (rebuild) or a change of one (ke_new - ke_old) to it; EndBody
-  // copies it into K.
+  // needs it: no kept matrix yet, or a frame turned); EndBody copies it into K.
   PetscErrorCode BeginBody(bool &rebuild);
-  PetscErrorCode AddBodyElement(PetscInt cell, const fe::ElemMat &ke);
   PetscErrorCode EndBody();
   // The kept body matrix no longer matches the cell blocks (rebuilt next time).
   void InvalidateBody() { kb_valid_ = false; }

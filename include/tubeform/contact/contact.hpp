@@ -63,9 +63,9 @@ struct ContactParams {
 struct ContactCommit {
   double w_friction = 0; // friction dissipation of the increment, -sum f_l,mid dslip
   double tension = 0;    // largest tensile normal force of a contact node at the end of the step, before releases
-  double release_force =
-    0;            // largest compressive normal force left by a release (or a slide off the tool's end) to unload
-  double gap = 0; // largest gap (>= 0) of a node in contact after the commit (mm)
+  // largest compressive normal force a release (or a slide off the tool's end) leaves to unload
+  double release_force = 0;
+  double gap = 0;         // largest gap (>= 0) of a node in contact after the commit (mm)
   double penetration = 0; // largest penetration (>= 0) of a candidate node into the tool after the commit (mm)
 };
 
@@ -171,8 +171,8 @@ private:
   double f_small_ = 0;                  // contact forces below this count as zero
   double slid_off_ = 0;                 // largest normal force left by a slide off the tool's end (next report)
   std::vector<Vec2> n_, l_;
-  std::vector<Vec2>
-    pending_; // force (global frame) a released owned node still puts on the body, unloaded by the next steps
+  // Force (global frame) a released owned node still puts on the body, unloaded by the next steps.
+  std::vector<Vec2> pending_;
 
   MPI_Comm comm() const { return mesh_->comm; }
   // Friction acts along l: not on a node whose both components are held.
