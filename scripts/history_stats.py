@@ -34,6 +34,12 @@
         moving with the punch) and every local peak above ten times it (a
         local snap), with its stroke and its share of the work done by then.
 
+    /usr/bin/python3 scripts/history_stats.py metrics F.h5 [F.h5 ...]
+        A tool scene's numbers of docs/accuracy.md, one line per file: the
+        punch load at U = 1, 2, 3, 4.2 mm, C/t at 2, 3, 4.2 mm (loading) and
+        the largest |energy_error| (a) over the whole run after the first 10
+        increments (as `checks` and the run's own self-check line).
+
     /usr/bin/python3 scripts/history_stats.py limiters F.h5 [F.h5 ...]
         What ended the loading increments: the count per limiter name
         (history column `limiter`), and solves (friction_iters) per increment.
@@ -124,6 +130,17 @@ def snaps(paths):
               (", ".join(f"U = {H['stroke'][i]:.2f} mm {ke[i]:.1e} ({ke[i] / H['w_ext'][i]:.1e} of w_ext)" for i in peaks) or "none"))
 
 
+def metrics(paths):
+    import tfruns
+
+    for path in paths:
+        P, C, _, _ = tfruns.metrics(tfruns.history(path))
+        with h5py.File(path, "r") as h:
+            a = np.abs(h["/history/energy_error"][11:]).max()
+        print(f"{path}: P(1, 2, 3, 4.2) = " + ", ".join(f"{x:.2f}" for x in P) + " N/mm; C/t(2, 3, 4.2) = "
+              + ", ".join(f"{x:.3f}" for x in C) + f"; (a) {100 * a:.2f} %")
+
+
 def limiters(paths):
     for path in paths:
         H = loading(path)
@@ -147,6 +164,8 @@ if __name__ == "__main__":
         windows(sys.argv[2:])
     elif len(sys.argv) >= 3 and sys.argv[1] == "snaps":
         snaps(sys.argv[2:])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "metrics":
+        metrics(sys.argv[2:])
     elif len(sys.argv) >= 3 and sys.argv[1] == "limiters":
         limiters(sys.argv[2:])
     else:
