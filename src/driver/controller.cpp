@@ -130,20 +130,28 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   const bool resolve = r < 1.0 && (Iterative() || InertiaActive() || t.transitions > 0);
   if (resolve) {
     // 2a. Friction is not linear in r, nor is inertia (M / dt^2): the
-    // shortened step is solved again, and again while the re-solve finds its
-    // first event more than -rmin_event_tol inside it (the non-linearity moves
-    // events), kMaxResolves times at most. The last solution is taken as it
-    // is (scaling it would break the friction forces' equilibrium), and the
-    // events of that solution up to its end happen in it: none past the end.
+    // shortened step is solved again, and again while the re-solve still finds
+    // an event or a bound more than -rmin_event_tol inside it (the
+    // non-linearity moves them). The step taken meets its limits: with inertia
+    // the response can grow much faster than the step (K + M / dt^2 nearly
+    // singular at some dt, as when a tube snaps), and a step taken past a
+    // rotation bound there moves the tube by millimetres with no equilibrium.
+    // After kMaxResolves tries each cut at least halves the step, so the search
+    // ends; only inertia's shortest step is taken as it is (a compromise,
+    // counted). The last solution is taken unscaled (scaling it would break
+    // the friction forces' equilibrium).
     double taken = r;
-    for (int attempt = 0;; ++attempt) {
+    for (int attempt = 1;; ++attempt) {
       dl *= taken;
       m_.body.ScaleTransitions(taken);
       PetscCall(SettledTrial(lambda, dl, du, t, inc));
-      if (t.limit.r >= 1.0 - opt_.rmin_event_tol || attempt == kMaxResolves - 1) break;
-      taken = t.limit.r;
+      if (t.limit.r >= 1.0 - opt_.rmin_event_tol) break;
+      taken = attempt < kMaxResolves ? t.limit.r : std::min(t.limit.r, 0.5);
       if (InertiaActive()) taken = std::max(taken, MinStepFraction(dl));
       if (taken >= 1.0) break;
+      PetscCheck(dl * taken > kMinRmin * dl_trial, m_.comm, PETSC_ERR_NOT_CONVERGED,
+                 "r_min = %g (%s at %d) at lambda = %g: the re-solved increment cannot meet its limits",
+                 dl * taken / dl_trial, LimiterName((int)t.limit.who), (int)t.limit.where, lambda);
     }
   } else {
     // 2b. A linear step: the solution scaled by r is the solution of the scaled step.
@@ -157,7 +165,7 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   inc.inconsistent = t.left;
   // A scaled step ends at its first event; a re-solved one may end past one:
   // within -rmin_event_tol that is the event's location tolerance, beyond it
-  // (the re-solves ran out) a compromise.
+  // (inertia's shortest step) a compromise.
   inc.event_inside = resolve && t.limit.r < 1.0 - opt_.rmin_event_tol;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

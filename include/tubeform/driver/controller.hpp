@@ -17,7 +17,7 @@ namespace tf {
 
 // Halvings of a trial step whose iterations do not settle; the last is taken unsettled.
 constexpr int kMaxCuts = 6;
-// Solves of a shortened non-linear step before it is taken with an event inside.
+// Re-solves of a shortened non-linear step that go to its limits' estimate; later ones at least halve it.
 constexpr int kMaxResolves = 3;
 // -dynamics implicit: no step shorter than this fraction of the trial step.
 // Events closer than that (a node whose normal force is all but zero, a point
