@@ -44,6 +44,7 @@ cases = [
     (["-output_stroke", "10"], "-output_stroke"),
     (["-unload_increments", "-1"], "-unload_increments"),
     (["-time_limit", "-1"], "-time_limit"),
+    (["-progress", "-1"], "-progress"),
     (["-max_energy_error", "0"], "-max_energy_error"),
     (["-rmin_deps_yield", "-1"], "-rmin_deps_yield"),
 ]

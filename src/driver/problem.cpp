@@ -8,6 +8,7 @@
 
 #include "tubeform/core/log.hpp"
 #include "tubeform/driver/output_schedule.hpp"
+#include "tubeform/driver/progress.hpp"
 #include "tubeform/scenes/registry.hpp"
 
 namespace tf {
@@ -181,6 +182,7 @@ PetscErrorCode Problem::Run()
   };
   const double t_start = MPI_Wtime();
   OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / opt_.stroke : 0);
+  Progress progress(comm_, opt_.progress, end, path_.breakpoints.empty() ? end : path_.breakpoints.front());
   PetscCall(PetscLogStagePush(Log::load_stage));
   while (lambda < end - kLambdaTol) {
     // 1. The stall watch ends a load path that no longer advances.
@@ -273,6 +275,7 @@ PetscErrorCode Problem::Run()
                     100 * history_.rows().back().energy_error, opt_.max_energy_error, where().c_str());
       break;
     }
+    PetscCall(progress.Update(lambda, inc, history_.rows().back().stroke));
     wrote_last = output.Due(inc, lambda, on_break, lambda >= end - kLambdaTol);
     if (wrote_last) PetscCall(WriteFields(writer, step++, lambda));
   }

@@ -269,6 +269,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                              "Stop after this many seconds of the incremental loop, results up to there written, with "
                              "an error (non-zero exit); 0: no limit",
                              "tubeform", opt.time_limit, &opt.time_limit, nullptr));
+  PetscCall(PetscOptionsReal("-progress",
+                             "Print a progress line on rank 0 (stage, percent, stroke, time left) every this many "
+                             "seconds of a run; 0: none",
+                             "tubeform", opt.progress, &opt.progress, nullptr));
   PetscCall(PetscOptionsBool("-monitor", "Print one line per increment on rank 0", "tubeform", opt.monitor,
                              &opt.monitor, nullptr));
   PetscOptionsEnd();
@@ -377,6 +381,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-max_energy_error %g: must be a positive fraction (e.g. 0.25)", opt.max_energy_error);
   PetscCheck(opt.time_limit >= 0 && std::isfinite(opt.time_limit), comm, PETSC_ERR_USER_INPUT,
              "-time_limit %g: must be 0 (no limit) or a positive number of seconds", opt.time_limit);
+  PetscCheck(opt.progress >= 0 && std::isfinite(opt.progress), comm, PETSC_ERR_USER_INPUT,
+             "-progress %g: must be 0 (none) or a positive number of seconds", opt.progress);
   PetscCheck(opt.unload_increments >= 0, comm, PETSC_ERR_USER_INPUT,
              "-unload_increments %d: must be at least 1 (or 0: as -increments)", (int)opt.unload_increments);
   PetscCheck(opt.output_stroke >= 0 && opt.output_stroke <= opt.stroke, comm, PETSC_ERR_USER_INPUT,

@@ -78,6 +78,7 @@ struct Options {
   // unaccounted for means the load-stroke curve is no longer a solution.
   double max_energy_error = 0.25;
   double time_limit = 0; // > 0: stop (results written, non-zero exit) after this many seconds of loading
+  double progress = 10;  // s between progress lines on rank 0 (0: none); quiet on shorter runs
   PetscBool monitor = PETSC_FALSE;
   PetscBool help = PETSC_FALSE;
 };
