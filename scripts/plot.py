@@ -8,31 +8,15 @@ scene the die at the final stroke is drawn too.
 
 Small displacements are magnified (the factor is printed in the title).
 """
-import math
+import os
 import sys
 
-import h5py
-import matplotlib
-
-matplotlib.use("Agg")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from figlib import draw_die, option, outline_edges  # noqa: E402  (first: it sets the Agg backend)
+import h5py  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
-
-
-def option(opts, name, default):
-    parts = opts.split()
-    return parts[parts.index(name) + 1] if name in parts and parts.index(name) + 1 < len(parts) else default
-
-
-def outer_outline(X, C):
-    """Boundary edges of the mesh (edges used by one cell)."""
-    count = {}
-    for c in C:
-        for k in range(4):
-            e = tuple(sorted((c[k], c[(k + 1) % 4])))
-            count[e] = count.get(e, 0) + 1
-    return [e for e, n in count.items() if n == 1]
 
 
 def main(path, png):
@@ -74,20 +58,13 @@ def main(path, png):
     ax2.add_collection(shape)
     fig.colorbar(shape, ax=ax2, label="von Mises stress, loaded (MPa)")
     if unloads:
-        for a, b in outer_outline(X, C):
+        for a, b in outline_edges(C):
             p = X[[a, b]] + scale * U[-1][[a, b]]
             ax2.plot(p[:, 0], p[:, 1], "r-", lw=0.8)
         ax2.plot([], [], "r-", label="after springback")
         ax2.legend(loc="lower left")
     if scene == "squaring":
-        ro, ra = float(option(opts, "-tube_ro", 17.5)), float(option(opts, "-die_r_apex", 3))
-        u = hist["stroke"][stage == 0][-1]
-        h0 = ro * math.sqrt(2) - u
-        cy = ro * math.sqrt(2) - ra * math.sqrt(2) - u
-        th = np.linspace(math.pi / 4, math.pi / 2, 30)
-        ax2.plot(ra * np.cos(th), cy + ra * np.sin(th), "b-", lw=1.2)
-        xs = np.array([ra / math.sqrt(2), 1.3 * ro])
-        ax2.plot(xs, h0 - xs, "b-", lw=1.2, label="die at the final stroke")
+        draw_die(ax2, opts, hist["stroke"][stage == 0][-1], color="b", lw=1.2, label="die at the final stroke")
     ax2.autoscale()
     ax2.set_aspect("equal")
     ax2.set_xlabel("x (mm)")

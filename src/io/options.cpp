@@ -99,7 +99,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                               kLaws, 4, kLaws[choice], &choice, nullptr));
   opt.material.law = kLaws[choice];
   {
-    PetscReal table[200];
+    PetscReal table[200] = {0}; // -help prints the first entry as the default
     PetscInt n = 200;
     PetscCall(PetscOptionsRealArray("-material_table",
                                     "Flow curve for -material_law table: ep0,sy0,ep1,sy1,... (ep0 = 0, ep increasing)",
