@@ -98,6 +98,7 @@ def save(fig, outdir, name):
     os.makedirs(outdir, exist_ok=True)
     png = os.path.join(outdir, name + ".png")
     fig.savefig(png, dpi=130, bbox_inches="tight")
-    fig.savefig(os.path.join(outdir, name + ".pdf"), bbox_inches="tight")
+    # No creation date: the same figure gives the same file (no churn in git).
+    fig.savefig(os.path.join(outdir, name + ".pdf"), bbox_inches="tight", metadata={"CreationDate": None})
     plt.close(fig)
     return png

@@ -21,7 +21,7 @@ LINE = re.compile(r"^  -(?P<name>[a-z0-9_]+):? <(?:now )?(?P<default>.*?)(?: : (
 def options(exe):
     """[(section, [(name, default, help, choices)])] from -help, run with no options (the built-in defaults)."""
     env = {k: v for k, v in os.environ.items() if k != "PETSC_OPTIONS"}
-    p = subprocess.run([exe, "-help", "-options_left", "no"], capture_output=True, text=True, env=env, cwd="/")
+    p = subprocess.run([os.path.abspath(exe), "-help", "-options_left", "no"], capture_output=True, text=True, env=env, cwd="/")
     sections, current = [], None
     for line in p.stdout.splitlines():
         m = re.match(r"^tubeform: (.*):$", line)

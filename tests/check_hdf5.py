@@ -79,4 +79,25 @@ unloading = t[t > 1 + 1e-12]
 k.check(1 <= len(unloading) <= U_end / D + 1 and abs(t[-1] - 2) < 1e-12,
         f"-output_stroke: unloading written {len(unloading)} times (1..{U_end / D + 1:g}), ending at its end")
 k.check(steps == len(t), "one field entry per /time entry")
+
+# Contact fields (a tool scene, 2 ranks): at the end of loading the nodal
+# contact forces read back from the file (each node once, whichever rank owned
+# it) add up to the punch load of the history (2 x the quarter's vertical
+# force: the file's gather against the run's own sum), the nodes carrying a
+# force are flagged in contact, and the xmf offers both fields to ParaView.
+with h5py.File("stroke.h5", "r") as h:
+    t = h["/time"][:, 0]
+    j = int(np.flatnonzero(t <= 1 + 1e-12)[-1])
+    F, S = h["/vertex_fields/contact_force"][j], h["/vertex_fields/contact_state"][j]
+    load = h["/history/load"][:][h["/history/stage"][:] == 0][-1]
+    shapes = (h["/vertex_fields/contact_force"].shape, h["/vertex_fields/contact_state"].shape)
+nv = h5py.File("stroke.h5", "r")["/geometry/vertices"].shape[0]
+k.check(shapes == ((len(t), nv, 2), (len(t), nv)), f"contact fields {shapes}")
+k.check(abs(2 * abs(F[:, 1].sum()) - load) <= 1e-9 * load, f"2 x sum of nodal contact forces {2 * abs(F[:, 1].sum()):.10g} "
+        f"== punch load {load:.10g}")
+loaded = np.hypot(F[:, 0], F[:, 1]) > 1e-9 * load
+k.check(loaded.any() and (S[loaded] == 1).all(), f"{loaded.sum()} nodes carry force, all flagged in contact")
+names = {a.get("Name") for a in ET.parse("stroke.xmf").getroot().iter("Attribute")}
+k.check({"displacement_u", "contact_state", "contact_force", "eps_p", "von_mises"} <= names,
+        f"the xmf's fields: {sorted(names)}")
 k.done()

@@ -9,6 +9,7 @@ cases without running any.
 """
 import csv
 import os
+import shutil
 import subprocess
 
 import h5py
@@ -19,6 +20,7 @@ from tfcheck import Checks, args
 tf, mpirun, src = args()
 k = Checks("sweep")
 d = os.path.join(os.getcwd(), "sweeps")
+shutil.rmtree(d, ignore_errors=True)  # a rerun starts from nothing (the sweep itself resumes)
 grid = ["--name", "t", "--dir", d, "--exe", tf, "-j", "2", "--axis", "friction_mu=0,0.2,-1"]
 cmd = ["/usr/bin/python3", f"{src}/scripts/sweep"] + grid + ["--", "-mesh_nt", "2", "-mesh_ntheta", "24",
                                                              "-stroke", "2.5"]

@@ -6,7 +6,9 @@
 //    bowed inwards by a circular sag s gives s, bowed outwards 0, and
 //    rotating the bowed side rigidly keeps s;
 //  - C while loaded (flank line): a straight side on the flank gives 0, a
-//    sag s between the outermost contacts gives s;
+//    sag s between the outermost contacts gives s; a side that touches the
+//    flank only near the corner but the apex fillet too spans to the
+//    fillet's end, so its sag is found (it read 0 before: issue 11);
 //  - the corner radius of a circle through the axis node is the circle's.
 // Tolerance 1e-12 mm: exact geometry up to round-off of coordinates ~20 mm.
 #include <cmath>
@@ -80,6 +82,36 @@ int main()
   const GapRange g1 = GapsTo(bowed, flank, -L, L);
   CHECK_NEAR(g1.max, sag, tol);
   CHECK(GapsTo(bowed, flank, 2 * L, 3 * L).empty());
+
+  // The side's span (SideOnFlank). Along this flank s = -(the parameter of
+  // Side), so the bowed side's first point (k = 0) is its apex end, at s = L.
+  const int n = static_cast<int>(bowed.size()) - 1;
+  auto touching = [&](std::vector<int> flank_nodes, int apex_node) {
+    auto p = bowed;
+    for (auto &q : p) q.contact = 0, q.segment = -1;
+    for (int k : flank_nodes) p[k].contact = 1, p[k].segment = 1;
+    if (apex_node >= 0) p[apex_node].contact = 1, p[apex_node].segment = 0;
+    return p;
+  };
+  // Both ends on the flank: the side between them, its sag found.
+  auto both = touching({0, n}, -1);
+  SideSpan sp = SideOnFlank(both, flank, 1, 0, L);
+  CHECK(!sp.empty() && sp.ends[0] == static_cast<size_t>(n) && sp.ends[1] == 0);
+  CHECK_NEAR(GapsTo(both, flank, sp.smin, sp.smax).max, sag, tol);
+  // Folded in: the flank touched only near the corner (k = n - 1, n), the apex
+  // fillet touched beyond the side's apex end. The side reaches the fillet's
+  // end (s = L, nearest point k = 0) and its sag is found; without the apex
+  // rule it would be the sliver between the two corner contacts.
+  auto folded = touching({n - 1, n}, 0);
+  sp = SideOnFlank(folded, flank, 1, 0, L);
+  CHECK(sp.ends[0] == static_cast<size_t>(n) && sp.ends[1] == 0);
+  CHECK_NEAR(sp.smax, L, tol);
+  CHECK_NEAR(GapsTo(folded, flank, sp.smin, sp.smax).max, sag, tol);
+  auto corner_only = touching({n - 1, n}, -1);
+  sp = SideOnFlank(corner_only, flank, 1, 0, L);
+  CHECK(GapsTo(corner_only, flank, sp.smin, sp.smax).max < 0.2 * sag);
+  // Only the apex touches: no side yet.
+  CHECK(SideOnFlank(touching({}, 0), flank, 1, 0, L).empty());
 
   // Corner radius: nodes on a circle of radius R centred on the x axis at c.
   const double R = 4.0, c = 13.5, t = 0.15;

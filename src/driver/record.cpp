@@ -189,7 +189,27 @@ PetscErrorCode Problem::WriteFields(ResultWriter &writer, PetscInt step, double 
       const double vals[7] = {s[0], s[1], s[2], s[3], VonMises(s), ps.ep, ps.plastic ? 1.0 : 0.0};
       for (int k = 0; k < 7; ++k) cells[k].values[e] += vals[k] / fe::kGauss;
     }
-  PetscCall(writer.WriteStep(step, t, body_.displacement(), cells));
+  // Node fields: the displacement and, with a tool, each node's contact state
+  // (0 free, 1 in contact) and its contact force in the global frame (N/mm).
+  std::vector<NodeField> nodes = {{"displacement_u", 2, body_.displacement()}};
+  if (contact_) {
+    NodeField state{"contact_state", 1, std::vector<double>(mesh_.num_nodes, 0.0)};
+    NodeField force{"contact_force", 2, std::vector<double>(2 * mesh_.num_nodes, 0.0)};
+    Vec f = system_.CreateLocalVector();
+    const PetscScalar *a;
+    PetscCall(VecZeroEntries(f));
+    if (contact_->active()) PetscCall(contact_->AddContactForces(f));
+    PetscCall(VecGetArrayRead(f, &a));
+    for (PetscInt n = 0; n < mesh_.num_nodes; ++n) {
+      state.values[n] = contact_->active() && contact_->InContact(n) ? 1.0 : 0.0;
+      for (int k = 0; k < 2; ++k) force.values[2 * n + k] = PetscRealPart(a[mesh_.node_dof[n] + k]);
+    }
+    PetscCall(VecRestoreArrayRead(f, &a));
+    PetscCall(VecDestroy(&f));
+    nodes.push_back(std::move(state));
+    nodes.push_back(std::move(force));
+  }
+  PetscCall(writer.WriteStep(step, t, nodes, cells));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -63,7 +63,7 @@ PetscErrorCode ResultWriter::Open(const Mesh &mesh, const std::string &path)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::vector<double> &u,
+PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::vector<NodeField> &nodes,
                                        const std::vector<CellField> &cells)
 {
   Vec local, global;
@@ -77,20 +77,25 @@ PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::ve
   PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
   times_.push_back(time);
   PetscCall(WriteSeriesValue(file, "/time", time, step, rank == 0));
-  // Vertex field: displacement (2 components), in the global vector's order,
-  // which is the order of /geometry/vertices.
-  PetscCall(DMGetLocalVector(mesh_->dm, &local));
-  PetscCall(DMGetGlobalVector(mesh_->dm, &global));
-  PetscCall(VecGetArray(local, &a));
-  for (PetscInt n = 0; n < mesh_->num_nodes; ++n) {
-    a[mesh_->node_dof[n]] = u[2 * n];
-    a[mesh_->node_dof[n] + 1] = u[2 * n + 1];
+  // Node fields, in the global vector's order, which is the order of
+  // /geometry/vertices: 2 components on the displacement DM, 1 on its
+  // one-dof clone (whose offsets are the displacement DM's halved).
+  node_names_.clear();
+  for (const auto &field : nodes) {
+    node_names_.emplace_back(field.name, field.components);
+    DM dm = field.components == 2 ? mesh_->dm : mesh_->node_dm;
+    const int c = field.components;
+    PetscCall(DMGetLocalVector(dm, &local));
+    PetscCall(DMGetGlobalVector(dm, &global));
+    PetscCall(VecGetArray(local, &a));
+    for (PetscInt n = 0; n < mesh_->num_nodes; ++n)
+      for (int k = 0; k < c; ++k) a[mesh_->node_dof[n] / (2 / c) + k] = field.values[c * n + k];
+    PetscCall(VecRestoreArray(local, &a));
+    PetscCall(DMLocalToGlobal(dm, local, INSERT_VALUES, global));
+    PetscCall(WriteSeriesStep(file, ("/vertex_fields/" + field.name).c_str(), global, c, step));
+    PetscCall(DMRestoreGlobalVector(dm, &global));
+    PetscCall(DMRestoreLocalVector(dm, &local));
   }
-  PetscCall(VecRestoreArray(local, &a));
-  PetscCall(DMLocalToGlobal(mesh_->dm, local, INSERT_VALUES, global));
-  PetscCall(WriteSeriesStep(file, "/vertex_fields/displacement_u", global, 2, step));
-  PetscCall(DMRestoreGlobalVector(mesh_->dm, &global));
-  PetscCall(DMRestoreLocalVector(mesh_->dm, &local));
 
   // Cell fields: one scalar per cell.
   cell_names_.clear();
@@ -194,9 +199,12 @@ PetscErrorCode ResultWriter::WriteXdmf() const
         << (comps > 1 ? " " + std::to_string(comps) : "") << "\">" << h5 << ":" << path
         << "</DataItem>\n   </DataItem>\n";
     };
-    x << "  <Attribute Name=\"displacement\" AttributeType=\"Vector\" Center=\"Node\">\n";
-    hyperslab("/vertex_fields/displacement_u", nv, 2);
-    x << "  </Attribute>\n";
+    for (const auto &[name, comps] : node_names_) {
+      x << "  <Attribute Name=\"" << name << "\" AttributeType=\"" << (comps == 2 ? "Vector" : "Scalar")
+        << "\" Center=\"Node\">\n";
+      hyperslab("/vertex_fields/" + name, nv, comps);
+      x << "  </Attribute>\n";
+    }
     for (const auto &name : cell_names_) {
       x << "  <Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
       hyperslab("/cell_fields/" + name + "_c", nc, 1);

@@ -11,6 +11,7 @@ Mesh::~Mesh()
 {
   // Destructors cannot return error codes; destruction failures are not actionable.
   if (cell_dm) (void)DMDestroy(&cell_dm);
+  if (node_dm) (void)DMDestroy(&node_dm);
   if (dm) (void)DMDestroy(&dm);
 }
 
@@ -83,7 +84,8 @@ PetscErrorCode Mesh::Create(MPI_Comm c, const SerialMesh &serial, const std::vec
     dm = serial_dm;
   PetscCall(PetscObjectSetName((PetscObject)dm, "mesh"));
 
-  // 4. Two displacement dofs per vertex; one value per cell on the clone.
+  // 4. Two displacement dofs per vertex; one value per cell and one per
+  // vertex on clones (for output fields).
   PetscSection s;
   PetscInt pstart, pend, cs, ce, vs, ve;
   PetscCall(DMPlexGetChart(dm, &pstart, &pend));
@@ -114,6 +116,18 @@ PetscErrorCode Mesh::Create(MPI_Comm c, const SerialMesh &serial, const std::vec
   }
   PetscCall(PetscSectionSetUp(s));
   PetscCall(DMSetLocalSection(cell_dm, s));
+  PetscCall(PetscSectionDestroy(&s));
+  PetscCall(DMClone(dm, &node_dm));
+  PetscCall(PetscSectionCreate(comm, &s));
+  PetscCall(PetscSectionSetNumFields(s, 1));
+  PetscCall(PetscSectionSetFieldName(s, 0, "n"));
+  PetscCall(PetscSectionSetChart(s, pstart, pend));
+  for (PetscInt v = vs; v < ve; ++v) {
+    PetscCall(PetscSectionSetDof(s, v, 1));
+    PetscCall(PetscSectionSetFieldDof(s, v, 0, 1));
+  }
+  PetscCall(PetscSectionSetUp(s));
+  PetscCall(DMSetLocalSection(node_dm, s));
   PetscCall(PetscSectionDestroy(&s));
 
   PetscCall(BuildTables(sets, migration));

@@ -18,6 +18,30 @@ GapRange GapsTo(const std::vector<SurfacePoint> &points, const Line &line, doubl
   return g;
 }
 
+SideSpan SideOnFlank(const std::vector<SurfacePoint> &points, const Line &flank, int flank_segment, int apex_segment,
+                     double s_apex_end)
+{
+  SideSpan side;
+  bool apex = false;
+  for (size_t k = 0; k < points.size(); ++k) {
+    const SurfacePoint &p = points[k];
+    if (!p.contact) continue;
+    apex = apex || p.segment == apex_segment;
+    if (p.segment != flank_segment) continue;
+    const double s = flank.Along(p);
+    if (s < side.smin) side.smin = s, side.ends[0] = k;
+    if (s > side.smax) side.smax = s, side.ends[1] = k;
+  }
+  if (!apex || side.empty()) return side;
+  size_t nearest = 0;
+  for (size_t k = 1; k < points.size(); ++k)
+    if (std::abs(flank.Along(points[k]) - s_apex_end) < std::abs(flank.Along(points[nearest]) - s_apex_end))
+      nearest = k;
+  if (s_apex_end < side.smin) side.smin = s_apex_end, side.ends[0] = nearest;
+  if (s_apex_end > side.smax) side.smax = s_apex_end, side.ends[1] = nearest;
+  return side;
+}
+
 double ChordGap(const std::vector<SurfacePoint> &points, size_t first, size_t last)
 {
   if (first > last) std::swap(first, last);

@@ -178,12 +178,13 @@ private:
   bool unloading_ = false;
   Vec reversed_ = nullptr;
   double reversed_total_[2] = {0, 0};
-  long side_ends_[2] = {-1, -1}; // input node numbers of the outermost flank contacts (latest loading state)
+  long side_ends_[2] = {-1, -1}; // input node numbers of the side's ends (latest loading state)
 
   // C/t (METHOD.md sec. 6) and the corner radii. Loading: the largest gap
-  // between the flank and the outer surface between the outermost nodes
-  // touching the flank, which are remembered as the side's ends. Unloading:
-  // the largest gap between the side and the chord through those two nodes.
+  // between the flank and the outer surface along the side (SideOnFlank: the
+  // outermost flank contacts, and the fillet's end when the apex touches),
+  // whose end nodes are remembered. Unloading: the largest gap between the
+  // side and the chord through those two nodes.
   PetscErrorCode Shape(Model &m, double lambda, HistoryRow &row)
   {
     std::vector<SurfacePoint> all;
@@ -208,15 +209,11 @@ private:
     const Segment &fl = tool.segments[flank_];
     const Vec2 off = tool.Offset();
     const Line flank{{fl.a[0] + off[0], fl.a[1] + off[1]}, fl.n_line, {fl.n_line[1], -fl.n_line[0]}};
-    double smin = kNever, smax = -kNever;
-    side_ends_[0] = side_ends_[1] = -1;
-    for (const auto &o : all)
-      if (o.contact && o.segment == flank_) {
-        const double s = flank.Along(o);
-        if (s < smin) smin = s, side_ends_[0] = o.id;
-        if (s > smax) smax = s, side_ends_[1] = o.id;
-      }
-    const GapRange g = GapsTo(all, flank, smin, smax);
+    // The line starts at the flank's apex end (s = 0), where the fillet ends.
+    const SideSpan side = SideOnFlank(all, flank, flank_, flank_ == 1 ? 0 : -1, 0.0);
+    side_ends_[0] = side.empty() ? -1 : all[side.ends[0]].id;
+    side_ends_[1] = side.empty() ? -1 : all[side.ends[1]].id;
+    const GapRange g = GapsTo(all, flank, side.smin, side.smax);
     row.c_over_t = g.empty() ? 0.0 : std::max(g.max, 0.0) / opt_.tube_t;
     PetscFunctionReturn(PETSC_SUCCESS);
   }

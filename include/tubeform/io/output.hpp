@@ -20,13 +20,20 @@ struct CellField {
   std::vector<double> values; // one per local cell
 };
 
+// A node field of 1 or 2 components (scalars, vectors in the global frame).
+struct NodeField {
+  std::string name;
+  int components = 2;
+  std::vector<double> values; // `components` per local node
+};
+
 class ResultWriter {
 public:
   ~ResultWriter();
   // Collective. Checks the path first: a clear error if it cannot be written.
   PetscErrorCode Open(const Mesh &mesh, const std::string &path);
-  // Collective: one time-series entry. `u` holds 2 values per local node.
-  PetscErrorCode WriteStep(PetscInt step, double time, const std::vector<double> &u,
+  // Collective: one time-series entry (the same fields at every step).
+  PetscErrorCode WriteStep(PetscInt step, double time, const std::vector<NodeField> &nodes,
                            const std::vector<CellField> &cells);
   // Collective: history, attributes, the .xmf, then the rename.
   PetscErrorCode Close(const History &history, const std::vector<std::pair<std::string, double>> &metrics);
@@ -37,6 +44,7 @@ private:
   std::string path_;
   std::vector<double> times_;
   std::vector<std::string> cell_names_;
+  std::vector<std::pair<std::string, int>> node_names_; // name, components
   PetscErrorCode WriteXdmf() const;
 };
 

@@ -32,6 +32,7 @@ public:
   MPI_Comm comm = MPI_COMM_NULL;
   DM dm = nullptr;      // 2 displacement dofs per vertex
   DM cell_dm = nullptr; // 1 dof per cell, for cell (quadrature-averaged) fields
+  DM node_dm = nullptr; // 1 dof per vertex, for scalar node fields (its offsets are dm's halved)
 
   PetscInt num_cells = 0, num_nodes = 0; // local, nodes include ghosts
   PetscInt num_global_cells = 0, num_global_nodes = 0;

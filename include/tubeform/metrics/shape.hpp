@@ -33,6 +33,21 @@ struct GapRange {
 };
 GapRange GapsTo(const std::vector<SurfacePoint> &points, const Line &line, double smin, double smax);
 
+// The side of the tube along a die's flank (METHOD.md sec. 6): between the
+// outermost points touching the flank segment, and, when a point touches the
+// apex segment, reaching the flank's apex end at s_apex_end (the side of a
+// tube that lost its flank contacts near the apex has folded in between the
+// apex and the corner; the fillet's own curve is not the side). `ends` are
+// indices into the points (the nearest point for s_apex_end); empty when no
+// point touches the flank.
+struct SideSpan {
+  double smin = kNever, smax = -kNever;
+  size_t ends[2] = {0, 0};
+  bool empty() const { return smax < smin; }
+};
+SideSpan SideOnFlank(const std::vector<SurfacePoint> &points, const Line &flank, int flank_segment, int apex_segment,
+                     double s_apex_end);
+
 // C of a side without a tool (METHOD.md sec. 6, after unloading): the largest
 // gap between the chord through points[first] and points[last] and the points
 // between them, measured towards the origin (the tube's centre): the side
