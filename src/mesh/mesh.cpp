@@ -7,6 +7,32 @@
 
 namespace tf {
 
+namespace {
+
+// One field of `dofs` components on the points [from, to) of a DMPlex.
+PetscErrorCode SetSection(DM dm, const char *name, PetscInt from, PetscInt to, PetscInt dofs)
+{
+  PetscSection s;
+  PetscInt pstart, pend;
+  PetscFunctionBeginUser;
+  PetscCall(DMPlexGetChart(dm, &pstart, &pend));
+  PetscCall(PetscSectionCreate(PetscObjectComm((PetscObject)dm), &s));
+  PetscCall(PetscSectionSetNumFields(s, 1));
+  PetscCall(PetscSectionSetFieldName(s, 0, name));
+  PetscCall(PetscSectionSetFieldComponents(s, 0, dofs));
+  PetscCall(PetscSectionSetChart(s, pstart, pend));
+  for (PetscInt p = from; p < to; ++p) {
+    PetscCall(PetscSectionSetDof(s, p, dofs));
+    PetscCall(PetscSectionSetFieldDof(s, p, 0, dofs));
+  }
+  PetscCall(PetscSectionSetUp(s));
+  PetscCall(DMSetLocalSection(dm, s));
+  PetscCall(PetscSectionDestroy(&s));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace
+
 Mesh::~Mesh()
 {
   // Destructors cannot return error codes; destruction failures are not actionable.
@@ -86,49 +112,15 @@ PetscErrorCode Mesh::Create(MPI_Comm c, const SerialMesh &serial, const std::vec
 
   // 4. Two displacement dofs per vertex; one value per cell and one per
   // vertex on clones (for output fields).
-  PetscSection s;
-  PetscInt pstart, pend, cs, ce, vs, ve;
-  PetscCall(DMPlexGetChart(dm, &pstart, &pend));
+  PetscInt cs, ce, vs, ve;
   PetscCall(DMPlexGetHeightStratum(dm, 0, &cs, &ce));
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vs, &ve));
-  PetscCall(PetscSectionCreate(comm, &s));
-  PetscCall(PetscSectionSetNumFields(s, 1));
-  PetscCall(PetscSectionSetFieldName(s, 0, "u"));
-  PetscCall(PetscSectionSetFieldComponents(s, 0, 2));
-  PetscCall(PetscSectionSetChart(s, pstart, pend));
-  for (PetscInt v = vs; v < ve; ++v) {
-    PetscCall(PetscSectionSetDof(s, v, 2));
-    PetscCall(PetscSectionSetFieldDof(s, v, 0, 2));
-  }
-  PetscCall(PetscSectionSetUp(s));
-  PetscCall(DMSetLocalSection(dm, s));
-  PetscCall(PetscSectionDestroy(&s));
+  PetscCall(SetSection(dm, "u", vs, ve, 2));
   PetscCall(DMSetMatType(dm, MATAIJ));
-
   PetscCall(DMClone(dm, &cell_dm));
-  PetscCall(PetscSectionCreate(comm, &s));
-  PetscCall(PetscSectionSetNumFields(s, 1));
-  PetscCall(PetscSectionSetFieldName(s, 0, "c"));
-  PetscCall(PetscSectionSetChart(s, pstart, pend));
-  for (PetscInt cc = cs; cc < ce; ++cc) {
-    PetscCall(PetscSectionSetDof(s, cc, 1));
-    PetscCall(PetscSectionSetFieldDof(s, cc, 0, 1));
-  }
-  PetscCall(PetscSectionSetUp(s));
-  PetscCall(DMSetLocalSection(cell_dm, s));
-  PetscCall(PetscSectionDestroy(&s));
+  PetscCall(SetSection(cell_dm, "c", cs, ce, 1));
   PetscCall(DMClone(dm, &node_dm));
-  PetscCall(PetscSectionCreate(comm, &s));
-  PetscCall(PetscSectionSetNumFields(s, 1));
-  PetscCall(PetscSectionSetFieldName(s, 0, "n"));
-  PetscCall(PetscSectionSetChart(s, pstart, pend));
-  for (PetscInt v = vs; v < ve; ++v) {
-    PetscCall(PetscSectionSetDof(s, v, 1));
-    PetscCall(PetscSectionSetFieldDof(s, v, 0, 1));
-  }
-  PetscCall(PetscSectionSetUp(s));
-  PetscCall(DMSetLocalSection(node_dm, s));
-  PetscCall(PetscSectionDestroy(&s));
+  PetscCall(SetSection(node_dm, "n", vs, ve, 1));
 
   PetscCall(BuildTables(sets, migration));
   PetscCall(PetscSFDestroy(&migration));
