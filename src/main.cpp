@@ -7,6 +7,7 @@
 #include <petscsys.h>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/core/signals.hpp"
 #include "tubeform/driver/problem.hpp"
 #include "tubeform/io/options.hpp"
 #include "tubeform/scenes/registry.hpp"
@@ -38,6 +39,7 @@ int main(int argc, char **argv)
   if (ierr) return 1;
   // Errors come back as codes; main prints one line and every rank exits.
   (void)PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+  tf::InstallStopSignals();
   (void)MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   bool collective = false;
   ierr = Run(collective);
@@ -47,7 +49,8 @@ int main(int argc, char **argv)
     char *specific = nullptr;
     (void)PetscErrorMessage(ierr, &text, &specific);
     const char *msg = specific && specific[0] ? specific : (text ? text : "unknown error");
-    if (collective || ierr == PETSC_ERR_USER_INPUT || ierr == PETSC_ERR_FILE_WRITE || ierr == PETSC_ERR_NOT_CONVERGED) {
+    if (collective || ierr == PETSC_ERR_USER_INPUT || ierr == PETSC_ERR_FILE_WRITE || ierr == PETSC_ERR_NOT_CONVERGED ||
+        ierr == PETSC_ERR_SIG) {
       // Collective errors: every rank found the same problem; rank 0 reports it.
       if (rank == 0) fprintf(stderr, "tubeform: error: %s\n", msg);
       (void)PetscFinalize();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "tubeform/core/log.hpp"
+#include "tubeform/core/signals.hpp"
 #include "tubeform/driver/output_schedule.hpp"
 #include "tubeform/driver/progress.hpp"
 #include "tubeform/scenes/registry.hpp"
@@ -177,6 +178,7 @@ PetscErrorCode Problem::Run()
   std::string stop;
   PetscErrorCode stop_code = 0;
   bool stalled = false, wrote_last = true;
+  int interrupted = 0; // the stop signal that ended the run
   const auto where = [&] {
     return Format("stroke %g, lambda %.6g, after %d increments", history_.rows().back().stroke, lambda, (int)inc);
   };
@@ -204,10 +206,17 @@ PetscErrorCode Problem::Run()
                     (int)opt_.rmin_max_increments, where().c_str());
       break;
     }
-    if (opt_.time_limit > 0) {
-      int over = MPI_Wtime() - t_start > opt_.time_limit, any;
-      PetscCallMPI(MPI_Allreduce(&over, &any, 1, MPI_INT, MPI_LOR, comm_)); // ranks' clocks differ
-      if (any) {
+    // ... and the clock (-time_limit) and stop signals (rank 0 may be the only
+    // one to see either: clocks differ, a signal may reach one process).
+    {
+      int mine[2] = {opt_.time_limit > 0 && MPI_Wtime() - t_start > opt_.time_limit, StopSignal()}, any[2];
+      PetscCallMPI(MPI_Allreduce(mine, any, 2, MPI_INT, MPI_MAX, comm_));
+      if (any[1]) {
+        interrupted = any[1], stop_code = PETSC_ERR_SIG;
+        stop = Format("interrupted by %s (%s)", SignalName(any[1]), where().c_str());
+        break;
+      }
+      if (any[0]) {
         stop_code = PETSC_ERR_NOT_CONVERGED;
         stop = Format("-time_limit %g s reached (%s)", opt_.time_limit, where().c_str());
         break;
@@ -285,9 +294,13 @@ PetscErrorCode Problem::Run()
   // 7. Final metrics and the result file (renamed into place only now).
   PetscCall(PetscLogStagePush(Log::output_stage));
   const HistoryRow &last = history_.rows().back();
-  std::vector<std::pair<std::string, double>> metrics = {
-    {"final_stroke", last.stroke}, {"final_load", last.load},        {"x_max", last.x_max},
-    {"y_max", last.y_max},         {"stalled", stalled ? 1.0 : 0.0}, {"stopped", stop.empty() ? 0.0 : 1.0}};
+  std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke},
+                                                         {"final_load", last.load},
+                                                         {"x_max", last.x_max},
+                                                         {"y_max", last.y_max},
+                                                         {"stalled", stalled ? 1.0 : 0.0},
+                                                         {"stopped", stop.empty() ? 0.0 : 1.0},
+                                                         {"interrupted", double(interrupted)}};
   for (const auto &m : scene_->FinalMetrics(history_)) metrics.push_back(m);
   PetscCall(writer.Close(history_, metrics));
   {

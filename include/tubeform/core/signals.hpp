@@ -1,0 +1,19 @@
+// Stopping a run cleanly on request: SIGINT (Ctrl-C), SIGTERM (a kill, a
+// batch system's end of job) and SIGUSR1 (a scheduler's warning before the
+// kill; Open MPI's mpirun forwards it to every rank) only set a flag; the
+// driver looks at it between increments, on every rank at once, and ends the
+// run as it ends one that reached -time_limit: results written, flagged, one
+// line, non-zero exit.
+#pragma once
+
+namespace tf {
+
+// Installs the handlers (after PetscInitialize, replacing PETSc's for these
+// signals, which would abort at once).
+void InstallStopSignals();
+// The last stop signal received by this process, 0 if none.
+int StopSignal();
+// Its name ("SIGTERM", ...).
+const char *SignalName(int sig);
+
+} // namespace tf
