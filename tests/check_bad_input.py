@@ -1,6 +1,8 @@
 """Bad input: a one-line error naming the option or file, a non-zero exit,
 no hang (timeout) and no core dump, on 1 and 2 ranks; and an earlier result
-file is left untouched by the failed run. Also the stall watch
+file is left untouched by the failed run. Misspelled options and values
+that are not numbers are such errors too (-allow_unused lets a run go on
+with an unknown option: checked once). Also the stall watch
 (-rmin_stall_increments): error, non-zero exit, results written and flagged."""
 import hashlib
 import os
@@ -45,6 +47,13 @@ cases = [
     (["-unload_increments", "-1"], "-unload_increments"),
     (["-time_limit", "-1"], "-time_limit"),
     (["-progress", "-1"], "-progress"),
+    # Misspelled options name the nearest known one (issue 12); numbers that
+    # are not numbers name the option.
+    (["-tube_r", "17"], "-tube_r: unknown option; did you mean -tube_ro?"),
+    (["-frction_mu", "0.3"], "did you mean -friction_mu?"),
+    (["-rmin_depps", "0.001"], "did you mean -rmin_deps?"),
+    (["-tube_ro", "abc"], "-tube_ro abc: not a number"),
+    (["-mesh_nt", "4.5"], "-mesh_nt 4.5: not a whole number"),
     (["-max_energy_error", "0"], "-max_energy_error"),
     (["-rmin_deps_yield", "-1"], "-rmin_deps_yield"),
 ]
@@ -59,6 +68,11 @@ for np_, subset in ((1, cases), (2, [cases[0], cases[4], cases[13], cases[14]]))
         k.check(ok, f"np={np_} {' '.join(extra)}: exit {p.returncode}, message: {lines[0] if lines else '(none)'}")
         k.check(not os.path.exists("core"), "no core dump")
 k.check(hashlib.sha256(open("keep.h5", "rb").read()).hexdigest() == digest, "earlier result file unchanged")
+typo = [c for c in cases if c[0][0] == "-tube_r"][0]
+p = run(tf, mpirun, 2, base + ["-output", out("typo.h5")] + typo[0], check=False, timeout=60)
+k.check(p.returncode != 0 and typo[1] in p.stderr + p.stdout, "np=2 -tube_r 17: the same error on 2 ranks")
+p = run(tf, mpirun, 1, base + ["-output", out("allow.h5"), "-allow_unused"] + typo[0], check=False, timeout=60)
+k.check(p.returncode == 0 and os.path.exists("allow.h5"), f"-allow_unused: the run goes on (exit {p.returncode})")
 
 # A run that cannot advance (every increment cut to nothing, here by an
 # absurd strain limit) stops at the stall watch: a one-line error naming the

@@ -5,6 +5,7 @@
 #include <initializer_list>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/io/option_reader.hpp"
 #include "tubeform/step/rmin.hpp"
 
 namespace tf {
@@ -16,7 +17,7 @@ const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
 
 // One of a list of words for a string-valued option; the current value is the default. Called between
 // PetscOptionsBegin and PetscOptionsEnd (it needs their PetscOptionsObject).
-PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, const char *name, const char *help,
+PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
                           std::initializer_list<const char *> words, std::string &value)
 {
   const char *const *list = words.begin();
@@ -24,6 +25,7 @@ PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, const char *name
   PetscInt choice = 0;
 
   PetscFunctionBeginUser;
+  read.Note(name);
   for (PetscInt k = 0; k < n; ++k)
     if (value == list[k]) choice = k;
   PetscCall(PetscOptionsEList(name, help, "tubeform", list, n, list[choice], &choice, nullptr));
@@ -39,6 +41,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   char buf[PETSC_MAX_PATH_LEN];
   PetscBool set;
 
+  OptionReader read; // every option's name, for the check of unknown ones
+
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasHelp(nullptr, &opt.help));
 
@@ -49,23 +53,24 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
     choice = 0;
     for (size_t k = 0; k < scenes.size(); ++k)
       if (scenes[k] == opt.scene) choice = (PetscInt)k;
+    read.Note("-scene");
     PetscCall(PetscOptionsEList("-scene", "Scene to run", "tubeform", names.data(), (PetscInt)names.size(),
                                 names[choice], &choice, &set));
     opt.scene = scenes[choice];
   }
+  PetscCall(read.Real(PetscOptionsObject, "-tube_ro", "Outer radius of the tube (mm)", opt.tube_ro));
+  PetscCall(read.Real(PetscOptionsObject, "-tube_t", "Wall thickness (mm)", opt.tube_t));
+  PetscCall(read.Int(PetscOptionsObject, "-mesh_nt", "Elements through the wall (structured mesh)", opt.mesh_nt));
   PetscCall(
-    PetscOptionsReal("-tube_ro", "Outer radius of the tube (mm)", "tubeform", opt.tube_ro, &opt.tube_ro, nullptr));
-  PetscCall(PetscOptionsReal("-tube_t", "Wall thickness (mm)", "tubeform", opt.tube_t, &opt.tube_t, nullptr));
-  PetscCall(PetscOptionsInt("-mesh_nt", "Elements through the wall (structured mesh)", "tubeform", opt.mesh_nt,
-                            &opt.mesh_nt, nullptr));
-  PetscCall(PetscOptionsInt("-mesh_ntheta", "Elements around the quarter (structured mesh)", "tubeform",
-                            opt.mesh_ntheta, &opt.mesh_ntheta, nullptr));
+    read.Int(PetscOptionsObject, "-mesh_ntheta", "Elements around the quarter (structured mesh)", opt.mesh_ntheta));
   buf[0] = 0;
+  read.Note("-mesh_file");
   PetscCall(PetscOptionsString(
     "-mesh_file", "Gmsh 4.1 ASCII quad mesh with physical curves inner, outer, x0, y0 (replaces the structured mesh)",
     "tubeform", buf, buf, sizeof(buf), &set));
   if (set) opt.mesh_file = buf;
   choice = 1;
+  read.Note("-element");
   PetscCall(PetscOptionsEList("-element",
                               "Element formulation: q4 (full integration), bbar (mean dilatation), qm6 (incompatible "
                               "modes: no shear locking in bending)",
@@ -76,24 +81,21 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
 
   PetscOptionsBegin(comm, "", "tubeform: material", "tubeform");
   choice = 0;
+  read.Note("-material");
   PetscCall(PetscOptionsEList("-material", "Material preset (Huang 2008, Table 1) or custom", "tubeform", kMaterials, 3,
                               kMaterials[choice], &choice, nullptr));
   MaterialPreset(kMaterials[choice], opt.material);
-  PetscCall(
-    PetscOptionsReal("-material_e", "Young's modulus E (MPa)", "tubeform", opt.material.E, &opt.material.E, nullptr));
-  PetscCall(
-    PetscOptionsReal("-material_nu", "Poisson's ratio", "tubeform", opt.material.nu, &opt.material.nu, nullptr));
-  PetscCall(PetscOptionsReal("-material_sy", "Initial yield stress (MPa)", "tubeform", opt.material.sy,
-                             &opt.material.sy, nullptr));
-  PetscCall(PetscOptionsReal("-material_k", "Hardening coefficient K (MPa)", "tubeform", opt.material.K,
-                             &opt.material.K, nullptr));
-  PetscCall(
-    PetscOptionsReal("-material_n", "Hardening exponent n", "tubeform", opt.material.n, &opt.material.n, nullptr));
-  PetscCall(PetscOptionsReal("-material_density", "Mass density (t/mm^3; aluminum 2.70e-9), used by -dynamics implicit",
-                             "tubeform", opt.material.density, &opt.material.density, nullptr));
+  PetscCall(read.Real(PetscOptionsObject, "-material_e", "Young's modulus E (MPa)", opt.material.E));
+  PetscCall(read.Real(PetscOptionsObject, "-material_nu", "Poisson's ratio", opt.material.nu));
+  PetscCall(read.Real(PetscOptionsObject, "-material_sy", "Initial yield stress (MPa)", opt.material.sy));
+  PetscCall(read.Real(PetscOptionsObject, "-material_k", "Hardening coefficient K (MPa)", opt.material.K));
+  PetscCall(read.Real(PetscOptionsObject, "-material_n", "Hardening exponent n", opt.material.n));
+  PetscCall(read.Real(PetscOptionsObject, "-material_density",
+                      "Mass density (t/mm^3; aluminum 2.70e-9), used by -dynamics implicit", opt.material.density));
   choice = 1;
   for (PetscInt k = 0; k < 4; ++k)
     if (opt.material.law == kLaws[k]) choice = k;
+  read.Note("-material_law");
   PetscCall(PetscOptionsEList("-material_law",
                               "Flow curve: elastic (no yield), ludwik sy+K ep^n, swift K(ep0+ep)^n, table", "tubeform",
                               kLaws, 4, kLaws[choice], &choice, nullptr));
@@ -101,6 +103,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   {
     PetscReal table[200] = {0}; // -help prints the first entry as the default
     PetscInt n = 200;
+    read.Note("-material_table");
     PetscCall(PetscOptionsRealArray("-material_table",
                                     "Flow curve for -material_law table: ep0,sy0,ep1,sy1,... (ep0 = 0, ep increasing)",
                                     "tubeform", table, &n, &set));
@@ -109,50 +112,46 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscOptionsEnd();
 
   PetscOptionsBegin(comm, "", "tubeform: incremental driver (r_min method)", "tubeform");
-  PetscCall(PetscOptionsInt("-increments", "Trial increments over the load path (r_min may cut each)", "tubeform",
-                            opt.increments, &opt.increments, nullptr));
-  PetscCall(PetscOptionsInt("-unload_increments",
-                            "Trial increments of the unloading (the path past the end of loading: the tool scenes' "
-                            "springback, the slide scene's later stages); 0: as -increments",
-                            "tubeform", opt.unload_increments, &opt.unload_increments, nullptr));
-  PetscCall(PetscOptionsReal("-rmin_deps", "r2: largest principal strain increment", "tubeform", opt.rmin_deps,
-                             &opt.rmin_deps, nullptr));
-  PetscCall(PetscOptionsReal("-rmin_deps_yield",
-                             "r2 relative to the material: the strain increment also at most this many initial "
-                             "yield strains sigma_y0 / E (0: off; materials with E / sigma_y in the thousands)",
-                             "tubeform", opt.rmin_deps_yield, &opt.rmin_deps_yield, nullptr));
-  PetscCall(PetscOptionsReal("-rmin_domega", "r3: largest rotation increment (rad)", "tubeform", opt.rmin_domega,
-                             &opt.rmin_domega, nullptr));
-  PetscCall(PetscOptionsReal("-rmin_group_tol", "Events within (1 + tol) r_min are taken in the same increment",
-                             "tubeform", opt.rmin_group_tol, &opt.rmin_group_tol, nullptr));
-  PetscCall(ChooseWord(PetscOptionsObject, "-rmin_yield",
+  PetscCall(read.Int(PetscOptionsObject, "-increments", "Trial increments over the load path (r_min may cut each)",
+                     opt.increments));
+  PetscCall(read.Int(PetscOptionsObject, "-unload_increments",
+                     "Trial increments of the unloading (the path past the end of loading: the tool scenes' "
+                     "springback, the slide scene's later stages); 0: as -increments",
+                     opt.unload_increments));
+  PetscCall(read.Real(PetscOptionsObject, "-rmin_deps", "r2: largest principal strain increment", opt.rmin_deps));
+  PetscCall(read.Real(PetscOptionsObject, "-rmin_deps_yield",
+                      "r2 relative to the material: the strain increment also at most this many initial "
+                      "yield strains sigma_y0 / E (0: off; materials with E / sigma_y in the thousands)",
+                      opt.rmin_deps_yield));
+  PetscCall(read.Real(PetscOptionsObject, "-rmin_domega", "r3: largest rotation increment (rad)", opt.rmin_domega));
+  PetscCall(read.Real(PetscOptionsObject, "-rmin_group_tol",
+                      "Events within (1 + tol) r_min are taken in the same increment", opt.rmin_group_tol));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-rmin_yield",
                        "onset (paper: r1 ends the step where a point meets the yield surface), inside (points "
                        "yield inside a step: tangent weighted by the elastic fraction, update split at the onset)",
                        {"onset", "inside"}, opt.rmin_yield));
-  PetscCall(PetscOptionsReal("-rmin_yield_tol",
-                             "-rmin_yield inside: re-solve the step while a point's elastic fraction moves by more",
-                             "tubeform", opt.rmin_yield_tol, &opt.rmin_yield_tol, nullptr));
-  PetscCall(PetscOptionsReal("-rmin_event_tol",
-                             "Steps that are not linear in r (friction, inertia) are solved again until their first "
-                             "event lies within this fraction of the step's end",
-                             "tubeform", opt.rmin_event_tol, &opt.rmin_event_tol, nullptr));
+  PetscCall(read.Real(PetscOptionsObject, "-rmin_yield_tol",
+                      "-rmin_yield inside: re-solve the step while a point's elastic fraction moves by more",
+                      opt.rmin_yield_tol));
+  PetscCall(read.Real(PetscOptionsObject, "-rmin_event_tol",
+                      "Steps that are not linear in r (friction, inertia) are solved again until their first "
+                      "event lies within this fraction of the step's end",
+                      opt.rmin_event_tol));
   const std::string stall_help =
     "Stop (results so far written) when this many increments advance the load path by less than " +
     std::to_string(kStallAdvance);
-  PetscCall(PetscOptionsInt("-rmin_max_increments",
-                            "Stop (results so far written, non-zero exit) after this many increments", "tubeform",
-                            opt.rmin_max_increments, &opt.rmin_max_increments, nullptr));
-  PetscCall(PetscOptionsInt("-rmin_stall_increments", stall_help.c_str(), "tubeform", opt.rmin_stall_increments,
-                            &opt.rmin_stall_increments, nullptr));
-  PetscCall(PetscOptionsInt("-rmin_max_redo",
-                            "Re-solves per increment when points switch between loading and unloading", "tubeform",
-                            opt.rmin_max_redo, &opt.rmin_max_redo, nullptr));
-  PetscCall(PetscOptionsBool("-drift_correction",
-                             "Scale plastic stresses back onto the yield surface after each update", "tubeform",
-                             opt.drift_correction, &opt.drift_correction, nullptr));
+  PetscCall(read.Int(PetscOptionsObject, "-rmin_max_increments",
+                     "Stop (results so far written, non-zero exit) after this many increments",
+                     opt.rmin_max_increments));
+  PetscCall(read.Int(PetscOptionsObject, "-rmin_stall_increments", stall_help.c_str(), opt.rmin_stall_increments));
+  PetscCall(read.Int(PetscOptionsObject, "-rmin_max_redo",
+                     "Re-solves per increment when points switch between loading and unloading", opt.rmin_max_redo));
+  PetscCall(read.Bool(PetscOptionsObject, "-drift_correction",
+                      "Scale plastic stresses back onto the yield surface after each update", opt.drift_correction));
   {
     const char *const kinds[] = {"quasistatic", "implicit", "auto"};
     choice = static_cast<int>(opt.dynamics);
+    read.Note("-dynamics");
     PetscCall(
       PetscOptionsEList("-dynamics",
                         "quasistatic (no inertia), implicit (lumped mass, backward Euler in time), auto (quasi-static "
@@ -160,17 +159,19 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                         "tubeform", kinds, 3, kinds[choice], &choice, nullptr));
     opt.dynamics = static_cast<Dynamics>(choice);
   }
-  PetscCall(PetscOptionsReal(
-    "-dynamics_time", "Duration (s) of the load path lambda 0 -> 1 with -dynamics implicit (scenes without tools)",
-    "tubeform", opt.dynamics_time, &opt.dynamics_time, nullptr));
-  PetscCall(PetscOptionsReal(
-    "-punch_speed", "Tool speed (mm/s) with -dynamics implicit in squaring/flattening: the stroke takes stroke / speed",
-    "tubeform", opt.punch_speed, &opt.punch_speed, nullptr));
-  PetscCall(PetscOptionsBool("-residual_correction", "Add the out-of-balance force to the next increment's load",
-                             "tubeform", opt.residual_correction, &opt.residual_correction, nullptr));
+  PetscCall(read.Real(PetscOptionsObject, "-dynamics_time",
+                      "Duration (s) of the load path lambda 0 -> 1 with -dynamics implicit (scenes without tools)",
+                      opt.dynamics_time));
+  PetscCall(
+    read.Real(PetscOptionsObject, "-punch_speed",
+              "Tool speed (mm/s) with -dynamics implicit in squaring/flattening: the stroke takes stroke / speed",
+              opt.punch_speed));
+  PetscCall(read.Bool(PetscOptionsObject, "-residual_correction",
+                      "Add the out-of-balance force to the next increment's load", opt.residual_correction));
   {
     const char *const schemes[] = {"forward", "midpoint"};
     choice = opt.kinematics == ObjectiveScheme::Forward ? 0 : 1;
+    read.Note("-kinematics");
     PetscCall(PetscOptionsEList(
       "-kinematics",
       "Strain/spin increments: forward (start configuration, W sigma - sigma W) or midpoint (Hughes-Winget)",
@@ -180,104 +181,105 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscOptionsEnd();
 
   PetscOptionsBegin(comm, "", "tubeform: loading and output", "tubeform");
-  PetscCall(PetscOptionsReal("-pressure_p", "pressure scene: final internal pressure (MPa), -pressure_control load",
-                             "tubeform", opt.pressure_p, &opt.pressure_p, nullptr));
-  PetscCall(ChooseWord(PetscOptionsObject, "-pressure_control",
+  PetscCall(read.Real(PetscOptionsObject, "-pressure_p",
+                      "pressure scene: final internal pressure (MPa), -pressure_control load", opt.pressure_p));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-pressure_control",
                        "pressure scene: ramp the pressure (load) or the inner radial displacement (displacement)",
                        {"load", "displacement"}, opt.pressure_control));
-  PetscCall(PetscOptionsReal("-pressure_u",
-                             "pressure scene: final inner radial displacement (mm), -pressure_control displacement",
-                             "tubeform", opt.pressure_u, &opt.pressure_u, nullptr));
-  PetscCall(PetscOptionsReal("-stroke",
-                             "Final stroke U (mm): tool travel, or the prescribed end shortening of the column",
-                             "tubeform", opt.stroke, &opt.stroke, nullptr));
-  PetscCall(PetscOptionsReal("-stroke_corner_radius",
-                             "Choose the stroke by the paper's rule: outer corner radius (mm) of the "
-                             "perimeter-conserving rounded square (e.g. 4 t)",
-                             "tubeform", opt.stroke_corner_radius, &opt.stroke_corner_radius, nullptr));
-  PetscCall(PetscOptionsReal("-die_r_apex", "V-die apex fillet radius (mm)", "tubeform", opt.die_r_apex,
-                             &opt.die_r_apex, nullptr));
-  PetscCall(PetscOptionsReal(
-    "-die_u_close", "V-die parting face at y = u_close - U: the dies close at stroke u_close (mm; 0: no parting face)",
-    "tubeform", opt.die_u_close, &opt.die_u_close, nullptr));
-  PetscCall(PetscOptionsReal("-die_r_edge", "V-die edge fillet radius between flank and parting face (mm)", "tubeform",
-                             opt.die_r_edge, &opt.die_r_edge, nullptr));
-  PetscCall(PetscOptionsReal("-friction_mu", "Coulomb friction coefficient (0: frictionless, no friction work at all)",
-                             "tubeform", opt.friction_mu, &opt.friction_mu, nullptr));
-  PetscCall(PetscOptionsReal("-friction_vcri",
-                             "Quasi-stick slip VCRI (mm) of the tanh law; 0: 2% of the circumferential element size",
-                             "tubeform", opt.friction_vcri, &opt.friction_vcri, nullptr));
-  PetscCall(PetscOptionsReal("-friction_tol", "Friction iterations: largest change of f_l / (mu f_n) between iterates",
-                             "tubeform", opt.friction_tol, &opt.friction_tol, nullptr));
-  PetscCall(PetscOptionsInt("-friction_max_iters", "Friction iterations per increment before giving up", "tubeform",
-                            opt.friction_max_iters, &opt.friction_max_iters, nullptr));
-  PetscCall(PetscOptionsReal("-rmin_dphi",
-                             "r6, slide to stick: largest fall of the friction mobilization f_l / (mu f_n), towards "
-                             "stick or through it into a reversal, in an increment",
-                             "tubeform", opt.rmin_dphi, &opt.rmin_dphi, nullptr));
-  PetscCall(PetscOptionsReal("-rmin_dphi_rise",
-                             "r6, stick to slide: largest rise of |f_l / (mu f_n)| in an increment (1: no bound)",
-                             "tubeform", opt.rmin_dphi_rise, &opt.rmin_dphi_rise, nullptr));
+  PetscCall(read.Real(PetscOptionsObject, "-pressure_u",
+                      "pressure scene: final inner radial displacement (mm), -pressure_control displacement",
+                      opt.pressure_u));
+  PetscCall(read.Real(PetscOptionsObject, "-stroke",
+                      "Final stroke U (mm): tool travel, or the prescribed end shortening of the column", opt.stroke));
+  PetscCall(read.Real(PetscOptionsObject, "-stroke_corner_radius",
+                      "Choose the stroke by the paper's rule: outer corner radius (mm) of the "
+                      "perimeter-conserving rounded square (e.g. 4 t)",
+                      opt.stroke_corner_radius));
+  PetscCall(read.Real(PetscOptionsObject, "-die_r_apex", "V-die apex fillet radius (mm)", opt.die_r_apex));
+  PetscCall(
+    read.Real(PetscOptionsObject, "-die_u_close",
+              "V-die parting face at y = u_close - U: the dies close at stroke u_close (mm; 0: no parting face)",
+              opt.die_u_close));
+  PetscCall(read.Real(PetscOptionsObject, "-die_r_edge", "V-die edge fillet radius between flank and parting face (mm)",
+                      opt.die_r_edge));
+  PetscCall(read.Real(PetscOptionsObject, "-friction_mu",
+                      "Coulomb friction coefficient (0: frictionless, no friction work at all)", opt.friction_mu));
+  PetscCall(read.Real(PetscOptionsObject, "-friction_vcri",
+                      "Quasi-stick slip VCRI (mm) of the tanh law; 0: 2% of the circumferential element size",
+                      opt.friction_vcri));
+  PetscCall(read.Real(PetscOptionsObject, "-friction_tol",
+                      "Friction iterations: largest change of f_l / (mu f_n) between iterates", opt.friction_tol));
+  PetscCall(read.Int(PetscOptionsObject, "-friction_max_iters", "Friction iterations per increment before giving up",
+                     opt.friction_max_iters));
+  PetscCall(read.Real(PetscOptionsObject, "-rmin_dphi",
+                      "r6, slide to stick: largest fall of the friction mobilization f_l / (mu f_n), towards "
+                      "stick or through it into a reversal, in an increment",
+                      opt.rmin_dphi));
+  PetscCall(read.Real(PetscOptionsObject, "-rmin_dphi_rise",
+                      "r6, stick to slide: largest rise of |f_l / (mu f_n)| in an increment (1: no bound)",
+                      opt.rmin_dphi_rise));
   PetscCall(ChooseWord(
-    PetscOptionsObject, "-unload",
+    PetscOptionsObject, read, "-unload",
     "Springback: reverse (paper: elastic, contact forces reversed, tools removed), withdraw (tools move back), none",
     {"reverse", "withdraw", "none"}, opt.unload));
-  PetscCall(PetscOptionsReal("-shear_gamma", "shear scene: final shear strain gamma", "tubeform", opt.shear_gamma,
-                             &opt.shear_gamma, nullptr));
-  PetscCall(PetscOptionsReal("-slide_n", "slide scene: normal force pressing the block (N/mm)", "tubeform", opt.slide_n,
-                             &opt.slide_n, nullptr));
-  PetscCall(ChooseWord(PetscOptionsObject, "-slide_tool",
+  PetscCall(read.Real(PetscOptionsObject, "-shear_gamma", "shear scene: final shear strain gamma", opt.shear_gamma));
+  PetscCall(
+    read.Real(PetscOptionsObject, "-slide_n", "slide scene: normal force pressing the block (N/mm)", opt.slide_n));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-slide_tool",
                        "slide scene: a block on a flat floor, or a quarter ring turned inside a cylinder (arc)",
                        {"flat", "arc"}, opt.slide_tool));
-  PetscCall(PetscOptionsReal("-slide_push", "slide scene: sideways displacement of the block's top (mm)", "tubeform",
-                             opt.slide_push, &opt.slide_push, nullptr));
-  PetscCall(PetscOptionsReal("-slide_back",
-                             "slide scene (flat): then push the top back by this much (mm; 0: no third stage), "
-                             "reversing the slip",
-                             "tubeform", opt.slide_back, &opt.slide_back, nullptr));
-  PetscCall(PetscOptionsReal("-tension_strain", "tension scene: final nominal strain in x (negative: compression)",
-                             "tubeform", opt.tension_strain, &opt.tension_strain, nullptr));
-  PetscCall(PetscOptionsReal("-rotation_angle", "rotation scene: rigid rotation after the prestretch (degrees)",
-                             "tubeform", opt.rotation_angle, &opt.rotation_angle, nullptr));
-  PetscCall(PetscOptionsReal("-rotation_strain", "rotation scene: uniaxial prestretch strain in x before the rotation",
-                             "tubeform", opt.rotation_strain, &opt.rotation_strain, nullptr));
-  PetscCall(PetscOptionsReal("-column_l", "column scene: length between the pins (mm)", "tubeform", opt.column_l,
-                             &opt.column_l, nullptr));
-  PetscCall(
-    PetscOptionsReal("-column_t", "column scene: thickness (mm)", "tubeform", opt.column_t, &opt.column_t, nullptr));
-  PetscCall(PetscOptionsReal("-column_imperfection", "column scene: amplitude of the initial sine-shaped bow (mm)",
-                             "tubeform", opt.column_imperfection, &opt.column_imperfection, nullptr));
+  PetscCall(read.Real(PetscOptionsObject, "-slide_push", "slide scene: sideways displacement of the block's top (mm)",
+                      opt.slide_push));
+  PetscCall(read.Real(PetscOptionsObject, "-slide_back",
+                      "slide scene (flat): then push the top back by this much (mm; 0: no third stage), "
+                      "reversing the slip",
+                      opt.slide_back));
+  PetscCall(read.Real(PetscOptionsObject, "-tension_strain",
+                      "tension scene: final nominal strain in x (negative: compression)", opt.tension_strain));
+  PetscCall(read.Real(PetscOptionsObject, "-rotation_angle",
+                      "rotation scene: rigid rotation after the prestretch (degrees)", opt.rotation_angle));
+  PetscCall(read.Real(PetscOptionsObject, "-rotation_strain",
+                      "rotation scene: uniaxial prestretch strain in x before the rotation", opt.rotation_strain));
+  PetscCall(read.Real(PetscOptionsObject, "-column_l", "column scene: length between the pins (mm)", opt.column_l));
+  PetscCall(read.Real(PetscOptionsObject, "-column_t", "column scene: thickness (mm)", opt.column_t));
+  PetscCall(read.Real(PetscOptionsObject, "-column_imperfection",
+                      "column scene: amplitude of the initial sine-shaped bow (mm)", opt.column_imperfection));
   PetscCall(PetscStrncpy(buf, opt.output.c_str(), sizeof(buf)));
+  read.Note("-output");
   PetscCall(PetscOptionsString("-output", "HDF5 result file (an .xmf for ParaView is written beside it)", "tubeform",
                                buf, buf, sizeof(buf), nullptr));
   opt.output = buf;
   buf[0] = 0;
+  read.Note("-history_csv");
   PetscCall(PetscOptionsString("-history_csv", "Also write the history as CSV to this file", "tubeform", buf, buf,
                                sizeof(buf), &set));
   if (set) opt.history_csv = buf;
-  PetscCall(PetscOptionsInt("-output_every", "Write fields every k-th increment (the last is always written)",
-                            "tubeform", opt.output_every, &opt.output_every, nullptr));
-  PetscCall(PetscOptionsReal("-output_stroke",
-                             "Write fields each time the loading advances this much stroke (mm; later stages: the same "
-                             "fraction of the stage) and at every stage end; 0: every -output_every increments",
-                             "tubeform", opt.output_stroke, &opt.output_stroke, nullptr));
-  PetscCall(PetscOptionsReal("-max_energy_error",
-                             "Stop (results so far written, non-zero exit) when the energy balance error (self-check "
-                             "(a)) passes this fraction",
-                             "tubeform", opt.max_energy_error, &opt.max_energy_error, nullptr));
-  PetscCall(PetscOptionsReal("-time_limit",
-                             "Stop after this many seconds of the incremental loop, results up to there written, with "
-                             "an error (non-zero exit); 0: no limit",
-                             "tubeform", opt.time_limit, &opt.time_limit, nullptr));
-  PetscCall(PetscOptionsReal("-progress",
-                             "Print a progress line on rank 0 (stage, percent, stroke, time left) every this many "
-                             "seconds of a run; 0: none",
-                             "tubeform", opt.progress, &opt.progress, nullptr));
-  PetscCall(PetscOptionsBool("-monitor", "Print one line per increment on rank 0", "tubeform", opt.monitor,
-                             &opt.monitor, nullptr));
+  PetscCall(read.Int(PetscOptionsObject, "-output_every",
+                     "Write fields every k-th increment (the last is always written)", opt.output_every));
+  PetscCall(read.Real(PetscOptionsObject, "-output_stroke",
+                      "Write fields each time the loading advances this much stroke (mm; later stages: the same "
+                      "fraction of the stage) and at every stage end; 0: every -output_every increments",
+                      opt.output_stroke));
+  PetscCall(read.Real(PetscOptionsObject, "-max_energy_error",
+                      "Stop (results so far written, non-zero exit) when the energy balance error (self-check "
+                      "(a)) passes this fraction",
+                      opt.max_energy_error));
+  PetscCall(read.Real(PetscOptionsObject, "-time_limit",
+                      "Stop after this many seconds of the incremental loop, results up to there written, with "
+                      "an error (non-zero exit); 0: no limit",
+                      opt.time_limit));
+  PetscCall(read.Real(PetscOptionsObject, "-progress",
+                      "Print a progress line on rank 0 (stage, percent, stroke, time left) every this many "
+                      "seconds of a run; 0: none",
+                      opt.progress));
+  PetscCall(read.Bool(PetscOptionsObject, "-monitor", "Print one line per increment on rank 0", opt.monitor));
+  PetscCall(read.Bool(PetscOptionsObject, "-allow_unused",
+                      "Run even when an option close to one of tubeform's is not one (a misspelling is an error)",
+                      opt.allow_unused));
   PetscOptionsEnd();
 
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!opt.allow_unused) PetscCall(read.CheckUnknown(comm));
 
   // Validation: one message per problem, naming the option and the allowed range.
   const auto &m = opt.material;

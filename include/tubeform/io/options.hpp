@@ -80,6 +80,7 @@ struct Options {
   double time_limit = 0; // > 0: stop (results written, non-zero exit) after this many seconds of loading
   double progress = 10;  // s between progress lines on rank 0 (0: none); quiet on shorter runs
   PetscBool monitor = PETSC_FALSE;
+  PetscBool allow_unused = PETSC_FALSE; // an unknown option close to a known one is no error
   PetscBool help = PETSC_FALSE;
 };
 

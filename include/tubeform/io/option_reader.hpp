@@ -1,0 +1,34 @@
+// Reading tubeform's options: each reader records the option's name, and a
+// number that is not one is refused with a message naming the option
+// (PETSc's own says only "Input string abc has no numeric value"). Called
+// between PetscOptionsBegin and PetscOptionsEnd, whose PetscOptionsObject
+// they take, so that -help lists the options as before.
+#pragma once
+
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+namespace tf {
+
+class OptionReader {
+public:
+  PetscErrorCode Real(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, double &value);
+  PetscErrorCode Int(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscInt &value);
+  PetscErrorCode Bool(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscBool &value);
+  // An option read some other way (a word from a list, a file name).
+  void Note(const char *name) { names_.emplace_back(name); }
+  // Collective, after every tubeform option is read: an option given but not
+  // read that is close to one of tubeform's (within 2 edits, or sharing its
+  // first word: -tube_*, -rmin_*, ...) is an error naming the nearest (the
+  // caller skips it with -allow_unused). Other unread options are PETSc's (its
+  // solvers read theirs later; PETSc's -options_left lists any never read).
+  PetscErrorCode CheckUnknown(MPI_Comm comm) const;
+
+private:
+  std::vector<std::string> names_; // with the dash
+  PetscErrorCode CheckNumber(MPI_Comm comm, const char *name, bool integer) const;
+};
+
+} // namespace tf
