@@ -54,6 +54,9 @@ cases = [
     (["-rmin_depps", "0.001"], "did you mean -rmin_deps?"),
     (["-tube_ro", "abc"], "-tube_ro abc: not a number"),
     (["-mesh_nt", "4.5"], "-mesh_nt 4.5: not a whole number"),
+    # A die built for a 15 mm tube around a mesh of radius 20: it would start 5 mm inside.
+    (["-scene", "squaring", "-mesh_file", f"{src}/meshes/thick_cylinder_4x8.msh", "-tube_ro", "15", "-tube_t", "5"],
+     "the V-die starts inside the body: node"),
     (["-max_energy_error", "0"], "-max_energy_error"),
     (["-rmin_deps_yield", "-1"], "-rmin_deps_yield"),
 ]

@@ -59,10 +59,21 @@ PetscErrorCode ContactSet::Initialize()
   for (double x : mesh_->x0) size = std::max(size, std::abs(x));
   PetscCallMPI(MPI_Allreduce(&size, &global_size, 1, MPI_DOUBLE, MPI_MAX, comm()));
   const double tol = kStartGap * (1 + global_size);
+  struct {
+    double depth;
+    int node;
+  } inside = {0.0, -1}, deepest;
   for (PetscInt node : candidates_) {
     const Projection pr = tool_.Project(Position(node));
     if (pr.segment >= 0 && std::abs(pr.gap) <= tol) contact_[node] = 1;
+    if (pr.segment >= 0 && -pr.gap > std::max(tol, inside.depth)) inside = {-pr.gap, (int)mesh_->node_orig[node]};
   }
+  // A tool that starts inside the body would push it out by its overlap in the
+  // first increment: a wrong start (a mesh file larger than -tube_ro, say).
+  PetscCallMPI(MPI_Allreduce(&inside, &deepest, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm()));
+  PetscCheck(deepest.node < 0, comm(), PETSC_ERR_USER_INPUT,
+             "the %s starts inside the body: node %d lies %g mm inside it (does -tube_ro match the mesh?)",
+             tool_.name.c_str(), deepest.node, deepest.depth);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
