@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "tubeform/assembly/solve_failure.hpp"
 #include "tubeform/core/core.hpp"
 #include "tubeform/core/log.hpp"
 
@@ -325,10 +326,11 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
   PetscCall(KSPSetOperators(ksp_, k_, k_));
   PetscCall(KSPSolve(ksp_, rhs_, sol_));
   PetscCall(KSPGetConvergedReason(ksp_, &reason));
-  PetscCheck(reason >= 0, mesh_->comm, PETSC_ERR_NOT_CONVERGED,
-             "Linear solve failed (%s): the stiffness is singular or the solver options are wrong; check that the "
-             "scene's supports remove every rigid-body motion",
-             KSPConvergedReasons[reason]);
+  if (reason < 0) {
+    std::string why;
+    PetscCall(DescribeSolveFailure(ksp_, why));
+    SETERRQ(mesh_->comm, PETSC_ERR_NOT_CONVERGED, "%s (KSP: %s)", why.c_str(), KSPConvergedReasons[reason]);
+  }
   ++nsolves_;
   PetscCall(PetscLogEventEnd(Log::solve, 0, 0, 0, 0));
 

@@ -1,0 +1,76 @@
+#include "tubeform/assembly/solve_failure.hpp"
+
+#include <cstring>
+
+#include "tubeform/core/core.hpp"
+
+namespace tf {
+
+namespace {
+
+// MUMPS's INFOG(1) < 0 (MUMPS 5 users' guide, "Error diagnostics"), the ones a run can meet.
+std::string MumpsError(PetscInt info1, PetscInt info2)
+{
+  const std::string code =
+    " (MUMPS INFOG(1) = " + std::to_string(info1) + ", INFOG(2) = " + std::to_string(info2) + ")";
+  switch (info1) {
+  case -6:
+  case -10:
+    return "the stiffness is singular" + code +
+           ": a rigid-body motion left free (check the scene's supports) or an element without stiffness";
+  case -8:
+  case -9:
+  case -14:
+  case -15:
+    return "MUMPS's workspace is too small" + code + ": raise -redundant_mat_mumps_icntl_14 (percent extra, e.g. 50)";
+  case -13:
+    return "out of memory" + code + ": a smaller mesh, more ranks with the distributed factorization, or more memory";
+  case -19:
+    return "the memory -mat_mumps_icntl_23 allows (MB per rank) is too small" + code;
+  default:
+    return "MUMPS failed" + code + ": see its users' guide, \"Error diagnostics\"";
+  }
+}
+
+} // namespace
+
+PetscErrorCode DescribeSolveFailure(KSP ksp, std::string &why)
+{
+  PC pc;
+  PetscBool redundant, mumps;
+  PetscFunctionBeginUser;
+  why = "the linear solve failed";
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCREDUNDANT, &redundant));
+  if (redundant) {
+    KSP inner;
+    PetscCall(PCRedundantGetKSP(pc, &inner));
+    PetscCall(KSPGetPC(inner, &pc));
+  }
+  PetscBool factored;
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &factored, PCLU, PCCHOLESKY, PCILU, PCICC, ""));
+  if (!factored) PetscFunctionReturn(PETSC_SUCCESS); // an iterative solver of the user's: KSP's reason says it
+  Mat factor = nullptr;
+  PetscCall(PCFactorGetMatrix(pc, &factor));
+  if (!factor) PetscFunctionReturn(PETSC_SUCCESS);
+  MatSolverType type;
+  PetscCall(MatFactorGetSolverType(factor, &type));
+  mumps = type && std::strcmp(type, MATSOLVERMUMPS) == 0 ? PETSC_TRUE : PETSC_FALSE;
+  if (mumps) {
+    PetscInt info1, info2;
+    PetscCall(MatMumpsGetInfog(factor, 1, &info1));
+    PetscCall(MatMumpsGetInfog(factor, 2, &info2));
+    if (info1 < 0) why = MumpsError(info1, info2);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  MatFactorError error;
+  PetscCall(MatFactorGetError(factor, &error));
+  if (error == MAT_FACTOR_NUMERIC_ZEROPIVOT || error == MAT_FACTOR_STRUCT_ZEROPIVOT)
+    why = "the stiffness is singular (a zero pivot in PETSc's LU): a rigid-body motion left free (check the scene's "
+          "supports) or an element without stiffness";
+  else if (error == MAT_FACTOR_OUTMEMORY)
+    why = "out of memory in PETSc's LU factorization";
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
