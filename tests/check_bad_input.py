@@ -71,6 +71,7 @@ for np_, subset in ((1, cases), (2, [cases[0], cases[4], cases[13], cases[14]]))
         k.check(ok, f"np={np_} {' '.join(extra)}: exit {p.returncode}, message: {lines[0] if lines else '(none)'}")
         k.check(not os.path.exists("core"), "no core dump")
 k.check(hashlib.sha256(open("keep.h5", "rb").read()).hexdigest() == digest, "earlier result file unchanged")
+k.check(not os.path.exists("keep.h5.partial"), "no .partial file left by a refused run")
 typo = [c for c in cases if c[0][0] == "-tube_r"][0]
 p = run(tf, mpirun, 2, base + ["-output", out("typo.h5")] + typo[0], check=False, timeout=60)
 k.check(p.returncode != 0 and typo[1] in p.stderr + p.stdout, "np=2 -tube_r 17: the same error on 2 ranks")

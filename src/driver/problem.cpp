@@ -134,8 +134,19 @@ PetscErrorCode Problem::Run()
   PetscInt step = 0, inc = 0;
 
   PetscFunctionBeginUser;
-  // 0. Outputs are checked before any work, so a bad path fails at once.
+  // 0. Outputs are checked before any work, so a bad path fails at once; the
+  // tools the scene asks for are set up (and refused if they start inside the
+  // body) before the result file is opened, so such a start leaves no file.
   if (!opt_.history_csv.empty()) PetscCall(CheckWritable(comm_, opt_.history_csv, "-history_csv"));
+  PetscCall(CheckWritable(comm_, opt_.output, "-output"));
+  ContactSpec tools;
+  PetscCall(scene_->Initialize(*model_, tools));
+  if (!tools.candidates.empty()) {
+    contact_ = std::make_unique<ContactSet>();
+    contact_->Setup(mesh_, system_, body_.position(), std::move(tools));
+    PetscCall(contact_->Initialize());
+    model_->contact = contact_.get();
+  }
   PetscCall(writer.Open(mesh_, opt_.output));
   {
     int ok = history_.OpenCsv(opt_.history_csv, rank_);
@@ -147,15 +158,7 @@ PetscErrorCode Problem::Run()
   du = system_.CreateLocalVector();
   PetscCall(CreateForces(du));
 
-  // The tools the scene asks for, and increment 0: the initial state.
-  ContactSpec tools;
-  PetscCall(scene_->Initialize(*model_, tools));
-  if (!tools.candidates.empty()) {
-    contact_ = std::make_unique<ContactSet>();
-    contact_->Setup(mesh_, system_, body_.position(), std::move(tools));
-    PetscCall(contact_->Initialize());
-    model_->contact = contact_.get();
-  }
+  // Increment 0: the initial state.
   PetscCall(body_.InternalForce(forces_.f_int));
   PetscCall(ExternalForces(0.0));
   PetscCall(ContactColumns(nullptr, row));

@@ -198,10 +198,10 @@ PetscErrorCode Problem::WriteFields(ResultWriter &writer, PetscInt step, double 
     Vec f = system_.CreateLocalVector();
     const PetscScalar *a;
     PetscCall(VecZeroEntries(f));
-    if (contact_->active()) PetscCall(contact_->AddContactForces(f));
+    PetscCall(contact_->AddContactForces(f)); // none once the tools are removed (springback)
     PetscCall(VecGetArrayRead(f, &a));
     for (PetscInt n = 0; n < mesh_.num_nodes; ++n) {
-      state.values[n] = contact_->active() && contact_->InContact(n) ? 1.0 : 0.0;
+      state.values[n] = contact_->InContact(n) ? 1.0 : 0.0;
       for (int k = 0; k < 2; ++k) force.values[2 * n + k] = PetscRealPart(a[mesh_.node_dof[n] + k]);
     }
     PetscCall(VecRestoreArrayRead(f, &a));
