@@ -11,14 +11,15 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 
-def option(opts, name, default):
-    """The last value of -name in an options string (a result's `options` attribute)."""
-    parts = opts.split()
-    val = default
-    for i, p in enumerate(parts[:-1]):
-        if p == name:
-            val = parts[i + 1]
-    return val
+from tfruns import option  # noqa: E402,F401  (scripts import it from here too)
+
+
+def rt_axis(ax):
+    """A logarithmic R/t axis with plain tick labels."""
+    ax.set_xscale("log")
+    ticks = [6, 8, 10, 15, 20, 30, 40, 60, 80]
+    ax.set_xticks(ticks, [str(t) for t in ticks])
+    ax.minorticks_off()
 
 
 class Result:

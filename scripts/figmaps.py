@@ -3,7 +3,7 @@ press force against R/t, the critical R/t and the die's apex radius, from
 scripts/sweep summaries (run with /usr/bin/python3; scripts/figures calls it)."""
 import os
 
-import figlib  # noqa: F401  (sets the Agg backend)
+import figlib  # (first: it sets the Agg backend)
 import matplotlib.pyplot as plt
 import numpy as np
 
@@ -56,11 +56,8 @@ def press_force(rows, out):
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
     for i, mu in enumerate(mus):
         ax.plot(rts, Z[i], "o-", label=f"mu {mu:g}")
-    ax.set_xscale("log")
     ax.set_yscale("log")
-    ticks = [6, 8, 10, 15, 20, 30, 40, 60, 80]
-    ax.set_xticks(ticks, [str(t) for t in ticks])
-    ax.minorticks_off()
+    figlib.rt_axis(ax)
     ax.set(xlabel="R/t = Ro / t (Ro 17.5 mm)", ylabel="press force, largest punch load (N/mm of tube)",
            title=f"Press force, aluminum, stroke to corner radius {CORNER_OVER_T} t")
     ax.grid(alpha=0.3, which="both")

@@ -14,6 +14,17 @@ EXE = os.path.join(root, "build", "tubeform")
 LOAD_AT, CT_AT = (1.0, 2.0, 3.0, 4.2), (2.0, 3.0, 4.2)
 
 
+def option(opts, name, default=None):
+    """The last value of option `name` (with its dash) in a list of options or
+    an options string (a result's `options` attribute); `default` if absent."""
+    parts = opts.split() if isinstance(opts, str) else list(opts)
+    val = default
+    for i, p in enumerate(parts[:-1]):
+        if p == name:
+            val = parts[i + 1]
+    return val
+
+
 class RunFailed(RuntimeError):
     pass
 
