@@ -4,10 +4,19 @@ MUMPS is given 1 MB of working memory (-mat_mumps_icntl_23 1) for a 3,500-dof
 system that needs about 100 times that: INFOG(1) = -19. On 1 and 2 ranks the
 run must stop with one line naming ICNTL(23) and the code, a non-zero exit,
 and the results so far written and flagged.
+
+Numbers that overflow: a Young's modulus of 1e306 MPa (a unit slip of 1e300)
+makes the first increment's out-of-balance norm, elastic energy and energy
+check Inf or NaN (before the guard, those were written into /history); the
+residual is the first of them in column order. The run must stop naming the
+increment and the column (and the first element, when a stress is not
+finite), with every number written finite: the history up to the increment
+before and the fields of the last finite step.
 """
 import os
 
 import h5py
+import numpy as np
 
 from tfcheck import Checks, args, out, run
 
@@ -25,4 +34,19 @@ for np_ in (1, 2):
         with h5py.File(f, "r") as h:
             ok = h["/history"].attrs["stopped"] == 1
     k.check(ok, f"np={np_}: results written and flagged stopped")
+
+for np_ in (1, 2):
+    f = out(f"overflow_np{np_}.h5")
+    p = run(tf, mpirun, np_, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
+                              f"{src}/options/preset-fast.opts", "-material_E", "1e306", "-output", f], check=False)
+    lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
+    k.check(p.returncode != 0 and len(lines) == 1 and "increment 1 gave residual = NaN or Inf" in lines[0],
+            f"np={np_} E = 1e306: exit {p.returncode}, {lines}")
+    ok = os.path.exists(f)
+    if ok:
+        with h5py.File(f, "r") as h:
+            finite = [all(np.isfinite(h[g][d][()]).all() for d in h[g]) for g in ("history", "vertex_fields",
+                                                                                    "cell_fields")]
+            ok = h["/history"].attrs["stopped"] == 1 and all(finite)
+    k.check(ok, f"np={np_} E = 1e306: results flagged stopped, every number in them finite")
 k.done()

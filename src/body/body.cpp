@@ -307,9 +307,42 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
 
 void Body::SetElasticOnly()
 {
+  elastic_only_ = true;
   material_ = std::make_unique<Elastic>(prm_.material.E, prm_.material.nu);
   for (auto &ps : state_) ps.plastic = false;
   StaleAll();
+}
+
+PetscErrorCode Body::Persist(Archive &ar)
+{
+  // Per point: stress (4), ep, hslope, plastic.
+  constexpr int kPerPoint = kNumStress + 3;
+  std::vector<double> points(kPerPoint * state_.size());
+  bool elastic_only = elastic_only_;
+
+  PetscFunctionBeginUser;
+  ar.Group("/body");
+  for (size_t i = 0; i < state_.size() && !ar.reading(); ++i) {
+    const PointState &p = state_[i];
+    double *d = &points[kPerPoint * i];
+    std::copy(p.sigma.begin(), p.sigma.end(), d);
+    d[kNumStress] = p.ep, d[kNumStress + 1] = p.hslope, d[kNumStress + 2] = p.plastic;
+  }
+  PetscCall(ar.CellData("points", points, kPerPoint * fe::kGauss));
+  PetscCall(ar.NodeData("x", x_, 2));
+  PetscCall(ar.NodeData("u", u_, 2));
+  PetscCall(ar.Value("elastic_only", elastic_only));
+  if (!ar.reading()) PetscFunctionReturn(PETSC_SUCCESS);
+  if (elastic_only) SetElasticOnly();
+  for (size_t i = 0; i < state_.size(); ++i) {
+    PointState &p = state_[i];
+    const double *d = &points[kPerPoint * i];
+    std::copy(d, d + kNumStress, p.sigma.begin());
+    p.ep = d[kNumStress], p.hslope = d[kNumStress + 1], p.plastic = d[kNumStress + 2] != 0;
+  }
+  StaleAll(); // new geometry and stresses
+  geometry_.valid = false;
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode Body::InternalForce(Vec f_local) const
@@ -349,6 +382,27 @@ PetscErrorCode Body::ElasticEnergy(double &w) const
       local += geo->wdet[g] * material_->ElasticEnergy(state_[fe::kGauss * e + g].sigma);
   }
   PetscCall(MPIU_Allreduce(&local, &w, 1, MPIU_REAL, MPIU_SUM, comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Body::NonFiniteCell(PetscInt &cell) const
+{
+  PetscInt local = PETSC_MAX_INT;
+
+  PetscFunctionBeginUser;
+  for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
+    bool finite = true;
+    for (int g = 0; g < fe::kGauss; ++g) {
+      const PointState &p = state_[fe::kGauss * e + g];
+      for (double v : p.sigma) finite = finite && std::isfinite(v);
+      finite = finite && std::isfinite(p.ep);
+    }
+    for (int a = 0; a < fe::kNodes; ++a)
+      for (int k = 0; k < 2; ++k) finite = finite && std::isfinite(x_[2 * mesh_->cell_nodes[fe::kNodes * e + a] + k]);
+    if (!finite) local = std::min(local, mesh_->cell_orig[e]);
+  }
+  PetscCall(MPIU_Allreduce(&local, &cell, 1, MPIU_INT, MPI_MIN, comm()));
+  if (cell == PETSC_MAX_INT) cell = -1;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

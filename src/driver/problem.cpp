@@ -130,8 +130,6 @@ PetscErrorCode Problem::Run()
   ResultWriter writer;
   Vec du;
   HistoryRow row;
-  double lambda = 0;
-  PetscInt step = 0, inc = 0;
 
   PetscFunctionBeginUser;
   // 0. Outputs are checked before any work, so a bad path fails at once; the
@@ -139,6 +137,7 @@ PetscErrorCode Problem::Run()
   // body) before the result file is opened, so such a start leaves no file.
   if (!opt_.history_csv.empty()) PetscCall(CheckWritable(comm_, opt_.history_csv, "-history_csv"));
   PetscCall(CheckWritable(comm_, opt_.output, "-output"));
+  if (!opt_.checkpoint.empty()) PetscCall(CheckWritable(comm_, opt_.checkpoint, "-checkpoint"));
   ContactSpec tools;
   PetscCall(scene_->Initialize(*model_, tools));
   if (!tools.candidates.empty()) {
@@ -147,7 +146,7 @@ PetscErrorCode Problem::Run()
     PetscCall(contact_->Initialize());
     model_->contact = contact_.get();
   }
-  PetscCall(writer.Open(mesh_, opt_.output));
+  if (opt_.restart.empty()) PetscCall(writer.Open(mesh_, opt_.output));
   {
     int ok = history_.OpenCsv(opt_.history_csv, rank_);
     PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
@@ -158,24 +157,29 @@ PetscErrorCode Problem::Run()
   du = system_.CreateLocalVector();
   PetscCall(CreateForces(du));
 
-  // Increment 0: the initial state.
-  PetscCall(body_.InternalForce(forces_.f_int));
-  PetscCall(ExternalForces(0.0));
-  PetscCall(ContactColumns(nullptr, row));
-  PetscCall(scene_->Measure(*model_, 0.0, forces_.f_int, row));
-  history_.Append(row);
-  PetscCall(WriteFields(writer, step++, 0.0));
-
   const double end = path_.end;
   std::vector<double> breaks = path_.breakpoints;
   breaks.push_back(end);
-  std::vector<char> started(breaks.size(), 0);
+  at_.started.assign(breaks.size(), 0);
+  OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / opt_.stroke : 0);
+  if (!opt_.restart.empty()) {
+    // A restart: the state, the history and the results so far from the checkpoint.
+    PetscCall(ReadCheckpoint(writer, output));
+  } else {
+    // Increment 0: the initial state.
+    PetscCall(body_.InternalForce(forces_.f_int));
+    PetscCall(ExternalForces(0.0));
+    PetscCall(ContactColumns(nullptr, row));
+    PetscCall(scene_->Measure(*model_, 0.0, forces_.f_int, row));
+    history_.Append(row);
+    PetscCall(WriteFields(writer, at_.step++, 0.0));
+  }
+  double &lambda = at_.lambda;
+  PetscInt &inc = at_.inc;
   const double dlambda_trial = 1.0 / opt_.increments;
   const double dlambda_unload = opt_.unload_increments > 0 ? 1.0 / opt_.unload_increments : dlambda_trial;
   Controller controller(*model_, *scene_, inertia_.get(), opt_, path_.duration);
   controller.SetResidual(forces_.f_res);
-  double lambda_mark = 0;
-  PetscInt inc_mark = 0;
   // Why the run ends before the end of its path (empty: it does not), reported
   // with code stop_code after the results so far are written.
   std::string stop;
@@ -185,21 +189,35 @@ PetscErrorCode Problem::Run()
   const auto where = [&] {
     return Format("stroke %g, lambda %.6g, after %d increments", history_.rows().back().stroke, lambda, (int)inc);
   };
+  // A checkpoint that cannot be written (a full disk, a directory gone) ends
+  // the run like a failed increment: results written, the earlier checkpoint kept.
+  const auto checkpoint = [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    const PetscErrorCode failed = WriteCheckpoint(writer, output);
+    if (failed == PETSC_ERR_FILE_WRITE) { // found on every rank (other errors may strike one)
+      const char *specific = nullptr;
+      PetscCall(PetscErrorMessage(failed, nullptr, (char **)&specific));
+      stop_code = failed;
+      stop = Format("%s (%s)", specific ? specific : "the checkpoint could not be written", where().c_str());
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    PetscCall(failed);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  };
   const double t_start = MPI_Wtime();
-  OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / opt_.stroke : 0);
   Progress progress(comm_, opt_.progress, end, path_.breakpoints.empty() ? end : path_.breakpoints.front());
   PetscCall(PetscLogStagePush(Log::load_stage));
   while (lambda < end - kLambdaTol) {
     // 1. The stall watch ends a load path that no longer advances.
-    if (inc - inc_mark >= opt_.rmin_stall_increments) {
-      if (lambda - lambda_mark < kStallAdvance) {
+    if (inc - at_.inc_mark >= opt_.rmin_stall_increments) {
+      if (lambda - at_.lambda_mark < kStallAdvance) {
         stalled = true, stop_code = PETSC_ERR_NOT_CONVERGED;
         stop = Format("the load path stalled (%s): %d increments (-rmin_stall_increments) advanced lambda by less than "
                       "%g; the history column limiter names what cut them (docs/theory.md, \"Stalls\")",
                       where().c_str(), (int)opt_.rmin_stall_increments, kStallAdvance);
         break;
       }
-      lambda_mark = lambda, inc_mark = inc;
+      at_.lambda_mark = lambda, at_.inc_mark = inc;
     }
     // ... and so does the increment budget (results up to here are written).
     if (inc == opt_.rmin_max_increments) {
@@ -210,28 +228,34 @@ PetscErrorCode Problem::Run()
       break;
     }
     // ... and the clock (-time_limit) and stop signals (rank 0 may be the only
-    // one to see either: clocks differ, a signal may reach one process).
+    // one to see either: clocks differ, a signal may reach one process); both
+    // leave a checkpoint to continue from.
     {
       int mine[2] = {opt_.time_limit > 0 && MPI_Wtime() - t_start > opt_.time_limit, StopSignal()}, any[2];
       PetscCallMPI(MPI_Allreduce(mine, any, 2, MPI_INT, MPI_MAX, comm_));
       if (any[1]) {
         interrupted = any[1], stop_code = PETSC_ERR_SIG;
         stop = Format("interrupted by %s (%s)", SignalName(any[1]), where().c_str());
-        break;
-      }
-      if (any[0]) {
+      } else if (any[0]) {
         stop_code = PETSC_ERR_NOT_CONVERGED;
         stop = Format("-time_limit %g s reached (%s)", opt_.time_limit, where().c_str());
-        break;
       }
+      if (!stop.empty() && !opt_.checkpoint.empty()) {
+        const std::string reason = stop;
+        PetscCall(checkpoint()); // a failure replaces the stop's message with its own
+        if (stop == reason)
+          PetscCall(PetscPrintf(comm_, "tubeform: checkpoint after increment %d in %s; continue with -restart %s\n",
+                                (int)inc, opt_.checkpoint.c_str(), opt_.checkpoint.c_str()));
+      }
+      if (!stop.empty()) break;
     }
     ++inc;
 
     // 2. A stage of the load path (the paper's unloading) begins at its
     //    breakpoint; the loads at its start are the new stage's.
     for (size_t b = 0; b + 1 < breaks.size(); ++b)
-      if (!started[b] && lambda >= breaks[b] - kLambdaTol) {
-        started[b] = 1;
+      if (!at_.started[b] && lambda >= breaks[b] - kLambdaTol) {
+        at_.started[b] = 1;
         PetscCall(scene_->BeginStage(*model_, lambda));
         PetscCall(ExternalForces(lambda));
       }
@@ -280,6 +304,17 @@ PetscErrorCode Problem::Run()
 
     // 6. Forces, energies and the scene's measurements on the new configuration.
     PetscCall(Record(inc, lambda0, lambda, taken, done, du));
+    if (!nonfinite_.empty()) {
+      PetscInt cell;
+      PetscCall(body_.NonFiniteCell(cell));
+      const std::string at = cell >= 0 ? Format(", first in element %d", (int)cell) : "";
+      stop_code = PETSC_ERR_NOT_CONVERGED, wrote_last = true; // the last fields written are the last finite ones
+      stop = Format("increment %d gave %s = NaN or Inf%s: the numbers overflowed (units? -material_E is in MPa); "
+                    "it is not written",
+                    (int)inc, nonfinite_.c_str(), at.c_str());
+      stop += Format(" (%s)", where().c_str());
+      break;
+    }
     if (diverged_) {
       stop_code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
       stop = Format("the energy balance error %.1f %% passed -max_energy_error %g: the solution has left equilibrium "
@@ -289,9 +324,13 @@ PetscErrorCode Problem::Run()
     }
     PetscCall(progress.Update(lambda, inc, history_.rows().back().stroke));
     wrote_last = output.Due(inc, lambda, on_break, lambda >= end - kLambdaTol);
-    if (wrote_last) PetscCall(WriteFields(writer, step++, lambda));
+    if (wrote_last) PetscCall(WriteFields(writer, at_.step++, lambda));
+    if (opt_.checkpoint_every > 0 && inc % opt_.checkpoint_every == 0) {
+      PetscCall(checkpoint());
+      if (!stop.empty()) break;
+    }
   }
-  if (!stop.empty() && !wrote_last) PetscCall(WriteFields(writer, step++, lambda));
+  if (!stop.empty() && !wrote_last) PetscCall(WriteFields(writer, at_.step++, lambda));
   PetscCall(PetscLogStagePop());
 
   // 7. Final metrics and the result file (renamed into place only now).

@@ -65,6 +65,16 @@ PetscErrorCode Problem::ExternalForces(double lambda)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode Problem::EndForces(double lambda)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ExternalForces(lambda));
+  PetscCall(body_.InternalForce(forces_.f_int));
+  if (inertia_ && inertia_->active()) PetscCall(inertia_->AddForce(forces_.f_int));
+  PetscCall(VecWAXPY(forces_.f_res, -1.0, forces_.f_int, forces_.f_ext));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, const Increment &taken,
                                const Committed &done, Vec du)
 {
@@ -76,13 +86,10 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
   // Forces on the new geometry (f_int + M a: what the loads and reactions
   // balance), the mean of start and end for the trapezoidal work, the
   // out-of-balance force of the free dofs.
-  PetscCall(ExternalForces(lambda));
-  PetscCall(body_.InternalForce(forces_.f_int));
-  if (inertia) PetscCall(inertia_->AddForce(forces_.f_int));
+  PetscCall(EndForces(lambda));
   for (auto [start, now] : {std::pair{forces_.f_app0, forces_.f_app}, std::pair{forces_.f_ext0, forces_.f_ext},
                             std::pair{forces_.f_int0, forces_.f_int}})
     PetscCall(VecAXPBY(start, 0.5, 0.5, now));
-  PetscCall(VecWAXPY(forces_.f_res, -1.0, forces_.f_int, forces_.f_ext));
   PetscCall(system_.FreeNorm(forces_.f_res, residual));
 
   HistoryRow row;
@@ -134,6 +141,14 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
   row.w_damped = energy_.w_inertia - row.w_kinetic;
   row.energy_error = energy_.BalanceError();
   row.internal_error = energy_.InternalError(row.w_elastic);
+  // A value that is not finite is never written: the run stops at the
+  // increment before (Run reads nonfinite_).
+  for (const auto &col : HistoryColumns())
+    if (!std::isfinite(row.*(col.field))) {
+      nonfinite_ = col.name;
+      PetscCall(PetscLogEventEnd(Log::measure, 0, 0, 0, 0));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
   history_.Append(row);
   PetscCall(PetscLogEventEnd(Log::measure, 0, 0, 0, 0));
 

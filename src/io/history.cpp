@@ -100,6 +100,31 @@ void History::Append(const HistoryRow &row)
   std::fflush(csv_); // a long run can be watched (tail -f) while it goes
 }
 
+PetscErrorCode History::Persist(Archive &ar, MPI_Comm comm)
+{
+  const auto &cols = HistoryColumns();
+  std::vector<std::vector<double>> values(cols.size());
+
+  PetscFunctionBeginUser;
+  // Every member of a row is a column: a row written column by column comes back whole.
+  PetscCheck(cols.size() * sizeof(double) == sizeof(HistoryRow), comm, PETSC_ERR_PLIB,
+             "HistoryRow has members that are not history columns");
+  ar.Group("/history");
+  for (size_t c = 0; c < cols.size(); ++c) {
+    for (const auto &row : rows_) values[c].push_back(row.*(cols[c].field));
+    PetscCall(ar.Values(cols[c].name, values[c]));
+    PetscCheck(values[c].size() == values[0].size(), comm, PETSC_ERR_USER_INPUT,
+               "%s: the history columns have different lengths", ar.path().c_str());
+  }
+  if (!ar.reading()) PetscFunctionReturn(PETSC_SUCCESS);
+  std::vector<HistoryRow> rows(values[0].size());
+  for (size_t c = 0; c < cols.size(); ++c)
+    for (size_t r = 0; r < rows.size(); ++r) rows[r].*(cols[c].field) = values[c][r];
+  rows_.clear();
+  for (const auto &row : rows) Append(row); // and into the CSV file
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 bool History::FinishCsv()
 {
   if (!csv_) return true;

@@ -50,6 +50,20 @@ PetscErrorCode OptionReader::CheckNumber(MPI_Comm comm, const char *name, bool i
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode OptionReader::String(PetscOptionItems *PetscOptionsObject, const char *name, const char *help,
+                                    std::string &value)
+{
+  char buf[PETSC_MAX_PATH_LEN];
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  Note(name);
+  PetscCall(PetscStrncpy(buf, value.c_str(), sizeof(buf)));
+  PetscCall(PetscOptionsString(name, help, "tubeform", buf, buf, sizeof(buf), &set));
+  if (set) value = buf;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode OptionReader::Real(PetscOptionItems *PetscOptionsObject, const char *name, const char *help,
                                   double &value)
 {

@@ -38,7 +38,6 @@ PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &re
 PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes, Options &opt)
 {
   PetscInt choice;
-  char buf[PETSC_MAX_PATH_LEN];
   PetscBool set;
 
   OptionReader read; // every option's name, for the check of unknown ones
@@ -63,12 +62,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(read.Int(PetscOptionsObject, "-mesh_nt", "Elements through the wall (structured mesh)", opt.mesh_nt));
   PetscCall(
     read.Int(PetscOptionsObject, "-mesh_ntheta", "Elements around the quarter (structured mesh)", opt.mesh_ntheta));
-  buf[0] = 0;
-  read.Note("-mesh_file");
-  PetscCall(PetscOptionsString(
-    "-mesh_file", "Gmsh 4.1 ASCII quad mesh with physical curves inner, outer, x0, y0 (replaces the structured mesh)",
-    "tubeform", buf, buf, sizeof(buf), &set));
-  if (set) opt.mesh_file = buf;
+  PetscCall(
+    read.String(PetscOptionsObject, "-mesh_file",
+                "Gmsh 4.1 ASCII quad mesh with physical curves inner, outer, x0, y0 (replaces the structured mesh)",
+                opt.mesh_file));
   choice = 1;
   read.Note("-element");
   PetscCall(PetscOptionsEList("-element",
@@ -244,16 +241,21 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(read.Real(PetscOptionsObject, "-column_t", "column scene: thickness (mm)", opt.column_t));
   PetscCall(read.Real(PetscOptionsObject, "-column_imperfection",
                       "column scene: amplitude of the initial sine-shaped bow (mm)", opt.column_imperfection));
-  PetscCall(PetscStrncpy(buf, opt.output.c_str(), sizeof(buf)));
-  read.Note("-output");
-  PetscCall(PetscOptionsString("-output", "HDF5 result file (an .xmf for ParaView is written beside it)", "tubeform",
-                               buf, buf, sizeof(buf), nullptr));
-  opt.output = buf;
-  buf[0] = 0;
-  read.Note("-history_csv");
-  PetscCall(PetscOptionsString("-history_csv", "Also write the history as CSV to this file", "tubeform", buf, buf,
-                               sizeof(buf), &set));
-  if (set) opt.history_csv = buf;
+  PetscCall(read.String(PetscOptionsObject, "-output", "HDF5 result file (an .xmf for ParaView is written beside it)",
+                        opt.output));
+  PetscCall(
+    read.String(PetscOptionsObject, "-history_csv", "Also write the history as CSV to this file", opt.history_csv));
+  PetscCall(read.String(PetscOptionsObject, "-checkpoint",
+                        "Checkpoint file (HDF5): the whole state every -checkpoint_every increments and when a "
+                        "signal or -time_limit stops the run",
+                        opt.checkpoint));
+  PetscCall(read.Int(PetscOptionsObject, "-checkpoint_every",
+                     "Write the -checkpoint file every this many increments (0: only when the run is stopped)",
+                     opt.checkpoint_every));
+  PetscCall(read.String(PetscOptionsObject, "-restart",
+                        "Continue the run saved in this checkpoint file (same options; the results continue in "
+                        "-output)",
+                        opt.restart));
   PetscCall(read.Int(PetscOptionsObject, "-output_every",
                      "Write fields every k-th increment (the last is always written)", opt.output_every));
   PetscCall(read.Real(PetscOptionsObject, "-output_stroke",
@@ -390,6 +392,11 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCheck(opt.output_stroke >= 0 && opt.output_stroke <= opt.stroke, comm, PETSC_ERR_USER_INPUT,
              "-output_stroke %g: must be between 0 (off) and the stroke %g mm", opt.output_stroke, opt.stroke);
   PetscCheck(!opt.output.empty(), comm, PETSC_ERR_USER_INPUT, "-output: an HDF5 file name is required");
+  PetscCheck(opt.checkpoint_every >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-checkpoint_every %d: must be 0 (only when stopped) or a number of increments",
+             (int)opt.checkpoint_every);
+  PetscCheck(opt.checkpoint_every == 0 || !opt.checkpoint.empty(), comm, PETSC_ERR_USER_INPUT,
+             "-checkpoint_every %d: needs -checkpoint FILE", (int)opt.checkpoint_every);
   if (!opt.mesh_file.empty()) {
     std::ifstream probe(opt.mesh_file);
     PetscCheck(probe.good(), comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: cannot open the file (missing or unreadable)",

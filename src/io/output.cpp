@@ -63,6 +63,64 @@ PetscErrorCode ResultWriter::Open(const Mesh &mesh, const std::string &path)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode ResultWriter::Reopen(const Mesh &mesh, const std::string &path, const std::vector<double> &times)
+{
+  PetscMPIInt rank;
+  int found = 0; // 1: the .partial file, 2: the finished file (copied), 0: neither
+  hid_t file;
+
+  PetscFunctionBeginUser;
+  mesh_ = &mesh;
+  path_ = path;
+  times_ = times;
+  PetscCallMPI(MPI_Comm_rank(mesh.comm, &rank));
+  const std::string partial = path + ".partial";
+  if (rank == 0) {
+    std::error_code ec;
+    // (H5Fis_hdf5 prints an error stack for a missing file.)
+    if (std::filesystem::exists(partial, ec) && H5Fis_hdf5(partial.c_str()) > 0)
+      found = 1;
+    else if (std::filesystem::exists(path, ec) && H5Fis_hdf5(path.c_str()) > 0 &&
+             std::filesystem::copy_file(path, partial, std::filesystem::copy_options::overwrite_existing, ec))
+      found = 2;
+  }
+  PetscCallMPI(MPI_Bcast(&found, 1, MPI_INT, 0, mesh.comm));
+  PetscCheck(found, mesh.comm, PETSC_ERR_USER_INPUT,
+             "-restart: the results of the interrupted run are not in -output %s (nor %s): give the -output of the "
+             "run that wrote the checkpoint",
+             path.c_str(), partial.c_str());
+  PetscCall(PetscViewerHDF5Open(mesh.comm, partial.c_str(), FILE_MODE_APPEND, &viewer_));
+  PetscCall(PetscViewerPushFormat(viewer_, PETSC_VIEWER_HDF5_XDMF));
+  PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
+  // The field steps the checkpoint counts on must be there (later ones are
+  // overwritten as the run goes on); a finished file's history goes.
+  hsize_t steps = 0;
+  if (H5Lexists(file, "/time", H5P_DEFAULT) > 0) {
+    const hid_t dset = H5Dopen2(file, "/time", H5P_DEFAULT), space = H5Dget_space(dset);
+    TF_CHECK_HDF5(dset);
+    TF_CHECK_HDF5(space);
+    TF_CHECK_HDF5(H5Sget_simple_extent_dims(space, &steps, nullptr));
+    TF_CHECK_HDF5(H5Sclose(space));
+    TF_CHECK_HDF5(H5Dclose(dset));
+  }
+  PetscCheck(steps >= times.size(), mesh.comm, PETSC_ERR_USER_INPUT,
+             "-restart: %s holds %d field steps, fewer than the %d of the checkpoint (not the results of the run "
+             "that wrote it?)",
+             (found == 1 ? partial : path).c_str(), (int)steps, (int)times.size());
+  if (H5Lexists(file, "/history", H5P_DEFAULT) > 0) TF_CHECK_HDF5(H5Ldelete(file, "/history", H5P_DEFAULT));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ResultWriter::Flush()
+{
+  hid_t file;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
+  TF_CHECK_HDF5(H5Fflush(file, H5F_SCOPE_GLOBAL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::vector<NodeField> &nodes,
                                        const std::vector<CellField> &cells)
 {

@@ -165,6 +165,33 @@ public:
             {"final_stroke_target", stroke_}};
   }
 
+  PetscErrorCode Persist(Model &m, Archive &ar) override
+  {
+    PetscFunctionBeginUser;
+    ar.Group("/scene");
+    PetscCall(ar.Value("unloading", unloading_));
+    // The springback's total force and the side C is measured on (from the loading).
+    std::vector<double> pairs = {reversed_total_[0], reversed_total_[1], (double)side_ends_[0], (double)side_ends_[1]};
+    PetscCall(ar.Values("reversed_total_side_ends", pairs));
+    PetscCheck(pairs.size() == 4, m.comm, PETSC_ERR_USER_INPUT, "%s: /scene/reversed_total_side_ends is not 4 numbers",
+               ar.path().c_str());
+    reversed_total_[0] = pairs[0], reversed_total_[1] = pairs[1];
+    side_ends_[0] = (long)pairs[2], side_ends_[1] = (long)pairs[3];
+    if (!unloading_) PetscFunctionReturn(PETSC_SUCCESS);
+    // The reversed contact forces: contributions of the owned nodes.
+    if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
+    std::vector<double> f(2 * m.mesh.num_nodes);
+    PetscScalar *a;
+    PetscCall(VecGetArray(reversed_, &a));
+    for (PetscInt n = 0; n < m.mesh.num_nodes && !ar.reading(); ++n)
+      for (int k = 0; k < 2; ++k) f[2 * n + k] = PetscRealPart(a[m.mesh.node_dof[n] + k]);
+    PetscCall(ar.NodeData("reversed", f, 2, true));
+    for (PetscInt n = 0; n < m.mesh.num_nodes && ar.reading(); ++n)
+      for (int k = 0; k < 2; ++k) a[m.mesh.node_dof[n] + k] = f[2 * n + k];
+    PetscCall(VecRestoreArray(reversed_, &a));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
   ~PressScene() override { (void)VecDestroy(&reversed_); }
 
 private:

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "tubeform/fe/quad.hpp"
+#include "tubeform/mesh/archive.hpp"
 #include "tubeform/mesh/mesh.hpp"
 
 namespace tf {
@@ -101,6 +102,19 @@ public:
   PetscErrorCode FreeNorm(Vec f_local, double &norm);
 
   PetscInt factorizations() const { return nsolves_; }
+  // Collective: writes or reads what carries between increments: the node
+  // frames (kept by nodes that left a tool) and the factorization count.
+  PetscErrorCode Persist(Archive &ar)
+  {
+    PetscFunctionBeginUser;
+    ar.Group("/system");
+    PetscCall(ar.Value("factorizations", nsolves_));
+    PetscCall(ar.Nodes("has_frame", has_frame_));
+    PetscCall(ar.Nodes("cos", cos_));
+    PetscCall(ar.Nodes("sin", sin_));
+    kb_valid_ = false;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
 
   // Collective: work of an increment du of the external actions, component by
   // component in the node frames: the applied force f_ext on free dofs and the

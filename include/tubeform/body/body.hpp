@@ -16,6 +16,7 @@
 #include "tubeform/assembly/system.hpp"
 #include "tubeform/fe/formulation.hpp"
 #include "tubeform/material/elastic.hpp"
+#include "tubeform/mesh/archive.hpp"
 #include "tubeform/mesh/mesh.hpp"
 #include "tubeform/step/rmin.hpp"
 
@@ -76,8 +77,14 @@ public:
   PetscErrorCode InternalForce(Vec f_local) const;
   // Collective: the elastic energy stored in the stresses.
   PetscErrorCode ElasticEnergy(double &w) const;
+  // Collective: the lowest input number of a cell whose stresses, plastic
+  // strains or corners are not finite (NaN, Inf), -1 if none.
+  PetscErrorCode NonFiniteCell(PetscInt &cell) const;
   // From now on every point is elastic (the paper's unloading).
   void SetElasticOnly();
+  // Collective: writes or reads what carries from one increment to the next
+  // (point states, coordinates, displacements, elastic-only).
+  PetscErrorCode Persist(Archive &ar);
 
   // Current cell corner coordinates.
   void CellCoordinates(PetscInt cell, double xe[2 * fe::kNodes]) const;
@@ -92,6 +99,7 @@ private:
   BodyParams prm_;
   double deps_limit_ = 0; // r2's bound: rmin_deps, or rmin_deps_yield yield strains if smaller
   std::unique_ptr<Material> material_;
+  bool elastic_only_ = false; // SetElasticOnly was called
   fe::CellFormulation cells_;
   std::vector<PointState> state_;
   std::vector<double> yield_factor_; // r1 of each Gauss point from the last ScanTrial

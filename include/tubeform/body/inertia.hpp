@@ -40,6 +40,16 @@ public:
   PetscErrorCode AddForce(Vec f_local) const;
   // Collective: kinetic energy 1/2 v.M.v.
   PetscErrorCode KineticEnergy(double &w) const;
+  // Collective: writes or reads the motion (velocities, accelerations, active).
+  PetscErrorCode Persist(Archive &ar)
+  {
+    PetscFunctionBeginUser;
+    ar.Group("/inertia");
+    PetscCall(ar.Value("active", active_));
+    PetscCall(ar.NodeData("v", v_, 2));
+    PetscCall(ar.NodeData("a", a_, 2));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
 
 private:
   const Body *body_ = nullptr;

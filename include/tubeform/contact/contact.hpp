@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "tubeform/assembly/system.hpp"
+#include "tubeform/mesh/archive.hpp"
 #include "tubeform/mesh/mesh.hpp"
 #include "tubeform/step/rmin.hpp"
 #include "tubeform/tool/tool.hpp"
@@ -145,6 +146,9 @@ public:
   // are left out.
   PetscErrorCode NormalForceMismatch(Vec f_net, double &mismatch) const;
 
+  // Collective: writes or reads the state of the set (contact nodes, forces,
+  // slips, frames, pending forces, predictors) between increments.
+  PetscErrorCode Persist(Archive &ar);
   bool InContact(PetscInt node) const { return contact_[node]; }
   int Segment(PetscInt node) const { return segment_[node]; }
   const Tool &tool() const { return tool_; }

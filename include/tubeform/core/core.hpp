@@ -11,6 +11,9 @@
 #define PETSC_SUCCESS 0 // PETSc 3.18 predates the named constant.
 #endif
 
+// An HDF5 call's negative return as a PETSc error naming the call.
+#define TF_CHECK_HDF5(expr) PetscCheck((expr) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call failed: %s", #expr)
+
 namespace tf {
 
 // Voigt order used everywhere: {xx, yy, zz, xy}; strains carry gamma_xy = 2 eps_xy.

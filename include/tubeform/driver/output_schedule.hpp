@@ -25,6 +25,10 @@ public:
     return due;
   }
 
+  // Where the schedule stands (a checkpoint keeps it).
+  double written() const { return written_; }
+  void Continue(double written) { written_ = written; }
+
 private:
   // A step that ends within this fraction of dl below a multiple of dl has
   // reached it (steps end on lambda = k dl only up to round-off).

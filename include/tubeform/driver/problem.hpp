@@ -12,6 +12,7 @@
 #include "tubeform/body/inertia.hpp"
 #include "tubeform/contact/contact.hpp"
 #include "tubeform/driver/controller.hpp"
+#include "tubeform/driver/output_schedule.hpp"
 #include "tubeform/io/history.hpp"
 #include "tubeform/io/options.hpp"
 #include "tubeform/io/output.hpp"
@@ -55,6 +56,15 @@ private:
   std::unique_ptr<Model> model_;        // what the scene sees
   History history_;
 
+  // Where the loop stands on the load path (a checkpoint keeps it).
+  struct Cursor {
+    double lambda = 0;
+    PetscInt inc = 0, step = 0; // increments committed, field steps written
+    double lambda_mark = 0;     // the stall watch: lambda and increment at its last mark
+    PetscInt inc_mark = 0;
+    std::vector<double> started; // 1 for each stage begun (breakpoints and the end)
+  } at_;
+
   // The state of the loop between increments.
   // Forces at the end of the last increment (local contribution vectors) and at its start (0).
   struct Forces {
@@ -70,8 +80,26 @@ private:
   double worst_error_ = 0, worst_internal_ = 0; // largest |energy_error|, |internal_error| so far
   bool warned_ = false;                         // the energy warning was printed
   bool diverged_ = false;                       // the energy balance error passed -max_energy_error
+  std::string nonfinite_;                       // a history column the last increment made NaN or Inf
 
   PetscErrorCode CreateForces(Vec like);
+  // The forces at the end of an increment (or of a restored state) at lambda:
+  // applied, external (with friction), internal (with inertia), out-of-balance.
+  PetscErrorCode EndForces(double lambda);
+  // Checkpoints (src/driver/checkpoint.cpp): the whole state into -checkpoint
+  // (the results so far flushed first), and back from -restart.
+  PetscErrorCode WriteCheckpoint(ResultWriter &writer, const OutputSchedule &output);
+  PetscErrorCode ReadCheckpoint(ResultWriter &writer, OutputSchedule &output);
+  // What a checkpoint says of itself and of the results it counts on.
+  struct CheckpointHeader {
+    double version = 0, ranks = 0, cells = 0, nodes = 0; // layout; the ranks and mesh that wrote it
+    double output_bin = 0;                               // the output schedule's last bin
+    std::vector<double> times;                           // the times of the field steps written
+  };
+  // A checkpoint's whole content, written or read in one order: the header
+  // (checked when read), the cursor, counters, energies, history, then each part.
+  PetscErrorCode Persist(Archive &ar, CheckpointHeader &head);
+  PetscErrorCode CheckHeader(const CheckpointHeader &head) const;
   PetscErrorCode DestroyForces();
   // What a committed increment did, for its history row.
   struct Committed {

@@ -2,9 +2,13 @@
 // rank (values are global sums/maxima), written to /history and to CSV.
 #pragma once
 
+#include <petscsys.h>
+
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#include "tubeform/mesh/archive.hpp"
 
 namespace tf {
 
@@ -36,6 +40,9 @@ public:
   bool OpenCsv(const std::string &path, int rank);
   void Append(const HistoryRow &row);
   bool FinishCsv(); // rename on success
+  // Collective: writes or reads the rows (read: they replace these, and go to
+  // the CSV file when one is open).
+  PetscErrorCode Persist(Archive &ar, MPI_Comm comm);
   const std::vector<HistoryRow> &rows() const { return rows_; }
 
 private:

@@ -17,6 +17,8 @@ public:
   PetscErrorCode Real(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, double &value);
   PetscErrorCode Int(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscInt &value);
   PetscErrorCode Bool(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscBool &value);
+  // A file name or word (kept as it was when the option is not given).
+  PetscErrorCode String(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, std::string &value);
   // An option read some other way (a word from a list, a file name).
   void Note(const char *name) { names_.emplace_back(name); }
   // Collective, after every tubeform option is read: an option given but not

@@ -73,7 +73,10 @@ struct Options {
   std::string output = "results/tubeform.h5";
   std::string history_csv;
   PetscInt output_every = 1;
-  double output_stroke = 0; // > 0: fields every this much stroke (mm) instead of every output_every increments
+  std::string checkpoint;        // checkpoint file (empty: none)
+  PetscInt checkpoint_every = 0; // increments between checkpoints (0: only when a signal or -time_limit stops the run)
+  std::string restart;           // checkpoint to continue from
+  double output_stroke = 0;      // > 0: fields every this much stroke (mm) instead of every output_every increments
   // Stop (results written) when the energy balance error passes this: a quarter of the work
   // unaccounted for means the load-stroke curve is no longer a solution.
   double max_energy_error = 0.25;

@@ -32,6 +32,14 @@ public:
   ~ResultWriter();
   // Collective. Checks the path first: a clear error if it cannot be written.
   PetscErrorCode Open(const Mesh &mesh, const std::string &path);
+  // Collective: continues the results of an interrupted run at `path` from its
+  // first times.size() field steps (those of its checkpoint): in its .partial
+  // file, or in a copy of the finished file a stopped run left (the copy is
+  // renamed over it only when the run finishes).
+  PetscErrorCode Reopen(const Mesh &mesh, const std::string &path, const std::vector<double> &times);
+  // Collective: everything written so far reaches the file (before a checkpoint counts on it).
+  PetscErrorCode Flush();
+  const std::vector<double> &times() const { return times_; }
   // Collective: one time-series entry (the same fields at every step).
   PetscErrorCode WriteStep(PetscInt step, double time, const std::vector<NodeField> &nodes,
                            const std::vector<CellField> &cells);

@@ -9,8 +9,7 @@
 #include <petscvec.h>
 #include <petscviewerhdf5.h>
 
-// HDF5 calls return a negative value on failure (used by the result writer too).
-#define TF_CHECK_HDF5(expr) PetscCheck((expr) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 call failed: %s", #expr)
+#include "tubeform/core/core.hpp"
 
 namespace tf {
 

@@ -73,6 +73,9 @@ public:
   // The energy check then takes its input from the reported load
   // (docs/theory.md, "Self-checks").
   virtual double LoadWorkShare(double lambda) const { return 0; }
+  // Collective: writes or reads the state the scene carries between
+  // increments (a stage's loads) for checkpoints; none by default.
+  virtual PetscErrorCode Persist(Model &m, Archive &ar) { return 0; }
   // Scene metrics written as attributes at the end.
   virtual std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const { return {}; }
 };

@@ -1,0 +1,220 @@
+#include "tubeform/mesh/archive.hpp"
+
+#include <petscviewerhdf5.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "tubeform/core/core.hpp"
+
+namespace tf {
+
+namespace {
+// Whether every group on `path` and its last link exist (H5Lexists needs the parents).
+bool Exists(hid_t file, const std::string &path)
+{
+  for (size_t slash = path.find('/', 1);; slash = path.find('/', slash + 1)) {
+    const std::string part = path.substr(0, slash);
+    if (H5Lexists(file, part.c_str(), H5P_DEFAULT) <= 0) return false;
+    if (slash == std::string::npos) return true;
+  }
+}
+} // namespace
+
+Archive::~Archive()
+{
+  if (viewer_) (void)PetscViewerDestroy(&viewer_);
+}
+
+PetscErrorCode Archive::Open(const Mesh &mesh, const std::string &path, bool write, const char *option)
+{
+  PetscMPIInt rank;
+  int ok = 1;
+
+  PetscFunctionBeginUser;
+  mesh_ = &mesh;
+  path_ = path;
+  write_ = write;
+  option_ = option;
+  PetscCallMPI(MPI_Comm_rank(mesh.comm, &rank));
+  if (rank == 0) {
+    std::error_code ec;
+    if (write) {
+      const auto parent = std::filesystem::path(path).parent_path();
+      if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+      std::FILE *f = std::fopen((path + ".tmp").c_str(), "w");
+      ok = f != nullptr;
+      if (f) std::fclose(f);
+    } else {
+      ok = std::filesystem::is_regular_file(path, ec) && H5Fis_hdf5(path.c_str()) > 0;
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, mesh.comm));
+  PetscCheck(ok || !write, mesh.comm, PETSC_ERR_FILE_WRITE,
+             "%s %s: cannot create %s.tmp (does the directory exist and is it writable?)", option, path.c_str(),
+             path.c_str());
+  PetscCheck(ok, mesh.comm, PETSC_ERR_USER_INPUT, "%s %s: no such checkpoint (not a readable HDF5 file)", option,
+             path.c_str());
+  PetscCall(PetscViewerHDF5Open(mesh.comm, (write ? path + ".tmp" : path).c_str(),
+                                write ? FILE_MODE_WRITE : FILE_MODE_READ, &viewer_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Archive::Close()
+{
+  PetscMPIInt rank;
+  int ok = 1;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerDestroy(&viewer_));
+  if (!write_) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Barrier(mesh_->comm));
+  PetscCallMPI(MPI_Comm_rank(mesh_->comm, &rank));
+  if (rank == 0) ok = std::rename((path_ + ".tmp").c_str(), path_.c_str()) == 0;
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, mesh_->comm));
+  PetscCheck(ok, mesh_->comm, PETSC_ERR_FILE_WRITE, "%s %s: cannot rename %s.tmp into place", option_, path_.c_str(),
+             path_.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Archive::Values(const char *name, std::vector<double> &v)
+{
+  hid_t file;
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
+  PetscCallMPI(MPI_Comm_rank(mesh_->comm, &rank));
+  const std::string path = Path(name);
+  if (write_) {
+    // Dataset creation is collective; rank 0 writes the values every rank holds.
+    const hsize_t n = v.size();
+    const hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
+    TF_CHECK_HDF5(lcpl);
+    TF_CHECK_HDF5(H5Pset_create_intermediate_group(lcpl, 1));
+    const hid_t space = H5Screate_simple(1, &n, nullptr);
+    TF_CHECK_HDF5(space);
+    const hid_t dset = H5Dcreate2(file, path.c_str(), H5T_NATIVE_DOUBLE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+    TF_CHECK_HDF5(dset);
+    if (rank == 0 && n > 0) TF_CHECK_HDF5(H5Dwrite(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()));
+    TF_CHECK_HDF5(H5Dclose(dset));
+    TF_CHECK_HDF5(H5Sclose(space));
+    TF_CHECK_HDF5(H5Pclose(lcpl));
+  } else {
+    PetscCheck(Exists(file, path), mesh_->comm, PETSC_ERR_USER_INPUT,
+               "-restart %s: the checkpoint has no %s (written by another version of tubeform?)", path_.c_str(),
+               path.c_str());
+    const hid_t dset = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+    TF_CHECK_HDF5(dset);
+    const hid_t space = H5Dget_space(dset);
+    TF_CHECK_HDF5(space);
+    const hssize_t n = H5Sget_simple_extent_npoints(space);
+    TF_CHECK_HDF5(n);
+    v.resize(n);
+    if (n > 0) TF_CHECK_HDF5(H5Dread(dset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()));
+    TF_CHECK_HDF5(H5Sclose(space));
+    TF_CHECK_HDF5(H5Dclose(dset));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Archive::Value(const char *name, double &v)
+{
+  std::vector<double> one = {v};
+  PetscFunctionBeginUser;
+  PetscCall(Values(name, one));
+  PetscCheck(one.size() == 1, mesh_->comm, PETSC_ERR_USER_INPUT, "-restart %s: %s is not one number", path_.c_str(),
+             Path(name).c_str());
+  v = one[0];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Archive::Value(const char *name, PetscInt &v)
+{
+  double d = static_cast<double>(v);
+  PetscFunctionBeginUser;
+  PetscCall(Value(name, d));
+  v = static_cast<PetscInt>(d);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Archive::Value(const char *name, bool &v)
+{
+  double d = v ? 1.0 : 0.0;
+  PetscFunctionBeginUser;
+  PetscCall(Value(name, d));
+  v = d != 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Archive::NodeData(const char *name, std::vector<double> &v, int comps, bool owned_only)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Entities(name, v, comps, mesh_->node_orig, mesh_->num_global_nodes, &mesh_->node_owned, owned_only));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Archive::CellData(const char *name, std::vector<double> &v, int comps)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Entities(name, v, comps, mesh_->cell_orig, mesh_->num_global_cells, nullptr, false));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Archive::Entities(const char *name, std::vector<double> &v, int comps, const std::vector<PetscInt> &orig,
+                                 PetscInt nglobal, const std::vector<char> *owned, bool owned_only)
+{
+  Vec g;
+  const PetscInt n = (PetscInt)orig.size();
+
+  PetscFunctionBeginUser;
+  PetscCheck((PetscInt)v.size() == comps * n, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s: %d values for %d entities of %d",
+             name, (int)v.size(), (int)n, comps);
+  // A vector in the input numbering, split over the ranks as PETSc likes.
+  PetscCall(VecCreateMPI(mesh_->comm, PETSC_DECIDE, comps * nglobal, &g));
+  PetscCall(PetscObjectSetName((PetscObject)g, name));
+  PetscCall(PetscViewerHDF5PushGroup(viewer_, group_.c_str()));
+  if (write_) {
+    std::vector<PetscInt> idx;
+    std::vector<PetscScalar> val;
+    for (PetscInt i = 0; i < n; ++i) {
+      if (owned && !(*owned)[i]) continue;
+      for (int k = 0; k < comps; ++k) idx.push_back(comps * orig[i] + k), val.push_back(v[comps * i + k]);
+    }
+    PetscCall(VecSetValues(g, (PetscInt)idx.size(), idx.data(), val.data(), INSERT_VALUES));
+    PetscCall(VecAssemblyBegin(g));
+    PetscCall(VecAssemblyEnd(g));
+    PetscCall(VecView(g, viewer_));
+  } else {
+    PetscBool has;
+    PetscCall(PetscViewerHDF5HasObject(viewer_, (PetscObject)g, &has));
+    PetscCheck(has, mesh_->comm, PETSC_ERR_USER_INPUT,
+               "-restart %s: the checkpoint has no %s (written by another version of tubeform?)", path_.c_str(),
+               Path(name).c_str());
+    PetscCall(VecLoad(g, viewer_));
+    // Every local entity's numbers from wherever they are stored.
+    std::vector<PetscInt> idx(comps * n);
+    for (PetscInt i = 0; i < n; ++i)
+      for (int k = 0; k < comps; ++k) idx[comps * i + k] = comps * orig[i] + k;
+    IS from;
+    Vec local;
+    VecScatter scatter;
+    PetscCall(ISCreateGeneral(PETSC_COMM_SELF, comps * n, idx.data(), PETSC_COPY_VALUES, &from));
+    PetscCall(VecCreateSeqWithArray(PETSC_COMM_SELF, 1, comps * n, v.data(), &local));
+    PetscCall(VecScatterCreate(g, from, local, nullptr, &scatter));
+    PetscCall(VecScatterBegin(scatter, g, local, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(scatter, g, local, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterDestroy(&scatter));
+    PetscCall(VecDestroy(&local));
+    PetscCall(ISDestroy(&from));
+    if (owned_only)
+      for (PetscInt i = 0; i < n; ++i)
+        if (!(*owned)[i])
+          for (int k = 0; k < comps; ++k) v[comps * i + k] = 0;
+  }
+  PetscCall(PetscViewerHDF5PopGroup(viewer_));
+  PetscCall(VecDestroy(&g));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

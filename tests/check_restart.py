@@ -1,0 +1,206 @@
+"""Checkpoint and restart (issue 12): a run continued from a checkpoint gives
+the history and fields of the run that was never stopped.
+
+The case is the default squaring scene on the fast preset (inertia on, V-die
+contact with friction, the paper's springback; about 3 s on 2 ranks), so the
+checkpoint carries every part of the state: point states and coordinates,
+the motion, contact nodes, slips, frames, pending forces, the reversed loads
+of the springback stage, the energy accounts and the history.
+  - Same ranks: a restart repeats the same arithmetic on the same state, so
+    the tolerance is 1e-12 relative to each column's largest value (round-off
+    of a single changed operation would already show as 1e-16..1e-13, and a
+    missing piece of state as 1e-10 or more: a node frame left out moved the
+    next increment's load by 1e-15 relative and the end by 1e-7).
+    Checkpoints in the loading stage and in the springback stage (lambda > 1),
+    on 2 ranks; one written by SIGTERM (wherever it lands), on 1 rank; and
+    the last one before a rank was killed (SIGKILL), on 2 ranks, continuing
+    the .partial results the killed run left.
+  - 1 -> 2 ranks: the checkpoint of a 1-rank run continued on 2 ranks agrees
+    with the 1-rank run within the parallel tolerance of check_squaring.py
+    (3e-5 relative for load and C/t, set by how the r_min events amplify
+    round-off); fields start anew in a new -output (same -output: refused).
+  - A failed checkpoint write (its scratch file cannot be created) stops the
+    run with one line naming -checkpoint, and leaves the previous checkpoint
+    byte for byte as it was.
+  - Bad restarts: a missing file, a checkpoint of another mesh, and a
+    checkpoint whose results file is gone give one line each, non-zero exit.
+"""
+import filecmp
+import os
+import shutil
+import signal
+import subprocess
+import time
+
+import h5py
+import numpy as np
+
+from tfcheck import Checks, args, out, run
+
+tf, mpirun, src = args()
+k = Checks("restart")
+CASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src}/options/preset-fast.opts",
+        "-progress", "0"]
+
+
+def fresh(*names):
+    for n in names:
+        for p in (out(n), out(n) + ".partial", out(n) + ".tmp"):
+            if os.path.isdir(p):
+                shutil.rmtree(p)
+            elif os.path.exists(p):
+                os.remove(p)
+
+
+def history(name):
+    with h5py.File(out(name), "r") as h:
+        return {c: h["/history"][c][:] for c in h["/history"]}, h["/vertex_fields/displacement_u"][:]
+
+
+def worst(a, b, cols=None):
+    """Largest difference of the history columns relative to each column's largest value."""
+    w, which = 0.0, ""
+    for c in cols or a:
+        if a[c].shape != b[c].shape:
+            return np.inf, f"{c} has {len(a[c])} vs {len(b[c])} rows"
+        d = np.abs(a[c] - b[c]).max(initial=0) / max(np.abs(a[c]).max(initial=0), 1e-300)
+        if d > w:
+            w, which = d, c
+    return w, which
+
+
+def checkpoint_lambda(name):
+    with h5py.File(out(name), "r") as h:
+        return h["/run/lambda"][0], int(h["/run/increments"][0])
+
+
+def error_lines(p):
+    return [l for l in (p.stdout + p.stderr).splitlines() if "error" in l.lower() and "tubeform" in l]
+
+
+# The run never stopped, on 2 and on 1 rank.
+fresh("full_np2.h5", "full_np1.h5")
+run(tf, mpirun, 2, CASE + ["-output", out("full_np2.h5")])
+run(tf, mpirun, 1, CASE + ["-output", out("full_np1.h5")])
+full2, u2 = history("full_np2.h5")
+full1, u1 = history("full_np1.h5")
+rows = len(full2["stroke"])
+loading = int(np.sum(full2["stage"] == 0))
+
+# Same ranks: a checkpoint in the loading stage and one in the springback stage.
+# (one multiple of -checkpoint_every in the run: the checkpoint lands where asked)
+for every, stage in ((loading * 2 // 3, "loading"), (loading + (rows - loading) // 2, "springback")):
+    fresh("part.h5", "ck.h5")
+    run(tf, mpirun, 2, CASE + ["-output", out("part.h5"), "-checkpoint", out("ck.h5"), "-checkpoint_every", every])
+    lam, inc = checkpoint_lambda("ck.h5")
+    k.check((lam < 1) == (stage == "loading") and inc == every,
+            f"np=2 checkpoint after increment {inc} (lambda {lam:.4f}) is in the {stage} stage")
+    p = run(tf, mpirun, 2, CASE + ["-output", out("part.h5"), "-restart", out("ck.h5")])
+    h, u = history("part.h5")
+    w, col = worst(full2, h)
+    du = np.abs(u - u2).max() / np.abs(u2).max() if u.shape == u2.shape else np.inf
+    k.check(w <= 1e-12 and du <= 1e-12,
+            f"np=2 restart in the {stage} stage: history within {w:.1e} ({col}), fields within {du:.1e} (1e-12)")
+    k.check("restarting from" in p.stdout, "the restart says where it continues from")
+
+# SIGTERM on 1 rank once a third of the history is written: a checkpoint, flagged results, restart.
+fresh("sig.h5", "sig.csv", "ck_sig.h5")
+cmd = [tf] + CASE + ["-output", out("sig.h5"), "-history_csv", out("sig.csv"), "-checkpoint", out("ck_sig.h5")]
+proc = subprocess.Popen(cmd, cwd=src, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+t0 = time.time()
+while time.time() - t0 < 60 and proc.poll() is None:
+    if os.path.exists(out("sig.csv") + ".partial"):
+        with open(out("sig.csv") + ".partial") as f:
+            if sum(1 for _ in f) > rows // 3:
+                break
+    time.sleep(0.02)
+proc.send_signal(signal.SIGTERM)
+text, _ = proc.communicate(timeout=60)
+ok = proc.returncode != 0 and "interrupted by SIGTERM" in text and os.path.exists(out("ck_sig.h5"))
+k.check(ok, f"SIGTERM: non-zero exit {proc.returncode}, the stop named, a checkpoint written")
+if ok:
+    with h5py.File(out("sig.h5"), "r") as h:
+        k.check(h["/history"].attrs["interrupted"] == signal.SIGTERM, "SIGTERM: the results are flagged interrupted")
+    lam, inc = checkpoint_lambda("ck_sig.h5")
+    run(tf, mpirun, 1, CASE + ["-output", out("sig.h5"), "-history_csv", out("sig.csv"), "-restart",
+                               out("ck_sig.h5")])
+    h, u = history("sig.h5")
+    w, col = worst(full1, h)
+    csv_rows = sum(1 for _ in open(out("sig.csv"))) - 1
+    k.check(w <= 1e-12 and csv_rows == len(full1["stroke"]),
+            f"np=1 restart after SIGTERM at increment {inc}: history within {w:.1e} ({col}) (1e-12), "
+            f"CSV whole ({csv_rows} rows)")
+
+# A rank killed (SIGKILL) on 2 ranks: mpirun ends the job (no hang), the
+# .partial results and the last checkpoint remain, and the restart continues
+# the .partial file to the same history.
+fresh("kill.h5", "kill.csv", "ck_kill.h5")
+cmd = [mpirun, "-n", "2", tf] + CASE + ["-output", out("kill.h5"), "-history_csv", out("kill.csv"), "-checkpoint",
+                                        out("ck_kill.h5"), "-checkpoint_every", "40", "-output_every", "1000"]
+proc = subprocess.Popen(cmd, cwd=src, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+t0 = time.time()
+while time.time() - t0 < 60 and proc.poll() is None:
+    if os.path.exists(out("ck_kill.h5")) and os.path.exists(out("kill.csv") + ".partial"):
+        with open(out("kill.csv") + ".partial") as f:
+            if sum(1 for _ in f) > rows // 2:
+                break
+    time.sleep(0.02)
+ranks = subprocess.run(["pgrep", "-P", str(proc.pid)], capture_output=True, text=True).stdout.split()
+if ranks:
+    os.kill(int(ranks[-1]), signal.SIGKILL)
+try:
+    proc.communicate(timeout=60)
+    ended = True
+except subprocess.TimeoutExpired:
+    proc.kill()
+    proc.communicate()
+    ended = False
+k.check(len(ranks) == 2 and ended and proc.returncode != 0 and os.path.exists(out("kill.h5") + ".partial"),
+        f"a rank killed: the job ends (exit {proc.returncode}) within 60 s, the .partial results stay")
+if ended and os.path.exists(out("ck_kill.h5")):
+    lam, inc = checkpoint_lambda("ck_kill.h5")
+    run(tf, mpirun, 2, CASE + ["-output", out("kill.h5"), "-history_csv", out("kill.csv"), "-restart",
+                               out("ck_kill.h5"), "-output_every", 1000])
+    h, _ = history("kill.h5")
+    w, col = worst(full2, h)
+    k.check(w <= 1e-12, f"np=2 restart after a rank was killed (checkpoint at increment {inc}): history within "
+            f"{w:.1e} ({col}) (1e-12)")
+
+# 1 -> 2 ranks.
+fresh("ck1.h5", "part1.h5", "part12.h5")
+run(tf, mpirun, 1, CASE + ["-output", out("part1.h5"), "-checkpoint", out("ck1.h5"), "-checkpoint_every",
+                           loading * 2 // 3])
+p = run(tf, mpirun, 2, CASE + ["-output", out("part1.h5"), "-restart", out("ck1.h5")], check=False)
+lines = error_lines(p)
+k.check(p.returncode != 0 and len(lines) >= 1 and "new -output" in lines[0],
+        f"1 -> 2 ranks into the same -output: refused ({lines[:1]})")
+run(tf, mpirun, 2, CASE + ["-output", out("part12.h5"), "-restart", out("ck1.h5")])
+h, _ = history("part12.h5")
+w, col = worst(full1, h, ["stroke", "load", "c_over_t", "deviation_ratio", "x_max", "y_max"])
+k.check(w <= 3e-5, f"1 -> 2 ranks: load, stroke and shape within {w:.1e} ({col}) of the 1-rank run (3e-5)")
+
+# A checkpoint write that fails leaves the previous one intact.
+fresh("ck_keep.h5", "keep.h5")
+run(tf, mpirun, 2, CASE + ["-output", out("keep.h5"), "-checkpoint", out("ck_keep.h5"), "-checkpoint_every", 100])
+shutil.copy(out("ck_keep.h5"), out("ck_keep_before.h5"))
+os.mkdir(out("ck_keep.h5") + ".tmp")  # the scratch file cannot be created
+fresh("keep2.h5")
+p = run(tf, mpirun, 2, CASE + ["-output", out("keep2.h5"), "-checkpoint", out("ck_keep.h5"), "-checkpoint_every",
+                               100], check=False)
+lines = error_lines(p)
+k.check(p.returncode != 0 and len(lines) >= 1 and "-checkpoint" in lines[0],
+        f"failed checkpoint write: non-zero exit, named ({lines[:1]})")
+k.check(filecmp.cmp(out("ck_keep.h5"), out("ck_keep_before.h5"), shallow=False),
+        "failed checkpoint write: the previous checkpoint is unchanged")
+fresh("ck_keep.h5")
+
+# Bad restarts.
+for opts, expect, what in (
+    (["-restart", out("no_such.h5"), "-output", out("x.h5")], "no such checkpoint", "a missing checkpoint"),
+    (["-restart", out("ck1.h5"), "-output", out("x.h5"), "-mesh_ntheta", 24], "mesh", "another mesh"),
+    (["-restart", out("ck1.h5"), "-output", out("gone.h5")], "not in -output", "results gone"),
+):
+    p = run(tf, mpirun, 1, CASE + opts, check=False)
+    lines = error_lines(p)
+    k.check(p.returncode != 0 and len(lines) == 1 and expect in lines[0], f"{what}: one line ({lines})")
+k.done()
