@@ -12,6 +12,10 @@ residual is the first of them in column order. The run must stop naming the
 increment and the column (and the first element, when a stress is not
 finite), with every number written finite: the history up to the increment
 before and the fields of the last finite step.
+
+Friction iterations that never settle stop the run after
+-friction_max_unsettled increments in a row (here 4, with a tolerance no
+iterate can meet).
 """
 import os
 
@@ -45,8 +49,27 @@ for np_ in (1, 2):
     ok = os.path.exists(f)
     if ok:
         with h5py.File(f, "r") as h:
-            finite = [all(np.isfinite(h[g][d][()]).all() for d in h[g]) for g in ("history", "vertex_fields",
-                                                                                    "cell_fields")]
+            # (Inf is a flat side's corner radius, the only column where it is a value)
+            finite = [all(np.isfinite(h[g][d][()]).all() or (d.startswith("r_corner") and not np.isnan(h[g][d][()]).any())
+                          for d in h[g]) for g in ("history", "vertex_fields", "cell_fields")]
             ok = h["/history"].attrs["stopped"] == 1 and all(finite)
     k.check(ok, f"np={np_} E = 1e306: results flagged stopped, every number in them finite")
+
+# Friction iterations that never settle (a tolerance no iterate meets): the
+# run stops after -friction_max_unsettled increments in a row, naming the
+# option, with the history up to there (every row's unsettled count rising).
+for np_ in (1, 2):
+    f = out(f"unsettled_np{np_}.h5")
+    p = run(tf, mpirun, np_, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
+                              f"{src}/options/preset-fast.opts", "-friction_tol", "1e-300", "-friction_max_iters", "2",
+                              "-friction_max_unsettled", "4", "-output", f], check=False)
+    lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
+    k.check(p.returncode != 0 and len(lines) == 1 and "-friction_max_unsettled" in lines[0],
+            f"np={np_} unsettled friction: exit {p.returncode}, {lines}")
+    ok = os.path.exists(f)
+    if ok:
+        with h5py.File(f, "r") as h:
+            u = h["/history/unsettled"][:]
+            ok = h["/history"].attrs["stopped"] == 1 and len(u) >= 5 and bool(np.all(np.diff(u[-5:]) >= 1))
+    k.check(ok, f"np={np_} unsettled friction: results flagged, the last 4 increments each unsettled")
 k.done()

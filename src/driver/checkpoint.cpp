@@ -43,6 +43,7 @@ PetscErrorCode Problem::Persist(Archive &ar, CheckpointHeader &head)
              "the run that wrote it)",
              opt_.restart.c_str(), (int)at_.started.size(), (int)stages);
   PetscCall(ar.Value("unsettled", unsettled_));
+  PetscCall(ar.Value("unsettled_run", unsettled_run_));
   PetscCall(ar.Value("events_inside", events_inside_));
   PetscCall(ar.Value("inconsistent", inconsistent_));
   PetscCall(ar.Value("worst_error", worst_error_));

@@ -299,6 +299,7 @@ PetscErrorCode Problem::Run()
     const bool on_break = std::abs(lambda + taken.dl - next_break) < kSnapToBreak * dl_stage;
     lambda = on_break ? next_break : lambda + taken.dl;
     unsettled_ += taken.unsettled;
+    unsettled_run_ = taken.unsettled > 0 ? unsettled_run_ + 1 : 0;
     events_inside_ += taken.event_inside;
     inconsistent_ += taken.inconsistent > 0;
 
@@ -320,6 +321,13 @@ PetscErrorCode Problem::Run()
       stop = Format("the energy balance error %.1f %% passed -max_energy_error %g: the solution has left equilibrium "
                     "(smaller -increments / -rmin_deps; docs/accuracy.md, \"Extremes\") (%s)",
                     100 * history_.rows().back().energy_error, opt_.max_energy_error, where().c_str());
+      break;
+    }
+    if (unsettled_run_ >= opt_.friction_max_unsettled) {
+      stop_code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
+      stop = Format("the friction iterations did not settle in %d increments in a row (-friction_max_unsettled), even "
+                    "on steps halved %d times: raise -friction_max_iters or -friction_tol, or try -dynamics auto (%s)",
+                    (int)unsettled_run_, kMaxCuts, where().c_str());
       break;
     }
     PetscCall(progress.Update(lambda, inc, history_.rows().back().stroke));

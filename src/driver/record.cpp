@@ -141,10 +141,10 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
   row.w_damped = energy_.w_inertia - row.w_kinetic;
   row.energy_error = energy_.BalanceError();
   row.internal_error = energy_.InternalError(row.w_elastic);
-  // A value that is not finite is never written: the run stops at the
-  // increment before (Run reads nonfinite_).
+  // NaN, or Inf where it can only come from an overflow, is never written:
+  // the run stops at the increment before (Run reads nonfinite_).
   for (const auto &col : HistoryColumns())
-    if (!std::isfinite(row.*(col.field))) {
+    if (std::isnan(row.*(col.field)) || (std::isinf(row.*(col.field)) && !col.may_be_infinite)) {
       nonfinite_ = col.name;
       PetscCall(PetscLogEventEnd(Log::measure, 0, 0, 0, 0));
       PetscFunctionReturn(PETSC_SUCCESS);

@@ -208,6 +208,9 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       "Friction iterations: largest change of f_l / (mu f_n) between iterates", opt.friction_tol));
   PetscCall(read.Int(PetscOptionsObject, "-friction_max_iters", "Friction iterations per increment before giving up",
                      opt.friction_max_iters));
+  PetscCall(read.Int(PetscOptionsObject, "-friction_max_unsettled",
+                     "Stop when this many increments in a row are taken with friction iterations unsettled",
+                     opt.friction_max_unsettled));
   PetscCall(read.Real(PetscOptionsObject, "-rmin_dphi",
                       "r6, slide to stick: largest fall of the friction mobilization f_l / (mu f_n), towards "
                       "stick or through it into a reversal, in an increment",
@@ -352,9 +355,11 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-friction_mu %g: the friction coefficient must lie in [0, 2]", opt.friction_mu);
   PetscCheck(opt.friction_vcri >= 0, comm, PETSC_ERR_USER_INPUT,
              "-friction_vcri %g: must be non-negative (0: automatic)", opt.friction_vcri);
-  PetscCheck(opt.friction_tol > 0 && opt.friction_max_iters >= 1, comm, PETSC_ERR_USER_INPUT,
-             "-friction_tol %g, -friction_max_iters %d: need tol > 0 and at least one iteration", opt.friction_tol,
-             (int)opt.friction_max_iters);
+  PetscCheck(opt.friction_tol > 0 && opt.friction_max_iters >= 1 && opt.friction_max_unsettled >= 1, comm,
+             PETSC_ERR_USER_INPUT,
+             "-friction_tol %g, -friction_max_iters %d, -friction_max_unsettled %d: need tol > 0 and at least one "
+             "iteration and increment",
+             opt.friction_tol, (int)opt.friction_max_iters, (int)opt.friction_max_unsettled);
   PetscCheck(opt.rmin_dphi > 0 && opt.rmin_dphi <= 2, comm, PETSC_ERR_USER_INPUT, "-rmin_dphi %g: must lie in (0, 2]",
              opt.rmin_dphi);
   PetscCheck(opt.rmin_dphi_rise > 0 && opt.rmin_dphi_rise <= 1, comm, PETSC_ERR_USER_INPUT,

@@ -77,6 +77,7 @@ private:
   EnergyAccount energy_;
   // Compromises so far (history columns of those names).
   PetscInt unsettled_ = 0, events_inside_ = 0, inconsistent_ = 0;
+  PetscInt unsettled_run_ = 0;                  // increments in a row taken unsettled (-friction_max_unsettled)
   double worst_error_ = 0, worst_internal_ = 0; // largest |energy_error|, |internal_error| so far
   bool warned_ = false;                         // the energy warning was printed
   bool diverged_ = false;                       // the energy balance error passed -max_energy_error

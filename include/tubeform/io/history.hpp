@@ -29,6 +29,7 @@ struct HistoryColumn {
   const char *name;
   double HistoryRow::*field;
   const char *meaning;
+  bool may_be_infinite = false; // Inf is a value of the quantity (a flat side's radius), not an overflow
 };
 const std::vector<HistoryColumn> &HistoryColumns();
 

@@ -42,6 +42,9 @@ struct Options {
   PetscInt rmin_stall_increments = 1000; // stop when this many increments advance lambda by < kStallAdvance
   PetscInt rmin_max_redo = 10;           // re-solves per increment for loading/unloading switches
   PetscInt friction_max_iters = 30;
+  // An unsettled step is a counted compromise; this many in a row means the
+  // iterations no longer converge at any step size: the run stops.
+  PetscInt friction_max_unsettled = 50;
   PetscBool drift_correction = PETSC_FALSE;
   PetscBool residual_correction = PETSC_FALSE;
   Dynamics dynamics = Dynamics::Quasistatic;             // implicit/auto: lumped mass, backward Euler
