@@ -6,13 +6,16 @@
 // a clean outcome; only crashes, sanitizer reports and hangs are findings.
 // Built with clang by scripts/fuzz (TF_FUZZ=ON); the normal build links it to
 // regression_driver.cpp, which runs tests/fuzz/regressions/options/* through it.
+#include <dirent.h>
 #include <petscsys.h>
 #include <unistd.h>
 
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "tubeform/io/options.hpp"
 #include "tubeform/material/factory.hpp"
@@ -53,6 +56,23 @@ void UseOptions(const tf::Options &opt)
     s.plastic = law->Loading(s, deps);
     (void)law->Update(s, deps);
   }
+}
+
+// PETSc 3.18's PetscOptionsInsertFile leaves the file open when it refuses a line (an error
+// returned from inside its reading loop): close what it left, or the fuzzer runs out of descriptors.
+void CloseLeftOpen()
+{
+  DIR *d = opendir("/proc/self/fd");
+  if (!d) return;
+  std::vector<int> left;
+  char link[4096];
+  for (dirent *e; (e = readdir(d));) {
+    const std::string fd = std::string("/proc/self/fd/") + e->d_name;
+    const ssize_t n = readlink(fd.c_str(), link, sizeof(link) - 1);
+    if (n > 0 && std::string(link, n) == path) left.push_back(std::atoi(e->d_name));
+  }
+  closedir(d);
+  for (int fd : left) close(fd);
 }
 
 PetscErrorCode ReadOnce()
@@ -103,6 +123,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   }
   (void)PetscOptionsPop();
   (void)PetscOptionsDestroy(&db);
+  CloseLeftOpen();
   return 0;
 }
 
