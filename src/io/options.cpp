@@ -45,7 +45,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasHelp(nullptr, &opt.help));
 
-  PetscOptionsBegin(comm, "", "tubeform: scene and geometry", "tubeform");
+  TF_OPTIONS_BEGIN(comm, "tubeform: scene and geometry");
   {
     std::vector<const char *> names;
     for (const auto &s : scenes) names.push_back(s.c_str());
@@ -74,9 +74,9 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                               "tubeform", kElements, 3, kElements[choice], &choice, nullptr));
   opt.element = choice == 0 ? fe::Formulation::Q4 : choice == 1 ? fe::Formulation::BBar : fe::Formulation::QM6;
   opt.element_name = kElements[choice];
-  PetscOptionsEnd();
+  TF_OPTIONS_END();
 
-  PetscOptionsBegin(comm, "", "tubeform: material", "tubeform");
+  TF_OPTIONS_BEGIN(comm, "tubeform: material");
   choice = 0;
   read.Note("-material");
   PetscCall(PetscOptionsEList("-material", "Material preset (Huang 2008, Table 1) or custom", "tubeform", kMaterials, 3,
@@ -106,9 +106,9 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                                     "tubeform", table, &n, &set));
     if (set) opt.material.table.assign(table, table + n);
   }
-  PetscOptionsEnd();
+  TF_OPTIONS_END();
 
-  PetscOptionsBegin(comm, "", "tubeform: incremental driver (r_min method)", "tubeform");
+  TF_OPTIONS_BEGIN(comm, "tubeform: incremental driver (r_min method)");
   PetscCall(read.Int(PetscOptionsObject, "-increments", "Trial increments over the load path (r_min may cut each)",
                      opt.increments));
   PetscCall(read.Int(PetscOptionsObject, "-unload_increments",
@@ -175,9 +175,9 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
       "tubeform", schemes, 2, schemes[choice], &choice, nullptr));
     opt.kinematics = choice == 0 ? ObjectiveScheme::Forward : ObjectiveScheme::Midpoint;
   }
-  PetscOptionsEnd();
+  TF_OPTIONS_END();
 
-  PetscOptionsBegin(comm, "", "tubeform: loading and output", "tubeform");
+  TF_OPTIONS_BEGIN(comm, "tubeform: loading and output");
   PetscCall(read.Real(PetscOptionsObject, "-pressure_p",
                       "pressure scene: final internal pressure (MPa), -pressure_control load", opt.pressure_p));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-pressure_control",
@@ -281,7 +281,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(read.Bool(PetscOptionsObject, "-allow_unused",
                       "Run even when an option close to one of tubeform's is not one (a misspelling is an error)",
                       opt.allow_unused));
-  PetscOptionsEnd();
+  TF_OPTIONS_END();
 
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
   if (!opt.allow_unused) PetscCall(read.CheckUnknown(comm));

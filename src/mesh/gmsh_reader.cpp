@@ -1,6 +1,8 @@
 #include "tubeform/mesh/gmsh_reader.hpp"
 
 #include <algorithm>
+#include <climits>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <unordered_map>
@@ -13,6 +15,7 @@ struct Reader {
   std::ifstream in;
   std::string path;
   std::string error;
+  size_t max_count = 0; // no count in the file can exceed its size in bytes (each item takes some)
 
   bool fail(const std::string &why)
   {
@@ -29,7 +32,116 @@ struct Reader {
     }
     return false;
   }
+  // A count of `what` in `section`: a whole number from 0 to what the file's size can hold. Counts
+  // steer loops and allocations, so a negative, unreadable or absurd one stops the reading.
+  bool count(std::istream &s, size_t &n, const char *section, const char *what)
+  {
+    long long v = -1;
+    if (!(s >> v)) return fail(std::string("truncated ") + section + " section (no number of " + what + ")");
+    if (v < 0 || static_cast<unsigned long long>(v) > max_count)
+      return fail(std::string(section) + ": number of " + what + " " + std::to_string(v) +
+                  " is negative or larger than the file can hold");
+    n = static_cast<size_t>(v);
+    return true;
+  }
+  // An integer field (a tag, a dimension, a type) within the range of int.
+  bool integer(std::istream &s, int &v, const char *section)
+  {
+    long long x = 0;
+    if (!(s >> x)) return fail(std::string("truncated ") + section + " section");
+    if (x < INT_MIN || x > INT_MAX)
+      return fail(std::string(section) + ": number " + std::to_string(x) + " out of range");
+    v = static_cast<int>(x);
+    return true;
+  }
 };
+
+// Reads the $PhysicalNames (names of the physical curves, dimension 1) and the
+// $Entities section (the physical tags each curve carries).
+bool ReadEntities(Reader &r, std::unordered_map<int, std::string> &curve_names,
+                  std::unordered_map<int, std::vector<int>> &curve_physicals)
+{
+  r.in.clear();
+  r.in.seekg(0);
+  if (r.seek("PhysicalNames")) {
+    size_t n = 0;
+    if (!r.count(r.in, n, "$PhysicalNames", "names")) return false;
+    for (size_t k = 0; k < n; ++k) {
+      int dim, tag;
+      std::string name;
+      if (!r.integer(r.in, dim, "$PhysicalNames") || !r.integer(r.in, tag, "$PhysicalNames")) return false;
+      std::getline(r.in, name);
+      const auto a = name.find('"'), b = name.rfind('"');
+      if (a == std::string::npos || b <= a) return r.fail("malformed $PhysicalNames entry");
+      name = name.substr(a + 1, b - a - 1);
+      if (std::any_of(name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) < ' '; }))
+        return r.fail("$PhysicalNames: a name holds a control character");
+      if (dim == 1) curve_names[tag] = name;
+    }
+  }
+  r.in.clear();
+  r.in.seekg(0);
+  if (!r.seek("Entities")) return r.fail("no $Entities section");
+  size_t np, nc, ns, nv;
+  const char *what = "$Entities";
+  if (!r.count(r.in, np, what, "points") || !r.count(r.in, nc, what, "curves") ||
+      !r.count(r.in, ns, what, "surfaces") || !r.count(r.in, nv, what, "volumes"))
+    return false;
+  std::string line;
+  std::getline(r.in, line);
+  for (size_t k = 0; k < np && r.in; ++k) std::getline(r.in, line);
+  for (size_t k = 0; k < nc && r.in; ++k) {
+    std::getline(r.in, line);
+    std::istringstream ls(line);
+    int tag;
+    double box[6];
+    size_t nphys;
+    if (!r.integer(ls, tag, what)) return false;
+    for (double &b : box)
+      if (!(ls >> b)) return r.fail("truncated curve " + std::to_string(tag) + " in the $Entities section");
+    if (!r.count(ls, nphys, what, "physical tags of a curve")) return false;
+    for (size_t q = 0; q < nphys; ++q) {
+      int ph;
+      if (!r.integer(ls, ph, what)) return false;
+      curve_physicals[tag].push_back(ph == INT_MIN ? INT_MAX : std::abs(ph));
+    }
+  }
+  if (!r.in) return r.fail("truncated $Entities section");
+  return true;
+}
+
+// Reads the $Nodes section into mesh.xy, renumbered 0..n-1 in file order.
+bool ReadNodes(Reader &r, SerialMesh &mesh, std::unordered_map<long long, int> &node_index)
+{
+  if (!r.seek("Nodes")) return r.fail("no $Nodes section");
+  const char *what = "$Nodes";
+  size_t nblocks, nnodes;
+  long long mintag, maxtag;
+  if (!r.count(r.in, nblocks, what, "blocks") || !r.count(r.in, nnodes, what, "nodes")) return false;
+  if (!(r.in >> mintag >> maxtag)) return r.fail("truncated $Nodes section");
+  mesh.xy.clear();
+  mesh.xy.reserve(2 * nnodes);
+  for (size_t b = 0; b < nblocks; ++b) {
+    int edim, etag, parametric;
+    size_t n;
+    if (!r.integer(r.in, edim, what) || !r.integer(r.in, etag, what) || !r.integer(r.in, parametric, what) ||
+        !r.count(r.in, n, what, "nodes in a block"))
+      return false;
+    if (parametric) return r.fail("parametric node blocks are not supported");
+    std::vector<long long> tags(n);
+    for (auto &t : tags)
+      if (!(r.in >> t)) return r.fail("truncated $Nodes section");
+    for (size_t k = 0; k < n; ++k) {
+      double x, y, z;
+      if (!(r.in >> x >> y >> z)) return r.fail("truncated $Nodes section");
+      if (mesh.xy.size() / 2 >= static_cast<size_t>(INT_MAX)) return r.fail("too many nodes");
+      node_index[tags[k]] = static_cast<int>(mesh.xy.size() / 2);
+      mesh.xy.push_back(x);
+      mesh.xy.push_back(y);
+    }
+  }
+  return true;
+}
 
 } // namespace
 
@@ -39,112 +151,54 @@ std::string ReadGmsh(const std::string &path, SerialMesh &mesh)
   r.path = path;
   r.in.open(path);
   if (!r.in) return "mesh file '" + path + "' cannot be opened (missing or unreadable)";
+  r.in.seekg(0, std::ios::end);
+  const std::streamoff bytes = r.in.tellg();
+  r.max_count = bytes > 0 ? static_cast<size_t>(bytes) : 0;
+  r.in.seekg(0);
 
   // Format line: only 4.1 ASCII is accepted.
   if (!r.seek("MeshFormat")) return "mesh file '" + path + "' is not a Gmsh mesh (no $MeshFormat)";
   double version = 0;
   int filetype = -1, datasize = 0;
   if (!(r.in >> version >> filetype >> datasize)) return "mesh file '" + path + "': unreadable $MeshFormat line";
-  if (version < 4.09 || version > 4.11 || filetype != 0)
+  if (!(version >= 4.09 && version <= 4.11) || filetype != 0)
     return "mesh file '" + path +
            "': only Gmsh format 4.1 ASCII is supported (re-export with 'gmsh -format msh41 -save')";
 
-  // Physical names of dimension 1 (curves).
+  // Physical names of dimension 1 (curves); which physical tags each curve carries; the nodes.
   std::unordered_map<int, std::string> curve_names;
-  r.in.clear();
-  r.in.seekg(0);
-  if (r.seek("PhysicalNames")) {
-    int n = 0;
-    r.in >> n;
-    for (int k = 0; k < n; ++k) {
-      int dim, tag;
-      std::string name;
-      r.in >> dim >> tag;
-      std::getline(r.in, name);
-      const auto a = name.find('"'), b = name.rfind('"');
-      if (a == std::string::npos || b <= a) return "mesh file '" + path + "': malformed $PhysicalNames entry";
-      if (dim == 1) curve_names[tag] = name.substr(a + 1, b - a - 1);
-    }
-  }
-
-  // Entities: which physical tags each curve carries.
   std::unordered_map<int, std::vector<int>> curve_physicals;
-  r.in.clear();
-  r.in.seekg(0);
-  if (!r.seek("Entities")) return "mesh file '" + path + "': no $Entities section";
-  {
-    size_t np, nc, ns, nv;
-    r.in >> np >> nc >> ns >> nv;
-    std::string line;
-    std::getline(r.in, line);
-    for (size_t k = 0; k < np; ++k) std::getline(r.in, line);
-    for (size_t k = 0; k < nc; ++k) {
-      std::getline(r.in, line);
-      std::istringstream ls(line);
-      int tag;
-      double box[6];
-      size_t nphys;
-      ls >> tag;
-      for (double &b : box) ls >> b;
-      ls >> nphys;
-      for (size_t q = 0; q < nphys; ++q) {
-        int ph;
-        ls >> ph;
-        curve_physicals[tag].push_back(std::abs(ph));
-      }
-    }
-    if (!r.in) return "mesh file '" + path + "': truncated $Entities section";
-  }
-
-  // Nodes, renumbered 0..n-1 in file order.
-  std::unordered_map<size_t, int> node_index;
-  if (!r.seek("Nodes")) return "mesh file '" + path + "': no $Nodes section";
-  {
-    size_t nblocks, nnodes, mintag, maxtag;
-    r.in >> nblocks >> nnodes >> mintag >> maxtag;
-    mesh.xy.clear();
-    mesh.xy.reserve(2 * nnodes);
-    for (size_t b = 0; b < nblocks; ++b) {
-      int edim, etag, parametric;
-      size_t n;
-      r.in >> edim >> etag >> parametric >> n;
-      if (parametric) return "mesh file '" + path + "': parametric node blocks are not supported";
-      std::vector<size_t> tags(n);
-      for (auto &t : tags) r.in >> t;
-      for (size_t k = 0; k < n; ++k) {
-        double x, y, z;
-        r.in >> x >> y >> z;
-        node_index[tags[k]] = static_cast<int>(mesh.xy.size() / 2);
-        mesh.xy.push_back(x);
-        mesh.xy.push_back(y);
-      }
-    }
-    if (!r.in) return "mesh file '" + path + "': truncated $Nodes section";
-  }
+  std::unordered_map<long long, int> node_index;
+  if (!ReadEntities(r, curve_names, curve_physicals) || !ReadNodes(r, mesh, node_index)) return r.error;
 
   // Elements: quads become cells, lines in named physical curves become edges.
   if (!r.seek("Elements")) return "mesh file '" + path + "': no $Elements section";
   {
-    size_t nblocks, nelem, mintag, maxtag;
-    r.in >> nblocks >> nelem >> mintag >> maxtag;
+    const char *what = "$Elements";
+    size_t nblocks, nelem;
+    long long mintag, maxtag;
+    if (!r.count(r.in, nblocks, what, "blocks") || !r.count(r.in, nelem, what, "elements")) return r.error;
+    if (!(r.in >> mintag >> maxtag)) return "mesh file '" + path + "': truncated $Elements section";
     mesh.quads.clear();
     mesh.edge_sets.clear();
     size_t unsupported = 0;
     for (size_t b = 0; b < nblocks; ++b) {
       int edim, etag, etype;
       size_t n;
-      r.in >> edim >> etag >> etype >> n;
+      if (!r.integer(r.in, edim, what) || !r.integer(r.in, etag, what) || !r.integer(r.in, etype, what) ||
+          !r.count(r.in, n, what, "elements in a block"))
+        return r.error;
       const int nper = etype == 1 ? 2 : etype == 2 ? 3 : etype == 3 ? 4 : etype == 15 ? 1 : -1;
       if (nper < 0)
         return "mesh file '" + path + "': element type " + std::to_string(etype) +
                " is not supported (use 4-node quads, 'Recombine' in the .geo)";
       for (size_t k = 0; k < n; ++k) {
-        size_t tag;
-        r.in >> tag;
+        long long tag;
+        if (!(r.in >> tag)) return "mesh file '" + path + "': truncated $Elements section";
         int ids[4];
         for (int q = 0; q < nper; ++q) {
-          size_t nt;
-          r.in >> nt;
+          long long nt;
+          if (!(r.in >> nt)) return "mesh file '" + path + "': truncated $Elements section";
           auto it = node_index.find(nt);
           if (it == node_index.end())
             return "mesh file '" + path + "': element " + std::to_string(tag) + " refers to unknown node " +
@@ -166,7 +220,6 @@ std::string ReadGmsh(const std::string &path, SerialMesh &mesh)
         }
       }
     }
-    if (!r.in) return "mesh file '" + path + "': truncated $Elements section";
     if (unsupported)
       return "mesh file '" + path + "' has " + std::to_string(unsupported) +
              " triangles: only quadrilateral meshes are supported (add 'Recombine Surface' to the .geo)";

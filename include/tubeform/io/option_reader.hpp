@@ -33,4 +33,30 @@ private:
   PetscErrorCode CheckNumber(MPI_Comm comm, const char *name, bool integer) const;
 };
 
+// Ends a PetscOptionsBegin block that an error leaves early (a PetscCall
+// returning from inside it), so that what the block allocated is freed;
+// released just before PetscOptionsEnd, which ends it otherwise.
+class OptionsBlock {
+public:
+  explicit OptionsBlock(PetscOptionItems *items) : items_(items) {}
+  OptionsBlock(const OptionsBlock &) = delete;
+  OptionsBlock &operator=(const OptionsBlock &) = delete;
+  ~OptionsBlock()
+  {
+    if (items_) (void)PetscOptionsEnd_Private(items_); // on the error path: its own error cannot be returned
+  }
+  void Release() { items_ = nullptr; }
+
+private:
+  PetscOptionItems *items_;
+};
+
 } // namespace tf
+
+// PetscOptionsBegin / PetscOptionsEnd of a tubeform block, ended on the error path as well.
+#define TF_OPTIONS_BEGIN(comm, title)                                                                                  \
+  PetscOptionsBegin(comm, "", title, "tubeform");                                                                      \
+  tf::OptionsBlock tf_options_block_(PetscOptionsObject)
+#define TF_OPTIONS_END()                                                                                               \
+  tf_options_block_.Release();                                                                                         \
+  PetscOptionsEnd()
