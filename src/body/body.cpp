@@ -313,38 +313,6 @@ void Body::SetElasticOnly()
   StaleAll();
 }
 
-PetscErrorCode Body::Persist(Archive &ar)
-{
-  // Per point: stress (4), ep, hslope, plastic.
-  constexpr int kPerPoint = kNumStress + 3;
-  std::vector<double> points(kPerPoint * state_.size());
-  bool elastic_only = elastic_only_;
-
-  PetscFunctionBeginUser;
-  ar.Group("/body");
-  for (size_t i = 0; i < state_.size() && !ar.reading(); ++i) {
-    const PointState &p = state_[i];
-    double *d = &points[kPerPoint * i];
-    std::copy(p.sigma.begin(), p.sigma.end(), d);
-    d[kNumStress] = p.ep, d[kNumStress + 1] = p.hslope, d[kNumStress + 2] = p.plastic;
-  }
-  PetscCall(ar.CellData("points", points, kPerPoint * fe::kGauss));
-  PetscCall(ar.NodeData("x", x_, 2));
-  PetscCall(ar.NodeData("u", u_, 2));
-  PetscCall(ar.Value("elastic_only", elastic_only));
-  if (!ar.reading()) PetscFunctionReturn(PETSC_SUCCESS);
-  if (elastic_only) SetElasticOnly();
-  for (size_t i = 0; i < state_.size(); ++i) {
-    PointState &p = state_[i];
-    const double *d = &points[kPerPoint * i];
-    std::copy(d, d + kNumStress, p.sigma.begin());
-    p.ep = d[kNumStress], p.hslope = d[kNumStress + 1], p.plastic = d[kNumStress + 2] != 0;
-  }
-  StaleAll(); // new geometry and stresses
-  geometry_.valid = false;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode Body::InternalForce(Vec f_local) const
 {
   PetscScalar *f;

@@ -18,6 +18,10 @@ namespace tf {
 namespace {
 // The layout of a checkpoint; a file of another version is refused.
 constexpr double kCheckpointVersion = 1;
+// Room a checkpoint is given before it is written: 8-byte numbers, fewer than
+// 64 per node, per cell and per history row (the state holds about 30, 40 and
+// 46), and 1 MB for HDF5's own.
+constexpr double kBytesPerItem = 8 * 64, kBytesOverhead = 1e6;
 } // namespace
 
 PetscErrorCode Problem::Persist(Archive &ar, CheckpointHeader &head)
@@ -76,7 +80,8 @@ PetscErrorCode Problem::WriteCheckpoint(ResultWriter &writer, const OutputSchedu
 
   PetscFunctionBeginUser;
   PetscCall(writer.Flush()); // the field steps the checkpoint counts on are on disk
-  PetscCall(ar.Open(mesh_, opt_.checkpoint, true, "-checkpoint"));
+  const double items = mesh_.num_global_nodes + mesh_.num_global_cells + (double)history_.rows().size();
+  PetscCall(ar.Open(mesh_, opt_.checkpoint, true, "-checkpoint", kBytesPerItem * items + kBytesOverhead));
   PetscCall(Persist(ar, head));
   PetscCall(ar.Close());
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -184,7 +184,8 @@ PetscErrorCode Problem::Run()
   // with code stop_code after the results so far are written.
   std::string stop;
   PetscErrorCode stop_code = 0;
-  bool stalled = false, wrote_last = true;
+  // A restart has written no field step yet: its last state is written whatever ends the run.
+  bool stalled = false, wrote_last = opt_.restart.empty();
   int interrupted = 0; // the stop signal that ended the run
   const auto where = [&] {
     return Format("stroke %g, lambda %.6g, after %d increments", history_.rows().back().stroke, lambda, (int)inc);
@@ -338,7 +339,7 @@ PetscErrorCode Problem::Run()
       if (!stop.empty()) break;
     }
   }
-  if (!stop.empty() && !wrote_last) PetscCall(WriteFields(writer, at_.step++, lambda));
+  if (!wrote_last) PetscCall(WriteFields(writer, at_.step++, lambda)); // (a loop that ends normally wrote it)
   PetscCall(PetscLogStagePop());
 
   // 7. Final metrics and the result file (renamed into place only now).

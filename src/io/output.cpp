@@ -96,8 +96,9 @@ PetscErrorCode ResultWriter::Reopen(const Mesh &mesh, const std::string &path, c
   // overwritten as the run goes on); a finished file's history goes.
   hsize_t steps = 0;
   if (H5Lexists(file, "/time", H5P_DEFAULT) > 0) {
-    const hid_t dset = H5Dopen2(file, "/time", H5P_DEFAULT), space = H5Dget_space(dset);
+    const hid_t dset = H5Dopen2(file, "/time", H5P_DEFAULT);
     TF_CHECK_HDF5(dset);
+    const hid_t space = H5Dget_space(dset);
     TF_CHECK_HDF5(space);
     TF_CHECK_HDF5(H5Sget_simple_extent_dims(space, &steps, nullptr));
     TF_CHECK_HDF5(H5Sclose(space));
@@ -107,7 +108,10 @@ PetscErrorCode ResultWriter::Reopen(const Mesh &mesh, const std::string &path, c
              "-restart: %s holds %d field steps, fewer than the %d of the checkpoint (not the results of the run "
              "that wrote it?)",
              (found == 1 ? partial : path).c_str(), (int)steps, (int)times.size());
+  // A finished file's history and options go (the options attribute keeps its
+  // length when rewritten: a longer string would be cut).
   if (H5Lexists(file, "/history", H5P_DEFAULT) > 0) TF_CHECK_HDF5(H5Ldelete(file, "/history", H5P_DEFAULT));
+  if (H5Aexists(file, "options") > 0) TF_CHECK_HDF5(H5Adelete(file, "options"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -117,7 +121,11 @@ PetscErrorCode ResultWriter::Flush()
 
   PetscFunctionBeginUser;
   PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
-  TF_CHECK_HDF5(H5Fflush(file, H5F_SCOPE_GLOBAL));
+  // Collective, and a failure is every rank's (one rank returning alone would leave the others waiting).
+  int mine = H5Fflush(file, H5F_SCOPE_GLOBAL) < 0, any = 0;
+  PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, mesh_->comm));
+  PetscCheck(!any, mesh_->comm, PETSC_ERR_FILE_WRITE, "-output %s: flushing %s.partial failed (HDF5; a full disk?)",
+             path_.c_str(), path_.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

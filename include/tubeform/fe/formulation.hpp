@@ -33,6 +33,10 @@ public:
   void InternalForce(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss],
                      ElemVec &f) const;
 
+  // qm6: the condensation of every cell (empty for other elements). State a
+  // checkpoint keeps: the internal force of a committed state uses the last tangent's.
+  std::vector<Condensation> &condensations() { return condensation_; }
+
 private:
   Formulation kind_ = Formulation::BBar;
   std::vector<Condensation> condensation_; // qm6: per cell, from the last Stiffness

@@ -26,7 +26,8 @@ public:
   // Collective. Writing goes to `path`.tmp, renamed onto `path` by Close, so a
   // failed write leaves an earlier checkpoint at `path` as it was. `option`
   // names the file in errors (-checkpoint, -restart).
-  PetscErrorCode Open(const Mesh &mesh, const std::string &path, bool write, const char *option);
+  // Writing needs `bytes` free on the file system (else an error before any write).
+  PetscErrorCode Open(const Mesh &mesh, const std::string &path, bool write, const char *option, double bytes = 0);
   // Collective: closes the file (writing: renames it into place).
   PetscErrorCode Close();
   bool reading() const { return !write_; }
@@ -71,6 +72,10 @@ private:
   // Entities (nodes or cells) with input ids `orig` of nglobal, `comps` numbers each.
   PetscErrorCode Entities(const char *name, std::vector<double> &v, int comps, const std::vector<PetscInt> &orig,
                           PetscInt nglobal, const std::vector<char> *owned, bool owned_only);
+  // Collective: the vector g (input numbering) as the 1-D dataset `path`.
+  PetscErrorCode WriteVector(Vec g, const std::string &path) const;
+  // Collective: a write that failed on any rank fails on every rank (PETSC_ERR_FILE_WRITE).
+  PetscErrorCode Agree(bool ok, const std::string &path) const;
   std::string Path(const char *name) const { return group_ == "/" ? "/" + std::string(name) : group_ + "/" + name; }
 
   template <class T>
