@@ -25,8 +25,10 @@ of the springback stage, the energy accounts and the history.
   - A failed checkpoint write (its scratch file cannot be created) stops the
     run with one line naming -checkpoint, and leaves the previous checkpoint
     byte for byte as it was.
-  - Bad restarts: a missing file, a checkpoint of another mesh, and a
-    checkpoint whose results file is gone give one line each, non-zero exit.
+  - Bad restarts: a missing file, a checkpoint of another mesh or another
+    stroke, and a checkpoint whose results file is gone give one line each,
+    non-zero exit. Run-control options may change (a restart above adds
+    -history_csv; the 1 -> 2 ranks one a new -output).
 """
 import filecmp
 import os
@@ -225,6 +227,8 @@ for opts, expect, what in (
     (["-restart", out("no_such.h5"), "-output", out("x.h5")], "no such checkpoint", "a missing checkpoint"),
     (["-restart", out("ck1.h5"), "-output", out("x.h5"), "-mesh_ntheta", 24], "mesh", "another mesh"),
     (["-restart", out("ck1.h5"), "-output", out("gone.h5")], "not in -output", "results gone"),
+    (["-restart", out("ck1.h5"), "-output", out("x.h5"), "-stroke", 3], "-stroke is '3' here, '4.2'",
+     "another stroke"),
 ):
     p = run(tf, mpirun, 1, CASE + opts, check=False)
     lines = error_lines(p)

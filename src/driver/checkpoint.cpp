@@ -7,8 +7,12 @@
 // the history and the energy accounts, the position on the load path; the
 // forces at the end of the last increment are recomputed from that state by
 // the same calls that computed them, so they come back bit for bit.
+#include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include "tubeform/driver/problem.hpp"
@@ -22,6 +26,51 @@ constexpr double kCheckpointVersion = 1;
 // 64 per node, per cell and per history row (the state holds about 30, 40 and
 // 46), and 1 MB for HDF5's own.
 constexpr double kBytesPerItem = 8 * 64, kBytesOverhead = 1e6;
+// Options a restart may change: where results and checkpoints go, how the
+// run is watched and stopped, and PETSc's solver and diagnostics (prefixes).
+// Every other option (geometry, mesh, material, path, tools, the r_min
+// limits) shapes the state the checkpoint holds and must be the same.
+const char *const kRunControl[] = {"restart",
+                                   "checkpoint",
+                                   "checkpoint_every",
+                                   "output",
+                                   "output_every",
+                                   "output_stroke",
+                                   "history_csv",
+                                   "time_limit",
+                                   "progress",
+                                   "monitor",
+                                   "allow_unused",
+                                   "max_energy_error",
+                                   "rmin_max_increments",
+                                   "rmin_stall_increments",
+                                   "friction_max_unsettled"};
+const char *const kSolverPrefixes[] = {"ksp_", "pc_",  "mat_",     "redundant_", "log",    "malloc", "options_",
+                                       "info", "help", "on_error", "fp_trap",    "check_", "memory", "objects_"};
+
+bool RunControl(const std::string &name)
+{
+  for (const char *c : kRunControl)
+    if (name == c) return true;
+  for (const char *p : kSolverPrefixes)
+    if (name.rfind(p, 0) == 0) return true;
+  return false;
+}
+
+// The options of PetscOptionsGetAll ("-a 1 -b -c x") by name, without the dash.
+std::map<std::string, std::string> ParseOptions(const std::string &all)
+{
+  std::map<std::string, std::string> m;
+  std::istringstream in(all);
+  std::string word, name;
+  while (in >> word) {
+    if (word.size() > 1 && word[0] == '-' && !std::isdigit((unsigned char)word[1]) && word[1] != '.')
+      m[name = word.substr(1)] = "";
+    else if (!name.empty())
+      m[name] += (m[name].empty() ? "" : " ") + word;
+  }
+  return m;
+}
 } // namespace
 
 PetscErrorCode Problem::Persist(Archive &ar, CheckpointHeader &head)
@@ -35,6 +84,7 @@ PetscErrorCode Problem::Persist(Archive &ar, CheckpointHeader &head)
                          {"output_bin", &head.output_bin}})
     PetscCall(ar.Value(name, *v));
   PetscCall(ar.Values("times", head.times));
+  PetscCall(ar.Text("options", head.options));
   if (ar.reading()) PetscCall(CheckHeader(head));
   PetscCall(ar.Value("lambda", at_.lambda));
   PetscCall(ar.Value("increments", at_.inc));
@@ -74,11 +124,16 @@ PetscErrorCode Problem::Persist(Archive &ar, CheckpointHeader &head)
 PetscErrorCode Problem::WriteCheckpoint(ResultWriter &writer, const OutputSchedule &output)
 {
   Archive ar;
-  CheckpointHeader head{
-    kCheckpointVersion, (double)size_, (double)mesh_.num_global_cells, (double)mesh_.num_global_nodes,
-    output.written(),   writer.times()};
+  CheckpointHeader head;
+  head.version = kCheckpointVersion, head.ranks = size_, head.output_bin = output.written(),
+  head.times = writer.times();
+  head.cells = mesh_.num_global_cells, head.nodes = mesh_.num_global_nodes;
+  char *all;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetAll(nullptr, &all));
+  head.options = all;
+  PetscCall(PetscFree(all));
   PetscCall(writer.Flush()); // the field steps the checkpoint counts on are on disk
   const double items = mesh_.num_global_nodes + mesh_.num_global_cells + (double)history_.rows().size();
   PetscCall(ar.Open(mesh_, opt_.checkpoint, true, "-checkpoint", kBytesPerItem * items + kBytesOverhead));
@@ -123,6 +178,26 @@ PetscErrorCode Problem::CheckHeader(const CheckpointHeader &head) const
              "options of the run that wrote it)",
              opt_.restart.c_str(), (int)head.cells, (int)head.nodes, (int)mesh_.num_global_cells,
              (int)mesh_.num_global_nodes);
+  {
+    // The options that shape the state must be the run's that wrote it.
+    char *all;
+    PetscCall(PetscOptionsGetAll(nullptr, &all));
+    const auto now = ParseOptions(all), then = ParseOptions(head.options);
+    PetscCall(PetscFree(all));
+    std::set<std::string> names;
+    for (const auto *m : {&now, &then})
+      for (const auto &kv : *m) names.insert(kv.first);
+    for (const auto &n : names) {
+      if (RunControl(n)) continue;
+      const auto a = now.find(n), b = then.find(n);
+      const std::string here = a == now.end() ? "not given" : "'" + a->second + "'",
+                        there = b == then.end() ? "not given" : "'" + b->second + "'";
+      PetscCheck(here == there, comm_, PETSC_ERR_USER_INPUT,
+                 "-restart %s: -%s is %s here, %s in the run that wrote the checkpoint (restart with its options; "
+                 "only where results go and how the run is watched and stopped may change)",
+                 opt_.restart.c_str(), n.c_str(), here.c_str(), there.c_str());
+    }
+  }
   const double ranks = head.ranks;
   // The field series stores nodes in the order of the ranks' partition: it
   // continues only on as many ranks as wrote it. On others a new -output

@@ -184,6 +184,25 @@ PetscErrorCode Archive::Values(const char *name, std::vector<double> &v)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode Archive::Text(const char *name, std::string &text)
+{
+  PetscFunctionBeginUser;
+  if (write_) {
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer_, group_.c_str(), name, PETSC_STRING, text.c_str()));
+  } else {
+    PetscBool has;
+    char *value = nullptr;
+    PetscCall(PetscViewerHDF5HasAttribute(viewer_, group_.c_str(), name, &has));
+    PetscCheck(has, mesh_->comm, PETSC_ERR_USER_INPUT,
+               "-restart %s: the checkpoint has no %s (written by another version of tubeform?)", path_.c_str(),
+               Path(name).c_str());
+    PetscCall(PetscViewerHDF5ReadAttribute(viewer_, group_.c_str(), name, PETSC_STRING, nullptr, &value));
+    text = value;
+    PetscCall(PetscFree(value));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Archive::Value(const char *name, double &v)
 {
   std::vector<double> one = {v};

@@ -96,6 +96,7 @@ private:
     double version = 0, ranks = 0, cells = 0, nodes = 0; // layout; the ranks and mesh that wrote it
     double output_bin = 0;                               // the output schedule's last bin
     std::vector<double> times;                           // the times of the field steps written
+    std::string options;                                 // PetscOptionsGetAll of the run that wrote it
   };
   // A checkpoint's whole content, written or read in one order: the header
   // (checked when read), the cursor, counters, energies, history, then each part.

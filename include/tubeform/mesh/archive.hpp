@@ -40,6 +40,8 @@ public:
   PetscErrorCode Value(const char *name, double &v);
   PetscErrorCode Value(const char *name, PetscInt &v);
   PetscErrorCode Value(const char *name, bool &v);
+  // A text every rank holds alike (an attribute of the current group).
+  PetscErrorCode Text(const char *name, std::string &text);
   // Data of the local nodes (ghosts included; `comps` per node). Written from
   // the owned nodes; read into every local node, or with `owned_only` into the
   // owned ones (ghosts 0: per-rank contributions that sum over the ranks).
