@@ -206,7 +206,7 @@ PetscErrorCode Problem::Run()
     PetscFunctionReturn(PETSC_SUCCESS);
   };
   const double t_start = MPI_Wtime();
-  Progress progress(comm_, opt_.progress, end, path_.breakpoints.empty() ? end : path_.breakpoints.front());
+  Progress progress(comm_, opt_.progress, end, path_.breakpoints.empty() ? end : path_.breakpoints.front(), at_.lambda);
   PetscCall(PetscLogStagePush(Log::load_stage));
   while (lambda < end - kLambdaTol) {
     // 1. The stall watch ends a load path that no longer advances.

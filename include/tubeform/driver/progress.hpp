@@ -14,9 +14,10 @@ namespace tf {
 class Progress {
 public:
   // `end`: lambda at the end of the load path; `loading_end`: where the
-  // loading ends (1; the path may go on with the springback).
-  Progress(MPI_Comm comm, double interval, double end, double loading_end)
-      : comm_(comm), interval_(interval), end_(end), loading_end_(loading_end), start_(MPI_Wtime()),
+  // loading ends (1; the path may go on with the springback); `from`: where
+  // this run starts (a restart's lambda), the origin of its rate.
+  Progress(MPI_Comm comm, double interval, double end, double loading_end, double from = 0)
+      : comm_(comm), interval_(interval), end_(end), loading_end_(loading_end), from_(from), start_(MPI_Wtime()),
         next_(start_ + interval)
   {}
 
@@ -33,7 +34,7 @@ public:
     if (rank != 0 || now < next_) PetscFunctionReturn(PETSC_SUCCESS);
     next_ = now + interval_;
     const double stage0 = loading ? 0.0 : loading_end_, stage1 = loading ? loading_end_ : end_;
-    const double t0 = loading ? start_ : stage_start_, l0 = loading ? 0.0 : stage_lambda_;
+    const double t0 = loading ? start_ : stage_start_, l0 = loading ? from_ : stage_lambda_;
     const double pct = 100.0 * (lambda - stage0) / (stage1 - stage0);
     const double left = lambda > l0 ? (now - t0) * (stage1 - lambda) / (lambda - l0) : NAN;
     PetscCall(PetscPrintf(
@@ -44,7 +45,7 @@ public:
 
 private:
   MPI_Comm comm_;
-  double interval_, end_, loading_end_, start_, next_;
+  double interval_, end_, loading_end_, from_, start_, next_;
   double stage_start_ = -1, stage_lambda_ = 0; // when and where the unloading began
 };
 
