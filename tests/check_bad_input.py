@@ -43,6 +43,10 @@ cases = [
     (["-rmin_yield_tol", "0"], "-rmin_yield_tol"),
     (["-rmin_dphi_rise", "1.5"], "-rmin_dphi_rise"),
     (["-output_stroke", "-0.1"], "-output_stroke"),
+    (["-checkpoint_every", "-1", "-checkpoint", out("ck_bad.h5")], "-checkpoint_every"),
+    (["-checkpoint_every", "5"], "needs -checkpoint"),
+    (["-checkpoint", out("keep.csv/ck.h5")], "-checkpoint"),  # parent is a file
+    (["-friction_max_unsettled", "0"], "-friction_max_unsettled"),
     (["-output_stroke", "10"], "-output_stroke"),
     (["-unload_increments", "-1"], "-unload_increments"),
     (["-time_limit", "-1"], "-time_limit"),

@@ -190,12 +190,15 @@ PetscErrorCode Problem::Run()
   const auto where = [&] {
     return Format("stroke %g, lambda %.6g, after %d increments", history_.rows().back().stroke, lambda, (int)inc);
   };
-  // A checkpoint that cannot be written (a full disk, a directory gone) ends
-  // the run like a failed increment: results written, the earlier checkpoint kept.
-  const auto checkpoint = [&]() -> PetscErrorCode {
+  // A checkpoint that cannot be written (its scratch file, too little room, a
+  // failed HDF5 write: found on every rank) ends the run like a failed
+  // increment: results written, the earlier checkpoint kept. `written` says
+  // whether it was.
+  const auto checkpoint = [&](bool &written) -> PetscErrorCode {
     PetscFunctionBeginUser;
     const PetscErrorCode failed = WriteCheckpoint(writer, output);
-    if (failed == PETSC_ERR_FILE_WRITE) { // found on every rank (other errors may strike one)
+    written = failed == 0;
+    if (failed == PETSC_ERR_FILE_WRITE) {
       const char *specific = nullptr;
       PetscCall(PetscErrorMessage(failed, nullptr, (char **)&specific));
       stop_code = failed;
@@ -242,9 +245,9 @@ PetscErrorCode Problem::Run()
         stop = Format("-time_limit %g s reached (%s)", opt_.time_limit, where().c_str());
       }
       if (!stop.empty() && !opt_.checkpoint.empty()) {
-        const std::string reason = stop;
-        PetscCall(checkpoint()); // a failure replaces the stop's message with its own
-        if (stop == reason)
+        bool written;
+        PetscCall(checkpoint(written)); // a failure replaces the stop's message with its own
+        if (written)
           PetscCall(PetscPrintf(comm_, "tubeform: checkpoint after increment %d in %s; continue with -restart %s\n",
                                 (int)inc, opt_.checkpoint.c_str(), opt_.checkpoint.c_str()));
       }
@@ -335,8 +338,9 @@ PetscErrorCode Problem::Run()
     wrote_last = output.Due(inc, lambda, on_break, lambda >= end - kLambdaTol);
     if (wrote_last) PetscCall(WriteFields(writer, at_.step++, lambda));
     if (opt_.checkpoint_every > 0 && inc % opt_.checkpoint_every == 0) {
-      PetscCall(checkpoint());
-      if (!stop.empty()) break;
+      bool written;
+      PetscCall(checkpoint(written));
+      if (!written) break;
     }
   }
   if (!wrote_last) PetscCall(WriteFields(writer, at_.step++, lambda)); // (a loop that ends normally wrote it)
