@@ -24,7 +24,7 @@ incs = 20
 print(f"ranks {np_}, {incs} increments, factorization {solver}; times in ms per increment (max over ranks)")
 print(f"{'mesh':>12} {'dofs':>8} {'assemble':>9} {'bc':>7} {'solve':>8} {'  factor':>8} {'commit':>7} {'total':>8} {'sym.fact':>8}")
 for nt, nth in ((8, 24), (4, 48), (8, 192), (16, 384), (32, 768)):
-    cmd = ["mpirun", "-n", np_, f"{root}/build/tubeform", "-options_file", "options/pressure.opts", "-mesh_nt", str(nt),
+    cmd = ["mpirun", "-q", "-n", np_, f"{root}/build/tubeform", "-options_file", "options/pressure.opts", "-mesh_nt", str(nt),
            "-mesh_ntheta", str(nth), "-increments", str(incs), "-output_every", str(incs), "-output", "/tmp/tubeform_bench.h5",
            "-history_csv", "/tmp/tubeform_bench.csv", "-log_view", "-redundant_pc_factor_mat_solver_type", solver]
     out = subprocess.run(cmd, capture_output=True, text=True, cwd=root, env=env, check=True).stdout

@@ -56,7 +56,7 @@ def run_case(name, extra, outdir, np_=2, exe=tfruns.EXE, mpirun="mpirun"):
     for f in (out, out + ".partial"):
         if os.path.exists(f):
             os.remove(f)
-    cmd = [mpirun, "-n", str(np_), exe, "-options_file", "options/squaring.opts", "-options_file",
+    cmd = [mpirun, "-q", "-n", str(np_), exe, "-options_file", "options/squaring.opts", "-options_file",
            "options/preset-default.opts", "-output", out, "-time_limit", str(TIME_LIMIT)] + extra
     t0 = time.time()
     try:

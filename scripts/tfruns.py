@@ -32,7 +32,7 @@ class RunFailed(RuntimeError):
 def run(case, extra, out, np_=1, exe=EXE, log_view=False):
     """One run of `case` (an options file) with `extra` options, history and final
     fields to `out`; returns (wall seconds, increments, factorizations, stdout)."""
-    cmd = ["mpirun", "-n", str(np_), exe, "-options_file", case, "-output", out] + extra
+    cmd = ["mpirun", "-q", "-n", str(np_), exe, "-options_file", case, "-output", out] + extra
     if log_view:
         cmd += ["-log_view", ":" + out[:-3] + "_log.txt"]
     t0 = time.time()

@@ -6,10 +6,14 @@
 //   build/tubeform -help
 #include <petscsys.h>
 
+#include <cstdlib>
+#include <string>
+
 #include "tubeform/core/core.hpp"
 #include "tubeform/core/signals.hpp"
 #include "tubeform/driver/problem.hpp"
 #include "tubeform/io/options.hpp"
+#include "tubeform/io/options_files.hpp"
 #include "tubeform/scenes/registry.hpp"
 
 static const char help[] =
@@ -35,6 +39,15 @@ static PetscErrorCode Run(bool &collective)
 int main(int argc, char **argv)
 {
   PetscMPIInt rank;
+  // A missing options file, before PETSc reads them (it would stop with a
+  // 30-line error): every process finds the same, the first one says it.
+  const std::string bad_file = tf::CheckOptionsFiles(argc, argv);
+  if (!bad_file.empty()) {
+    const char *launcher_rank = std::getenv("OMPI_COMM_WORLD_RANK"); // set by mpirun before MPI starts
+    if (!launcher_rank) launcher_rank = std::getenv("PMI_RANK");
+    if (!launcher_rank || std::atoi(launcher_rank) == 0) fprintf(stderr, "tubeform: error: %s\n", bad_file.c_str());
+    return 1;
+  }
   PetscErrorCode ierr = PetscInitialize(&argc, &argv, nullptr, help);
   if (ierr) return 1;
   // Errors come back as codes; main prints one line and every rank exits.

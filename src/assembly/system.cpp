@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "tubeform/assembly/linear_solver.hpp"
 #include "tubeform/assembly/solve_failure.hpp"
 #include "tubeform/core/core.hpp"
 #include "tubeform/core/log.hpp"
@@ -25,8 +26,6 @@ System::~System()
 
 PetscErrorCode System::Setup(const Mesh &mesh)
 {
-  PC pc;
-
   PetscFunctionBeginUser;
   mesh_ = &mesh;
   PetscCall(DMCreateMatrix(mesh.dm, &k_));
@@ -45,25 +44,11 @@ PetscErrorCode System::Setup(const Mesh &mesh)
   PetscCall(DMCreateGlobalVector(mesh.dm, &reactions_global_));
   PetscCall(PetscObjectSetName((PetscObject)sol_, "displacement"));
 
-  // Direct solve by default; options (e.g. options/solver.opts) may override.
-  // Every rank factors the whole (gathered) matrix with sequential MUMPS
-  // (PCREDUNDANT): runs are then reproducible bit for bit at a given rank
-  // count. MUMPS's distributed factorization is not: its dynamic scheduling
-  // changes the order of floating-point operations from run to run (two
-  // 2-rank runs of one commit received bitwise equal matrices and right-hand
-  // sides and returned different solutions; docs/performance.md, "Solver").
-  KSP inner;
-  PC inner_pc;
+  // MUMPS LU, redundant or distributed by the size of the system; options may override.
+  PetscInt ndofs;
+  PetscCall(VecGetSize(rhs_, &ndofs));
   PetscCall(KSPCreate(mesh.comm, &ksp_));
-  PetscCall(KSPSetType(ksp_, KSPPREONLY));
-  PetscCall(KSPGetPC(ksp_, &pc));
-  PetscCall(PCSetType(pc, PCREDUNDANT));
-  PetscCall(PCRedundantGetKSP(pc, &inner));
-  PetscCall(KSPSetType(inner, KSPPREONLY));
-  PetscCall(KSPGetPC(inner, &inner_pc));
-  PetscCall(PCSetType(inner_pc, PCLU));
-  PetscCall(PCFactorSetMatSolverType(inner_pc, MATSOLVERMUMPS));
-  PetscCall(KSPSetFromOptions(ksp_));
+  PetscCall(SetupLinearSolver(ksp_, ndofs, solver_));
 
   has_frame_.assign(mesh.num_nodes, 0);
   cos_.assign(mesh.num_nodes, 1.0);

@@ -95,6 +95,8 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
   PetscCall(mesh_.Create(comm, serial, scene_->BoundarySets()));
   PetscCall(PetscLogEventEnd(Log::mesh, 0, 0, 0, 0));
   PetscCall(system_.Setup(mesh_));
+  if (size_ > 1 || opt_.monitor)
+    PetscCall(PetscPrintf(comm_, "tubeform: linear solver: %s\n", system_.solver().c_str()));
   PetscCall(body_.Setup(mesh_, MakeBodyParams(opt_)));
   if (opt_.dynamics != Dynamics::Quasistatic) {
     inertia_ = std::make_unique<Inertia>();

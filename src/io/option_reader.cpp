@@ -9,7 +9,13 @@ namespace tf {
 
 namespace {
 
-// Edits (insertions, deletions, substitutions) between two words.
+std::string FirstWord(const std::string &name) { return name.substr(0, name.find('_')); }
+
+// A misspelling is at most this many edits from the option meant (-tube_r, -frction_mu).
+constexpr size_t kTypoEdits = 2;
+
+} // namespace
+
 size_t EditDistance(const std::string &a, const std::string &b)
 {
   std::vector<size_t> row(b.size() + 1);
@@ -25,13 +31,6 @@ size_t EditDistance(const std::string &a, const std::string &b)
   }
   return row[b.size()];
 }
-
-std::string FirstWord(const std::string &name) { return name.substr(0, name.find('_')); }
-
-// A misspelling is at most this many edits from the option meant (-tube_r, -frction_mu).
-constexpr size_t kTypoEdits = 2;
-
-} // namespace
 
 PetscErrorCode OptionReader::CheckNumber(MPI_Comm comm, const char *name, bool integer) const
 {

@@ -56,6 +56,14 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
     PetscCall(PetscOptionsEList("-scene", "Scene to run", "tubeform", names.data(), (PetscInt)names.size(),
                                 names[choice], &choice, &set));
     opt.scene = scenes[choice];
+    if (!set && !opt.help) {
+      std::string list;
+      for (const auto &n : scenes) list += (list.empty() ? "" : ", ") + n;
+      SETERRQ(comm, PETSC_ERR_USER_INPUT,
+              "no scene given: run a scene file (-options_file options/squaring.opts, ...) or name one with -scene "
+              "(%s)",
+              list.c_str());
+    }
   }
   PetscCall(read.Real(PetscOptionsObject, "-tube_ro", "Outer radius of the tube (mm)", opt.tube_ro));
   PetscCall(read.Real(PetscOptionsObject, "-tube_t", "Wall thickness (mm)", opt.tube_t));

@@ -76,6 +76,7 @@ public:
   PetscErrorCode Initialize(Model &m, ContactSpec &tools) override
   {
     PetscFunctionBeginUser;
+    PetscCall(CheckReach(m.comm));
     if (squaring_)
       tools.tool = BuildVDie(opt_.tube_ro, opt_.die_r_apex, opt_.die_u_close, opt_.die_r_edge);
     else
@@ -89,6 +90,34 @@ public:
                             "tubeform: stroke %.4f mm gives an outer corner radius of %.4g mm (perimeter-conserving "
                             "rounded square)\n",
                             stroke_, opt_.stroke_corner_radius));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  // A stroke the tools cannot take is refused before any work: past the die's
+  // parting face, past the point where the cavity between the two V-dies is
+  // smaller than the tube's cross-section (plane strain plasticity keeps the
+  // area), or past the point where the plate brings the ring's walls together
+  // (no self-contact is modelled).
+  PetscErrorCode CheckReach(MPI_Comm comm) const
+  {
+    PetscFunctionBeginUser;
+    const double ro = opt_.tube_ro, ri = ro - opt_.tube_t;
+    if (squaring_) {
+      // The cavity is a square of half-diagonal Ro sqrt(2) - U: area 2 (Ro sqrt(2) - U)^2.
+      const double area = M_PI * (ro * ro - ri * ri), closed = ro * std::sqrt(2.0) - std::sqrt(0.5 * area);
+      PetscCheck(stroke_ < closed, comm, PETSC_ERR_USER_INPUT,
+                 "-stroke %g: the dies would close on the tube at U = %.4g mm (the cavity between them is then "
+                 "smaller than the tube's cross-section of %.4g mm^2); choose a smaller stroke",
+                 stroke_, closed, area);
+      PetscCheck(opt_.die_u_close <= 0 || stroke_ <= opt_.die_u_close, comm, PETSC_ERR_USER_INPUT,
+                 "-stroke %g: the dies' parting faces meet at -die_u_close %g mm; the stroke cannot pass it", stroke_,
+                 opt_.die_u_close);
+    } else {
+      PetscCheck(stroke_ < ro - opt_.tube_t, comm, PETSC_ERR_USER_INPUT,
+                 "-stroke %g: the plate would press the ring's walls together at U = %.4g mm (Ro - t; the solver "
+                 "models no contact of the tube with itself); choose a smaller stroke",
+                 stroke_, ro - opt_.tube_t);
+    }
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 

@@ -18,6 +18,7 @@
 #include <petscksp.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "tubeform/fe/quad.hpp"
@@ -102,6 +103,8 @@ public:
   PetscErrorCode FreeNorm(Vec f_local, double &norm);
 
   PetscInt factorizations() const { return nsolves_; }
+  // Which factorization the solver uses and why (one line).
+  const std::string &solver() const { return solver_; }
   // Collective: writes or reads what carries between increments: the node
   // frames (kept by nodes that left a tool) and the factorization count.
   PetscErrorCode Persist(Archive &ar)
@@ -138,6 +141,7 @@ private:
   Vec reactions_local_ = nullptr, reactions_global_ = nullptr;
   std::vector<PetscInt> last_rows_;
   PetscInt nsolves_ = 0;
+  std::string solver_;
 
   void Rotate(PetscInt node, double &a, double &b, bool to_local) const;
 };

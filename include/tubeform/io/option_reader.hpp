@@ -12,6 +12,9 @@
 
 namespace tf {
 
+// Edits (insertions, deletions, substitutions) between two words.
+size_t EditDistance(const std::string &a, const std::string &b);
+
 class OptionReader {
 public:
   PetscErrorCode Real(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, double &value);

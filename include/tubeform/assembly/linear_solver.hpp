@@ -1,0 +1,32 @@
+// The direct solver of every increment: MUMPS LU, as the design says, set up
+// for the size of the system (docs/performance.md, "Solver"):
+//   - up to kDistributedDofs, or on one rank: every rank factors the whole
+//     matrix with sequential MUMPS (PCREDUNDANT). Runs are reproducible bit
+//     for bit at a given rank count, and on the paper's meshes (a few thousand
+//     dofs) a factorization spread over ranks is slower than one on a rank.
+//   - above it on several ranks: MUMPS's distributed factorization, which
+//     spreads the work and the memory; its dynamic scheduling changes the
+//     order of floating-point operations from run to run, so results then
+//     differ in their last digits between runs.
+// MUMPS's own defaults are tuned for large systems; on these small ones its
+// per-call overhead dominates, and two settings cut it (kMumpsDefaults). Any
+// solver option given by the user (-pc_type, -redundant_*, -mat_mumps_*)
+// overrides what is chosen here.
+#pragma once
+
+#include <petscksp.h>
+
+#include <string>
+
+namespace tf {
+
+// Above this many dofs, on more than one rank, the factorization is
+// distributed (measured crossover on 2 ranks: docs/performance.md, "Solver").
+constexpr PetscInt kDistributedDofs = 20000;
+
+// Collective: KSP preonly with MUMPS LU for a system of `ndofs` global dofs on
+// the KSP's communicator, then KSPSetFromOptions. `what` receives one line
+// saying which factorization was chosen and why.
+PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what);
+
+} // namespace tf

@@ -1,0 +1,123 @@
+#include "tubeform/assembly/linear_solver.hpp"
+
+#include <cctype>
+
+#include "tubeform/core/core.hpp"
+
+namespace tf {
+
+namespace {
+
+// MUMPS settings for the redundant (small-system) factorization, each taken
+// only where the user gave no value (docs/performance.md, "MUMPS on small
+// systems"; instruction counts of a whole run with callgrind):
+//   ICNTL(8) = 0: no scaling. The stiffness of one material on one mesh is
+//     well scaled, and MUMPS computed its scaling anew at every factorization
+//     (8 % of a run's instructions).
+//   ICNTL(7) = 0: AMD ordering in place of MUMPS's automatic choice, which
+//     gave more fill on these meshes (5 % of a run's instructions).
+struct MumpsDefault {
+  const char *option, *value;
+};
+constexpr MumpsDefault kMumpsDefaults[] = {{"-redundant_mat_mumps_icntl_8", "0"},
+                                           {"-redundant_mat_mumps_icntl_7", "0"}};
+
+// The factorization the options finally chose, in words.
+PetscErrorCode Describe(KSP ksp, std::string &solver, bool &redundant)
+{
+  PC pc;
+  PetscBool is_redundant;
+  PetscFunctionBeginUser;
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCREDUNDANT, &is_redundant));
+  redundant = is_redundant;
+  if (is_redundant) {
+    KSP inner;
+    PetscCall(PCRedundantGetKSP(pc, &inner));
+    PetscCall(KSPGetPC(inner, &pc));
+  }
+  PCType type;
+  MatSolverType package = nullptr;
+  PetscCall(PCGetType(pc, &type));
+  PetscBool factor;
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &factor, PCLU, PCCHOLESKY, ""));
+  if (factor) PetscCall(PCFactorGetMatSolverType(pc, &package));
+  // "MUMPS LU", "PETSC LU", or the PC type of a user's choice.
+  std::string name = package ? package : "";
+  for (char &ch : name) ch = (char)std::toupper((unsigned char)ch);
+  std::string kind = type ? type : "?";
+  if (factor)
+    for (char &ch : kind) ch = (char)std::toupper((unsigned char)ch);
+  solver = name.empty() ? kind : name + " " + kind;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace
+
+PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what)
+{
+  MPI_Comm comm;
+  PetscMPIInt size;
+  PC pc;
+  PetscBool user_pc;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetComm((PetscObject)ksp, &comm));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  const bool distributed = size > 1 && ndofs > kDistributedDofs;
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-pc_type", &user_pc));
+  if (distributed) {
+    PetscCall(PCSetType(pc, PCLU));
+    PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  } else {
+    KSP inner;
+    PC inner_pc;
+    PetscCall(PCSetType(pc, PCREDUNDANT));
+    PetscCall(PCRedundantGetKSP(pc, &inner));
+    PetscCall(KSPSetType(inner, KSPPREONLY));
+    PetscCall(KSPGetPC(inner, &inner_pc));
+    PetscCall(PCSetType(inner_pc, PCLU));
+    PetscCall(PCFactorSetMatSolverType(inner_pc, MATSOLVERMUMPS));
+    if (!user_pc)
+      for (const auto &d : kMumpsDefaults) {
+        PetscBool set;
+        PetscCall(PetscOptionsHasName(nullptr, nullptr, d.option, &set));
+        if (!set) PetscCall(PetscOptionsSetValue(nullptr, d.option, d.value));
+      }
+  }
+  PetscCall(KSPSetFromOptions(ksp));
+  {
+    // The inner solver of a redundant PC reads its options (-redundant_*) only
+    // at set-up; read them now so that the line below says what will run.
+    PetscBool still_redundant;
+    PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCREDUNDANT, &still_redundant));
+    if (still_redundant) {
+      KSP inner;
+      PetscCall(PCRedundantGetKSP(pc, &inner));
+      PetscCall(KSPSetFromOptions(inner));
+    }
+  }
+
+  std::string solver;
+  bool redundant = false;
+  PetscCall(Describe(ksp, solver, redundant));
+  char line[256];
+  if (size == 1)
+    PetscCall(PetscSNPrintf(line, sizeof(line), "%s on 1 rank (%d dofs)", solver.c_str(), (int)ndofs));
+  else if (redundant)
+    PetscCall(
+      PetscSNPrintf(line, sizeof(line),
+                    "%s on each of %d ranks, each factoring the whole matrix (%d dofs; bit-for-bit reproducible "
+                    "runs; distributed above %d dofs)",
+                    solver.c_str(), size, (int)ndofs, (int)kDistributedDofs));
+  else
+    PetscCall(PetscSNPrintf(line, sizeof(line),
+                            "%s distributed over %d ranks (%d dofs; its last digits may differ from run to run)",
+                            solver.c_str(), size, (int)ndofs));
+  what = line;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
