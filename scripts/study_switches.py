@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""What -kinematics, -residual_correction and the increment count buy, on the
+"""What -kinematics, -equilibrium_tol and the increment count buy, on the
 plastic thick cylinder (options/pressure_plastic.opts) and the column
 (options/column.opts).
 
@@ -28,11 +28,11 @@ def run(opts, extra):
 
 
 print(f"{'run':<62} {'residual':>9} {'energy':>8}  result")
-for extra in ([], ["-residual_correction"], ["-kinematics", "midpoint"], ["-kinematics", "midpoint", "-residual_correction"]):
+for extra in ([], ["-equilibrium_tol", "0.005"], ["-kinematics", "midpoint"], ["-kinematics", "midpoint", "-equilibrium_tol", "0.005"]):
     f = run("options/pressure_plastic.opts", extra)
     e, H = hill_errors(f), read(f)["history"]
     print(f"{'cylinder ' + ' '.join(extra):<62} {H['residual'][-1]:>9.2e} {e['energy']:>8.1e}  p_max {e['p_max']:.2f} vs Hill {e['p_limit']:.2f} ({e['limit']:+.2%})")
 pcr = math.pi**2 * 75000 / (1 - 0.34**2) / 12 / 25**2
-for extra in (["-increments", "100"], ["-increments", "400"], ["-increments", "800"], ["-increments", "100", "-residual_correction"], ["-increments", "100", "-kinematics", "midpoint"]):
+for extra in (["-increments", "100"], ["-increments", "400"], ["-increments", "800"], ["-increments", "100", "-equilibrium_tol", "0.005"], ["-increments", "100", "-kinematics", "midpoint"]):
     H = read(run("options/column.opts", extra))["history"]
     print(f"{'column ' + ' '.join(extra):<62} {H['residual'][-1]:>9.2e} {abs(H['energy_error'][1:]).max():>8.1e}  load {H['load'][-1]:.2f} vs Euler {pcr:.2f} ({H['load'][-1] / pcr - 1:+.2%})")

@@ -6,7 +6,7 @@ contact with friction, the paper's springback; about 3 s on 2 ranks), so the
 checkpoint carries every part of the state: point states and coordinates,
 the motion, contact nodes, slips, frames, pending forces, the reversed loads
 of the springback stage, the energy accounts and the history.
-  - The pressure scene with qm6 and -residual_correction, whose energy input
+  - The pressure scene with qm6 and -equilibrium_tol 0.005, whose energy input
     and out-of-balance force read the internal force of qm6's condensed
     modes (a restart without the condensation moved w_ext by 5e-7).
   - Same ranks: a restart repeats the same arithmetic on the same state, so
@@ -110,10 +110,10 @@ for every, stage in ((loading * 2 // 3, "loading"), (loading + (rows - loading) 
             f"np=2 restart in the {stage} stage: history within {w:.1e} ({col}), fields within {du:.1e} (1e-12)")
     k.check("restarting from" in p.stdout, "the restart says where it continues from")
 
-# The pressure scene with qm6 and -residual_correction: the energy input from
+# The pressure scene with qm6 and -equilibrium_tol 0.005: the energy input from
 # the supports and the out-of-balance force both read the internal force,
 # which for qm6 depends on the condensation of each cell's last tangent.
-QM6 = ["-options_file", f"{src}/options/pressure_plastic.opts", "-element", "qm6", "-residual_correction",
+QM6 = ["-options_file", f"{src}/options/pressure_plastic.opts", "-element", "qm6", "-equilibrium_tol", "0.005",
        "-progress", "0"]
 fresh("qm6_full.h5", "qm6.h5", "ck_qm6.h5")
 run(tf, mpirun, 2, QM6 + ["-output", out("qm6_full.h5")])
@@ -123,7 +123,7 @@ run(tf, mpirun, 2, QM6 + ["-output", out("qm6.h5"), "-checkpoint", out("ck_qm6.h
 run(tf, mpirun, 2, QM6 + ["-output", out("qm6.h5"), "-restart", out("ck_qm6.h5")])
 h, _ = history("qm6.h5")
 w, col = worst(qfull, h)
-k.check(w <= 1e-12, f"np=2 restart of pressure, qm6, -residual_correction at increment {qrows // 2}: history within "
+k.check(w <= 1e-12, f"np=2 restart of pressure, qm6, -equilibrium_tol 0.005 at increment {qrows // 2}: history within "
         f"{w:.1e} ({col}) (1e-12)")
 
 # SIGTERM on 1 rank once a third of the history is written: a checkpoint, flagged results, restart.

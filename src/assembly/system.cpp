@@ -19,6 +19,9 @@ System::~System()
   (void)VecDestroy(&fixed_);
   (void)VecDestroy(&diag_);
   (void)VecDestroy(&f_local_);
+  (void)VecDestroy(&x_);
+  (void)VecDestroy(&work_);
+  (void)VecDestroy(&work_local_);
   (void)VecDestroy(&reactions_local_);
   (void)VecDestroy(&reactions_global_);
   (void)KSPDestroy(&ksp_);
@@ -40,6 +43,9 @@ PetscErrorCode System::Setup(const Mesh &mesh)
   PetscCall(VecDuplicate(rhs_, &fixed_));
   PetscCall(VecDuplicate(rhs_, &diag_));
   PetscCall(DMCreateLocalVector(mesh.dm, &f_local_));
+  PetscCall(DMCreateLocalVector(mesh.dm, &work_local_));
+  PetscCall(VecDuplicate(rhs_, &x_));
+  PetscCall(VecDuplicate(rhs_, &work_));
   PetscCall(DMCreateLocalVector(mesh.dm, &reactions_local_));
   PetscCall(DMCreateGlobalVector(mesh.dm, &reactions_global_));
   PetscCall(PetscObjectSetName((PetscObject)sol_, "displacement"));
@@ -206,6 +212,18 @@ PetscErrorCode System::AddFreeForce(Vec f)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode System::AddForces(Vec f, double scale)
+{
+  PetscScalar *a, *b;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(f, (const PetscScalar **)&a));
+  PetscCall(VecGetArray(f_local_, &b));
+  for (PetscInt k = 0; k < 2 * mesh_->num_nodes; ++k) b[k] += scale * a[k];
+  PetscCall(VecRestoreArray(f_local_, &b));
+  PetscCall(VecRestoreArrayRead(f, (const PetscScalar **)&a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 void System::AddForce(PetscInt node, double fx, double fy)
 {
   PetscScalar *f;
@@ -214,176 +232,6 @@ void System::AddForce(PetscInt node, double fx, double fy)
   f[mesh_->node_dof[node] + 1] += fy;
   (void)VecRestoreArray(f_local_, &f);
 }
-
-PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
-{
-  PetscScalar *f;
-  std::vector<PetscInt> rows;
-  std::vector<PetscScalar> vals, b_rows;
-  KSPConvergedReason reason;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(Log::apply_bc, 0, 0, 0, 0));
-  PetscCall(MatAssemblyBegin(k_, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(k_, MAT_FINAL_ASSEMBLY));
-
-  // Loads into the node frames, then summed over ranks.
-  PetscCall(VecGetArray(f_local_, &f));
-  for (PetscInt n = 0; n < mesh_->num_nodes; ++n)
-    if (has_frame_[n]) Rotate(n, f[mesh_->node_dof[n]], f[mesh_->node_dof[n] + 1], true);
-  PetscCall(VecRestoreArray(f_local_, &f));
-  PetscCall(VecZeroEntries(rhs_));
-  PetscCall(DMLocalToGlobal(mesh_->dm, f_local_, ADD_VALUES, rhs_));
-
-  // Friction correction rows: row l += c row n (owned rows; same pattern).
-  // All rows n are read first: the matrix is unassembled once values are added.
-  {
-    struct RowAdd {
-      PetscInt row;
-      std::vector<PetscInt> cols;
-      std::vector<PetscScalar> vals;
-    };
-    std::vector<RowAdd> adds;
-    PetscInt lo;
-    PetscScalar *b;
-    PetscCall(VecGetOwnershipRange(rhs_, &lo, nullptr));
-    PetscCall(VecGetArray(rhs_, &b));
-    for (const auto &cp : couplings_) {
-      if (!mesh_->node_owned[cp.node] || cp.value == 0) continue;
-      PetscInt local[2] = {mesh_->node_dof[cp.node], mesh_->node_dof[cp.node] + 1}, global[2], ncols;
-      const PetscInt *cols;
-      const PetscScalar *vals;
-      PetscCall(ISLocalToGlobalMappingApply(ltog_, 2, local, global));
-      PetscCall(MatGetRow(k_, global[1], &ncols, &cols, &vals));
-      RowAdd add{global[0], std::vector<PetscInt>(cols, cols + ncols), std::vector<PetscScalar>(ncols)};
-      for (PetscInt j = 0; j < ncols; ++j) add.vals[j] = cp.value * vals[j];
-      PetscCall(MatRestoreRow(k_, global[1], &ncols, &cols, &vals));
-      b[global[0] - lo] += cp.value * b[global[1] - lo];
-      adds.push_back(std::move(add));
-    }
-    PetscCall(VecRestoreArray(rhs_, &b));
-    for (const auto &add : adds)
-      PetscCall(MatSetValues(k_, 1, &add.row, (PetscInt)add.cols.size(), add.cols.data(), add.vals.data(), ADD_VALUES));
-    int any = !adds.empty(), anyg;
-    PetscCallMPI(MPI_Allreduce(&any, &anyg, 1, MPI_INT, MPI_LOR, mesh_->comm));
-    if (anyg) {
-      PetscCall(MatAssemblyBegin(k_, MAT_FINAL_ASSEMBLY));
-      PetscCall(MatAssemblyEnd(k_, MAT_FINAL_ASSEMBLY));
-    }
-  }
-
-  // Prescribed dofs owned here, as global rows.
-  for (const auto &p : prescribed_) {
-    if (!mesh_->node_owned[p.node]) continue;
-    PetscInt local = mesh_->node_dof[p.node] + p.comp, global;
-    PetscCall(ISLocalToGlobalMappingApply(ltog_, 1, &local, &global));
-    rows.push_back(global);
-    vals.push_back(p.value);
-  }
-  // Keep the unconstrained rows for the reactions: R = K(rows, :). The
-  // submatrix is rebuilt only when some rank's prescribed set changed.
-  {
-    IS isrow, iscol;
-    PetscInt lo, hi;
-    int changed = rows != last_rows_, any_changed;
-    PetscCallMPI(MPI_Allreduce(&changed, &any_changed, 1, MPI_INT, MPI_LOR, mesh_->comm));
-    if (any_changed) PetscCall(MatDestroy(&reaction_rows_));
-    PetscCall(MatGetOwnershipRange(k_, &lo, &hi));
-    PetscCall(ISCreateGeneral(mesh_->comm, (PetscInt)rows.size(), rows.data(), PETSC_COPY_VALUES, &isrow));
-    PetscCall(ISCreateStride(mesh_->comm, hi - lo, lo, 1, &iscol));
-    PetscCall(
-      MatCreateSubMatrix(k_, isrow, iscol, reaction_rows_ ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &reaction_rows_));
-    PetscCall(ISDestroy(&isrow));
-    PetscCall(ISDestroy(&iscol));
-  }
-  last_rows_ = rows;
-  b_rows.resize(rows.size());
-  if (!rows.empty()) PetscCall(VecGetValues(rhs_, (PetscInt)rows.size(), rows.data(), b_rows.data()));
-
-  PetscCall(VecZeroEntries(fixed_));
-  if (!rows.empty()) PetscCall(VecSetValues(fixed_, (PetscInt)rows.size(), rows.data(), vals.data(), INSERT_VALUES));
-  PetscCall(VecAssemblyBegin(fixed_));
-  PetscCall(VecAssemblyEnd(fixed_));
-  PetscCall(MatZeroRowsColumns(k_, (PetscInt)rows.size(), rows.data(), 1.0, fixed_, rhs_));
-  PetscCall(PetscLogEventEnd(Log::apply_bc, 0, 0, 0, 0));
-
-  PetscCall(PetscLogEventBegin(Log::solve, 0, 0, 0, 0));
-  PetscCall(KSPSetOperators(ksp_, k_, k_));
-  PetscCall(KSPSolve(ksp_, rhs_, sol_));
-  PetscCall(KSPGetConvergedReason(ksp_, &reason));
-  if (reason < 0) {
-    std::string why;
-    PetscCall(DescribeSolveFailure(ksp_, why));
-    SETERRQ(mesh_->comm, PETSC_ERR_NOT_CONVERGED, "%s (KSP: %s)", why.c_str(), KSPConvergedReasons[reason]);
-  }
-  ++nsolves_;
-  PetscCall(PetscLogEventEnd(Log::solve, 0, 0, 0, 0));
-
-  // Reactions r = K(rows, :) du - f(rows), in the node frames.
-  {
-    Vec r;
-    const PetscScalar *ra;
-    PetscCall(MatCreateVecs(reaction_rows_, nullptr, &r));
-    PetscCall(MatMult(reaction_rows_, sol_, r));
-    PetscCall(VecGetArrayRead(r, &ra));
-    reactions.assign(prescribed_.size(), 0.0);
-    PetscCall(VecZeroEntries(reactions_global_));
-    size_t k = 0;
-    for (size_t q = 0; q < prescribed_.size(); ++q)
-      if (mesh_->node_owned[prescribed_[q].node]) {
-        reactions[q] = PetscRealPart(ra[k]) - PetscRealPart(b_rows[k]);
-        PetscCall(VecSetValue(reactions_global_, rows[k], reactions[q], INSERT_VALUES));
-        ++k;
-      }
-    PetscCall(VecRestoreArrayRead(r, &ra));
-    PetscCall(VecDestroy(&r));
-    PetscCall(VecAssemblyBegin(reactions_global_));
-    PetscCall(VecAssemblyEnd(reactions_global_));
-    PetscCall(DMGlobalToLocal(mesh_->dm, reactions_global_, INSERT_VALUES, reactions_local_));
-  }
-
-  // Back to the global frame, ghosts filled.
-  PetscCall(DMGlobalToLocal(mesh_->dm, sol_, INSERT_VALUES, du));
-  PetscScalar *d;
-  PetscCall(VecGetArray(du, &d));
-  for (PetscInt n = 0; n < mesh_->num_nodes; ++n)
-    if (has_frame_[n]) Rotate(n, d[mesh_->node_dof[n]], d[mesh_->node_dof[n] + 1], false);
-  PetscCall(VecRestoreArray(du, &d));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode System::FreeNorm(Vec f_local, double &norm)
-{
-  PetscScalar *f;
-  PetscReal nrm;
-
-  PetscFunctionBeginUser;
-  PetscCall(VecCopy(f_local, f_local_));
-  PetscCall(VecGetArray(f_local_, &f));
-  for (PetscInt n = 0; n < mesh_->num_nodes; ++n)
-    if (has_frame_[n]) Rotate(n, f[mesh_->node_dof[n]], f[mesh_->node_dof[n] + 1], true);
-  for (const auto &p : prescribed_) f[mesh_->node_dof[p.node] + p.comp] = 0;
-  PetscCall(VecRestoreArray(f_local_, &f));
-  PetscCall(VecZeroEntries(rhs_));
-  PetscCall(DMLocalToGlobal(mesh_->dm, f_local_, ADD_VALUES, rhs_));
-  // A prescribed dof zeroed on one rank may carry a share from another: zero the owned rows too.
-  PetscCall(VecGetArray(rhs_, &f));
-  for (const auto &p : prescribed_)
-    if (mesh_->node_owned[p.node]) {
-      PetscInt local = mesh_->node_dof[p.node] + p.comp, global, lo;
-      PetscCall(ISLocalToGlobalMappingApply(ltog_, 1, &local, &global));
-      PetscCall(VecGetOwnershipRange(rhs_, &lo, nullptr));
-      f[global - lo] = 0;
-    }
-  PetscCall(VecRestoreArray(rhs_, &f));
-  PetscCall(VecNorm(rhs_, NORM_2, &nrm));
-  norm = nrm;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-} // namespace tf
-
-namespace tf {
 
 PetscErrorCode System::ExternalWork(Vec f_ext, Vec f_int, Vec du, double &work)
 {

@@ -230,63 +230,123 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState *to, Advanced &acc) const
+{
+  fe::QuadGeometry mid, moved;
+  double xe[2 * fe::kNodes], xm[2 * fe::kNodes];
+  const bool midpoint = prm_.kinematics == ObjectiveScheme::Midpoint;
+  // Gradients on the start configuration (the paper's forward form: the
+  // cached geometry), or on the mid-increment one (Hughes-Winget: a rigid
+  // rotation then gives zero strain and an exact rotation of the stress).
+  const fe::QuadGeometry *geo = CellGeometry(e, xe);
+  for (int k = 0; k < 2 * fe::kNodes; ++k) xm[k] = xe[k] + due[k];
+  if (midpoint) {
+    for (int k = 0; k < 2 * fe::kNodes; ++k) xe[k] += 0.5 * due[k];
+    geo = fe::ComputeGeometry(xe, mid) ? &mid : nullptr;
+  }
+  if (!geo) return false; // reported by the next assembly
+  // QM6 with equilibrium iterations: the increment's modes are the cell's own
+  // unknowns, corrected (alpha -= Kii^{-1} f_i, f_i on the moved cell) until
+  // their force vanishes, so that the cell's nodal forces are those of a state
+  // in balance inside it and the condensed tangent is their derivative.
+  const bool balance = prm_.state_from_strain && cells_.has_modes() && fe::ComputeGeometry(xm, moved);
+  fe::InternalVec alpha = balance ? cells_.Modes((int)e, due) : fe::InternalVec{};
+  for (int it = 0;; ++it) {
+    // Without balancing (one pass) the sums go straight into acc, in the order they always did.
+    Advanced local;
+    Advanced &sink = balance ? local : acc;
+    for (int g = 0; g < fe::kGauss; ++g) {
+      Voigt deps;
+      double omega;
+      if (balance)
+        cells_.KinematicsWith(xe, *geo, g, due, alpha, deps, omega);
+      else
+        cells_.Kinematics((int)e, xe, *geo, g, due, deps, omega);
+      to[g] = AdvancePoint(fe::kGauss * e + g, deps, omega, r, geo->wdet[g], sink);
+    }
+    bool done = !balance || it == kModeIterations;
+    if (!done) {
+      Voigt s[fe::kGauss];
+      fe::InternalVec fi, before = alpha;
+      for (int g = 0; g < fe::kGauss; ++g) s[g] = to[g].sigma;
+      cells_.ModeForce(xm, moved, s, fi);
+      cells_.CorrectModes((int)e, fi, alpha);
+      double change = 0, size = 0;
+      for (int k = 0; k < fe::kInternal; ++k) change = std::max(change, std::abs(alpha[k] - before[k]));
+      for (double v : due) size = std::max(size, std::abs(v));
+      done = change <= kModeTol * size;
+    }
+    if (done) {
+      if (balance) {
+        acc.w_int += local.w_int, acc.w_plastic += local.w_plastic, acc.n_plastic += local.n_plastic;
+        acc.drift = std::max(acc.drift, local.drift);
+      }
+      return true;
+    }
+  }
+}
+
+PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double r, double wdet, Advanced &acc) const
+{
+  const bool midpoint = prm_.kinematics == ObjectiveScheme::Midpoint;
+  PointState ps = state_[i];
+  // Strang splitting: half the rotation, the constitutive increment in the
+  // mid-rotated frame, the other half (forward scheme: all at once, first order).
+  RotateStress(prm_.kinematics, omega, ps.sigma, midpoint ? 0.5 : 1.0);
+  // yield_inside: a point that meets the surface inside the step takes the
+  // part up to it elastically and the rest with the plastic law.
+  const double yf = yield_factor_[i];
+  // With equilibrium iterations the update is a function of the strain
+  // increment alone: a point on the yield surface flows if it loads, whatever
+  // loading state its tangent took (the iterations may cycle the tangent of
+  // a point at the loading/unloading boundary; the forces then stay continuous).
+  // So is the onset of yield inside the step: found on this strain increment's
+  // own stress path (the stored yield factor is its trial's).
+  double onset = prm_.yield_inside ? yf / r : kNever;
+  if (prm_.state_from_strain && material_->plastic_law()) {
+    ps.plastic = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
+    onset = ps.plastic ? kNever : material_->YieldOnset(state_[i], deps, omega);
+  }
+  UpdateInfo u;
+  if (material_->plastic_law() && !ps.plastic && onset < 1) {
+    const double m = onset;
+    material_->Update(ps, Scaled(deps, m));
+    ps.plastic = true;
+    u = material_->Update(ps, Scaled(deps, 1 - m));
+  } else {
+    u = material_->Update(ps, deps);
+  }
+  if (midpoint) RotateStress(prm_.kinematics, omega, ps.sigma, 0.5);
+  // Points that reach the yield surface in this increment (the limiter and
+  // those grouped with it), or pass it, are plastic from now on.
+  const bool reached = !prm_.yield_inside && !prm_.state_from_strain && yf <= r * (1 + prm_.group_tol);
+  const bool on_surface = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
+  if (!ps.plastic && material_->plastic_law() && (reached || on_surface)) ps.plastic = true;
+  acc.n_plastic += ps.plastic;
+  for (int c = 0; c < kNumStress; ++c) acc.w_int += wdet * 0.5 * (state_[i].sigma[c] + ps.sigma[c]) * deps[c];
+  acc.w_plastic += wdet * u.dwp;
+  acc.drift = std::max(acc.drift, std::abs(u.drift));
+  return ps;
+}
+
 PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
 {
   const PetscScalar *du;
-  fe::QuadGeometry mid;
-  // Sums (internal work, plastic work, plastic points: exact in a double) and a maximum (drift).
-  double xe[2 * fe::kNodes], sums[3] = {0, 0, 0}, global_sums[3], drift = 0;
-  const bool midpoint = prm_.kinematics == ObjectiveScheme::Midpoint;
+  Advanced acc;
+  double sums[3], global_sums[3];
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::commit, 0, 0, 0, 0));
   PetscCall(VecGetArrayRead(du_local, &du));
+  std::vector<PointState> next(state_.size());
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
     fe::ElemVec due;
     GatherCell(*mesh_, e, du, due);
-    // Gradients on the start configuration (the paper's forward form: the
-    // cached geometry), or on the mid-increment one (Hughes-Winget: a rigid
-    // rotation then gives zero strain and an exact rotation of the stress).
-    const fe::QuadGeometry *geo = CellGeometry(e, xe);
-    if (midpoint) {
-      for (int k = 0; k < 2 * fe::kNodes; ++k) xe[k] += 0.5 * due[k];
-      geo = fe::ComputeGeometry(xe, mid) ? &mid : nullptr;
-    }
-    if (!geo) continue; // reported by the next assembly
-    for (int g = 0; g < fe::kGauss; ++g) {
-      Voigt deps;
-      double omega;
-      PointState &ps = state_[fe::kGauss * e + g];
-      cells_.Kinematics((int)e, xe, *geo, g, due, deps, omega);
-      const Voigt old = ps.sigma;
-      // Strang splitting: half the rotation, the constitutive increment in the
-      // mid-rotated frame, the other half (forward scheme: all at once, first order).
-      const double first = midpoint ? 0.5 : 1.0;
-      RotateStress(prm_.kinematics, omega, ps.sigma, first);
-      // yield_inside: a point that meets the surface inside the step takes the
-      // part up to it elastically and the rest with the plastic law.
-      const double yf = yield_factor_[fe::kGauss * e + g];
-      UpdateInfo u;
-      if (prm_.yield_inside && material_->plastic_law() && !ps.plastic && yf < r) {
-        const double m = yf / r;
-        material_->Update(ps, Scaled(deps, m));
-        ps.plastic = true;
-        u = material_->Update(ps, Scaled(deps, 1 - m));
-      } else {
-        u = material_->Update(ps, deps);
-      }
-      if (midpoint) RotateStress(prm_.kinematics, omega, ps.sigma, 0.5);
-      // Points that reach the yield surface in this increment (the limiter and
-      // those grouped with it), or pass it, are plastic from now on.
-      const bool reached = !prm_.yield_inside && yf <= r * (1 + prm_.group_tol);
-      const bool on_surface = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
-      if (!ps.plastic && material_->plastic_law() && (reached || on_surface)) ps.plastic = true;
-      sums[2] += ps.plastic;
-      for (int c = 0; c < kNumStress; ++c) sums[0] += geo->wdet[g] * 0.5 * (old[c] + ps.sigma[c]) * deps[c];
-      sums[1] += geo->wdet[g] * u.dwp;
-      drift = std::max(drift, std::abs(u.drift));
-    }
+    PointState *to = &next[fe::kGauss * e];
+    if (!AdvanceCell(e, due, r, to, acc))
+      for (int g = 0; g < fe::kGauss; ++g) to[g] = state_[fe::kGauss * e + g];
   }
+  state_.swap(next);
   for (PetscInt n = 0; n < mesh_->num_nodes; ++n)
     for (int k = 0; k < kDim; ++k) {
       const double d = PetscRealPart(du[mesh_->node_dof[n] + k]);
@@ -296,8 +356,10 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
   StaleAll(); // new geometry and stresses
   geometry_.valid = false;
   PetscCall(VecRestoreArrayRead(du_local, &du));
+  // Sums (internal work, plastic work, plastic points: exact in a double) and a maximum (drift).
+  sums[0] = acc.w_int, sums[1] = acc.w_plastic, sums[2] = (double)acc.n_plastic;
   PetscCall(MPIU_Allreduce(sums, global_sums, 3, MPIU_REAL, MPIU_SUM, comm()));
-  PetscCall(MPIU_Allreduce(&drift, &info.drift, 1, MPIU_REAL, MPIU_MAX, comm()));
+  PetscCall(MPIU_Allreduce(&acc.drift, &info.drift, 1, MPIU_REAL, MPIU_MAX, comm()));
   info.dw_int = global_sums[0];
   info.dw_plastic = global_sums[1];
   info.n_plastic = (PetscInt)global_sums[2];
@@ -313,12 +375,14 @@ void Body::SetElasticOnly()
   StaleAll();
 }
 
-PetscErrorCode Body::InternalForce(Vec f_local) const
+PetscErrorCode Body::InternalForce(Vec f_local, double *magnitude, double *count) const
 {
   PetscScalar *f;
   double xe[2 * fe::kNodes];
 
   PetscFunctionBeginUser;
+  if (magnitude) *magnitude = 0;
+  if (count) *count = 0;
   PetscCall(VecZeroEntries(f_local));
   PetscCall(VecGetArray(f_local, &f));
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
@@ -328,6 +392,9 @@ PetscErrorCode Body::InternalForce(Vec f_local) const
     if (!geo) continue;
     for (int g = 0; g < fe::kGauss; ++g) s[g] = state_[fe::kGauss * e + g].sigma;
     cells_.InternalForce((int)e, xe, *geo, s, fe_);
+    if (magnitude)
+      for (double v : fe_) *magnitude += std::abs(v);
+    if (count) *count += 2 * fe::kNodes;
     for (int a = 0; a < fe::kNodes; ++a) {
       const PetscInt n = mesh_->cell_nodes[fe::kNodes * e + a];
       f[mesh_->node_dof[n]] += fe_[2 * a];

@@ -256,7 +256,11 @@ PetscErrorCode ContactSet::ReleasePulled(Vec du, double dU, double release_fract
     // Only a clear pull counts: a grazing node (force ~ 0 either way) stays.
     // The node's state (force, slip) is kept until the increment is committed.
     const double dfn = NormalIncrement(node, NormalReaction(node, react), Slip(node, Increment(d, node), dU));
-    if (!frozen_[node] && dfn < -f_small_ && fn_[node] <= release_fraction * -dfn) {
+    // A node whose force is zero to the resolution of the forces (equilibrium
+    // iterations balance them to -equilibrium_tol) is released rather than
+    // cutting the step at its force's zero.
+    const double zero = std::max(f_small_, resolution_);
+    if (!frozen_[node] && dfn < -zero && fn_[node] <= std::max(release_fraction * -dfn, resolution_)) {
       local += mesh_->node_owned[node];
       if (apply) contact_[node] = 0, released_[node] = 1;
     }
@@ -290,7 +294,7 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
     }
     // r5: the normal force reaches zero.
     const double dfn = NormalIncrement(node, NormalReaction(node, react), Slip(node, u, dU));
-    if (dfn < -f_small_ && !frozen_[node])
+    if (dfn < -std::max(f_small_, resolution_) && !frozen_[node])
       r5_[node] = std::max(fn_[node], 0.0) / -dfn; // a grazing node held for this step does not limit
     leave.Offer(r5_[node], Limiter::Separation, id);
     // r6: slide to stick, the friction mobilization f_l / (mu f_n) falls by at most
@@ -315,7 +319,7 @@ void ContactSet::Leave(PetscInt node, double share)
 {
   // A force below the scale of zero stays zero (round-off of an exact r5 event).
   const Vec2 f = NodeForce(node, true);
-  if (mesh_->node_owned[node] && share * std::hypot(f[0], f[1]) > f_small_)
+  if (!carry_ && mesh_->node_owned[node] && share * std::hypot(f[0], f[1]) > f_small_)
     for (int k = 0; k < 2; ++k) pending_[node][k] += share * f[k];
   fn_[node] = x_[node] = 0;
 }
@@ -358,7 +362,7 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
       // ends it below the force scale of zero (a re-solved step's end, a
       // grazing node held for the step in tension); what force is left is
       // unloaded by the next steps.
-      if (r5_[node] <= event || fn_[node] < -f_small_) {
+      if (r5_[node] <= event || fn_[node] < -std::max(f_small_, resolution_)) {
         if (owned) local[2] = std::max(local[2], fn_[node]);
         contact_[node] = 0;
         Leave(node, 1.0);

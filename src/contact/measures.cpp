@@ -33,7 +33,7 @@ PetscErrorCode ContactSet::AddFrictionForces(Vec f) const
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::AddContactForces(Vec f) const
+PetscErrorCode ContactSet::AddNodeForces(Vec f) const
 {
   PetscScalar *a;
   PetscFunctionBeginUser;
@@ -44,6 +44,13 @@ PetscErrorCode ContactSet::AddContactForces(Vec f) const
     for (int k = 0; k < 2; ++k) a[mesh_->node_dof[node] + k] += fc[k];
   }
   PetscCall(VecRestoreArray(f, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::AddContactForces(Vec f) const
+{
+  PetscFunctionBeginUser;
+  PetscCall(AddNodeForces(f));
   PetscCall(AddPendingForces(f));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

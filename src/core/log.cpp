@@ -5,7 +5,7 @@
 namespace tf {
 
 PetscLogEvent Log::mesh = 0, Log::assemble = 0, Log::apply_bc = 0, Log::solve = 0, Log::scan = 0, Log::contact = 0,
-              Log::commit = 0, Log::measure = 0, Log::output = 0, Log::yield = 0, Log::friction = 0;
+              Log::commit = 0, Log::trial = 0, Log::measure = 0, Log::output = 0, Log::yield = 0, Log::friction = 0;
 PetscLogStage Log::setup_stage = 0, Log::load_stage = 0, Log::output_stage = 0;
 
 PetscErrorCode Log::Register()
@@ -23,6 +23,7 @@ PetscErrorCode Log::Register()
   PetscCall(PetscLogEventRegister("TfScan", id, &scan));
   PetscCall(PetscLogEventRegister("TfContact", id, &contact));
   PetscCall(PetscLogEventRegister("TfCommit", id, &commit));
+  PetscCall(PetscLogEventRegister("TfTrial", id, &trial));
   PetscCall(PetscLogEventRegister("TfMeasure", id, &measure));
   PetscCall(PetscLogEventRegister("TfOutput", id, &output));
   PetscCall(PetscLogEventRegister("TfYield", id, &yield));

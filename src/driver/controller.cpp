@@ -7,7 +7,32 @@ namespace tf {
 
 Controller::Controller(Model &model, Scene &scene, Inertia *inertia, const Options &opt, double duration)
     : m_(model), scene_(scene), inertia_(inertia), opt_(opt), duration_(duration)
-{}
+{
+  if (Equilibrium()) {
+    iter_ = m_.system.CreateLocalVector();
+    f_trial_ = m_.system.CreateLocalVector();
+    start_ = m_.system.CreateLocalVector();
+    prev_ = m_.system.CreateLocalVector();
+  }
+}
+
+Controller::~Controller()
+{
+  (void)VecDestroy(&iter_);
+  (void)VecDestroy(&f_trial_);
+  (void)VecDestroy(&start_);
+  (void)VecDestroy(&prev_);
+}
+
+PetscErrorCode Controller::TrialState(Vec du)
+{
+  double sums[2], global[2];
+  PetscFunctionBeginUser;
+  PetscCall(m_.body.TrialForce(du, 1.0, f_trial_, &sums[0], &sums[1]));
+  PetscCall(MPIU_Allreduce(sums, global, 2, MPIU_REAL, MPIU_SUM, m_.comm));
+  q_iter_ = global[0] / std::max(global[1], 1.0);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 PetscErrorCode Controller::Solve(double lambda, double dl, Vec du, double &dU, Increment &inc)
 {
@@ -20,13 +45,31 @@ PetscErrorCode Controller::Solve(double lambda, double dl, Vec du, double &dU, I
   // and loads, the inertia load, the carried out-of-balance force.
   PetscCall(m_.system.Begin());
   PetscCall(m_.body.AssembleTangent(m_.system));
+  // The state of the last iterate with this assembly's element state: QM6's
+  // modes follow the condensation of the tangent just assembled (points that
+  // changed their loading state change it), so the forces and K agree.
+  if (Equilibrium() && have_iter_) PetscCall(TrialState(iter_));
   if (dt > 0) PetscCall(inertia_->AddMass(m_.system, dt));
   dU = scene_.ToolStroke(lambda + dl) - scene_.ToolStroke(lambda);
   if (ContactActive()) PetscCall(m_.contact->Constrain(dU));
   PetscCall(scene_.Load(m_, lambda, dl));
   if (dt > 0) inertia_->AddLoad(m_.system, dt);
-  if (opt_.residual_correction) PetscCall(m_.system.AddFreeForce(f_res_));
+  if (Equilibrium() && have_iter_) {
+    // Newton on the increment. The first solve is the paper's incremental step
+    // (the start's own out-of-balance, within the tolerance, is not chased:
+    // in a step many times shorter than the trial it would dominate the
+    // solution and turn points' loading states over). Then the loads of the
+    // start and of the step balance the internal force of the last iterate,
+    // and an iterate whose largest out-of-balance force is within
+    // -equilibrium_tol of the time-averaged nodal force (this state's counted
+    // in) is taken.
+    PetscCall(m_.system.AddForces(f_start_));
+    PetscCall(m_.system.AddForces(f_trial_, -1.0));
+    const double q = (q_sum_ + q_iter_) / (q_count_ + 1);
+    m_.system.SetIterate(iter_, opt_.equilibrium_tol * q, reject_above_);
+  }
   PetscCall(m_.system.Solve(du, reactions));
+  m_.system.SetIterate(nullptr, 0);
   ++inc.solves;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -42,6 +85,7 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
   // the shortest step inertia allows otherwise.
   const double release = InertiaActive() ? std::max(kReleaseWithin, MinStepFraction(dl)) : kReleaseWithin;
   if (ContactActive()) m_.contact->ResetIterates();
+  have_iter_ = false;
   // Re-solve until nothing changes: friction forces linearized about the last
   // iterate, points whose loading state (alpha) disagreed with the last
   // solution switched (at most -rmin_max_redo times), contact nodes pulled off
@@ -62,6 +106,9 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
     if (material) ++t.redo;
     t.left = may_switch ? 0 : switches;
     if (converged && !material && released == 0) break;
+    // With equilibrium iterations one solve locates the events: the iterations
+    // of the step that will be taken settle friction and loading states too.
+    if (Equilibrium()) break;
     if (it < opt_.friction_max_iters + opt_.rmin_max_redo) continue;
     // -dynamics auto before the switch: the caller turns inertia on instead.
     if (!last || (opt_.dynamics == Dynamics::Auto && !InertiaActive())) {
@@ -79,8 +126,75 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
     t.limit = StepLimit{};
     PetscCall(m_.body.ScanTrial(du, false, t.limit, switches, t.transitions));
     t.left = switches;
-    break;
+    if (ContactActive()) PetscCall(m_.contact->LimitStep(du, t.dU, t.limit));
+    PetscFunctionReturn(PETSC_SUCCESS); // taken as it is (no equilibrium iterations either)
   }
+  if (ContactActive()) PetscCall(m_.contact->LimitStep(du, t.dU, t.limit));
+  // A step that will be taken (its first event within -rmin_event_tol of its
+  // end) is brought into balance; one that r_min will cut is not: its solution
+  // only locates the events.
+  if (Equilibrium() && t.limit.r >= 1.0 - opt_.rmin_event_tol) {
+    const Trial solved = t;
+    PetscCall(VecCopy(du, start_));
+    PetscCall(Balance(lambda, dl, du, t, inc));
+    if (!t.settled && last) {
+      // The shortest step does not balance: its incremental solution is taken
+      // (counted, as an unsettled step is).
+      ++inc.unsettled;
+      t = solved;
+      PetscCall(VecCopy(start_, du));
+      PetscCall(Solve(lambda, dl, du, t.dU, inc)); // its reactions
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, Increment &inc)
+{
+  PetscInt switches = 0;
+
+  PetscFunctionBeginUser;
+  const double release = InertiaActive() ? std::max(kReleaseWithin, MinStepFraction(dl)) : kReleaseWithin;
+  PetscCall(VecCopy(du, iter_));
+  have_iter_ = true;
+  double first = -1, previous = PETSC_MAX_REAL;
+  int backtracks = 0;
+  for (PetscInt it = 0;; ++it) {
+    // A correction that does not reduce the out-of-balance force is halved
+    // back towards the point it started from (a line search): along a soft
+    // mode of the tangent (a plastic hinge near collapse) the full step overshoots.
+    reject_above_ = backtracks < kBacktracks ? previous : PETSC_MAX_REAL;
+    PetscCall(Solve(lambda, dl, du, t.dU, inc));
+    const double residual = m_.system.iterate_residual();
+    if (m_.system.accepted()) break; // the last iterate (= du) is in balance
+    if (!m_.system.solved()) {
+      ++backtracks;
+      PetscCall(VecAXPBY(iter_, 0.5, 0.5, prev_)); // halfway back to where the correction started
+      continue;
+    }
+    backtracks = 0;
+    if (first < 0) first = residual;
+    // Iterations that do not converge (the step crosses too much non-linearity:
+    // many points changing their loading state at once) leave the step to be
+    // halved, as unsettled friction does.
+    if (residual > kDivergence * first || it >= opt_.friction_max_iters) {
+      t.settled = false;
+      have_iter_ = false;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    previous = residual;
+    PetscCall(VecCopy(iter_, prev_));
+    bool converged = true;
+    if (Iterative()) PetscCall(m_.contact->UpdateIterates(du, t.dU, converged));
+    t.limit = StepLimit{};
+    PetscCall(m_.body.ScanTrial(du, true, t.limit, switches, t.transitions));
+    PetscInt released = 0;
+    if (ContactActive()) PetscCall(m_.contact->ReleasePulled(du, t.dU, release, true, released));
+    ++inc.balance;
+    PetscCall(VecCopy(du, iter_));
+  }
+  have_iter_ = false;
+  reject_above_ = PETSC_MAX_REAL;
   if (ContactActive()) PetscCall(m_.contact->LimitStep(du, t.dU, t.limit));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -92,7 +206,7 @@ PetscErrorCode Controller::SettledTrial(double lambda, double &dl, Vec du, Trial
     PetscCall(SolveTrial(lambda, dl, du, cut == kMaxCuts, t, inc));
     inc.redo += t.redo;
     if (t.settled) break;
-    if (cut == kMaxCuts) {
+    if (cut == kMaxCuts && inertia_ && !InertiaActive()) {
       // -dynamics auto: quasi-static steps cannot settle here; inertia from
       // now on, and this (shortest) step solved again with it.
       inertia_->Activate();
@@ -102,6 +216,7 @@ PetscErrorCode Controller::SettledTrial(double lambda, double &dl, Vec du, Trial
                             lambda));
       continue;
     }
+    if (cut == kMaxCuts) break; // (SolveTrial takes the last try whatever it finds)
     dl *= 0.5;
     m_.body.ScaleTransitions(0.5);
     ++cut;
@@ -127,7 +242,8 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
              "r_min = %g (%s at %d) at lambda = %g: the increment cannot advance", r, LimiterName((int)t.limit.who),
              (int)t.limit.where, lambda);
   // Points yielding inside the step (-rmin_yield inside) make it non-linear in r too.
-  const bool resolve = r < 1.0 && (Iterative() || InertiaActive() || t.transitions > 0);
+  // So does equilibrium: a scaled solution is out of balance.
+  const bool resolve = r < 1.0 && (Iterative() || InertiaActive() || t.transitions > 0 || Equilibrium());
   if (resolve) {
     // 2a. Friction is not linear in r, nor is inertia (M / dt^2): the
     // shortened step is solved again, and again while the re-solve still finds

@@ -41,6 +41,7 @@ BodyParams MakeBodyParams(const Options &opt)
   b.yield_inside = opt.rmin_yield == "inside";
   b.yield_tol = opt.rmin_yield_tol;
   b.drift_correction = opt.drift_correction;
+  b.state_from_strain = opt.equilibrium_tol > 0;
   b.kinematics = opt.kinematics;
   return b;
 }
@@ -112,9 +113,10 @@ PetscErrorCode Problem::CreateForces(Vec like)
 {
   PetscFunctionBeginUser;
   for (Vec *v : {&forces_.f_app, &forces_.f_app0, &forces_.f_ext, &forces_.f_ext0, &forces_.f_int, &forces_.f_int0,
-                 &forces_.f_res, &forces_.f_net})
+                 &forces_.f_res, &forces_.f_net, &forces_.f_start})
     PetscCall(VecDuplicate(like, v));
   PetscCall(VecZeroEntries(forces_.f_res));
+  PetscCall(VecZeroEntries(forces_.f_start));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -122,7 +124,7 @@ PetscErrorCode Problem::DestroyForces()
 {
   PetscFunctionBeginUser;
   for (Vec *v : {&forces_.f_app, &forces_.f_app0, &forces_.f_ext, &forces_.f_ext0, &forces_.f_int, &forces_.f_int0,
-                 &forces_.f_res, &forces_.f_net})
+                 &forces_.f_res, &forces_.f_net, &forces_.f_start})
     PetscCall(VecDestroy(v));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -145,6 +147,7 @@ PetscErrorCode Problem::Run()
   if (!tools.candidates.empty()) {
     contact_ = std::make_unique<ContactSet>();
     contact_->Setup(mesh_, system_, body_.position(), std::move(tools));
+    contact_->SetCarryResidual(opt_.equilibrium_tol > 0);
     PetscCall(contact_->Initialize());
     model_->contact = contact_.get();
   }
@@ -169,8 +172,7 @@ PetscErrorCode Problem::Run()
     PetscCall(ReadCheckpoint(writer, output));
   } else {
     // Increment 0: the initial state.
-    PetscCall(body_.InternalForce(forces_.f_int));
-    PetscCall(ExternalForces(0.0));
+    PetscCall(EndForces(0.0));
     PetscCall(ContactColumns(nullptr, row));
     PetscCall(scene_->Measure(*model_, 0.0, forces_.f_int, row));
     history_.Append(row);
@@ -181,7 +183,8 @@ PetscErrorCode Problem::Run()
   const double dlambda_trial = 1.0 / opt_.increments;
   const double dlambda_unload = opt_.unload_increments > 0 ? 1.0 / opt_.unload_increments : dlambda_trial;
   Controller controller(*model_, *scene_, inertia_.get(), opt_, path_.duration);
-  controller.SetResidual(forces_.f_res);
+  controller.SetStartForces(forces_.f_start);
+  controller.SetForceScale(q_sum_, q_count_);
   // Why the run ends before the end of its path (empty: it does not), reported
   // with code stop_code after the results so far are written.
   std::string stop;
@@ -263,7 +266,7 @@ PetscErrorCode Problem::Run()
       if (!at_.started[b] && lambda >= breaks[b] - kLambdaTol) {
         at_.started[b] = 1;
         PetscCall(scene_->BeginStage(*model_, lambda));
-        PetscCall(ExternalForces(lambda));
+        PetscCall(EndForces(lambda)); // the loads of the new stage (and the start of its first increment)
       }
     const double next_break =
       *std::find_if(breaks.begin(), breaks.end(), [&](double b) { return b > lambda + kLambdaTol; });
@@ -274,6 +277,7 @@ PetscErrorCode Problem::Run()
     PetscCall(scene_->BeginIncrement(*model_, lambda));
     if (contact_) {
       contact_->SetStroke(scene_->ToolStroke(lambda));
+      if (q_count_ > 0) contact_->SetForceResolution(opt_.equilibrium_tol * q_sum_ / q_count_);
       if (contact_->active()) PetscCall(contact_->BeginIncrement());
     }
 
@@ -282,6 +286,7 @@ PetscErrorCode Problem::Run()
     // vanishing, a singular system) ends the run after the results so far are
     // written; errors (main's handler returns them) of other kinds end it at once.
     Increment taken;
+    controller.SetForceScale(q_sum_, q_count_);
     const PetscErrorCode failed = controller.Advance(lambda, dl, end, du, taken);
     if (failed == PETSC_ERR_USER_INPUT || failed == PETSC_ERR_NOT_CONVERGED) {
       const char *specific = nullptr;

@@ -4,13 +4,16 @@ namespace tf::fe {
 
 CellFormulation::CellFormulation(Formulation f, int num_cells) : kind_(f)
 {
-  if (f == Formulation::QM6) condensation_.assign(num_cells, Condensation{});
+  if (f == Formulation::QM6) {
+    condensation_.assign(num_cells, Condensation{});
+    kii_inv_.assign(num_cells, ModeMatrix{});
+  }
 }
 
 bool CellFormulation::Stiffness(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 c[kGauss],
                                 const Voigt s[kGauss], ElemMat &ke)
 {
-  if (kind_ == Formulation::QM6) return QM6Stiffness(xe, geo, c, s, true, ke, condensation_[e]);
+  if (kind_ == Formulation::QM6) return QM6Stiffness(xe, geo, c, s, true, ke, condensation_[e], &kii_inv_[e]);
   ElementStiffness(geo, kind_, c, s, true, ke);
   return true;
 }
@@ -36,6 +39,20 @@ void CellFormulation::InternalForce(int e, const double xe[2 * kNodes], const Qu
     QM6InternalForce(xe, geo, s, condensation_[e], f);
   else
     fe::InternalForce(geo, kind_, s, f);
+}
+
+InternalVec CellFormulation::Modes(int e, const ElemVec &du) const
+{
+  InternalVec alpha{};
+  for (int k = 0; k < kInternal; ++k)
+    for (int j = 0; j < kDofs; ++j) alpha[k] += condensation_[e][k][j] * du[j];
+  return alpha;
+}
+
+void CellFormulation::CorrectModes(int e, const InternalVec &fi, InternalVec &alpha) const
+{
+  for (int i = 0; i < kInternal; ++i)
+    for (int j = 0; j < kInternal; ++j) alpha[i] -= kii_inv_[e][i][j] * fi[j];
 }
 
 } // namespace tf::fe

@@ -66,9 +66,10 @@ void StrainMatrix12(const Gradients &gr, int g, double b[kVoigt][kAll])
   }
 }
 
-// Solves A X = B in place (X overwrites B) by Gaussian elimination with
-// partial pivoting; false when a pivot is negligible against max |A_ij|.
-bool Solve4(double a[kInternal][kInternal], double x[kInternal][kDofs])
+// Solves A X = B in place (X overwrites B, N columns) by Gaussian elimination
+// with partial pivoting; false when a pivot is negligible against max |A_ij|.
+template <int N>
+bool Solve4(double a[kInternal][kInternal], double x[kInternal][N])
 {
   double amax = 0;
   for (int i = 0; i < kInternal; ++i)
@@ -85,11 +86,11 @@ bool Solve4(double a[kInternal][kInternal], double x[kInternal][kDofs])
     for (int i = k + 1; i < kInternal; ++i) {
       const double m = a[i][k] / a[k][k];
       for (int j = k; j < kInternal; ++j) a[i][j] -= m * a[k][j];
-      for (int j = 0; j < kDofs; ++j) x[i][j] -= m * x[k][j];
+      for (int j = 0; j < N; ++j) x[i][j] -= m * x[k][j];
     }
   }
   for (int k = kInternal - 1; k >= 0; --k)
-    for (int j = 0; j < kDofs; ++j) {
+    for (int j = 0; j < N; ++j) {
       double sum = x[k][j];
       for (int i = k + 1; i < kInternal; ++i) sum -= a[k][i] * x[i][j];
       x[k][j] = sum / a[k][k];
@@ -107,6 +108,12 @@ bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const
 
 bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 tangent[kGauss],
                   const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond)
+{
+  return QM6Stiffness(xe, geo, tangent, sigma, geometric, ke, cond, nullptr);
+}
+
+bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 tangent[kGauss],
+                  const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond, ModeMatrix *kii_inv)
 {
   Gradients gr;
   ComputeGradients(xe, geo, gr);
@@ -130,7 +137,17 @@ bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Ma
     for (int j = 0; j < kInternal; ++j) kii[i][j] = k[kDofs + i][kDofs + j];
     for (int j = 0; j < kDofs; ++j) x[i][j] = k[kDofs + i][j];
   }
-  if (!Solve4(kii, x)) return false;
+  if (kii_inv) {
+    double a[kInternal][kInternal], id[kInternal][kInternal] = {};
+    for (int i = 0; i < kInternal; ++i) {
+      id[i][i] = 1;
+      for (int j = 0; j < kInternal; ++j) a[i][j] = kii[i][j];
+    }
+    if (!Solve4<kInternal>(a, id)) return false;
+    for (int i = 0; i < kInternal; ++i)
+      for (int j = 0; j < kInternal; ++j) (*kii_inv)[i][j] = id[i][j];
+  }
+  if (!Solve4<kDofs>(kii, x)) return false;
   for (int i = 0; i < kInternal; ++i)
     for (int j = 0; j < kDofs; ++j) cond[i][j] = -x[i][j];
   for (int i = 0; i < kDofs; ++i)
@@ -194,6 +211,21 @@ void QM6InternalForce(const double xe[2 * kNodes], const QuadGeometry &geo, cons
     double sum = f12[j];
     for (int m = 0; m < kInternal; ++m) sum += cond[m][j] * f12[kDofs + m];
     f[j] = sum;
+  }
+}
+
+void QM6ModeForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt sigma[kGauss], InternalVec &fi)
+{
+  Gradients gr;
+  ComputeGradients(xe, geo, gr);
+  fi = {};
+  for (int g = 0; g < kGauss; ++g) {
+    const double sxx = sigma[g][0], syy = sigma[g][1], sxy = sigma[g][3];
+    for (int m = 0; m < kModes; ++m) {
+      const double gx = gr.g[g][kNodes + m][0], gy = gr.g[g][kNodes + m][1];
+      fi[kModes * 0 + m] += gr.wdet[g] * (gx * sxx + gy * sxy);
+      fi[kModes * 1 + m] += gr.wdet[g] * (gx * sxy + gy * syy);
+    }
   }
 }
 

@@ -19,6 +19,10 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"n_plastic", &HistoryRow::n_plastic, "plastic Gauss points"},
     {"friction_iters", &HistoryRow::friction_iters, "solves of the increment (friction iterations, re-solves)"},
     {"residual", &HistoryRow::residual, "out-of-balance force norm of the free dofs (N/mm)"},
+    {"r_max", &HistoryRow::r_max, "largest out-of-balance force on a free dof (N/mm)"},
+    {"q_avg", &HistoryRow::q_avg,
+     "time-averaged nodal force: the mean magnitude of the cells' nodal forces, averaged over the increments "
+     "(N/mm); equilibrium holds when r_max <= -equilibrium_tol x q_avg"},
     {"w_ext", &HistoryRow::w_ext,
      "work put into the model (N mm/mm): w_tool where the scene's load and stroke are "
      "work-conjugate, else the loads' and supports' work + friction dissipation"},

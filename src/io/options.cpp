@@ -171,8 +171,11 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
     read.Real(PetscOptionsObject, "-punch_speed",
               "Tool speed (mm/s) with -dynamics implicit in squaring/flattening: the stroke takes stroke / speed",
               opt.punch_speed));
-  PetscCall(read.Bool(PetscOptionsObject, "-residual_correction",
-                      "Add the out-of-balance force to the next increment's load", opt.residual_correction));
+  PetscCall(read.Real(PetscOptionsObject, "-equilibrium_tol",
+                      "Equilibrium iterations: largest out-of-balance force on a free dof against the "
+                      "time-averaged nodal force (Abaqus's R_max <= 0.005 q); 0: off, the paper's forward "
+                      "increments",
+                      opt.equilibrium_tol));
   {
     const char *const schemes[] = {"forward", "midpoint"};
     choice = opt.kinematics == ObjectiveScheme::Forward ? 0 : 1;
@@ -368,6 +371,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-friction_tol %g, -friction_max_iters %d, -friction_max_unsettled %d: need tol > 0 and at least one "
              "iteration and increment",
              opt.friction_tol, (int)opt.friction_max_iters, (int)opt.friction_max_unsettled);
+  PetscCheck(opt.equilibrium_tol >= 0 && opt.equilibrium_tol < 1, comm, PETSC_ERR_USER_INPUT,
+             "-equilibrium_tol %g: must lie in [0, 1) (0: no equilibrium iterations)", opt.equilibrium_tol);
   PetscCheck(opt.rmin_dphi > 0 && opt.rmin_dphi <= 2, comm, PETSC_ERR_USER_INPUT, "-rmin_dphi %g: must lie in (0, 2]",
              opt.rmin_dphi);
   PetscCheck(opt.rmin_dphi_rise > 0 && opt.rmin_dphi_rise <= 1, comm, PETSC_ERR_USER_INPUT,

@@ -22,7 +22,7 @@ Mat4 J2Plasticity::Tangent(const PointState &s) const
   return d;
 }
 
-double J2Plasticity::PlasticStep(double ep, double a, double sbar) const
+double J2Plasticity::PlasticStep(double ep, double a, double sbar, double hslope) const
 {
   // g(dep) = 3G dep + sigma_y(ep + dep) - sigma_y(ep) - 3G a / sbar is increasing,
   // g(0) < 0 <= g(a / sbar): bracketed; regula falsi (Illinois) to round-off.
@@ -30,6 +30,17 @@ double J2Plasticity::PlasticStep(double ep, double a, double sbar) const
   const auto g = [&](double x) { return 3 * g_ * x + h_->YieldStress(ep + x) - s0 - target; };
   double lo = 0, hi = a / sbar, glo = g(lo), ghi = g(hi);
   if (ghi <= 0) return hi;
+  // The bracket is first narrowed at the step the last plastic modulus
+  // predicts (the root itself when H' is constant): the iterations then start
+  // close to the root instead of at the perfectly plastic bound.
+  if (hslope > 0) {
+    const double x = target / (3 * g_ + hslope), gx = x < hi ? g(x) : 1.0;
+    if (gx == 0) return x;
+    if (gx < 0)
+      lo = x, glo = gx;
+    else if (x < hi)
+      hi = x, ghi = gx;
+  }
   int side = 0;
   for (int it = 0; it < kPlasticStepIterations && hi - lo > kPlasticStepTol * hi; ++it) {
     const double x = (lo * ghi - hi * glo) / (ghi - glo), gx = g(x);
@@ -60,7 +71,7 @@ UpdateInfo J2Plasticity::Update(PointState &s, const Voigt &deps) const
   if (s.plastic && a > 0 && sbar > 0) {
     // Tangent update with H' the secant over this step's own plastic strain:
     // dsigma = C_e de - 3G (dep / sbar) s, exact on a proportional path.
-    const double dep = PlasticStep(s.ep, a, sbar);
+    const double dep = PlasticStep(s.ep, a, sbar, s.hslope);
     const double sy_old = h_->YieldStress(s.ep), sy_new = h_->YieldStress(s.ep + dep);
     for (int r = 0; r < 4; ++r) s.sigma[r] += dsig[r] - 3 * g_ * dep / sbar * dev[r] - s.sigma[r] * trace;
     if (dep > 0) s.hslope = (sy_new - sy_old) / dep;

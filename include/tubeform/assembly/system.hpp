@@ -71,7 +71,9 @@ public:
   // Adds a dense block coupling `nn` local nodes (2 nn x 2 nn, row-major,
   // global frame); used for load stiffness and contact rows.
   PetscErrorCode AddBlock(const PetscInt *nodes, int nn, const double *k);
-  void AddForce(PetscInt node, double fx, double fy); // global-frame load increment
+  void AddForce(PetscInt node, double fx, double fy);
+  // A force on every dof (local contribution vector, global frame), prescribed ones included (their reactions).
+  PetscErrorCode AddForces(Vec f, double scale = 1.0);
   // A load given in the node's frame (l, n).
   void AddFrameForce(PetscInt node, double fl, double fn);
   // k on the node's l dof (l l^T in the global frame): a tangential spring.
@@ -91,6 +93,22 @@ public:
   // increment and `reactions` the force increments at the prescribed dofs
   // (same order as prescribed(); entries for unowned nodes are 0).
   PetscErrorCode Solve(Vec du, std::vector<double> &reactions);
+  // Equilibrium iterations: the next Solve starts from the iterate du_i
+  // (local, global frame; nullptr: none), whose body forces the caller has put
+  // into the loads as f_ext - f_int(du_i). The Solve then reports the iterate's
+  // largest out-of-balance force on the free dofs (iterate_residual) and, when
+  // it is at most `accept_below`, takes du_i as the solution without factoring
+  // (accepted()); above `reject_above` it neither factors nor solves (the
+  // caller backtracks: a line search); else it solves for the correction of du_i.
+  void SetIterate(Vec du_local, double accept_below, double reject_above = PETSC_MAX_REAL)
+  {
+    iterate_ = du_local;
+    accept_below_ = accept_below;
+    reject_above_ = reject_above;
+  }
+  double iterate_residual() const { return iterate_residual_; }
+  bool solved() const { return solved_; }
+  bool accepted() const { return accepted_; }
   // The reaction increments of the last solve as a local vector in the node
   // frames (prescribed dofs only, ghosts filled).
   Vec reactions_local() const { return reactions_local_; }
@@ -100,7 +118,7 @@ public:
 
   // Global 2-norm of a local force vector (global frame) with the prescribed
   // dofs removed: the out-of-balance force of the free dofs.
-  PetscErrorCode FreeNorm(Vec f_local, double &norm);
+  PetscErrorCode FreeNorm(Vec f_local, double &norm, NormType type = NORM_2);
 
   PetscInt factorizations() const { return nsolves_; }
   // Which factorization the solver uses and why (one line).
@@ -143,7 +161,16 @@ private:
   PetscInt nsolves_ = 0;
   std::string solver_;
 
+  Vec iterate_ = nullptr; // the iterate of SetIterate (not owned)
+  double accept_below_ = 0, reject_above_ = 0, iterate_residual_ = 0;
+  bool solved_ = true, accepted_ = false;
+  Vec x_ = nullptr, work_ = nullptr, work_local_ = nullptr; // the iterate in node frames; scratch
+
   void Rotate(PetscInt node, double &a, double &b, bool to_local) const;
+  // A local vector (global frame) into a global one in the node frames (ADD: summed contributions; INSERT: values).
+  PetscErrorCode LocalToNodeFrames(Vec v_local, Vec v_global, InsertMode mode);
+  // The friction correction rows into K and the loads (after assembly).
+  PetscErrorCode AddCouplings();
 };
 
 } // namespace tf

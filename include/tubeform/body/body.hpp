@@ -22,6 +22,13 @@
 
 namespace tf {
 
+// QM6's modes in balance (equilibrium iterations): corrections per cell at
+// most, and the change of the modes, relative to the cell's largest nodal
+// increment, below which they are in balance (Kii is their exact stiffness
+// for a linear step: one or two corrections reach it).
+constexpr int kModeIterations = 3;
+constexpr double kModeTol = 1e-6;
+
 struct BodyParams {
   fe::Formulation element = fe::Formulation::BBar;
   MaterialParams material;
@@ -38,6 +45,9 @@ struct BodyParams {
   bool yield_inside = false;
   double yield_tol = 0.05;
   bool drift_correction = false;
+  // The stress update takes a point's loading state from its strain increment
+  // (on the yield surface and loading), not from its tangent's (equilibrium iterations).
+  bool state_from_strain = false;
   ObjectiveScheme kinematics = ObjectiveScheme::Forward;
 };
 
@@ -73,8 +83,16 @@ public:
   // factor lies inside the step take the part up to it elastically and the
   // rest plastically.
   PetscErrorCode Commit(Vec du, double r, CommitInfo &info);
-  // Collective-free: the nodal forces of the stresses (local contribution vector).
-  PetscErrorCode InternalForce(Vec f_local) const;
+  // Collective-free: the nodal forces of the stresses (local contribution
+  // vector); with `magnitude`, also the sum of the magnitudes of the cells'
+  // nodal force components and their count on this rank (the force scale of
+  // the equilibrium criterion).
+  PetscErrorCode InternalForce(Vec f_local, double *magnitude = nullptr, double *count = nullptr) const;
+  // Collective-free: the nodal forces (local contribution vector) of the state
+  // the increment du (a solution scaled by r, as Commit takes it) would reach,
+  // on the moved geometry; nothing is committed.
+  // `magnitude`, `count`: as InternalForce.
+  PetscErrorCode TrialForce(Vec du, double r, Vec f_local, double *magnitude, double *count) const;
   // Collective: the elastic energy stored in the stresses.
   PetscErrorCode ElasticEnergy(double &w) const;
   // Collective: the lowest input number of a cell whose stresses, plastic
@@ -125,6 +143,18 @@ private:
   // The geometry of cell e (nullptr if inverted) and its corners `xe`.
   const fe::QuadGeometry *CellGeometry(PetscInt e, double xe[2 * fe::kNodes]) const;
 
+  // What advancing cells adds up: internal and plastic work, plastic points, largest drift.
+  struct Advanced {
+    double w_int = 0, w_plastic = 0, drift = 0;
+    PetscInt n_plastic = 0;
+  };
+  // The states cell e's points reach with its nodal increments due (a solution
+  // scaled by r), into to[0..kGauss); false (to untouched) if the cell's
+  // geometry is inverted. Shared by Commit and TrialForce.
+  bool AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState *to, Advanced &acc) const;
+  // The state point i reaches with strain and spin increments deps, omega;
+  // adds its work (weight wdet) and drift into acc.
+  PointState AdvancePoint(size_t i, const Voigt &deps, double omega, double r, double wdet, Advanced &acc) const;
   void Stale(size_t point) { ke_stale_[point / fe::kGauss] = 1; }
   void StaleAll() { std::fill(ke_stale_.begin(), ke_stale_.end(), 1); }
   Mat4 TransitionTangent(size_t i) const;

@@ -124,6 +124,8 @@ public:
 
   // Friction forces on the body (owned nodes, global frame) into a contribution vector.
   PetscErrorCode AddFrictionForces(Vec f) const;
+  // The forces of the contact nodes (normal and friction), owned nodes, global frame, added to f.
+  PetscErrorCode AddNodeForces(Vec f) const;
   // Every force the tool still puts on the body (contact nodes and the pending
   // forces of released ones), owned nodes, global frame, added to f.
   PetscErrorCode AddContactForces(Vec f) const;
@@ -153,6 +155,12 @@ public:
   int Segment(PetscInt node) const { return segment_[node]; }
   const Tool &tool() const { return tool_; }
   bool friction() const { return prm_.mu > 0; }
+  // Equilibrium is carried from increment to increment (the residual of the
+  // contact nodes included): a leaving node's force is left to it, not kept pending.
+  void SetCarryResidual(bool carry) { carry_ = carry; }
+  // The resolution of the forces (N/mm): equilibrium iterations balance them to
+  // within it, so a normal force below it counts as zero for releases and r5.
+  void SetForceResolution(double f) { resolution_ = f; }
 
 private:
   Mesh *mesh_ = nullptr;
@@ -161,6 +169,8 @@ private:
   Tool tool_;
   ContactParams prm_;
   bool removed_ = false;
+  bool carry_ = false;
+  double resolution_ = 0;
   std::vector<PetscInt> candidates_;
   std::vector<char> contact_, global_frame_;
   std::vector<Vec2> sym_dir_; // held direction on a symmetry plane, {0, 0} if none

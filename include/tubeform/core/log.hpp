@@ -9,7 +9,7 @@ namespace tf {
 struct Log {
   // yield: the plasticity part of the scans (only with a plastic law);
   // friction: friction iterates and forces (only with mu > 0).
-  static PetscLogEvent mesh, assemble, apply_bc, solve, scan, contact, commit, measure, output, yield, friction;
+  static PetscLogEvent mesh, assemble, apply_bc, solve, scan, contact, commit, trial, measure, output, yield, friction;
   static PetscLogStage setup_stage, load_stage, output_stage;
   // Registers the events once; later calls do nothing.
   static PetscErrorCode Register();

@@ -15,6 +15,11 @@
 
 namespace tf {
 
+// Equilibrium iterations whose out-of-balance force grows to this many times
+// their first are diverging: the step is halved instead.
+constexpr double kDivergence = 10;
+// Halvings of a correction that does not reduce the out-of-balance force.
+constexpr int kBacktracks = 3;
 // Halvings of a trial step whose iterations do not settle; the last is taken unsettled.
 constexpr int kMaxCuts = 6;
 // Re-solves of a shortened non-linear step that go to its limits' estimate; later ones at least halve it.
@@ -41,13 +46,22 @@ struct Increment {
   PetscInt unsettled = 0;       // trial steps taken with unsettled iterations
   bool event_inside = false;    // the step taken goes past an event by more than -rmin_event_tol (a compromise)
   PetscInt inconsistent = 0;    // Gauss points whose loading state disagrees with the solution taken
+  PetscInt balance = 0;         // equilibrium corrections of the step taken (solves beyond the paper's)
 };
 
 class Controller {
 public:
   Controller(Model &model, Scene &scene, Inertia *inertia, const Options &opt, double duration);
-  // The out-of-balance force added to every load (-residual_correction).
-  void SetResidual(Vec f_res) { f_res_ = f_res; }
+  ~Controller();
+  Controller(const Controller &) = delete;
+  Controller &operator=(const Controller &) = delete;
+  // Equilibrium iterations (-equilibrium_tol): what acts on the body at the
+  // start of the increment besides its stresses (applied loads, contact forces,
+  // inertia force; the driver keeps it current), and the force scale of the
+  // criterion (the sum of the increments' mean nodal force magnitudes, and
+  // their number).
+  void SetStartForces(Vec f_start) { f_start_ = f_start; }
+  void SetForceScale(double sum, double count) { q_sum_ = sum, q_count_ = count; }
   // Collective: the increment from lambda with trial step dl (`end`: the end of
   // the load path); du (local vector) receives it.
   PetscErrorCode Advance(double lambda, double dl, double end, Vec du, Increment &inc);
@@ -66,9 +80,22 @@ private:
   Inertia *inertia_;
   const Options &opt_;
   double duration_;
-  Vec f_res_ = nullptr;
+  Vec f_start_ = nullptr;
+  double q_sum_ = 0, q_count_ = 0;
+  // The equilibrium iterations of the current trial: the last solution, the
+  // internal force of the state it reaches (its mean nodal force magnitude in
+  // q_iter_); have_iter_ false before the trial's first solve.
+  Vec iter_ = nullptr, f_trial_ = nullptr;
+  Vec start_ = nullptr;                  // the step's incremental solution, before its equilibrium iterations
+  Vec prev_ = nullptr;                   // the iterate the last correction started from (line search)
+  double reject_above_ = PETSC_MAX_REAL; // an iterate out of balance by more is backtracked
+  double q_iter_ = 0;
+  bool have_iter_ = false;
 
+  bool Equilibrium() const { return opt_.equilibrium_tol > 0; }
   bool ContactActive() const { return m_.contact && m_.contact->active(); }
+  // The internal force and mean nodal force magnitude (q_iter_) of the state du would reach.
+  PetscErrorCode TrialState(Vec du);
   bool Iterative() const { return ContactActive() && m_.contact->friction(); }
   bool InertiaActive() const { return inertia_ && inertia_->active(); }
   // The shortest step inertia allows, as a fraction of a step of dl.
@@ -80,6 +107,11 @@ private:
   // false, unless it is the `last` try: then it is solved once more with the
   // friction linearized at the increment start and taken.
   PetscErrorCode SolveTrial(double lambda, double dl, Vec du, bool last, Trial &t, Increment &inc);
+  // Equilibrium iterations on a step that will be taken (its solution du on
+  // entry): Newton corrections with the step's own tangent until the largest
+  // out-of-balance force is within -equilibrium_tol; t.settled false if they
+  // diverge or run out (the step is then halved).
+  PetscErrorCode Balance(double lambda, double dl, Vec du, Trial &t, Increment &inc);
   // A trial halved until it settles (kMaxCuts times at most; dl is halved with it).
   PetscErrorCode SettledTrial(double lambda, double &dl, Vec du, Trial &t, Increment &inc);
 };

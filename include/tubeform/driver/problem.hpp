@@ -72,9 +72,18 @@ private:
     Vec f_ext = nullptr, f_ext0 = nullptr; // applied loads + friction forces
     Vec f_int = nullptr, f_int0 = nullptr; // internal forces (+ inertia forces)
     Vec f_res = nullptr;                   // out-of-balance force f_ext - f_int
-    Vec f_net = nullptr;                   // f_int - f_app ghost-summed: the contact forces the body needs
+    // With equilibrium iterations: what acts on the body besides its stresses
+    // (applied loads, contact forces, inertia force with its sign), the next
+    // increment's start.
+    Vec f_start = nullptr;
+    Vec f_net = nullptr; // f_int - f_app ghost-summed: the contact forces the body needs
   } forces_;
   EnergyAccount energy_;
+  // The force scale of the equilibrium criterion: the sum over increments of
+  // the mean magnitude of the cells' nodal forces, and their number (Abaqus's
+  // time-averaged force q~ = sum / count).
+  double q_sum_ = 0, q_count_ = 0;
+  double q_now_ = 0; // the mean magnitude of the cells' nodal forces at the last EndForces
   // Compromises so far (history columns of those names).
   PetscInt unsettled_ = 0, events_inside_ = 0, inconsistent_ = 0;
   PetscInt unsettled_run_ = 0;                  // increments in a row taken unsettled (-friction_max_unsettled)

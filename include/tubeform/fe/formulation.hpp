@@ -33,6 +33,23 @@ public:
   void InternalForce(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss],
                      ElemVec &f) const;
 
+  // qm6, modes in balance (equilibrium iterations): the modes of an increment
+  // are unknowns of the cell, started from cond du and corrected until their
+  // force vanishes: Modes gives the start, KinematicsWith the strain for given
+  // modes, ModeForce the force on them, CorrectModes alpha -= Kii^{-1} f_i.
+  bool has_modes() const { return kind_ == Formulation::QM6; }
+  InternalVec Modes(int e, const ElemVec &du) const;
+  void KinematicsWith(const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du,
+                      const InternalVec &alpha, Voigt &deps, double &omega) const
+  {
+    QM6Kinematics(xe, geo, g, du, alpha, deps, omega);
+  }
+  void ModeForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss], InternalVec &fi) const
+  {
+    QM6ModeForce(xe, geo, s, fi);
+  }
+  void CorrectModes(int e, const InternalVec &fi, InternalVec &alpha) const;
+
   // qm6: the condensation of every cell (empty for other elements). State a
   // checkpoint keeps: the internal force of a committed state uses the last tangent's.
   std::vector<Condensation> &condensations() { return condensation_; }
@@ -40,6 +57,7 @@ public:
 private:
   Formulation kind_ = Formulation::BBar;
   std::vector<Condensation> condensation_; // qm6: per cell, from the last Stiffness
+  std::vector<ModeMatrix> kii_inv_;        // qm6: per cell, Kii^{-1} of the last Stiffness
 };
 
 } // namespace tf::fe

@@ -24,6 +24,7 @@ constexpr double kPivotTol = 1e-13;
 // cond = -Kii^{-1} Kic (4 x 8): internal dofs of an increment, alpha = cond * du.
 using Condensation = std::array<std::array<double, kDofs>, kInternal>;
 using InternalVec = std::array<double, kInternal>;
+using ModeMatrix = std::array<std::array<double, kInternal>, kInternal>;
 
 // K* = Kcc - Kci Kii^{-1} Kic from the 12-dof K = sum_g w det J [ B12^T (C_g - Q(sigma_g)) B12
 // + (grad P_s . sigma_g . grad P_t) I over the 6 shape functions (4 nodal + 2 modes) ].
@@ -49,6 +50,12 @@ bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Ma
                   const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond);
 void QM6Kinematics(const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du,
                    const InternalVec &alpha, Voigt &deps, double &omega);
+// The stiffness that also returns Kii^{-1} (the modes' own stiffness, for
+// balancing them: alpha -= Kii^{-1} f_i).
+bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 tangent[kGauss],
+                  const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond, ModeMatrix *kii_inv);
+// f_i = sum_g w det J G_g^T sigma_g: the force on the internal modes (zero when they are in balance).
+void QM6ModeForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt sigma[kGauss], InternalVec &fi);
 void QM6InternalForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt sigma[kGauss],
                       const Condensation &cond, ElemVec &f);
 

@@ -14,7 +14,7 @@ namespace tf {
 
 struct HistoryRow {
   double increment = 0, stroke = 0, load = 0, rmin = 1, limiter = 0, limiter_where = -1;
-  double n_contact = 0, n_plastic = 0, friction_iters = 0, residual = 0;
+  double n_contact = 0, n_plastic = 0, friction_iters = 0, residual = 0, r_max = 0, q_avg = 0;
   double w_ext = 0, w_int = 0, w_plastic = 0, w_friction = 0, w_elastic = 0, energy_error = 0;
   double c_over_t = 0, x_max = 0, y_max = 0, deviation_ratio = 1;
   double redo = 0, drift = 0, unsettled = 0, events_inside = 0, inconsistent = 0;

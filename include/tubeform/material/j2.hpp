@@ -17,7 +17,7 @@ constexpr double kOnSurface = 1e-6;
 // The plastic step (T2) is solved by regula falsi to this relative width of
 // its bracket (round-off), within this many iterations (Illinois converges in
 // a few dozen; the cap only guards against a non-monotone table).
-constexpr double kPlasticStepTol = 1e-15;
+constexpr double kPlasticStepTol = 1e-14;
 constexpr int kPlasticStepIterations = 200;
 
 class J2Plasticity : public Material {
@@ -37,7 +37,8 @@ public:
 
   // Solves 3G dep + sigma_y(ep + dep) - sigma_y(ep) = 3G a / sbar for dep >= 0:
   // the plastic strain step whose secant modulus is the H' of the update.
-  double PlasticStep(double ep, double a, double sbar) const;
+  // `hslope`: the last plastic step's modulus (0: none), the first guess.
+  double PlasticStep(double ep, double a, double sbar, double hslope = 0) const;
 
 private:
   Elastic elastic_;
