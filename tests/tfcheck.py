@@ -47,7 +47,8 @@ def load(path):
 
 
 class Checks:
-    """Collects pass/fail lines; exit code 1 if any failed."""
+    """Collects pass/fail lines; exit code 1 if any failed, or if none was made
+    (a test whose checks were all skipped verifies nothing)."""
 
     def __init__(self, name):
         self.name, self.failed, self.total = name, 0, 0
@@ -59,4 +60,6 @@ class Checks:
 
     def done(self):
         print(f"{self.name}: {self.total - self.failed} passed, {self.failed} failed")
-        sys.exit(1 if self.failed else 0)
+        if self.total == 0:
+            print(f"FAILED {self.name}: no check was made")
+        sys.exit(1 if self.failed or self.total == 0 else 0)
