@@ -1,5 +1,7 @@
 """Shared helpers of tubeform's Python checks (run with /usr/bin/python3)."""
+import glob
 import os
+import resource
 import subprocess
 import sys
 
@@ -30,6 +32,47 @@ def run(tf, mpirun, np_, opts, check=True, timeout=300):
         print(p.stdout, p.stderr)
         raise SystemExit(f"tubeform failed with exit code {p.returncode}")
     return p
+
+
+# What a crashed rank leaves in a run's output: PETSc's signal handler (it turns
+# SIGSEGV, SIGFPE, ... into MPI_Abort, exit 59), mpirun's report of a rank
+# killed by a signal, an MPI_Abort, main's abort after an error seen by one rank.
+CRASH_MARKS = ("Caught signal", "exited on signal", "MPI_ABORT", "error on rank")
+
+
+def crashed(p):
+    """Why a finished run counts as a crash ("" if it does not): Python reports
+    a signal as a negative exit code, mpirun and shells as 128 + N; or a mark
+    of CRASH_MARKS in its output."""
+    if p.returncode < 0:
+        return f"killed by signal {-p.returncode}"
+    if p.returncode >= 128:
+        return f"exit {p.returncode}: signal {p.returncode - 128}"
+    text = (p.stdout or "") + (p.stderr or "")
+    marks = [m for m in CRASH_MARKS if m in text]
+    return f"'{marks[0]}' in its output" if marks else ""
+
+
+def allow_core_dumps():
+    """Lets the runs started from here write core files (the soft core size
+    limit raised to the hard one) and says where a crash of tubeform (run from
+    the source directory) would leave them: (directory, name prefix), or None
+    with the reason when no core file can appear there (cores piped to a
+    program such as systemd-coredump, or a hard limit of 0)."""
+    pattern = open("/proc/sys/kernel/core_pattern").read().strip()
+    _, hard = resource.getrlimit(resource.RLIMIT_CORE)
+    if pattern.startswith("|"):
+        return None, f"core_pattern pipes cores to a program ({pattern.split()[0][1:]})"
+    if hard == 0:
+        return None, "the hard core size limit is 0"
+    resource.setrlimit(resource.RLIMIT_CORE, (hard, hard))
+    where = os.path.join(sys.argv[3], os.path.dirname(pattern))  # (an absolute pattern keeps its own directory)
+    return (where, os.path.basename(pattern).split("%")[0] or "core"), ""
+
+
+def core_dumps(where, since):
+    """Core files written at `where` (from allow_core_dumps) since the time `since`."""
+    return [f for f in glob.glob(os.path.join(where[0], where[1] + "*")) if os.path.getmtime(f) >= since]
 
 
 def load(path):
