@@ -5,7 +5,8 @@
 //  - rotated frames: a block whose edges are inclined by alpha, supported by
 //    rollers written in rotated node frames and stretched by a prescribed
 //    rotated-frame displacement, gives the exact uniaxial plane-strain field
-//    and the exact reaction.
+//    and the exact reaction;
+//  - a boundary segment that is no cell edge is refused by every rank alike.
 #include <petscsys.h>
 
 #include <algorithm>
@@ -288,6 +289,28 @@ static PetscErrorCode CouplingRowTest(MPI_Comm comm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// A boundary segment that is no cell edge (a diagonal), seen by rank 0 alone
+// while it labels the serial mesh: every rank must return the same input error
+// (none may be left waiting in the distribution; the test's timeout catches a hang).
+static PetscErrorCode SegmentNotAnEdgeTest(MPI_Comm comm)
+{
+  PetscMPIInt rank;
+  SerialMesh serial;
+  Mesh mesh;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    serial = GenerateRectangle(2.0, 1.0, 4, 3);
+    serial.edge_sets["left"].push_back({serial.quads[0], serial.quads[2]}); // cell 0's diagonal
+  }
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
+  const PetscErrorCode err = mesh.Create(comm, serial, {"left", "right", "bottom", "top"});
+  PetscCall(PetscPopErrorHandler());
+  CHECK(err == PETSC_ERR_USER_INPUT);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   PetscCall(PetscInitialize(&argc, &argv, nullptr, nullptr));
@@ -298,6 +321,7 @@ int main(int argc, char **argv)
   PetscCall(RotatedFrameTest(PETSC_COMM_WORLD, 0.6));
   PetscCall(RotatedFrameTest(PETSC_COMM_WORLD, 0.5 * M_PI + 0.3));
   PetscCall(CouplingRowTest(PETSC_COMM_WORLD));
+  PetscCall(SegmentNotAnEdgeTest(PETSC_COMM_WORLD));
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
   int failures = tftest::failures, total;
