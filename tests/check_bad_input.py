@@ -88,7 +88,7 @@ def refused(np_, extra, needle):
     """Runs a case that must be refused; checks the exit, the line and that nothing crashed."""
     t0 = time.time()
     p = run(tf, mpirun, np_, base + ["-output", out("keep.h5"), "-history_csv", out("keep.csv")] + extra,
-            check=False, timeout=60)
+            check=False, timeout=60, report_hang=True)
     lines = [l for l in (p.stderr + p.stdout).splitlines() if "error" in l.lower()]
     crash = crashed(p)
     ok = p.returncode == 1 and not crash and len(lines) >= 1 and needle in lines[0]

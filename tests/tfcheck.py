@@ -19,18 +19,41 @@ def out(name):
     return os.path.join(os.getcwd(), name)
 
 
-def run(tf, mpirun, np_, opts, check=True, timeout=300):
+# Seconds mpirun gets to end its ranks after SIGTERM (it sends them SIGTERM,
+# then SIGKILL a few seconds later) before it is killed itself.
+KILL_GRACE = 20
+
+
+def run(tf, mpirun, np_, opts, check=True, timeout=300, report_hang=False):
     """Runs tubeform on np_ ranks from the source directory (where scene files
     find options/solver.opts, as users run it); returns the CompletedProcess.
-    Output paths given to it must be absolute (see out())."""
+    A run still going after `timeout` seconds is killed with its ranks and ends
+    the test, or with report_hang is returned with timed_out set (crashed()
+    names it). Output paths given to it must be absolute (see out())."""
     # One rank runs as an MPI singleton: the same code path, without mpirun's
     # ~2 s wind-down after a non-zero exit.
     cmd = ([mpirun, "-n", str(np_)] if np_ > 1 else []) + [tf] + [str(o) for o in opts]
-    p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, cwd=sys.argv[3])
-    if check and p.returncode != 0:
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=sys.argv[3])
+    timed_out = False
+    try:
+        stdout, stderr = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        # A hang (a rank waiting for one that left): mpirun, sent SIGTERM, ends its
+        # ranks (SIGTERM, then SIGKILL), so none is left behind; then SIGKILL.
+        timed_out = True
+        proc.terminate()
+        try:
+            stdout, stderr = proc.communicate(timeout=KILL_GRACE)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            stdout, stderr = proc.communicate()
+    p = subprocess.CompletedProcess(cmd, proc.returncode, stdout, stderr)
+    p.timed_out = timed_out  # crashed() counts it
+    if (check and p.returncode != 0) or (timed_out and not report_hang):
         print(" ".join(cmd))
         print(p.stdout, p.stderr)
-        raise SystemExit(f"tubeform failed with exit code {p.returncode}")
+        raise SystemExit(f"tubeform did not finish within {timeout} s (killed)" if timed_out else
+                         f"tubeform failed with exit code {p.returncode}")
     return p
 
 
@@ -41,9 +64,11 @@ CRASH_MARKS = ("Caught signal", "exited on signal", "MPI_ABORT", "error on rank"
 
 
 def crashed(p):
-    """Why a finished run counts as a crash ("" if it does not): Python reports
-    a signal as a negative exit code, mpirun and shells as 128 + N; or a mark
-    of CRASH_MARKS in its output."""
+    """Why a run counts as a crash ("" if it does not): it hung (run() killed
+    it), Python reports a signal as a negative exit code, mpirun and shells as
+    128 + N; or a mark of CRASH_MARKS in its output."""
+    if getattr(p, "timed_out", False):
+        return "no exit within its timeout (a hang): killed"
     if p.returncode < 0:
         return f"killed by signal {-p.returncode}"
     if p.returncode >= 128:
