@@ -19,9 +19,13 @@ of the springback stage, the energy accounts and the history.
     the last one before a rank was killed (SIGKILL), on 2 ranks, continuing
     the .partial results the killed run left.
   - 1 -> 2 ranks: the checkpoint of a 1-rank run continued on 2 ranks agrees
-    with the 1-rank run within the parallel tolerance of check_squaring.py
-    (3e-5 relative for load and C/t, set by how the r_min events amplify
-    round-off); fields start anew in a new -output (same -output: refused).
+    with the 1-rank run within 5e-6 relative for load, stroke and shape: 100
+    times the 4.7e-8 measured on OpenBLAS Haswell and SkylakeX alike (the
+    fast preset's PETSc LU uses no BLAS); fields start anew in a new -output
+    (same -output: refused).
+  - Same ranks, 1e-12: measured 0 (bit for bit) in every case on both
+    kernels; the bound is not round-off's but the smallest state defect's
+    (above), so it stays.
   - A failed checkpoint write (its scratch file cannot be created) stops the
     run with one line naming -checkpoint, and leaves the previous checkpoint
     byte for byte as it was.
@@ -222,7 +226,7 @@ k.check(p.returncode != 0 and len(lines) >= 1 and "new -output" in lines[0],
 run(tf, mpirun, 2, CASE + ["-output", out("part12.h5"), "-restart", out("ck1.h5")])
 h, _ = history("part12.h5")
 w, col = worst(full1, h, ["stroke", "load", "c_over_t", "deviation_ratio", "x_max", "y_max"])
-k.check(w <= 3e-5, f"1 -> 2 ranks: load, stroke and shape within {w:.1e} ({col}) of the 1-rank run (3e-5)")
+k.check(w <= 5e-6, f"1 -> 2 ranks: load, stroke and shape within {w:.1e} ({col}) of the 1-rank run (5e-6)")
 
 # A checkpoint write that fails leaves the previous one intact.
 fresh("ck_keep.h5", "keep.h5")
