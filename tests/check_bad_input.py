@@ -98,7 +98,10 @@ def refused(np_, extra, needle):
         found = core_dumps(cores, t0)
         k.check(not found, f"np={np_} {' '.join(extra)}: no core dump ({', '.join(found) or 'none'})")
         for f in found:  # out of the source tree: the first kept here for a debugger, the others removed
-            shutil.move(f, out("core.first")) if not os.path.exists(out("core.first")) else os.remove(f)
+            if os.path.exists(out("core.first")):
+                os.remove(f)
+            else:
+                shutil.move(f, out("core.first"))
 
 
 for np_, subset in ((1, cases), (2, selected)):
