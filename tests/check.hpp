@@ -31,8 +31,10 @@ inline int checks = 0;
     }                                                                                                                  \
   } while (0)
 
+// Non-zero if a check failed or if none was made (a test that checks nothing verifies nothing).
 inline int ReportChecks(const char *name)
 {
   std::printf("%s: %d checks, %d failed\n", name, tftest::checks, tftest::failures);
-  return tftest::failures ? 1 : 0;
+  if (tftest::checks == 0) std::printf("FAILED %s: no check was made\n", name);
+  return tftest::failures || tftest::checks == 0 ? 1 : 0;
 }

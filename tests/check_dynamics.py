@@ -10,7 +10,10 @@
    Euler's damping over a quarter period (about 4 % here): within 10 %. The
    energy balance including the inertia work holds to 1e-4 of the external
    work although the kinetic energy reaches 3e-3 of it (leaving the inertia
-   work out would show that much error). 1 and 2 ranks agree to 1e-9.
+   work out would show that much error); the error is 5.3e-7 on every
+   OpenBLAS kernel tried, so the bound is 5e-5 (about 100 times). 1 and 2
+   ranks agree to 7e-13 (100 times the largest difference measured: 6.7e-15
+   Haswell, 4.2e-15 SkylakeX).
 2. The quasi-static limit: the default squaring pressed to U = 1 mm at
    1 mm/s gives the quasi-static punch load within 1e-4 (the inertia forces
    are ~(period / process time)^2 smaller than the load).
@@ -29,8 +32,9 @@
 4. A separation inside the shortest step: the same tube on a 4 x 96 mesh to
    U = 0.2 mm (15 trial increments), where a node leaves the die through a
    chain of ever shorter r5 steps down to the 1e-6 floor. With inertia at
-   1 mm/s the load at U = 0.2 mm equals the quasi-static one within 1e-4
-   (the two are the same path there), and no step is left unsettled. (A node
+   1 mm/s the load at U = 0.2 mm equals the quasi-static one within 3e-5
+   (the two are the same path there: measured 2.6e-7 on Haswell and
+   SkylakeX, 100 times that), and no step is left unsettled. (A node
    released only at the commit of the floor step left the ring's
    readjustment to the next full step, which never settled and tripled the
    load.)
@@ -74,10 +78,10 @@ k.check(abs(first / swing - 1) < 0.1, f"first swing {first:.4e} mm, ramp respons
 dyn = H["dyn"]
 ke = dyn["w_kinetic"].max() / dyn["w_ext"][-1]
 err = np.abs(dyn["energy_error"][1:]).max()
-k.check(ke > 1e-3 and err < 1e-4, f"energy balance with inertia: error {err:.1e} (< 1e-4) while the kinetic energy reaches {ke:.1e} of the external work")
+k.check(ke > 1e-3 and err < 5e-5, f"energy balance with inertia: error {err:.1e} (< 5e-5) while the kinetic energy reaches {ke:.1e} of the external work")
 k.check(np.all(dyn["w_inertia"] >= dyn["w_kinetic"] - 1e-12 * dyn["w_ext"][-1]), "backward Euler dissipates: inertia work >= kinetic energy at every increment")
 rel = np.abs(H["dyn2"]["stroke"] - dyn["stroke"]).max() / np.abs(dyn["stroke"]).max()
-k.check(rel < 1e-9, f"1 and 2 ranks: displacement histories agree to {rel:.1e} (1e-9)")
+k.check(rel < 7e-13, f"1 and 2 ranks: displacement histories agree to {rel:.1e} (7e-13)")
 
 
 # 2 and 3: squaring runs, two at a time.
@@ -116,5 +120,5 @@ for u in (1.0, 1.25, 1.5):
     a, b = (np.interp(u, S[n]["stroke"], S[n]["load"]) for n in ("thin1", "thin01"))
     k.check(abs(b - a) < 5e-3 * a, f"mu 0.35 thin tube, 1 vs 0.1 mm/s at U = {u}: {a:.4f} vs {b:.4f} N/mm ({(b - a) / a:+.1e}, 0.5 %)")
 a, b = (S[n]["load"][-1] for n in ("fine_qs", "fine_dyn"))
-k.check(abs(b - a) < 1e-4 * a and S["fine_dyn"]["unsettled"][-1] == 0, f"separation in the shortest step (4 x 96 mesh), load at U = 0.2 mm: inertia {b:.5f}, quasi-static {a:.5f} N/mm ({(b - a) / a:+.1e}, 1e-4), unsettled steps {int(S['fine_dyn']['unsettled'][-1])}")
+k.check(abs(b - a) < 3e-5 * a and S["fine_dyn"]["unsettled"][-1] == 0, f"separation in the shortest step (4 x 96 mesh), load at U = 0.2 mm: inertia {b:.5f}, quasi-static {a:.5f} N/mm ({(b - a) / a:+.1e}, 3e-5), unsettled steps {int(S['fine_dyn']['unsettled'][-1])}")
 k.done()

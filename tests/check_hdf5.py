@@ -93,8 +93,11 @@ with h5py.File("stroke.h5", "r") as h:
     shapes = (h["/vertex_fields/contact_force"].shape, h["/vertex_fields/contact_state"].shape)
 nv = h5py.File("stroke.h5", "r")["/geometry/vertices"].shape[0]
 k.check(shapes == ((len(t), nv, 2), (len(t), nv)), f"contact fields {shapes}")
-k.check(abs(2 * abs(F[:, 1].sum()) - load) <= 1e-9 * load, f"2 x sum of nodal contact forces {2 * abs(F[:, 1].sum()):.10g} "
-        f"== punch load {load:.10g}")
+dF = abs(2 * abs(F[:, 1].sum()) - load) / load
+# Measured 0 (OpenBLAS Haswell, SkylakeX, Prescott); the bound is the worst round-off of summing the nodes'
+# forces in another order (245 nodes x 2.2e-16 = 5e-14), twice over.
+k.check(dF <= 1e-13, f"2 x sum of nodal contact forces {2 * abs(F[:, 1].sum()):.10g} == punch load {load:.10g} "
+        f"({dF:.1e} relative)")
 loaded = np.hypot(F[:, 0], F[:, 1]) > 1e-9 * load
 k.check(loaded.any() and (S[loaded] == 1).all(), f"{loaded.sum()} nodes carry force, all flagged in contact")
 names = {a.get("Name") for a in ET.parse("stroke.xmf").getroot().iter("Attribute")}

@@ -11,8 +11,11 @@ Checks (1 %, the issue's tolerance): the pressure of the increment that r1
 ended on the first yield; p(c) for the plastic radius c measured from the
 plastic Gauss-point area, c in [0.55 b, 0.85 b] (where dp/dc is not small);
 the limit pressure. Energy balance |w_ext - w_int| < 0.5 % of w_ext at every
-increment. The same run on 2 ranks: history within 1e-8 relative (MUMPS
-round-off is ~1e-12 here; a partition-boundary error would be O(1)).
+increment, and w_int = w_plastic + w_elastic within 2e-4 (measured 1.6e-6 on
+every kernel: 100 times that). The same run on 2 ranks: each history column
+within 100 times the largest 1 vs 2 rank difference measured on OpenBLAS
+Haswell, SkylakeX and Prescott (RANKS below; round-off of the summation
+order; a partition-boundary error would be O(1)); n_plastic, a count, equal.
 """
 import os
 import sys
@@ -27,6 +30,10 @@ from analysis import hill_errors  # noqa: E402
 
 tf, mpirun, src = args()
 k_ = Checks("hill")
+# 1 vs 2 ranks, per column: 100 x the largest of the values measured (Haswell, SkylakeX, Prescott):
+# load 1.1e-11, 1.2e-11, 5.5e-12; stroke 3.5e-12, 6.8e-12, 6.3e-12; w_ext 4.0e-12, 7.1e-12, 7.1e-12;
+# rmin 2.2e-10, 4.4e-10, 6.7e-10 (a ratio of small step quantities); n_plastic 0 (a count).
+RANKS = {"load": 1.2e-9, "stroke": 7e-10, "w_ext": 7e-10, "n_plastic": 0.0, "rmin": 7e-8}
 hist = {}
 for n in (1, 2):
     run(tf, mpirun, n, ["-options_file", f"{src}/options/pressure_plastic.opts", "-mesh_nt", 80, "-output_every", 1,
@@ -40,10 +47,10 @@ k_.check(abs(e["limit"]) < 0.01, f"limit pressure {e['p_max']:.3f}, Hill with cu
 k_.check(e["energy"] < 5e-3, f"energy balance: max |w_ext - w_int| / w_ext = {e['energy']:.2e}")
 H = hist[1]
 wp = H["w_plastic"][-1] + H["w_elastic"][-1]
-k_.check(abs(wp / H["w_int"][-1] - 1) < 5e-3, f"w_int = w_plastic + w_elastic within 0.5% ({wp / H['w_int'][-1] - 1:+.2e})")
+k_.check(abs(wp / H["w_int"][-1] - 1) < 2e-4, f"w_int = w_plastic + w_elastic within 2e-4 ({wp / H['w_int'][-1] - 1:+.2e})")
 
-for col in ("load", "stroke", "w_ext", "n_plastic", "rmin"):
+for col, tol in RANKS.items():
     x1, x2 = hist[1][col], hist[2][col]
     rel = np.abs(x1 - x2).max() / max(np.abs(x1).max(), 1e-300) if len(x1) == len(x2) else 1.0
-    k_.check(rel < 1e-8, f"1 vs 2 ranks, history {col}: {rel:.1e} relative")
+    k_.check(rel <= tol, f"1 vs 2 ranks, history {col}: {rel:.1e} relative ({tol:g})")
 k_.done()

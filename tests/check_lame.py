@@ -53,5 +53,8 @@ for lo, hi in ((4, 8), (8, 16)):
     ou = math.log2(e[lo][0] / e[hi][0])
     os_ = math.log2(e[lo][1] / e[hi][1])
     k.check(ou >= 1.8, f"displacement convergence order {lo}->{hi}: {ou:.2f} >= 1.8")
-    k.check(os_ >= 1.5 or lo == 4, f"hoop stress convergence order {lo}->{hi}: {os_:.2f}" + (" >= 1.5" if lo == 8 else " (pre-asymptotic, reported)"))
+    if lo == 8:
+        k.check(os_ >= 1.5, f"hoop stress convergence order {lo}->{hi}: {os_:.2f} >= 1.5")
+    else:  # (a check that always passed before: reported, not checked)
+        print(f"       hoop stress convergence order {lo}->{hi}: {os_:.2f} (pre-asymptotic, reported)")
 k.done()

@@ -1,9 +1,11 @@
 """The pressure scene on 1 and 2 ranks gives the same result.
 
-MUMPS factorizes in a different order on 2 ranks, so the results agree to
-round-off (~1e-14 seen), not bitwise; the tolerance 1e-10 relative leaves
-four orders of margin while catching any missing or double-counted
-contribution at the partition boundary (which would be O(1e-2) or more).
+The matrix entries of nodes on the partition boundary are summed in another
+order on 2 ranks, so the results agree to round-off, not bitwise: measured at
+most 1.6e-14 relative (displacement; stress 1.0e-14, history 6.3e-15) on
+OpenBLAS Haswell, SkylakeX and Prescott. TOL is 100 times that; any missing
+or double-counted contribution at the partition boundary would be O(1e-2) or
+more.
 Vertex order in the files differs between rank counts: nodes are matched by
 their initial coordinates.
 """
@@ -13,6 +15,7 @@ from tfcheck import Checks, args, load, out, run
 
 tf, mpirun, src = args()
 k = Checks("parallel")
+TOL = 1.6e-12  # 100 x the largest measured 1 vs 2 rank difference (1.6e-14, above)
 res = {}
 for n in (1, 2):
     out_ = f"par_np{n}.h5"
@@ -26,10 +29,10 @@ x2, u2, s2, h2 = res[2]
 k.check(np.array_equal(x1, x2), "same nodes on 1 and 2 ranks")
 du = np.abs(u1 - u2).max() / np.abs(u1).max()
 ds = np.abs(s1 - s2).max() / np.abs(s1).max()
-k.check(du < 1e-10, f"displacement agrees: {du:.2e} relative")
-k.check(ds < 1e-10, f"cell stress agrees: {ds:.2e} relative")
+k.check(du < TOL, f"displacement agrees: {du:.2e} relative ({TOL:g})")
+k.check(ds < TOL, f"cell stress agrees: {ds:.2e} relative ({TOL:g})")
 for col in ("stroke", "load", "w_ext", "w_int", "w_elastic", "x_max", "y_max"):
     a, b = h1[col], h2[col]
     rel = np.abs(a - b).max() / max(np.abs(a).max(), 1e-300)
-    k.check(rel < 1e-10, f"history column {col} agrees: {rel:.2e} relative")
+    k.check(rel < TOL, f"history column {col} agrees: {rel:.2e} relative ({TOL:g})")
 k.done()

@@ -21,7 +21,8 @@ parsed = [LINE.match(l) for l in lines]
 k.check(len(lines) >= 3 and all(parsed), f"{len(lines)} progress lines, all of the documented form")
 k.check(len(set(lines)) == len(lines), "each line printed once (rank 0 only)")
 load = [(int(m.group(2)), float(m.group(3)), int(m.group(4))) for m in parsed if m and m.group(1) == "loading"]
-k.check(all(0 <= pc <= 100 for pc, _, _ in load), "loading percent within [0, 100]")
+k.check(len(load) >= 2 and all(0 <= pc <= 100 for pc, _, _ in load),
+        f"{len(load)} loading lines (at least 2), percent within [0, 100]")
 k.check(all(a[0] <= b[0] and a[1] <= b[1] and a[2] < b[2] for a, b in zip(load, load[1:])),
         "percent, stroke and increments rise from line to line")
 p = run(tf, mpirun, 2, base + ["-progress", "0"])

@@ -19,9 +19,13 @@ of the springback stage, the energy accounts and the history.
     the last one before a rank was killed (SIGKILL), on 2 ranks, continuing
     the .partial results the killed run left.
   - 1 -> 2 ranks: the checkpoint of a 1-rank run continued on 2 ranks agrees
-    with the 1-rank run within the parallel tolerance of check_squaring.py
-    (3e-5 relative for load and C/t, set by how the r_min events amplify
-    round-off); fields start anew in a new -output (same -output: refused).
+    with the 1-rank run within 5e-6 relative for load, stroke and shape: 100
+    times the 4.7e-8 measured on OpenBLAS Haswell and SkylakeX alike (the
+    fast preset's PETSc LU uses no BLAS); fields start anew in a new -output
+    (same -output: refused).
+  - Same ranks, 1e-12: measured 0 (bit for bit) in every case on both
+    kernels; the bound is not round-off's but the smallest state defect's
+    (above), so it stays.
   - A failed checkpoint write (its scratch file cannot be created) stops the
     run with one line naming -checkpoint, and leaves the previous checkpoint
     byte for byte as it was.
@@ -161,31 +165,48 @@ if ok:
 
 # A rank killed (SIGKILL) on 2 ranks: mpirun ends the job (no hang), the
 # .partial results and the last checkpoint remain, and the restart continues
-# the .partial file to the same history.
-fresh("kill.h5", "kill.csv", "ck_kill.h5")
+# the .partial file to the same history. The kill must land after a
+# checkpoint and before the run ends: the run is watched until both are on
+# disk (a checkpoint every 40 increments, half the history written) and a rank
+# is killed then; if the run had already finished (a fast machine), it is
+# tried again, up to KILL_ATTEMPTS times; the comparison is never skipped.
+KILL_ATTEMPTS = 3  # a run of ~150 increments outlives the watch loop's 20 ms polling by far; 3 tries make a miss moot
 cmd = [mpirun, "-n", "2", tf] + CASE + ["-output", out("kill.h5"), "-history_csv", out("kill.csv"), "-checkpoint",
                                         out("ck_kill.h5"), "-checkpoint_every", "40", "-output_stroke", "4.2"]
-proc = subprocess.Popen(cmd, cwd=src, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-t0 = time.time()
-while time.time() - t0 < 60 and proc.poll() is None:
-    if os.path.exists(out("ck_kill.h5")) and os.path.exists(out("kill.csv") + ".partial"):
-        with open(out("kill.csv") + ".partial") as f:
-            if sum(1 for _ in f) > rows // 2:
-                break
-    time.sleep(0.02)
-ranks = subprocess.run(["pgrep", "-P", str(proc.pid)], capture_output=True, text=True).stdout.split()
-if ranks:
-    os.kill(int(ranks[-1]), signal.SIGKILL)
-try:
-    proc.communicate(timeout=60)
-    ended = True
-except subprocess.TimeoutExpired:
-    proc.kill()
-    proc.communicate()
-    ended = False
-k.check(len(ranks) == 2 and ended and proc.returncode != 0 and os.path.exists(out("kill.h5") + ".partial"),
-        f"a rank killed: the job ends (exit {proc.returncode}) within 60 s, the .partial results stay")
-if ended and os.path.exists(out("ck_kill.h5")):
+for attempt in range(1, KILL_ATTEMPTS + 1):
+    fresh("kill.h5", "kill.csv", "ck_kill.h5")
+    proc = subprocess.Popen(cmd, cwd=src, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    t0 = time.time()
+    while time.time() - t0 < 300 and proc.poll() is None:
+        if os.path.exists(out("ck_kill.h5")) and os.path.exists(out("kill.csv") + ".partial"):
+            with open(out("kill.csv") + ".partial") as f:
+                if sum(1 for _ in f) > rows // 2:
+                    break
+        time.sleep(0.02)
+    ranks = subprocess.run(["pgrep", "-P", str(proc.pid)], capture_output=True, text=True).stdout.split()
+    killed = False
+    if proc.poll() is None and len(ranks) == 2:
+        try:
+            os.kill(int(ranks[-1]), signal.SIGKILL)
+            killed = True
+        except ProcessLookupError:  # the rank ended between pgrep and the kill
+            pass
+    try:
+        proc.communicate(timeout=60)
+        ended = True
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.communicate()
+        ended = False
+    if killed or not ended:
+        break
+    print(f"       attempt {attempt}: the run ended before a rank could be killed (exit {proc.returncode}); again")
+k.check(killed and ended and proc.returncode != 0 and os.path.exists(out("kill.h5") + ".partial"),
+        f"a rank killed (attempt {attempt} of {KILL_ATTEMPTS}): the job ends (exit {proc.returncode}) within 60 s, "
+        f"the .partial results stay")
+have = ended and os.path.exists(out("ck_kill.h5"))
+k.check(have, "a rank killed: its last checkpoint is on disk")
+if have:
     lam, inc = checkpoint_lambda("ck_kill.h5")
     run(tf, mpirun, 2, CASE + ["-output", out("kill.h5"), "-history_csv", out("kill.csv"), "-restart",
                                out("ck_kill.h5"), "-output_stroke", 4.2])
@@ -205,7 +226,7 @@ k.check(p.returncode != 0 and len(lines) >= 1 and "new -output" in lines[0],
 run(tf, mpirun, 2, CASE + ["-output", out("part12.h5"), "-restart", out("ck1.h5")])
 h, _ = history("part12.h5")
 w, col = worst(full1, h, ["stroke", "load", "c_over_t", "deviation_ratio", "x_max", "y_max"])
-k.check(w <= 3e-5, f"1 -> 2 ranks: load, stroke and shape within {w:.1e} ({col}) of the 1-rank run (3e-5)")
+k.check(w <= 5e-6, f"1 -> 2 ranks: load, stroke and shape within {w:.1e} ({col}) of the 1-rank run (5e-6)")
 
 # A checkpoint write that fails leaves the previous one intact.
 fresh("ck_keep.h5", "keep.h5")

@@ -2,9 +2,10 @@
 pressed on a floor by N = 100 N/mm, then its top pushed sideways.
 References (Coulomb): the tangential force T stays below mu N while the block
 sticks and slides at T = mu N; friction dissipation = mu N x slip.
-  - slide at mu N within 1 % (the issue's tolerance), at 20 and at 200
-    increments (the law accumulates slip, so the increment size must not
-    matter: equal within 1e-3);
+  - slide at mu N within 1.2e-3 (the issue asked 1 %; measured -1.2e-5, the
+    regularized law's residual, on every OpenBLAS kernel tried: 100 times
+    that), at 20 and at 200 increments (the law accumulates slip, so the
+    increment size must not matter: equal within 2e-5, measured 1.9e-7);
   - stick: while T < mu N / 2 the bottom's slip stays below VCRI (1e-3 mm);
   - dissipation = mu N x slip in steady sliding (the second half of the
     push) within 1e-3 (Coulomb's law is exact there; measured 1.2e-5); over
@@ -51,7 +52,8 @@ plateau, excess = {}, {}
 for n in (20, 200):
     H = history(["-increments", n], f"slide_{n}.h5")
     plateau[n] = H["load"][-1]
-    k.check(abs(plateau[n] / (mu * N) - 1) < 0.01, f"{n} increments: sliding force {plateau[n]:.4f} vs mu N = {mu * N:g}")
+    k.check(abs(plateau[n] / (mu * N) - 1) < 1.2e-3, f"{n} increments: sliding force {plateau[n]:.4f} vs mu N = {mu * N:g} "
+            f"({plateau[n] / (mu * N) - 1:+.1e})")
     push = np.nonzero(H["stage"] == 1)[0]
     for name, i0 in (("steady sliding (second half)", push[len(push) // 2]), ("whole push", push[0] - 1)):
         slip = H["slip"][-1] - H["slip"][i0]
@@ -67,7 +69,8 @@ for n in (20, 200):
         k.check(H["penetration"].max() <= 1e-6 and H["tension"].max() <= 0, f"no penetration ({H['penetration'].max():.1e} mm), no tension ({H['tension'].max():.1e})")
 k.check(abs(excess[20]) >= 5 * abs(excess[200]),
         f"whole-push dissipation deficit beyond the tanh law's VCRI ln2 / 3: {excess[20]:.2e} at 20 increments, {excess[200]:.2e} at 200 (first order)")
-k.check(abs(plateau[20] / plateau[200] - 1) < 1e-3, f"sliding force independent of the increment size: {plateau[20]:.5f} vs {plateau[200]:.5f}")
+k.check(abs(plateau[20] / plateau[200] - 1) < 2e-5, f"sliding force independent of the increment size: {plateau[20]:.5f} vs "
+        f"{plateau[200]:.5f} ({plateau[20] / plateau[200] - 1:+.1e})")
 
 H = history(["-slide_push", 0.002, "-increments", 200], "slide_stick.h5")
 stage2 = H["stage"] == 1

@@ -26,15 +26,18 @@ case. Every check compares quantities computed independently of each other
     is consistent with its solution (steps past an event beyond
     -rmin_event_tol are reported);
   - 1 vs 2 ranks (each deterministic: parallel_determinism_np2): load, C1,
-    C2, C/t and external work interpolated at the same strokes within 1e-6
-    relative up to U = 2.6 mm (measured below 1e-6 up to 3.2 mm), and within
-    3e-5 beyond, where the wall collapses and the path amplifies round-off:
+    C2, C/t and external work interpolated at the same strokes within 1.3e-8
+    relative up to U = 2.6 mm (EARLY below: 100 times the largest measured,
+    1.3e-10 on OpenBLAS Haswell, 3.2e-11 on SkylakeX), and within 3e-5
+    beyond, where the wall collapses and the path amplifies round-off:
     a perturbation of 1.3e-13 in E moves load and C/t of the 1-rank run by up
     to 2.6e-6 and 3.3e-6 there, the ranks differ by 2.7e-6 and 6.2e-6
     (scripts/history_stats.py compare), and 3e-5 is ten times that
     sensitivity. A missing or doubled contribution at the partition boundary
     would show at 1e-2 or more;
-  - -rmin_yield inside converges to the same path, and gives it on 2 ranks (below);
+  - consistency, not verification: -rmin_yield inside converges to the path of
+    the onset run above (the code's own result, not an independent
+    reference), and gives it on 2 ranks (below);
   - mu = 0: the problem is symmetric about the 45-degree line while no node
     touches the apex fillet, so C1/C2 = 1 within 1e-6 up to U = 3.5 mm
     (beyond, the collapsing side amplifies round-off: reported).
@@ -72,11 +75,14 @@ k.check(all(H[n]["unsettled"][-1] == 0 and H[n]["inconsistent"][-1] == 0 for n i
         f"more than -rmin_event_tol)")
 grid = np.linspace(0.2, 4.2, 41)
 before = grid <= 2.6
+# 1 vs 2 ranks up to U = 2.6 mm: 100 x the largest difference measured (load 1.26e-10 on OpenBLAS Haswell,
+# 3.24e-11 on SkylakeX; C1, C2, C/t, w_ext at most 5.9e-11); was 1e-6.
+EARLY = 1.3e-8
 for col in ("load", "x_max", "y_max", "c_over_t", "w_ext"):
     curves = [np.interp(grid, H[n]["stroke"][H[n]["stage"] == 0], H[n][col][H[n]["stage"] == 0]) for n in (1, 2)]
     rel = np.abs(curves[0] - curves[1]) / np.abs(curves[0]).max()
-    k.check(rel[before].max() < 1e-6 and rel.max() < 3e-5,
-            f"1 vs 2 ranks, {col}(U): {rel[before].max():.1e} relative up to U = 2.6 mm (1e-6), "
+    k.check(rel[before].max() < EARLY and rel.max() < 3e-5,
+            f"1 vs 2 ranks, {col}(U): {rel[before].max():.1e} relative up to U = 2.6 mm ({EARLY:g}), "
             f"{rel.max():.1e} to 4.2 mm (3e-5)")
 for col in ("x_max", "y_max", "c_over_t"):
     rel = abs(H[1][col][-1] - H[2][col][-1]) / max(abs(H[1][col][-1]), 1e-12)
@@ -86,8 +92,9 @@ print(f"       U = 4.2: load {np.interp(4.2, h['stroke'][load_stage], h['load'][
       f"after springback C/t {h['c_over_t'][-1]:.3f}, C1/C2 {h['deviation_ratio'][-1]:.4f}; "
       f"largest normal-force mismatch {h['fn_mismatch'].max():.3f} N/mm (drift of the incremental method)")
 
-# -rmin_yield inside (points yield inside a step; the increment is not cut at
-# each onset) against the paper's method run above (every onset located
+# Consistency check (not a verification: the reference is this code's own
+# run): -rmin_yield inside (points yield inside a step; the increment is not
+# cut at each onset) against the paper's method run above (every onset located
 # exactly, 7,300 loading increments): the same loading path to first order in
 # the step. At 1,000 trial increments the load within 0.5 % at U = 1, 2, 3,
 # 4.2 mm and C/t within 0.01 at 2, 3, 4.2 mm (the issue's convergence
@@ -109,10 +116,11 @@ for n in (300, 1000):
     err[n] = dp
     if n == 300:
         # The same on 2 ranks (ScanTrial's transition counts and the split
-        # commit are per rank): within 1e-6 relative over the whole stroke
-        # (measured 1.8e-9: 417 increments amplify round-off far less than the
-        # paper method's 7,663; a missing or doubled contribution at the
-        # partition boundary would show at 1e-2).
+        # commit are per rank): within 2.7e-7 relative over the whole stroke
+        # (100 x the measured 2.7e-9 on OpenBLAS Haswell, 6.2e-10 on SkylakeX:
+        # 417 increments amplify round-off far less than the paper method's
+        # 7,663; a missing or doubled contribution at the partition boundary
+        # would show at 1e-2).
         f2 = out("squaring_inside_300_np2.h5")
         run(tf, mpirun, 2, ["-options_file", f"{src}/options/squaring.opts", "-rmin_yield", "inside", "-increments", n,
                             "-unload", "none", "-output", f2, "-output_every", 100000])
@@ -120,13 +128,15 @@ for n in (300, 1000):
             h2 = {c: hf["/history"][c][:] for c in ("stroke", "load", "c_over_t")}
         rel = max(np.abs(np.interp(grid, hi["stroke"], hi[c]) - np.interp(grid, h2["stroke"], h2[c])).max()
                   / np.abs(hi[c]).max() for c in ("load", "c_over_t"))
-        k.check(rel < 1e-6, f"-rmin_yield inside, 1 vs 2 ranks: load and C/t within {rel:.1e} (1e-6)")
+        k.check(rel < 2.7e-7, f"-rmin_yield inside, 1 vs 2 ranks: load and C/t within {rel:.1e} (2.7e-7)")
     if n == 1000:
         ea, eb = np.abs(hi["energy_error"]).max(), np.abs(hi["internal_error"]).max()
         k.check(dp < 5e-3 and dc < 0.01 and ea < 5e-3 and eb < 3e-3,
-                f"-rmin_yield inside, {n} increments ({len(hi['stroke']) - 1} taken): load within {dp:.1e} (5e-3), "
-                f"C/t within {dc:.3f} (0.01) of the onset run; self-checks (a) {ea:.1e}, (b) {eb:.1e}")
-k.check(err[300] > 2 * err[1000], f"-rmin_yield inside converges: load error {err[300]:.1e} at 300, {err[1000]:.1e} at 1000")
+                f"consistency: -rmin_yield inside, {n} increments ({len(hi['stroke']) - 1} taken): load within "
+                f"{dp:.1e} (5e-3), C/t within {dc:.3f} (0.01) of the code's own onset run; self-checks (a) {ea:.1e}, "
+                f"(b) {eb:.1e}")
+k.check(err[300] > 2 * err[1000], f"consistency: -rmin_yield inside converges to the onset run: load difference "
+        f"{err[300]:.1e} at 300, {err[1000]:.1e} at 1000")
 
 f = out("squaring_mu0.h5")
 run(tf, mpirun, 1, ["-options_file", f"{src}/options/squaring.opts", "-friction_mu", 0, "-unload", "none", "-output", f, "-output_every", 100000])

@@ -20,8 +20,9 @@ Swift, a table, perfect plasticity, and compression.
    crosses the yield surface is not cut but split at the onset. So the test
    is convergence: for every law the error falls by at
    least 1.6 from 100 to 200 increments (first order: 2; a wrong limit would
-   give ~1; measured 1.81-2.39), and stays below 2e-2 at 200 (first-order
-   constant N x error below 4; n = 0.1, the steepest law, has 2.9). Past a
+   give ~1; measured 1.81-2.39), and stays below 1.3 times its own measured
+   value at 200 (the bounds beside the cases: a discretization error, the
+   same on every OpenBLAS kernel tried). Past a
    few hundred increments the paths level off 2e-4 (tension) to 7e-4
    (compression, 10 % strain) from this reference: the plastic step solves
    its consistency condition without the Kirchhoff-to-Cauchy term
@@ -111,21 +112,26 @@ def solve(extra, n):
     return H, vm, ep
 
 
+# Each case with the bound on its error at 200 increments: 1.3 x the value measured (the same to 4 digits on
+# OpenBLAS Haswell and SkylakeX: a first-order discretization error, not round-off), so that a defect raising
+# one law's error by a third fails; the former common 2e-2 let aluminum's (7.2e-4) grow 28-fold.
 cases = [
-    ("ludwik aluminum", [], ludwik(165.3, 673.5, 0.927)),
-    ("ludwik n=1", ["-material_n", 1], ludwik(165.3, 673.5, 1.0)),
-    ("ludwik n=0.1", ["-material_n", 0.1], ludwik(165.3, 673.5, 0.1)),
-    ("perfectly plastic", ["-material_k", 0], (lambda ep: 165.3, lambda ep: 0.0)),
-    ("swift", ["-material_law", "swift", "-material_k", 500, "-material_n", 0.2], swift(165.3, 500.0, 0.2)),
+    ("ludwik aluminum", [], ludwik(165.3, 673.5, 0.927), 9.4e-4),  # measured 7.17e-4
+    ("ludwik n=1", ["-material_n", 1], ludwik(165.3, 673.5, 1.0), 1.4e-3),  # 1.05e-3
+    ("ludwik n=0.1", ["-material_n", 0.1], ludwik(165.3, 673.5, 0.1), 1.9e-2),  # 1.45e-2
+    ("perfectly plastic", ["-material_k", 0], (lambda ep: 165.3, lambda ep: 0.0), 2.1e-3),  # 1.56e-3
+    ("swift", ["-material_law", "swift", "-material_k", 500, "-material_n", 0.2], swift(165.3, 500.0, 0.2),
+     5.3e-3),  # 4.07e-3
     ("table", ["-material_law", "table", "-material_table", ",".join(f"{e},{s}" for e, s in table)],
-     (table_sy, table_h)),
-    ("compression", ["-tension_strain", -0.1], ludwik(165.3, 673.5, 0.927)),
+     (table_sy, table_h), 3.3e-3),  # 2.52e-3
+    ("compression", ["-tension_strain", -0.1], ludwik(165.3, 673.5, 0.927), 1.4e-3),  # 1.04e-3
     # Points yield inside a step (the increment is not cut at the onset): the
     # same reference and the same convergence.
-    ("yield inside, aluminum", ["-rmin_yield", "inside"], ludwik(165.3, 673.5, 0.927)),
-    ("yield inside, n=0.1", ["-rmin_yield", "inside", "-material_n", 0.1], ludwik(165.3, 673.5, 0.1)),
+    ("yield inside, aluminum", ["-rmin_yield", "inside"], ludwik(165.3, 673.5, 0.927), 5.7e-3),  # 4.35e-3
+    ("yield inside, n=0.1", ["-rmin_yield", "inside", "-material_n", 0.1], ludwik(165.3, 673.5, 0.1),
+     1.3e-2),  # 9.97e-3
 ]
-for name, extra, (sy, hp) in cases:
+for name, extra, (sy, hp), bound in cases:
     # 1. Drift-corrected stress path against the rate problem, at 100 and 200 increments.
     errors = {}
     for n in (100, 200):
@@ -133,9 +139,9 @@ for name, extra, (sy, hp) in cases:
         e = H["stroke"]
         ref = 2 * reference(e, sy, hp, 20) - reference(e, sy, hp, 10)
         errors[n] = np.abs(H["load"][1:] - ref[1:]).max() / np.abs(ref).max()
-    k.check(errors[100] / errors[200] > 1.6 and errors[200] < 2e-2,
+    k.check(errors[100] / errors[200] > 1.6 and errors[200] < bound,
             f"{name} (drift correction): sigma_xx against the rate problem, error {errors[100]:.1e} -> "
-            f"{errors[200]:.1e} from 100 to 200 increments (ratio {errors[100] / errors[200]:.2f} > 1.6; < 2e-2)")
+            f"{errors[200]:.2e} from 100 to 200 increments (ratio {errors[100] / errors[200]:.2f} > 1.6; < {bound:g})")
     # 2. Without correction: how far sbar drifts off the law's curve.
     _, vm, ep = solve(extra, 400)
     m = ep > 0

@@ -5,7 +5,7 @@
 //  - r5, separation: the pull is -3 times the press, so every bottom node's
 //    normal force f_n + r df_n reaches zero at r = 1/3 of it, up to the
 //    change of geometry and initial stress after the press (relative size:
-//    the strain, 1e-8 here): within 1e-6;
+//    the strain, 1e-8 here; measured 2.8e-9): within 3e-7;
 //  - committing the pull scaled to r5 (what the controller does) leaves no
 //    tension and drops no more force than the group tolerance allows (nodes
 //    whose r5 is within 1 + 1e-6 of the smallest go together: 1e-6 of a
@@ -124,11 +124,14 @@ int main(int argc, char **argv)
   // The controller's way: the pull scaled to r5.
   PetscCall(PressAndPull(comm, -1, pull, pressed, pulled));
   CHECK(pull.who == Limiter::Separation);
-  CHECK_NEAR(pull.r, 1.0 / 3.0, 1e-6);
+  // r5 is off 1/3 by the geometry change after the press: measured 2.8e-9 (1 and 2 ranks, OpenBLAS Haswell,
+  // SkylakeX, Prescott); about 100 times that.
+  CHECK_NEAR(pull.r, 1.0 / 3.0, 3e-7);
   CHECK(pressed.tension == 0 && pressed.release_force == 0);
-  // Round-off of the forces (~1e-15 of P) leaves the tension at r5 far below
-  // 1e-9 P; the force dropped is bounded by the group tolerance.
-  CHECK(pulled.tension <= 1e-9 * kP && pulled.release_force <= 1e-6 * kP);
+  // Round-off of the forces (~1e-15 of P) is all the tension left at r5 (measured 0 and 2.2e-16 N/mm): 100 times
+  // that round-off level. The force dropped stays within the group tolerance (1e-6 of a node's force): measured
+  // 4.2e-8 N/mm (both kernels, 1 and 2 ranks), bounded at about 100 times that.
+  CHECK(pulled.tension <= 1e-13 * kP && pulled.release_force <= 5e-7 * kP);
   PetscCall(PetscPrintf(comm, "pull scaled to r5 = %.12f: tension %.1e, force dropped %.1e N/mm\n", pull.r,
                         pulled.tension, pulled.release_force));
 

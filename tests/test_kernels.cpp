@@ -158,6 +158,7 @@ static void GeneratorTests()
     CHECK(m.validate({"inner", "outer", "x0", "y0"}).empty());
     CHECK(m.node_set("inner").size() == (size_t)nth + 1);
     CHECK(m.node_set("x0").size() == 4);
+    CHECK(m.node_set("y0").size() == 4);
     for (int n : m.node_set("x0")) CHECK(m.xy[2 * n] == 0.0);
     for (int n : m.node_set("y0")) CHECK(m.xy[2 * n + 1] == 0.0);
   }
@@ -173,6 +174,7 @@ static void GmshTests(const std::string &dir)
   CHECK(m.validate({"inner", "outer", "x0", "y0"}).empty());
   CHECK(m.node_set("inner").size() == 9);
   CHECK(m.node_set("y0").size() == 5);
+  CHECK(m.node_set("outer").size() == 9);
   for (int n : m.node_set("outer")) CHECK_NEAR(std::hypot(m.xy[2 * n], m.xy[2 * n + 1]), 20.0, 1e-12);
   // Bad files give one-line reasons naming the file.
   const std::string missing = ReadGmsh(dir + "/meshes/no_such_file.msh", m);

@@ -1,13 +1,23 @@
-// Unit tests of the J2 material point and the hardening laws (no MPI):
-//  - the plastic step solves 3G dep + sy(ep+dep) - sy(ep) = 3G a/sbar, so on
-//    a proportional, isochoric path (de = (d, -d, 0, 0)) the tangent update
-//    must land exactly on the flow curve: sbar = sy(ep) with
-//    ep = (2/sqrt 3) eps - sy(ep)/(3G) solved independently by bisection
-//    (the exact integral of the law along the path), for Ludwik (n = 0.927,
-//    n = 1, n = 0.1), Swift, a table and perfect plasticity;
+// Unit tests of the J2 material point and the hardening laws (no MPI), against
+// references written out here, not taken from the classes under test:
+//  - the flow curves by their formulas: Ludwik sy0 + K ep^n, Swift K (ep0 + ep)^n
+//    with ep0 = (sy0/K)^(1/n), the table's straight pieces;
+//  - plane-strain elasticity in closed form: uniaxial strain gives
+//    (lambda + 2G, lambda, lambda) eps, uniaxial stress (sigma_yy = 0,
+//    eps_yy = -nu/(1 - nu) eps) gives E' = E/(1 - nu^2) and sigma_zz = nu sigma_xx,
+//    shear G gamma;
+//  - the plastic step solves 3G dep + sy(ep+dep) - sy(ep) = 3G a/sbar, so on a
+//    proportional, isochoric path (de = (d, -d, 0, 0)) the tangent update must
+//    land exactly on the flow curve: ep from ep + sy(ep)/(3G) = (2/sqrt 3) eps
+//    (bisection here), and sigma_xx = -sigma_yy = 2G (eps - (sqrt 3/2) ep),
+//    sigma_zz = sigma_xy = 0 (the exact integral of the law along the path), for
+//    Ludwik (n = 0.927, 1, 0.1), Swift, a table and perfect plasticity;
+//  - linear hardening (H' = K): the elastic-plastic tangent on that path is
+//    2G H'/(3G + H') (paper eq. 1 worked by hand for s = (s, -s, 0, 0));
 //  - r1 puts an elastic point exactly on the yield surface;
-//  - loading/unloading switches; the elastic tangent of an elastic point.
+//  - loading/unloading switches; r2 and r3.
 #include <cmath>
+#include <functional>
 #include <memory>
 
 #include "check.hpp"
@@ -18,26 +28,50 @@ using namespace tf;
 
 namespace {
 const double kE = 75000, kNu = 0.34, kG = kE / (2 * (1 + kNu));
+const double kLambda = kE * kNu / ((1 + kNu) * (1 - 2 * kNu));
+// Relative tolerance of every comparison below: the updates are exact on these
+// paths and the references closed forms, so only round-off separates them
+// (measured at most 6e-14, on any OpenBLAS kernel: no BLAS is involved).
+const double kRoundOff = 1e-12;
+using FlowCurve = std::function<double(double)>;
+
+// The flow curves, written out (the reference; the classes are under test).
+FlowCurve Ludwik(double sy0, double k, double n)
+{
+  return [=](double ep) { return sy0 + k * std::pow(ep, n); };
+}
+FlowCurve Swift(double sy0, double k, double n)
+{
+  const double ep0 = std::pow(sy0 / k, 1 / n);
+  return [=](double ep) { return k * std::pow(ep0 + ep, n); };
+}
+// Through (0, 165), (0.01, 200), (0.05, 240), flat beyond.
+double Table(double ep)
+{
+  if (ep < 0.01) return 165 + 3500 * ep;
+  if (ep < 0.05) return 200 + 1000 * (ep - 0.01);
+  return 240;
+}
 
 // Exact ep on the path for total strain eps (equivalent strain (2/sqrt3) eps).
-double ExactEp(const Hardening &h, double eps)
+double ExactEp(const FlowCurve &sy, double eps)
 {
   const double eq = 2 / std::sqrt(3.0) * eps;
-  if (eq <= h.YieldStress(0) / (3 * kG)) return 0;
+  if (eq <= sy(0) / (3 * kG)) return 0;
   double lo = 0, hi = eq;
   for (int it = 0; it < 200; ++it) {
     const double mid = 0.5 * (lo + hi);
-    (mid + h.YieldStress(mid) / (3 * kG) < eq ? lo : hi) = mid;
+    (mid + sy(mid) / (3 * kG) < eq ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }
 
-void ProportionalPath(const char *name, std::unique_ptr<Hardening> law, std::unique_ptr<Hardening> ref)
+void ProportionalPath(const char *name, std::unique_ptr<Hardening> law, const FlowCurve &sy)
 {
   J2Plasticity m(kE, kNu, std::move(law), 2e-3, false);
   PointState s;
   const double d = 2e-4; // strain step; yield near eps = 1e-3
-  double eps = 0, worst_ep = 0, worst_s = 0, drift = 0;
+  double eps = 0, worst_ep = 0, worst_s = 0, worst_sigma = 0, drift = 0;
   for (int k = 0; k < 500; ++k) {
     Voigt de = {d, -d, 0, 0};
     // Elastic points are brought to the surface by r1 first, as the driver does.
@@ -46,46 +80,95 @@ void ProportionalPath(const char *name, std::unique_ptr<Hardening> law, std::uni
       Voigt part = {r * d, -r * d, 0, 0};
       m.Update(s, part);
       s.plastic = true;
-      CHECK_NEAR(VonMises(s.sigma), ref->YieldStress(0), 1e-9 * ref->YieldStress(0));
+      CHECK_NEAR(VonMises(s.sigma), sy(0), kRoundOff * sy(0));
       de = {(1 - r) * d, -(1 - r) * d, 0, 0};
     }
     const UpdateInfo u = m.Update(s, de);
     drift = std::max(drift, std::abs(u.drift));
     eps += d;
-    const double ep = ExactEp(*ref, eps);
+    const double ep = ExactEp(sy, eps), sxx = 2 * kG * (eps - std::sqrt(3.0) / 2 * ep);
     worst_ep = std::max(worst_ep, std::abs(s.ep - ep) / std::max(ep, 1e-3));
-    worst_s = std::max(worst_s, std::abs(VonMises(s.sigma) - ref->YieldStress(s.ep)) / ref->YieldStress(s.ep) *
-                                  (s.plastic ? 1 : 0));
+    worst_s = std::max(worst_s, std::abs(VonMises(s.sigma) - sy(s.ep)) / sy(s.ep) * (s.plastic ? 1 : 0));
+    const double dev =
+      std::max({std::abs(s.sigma[0] - sxx), std::abs(s.sigma[1] + sxx), std::abs(s.sigma[2]), std::abs(s.sigma[3])});
+    worst_sigma = std::max(worst_sigma, dev / sy(0));
   }
-  std::printf("%-22s eps = 0.1: ep = %.6f (exact %.6f), max rel. error ep %.1e, sbar vs sy(ep) %.1e, drift %.1e\n",
-              name, s.ep, ExactEp(*ref, eps), worst_ep, worst_s, drift);
-  // Round-off level: the update is exact on this path.
-  CHECK(worst_ep < 1e-9);
-  CHECK(worst_s < 1e-9);
+  std::printf("%-22s eps = 0.1: ep = %.6f (exact %.6f), max rel. error ep %.1e, sbar vs sy(ep) %.1e, stress %.1e, "
+              "drift %.1e\n",
+              name, s.ep, ExactEp(sy, eps), worst_ep, worst_s, worst_sigma, drift);
+  CHECK(worst_ep < kRoundOff);
+  CHECK(worst_s < kRoundOff);
+  CHECK(worst_sigma < kRoundOff);
+}
+
+// Plane-strain elasticity from zero stress (the Kirchhoff term sigma tr(de) vanishes).
+void ElasticClosedForm()
+{
+  const Elastic m(kE, kNu);
+  const double d = 1e-4, tol = kRoundOff * kE * d;
+  PointState s;
+  m.Update(s, {d, 0, 0, 0}); // uniaxial strain
+  CHECK_NEAR(s.sigma[0], (kLambda + 2 * kG) * d, tol);
+  CHECK_NEAR(s.sigma[1], kLambda * d, tol);
+  CHECK_NEAR(s.sigma[2], kLambda * d, tol);
+  CHECK_NEAR(s.sigma[3], 0, tol);
+  s = PointState();
+  m.Update(s, {d, -kNu / (1 - kNu) * d, 0, 0}); // uniaxial stress in plane strain
+  CHECK_NEAR(s.sigma[0], kE / (1 - kNu * kNu) * d, tol);
+  CHECK_NEAR(s.sigma[1], 0, tol);
+  CHECK_NEAR(s.sigma[2], kNu * s.sigma[0], tol);
+  s = PointState();
+  m.Update(s, {0, 0, 0, d}); // engineering shear strain gamma
+  CHECK_NEAR(s.sigma[3], kG * d, tol);
+  CHECK_NEAR(s.sigma[0], 0, tol);
+  // Energy density sigma : eps / 2 of that shear.
+  CHECK_NEAR(m.ElasticEnergy(s.sigma), 0.5 * kG * d * d, kRoundOff * kG * d * d);
+}
+
+// Linear hardening: after a plastic step on the isochoric path, the tangent's
+// xx response to de = (d, -d, 0, 0) is 2G H'/(3G + H') d (H' = K exactly).
+void LinearHardeningTangent()
+{
+  const double sy0 = 165.3, k = 673.5, d = 1e-4;
+  J2Plasticity m(kE, kNu, std::make_unique<LudwikHardening>(sy0, k, 1.0), 2e-3, false);
+  PointState s;
+  s.sigma = {sy0 / std::sqrt(3.0), -sy0 / std::sqrt(3.0), 0, 0};
+  s.plastic = true;
+  m.Update(s, {d, -d, 0, 0});
+  const Mat4 c = m.Tangent(s);
+  const double dsxx = c[0][0] * d - c[0][1] * d, expect = 2 * kG * k / (3 * kG + k) * d;
+  CHECK_NEAR(dsxx, expect, kRoundOff * std::abs(expect));
+  CHECK_NEAR(c[2][0] * d - c[2][1] * d, 0, kRoundOff * std::abs(expect)); // sigma_zz: s_zz = 0 on this path
 }
 } // namespace
 
 int main()
 {
   ProportionalPath("ludwik aluminum", std::make_unique<LudwikHardening>(165.3, 673.5, 0.927),
-                   std::make_unique<LudwikHardening>(165.3, 673.5, 0.927));
-  ProportionalPath("ludwik n = 1", std::make_unique<LudwikHardening>(165.3, 673.5, 1.0),
-                   std::make_unique<LudwikHardening>(165.3, 673.5, 1.0));
-  ProportionalPath("ludwik n = 0.1", std::make_unique<LudwikHardening>(165.3, 673.5, 0.1),
-                   std::make_unique<LudwikHardening>(165.3, 673.5, 0.1));
+                   Ludwik(165.3, 673.5, 0.927));
+  ProportionalPath("ludwik n = 1", std::make_unique<LudwikHardening>(165.3, 673.5, 1.0), Ludwik(165.3, 673.5, 1.0));
+  ProportionalPath("ludwik n = 0.1", std::make_unique<LudwikHardening>(165.3, 673.5, 0.1), Ludwik(165.3, 673.5, 0.1));
   ProportionalPath("perfectly plastic", std::make_unique<LudwikHardening>(165.3, 0.0, 1.0),
-                   std::make_unique<LudwikHardening>(165.3, 0.0, 1.0));
-  ProportionalPath("swift", std::make_unique<SwiftHardening>(165.3, 500.0, 0.2),
-                   std::make_unique<SwiftHardening>(165.3, 500.0, 0.2));
+                   [](double) { return 165.3; });
+  ProportionalPath("swift", std::make_unique<SwiftHardening>(165.3, 500.0, 0.2), Swift(165.3, 500.0, 0.2));
   ProportionalPath(
     "table", std::make_unique<TableHardening>(std::vector<double>{0, 0.01, 0.05}, std::vector<double>{165, 200, 240}),
-    std::make_unique<TableHardening>(std::vector<double>{0, 0.01, 0.05}, std::vector<double>{165, 200, 240}));
+    Table);
+  ElasticClosedForm();
+  LinearHardeningTangent();
 
-  // Swift starts at sy0; the table interpolates and stays flat past its end.
-  CHECK_NEAR(SwiftHardening(165.3, 500.0, 0.2).YieldStress(0), 165.3, 1e-9);
+  // The laws against their formulas at a few points (Swift starts at sy0; the
+  // table interpolates and stays flat past its end).
+  for (const double ep : {0.0, 1e-4, 0.003, 0.02, 0.3}) {
+    CHECK_NEAR(LudwikHardening(165.3, 673.5, 0.927).YieldStress(ep), Ludwik(165.3, 673.5, 0.927)(ep),
+               kRoundOff * 165.3);
+    CHECK_NEAR(SwiftHardening(165.3, 500.0, 0.2).YieldStress(ep), Swift(165.3, 500.0, 0.2)(ep), kRoundOff * 165.3);
+    CHECK_NEAR(TableHardening({0, 0.01, 0.05}, {165, 200, 240}).YieldStress(ep), Table(ep), kRoundOff * 165);
+  }
+  CHECK_NEAR(SwiftHardening(165.3, 500.0, 0.2).YieldStress(0), 165.3, kRoundOff * 165.3);
   const TableHardening t({0, 0.01, 0.05}, {165, 200, 240});
-  CHECK_NEAR(t.YieldStress(0.005), 182.5, 1e-12);
-  CHECK_NEAR(t.YieldStress(1.0), 240, 1e-12);
+  CHECK_NEAR(t.YieldStress(0.005), 182.5, kRoundOff * 182.5);
+  CHECK_NEAR(t.YieldStress(1.0), 240, kRoundOff * 240);
   // The secant slope is finite where H' is not (Ludwik n < 1 at ep = 0).
   const LudwikHardening l(165.3, 673.5, 0.1);
   CHECK(std::isfinite(l.SecantSlope(0, 2e-3)) && l.SecantSlope(0, 2e-3) > 0);
@@ -98,14 +181,21 @@ int main()
     const Voigt de = {3e-3, 1e-3, 0, 2e-3};
     const double omega = 0.05, r = m.YieldOnset(s, de, omega);
     CHECK(r > 0 && r < 1);
-    // The linear path of the increment: dsigma = D de + (W sigma - sigma W) - sigma tr(de).
-    const Mat4 d = IsotropicElasticMatrix(kE, kNu);
-    Voigt ds{}, spun = s.sigma, at = s.sigma;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) ds[i] += d[i][j] * de[j];
-    JaumannUpdate({0, 0, 0, 0}, 0.0, omega, spun);
-    for (int i = 0; i < 4; ++i) at[i] += r * (ds[i] + spun[i] - s.sigma[i] - s.sigma[i] * (de[0] + de[1] + de[2]));
-    CHECK_NEAR(VonMises(at), 165.3, 1e-10 * 165.3);
+    // The linear path of the increment: dsigma = D de + (W sigma - sigma W) - sigma tr(de),
+    // D written out (plane strain: lambda + 2G on the diagonal, lambda off it, G for gamma).
+    const double dm[4][4] = {{kLambda + 2 * kG, kLambda, kLambda, 0},
+                             {kLambda, kLambda + 2 * kG, kLambda, 0},
+                             {kLambda, kLambda, kLambda + 2 * kG, 0},
+                             {0, 0, 0, kG}};
+    // Spin (W = [[0, w], [-w, 0]]): W sigma - sigma W = (2 w sxy, -2 w sxy, 0, w (syy - sxx)).
+    const Voigt spin = {2 * omega * s.sigma[3], -2 * omega * s.sigma[3], 0, omega * (s.sigma[1] - s.sigma[0])};
+    Voigt at = s.sigma;
+    for (int i = 0; i < 4; ++i) {
+      double ds = 0;
+      for (int j = 0; j < 4; ++j) ds += dm[i][j] * de[j];
+      at[i] += r * (ds + spin[i] - s.sigma[i] * (de[0] + de[1] + de[2]));
+    }
+    CHECK_NEAR(VonMises(at), 165.3, kRoundOff * 165.3);
   }
   // Loading/unloading: a plastic point that unloads turns elastic.
   {

@@ -1,5 +1,7 @@
 """Shared helpers of tubeform's Python checks (run with /usr/bin/python3)."""
+import glob
 import os
+import resource
 import subprocess
 import sys
 
@@ -17,19 +19,85 @@ def out(name):
     return os.path.join(os.getcwd(), name)
 
 
-def run(tf, mpirun, np_, opts, check=True, timeout=300):
+# Seconds mpirun gets to end its ranks after SIGTERM (it sends them SIGTERM,
+# then SIGKILL a few seconds later) before it is killed itself.
+KILL_GRACE = 20
+
+
+def run(tf, mpirun, np_, opts, check=True, timeout=300, report_hang=False):
     """Runs tubeform on np_ ranks from the source directory (where scene files
     find options/solver.opts, as users run it); returns the CompletedProcess.
-    Output paths given to it must be absolute (see out())."""
+    A run still going after `timeout` seconds is killed with its ranks and ends
+    the test, or with report_hang is returned with timed_out set (crashed()
+    names it). Output paths given to it must be absolute (see out())."""
     # One rank runs as an MPI singleton: the same code path, without mpirun's
     # ~2 s wind-down after a non-zero exit.
     cmd = ([mpirun, "-n", str(np_)] if np_ > 1 else []) + [tf] + [str(o) for o in opts]
-    p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, cwd=sys.argv[3])
-    if check and p.returncode != 0:
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=sys.argv[3])
+    timed_out = False
+    try:
+        stdout, stderr = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        # A hang (a rank waiting for one that left): mpirun, sent SIGTERM, ends its
+        # ranks (SIGTERM, then SIGKILL), so none is left behind; then SIGKILL.
+        timed_out = True
+        proc.terminate()
+        try:
+            stdout, stderr = proc.communicate(timeout=KILL_GRACE)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            stdout, stderr = proc.communicate()
+    p = subprocess.CompletedProcess(cmd, proc.returncode, stdout, stderr)
+    p.timed_out = timed_out  # crashed() counts it
+    if (check and p.returncode != 0) or (timed_out and not report_hang):
         print(" ".join(cmd))
         print(p.stdout, p.stderr)
-        raise SystemExit(f"tubeform failed with exit code {p.returncode}")
+        raise SystemExit(f"tubeform did not finish within {timeout} s (killed)" if timed_out else
+                         f"tubeform failed with exit code {p.returncode}")
     return p
+
+
+# What a crashed rank leaves in a run's output: PETSc's signal handler (it turns
+# SIGSEGV, SIGFPE, ... into MPI_Abort, exit 59), mpirun's report of a rank
+# killed by a signal, an MPI_Abort, main's abort after an error seen by one rank.
+CRASH_MARKS = ("Caught signal", "exited on signal", "MPI_ABORT", "error on rank")
+
+
+def crashed(p):
+    """Why a run counts as a crash ("" if it does not): it hung (run() killed
+    it), Python reports a signal as a negative exit code, mpirun and shells as
+    128 + N; or a mark of CRASH_MARKS in its output."""
+    if getattr(p, "timed_out", False):
+        return "no exit within its timeout (a hang): killed"
+    if p.returncode < 0:
+        return f"killed by signal {-p.returncode}"
+    if p.returncode >= 128:
+        return f"exit {p.returncode}: signal {p.returncode - 128}"
+    text = (p.stdout or "") + (p.stderr or "")
+    marks = [m for m in CRASH_MARKS if m in text]
+    return f"'{marks[0]}' in its output" if marks else ""
+
+
+def allow_core_dumps():
+    """Lets the runs started from here write core files (the soft core size
+    limit raised to the hard one) and says where a crash of tubeform (run from
+    the source directory) would leave them: (directory, name prefix), or None
+    with the reason when no core file can appear there (cores piped to a
+    program such as systemd-coredump, or a hard limit of 0)."""
+    pattern = open("/proc/sys/kernel/core_pattern").read().strip()
+    _, hard = resource.getrlimit(resource.RLIMIT_CORE)
+    if pattern.startswith("|"):
+        return None, f"core_pattern pipes cores to a program ({pattern.split()[0][1:]})"
+    if hard == 0:
+        return None, "the hard core size limit is 0"
+    resource.setrlimit(resource.RLIMIT_CORE, (hard, hard))
+    where = os.path.join(sys.argv[3], os.path.dirname(pattern))  # (an absolute pattern keeps its own directory)
+    return (where, os.path.basename(pattern).split("%")[0] or "core"), ""
+
+
+def core_dumps(where, since):
+    """Core files written at `where` (from allow_core_dumps) since the time `since`."""
+    return [f for f in glob.glob(os.path.join(where[0], where[1] + "*")) if os.path.getmtime(f) >= since]
 
 
 def load(path):
@@ -47,7 +115,8 @@ def load(path):
 
 
 class Checks:
-    """Collects pass/fail lines; exit code 1 if any failed."""
+    """Collects pass/fail lines; exit code 1 if any failed, or if none was made
+    (a test whose checks were all skipped verifies nothing)."""
 
     def __init__(self, name):
         self.name, self.failed, self.total = name, 0, 0
@@ -59,4 +128,6 @@ class Checks:
 
     def done(self):
         print(f"{self.name}: {self.total - self.failed} passed, {self.failed} failed")
-        sys.exit(1 if self.failed else 0)
+        if self.total == 0:
+            print(f"FAILED {self.name}: no check was made")
+        sys.exit(1 if self.failed or self.total == 0 else 0)

@@ -416,8 +416,14 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCheck(opt.checkpoint_every == 0 || !opt.checkpoint.empty(), comm, PETSC_ERR_USER_INPUT,
              "-checkpoint_every %d: needs -checkpoint FILE", (int)opt.checkpoint_every);
   if (!opt.mesh_file.empty()) {
-    std::ifstream probe(opt.mesh_file);
-    PetscCheck(probe.good(), comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: cannot open the file (missing or unreadable)",
+    // Rank 0 reads the mesh, so rank 0 looks (another rank, on another node,
+    // may see another file system) and tells the others.
+    PetscMPIInt rank;
+    int readable = 0;
+    PetscCallMPI(MPI_Comm_rank(comm, &rank));
+    if (rank == 0) readable = std::ifstream(opt.mesh_file).good();
+    PetscCallMPI(MPI_Bcast(&readable, 1, MPI_INT, 0, comm));
+    PetscCheck(readable, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: cannot open the file (missing or unreadable)",
                opt.mesh_file.c_str());
   }
   PetscFunctionReturn(PETSC_SUCCESS);

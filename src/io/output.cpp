@@ -220,29 +220,42 @@ PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std
   PetscCall(PetscViewerPopFormat(viewer_));
   PetscCall(PetscViewerDestroy(&viewer_));
 
+  // Rank 0 renames the file and writes the .xmf; every rank learns how that went
+  // before any raises it (one rank returning alone would leave the others waiting).
   PetscCallMPI(MPI_Barrier(mesh_->comm));
-  int ok = 1;
+  enum { kWritten, kNotRenamed, kNoXdmf };
+  int status = kWritten;
   if (rank == 0) {
-    ok = std::rename((path_ + ".partial").c_str(), path_.c_str()) == 0;
-    if (ok) PetscCall(WriteXdmf());
+    if (std::rename((path_ + ".partial").c_str(), path_.c_str()) != 0)
+      status = kNotRenamed;
+    else if (!WriteXdmf())
+      status = kNoXdmf;
   }
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, mesh_->comm));
-  PetscCheck(ok, mesh_->comm, PETSC_ERR_FILE_WRITE, "-output %s: cannot rename the finished file into place",
-             path_.c_str());
+  PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, mesh_->comm));
+  PetscCheck(status != kNotRenamed, mesh_->comm, PETSC_ERR_FILE_WRITE,
+             "-output %s: cannot rename the finished file into place", path_.c_str());
+  PetscCheck(status != kNoXdmf, mesh_->comm, PETSC_ERR_FILE_WRITE,
+             "-output %s: the results are written, but their ParaView index %s cannot be written", path_.c_str(),
+             XdmfPath().c_str());
   PetscCall(PetscLogEventEnd(Log::output, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ResultWriter::WriteXdmf() const
+std::string ResultWriter::XdmfPath() const
 {
-  PetscFunctionBeginUser;
+  std::string base = path_;
+  if (base.size() > 3 && base.substr(base.size() - 3) == ".h5") base.resize(base.size() - 3);
+  return base + ".xmf";
+}
+
+bool ResultWriter::WriteXdmf() const
+{
   // ParaView reads the mesh (initial coordinates) and the fields from the .h5;
   // "Warp By Vector" with displacement shows the deformed shape.
-  std::string h5 = path_, base = path_;
+  std::string h5 = path_;
   const auto slash = h5.rfind('/');
   if (slash != std::string::npos) h5 = h5.substr(slash + 1);
-  if (base.size() > 3 && base.substr(base.size() - 3) == ".h5") base.resize(base.size() - 3);
-  std::ofstream x(base + ".xmf");
+  std::ofstream x(XdmfPath());
   const PetscInt nv = mesh_->num_global_nodes, nc = mesh_->num_global_cells, nt = (PetscInt)times_.size();
   x << "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n<Domain>\n";
   x << "<Grid Name=\"tubeform\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
@@ -279,8 +292,8 @@ PetscErrorCode ResultWriter::WriteXdmf() const
     x << " </Grid>\n";
   }
   x << "</Grid>\n</Domain>\n</Xdmf>\n";
-  PetscCheck(x.good(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "cannot write %s.xmf", base.c_str());
-  PetscFunctionReturn(PETSC_SUCCESS);
+  x.close();
+  return !x.fail();
 }
 
 } // namespace tf

@@ -60,7 +60,10 @@ PetscErrorCode Mesh::Create(MPI_Comm c, const SerialMesh &serial, const std::vec
   PetscCall(PetscObjectSetName((PetscObject)serial_dm, "mesh"));
 
   // 2. Boundary sets become labels on edges (and, completed, their vertices);
-  //    labels travel with the points when the mesh is distributed.
+  //    labels travel with the points when the mesh is distributed. Only rank 0
+  //    sees the segments: a segment that is no cell edge (SerialMesh::validate
+  //    refuses such meshes first) is agreed on by every rank before it is raised.
+  char bad[PETSC_MAX_PATH_LEN] = "";
   for (const auto &name : sets) {
     DMLabel label;
     PetscCall(DMCreateLabel(serial_dm, name.c_str()));
@@ -71,32 +74,41 @@ PetscErrorCode Mesh::Create(MPI_Comm c, const SerialMesh &serial, const std::vec
         PetscInt njoin;
         const PetscInt *join;
         PetscCall(DMPlexGetJoin(serial_dm, 2, verts, &njoin, &join));
-        PetscCheck(njoin == 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-                   "Boundary set '%s': nodes %d and %d are not joined by a cell edge", name.c_str(), (int)e[0],
-                   (int)e[1]);
-        PetscCall(DMLabelSetValue(label, join[0], 1));
+        if (njoin == 1)
+          PetscCall(DMLabelSetValue(label, join[0], 1));
+        else if (!bad[0])
+          PetscCall(PetscSNPrintf(bad, sizeof(bad), "boundary set '%s': nodes %d and %d are not joined by a cell edge",
+                                  name.c_str(), (int)e[0], (int)e[1]));
         PetscCall(DMPlexRestoreJoin(serial_dm, 2, verts, &njoin, &join));
       }
     }
     PetscCall(DMPlexLabelComplete(serial_dm, label));
   }
+  PetscCallMPI(MPI_Bcast(bad, sizeof(bad), MPI_CHAR, 0, comm));
+  if (bad[0]) PetscCall(DMDestroy(&serial_dm));
+  PetscCheck(!bad[0], comm, PETSC_ERR_USER_INPUT, "%s", bad);
 
   // 3. METIS decides which rank owns each cell; a shell partitioner hands that
   //    to DMPlexDistribute.
+  //    A rank left without cells is seen on rank 0 alone: agreed on first.
   if (size > 1) {
     std::vector<PetscInt> sizes(size, 0), points;
+    int empty = -1; // a rank METIS left without cells
     if (rank == 0) {
       std::vector<int> part;
       PetscCall(PartitionCells(serial, size, part));
       std::vector<std::vector<PetscInt>> byrank(size);
       for (PetscInt cidx = 0; cidx < nc; ++cidx) byrank[part[cidx]].push_back(cidx);
       for (int r = 0; r < size; ++r) {
-        PetscCheck(!byrank[r].empty(), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-                   "METIS left rank %d without cells: use fewer ranks or a finer mesh", r);
+        if (byrank[r].empty() && empty < 0) empty = r;
         sizes[r] = (PetscInt)byrank[r].size();
         points.insert(points.end(), byrank[r].begin(), byrank[r].end());
       }
     }
+    PetscCallMPI(MPI_Bcast(&empty, 1, MPI_INT, 0, comm));
+    if (empty >= 0) PetscCall(DMDestroy(&serial_dm));
+    PetscCheck(empty < 0, comm, PETSC_ERR_USER_INPUT,
+               "METIS left rank %d without cells: use fewer ranks or a finer mesh", empty);
     PetscPartitioner part;
     PetscCall(DMPlexGetPartitioner(serial_dm, &part));
     PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERSHELL));

@@ -12,8 +12,12 @@ PetscErrorCode PartitionCells(const SerialMesh &mesh, int nparts, std::vector<in
   idx_t ne = mesh.num_cells(), nn = mesh.num_nodes();
   part.assign(ne, 0);
   if (nparts <= 1 || ne == 0) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(ne >= nparts, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-             "Mesh has %d cells, fewer than the %d MPI ranks: use fewer ranks or a finer mesh", (int)ne, nparts);
+  // Runs on rank 0 alone: a user error raised here would leave the other ranks
+  // waiting. The caller refuses such a mesh on every rank first (Problem::Setup),
+  // so this is a program error (main aborts the job on it).
+  PetscCheck(ne >= nparts, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "Mesh has %d cells, fewer than the %d MPI ranks (the caller must refuse this on every rank)", (int)ne,
+             nparts);
 
   std::vector<idx_t> eptr(ne + 1), eind(mesh.quads.begin(), mesh.quads.end()), epart(ne), npart(nn);
   for (idx_t c = 0; c <= ne; ++c) eptr[c] = 4 * c;

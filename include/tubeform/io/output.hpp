@@ -43,7 +43,7 @@ public:
   // Collective: one time-series entry (the same fields at every step).
   PetscErrorCode WriteStep(PetscInt step, double time, const std::vector<NodeField> &nodes,
                            const std::vector<CellField> &cells);
-  // Collective: history, attributes, the .xmf, then the rename.
+  // Collective: history, attributes, the rename, then the .xmf (a failure of either is every rank's).
   PetscErrorCode Close(const History &history, const std::vector<std::pair<std::string, double>> &metrics);
 
 private:
@@ -53,7 +53,9 @@ private:
   std::vector<double> times_;
   std::vector<std::string> cell_names_;
   std::vector<std::pair<std::string, int>> node_names_; // name, components
-  PetscErrorCode WriteXdmf() const;
+  // The .xmf beside the .h5 (rank 0 alone; false when it could not be written).
+  bool WriteXdmf() const;
+  std::string XdmfPath() const;
 };
 
 // Collective: an error on every rank unless a file can be created at `path`

@@ -27,7 +27,8 @@ struct SerialMesh {
   double cell_area(int c) const;
 
   // Empty string when the mesh is usable (cells counter-clockwise with positive
-  // area, ids in range, each required boundary set present); else a one-line reason.
+  // area, ids in range, each required boundary set present and made of cell
+  // sides); else a one-line reason.
   std::string validate(const std::vector<std::string> &required_sets) const;
 };
 

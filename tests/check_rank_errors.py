@@ -1,0 +1,56 @@
+"""Errors that one rank sees alone (issue 21 item 4) end the run on every rank
+with one line, exit code 1 and no hang, on 2 ranks (and 1):
+  - a Gmsh mesh whose physical curve holds a segment that is no side of a cell
+    (tests/fuzz/regressions/gmsh/boundary_segment_not_a_cell_side.msh: the
+    4 x 8 thick cylinder with one 'outer' segment from node 8 to node 10,
+    skipping 9). Only rank 0 reads the mesh; SerialMesh::validate refuses it
+    before any work, naming the file and the curve. (Before: rank 0 failed
+    while labelling it and returned, the other rank waited in
+    DMPlexDistribute for ever.)
+  - the ParaView index (.xmf) that cannot be written while the .h5 can: a
+    directory stands where the .xmf goes. Rank 0 writes the .xmf after the
+    run; the failure is told to every rank before it is raised, and the
+    results stay in place. (Before: rank 0 returned with the error, the other
+    waited in MPI_Bcast for ever.)
+Each run gets TIMEOUT seconds: a hang is killed with its ranks and fails.
+"""
+import os
+import shutil
+
+from tfcheck import Checks, args, crashed, out, run
+
+tf, mpirun, src = args()
+k = Checks("rank_errors")
+TIMEOUT = 60  # s: these runs end in about 2 s (mpirun's wind-down of a failed job included)
+MESH = os.path.join(src, "tests", "fuzz", "regressions", "gmsh", "boundary_segment_not_a_cell_side.msh")
+SMALL = ["-options_file", f"{src}/options/pressure.opts", "-mesh_nt", 2, "-mesh_ntheta", 6, "-increments", 1]
+
+
+def refused(np_, opts, needles, what):
+    """Runs a case that must end with one error line holding every needle, exit 1, no crash or hang."""
+    p = run(tf, mpirun, np_, opts, check=False, timeout=TIMEOUT, report_hang=True)
+    lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
+    crash = crashed(p)
+    ok = p.returncode == 1 and not crash and len(lines) == 1 and all(n in lines[0] for n in needles)
+    k.check(ok, f"np={np_} {what}: exit {p.returncode}{', ' + crash if crash else ''}, {len(lines)} error line(s): "
+            f"{lines[:1]}")
+
+
+for np_ in (2, 1):
+    refused(np_, ["-options_file", f"{src}/options/pressure.opts", "-mesh_file", MESH, "-output",
+                  out(f"badmesh_np{np_}.h5")],
+            ["-mesh_file", "boundary_segment_not_a_cell_side.msh", "'outer'", "not a side of any cell"],
+            "a boundary segment that is no cell side")
+    k.check(not os.path.exists(out(f"badmesh_np{np_}.h5")) and not os.path.exists(out(f"badmesh_np{np_}.h5.partial")),
+            f"np={np_} bad mesh: refused before any result file")
+
+    h5, xmf = out(f"xmf_np{np_}.h5"), out(f"xmf_np{np_}.xmf")
+    for f in (h5, h5 + ".partial"):
+        if os.path.exists(f):
+            os.remove(f)
+    shutil.rmtree(xmf, ignore_errors=True)
+    os.mkdir(xmf)  # the .xmf cannot be written; its directory (the .h5's) can
+    refused(np_, SMALL + ["-output", h5], [h5, ".xmf", "cannot be written"], "the .xmf cannot be written")
+    k.check(os.path.isfile(h5) and not os.path.exists(h5 + ".partial"),
+            f"np={np_} .xmf failed: the results are in place ({os.path.basename(h5)}), no .partial left")
+k.done()
