@@ -22,6 +22,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
+import deck  # noqa: E402
 import run  # noqa: E402
 
 CASES = {
@@ -43,7 +44,8 @@ PENALTIES = [1e5, 1e6, 1e7]
 
 def label(nt, nth, du, k, extra=()):
     s = f'{nt}x{nth}_d{du:g}_k{k:.0e}'.replace('e+0', 'e')
-    return s + ''.join('_' + e.lstrip('-').replace('_', '') for e in extra)
+    pairs = zip(extra[0::2], extra[1::2])
+    return s + ''.join('_' + (v if o == '--element' else o.lstrip('-').replace('_', '') + v) for o, v in pairs)
 
 
 def levels(case, study):
@@ -55,18 +57,20 @@ def levels(case, study):
         return [(nt, nth, du, BASE_PENALTY, ()) for du in STEPS]
     if study == 'penalty':
         return [(nt, nth, BASE_STEP, k, ()) for k in PENALTIES]
-    if study == 'table':  # the flow curve's tabulation (largest interpolation error, MPa)
-        return [(nt, nth, BASE_STEP, BASE_PENALTY, ('--table_tol', tol)) for tol in ('0.1', '0.02')]
+    if study == 'table':  # the flow curve's tabulation (largest interpolation error, MPa; the base: 0.02)
+        out = [(nt, nth, BASE_STEP, BASE_PENALTY, ('--table_tol', '0.1')), (nt, nth, BASE_STEP, BASE_PENALTY, ())]
+        if len(deck.flow_table(deck.material(deck.parser().parse_args(c['args'])), 0.005, 1.0)) <= 200:
+            out.append((nt, nth, BASE_STEP, BASE_PENALTY, ('--table_tol', '0.005')))
+        return out
     if study == 'tolerance':  # ccx's equilibrium criterion (largest residual / average force; default 0.005)
         return [(nt, nth, BASE_STEP, BASE_PENALTY, ()), (nt, nth, BASE_STEP, BASE_PENALTY, ('--field_tol', '0.0005'))]
     if study == 'element':
-        return [(nt, nth, BASE_STEP, BASE_PENALTY, ('--element', e)) for e in ('CPE8R', 'CPE8')]
+        return [(nt, nth, BASE_STEP, BASE_PENALTY, ()), (nt, nth, BASE_STEP, BASE_PENALTY, ('--element', 'CPE8'))]
     raise SystemExit(f'converge.py: unknown study {study}')
 
 
 def name_of(case, lev):
     nt, nth, du, k, extra = lev
-    extra = tuple(e for e in extra if not (e.startswith('--') or e == 'CPE8R'))
     return f'{case}_' + label(nt, nth, du, k, extra)
 
 
@@ -133,18 +137,23 @@ def table(case, study):
         ok = s.get('complete')
         cells = [f'{run.at_stroke(rows, u):.2f}' for u in marks]
         sprung = [r for r in rows if r['stage'] == 1]
+        if sprung and abs(sprung[-1]['stroke']) > 1e-9:
+            sprung = []  # the withdrawal did not finish
         fin = [r for r in rows if r['stage'] == 0][-1]
+        sp = f'{sprung[-1]["c_over_t"]:.4f}' if sprung else '-'
+        spd = f'{sprung[-1]["deviation_ratio"]:.4f}' if sprung else '-'
         out.append(f'| {name}{"" if ok else " (INCOMPLETE)"} | ' + ' | '.join(cells) +
                    f' | {run.at_stroke(rows, 2.0, "c_over_t"):.4f} | {run.at_stroke(rows, 3.0, "c_over_t"):.4f}'
-                   f' | {fin["c_over_t"]:.4f} | {sprung[-1]["c_over_t"]:.4f} | {fin["deviation_ratio"]:.4f}'
-                   f' | {sprung[-1]["deviation_ratio"]:.4f} | {len(rows)} | {s.get("wall_s") or 0:.0f} |'
-                   if sprung else ' | | | | | | | |')
+                   f' | {fin["c_over_t"]:.4f} | {sp} | {fin["deviation_ratio"]:.4f} | {spd} | {len(rows)}'
+                   f' | {s.get("wall_s") or 0:.0f} |')
         if prev is not None:
             pr, pname = prev
             worst, at = curve_change(pr, rows, min(stroke, fin['stroke']))
             at_marks = max(abs(run.at_stroke(rows, u) - run.at_stroke(pr, u)) / run.at_stroke(rows, u) for u in marks)
             dct = max(abs(run.at_stroke(rows, u, 'c_over_t') - run.at_stroke(pr, u, 'c_over_t')) for u in marks)
-            dsp = abs(sprung[-1]['c_over_t'] - [r for r in pr if r['stage'] == 1][-1]['c_over_t']) if sprung else 0
+            psp = [r for r in pr if r['stage'] == 1]
+            dsp = abs(sprung[-1]['c_over_t'] - psp[-1]['c_over_t']) if sprung and psp and abs(psp[-1]['stroke']) < 1e-9 \
+                else float('nan')
             changes.append(f'- {pname} -> {name}: load {100 * at_marks:.3f} % at the reported strokes, '
                            f'{100 * worst:.3f} % over the curve (largest at U = {at}); C/t {dct:.4f} at the reported '
                            f'strokes, {dsp:.4f} sprung back')

@@ -52,6 +52,7 @@ def parser():
     a('--du0', type=float, default=None, help='first increment (default dumax / 4)')
     a('--direct', action='store_true', help='fixed increments of dumax (no automatic incrementation)')
     a('--unload_dumax', type=float, default=None, help='largest increment while withdrawing (default dumax)')
+    a('--unload_cutbacks', type=int, default=12, help='cut-backs allowed per increment while withdrawing')
     a('--penalty', type=float, default=1e6, help='normal contact stiffness (MPa/mm, pressure per overclosure)')
     a('--stick_slope', type=float, default=None, help='friction stick slope (MPa/mm; default penalty / 10)')
     a('--field_tol', type=float, default=None,
@@ -236,6 +237,9 @@ def build(args):
               '*STATIC' + (', DIRECT' if args.direct else ''), f'{first:.8g}, {span:.8g}, {1e-6 * span:.8g}, {dmax:.8g}']
         if args.field_tol:
             L += ['*CONTROLS, PARAMETERS=FIELD', f'{args.field_tol:g}, {2 * args.field_tol:g}']
+        if stage == 1 and args.unload_cutbacks != 5:
+            # releasing the die with friction makes the contact set chatter: allow more cut-backs (ccx default 5)
+            L += ['*CONTROLS, PARAMETERS=TIME INCREMENTATION', f'4, 8, 9, 16, 10, 4, 0, {args.unload_cutbacks}']
         L += ['*BOUNDARY', f'NDIE, 2, 2, {-u:.10g}',
               '*NODE PRINT, NSET=NDIE, TOTALS=ONLY, FREQUENCY=1', 'RF',
               '*NODE PRINT, NSET=NDREF', 'U', '*NODE PRINT, NSET=NOUT', 'U']
