@@ -74,6 +74,17 @@ def name_of(case, lev):
     return f'{case}_' + label(nt, nth, du, k, extra)
 
 
+def repost(case, lev):
+    """Post-process a finished run again (run.py --post with the same options)."""
+    nt, nth, du, k, extra = lev
+    name = name_of(case, lev)
+    if not os.path.exists(os.path.join(ROOT, 'results', 'ccx', name, name + '.dat')):
+        return
+    cmd = [sys.executable, os.path.join(HERE, 'run.py'), '--name', name, '--post'] + CASES[case]['args'] + [
+        '--nt', str(nt), '--ntheta', str(nth), '--dumax', str(du), '--penalty', f'{k:g}'] + list(extra)
+    subprocess.run(cmd, cwd=ROOT, stdout=subprocess.DEVNULL)
+
+
 def ensure(case, lev, dry=False):
     nt, nth, du, k, extra = lev
     name = name_of(case, lev)
@@ -175,6 +186,7 @@ def main():
     p.add_argument('--study', default='all', help='mesh, step, penalty, table, tolerance, element or all '
                    '(comma separated)')
     p.add_argument('--table', action='store_true', help='print the tables only (run nothing)')
+    p.add_argument('--repost', action='store_true', help='post-process the finished runs again (run nothing)')
     p.add_argument('--save', metavar='NAME', help="copy run NAME's CSV to tests/reference/calculix/CASE.csv")
     a = p.parse_args()
     if a.save:
@@ -183,7 +195,10 @@ def main():
     studies = ['mesh', 'step', 'penalty'] if a.study == 'all' else a.study.split(',')
     for st in studies:
         for lev in levels(a.case, st):
-            ensure(a.case, lev, dry=a.table)
+            if a.repost:
+                repost(a.case, lev)
+            else:
+                ensure(a.case, lev, dry=a.table)
     for st in studies:
         print(table(a.case, st))
 

@@ -16,8 +16,7 @@ TOTALS=ONLY on all die nodes), the die's displacement (stroke), the outer
 surface nodes' displacements. Load = punch load on the full tube per unit
 length = -2 x the quarter's vertical die reaction / plane-strain thickness
 (1 in the deck). Shape metrics: shape.py (tubeform's rules); a node touches
-the die when its gap is <= --ctol (default 0: it penetrates, i.e. carries
-penalty pressure).
+the die when its gap is <= --ctol (default 1e-3 t; see README.md).
 """
 import json
 import math
@@ -159,7 +158,7 @@ def write_csv(path, rows, header_lines):
             f.write('# ' + h + '\n')
         f.write(','.join(COLUMNS) + '\n')
         for r in rows:
-            f.write(','.join(str(r[c]) if c in ('stage', 'n_contact', 'n_contact_apex') else f'{r[c]:.8g}'
+            f.write(','.join(str(r[c]) if c in ('stage', 'n_contact', 'n_contact_apex') else f'{r[c] + 0.0:.8g}'
                              for c in COLUMNS) + '\n')
 
 
@@ -181,9 +180,13 @@ def main(argv=None):
     p.add_argument('--name', required=True, help='case name (files NAME.*)')
     p.add_argument('--dir', default=None, help='run directory (default results/ccx/NAME)')
     p.add_argument('--post', action='store_true', help='only post-process an existing run')
-    p.add_argument('--ctol', type=float, default=0.0, help='contact when the gap to the die is <= CTOL (mm)')
+    p.add_argument('--ctol', type=float, default=None,
+                   help='a node touches the die when its gap is <= CTOL (mm; default 1e-3 t: the outer faces are curved, '
+                        'so a face pressed by the penalty can leave its nodes up to ~1e-3 mm off the die)')
     p.add_argument('--csv', default=None, help='also copy the CSV here (with a header comment)')
     args = p.parse_args(argv)
+    if args.ctol is None:
+        args.ctol = 1e-3 * args.tube_t
     root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     d = args.dir or os.path.join(root, 'results', 'ccx', args.name)
     os.makedirs(d, exist_ok=True)
@@ -222,7 +225,7 @@ def main(argv=None):
               f'mesh {args.nt} x {args.ntheta} {args.element}; increments <= {args.dumax} mm of stroke'
               + (' (fixed)' if args.direct else ' (automatic)') + f'; penalty {args.penalty:g} MPa/mm, '
               f'stick slope {stick:g} MPa/mm; flow table tol {args.table_tol} MPa; contact gap <= {args.ctol} mm',
-              'command: /usr/bin/python3 scripts/calculix/run.py ' + ' '.join(deck_argv),
+              'command: /usr/bin/python3 scripts/calculix/run.py ' + ' '.join(a for a in deck_argv if a != '--post'),
               f'wall time {wall if wall is None else round(wall, 1)} s on one core; {stats}',
               'load: punch load on the full tube (N/mm); stage 0 loading, 1 withdrawing (last row: sprung back)']
     write_csv(os.path.join(d, args.name + '.csv'), rows, header)
