@@ -170,7 +170,7 @@ def table(case, study):
                 else float('nan')
             changes.append(f'- {pname} -> {name}: load {100 * at_marks:.3f} % at the reported strokes, '
                            f'{100 * worst:.3f} % over the curve (largest at U = {at}); C/t {dct:.4f} at the reported '
-                           f'strokes, {dsp:.4f} sprung back')
+                           f'strokes, ' + (f'{dsp:.4f} sprung back' if dsp == dsp else 'no sprung-back pair'))
         prev = (rows, name)
     return '\n'.join(out + [''] + changes + [''])
 
