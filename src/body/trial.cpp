@@ -20,12 +20,21 @@ PetscErrorCode Body::TrialForce(Vec du_local, double r, Vec f_local, double *mag
   PetscCall(VecGetArrayRead(du_local, &du));
   PetscCall(VecZeroEntries(f_local));
   PetscCall(VecGetArray(f_local, &f));
+  // The states are kept: a commit of the same increment takes them (Commit).
+  PetscInt n;
+  PetscCall(VecGetLocalSize(du_local, &n));
+  last_trial_.du.assign(du, du + n);
+  last_trial_.r = r;
+  last_trial_.states.resize(state_.size());
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
     fe::ElemVec due, fe_;
-    PointState to[fe::kGauss];
+    PointState *to = &last_trial_.states[fe::kGauss * e];
     Voigt s[fe::kGauss];
     GatherCell(*mesh_, e, du, due);
-    if (!AdvanceCell(e, due, r, to, acc)) continue; // inverted: the next assembly reports it
+    if (!AdvanceCell(e, due, r, to, acc)) { // inverted: the next assembly reports it
+      for (int g = 0; g < fe::kGauss; ++g) to[g] = state_[fe::kGauss * e + g];
+      continue;
+    }
     // Forces of the new stresses on the moved corners (as the commit's next InternalForce).
     double xe[2 * fe::kNodes];
     fe::QuadGeometry geo;
@@ -44,6 +53,8 @@ PetscErrorCode Body::TrialForce(Vec du_local, double r, Vec f_local, double *mag
   }
   PetscCall(VecRestoreArray(f_local, &f));
   PetscCall(VecRestoreArrayRead(du_local, &du));
+  last_trial_.acc = acc;
+  last_trial_.valid = true;
   PetscCall(PetscLogEventEnd(Log::trial, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

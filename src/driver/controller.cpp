@@ -69,6 +69,9 @@ PetscErrorCode Controller::Solve(double lambda, double dl, Vec du, double &dU, I
     m_.system.SetIterate(iter_, opt_.equilibrium_tol * q, reject_above_);
   }
   PetscCall(m_.system.Solve(du, reactions));
+  // An iterate in balance is taken exactly as it was evaluated (the system's
+  // copy went through the node frames and back).
+  if (Equilibrium() && have_iter_ && m_.system.accepted()) PetscCall(VecCopy(iter_, du));
   m_.system.SetIterate(nullptr, 0);
   ++inc.solves;
   PetscFunctionReturn(PETSC_SUCCESS);
