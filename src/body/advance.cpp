@@ -1,0 +1,172 @@
+// The state an increment takes the body's points to (AdvanceCell,
+// AdvancePoint: shared by the commit and the trial), and the internal force
+// of a trial increment's state without committing it, which the equilibrium
+// iterations of an increment need (docs/theory.md, "Equilibrium").
+#include <algorithm>
+#include <cmath>
+
+#include "tubeform/body/body.hpp"
+#include "tubeform/core/log.hpp"
+#include "tubeform/material/j2.hpp"
+
+namespace tf {
+
+namespace {
+Voigt Scaled(const Voigt &v, double f)
+{
+  Voigt s;
+  for (int c = 0; c < kNumStress; ++c) s[c] = f * v[c];
+  return s;
+}
+} // namespace
+
+bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState *to, Advanced &acc) const
+{
+  fe::QuadGeometry mid, moved;
+  double xe[2 * fe::kNodes], xm[2 * fe::kNodes];
+  const bool midpoint = prm_.kinematics == ObjectiveScheme::Midpoint;
+  // Gradients on the start configuration (the paper's forward form: the
+  // cached geometry), or on the mid-increment one (Hughes-Winget: a rigid
+  // rotation then gives zero strain and an exact rotation of the stress).
+  const fe::QuadGeometry *geo = CellGeometry(e, xe);
+  for (int k = 0; k < 2 * fe::kNodes; ++k) xm[k] = xe[k] + due[k];
+  if (midpoint) {
+    for (int k = 0; k < 2 * fe::kNodes; ++k) xe[k] += 0.5 * due[k];
+    geo = fe::ComputeGeometry(xe, mid) ? &mid : nullptr;
+  }
+  if (!geo) return false; // reported by the next assembly
+  // QM6 with equilibrium iterations: the increment's modes are the cell's own
+  // unknowns, corrected (alpha -= Kii^{-1} f_i, f_i on the moved cell) until
+  // their force vanishes, so that the cell's nodal forces are those of a state
+  // in balance inside it and the condensed tangent is their derivative.
+  const bool balance = prm_.state_from_strain && cells_.has_modes() && fe::ComputeGeometry(xm, moved);
+  fe::InternalVec alpha = balance ? cells_.Modes((int)e, due) : fe::InternalVec{};
+  for (int it = 0;; ++it) {
+    // Without balancing (one pass) the sums go straight into acc, in the order they always did.
+    Advanced local;
+    Advanced &sink = balance ? local : acc;
+    for (int g = 0; g < fe::kGauss; ++g) {
+      Voigt deps;
+      double omega;
+      if (balance)
+        cells_.KinematicsWith(xe, *geo, g, due, alpha, deps, omega);
+      else
+        cells_.Kinematics((int)e, xe, *geo, g, due, deps, omega);
+      to[g] = AdvancePoint(fe::kGauss * e + g, deps, omega, r, geo->wdet[g], sink);
+    }
+    // A fixed number of corrections (not a tolerance): the forces are then a
+    // smooth function of the nodal increments, which the Newton iterations of
+    // the increment need.
+    const bool done = !balance || it == kModeCorrections;
+    if (!done) {
+      Voigt s[fe::kGauss];
+      fe::InternalVec fi;
+      for (int g = 0; g < fe::kGauss; ++g) s[g] = to[g].sigma;
+      cells_.ModeForce(xm, moved, s, fi);
+      cells_.CorrectModes((int)e, fi, alpha);
+    }
+    if (done) {
+      if (balance) {
+        acc.w_int += local.w_int, acc.w_plastic += local.w_plastic, acc.n_plastic += local.n_plastic;
+        acc.drift = std::max(acc.drift, local.drift);
+      }
+      return true;
+    }
+  }
+}
+
+PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double r, double wdet, Advanced &acc) const
+{
+  const bool midpoint = prm_.kinematics == ObjectiveScheme::Midpoint;
+  PointState ps = state_[i];
+  // Strang splitting: half the rotation, the constitutive increment in the
+  // mid-rotated frame, the other half (forward scheme: all at once, first order).
+  RotateStress(prm_.kinematics, omega, ps.sigma, midpoint ? 0.5 : 1.0);
+  // yield_inside: a point that meets the surface inside the step takes the
+  // part up to it elastically and the rest with the plastic law.
+  const double yf = yield_factor_[i];
+  // With equilibrium iterations the update is a function of the strain
+  // increment alone: a point on the yield surface flows if it loads, whatever
+  // loading state its tangent took (the iterations may cycle the tangent of
+  // a point at the loading/unloading boundary; the forces then stay continuous).
+  // So is the onset of yield inside the step: found on this strain increment's
+  // own stress path (the stored yield factor is its trial's).
+  double onset = prm_.yield_inside ? yf / r : kNever;
+  if (prm_.state_from_strain && material_->plastic_law()) {
+    ps.plastic = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
+    onset = ps.plastic ? kNever : material_->YieldOnset(state_[i], deps, omega);
+  }
+  UpdateInfo u;
+  if (material_->plastic_law() && !ps.plastic && onset < 1) {
+    const double m = onset;
+    material_->Update(ps, Scaled(deps, m));
+    ps.plastic = true;
+    u = material_->Update(ps, Scaled(deps, 1 - m));
+  } else {
+    u = material_->Update(ps, deps);
+  }
+  if (midpoint) RotateStress(prm_.kinematics, omega, ps.sigma, 0.5);
+  // Points that reach the yield surface in this increment (the limiter and
+  // those grouped with it), or pass it, are plastic from now on.
+  const bool reached = !prm_.yield_inside && !prm_.state_from_strain && yf <= r * (1 + prm_.group_tol);
+  const bool on_surface = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
+  if (!ps.plastic && material_->plastic_law() && (reached || on_surface)) ps.plastic = true;
+  acc.n_plastic += ps.plastic;
+  for (int c = 0; c < kNumStress; ++c) acc.w_int += wdet * 0.5 * (state_[i].sigma[c] + ps.sigma[c]) * deps[c];
+  acc.w_plastic += wdet * u.dwp;
+  acc.drift = std::max(acc.drift, std::abs(u.drift));
+  return ps;
+}
+
+PetscErrorCode Body::TrialForce(Vec du_local, double r, Vec f_local, double *magnitude, double *count) const
+{
+  const PetscScalar *du;
+  PetscScalar *f;
+  Advanced acc;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::trial, 0, 0, 0, 0));
+  *magnitude = *count = 0;
+  PetscCall(VecGetArrayRead(du_local, &du));
+  PetscCall(VecZeroEntries(f_local));
+  PetscCall(VecGetArray(f_local, &f));
+  // The states are kept: a commit of the same increment takes them (Commit).
+  PetscInt n;
+  PetscCall(VecGetLocalSize(du_local, &n));
+  last_trial_.du.assign(du, du + n);
+  last_trial_.r = r;
+  last_trial_.states.resize(state_.size());
+  for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
+    fe::ElemVec due, fe_;
+    PointState *to = &last_trial_.states[fe::kGauss * e];
+    Voigt s[fe::kGauss];
+    GatherCell(*mesh_, e, du, due);
+    if (!AdvanceCell(e, due, r, to, acc)) { // inverted: the next assembly reports it
+      for (int g = 0; g < fe::kGauss; ++g) to[g] = state_[fe::kGauss * e + g];
+      continue;
+    }
+    // Forces of the new stresses on the moved corners (as the commit's next InternalForce).
+    double xe[2 * fe::kNodes];
+    fe::QuadGeometry geo;
+    CellCoordinates(e, xe);
+    for (int k = 0; k < 2 * fe::kNodes; ++k) xe[k] += due[k];
+    if (!fe::ComputeGeometry(xe, geo)) continue;
+    for (int g = 0; g < fe::kGauss; ++g) s[g] = to[g].sigma;
+    cells_.InternalForce((int)e, xe, geo, s, fe_);
+    for (double v : fe_) *magnitude += std::abs(v);
+    *count += 2 * fe::kNodes;
+    for (int a = 0; a < fe::kNodes; ++a) {
+      const PetscInt n = mesh_->cell_nodes[fe::kNodes * e + a];
+      f[mesh_->node_dof[n]] += fe_[2 * a];
+      f[mesh_->node_dof[n] + 1] += fe_[2 * a + 1];
+    }
+  }
+  PetscCall(VecRestoreArray(f_local, &f));
+  PetscCall(VecRestoreArrayRead(du_local, &du));
+  last_trial_.acc = acc;
+  last_trial_.valid = true;
+  PetscCall(PetscLogEventEnd(Log::trial, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
