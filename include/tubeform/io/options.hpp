@@ -49,7 +49,7 @@ struct Options {
   // Equilibrium iterations in every increment: the largest out-of-balance force
   // on a free dof at most this fraction of the time-averaged nodal force (0: off,
   // the paper's forward increments).
-  double equilibrium_tol = 0.0;
+  double equilibrium_tol = 0.005;
   Dynamics dynamics = Dynamics::Quasistatic;             // implicit/auto: lumped mass, backward Euler
   double dynamics_time = 1.0;                            // s for lambda 0 -> 1 (scenes without tools)
   double punch_speed = 1.0;                              // mm/s (tool scenes: duration = stroke / speed)
