@@ -94,7 +94,10 @@ PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double 
   double onset = prm_.yield_inside ? yf / r : kNever;
   if (prm_.state_from_strain && material_->plastic_law()) {
     ps.plastic = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
-    onset = ps.plastic ? kNever : material_->YieldOnset(state_[i], deps, omega);
+    // (the onset of a point off the surface, whatever its last increment's flag)
+    PointState start = state_[i];
+    start.plastic = false;
+    onset = ps.plastic ? kNever : material_->YieldOnset(start, deps, omega);
   }
   UpdateInfo u;
   if (material_->plastic_law() && !ps.plastic && onset < 1) {
