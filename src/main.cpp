@@ -6,8 +6,12 @@
 //   build/tubeform -help
 #include <petscsys.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "tubeform/core/core.hpp"
 #include "tubeform/core/signals.hpp"
@@ -20,6 +24,54 @@ static const char help[] =
   "tubeform: updated-Lagrangian elasto-plastic FE analysis of tube squaring (plane strain).\n"
   "Usage: mpirun -n 2 build/tubeform -options_file options/<scene>.opts [-option value ...]\n\n";
 
+// The error estimate's companion (driver/answer.hpp): the same case at half
+// the resolution (half the cells through the wall and around, half the trial
+// increments; a mesh file is kept, so the estimate then covers the steps
+// only), run first and quietly; its history is what the main run's answer
+// compares with. Its result file is removed.
+static PetscErrorCode Companion(const tf::Options &opt, std::vector<tf::HistoryRow> &rows)
+{
+  tf::Options c = opt;
+  PetscFunctionBeginUser;
+  c.mesh_nt = std::max<PetscInt>(1, opt.mesh_nt / 2);
+  c.mesh_ntheta = std::max<PetscInt>(4, 2 * (opt.mesh_ntheta / 4));
+  c.increments = std::max<PetscInt>(1, opt.increments / 2);
+  if (opt.unload_increments > 0) c.unload_increments = std::max<PetscInt>(1, opt.unload_increments / 2);
+  c.output = opt.output + ".companion.h5";
+  c.history_csv.clear();
+  c.checkpoint.clear(), c.restart.clear();
+  c.checkpoint_every = 0;
+  c.progress = 0, c.monitor = PETSC_FALSE;
+  c.output_every = std::numeric_limits<int>::max(), c.output_stroke = 0;
+  c.error_estimate = PETSC_FALSE;
+  const double t0 = MPI_Wtime();
+  PetscErrorCode failed;
+  {
+    tf::Problem problem;
+    problem.SetQuiet();
+    PetscCall(problem.Setup(PETSC_COMM_WORLD, c));
+    failed = problem.Run();
+    rows = problem.history().rows();
+  }
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  if (rank == 0) std::remove(c.output.c_str());
+  // A companion that stops early (every rank alike) leaves the run without an estimate, not without a result.
+  if (failed == PETSC_ERR_NOT_CONVERGED || failed == PETSC_ERR_SIG) {
+    const char *why = nullptr;
+    (void)PetscErrorMessage(failed, nullptr, (char **)&why);
+    PetscCall(
+      PetscPrintf(PETSC_COMM_WORLD, "tubeform: no error estimate: its companion run stopped (%s)\n", why ? why : "?"));
+    rows.clear();
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(failed);
+  PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+                        "tubeform: error estimate: companion run of %d x %d cells, %d trial increments (%.1f s)\n",
+                        (int)c.mesh_nt, (int)c.mesh_ntheta, (int)c.increments, MPI_Wtime() - t0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 // `collective` tells main whether an error seen so far was found by every
 // rank at once (option parsing is: each rank reads the same options).
 static PetscErrorCode Run(bool &collective)
@@ -30,8 +82,12 @@ static PetscErrorCode Run(bool &collective)
   PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneNames(), opt));
   collective = false;
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
+  std::vector<tf::HistoryRow> companion;
+  if (opt.error_estimate && (opt.scene == "squaring" || opt.scene == "flattening"))
+    PetscCall(Companion(opt, companion));
   tf::Problem problem;
   PetscCall(problem.Setup(PETSC_COMM_WORLD, opt));
+  problem.SetCompanion(std::move(companion));
   PetscCall(problem.Run());
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdarg>
-#include <cstdio>
 #include <string>
 
 #include "tubeform/core/log.hpp"
@@ -18,17 +16,6 @@ namespace {
 // A step ending this close to a breakpoint (in trial steps) ends on it.
 constexpr double kSnapToBreak = 1e-9;
 
-// printf into a string (the run's one-line messages).
-std::string Format(const char *fmt, ...)
-{
-  char buf[512];
-  va_list args;
-  va_start(args, fmt);
-  std::vsnprintf(buf, sizeof(buf), fmt, args);
-  va_end(args);
-  return buf;
-}
-
 BodyParams MakeBodyParams(const Options &opt)
 {
   BodyParams b;
@@ -38,7 +25,9 @@ BodyParams MakeBodyParams(const Options &opt)
   b.rmin_deps_yield = opt.rmin_deps_yield;
   b.rmin_domega = opt.rmin_domega;
   b.group_tol = opt.rmin_group_tol;
-  b.yield_inside = opt.rmin_yield == "inside";
+  // With equilibrium iterations a point yields inside the step on its own path
+  // (the update finds the onset); r1 limits the paper's forward increments only.
+  b.yield_inside = opt.rmin_yield == "inside" || opt.equilibrium_tol > 0;
   b.yield_tol = opt.rmin_yield_tol;
   b.drift_correction = opt.drift_correction;
   b.state_from_strain = opt.equilibrium_tol > 0;
@@ -96,7 +85,7 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
   PetscCall(mesh_.Create(comm, serial, scene_->BoundarySets()));
   PetscCall(PetscLogEventEnd(Log::mesh, 0, 0, 0, 0));
   PetscCall(system_.Setup(mesh_));
-  if (size_ > 1 || opt_.monitor)
+  if ((size_ > 1 || opt_.monitor) && !quiet_)
     PetscCall(PetscPrintf(comm_, "tubeform: linear solver: %s\n", system_.solver().c_str()));
   PetscCall(body_.Setup(mesh_, MakeBodyParams(opt_)));
   if (opt_.dynamics != Dynamics::Quasistatic) {
@@ -129,14 +118,10 @@ PetscErrorCode Problem::DestroyForces()
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode Problem::Run()
+PetscErrorCode Problem::Open(ResultWriter &writer)
 {
-  ResultWriter writer;
-  Vec du;
-  HistoryRow row;
-
   PetscFunctionBeginUser;
-  // 0. Outputs are checked before any work, so a bad path fails at once; the
+  // Outputs are checked before any work, so a bad path fails at once; the
   // tools the scene asks for are set up (and refused if they start inside the
   // body) before the result file is opened, so such a start leaves no file.
   if (!opt_.history_csv.empty()) PetscCall(CheckWritable(comm_, opt_.history_csv, "-history_csv"));
@@ -152,112 +137,63 @@ PetscErrorCode Problem::Run()
     model_->contact = contact_.get();
   }
   if (opt_.restart.empty()) PetscCall(writer.Open(mesh_, opt_.output));
-  {
-    int ok = history_.OpenCsv(opt_.history_csv, rank_);
-    PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
-    PetscCheck(ok, comm_, PETSC_ERR_USER_INPUT,
-               "-history_csv %s: cannot create the file (does the directory exist and is it writable?)",
-               opt_.history_csv.c_str());
-  }
-  du = system_.CreateLocalVector();
-  PetscCall(CreateForces(du));
+  int ok = history_.OpenCsv(opt_.history_csv, rank_);
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
+  PetscCheck(ok, comm_, PETSC_ERR_USER_INPUT,
+             "-history_csv %s: cannot create the file (does the directory exist and is it writable?)",
+             opt_.history_csv.c_str());
+  Vec like = system_.CreateLocalVector();
+  PetscCall(CreateForces(like));
+  PetscCall(VecDestroy(&like));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::Start(ResultWriter &writer)
+{
+  HistoryRow row;
+  PetscFunctionBeginUser;
+  PetscCall(EndForces(0.0));
+  PetscCall(ContactColumns(nullptr, row));
+  PetscCall(scene_->Measure(*model_, 0.0, forces_.f_int, row));
+  history_.Append(row);
+  PetscCall(WriteFields(writer, at_.step++, 0.0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::Run()
+{
+  ResultWriter writer;
+
+  PetscFunctionBeginUser;
+  PetscCall(Open(writer));
+  OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / opt_.stroke : 0);
+  if (!opt_.restart.empty())
+    PetscCall(ReadCheckpoint(writer, output)); // the state and the results so far
+  else
+    PetscCall(Start(writer)); // increment 0: the initial state
 
   const double end = path_.end;
   std::vector<double> breaks = path_.breakpoints;
   breaks.push_back(end);
-  at_.started.assign(breaks.size(), 0);
-  OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / opt_.stroke : 0);
-  if (!opt_.restart.empty()) {
-    // A restart: the state, the history and the results so far from the checkpoint.
-    PetscCall(ReadCheckpoint(writer, output));
-  } else {
-    // Increment 0: the initial state.
-    PetscCall(EndForces(0.0));
-    PetscCall(ContactColumns(nullptr, row));
-    PetscCall(scene_->Measure(*model_, 0.0, forces_.f_int, row));
-    history_.Append(row);
-    PetscCall(WriteFields(writer, at_.step++, 0.0));
-  }
+  if (at_.started.empty()) at_.started.assign(breaks.size(), 0);
   double &lambda = at_.lambda;
   PetscInt &inc = at_.inc;
-  const double dlambda_trial = 1.0 / opt_.increments;
-  const double dlambda_unload = opt_.unload_increments > 0 ? 1.0 / opt_.unload_increments : dlambda_trial;
+  const double dl_load = 1.0 / opt_.increments;
+  const double dl_unload = opt_.unload_increments > 0 ? 1.0 / opt_.unload_increments : dl_load;
   Controller controller(*model_, *scene_, inertia_.get(), opt_, path_.duration);
   controller.SetStartForces(forces_.f_start);
-  controller.SetForceScale(q_sum_, q_count_);
-  // Why the run ends before the end of its path (empty: it does not), reported
-  // with code stop_code after the results so far are written.
-  std::string stop;
-  PetscErrorCode stop_code = 0;
+  Vec du = system_.CreateLocalVector();
+  Stop stop;
   // A restart has written no field step yet: its last state is written whatever ends the run.
-  bool stalled = false, wrote_last = opt_.restart.empty();
-  int interrupted = 0; // the stop signal that ended the run
-  const auto where = [&] {
-    return Format("stroke %g, lambda %.6g, after %d increments", history_.rows().back().stroke, lambda, (int)inc);
-  };
-  // A checkpoint that cannot be written (its scratch file, too little room, a
-  // failed HDF5 write: found on every rank) ends the run like a failed
-  // increment: results written, the earlier checkpoint kept. `written` says
-  // whether it was.
-  const auto checkpoint = [&](bool &written) -> PetscErrorCode {
-    PetscFunctionBeginUser;
-    const PetscErrorCode failed = WriteCheckpoint(writer, output);
-    written = failed == 0;
-    if (failed == PETSC_ERR_FILE_WRITE) {
-      const char *specific = nullptr;
-      PetscCall(PetscErrorMessage(failed, nullptr, (char **)&specific));
-      stop_code = failed;
-      stop = Format("%s (%s)", specific ? specific : "the checkpoint could not be written", where().c_str());
-      PetscFunctionReturn(PETSC_SUCCESS);
-    }
-    PetscCall(failed);
-    PetscFunctionReturn(PETSC_SUCCESS);
-  };
-  const double t_start = MPI_Wtime();
+  bool wrote_last = opt_.restart.empty();
   Progress progress(comm_, opt_.progress, end, path_.breakpoints.empty() ? end : path_.breakpoints.front(), at_.lambda);
+  const double t_start = MPI_Wtime();
   PetscCall(PetscLogStagePush(Log::load_stage));
   while (lambda < end - kLambdaTol) {
-    // 1. The stall watch ends a load path that no longer advances.
-    if (inc - at_.inc_mark >= opt_.rmin_stall_increments) {
-      if (lambda - at_.lambda_mark < kStallAdvance) {
-        stalled = true, stop_code = PETSC_ERR_NOT_CONVERGED;
-        stop = Format("the load path stalled (%s): %d increments (-rmin_stall_increments) advanced lambda by less than "
-                      "%g; the history column limiter names what cut them (docs/theory.md, \"Stalls\")",
-                      where().c_str(), (int)opt_.rmin_stall_increments, kStallAdvance);
-        break;
-      }
-      at_.lambda_mark = lambda, at_.inc_mark = inc;
-    }
-    // ... and so does the increment budget (results up to here are written).
-    if (inc == opt_.rmin_max_increments) {
-      stop_code = PETSC_ERR_NOT_CONVERGED;
-      stop = Format("the load path needs more than -rmin_max_increments %d increments (%s); raise "
-                    "-rmin_max_increments or relax -rmin_deps / -rmin_domega",
-                    (int)opt_.rmin_max_increments, where().c_str());
-      break;
-    }
-    // ... and the clock (-time_limit) and stop signals (rank 0 may be the only
-    // one to see either: clocks differ, a signal may reach one process); both
-    // leave a checkpoint to continue from.
-    {
-      int mine[2] = {opt_.time_limit > 0 && MPI_Wtime() - t_start > opt_.time_limit, StopSignal()}, any[2];
-      PetscCallMPI(MPI_Allreduce(mine, any, 2, MPI_INT, MPI_MAX, comm_));
-      if (any[1]) {
-        interrupted = any[1], stop_code = PETSC_ERR_SIG;
-        stop = Format("interrupted by %s (%s)", SignalName(any[1]), where().c_str());
-      } else if (any[0]) {
-        stop_code = PETSC_ERR_NOT_CONVERGED;
-        stop = Format("-time_limit %g s reached (%s)", opt_.time_limit, where().c_str());
-      }
-      if (!stop.empty() && !opt_.checkpoint.empty()) {
-        bool written;
-        PetscCall(checkpoint(written)); // a failure replaces the stop's message with its own
-        if (written)
-          PetscCall(PetscPrintf(comm_, "tubeform: checkpoint after increment %d in %s; continue with -restart %s\n",
-                                (int)inc, opt_.checkpoint.c_str(), opt_.checkpoint.c_str()));
-      }
-      if (!stop.empty()) break;
-    }
+    // 1. Whatever ends the load path before its end: a stall, the increment
+    //    budget, the clock, a stop signal (src/driver/stops.cpp).
+    PetscCall(StopBefore(writer, output, t_start, stop));
+    if (!stop.why.empty()) break;
     ++inc;
 
     // 2. A stage of the load path (the paper's unloading) begins at its
@@ -266,11 +202,11 @@ PetscErrorCode Problem::Run()
       if (!at_.started[b] && lambda >= breaks[b] - kLambdaTol) {
         at_.started[b] = 1;
         PetscCall(scene_->BeginStage(*model_, lambda));
-        PetscCall(EndForces(lambda)); // the loads of the new stage (and the start of its first increment)
+        PetscCall(EndForces(lambda));
       }
     const double next_break =
       *std::find_if(breaks.begin(), breaks.end(), [&](double b) { return b > lambda + kLambdaTol; });
-    const double dl_stage = lambda >= 1 - kLambdaTol ? dlambda_unload : dlambda_trial;
+    const double dl_stage = lambda >= 1 - kLambdaTol ? dl_unload : dl_load;
     const double dl = std::min(dl_stage, next_break - lambda);
 
     // 3. Frames of the supports and contact nodes on the current geometry.
@@ -281,22 +217,14 @@ PetscErrorCode Problem::Run()
       if (contact_->active()) PetscCall(contact_->BeginIncrement());
     }
 
-    // 4. The trial solution cut by r_min (paper eq. 16).
-    // An increment that fails on every rank alike (an element inverted, r_min
-    // vanishing, a singular system) ends the run after the results so far are
-    // written; errors (main's handler returns them) of other kinds end it at once.
+    // 4. The trial step cut by r_min (paper eq. 16) and brought into balance.
+    //    An increment that fails on every rank alike (an element inverted,
+    //    r_min vanishing, a singular system) ends the run after the results so
+    //    far are written; errors of other kinds end it at once.
     Increment taken;
     controller.SetForceScale(q_sum_, q_count_);
-    const PetscErrorCode failed = controller.Advance(lambda, dl, end, du, taken);
-    if (failed == PETSC_ERR_USER_INPUT || failed == PETSC_ERR_NOT_CONVERGED) {
-      const char *specific = nullptr;
-      PetscCall(PetscErrorMessage(failed, nullptr, (char **)&specific));
-      --inc;
-      stop_code = failed;
-      stop = Format("%s (%s)", specific ? specific : "the increment failed", where().c_str());
-      break;
-    }
-    PetscCall(failed);
+    PetscCall(StopOnFailure(controller.Advance(lambda, dl, end, du, taken), stop));
+    if (!stop.why.empty()) break;
 
     // 5. Commit: stresses, plastic states and geometry; inertia; contact.
     Committed done;
@@ -314,77 +242,26 @@ PetscErrorCode Problem::Run()
     events_inside_ += taken.event_inside;
     inconsistent_ += taken.inconsistent > 0;
 
-    // 6. Forces, energies and the scene's measurements on the new configuration.
+    // 6. Forces, energies, self-checks and the scene's measurements on the
+    //    new configuration; what they say may end the run.
     PetscCall(Record(inc, lambda0, lambda, taken, done, du));
-    if (!nonfinite_.empty()) {
-      PetscInt cell;
-      PetscCall(body_.NonFiniteCell(cell));
-      const std::string at = cell >= 0 ? Format(", first in element %d", (int)cell) : "";
-      stop_code = PETSC_ERR_NOT_CONVERGED, wrote_last = true; // the last fields written are the last finite ones
-      stop = Format("increment %d gave %s = NaN or Inf%s: the numbers overflowed (units? -material_E is in MPa); "
-                    "it is not written",
-                    (int)inc, nonfinite_.c_str(), at.c_str());
-      stop += Format(" (%s)", where().c_str());
-      break;
-    }
-    if (diverged_) {
-      stop_code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
-      stop = Format("the energy balance error %.1f %% passed -max_energy_error %g: the solution has left equilibrium "
-                    "(smaller -increments / -rmin_deps; docs/accuracy.md, \"Extremes\") (%s)",
-                    100 * history_.rows().back().energy_error, opt_.max_energy_error, where().c_str());
-      break;
-    }
-    if (unsettled_run_ >= opt_.friction_max_unsettled) {
-      stop_code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
-      stop = Format("the friction iterations did not settle in %d increments in a row (-friction_max_unsettled), even "
-                    "on steps halved %d times: raise -friction_max_iters or -friction_tol, or try -dynamics auto (%s)",
-                    (int)unsettled_run_, kMaxCuts, where().c_str());
-      break;
-    }
+    PetscCall(StopAfter(stop, wrote_last));
+    if (!stop.why.empty()) break;
     PetscCall(progress.Update(lambda, inc, history_.rows().back().stroke));
     wrote_last = output.Due(inc, lambda, on_break, lambda >= end - kLambdaTol);
     if (wrote_last) PetscCall(WriteFields(writer, at_.step++, lambda));
     if (opt_.checkpoint_every > 0 && inc % opt_.checkpoint_every == 0) {
-      bool written;
-      PetscCall(checkpoint(written));
-      if (!written) break;
+      PetscCall(Checkpoint(writer, output, stop));
+      if (!stop.why.empty()) break;
     }
   }
   if (!wrote_last) PetscCall(WriteFields(writer, at_.step++, lambda)); // (a loop that ends normally wrote it)
   PetscCall(PetscLogStagePop());
-
-  // 7. Final metrics and the result file (renamed into place only now).
-  PetscCall(PetscLogStagePush(Log::output_stage));
-  const HistoryRow &last = history_.rows().back();
-  std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke},
-                                                         {"final_load", last.load},
-                                                         {"x_max", last.x_max},
-                                                         {"y_max", last.y_max},
-                                                         {"stalled", stalled ? 1.0 : 0.0},
-                                                         {"stopped", stop.empty() ? 0.0 : 1.0},
-                                                         {"interrupted", double(interrupted)}};
-  for (const auto &m : scene_->FinalMetrics(history_)) metrics.push_back(m);
-  PetscCall(writer.Close(history_, metrics));
-  {
-    int ok = history_.FinishCsv(); // rank 0 holds the file; every rank learns the outcome
-    PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
-    PetscCheck(ok, comm_, PETSC_ERR_FILE_WRITE, "-history_csv %s: cannot rename the finished file into place",
-               opt_.history_csv.c_str());
-  }
-  PetscCall(PetscLogStagePop());
-  if (stop.empty()) {
-    PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n",
-                          opt_.scene.c_str(), (int)inc, (int)system_.factorizations(), opt_.output.c_str()));
-    PetscCall(PetscPrintf(comm_,
-                          "tubeform: self-checks: energy balance within %.2g %%, internal work within %.2g %%; "
-                          "compromises: %d steps past an event, %d unsettled, %d with inconsistent loading states\n",
-                          100 * worst_error_, 100 * worst_internal_, (int)events_inside_, (int)unsettled_,
-                          (int)inconsistent_));
-  }
   PetscCall(VecDestroy(&du));
   PetscCall(DestroyForces());
-  // An early stop is a failure of the run, reported after its results are written.
-  PetscCheck(stop.empty(), comm_, stop_code, "%s; results up to there are in %s", stop.c_str(), opt_.output.c_str());
+
+  // 7. The answer, the self-checks and the result file (renamed into place only now).
+  PetscCall(Finish(writer, stop));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -68,8 +68,13 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(read.Real(PetscOptionsObject, "-tube_ro", "Outer radius of the tube (mm)", opt.tube_ro));
   PetscCall(read.Real(PetscOptionsObject, "-tube_t", "Wall thickness (mm)", opt.tube_t));
   PetscCall(read.Int(PetscOptionsObject, "-mesh_nt", "Elements through the wall (structured mesh)", opt.mesh_nt));
-  PetscCall(
-    read.Int(PetscOptionsObject, "-mesh_ntheta", "Elements around the quarter (structured mesh)", opt.mesh_ntheta));
+  PetscCall(read.Int(PetscOptionsObject, "-mesh_ntheta",
+                     "Elements around the quarter (structured mesh); 0: from -mesh_density and the tube",
+                     opt.mesh_ntheta));
+  PetscCall(read.Real(PetscOptionsObject, "-mesh_density",
+                      "With -mesh_ntheta 0: elements around the tube per bending length sqrt(Ro t) (the presets: "
+                      "fast 12, default 20, accurate 28)",
+                      opt.mesh_density));
   PetscCall(
     read.String(PetscOptionsObject, "-mesh_file",
                 "Gmsh 4.1 ASCII quad mesh with physical curves inner, outer, x0, y0 (replaces the structured mesh)",
@@ -177,13 +182,20 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       "increments",
                       opt.equilibrium_tol));
   {
-    const char *const schemes[] = {"forward", "midpoint"};
-    choice = opt.kinematics == ObjectiveScheme::Forward ? 0 : 1;
+    // auto: midpoint with equilibrium iterations (objective and second order;
+    // the iterations balance the pressure its strain leaves near
+    // incompressibility), forward without them (the paper's increments, which
+    // it keeps in balance best).
+    const char *const schemes[] = {"forward", "midpoint", "auto"};
+    PetscBool set;
+    choice = 2;
     read.Note("-kinematics");
     PetscCall(PetscOptionsEList(
       "-kinematics",
-      "Strain/spin increments: forward (start configuration, W sigma - sigma W) or midpoint (Hughes-Winget)",
-      "tubeform", schemes, 2, schemes[choice], &choice, nullptr));
+      "Strain/spin increments: forward (start configuration, W sigma - sigma W), midpoint (Hughes-Winget), or "
+      "auto (midpoint with equilibrium iterations, forward without)",
+      "tubeform", schemes, 3, schemes[choice], &choice, &set));
+    if (choice == 2) choice = opt.equilibrium_tol > 0 ? 1 : 0;
     opt.kinematics = choice == 0 ? ObjectiveScheme::Forward : ObjectiveScheme::Midpoint;
   }
   TF_OPTIONS_END();
@@ -276,6 +288,16 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       "Write fields each time the loading advances this much stroke (mm; later stages: the same "
                       "fraction of the stage) and at every stage end; 0: every -output_every increments",
                       opt.output_stroke));
+  PetscCall(read.Bool(PetscOptionsObject, "-error_estimate",
+                      "Estimate the error of the load and C/t (tool scenes) from a companion run at half the "
+                      "resolution, run first (docs/accuracy.md, \"The error estimate\")",
+                      opt.error_estimate));
+  PetscCall(read.Real(PetscOptionsObject, "-target_load",
+                      "Accuracy target of the load (relative; 0: none): an estimate above it is a warning and "
+                      "status inaccurate in sweeps",
+                      opt.target_load));
+  PetscCall(read.Real(PetscOptionsObject, "-target_c_over_t", "Accuracy target of C/t (absolute; 0: none)",
+                      opt.target_c_over_t));
   PetscCall(read.Real(PetscOptionsObject, "-max_energy_error",
                       "Stop (results so far written, non-zero exit) when the energy balance error (self-check "
                       "(a)) passes this fraction",
@@ -305,8 +327,12 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-tube_t %g: the wall thickness must be positive and smaller than -tube_ro %g", opt.tube_t, opt.tube_ro);
   PetscCheck(opt.mesh_nt >= 1 && opt.mesh_nt <= 1000, comm, PETSC_ERR_USER_INPUT,
              "-mesh_nt %d: must be between 1 and 1000", (int)opt.mesh_nt);
-  PetscCheck(opt.mesh_ntheta >= 2 && opt.mesh_ntheta <= 100000, comm, PETSC_ERR_USER_INPUT,
-             "-mesh_ntheta %d: must be between 2 and 100000", (int)opt.mesh_ntheta);
+  PetscCheck(opt.mesh_ntheta == 0 || (opt.mesh_ntheta >= 2 && opt.mesh_ntheta <= 100000), comm, PETSC_ERR_USER_INPUT,
+             "-mesh_ntheta %d: must be between 2 and 100000, or 0 (from -mesh_density)", (int)opt.mesh_ntheta);
+  PetscCheck(opt.mesh_ntheta > 0 || (opt.mesh_density > 0 && opt.mesh_density <= 1000), comm, PETSC_ERR_USER_INPUT,
+             "-mesh_ntheta 0 needs -mesh_density in (0, 1000] (elements per bending length sqrt(Ro t); got %g)",
+             opt.mesh_density);
+  if (opt.mesh_ntheta == 0) opt.mesh_ntheta = ElementsAround(opt.tube_ro, opt.tube_t, opt.mesh_density);
   PetscCheck(m.E > 0, comm, PETSC_ERR_USER_INPUT, "-material_e %g: Young's modulus must be positive (MPa)", m.E);
   PetscCheck(m.nu > -1 && m.nu < 0.5, comm, PETSC_ERR_USER_INPUT,
              "-material_nu %g: Poisson's ratio must lie in (-1, 0.5)", m.nu);
@@ -399,6 +425,9 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "-pressure_p %g: must be a finite pressure (MPa)", opt.pressure_p);
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);
+  PetscCheck(opt.target_load >= 0 && opt.target_load < 1 && opt.target_c_over_t >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-target_load %g, -target_c_over_t %g: must be a fraction in [0, 1) and a non-negative C/t",
+             opt.target_load, opt.target_c_over_t);
   PetscCheck(opt.max_energy_error > 0, comm, PETSC_ERR_USER_INPUT,
              "-max_energy_error %g: must be a positive fraction (e.g. 0.25)", opt.max_energy_error);
   PetscCheck(opt.time_limit >= 0 && std::isfinite(opt.time_limit), comm, PETSC_ERR_USER_INPUT,

@@ -20,7 +20,7 @@ namespace tf {
 namespace {
 
 // Outer-surface nodes of the whole mesh on every rank, along the surface from
-// the x axis to the y axis.
+// the x axis to the y axis (contact state and segment once the tools are set up).
 PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all)
 {
   std::vector<double> mine;
@@ -29,8 +29,8 @@ PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all)
   const auto &x = m.body.position();
   for (PetscInt n : m.mesh.node_sets["outer"])
     if (m.mesh.node_owned[n])
-      mine.insert(mine.end(), {x[2 * n], x[2 * n + 1], double(m.contact->InContact(n)), double(m.contact->Segment(n)),
-                               double(m.mesh.node_orig[n])});
+      mine.insert(mine.end(), {x[2 * n], x[2 * n + 1], m.contact ? double(m.contact->InContact(n)) : 0.0,
+                               m.contact ? double(m.contact->Segment(n)) : -1.0, double(m.mesh.node_orig[n])});
   PetscCallMPI(MPI_Comm_size(m.comm, &size));
   std::vector<int> counts(size), displs(size);
   int count = (int)mine.size();
@@ -83,8 +83,16 @@ public:
       tools.tool = BuildFlatPlate(opt_.tube_ro, -kPlateOverhang * opt_.tube_ro, (1 + kPlateReach) * opt_.tube_ro);
     tools.candidates = "outer";
     tools.symmetry = {{"x0", {1, 0}}, {"y0", {0, 1}}};
-    // Default VCRI: 2 % of the circumferential element size of the outer surface.
-    tools.params = MakeContactParams(opt_, 0.02 * opt_.tube_ro * 0.5 * M_PI / opt_.mesh_ntheta);
+    // Default VCRI: 2 % of the mean distance between the outer surface's nodes
+    // (of the mesh actually used: generated or read from a file).
+    std::vector<SurfacePoint> outer;
+    PetscCall(GatherOuter(m, outer));
+    double length = 0;
+    for (size_t k = 1; k < outer.size(); ++k)
+      length += std::hypot(outer[k].x - outer[k - 1].x, outer[k].y - outer[k - 1].y);
+    const double spacing =
+      outer.size() > 1 ? length / (outer.size() - 1) : opt_.tube_ro * 0.5 * M_PI / opt_.mesh_ntheta;
+    tools.params = MakeContactParams(opt_, kVcriOfSpacing * spacing);
     if (opt_.stroke_corner_radius > 0)
       PetscCall(PetscPrintf(m.comm,
                             "tubeform: stroke %.4f mm gives an outer corner radius of %.4g mm (perimeter-conserving "
@@ -227,6 +235,9 @@ private:
   // The flat plate reaches past the ring on both sides (fractions of ro): a
   // crushed quarter ring widens by much less than half its radius.
   static constexpr double kPlateOverhang = 0.1, kPlateReach = 0.5;
+  // VCRI as a fraction of the outer nodes' spacing: a micro-slip far below an
+  // element, so that sticking nodes hold (docs/theory.md, "The law").
+  static constexpr double kVcriOfSpacing = 0.02;
   Options opt_;
   bool squaring_;
   double stroke_ = 0, back_ = 0;

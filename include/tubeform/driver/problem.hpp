@@ -36,6 +36,11 @@ public:
   PetscErrorCode Setup(MPI_Comm comm, const Options &opt, std::unique_ptr<Scene> scene);
   // Collective: the load path from lambda = 0 to its end; results written.
   PetscErrorCode Run();
+  // The history of a companion run of the same case at half the resolution,
+  // whose difference from this run's is its error estimate (driver/answer.hpp).
+  void SetCompanion(std::vector<HistoryRow> rows) { companion_ = std::move(rows); }
+  // No lines on the standard output (a companion run).
+  void SetQuiet() { quiet_ = true; }
 
   MPI_Comm comm() const { return comm_; }
   Mesh &mesh() { return mesh_; }
@@ -55,6 +60,8 @@ private:
   std::unique_ptr<ContactSet> contact_; // scenes with tools
   std::unique_ptr<Model> model_;        // what the scene sees
   History history_;
+  std::vector<HistoryRow> companion_; // the companion run's history (none: no estimate)
+  bool quiet_ = false;
 
   // Where the loop stands on the load path (a checkpoint keeps it).
   struct Cursor {
@@ -93,6 +100,34 @@ private:
   std::string nonfinite_;                       // a history column the last increment made NaN or Inf
 
   PetscErrorCode CreateForces(Vec like);
+  // The steps of Run that are not the increment's: outputs checked, tools set
+  // up and results opened (step 0), the initial state (increment 0), the
+  // answer and results at the end (step 7, src/driver/finish.cpp).
+  PetscErrorCode Open(ResultWriter &writer);
+  PetscErrorCode Start(ResultWriter &writer);
+  // Why and how a run ends before its path does (src/driver/stops.cpp): a
+  // one-line reason (empty: it goes on) and the exit code reported once the
+  // results so far are written.
+  struct Stop {
+    std::string why;
+    PetscErrorCode code = 0;
+    bool stalled = false;      // the stall watch ended it
+    int signal = 0;            // the stop signal that ended it
+    bool checkpointed = false; // the last checkpoint asked for was written
+  };
+  // Before an increment: the stall watch, the increment budget, the clock and
+  // stop signals (with a checkpoint to continue from).
+  PetscErrorCode StopBefore(ResultWriter &writer, const OutputSchedule &output, double t_start, Stop &stop);
+  // An increment that failed on every rank alike (the controller's code).
+  PetscErrorCode StopOnFailure(PetscErrorCode failed, Stop &stop);
+  // After a committed one: a number that overflowed, an energy balance that
+  // diverged, friction that does not settle (wrote_last: whether the last
+  // fields written stand for the last state).
+  PetscErrorCode StopAfter(Stop &stop, bool &wrote_last);
+  // A checkpoint; one that cannot be written stops the run (stop.why).
+  PetscErrorCode Checkpoint(ResultWriter &writer, const OutputSchedule &output, Stop &stop);
+  PetscErrorCode Finish(ResultWriter &writer, const Stop &stop);
+  std::string Where() const; // where the run stands, for a stop's message
   // The forces at the end of an increment (or of a restored state) at lambda:
   // applied, external (with friction), internal (with inertia), out-of-balance.
   PetscErrorCode EndForces(double lambda);

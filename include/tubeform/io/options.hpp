@@ -4,6 +4,8 @@
 
 #include <petscsys.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@ struct Options {
   // Geometry and mesh
   double tube_ro = 17.5, tube_t = 1.5;
   PetscInt mesh_nt = 4, mesh_ntheta = 48;
+  double mesh_density = 0; // -mesh_ntheta 0: elements around per bending length sqrt(Ro t)
   std::string mesh_file;
   fe::Formulation element = fe::Formulation::BBar;
   std::string element_name = "bbar";
@@ -86,6 +89,11 @@ struct Options {
   // Stop (results written) when the energy balance error passes this: a quarter of the work
   // unaccounted for means the load-stroke curve is no longer a solution.
   double max_energy_error = 0.25;
+  // The run's estimate of its own error (tool scenes): a companion run at half
+  // the resolution first; the accuracy targets its estimate is held to (the
+  // presets set them; 0: none).
+  PetscBool error_estimate = PETSC_TRUE;
+  double target_load = 0, target_c_over_t = 0;
   double time_limit = 0; // > 0: stop (results written, non-zero exit) after this many seconds of loading
   double progress = 10;  // s between progress lines on rank 0 (0: none); quiet on shorter runs
   PetscBool monitor = PETSC_FALSE;
@@ -97,5 +105,16 @@ struct Options {
 // accepts. Errors are PETSC_ERR_USER_INPUT with a message naming the option
 // and what is allowed.
 PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes, Options &opt);
+
+// Elements around the quarter tube for `density` elements per bending length
+// sqrt(Ro t): the wall between the die's contacts bends over that length (the
+// decay length of a ring's or shell's bending under a line load), so the
+// bending and the contact patch are resolved alike on any tube. Even (a node
+// on the 45-degree line) and at least 8.
+inline PetscInt ElementsAround(double ro, double t, double density)
+{
+  const double n = density * 0.5 * M_PI * ro / std::sqrt(ro * t);
+  return std::max<PetscInt>(8, 2 * (PetscInt)std::ceil(0.5 * n));
+}
 
 } // namespace tf

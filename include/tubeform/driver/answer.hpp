@@ -1,0 +1,54 @@
+// The answer of a run, as a forming engineer reads it at its end: the load at
+// the end of loading and the largest, the load and C/t at the reported
+// strokes, C/t and C1/C2 loaded and after springback, the springback of C1
+// and C2; and the run's estimate of its own error in them, from a coarser
+// companion run of the same case (a two-level Richardson estimate: the
+// difference of the two levels bounds the finer one's error once both are
+// in the asymptotic range; docs/accuracy.md, "The error estimate").
+#pragma once
+
+#include <petscsys.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tubeform/io/history.hpp"
+
+namespace tf {
+
+// The strokes the answer reports besides the end of loading (mm): the paper's.
+constexpr double kReportedStrokes[] = {1.0, 2.0, 3.0, 4.2};
+// The estimate is this many times the difference between the run and its
+// companion of half the resolution: with an order p >= 1 the finer run's
+// error is at most the difference (1 / (2^p - 1)); the factor covers a
+// pre-asymptotic range (Roache's safety factor for two-grid studies, 1.25 for
+// well-behaved sequences, is the lower end; calibrated on the validation set:
+// docs/accuracy.md, "The error estimate").
+constexpr double kEstimateSafety = 1.0;
+
+struct Answer {
+  bool tool = false;       // a tool scene: C/t, C1/C2 and springback mean something
+  bool springback = false; // the run went on past the end of loading
+  double stroke = 0;       // at the end of loading
+  double load = 0, load_max = 0;
+  std::vector<double> strokes, loads, c_over_t; // the reported strokes (with the end of loading last)
+  double ct_loaded = 0, dr_loaded = 1, x_loaded = 0, y_loaded = 0;
+  double ct_unloaded = 0, dr_unloaded = 1, x_unloaded = 0, y_unloaded = 0;
+  // The estimate (estimated = false without a companion): relative load
+  // error and absolute C/t error at each reported stroke, after springback,
+  // and their largest.
+  bool estimated = false;
+  std::vector<double> load_error, ct_error;
+  double ct_unloaded_error = 0, worst_load_error = 0, worst_ct_error = 0;
+};
+
+// The answer of a history (companion: the coarser run's, or null).
+Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const std::vector<HistoryRow> *companion);
+// As HDF5 attributes of /history.
+std::vector<std::pair<std::string, double>> AnswerAttributes(const Answer &a);
+// Collective: the answer's lines on rank 0; `targets` the preset's accuracy
+// targets (load relative, C/t absolute; 0: none), whose excess is a warning.
+PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, double target_load, double target_ct);
+
+} // namespace tf

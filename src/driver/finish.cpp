@@ -1,0 +1,51 @@
+// Step 7 of a run: its answer (driver/answer.hpp) with the error estimate
+// from the companion run, the self-checks, the result file renamed into
+// place, and the stop that ended the run early, reported last.
+#include "tubeform/core/log.hpp"
+#include "tubeform/driver/answer.hpp"
+#include "tubeform/driver/problem.hpp"
+
+namespace tf {
+
+PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &stop)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogStagePush(Log::output_stage));
+  const HistoryRow &last = history_.rows().back();
+  // Shape metrics (C/t, C1/C2, springback) are the press scenes': those with final metrics of their own.
+  const bool shape = !scene_->FinalMetrics(history_).empty();
+  const Answer answer = Summarize(history_.rows(), shape, companion_.empty() ? nullptr : &companion_);
+  std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke},
+                                                         {"final_load", last.load},
+                                                         {"x_max", last.x_max},
+                                                         {"y_max", last.y_max},
+                                                         {"stalled", stop.stalled ? 1.0 : 0.0},
+                                                         {"stopped", stop.why.empty() ? 0.0 : 1.0},
+                                                         {"interrupted", double(stop.signal)},
+                                                         {"target_load", opt_.target_load},
+                                                         {"target_c_over_t", opt_.target_c_over_t}};
+  for (const auto &m : scene_->FinalMetrics(history_)) metrics.push_back(m);
+  for (const auto &m : AnswerAttributes(answer)) metrics.push_back(m);
+  PetscCall(writer.Close(history_, metrics));
+  int ok = history_.FinishCsv(); // rank 0 holds the file; every rank learns the outcome
+  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
+  PetscCheck(ok, comm_, PETSC_ERR_FILE_WRITE, "-history_csv %s: cannot rename the finished file into place",
+             opt_.history_csv.c_str());
+  PetscCall(PetscLogStagePop());
+  if (stop.why.empty() && !quiet_) {
+    PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n",
+                          opt_.scene.c_str(), (int)at_.inc, (int)system_.factorizations(), opt_.output.c_str()));
+    PetscCall(PrintAnswer(comm_, answer, opt_.target_load, opt_.target_c_over_t));
+    PetscCall(PetscPrintf(comm_,
+                          "tubeform: self-checks: energy balance within %.2g %%, internal work within %.2g %%; "
+                          "compromises: %d steps past an event, %d unsettled, %d with inconsistent loading states\n",
+                          100 * worst_error_, 100 * worst_internal_, (int)events_inside_, (int)unsettled_,
+                          (int)inconsistent_));
+  }
+  // An early stop is a failure of the run, reported after its results are written.
+  PetscCheck(stop.why.empty(), comm_, stop.code, "%s; results up to there are in %s", stop.why.c_str(),
+             opt_.output.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

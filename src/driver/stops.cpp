@@ -1,0 +1,138 @@
+// Why a run ends before the end of its load path, in one place: the checks
+// Problem::Run makes before an increment (a stall, the increment budget, the
+// clock, a stop signal), after a failed one, and after a committed one (a
+// number that overflowed, an energy balance that diverged, friction that does
+// not settle), and the checkpoint a stop or a schedule writes. Each stop is a
+// one-line reason and an exit code, reported once the results so far are
+// written (Problem::Finish).
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+#include "tubeform/core/signals.hpp"
+#include "tubeform/driver/problem.hpp"
+
+namespace tf {
+
+namespace {
+// printf into a string (the run's one-line messages).
+std::string Format(const char *fmt, ...)
+{
+  char buf[512];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(buf, sizeof(buf), fmt, args);
+  va_end(args);
+  return buf;
+}
+} // namespace
+
+std::string Problem::Where() const
+{
+  return Format("stroke %g, lambda %.6g, after %d increments", history_.rows().back().stroke, at_.lambda, (int)at_.inc);
+}
+
+PetscErrorCode Problem::Checkpoint(ResultWriter &writer, const OutputSchedule &output, Stop &stop)
+{
+  PetscFunctionBeginUser;
+  // A checkpoint that cannot be written (its scratch file, too little room, a
+  // failed HDF5 write: found on every rank) ends the run like a failed
+  // increment: results written, the earlier checkpoint kept.
+  const PetscErrorCode failed = WriteCheckpoint(writer, output);
+  if (failed == PETSC_ERR_FILE_WRITE) {
+    const char *specific = nullptr;
+    PetscCall(PetscErrorMessage(failed, nullptr, (char **)&specific));
+    stop.code = failed;
+    stop.why = Format("%s (%s)", specific ? specific : "the checkpoint could not be written", Where().c_str());
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(failed);
+  stop.checkpointed = true;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::StopBefore(ResultWriter &writer, const OutputSchedule &output, double t_start, Stop &stop)
+{
+  PetscFunctionBeginUser;
+  // The stall watch ends a load path that no longer advances.
+  if (at_.inc - at_.inc_mark >= opt_.rmin_stall_increments) {
+    if (at_.lambda - at_.lambda_mark < kStallAdvance) {
+      stop.stalled = true, stop.code = PETSC_ERR_NOT_CONVERGED;
+      stop.why = Format("the load path stalled (%s): %d increments (-rmin_stall_increments) advanced lambda by less "
+                        "than %g; the history column limiter names what cut them (docs/theory.md, \"Stalls\")",
+                        Where().c_str(), (int)opt_.rmin_stall_increments, kStallAdvance);
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    at_.lambda_mark = at_.lambda, at_.inc_mark = at_.inc;
+  }
+  // ... and so does the increment budget (results up to here are written).
+  if (at_.inc == opt_.rmin_max_increments) {
+    stop.code = PETSC_ERR_NOT_CONVERGED;
+    stop.why = Format("the load path needs more than -rmin_max_increments %d increments (%s); raise "
+                      "-rmin_max_increments or relax -rmin_deps / -rmin_domega",
+                      (int)opt_.rmin_max_increments, Where().c_str());
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  // ... and the clock (-time_limit) and stop signals (rank 0 may be the only
+  // one to see either: clocks differ, a signal may reach one process); both
+  // leave a checkpoint to continue from.
+  int mine[2] = {opt_.time_limit > 0 && MPI_Wtime() - t_start > opt_.time_limit, StopSignal()}, any[2];
+  PetscCallMPI(MPI_Allreduce(mine, any, 2, MPI_INT, MPI_MAX, comm_));
+  if (any[1]) {
+    stop.signal = any[1], stop.code = PETSC_ERR_SIG;
+    stop.why = Format("interrupted by %s (%s)", SignalName(any[1]), Where().c_str());
+  } else if (any[0]) {
+    stop.code = PETSC_ERR_NOT_CONVERGED;
+    stop.why = Format("-time_limit %g s reached (%s)", opt_.time_limit, Where().c_str());
+  }
+  if (!stop.why.empty() && !opt_.checkpoint.empty()) {
+    PetscCall(Checkpoint(writer, output, stop)); // a failure replaces the stop's message with its own
+    if (stop.checkpointed)
+      PetscCall(PetscPrintf(comm_, "tubeform: checkpoint after increment %d in %s; continue with -restart %s\n",
+                            (int)at_.inc, opt_.checkpoint.c_str(), opt_.checkpoint.c_str()));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::StopOnFailure(PetscErrorCode failed, Stop &stop)
+{
+  PetscFunctionBeginUser;
+  if (failed == PETSC_ERR_USER_INPUT || failed == PETSC_ERR_NOT_CONVERGED) {
+    const char *specific = nullptr;
+    PetscCall(PetscErrorMessage(failed, nullptr, (char **)&specific));
+    --at_.inc;
+    stop.code = failed;
+    stop.why = Format("%s (%s)", specific ? specific : "the increment failed", Where().c_str());
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(failed);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::StopAfter(Stop &stop, bool &wrote_last)
+{
+  PetscFunctionBeginUser;
+  if (!nonfinite_.empty()) {
+    PetscInt cell = -1;
+    PetscCall(body_.NonFiniteCell(cell));
+    const std::string at = cell >= 0 ? Format(", first in element %d", (int)cell) : "";
+    stop.code = PETSC_ERR_NOT_CONVERGED, wrote_last = true; // the last fields written are the last finite ones
+    stop.why = Format("increment %d gave %s = NaN or Inf%s: the numbers overflowed (units? -material_E is in MPa); "
+                      "it is not written (%s)",
+                      (int)at_.inc, nonfinite_.c_str(), at.c_str(), Where().c_str());
+  } else if (diverged_) {
+    stop.code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
+    stop.why = Format("the energy balance error %.1f %% passed -max_energy_error %g: the solution has left "
+                      "equilibrium (smaller -increments / -rmin_deps; docs/accuracy.md, \"Extremes\") (%s)",
+                      100 * history_.rows().back().energy_error, opt_.max_energy_error, Where().c_str());
+  } else if (unsettled_run_ >= opt_.friction_max_unsettled) {
+    stop.code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
+    stop.why = Format("the friction iterations did not settle in %d increments in a row (-friction_max_unsettled), "
+                      "even on steps halved %d times: raise -friction_max_iters or -friction_tol, or try -dynamics "
+                      "auto (%s)",
+                      (int)unsettled_run_, kMaxCuts, Where().c_str());
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
