@@ -105,6 +105,8 @@ struct Options {
 // accepts. Errors are PETSC_ERR_USER_INPUT with a message naming the option
 // and what is allowed.
 PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes, Options &opt);
+// Collective: refuses values out of range (called by ReadOptions).
+PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt);
 
 // Elements around the quarter tube for `density` elements per bending length
 // sqrt(Ro t): the wall between the die's contacts bends over that length (the

@@ -1,0 +1,154 @@
+// The validation of the options ReadOptions has read: one message per
+// problem, naming the option and the range it allows.
+#include "tubeform/core/core.hpp"
+#include "tubeform/io/option_reader.hpp"
+#include "tubeform/io/options.hpp"
+#include "tubeform/step/rmin.hpp"
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+
+namespace tf {
+
+PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
+{
+  PetscFunctionBeginUser;
+  const auto &m = opt.material;
+  PetscCheck(opt.tube_ro > 0 && std::isfinite(opt.tube_ro), comm, PETSC_ERR_USER_INPUT,
+             "-tube_ro %g: the outer radius must be a positive number of mm", opt.tube_ro);
+  PetscCheck(opt.tube_t > 0 && opt.tube_t < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,
+             "-tube_t %g: the wall thickness must be positive and smaller than -tube_ro %g", opt.tube_t, opt.tube_ro);
+  PetscCheck(opt.mesh_nt >= 1 && opt.mesh_nt <= 1000, comm, PETSC_ERR_USER_INPUT,
+             "-mesh_nt %d: must be between 1 and 1000", (int)opt.mesh_nt);
+  PetscCheck(opt.mesh_ntheta == 0 || (opt.mesh_ntheta >= 2 && opt.mesh_ntheta <= 100000), comm, PETSC_ERR_USER_INPUT,
+             "-mesh_ntheta %d: must be between 2 and 100000, or 0 (from -mesh_density)", (int)opt.mesh_ntheta);
+  PetscCheck(opt.mesh_ntheta > 0 || (opt.mesh_density > 0 && opt.mesh_density <= 1000), comm, PETSC_ERR_USER_INPUT,
+             "-mesh_ntheta 0 needs -mesh_density in (0, 1000] (elements per bending length sqrt(Ro t); got %g)",
+             opt.mesh_density);
+  if (opt.mesh_ntheta == 0) opt.mesh_ntheta = ElementsAround(opt.tube_ro, opt.tube_t, opt.mesh_density);
+  PetscCheck(m.E > 0, comm, PETSC_ERR_USER_INPUT, "-material_e %g: Young's modulus must be positive (MPa)", m.E);
+  PetscCheck(m.nu > -1 && m.nu < 0.5, comm, PETSC_ERR_USER_INPUT,
+             "-material_nu %g: Poisson's ratio must lie in (-1, 0.5)", m.nu);
+  PetscCheck(m.sy > 0, comm, PETSC_ERR_USER_INPUT, "-material_sy %g: the yield stress must be positive (MPa)", m.sy);
+  PetscCheck(m.K >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-material_k %g: the hardening coefficient must be non-negative (MPa)", m.K);
+  PetscCheck(m.n > 0 && m.n <= 1, comm, PETSC_ERR_USER_INPUT,
+             "-material_n %g: the hardening exponent must lie in (0, 1]", m.n);
+  PetscCheck(m.density > 0 && std::isfinite(m.density), comm, PETSC_ERR_USER_INPUT,
+             "-material_density %g: the mass density must be positive (t/mm^3; aluminum 2.70e-9)", m.density);
+  PetscCheck(opt.dynamics_time > 0 && std::isfinite(opt.dynamics_time), comm, PETSC_ERR_USER_INPUT,
+             "-dynamics_time %g: the duration of the load path must be positive (s)", opt.dynamics_time);
+  PetscCheck(opt.punch_speed > 0 && std::isfinite(opt.punch_speed), comm, PETSC_ERR_USER_INPUT,
+             "-punch_speed %g: the tool speed must be positive (mm/s)", opt.punch_speed);
+  PetscCheck(opt.increments >= 1 && opt.increments <= 10000000, comm, PETSC_ERR_USER_INPUT,
+             "-increments %d: must be between 1 and 1e7", (int)opt.increments);
+  PetscCheck(opt.rmin_deps > 0 && opt.rmin_deps <= 0.5, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_deps %g: the strain increment limit must lie in (0, 0.5]", opt.rmin_deps);
+  PetscCheck(opt.rmin_deps_yield >= 0 && std::isfinite(opt.rmin_deps_yield), comm, PETSC_ERR_USER_INPUT,
+             "-rmin_deps_yield %g: must be a number of yield strains >= 0 (0: off)", opt.rmin_deps_yield);
+  PetscCheck(opt.rmin_domega > 0 && opt.rmin_domega <= 0.5, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_domega %g: the rotation increment limit must lie in (0, 0.5] rad", opt.rmin_domega);
+  PetscCheck(opt.rmin_yield_tol > 0 && opt.rmin_yield_tol <= 1, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_yield_tol %g: must lie in (0, 1]", opt.rmin_yield_tol);
+  PetscCheck(opt.rmin_group_tol >= 0 && opt.rmin_group_tol <= 1, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_group_tol %g: must lie in [0, 1]", opt.rmin_group_tol);
+  PetscCheck(opt.rmin_event_tol > 0 && opt.rmin_event_tol <= 0.5, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_event_tol %g: must lie in (0, 0.5]", opt.rmin_event_tol);
+  PetscCheck(opt.rmin_max_increments >= 1, comm, PETSC_ERR_USER_INPUT, "-rmin_max_increments %d: must be at least 1",
+             (int)opt.rmin_max_increments);
+  PetscCheck(opt.rmin_stall_increments >= 10, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_stall_increments %d: must be at least 10", (int)opt.rmin_stall_increments);
+  PetscCheck(opt.rmin_max_redo >= 0, comm, PETSC_ERR_USER_INPUT, "-rmin_max_redo %d: must be non-negative",
+             (int)opt.rmin_max_redo);
+  if (m.law == "swift")
+    PetscCheck(m.K > 0, comm, PETSC_ERR_USER_INPUT, "-material_k %g: the Swift law needs K > 0", m.K);
+  if (m.law == "table") {
+    const auto &t = opt.material.table;
+    PetscCheck(t.size() >= 2 && t.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
+               "-material_table: give pairs ep,sigma_y (at least one pair) for -material_law table");
+    PetscCheck(t[0] == 0, comm, PETSC_ERR_USER_INPUT, "-material_table: the first plastic strain must be 0 (got %g)",
+               t[0]);
+    for (size_t i = 2; i < t.size(); i += 2) {
+      PetscCheck(t[i] > t[i - 2], comm, PETSC_ERR_USER_INPUT,
+                 "-material_table: plastic strains must increase (%g after %g)", t[i], t[i - 2]);
+      PetscCheck(t[i + 1] >= t[i - 1], comm, PETSC_ERR_USER_INPUT,
+                 "-material_table: the flow stress must not decrease (%g after %g)", t[i + 1], t[i - 1]);
+    }
+    PetscCheck(t[1] > 0, comm, PETSC_ERR_USER_INPUT,
+               "-material_table: the initial yield stress must be positive (got %g)", t[1]);
+  }
+  PetscCheck(opt.die_r_apex >= 0 && opt.die_r_apex < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,
+             "-die_r_apex %g: must lie in [0, -tube_ro)", opt.die_r_apex);
+  PetscCheck(opt.die_u_close >= 0 && opt.die_r_edge >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-die_u_close %g, -die_r_edge %g: must be non-negative", opt.die_u_close, opt.die_r_edge);
+  PetscCheck(opt.friction_mu >= 0 && opt.friction_mu <= 2, comm, PETSC_ERR_USER_INPUT,
+             "-friction_mu %g: the friction coefficient must lie in [0, 2]", opt.friction_mu);
+  PetscCheck(opt.friction_vcri >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-friction_vcri %g: must be non-negative (0: automatic)", opt.friction_vcri);
+  PetscCheck(opt.friction_tol > 0 && opt.friction_max_iters >= 1 && opt.friction_max_unsettled >= 1, comm,
+             PETSC_ERR_USER_INPUT,
+             "-friction_tol %g, -friction_max_iters %d, -friction_max_unsettled %d: need tol > 0 and at least one "
+             "iteration and increment",
+             opt.friction_tol, (int)opt.friction_max_iters, (int)opt.friction_max_unsettled);
+  PetscCheck(opt.equilibrium_tol >= 0 && opt.equilibrium_tol < 1, comm, PETSC_ERR_USER_INPUT,
+             "-equilibrium_tol %g: must lie in [0, 1) (0: no equilibrium iterations)", opt.equilibrium_tol);
+  PetscCheck(opt.rmin_dphi > 0 && opt.rmin_dphi <= 2, comm, PETSC_ERR_USER_INPUT, "-rmin_dphi %g: must lie in (0, 2]",
+             opt.rmin_dphi);
+  PetscCheck(opt.rmin_dphi_rise > 0 && opt.rmin_dphi_rise <= 1, comm, PETSC_ERR_USER_INPUT,
+             "-rmin_dphi_rise %g: must lie in (0, 1]", opt.rmin_dphi_rise);
+  PetscCheck(opt.stroke_corner_radius >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-stroke_corner_radius %g: must be non-negative", opt.stroke_corner_radius);
+  PetscCheck(opt.slide_n > 0 && opt.slide_push > 0, comm, PETSC_ERR_USER_INPUT,
+             "-slide_n %g, -slide_push %g: must be positive", opt.slide_n, opt.slide_push);
+  PetscCheck(opt.slide_back >= 0 && std::isfinite(opt.slide_back), comm, PETSC_ERR_USER_INPUT,
+             "-slide_back %g: must be a non-negative distance (mm)", opt.slide_back);
+  PetscCheck(opt.slide_back == 0 || opt.slide_tool == "flat", comm, PETSC_ERR_USER_INPUT,
+             "-slide_back %g: only the flat slide (-slide_tool flat) has a push-back stage", opt.slide_back);
+  PetscCheck(opt.pressure_u > 0, comm, PETSC_ERR_USER_INPUT, "-pressure_u %g: must be positive (mm)", opt.pressure_u);
+  PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);
+  PetscCheck(std::isfinite(opt.shear_gamma) && opt.shear_gamma != 0, comm, PETSC_ERR_USER_INPUT,
+             "-shear_gamma %g: must be a finite non-zero shear strain", opt.shear_gamma);
+  PetscCheck(std::isfinite(opt.tension_strain) && opt.tension_strain != 0 && std::fabs(opt.tension_strain) < 1, comm,
+             PETSC_ERR_USER_INPUT, "-tension_strain %g: must be non-zero with |strain| < 1", opt.tension_strain);
+  PetscCheck(std::fabs(opt.rotation_angle) <= 3600, comm, PETSC_ERR_USER_INPUT,
+             "-rotation_angle %g: must lie within +-3600 degrees", opt.rotation_angle);
+  PetscCheck(opt.column_l > 0 && opt.column_t > 0 && opt.column_t < opt.column_l, comm, PETSC_ERR_USER_INPUT,
+             "-column_l %g, -column_t %g: need 0 < t < L", opt.column_l, opt.column_t);
+  PetscCheck(std::isfinite(opt.pressure_p), comm, PETSC_ERR_USER_INPUT,
+             "-pressure_p %g: must be a finite pressure (MPa)", opt.pressure_p);
+  PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
+             (int)opt.output_every);
+  PetscCheck(opt.target_load >= 0 && opt.target_load < 1 && opt.target_c_over_t >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-target_load %g, -target_c_over_t %g: must be a fraction in [0, 1) and a non-negative C/t",
+             opt.target_load, opt.target_c_over_t);
+  PetscCheck(opt.max_energy_error > 0, comm, PETSC_ERR_USER_INPUT,
+             "-max_energy_error %g: must be a positive fraction (e.g. 0.25)", opt.max_energy_error);
+  PetscCheck(opt.time_limit >= 0 && std::isfinite(opt.time_limit), comm, PETSC_ERR_USER_INPUT,
+             "-time_limit %g: must be 0 (no limit) or a positive number of seconds", opt.time_limit);
+  PetscCheck(opt.progress >= 0 && std::isfinite(opt.progress), comm, PETSC_ERR_USER_INPUT,
+             "-progress %g: must be 0 (none) or a positive number of seconds", opt.progress);
+  PetscCheck(opt.unload_increments >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-unload_increments %d: must be at least 1 (or 0: as -increments)", (int)opt.unload_increments);
+  PetscCheck(opt.output_stroke >= 0 && opt.output_stroke <= opt.stroke, comm, PETSC_ERR_USER_INPUT,
+             "-output_stroke %g: must be between 0 (off) and the stroke %g mm", opt.output_stroke, opt.stroke);
+  PetscCheck(!opt.output.empty(), comm, PETSC_ERR_USER_INPUT, "-output: an HDF5 file name is required");
+  PetscCheck(opt.checkpoint_every >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-checkpoint_every %d: must be 0 (only when stopped) or a number of increments",
+             (int)opt.checkpoint_every);
+  PetscCheck(opt.checkpoint_every == 0 || !opt.checkpoint.empty(), comm, PETSC_ERR_USER_INPUT,
+             "-checkpoint_every %d: needs -checkpoint FILE", (int)opt.checkpoint_every);
+  if (!opt.mesh_file.empty()) {
+    // Rank 0 reads the mesh, so rank 0 looks (another rank, on another node,
+    // may see another file system) and tells the others.
+    PetscMPIInt rank;
+    int readable = 0;
+    PetscCallMPI(MPI_Comm_rank(comm, &rank));
+    if (rank == 0) readable = std::ifstream(opt.mesh_file).good();
+    PetscCallMPI(MPI_Bcast(&readable, 1, MPI_INT, 0, comm));
+    PetscCheck(readable, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: cannot open the file (missing or unreadable)",
+               opt.mesh_file.c_str());
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
