@@ -120,4 +120,34 @@ PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode DeterminantSign(KSP ksp, int &sign)
+{
+  PC pc;
+  PetscBool redundant, lu;
+  PetscFunctionBeginUser;
+  sign = 0;
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCREDUNDANT, &redundant));
+  if (redundant) {
+    KSP inner;
+    PetscCall(PCRedundantGetKSP(pc, &inner));
+    PetscCall(KSPGetPC(inner, &pc));
+  }
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCLU, &lu));
+  if (!lu) PetscFunctionReturn(PETSC_SUCCESS);
+  Mat factor = nullptr;
+  PetscCall(PCFactorGetMatrix(pc, &factor));
+  MatSolverType type;
+  if (!factor) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MatFactorGetSolverType(factor, &type));
+  if (!type || std::string(type) != MATSOLVERMUMPS) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscInt on;
+  PetscCall(MatMumpsGetIcntl(factor, 33, &on));
+  if (on != 1) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscReal mantissa;
+  PetscCall(MatMumpsGetRinfog(factor, 12, &mantissa)); // the determinant is RINFOG(12) x 2^INFOG(34)
+  sign = mantissa > 0 ? 1 : mantissa < 0 ? -1 : 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace tf

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tubeform/assembly/linear_solver.hpp"
 #include "tubeform/assembly/solve_failure.hpp"
 #include "tubeform/assembly/system.hpp"
 #include "tubeform/core/core.hpp"
@@ -171,6 +172,7 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
       SETERRQ(mesh_->comm, PETSC_ERR_NOT_CONVERGED, "%s (KSP: %s)", why.c_str(), KSPConvergedReasons[reason]);
     }
     if (iterate_) PetscCall(VecAXPY(sol_, 1.0, x_));
+    PetscCall(DeterminantSign(ksp_, det_sign_));
     ++nsolves_;
     PetscCall(PetscLogEventEnd(Log::solve, 0, 0, 0, 0));
   }

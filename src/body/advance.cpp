@@ -82,6 +82,10 @@ PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double 
   // Strang splitting: half the rotation, the constitutive increment in the
   // mid-rotated frame, the other half (forward scheme: all at once, first order).
   RotateStress(prm_.kinematics, omega, ps.sigma, midpoint ? 0.5 : 1.0);
+  // The internal work is taken in the frame of the constitutive increment: the
+  // stress turned by the first half rotation and the updated one before the
+  // second (midpoint); the forward scheme's start stress as it always was.
+  const Voigt before = midpoint ? ps.sigma : state_[i].sigma;
   // yield_inside: a point that meets the surface inside the step takes the
   // part up to it elastically and the rest with the plastic law.
   const double yf = yield_factor_[i];
@@ -108,6 +112,7 @@ PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double 
   } else {
     u = material_->Update(ps, deps);
   }
+  const Voigt after = ps.sigma;
   if (midpoint) RotateStress(prm_.kinematics, omega, ps.sigma, 0.5);
   // Points that reach the yield surface in this increment (the limiter and
   // those grouped with it), or pass it, are plastic from now on.
@@ -115,7 +120,8 @@ PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double 
   const bool on_surface = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
   if (!ps.plastic && material_->plastic_law() && (reached || on_surface)) ps.plastic = true;
   acc.n_plastic += ps.plastic;
-  for (int c = 0; c < kNumStress; ++c) acc.w_int += wdet * 0.5 * (state_[i].sigma[c] + ps.sigma[c]) * deps[c];
+  for (int c = 0; c < kNumStress; ++c)
+    acc.w_int += wdet * 0.5 * (before[c] + (midpoint ? after[c] : ps.sigma[c])) * deps[c];
   acc.w_plastic += wdet * u.dwp;
   acc.drift = std::max(acc.drift, std::abs(u.drift));
   return ps;

@@ -117,6 +117,7 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
   row.friction_iters = taken.solves;
   row.residual = residual;
   row.r_max = r_max;
+  row.det_sign = system_.determinant_sign();
   row.q_avg = q_sum_ / q_count_;
   row.redo = taken.redo;
   row.drift = done.body.drift;

@@ -50,6 +50,9 @@ const std::vector<HistoryColumn> &HistoryColumns()
      "largest tensile normal force of a contact node at the end of the step, before releases (N/mm)"},
     {"release_force", &HistoryRow::release_force, "largest compressive normal force dropped by a release (N/mm)"},
     {"contact_gap", &HistoryRow::contact_gap, "largest gap of a node in contact after the increment (mm)"},
+    {"det_sign", &HistoryRow::det_sign,
+     "sign of the determinant of the increment's last factored tangent (0: not computed; with "
+     "-redundant_mat_mumps_icntl_33 1): a change of sign is a bifurcation or limit point"},
     {"fn_mismatch", &HistoryRow::fn_mismatch,
      "largest |stored normal force - the normal force the body's nodal forces need| of a contact node (N/mm)"},
     {"stage", &HistoryRow::stage,

@@ -29,4 +29,11 @@ constexpr PetscInt kDistributedDofs = 20000;
 // saying which factorization was chosen and why.
 PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what);
 
+// Collective: the sign of the determinant of the last matrix MUMPS factored
+// (+1, -1), or 0 when MUMPS does not compute it (it does with
+// -redundant_mat_mumps_icntl_33 1, or -mat_mumps_icntl_33 1 when distributed).
+// A change of sign along a load path is an eigenvalue of the tangent passing
+// zero: a bifurcation or a limit point.
+PetscErrorCode DeterminantSign(KSP ksp, int &sign);
+
 } // namespace tf

@@ -109,6 +109,8 @@ public:
   double iterate_residual() const { return iterate_residual_; }
   bool solved() const { return solved_; }
   bool accepted() const { return accepted_; }
+  // The sign of the last factored matrix's determinant (0: not computed; linear_solver.hpp).
+  int determinant_sign() const { return det_sign_; }
   // The reaction increments of the last solve as a local vector in the node
   // frames (prescribed dofs only, ghosts filled).
   Vec reactions_local() const { return reactions_local_; }
@@ -164,6 +166,7 @@ private:
   Vec iterate_ = nullptr; // the iterate of SetIterate (not owned)
   double accept_below_ = 0, reject_above_ = 0, iterate_residual_ = 0;
   bool solved_ = true, accepted_ = false;
+  int det_sign_ = 0;
   Vec x_ = nullptr, work_ = nullptr, work_local_ = nullptr; // the iterate in node frames; scratch
 
   void Rotate(PetscInt node, double &a, double &b, bool to_local) const;
