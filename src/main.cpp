@@ -27,7 +27,7 @@ static const char help[] =
 // The error estimate's companion (driver/answer.hpp): the same case at half
 // the resolution (half the cells through the wall and around, half the trial
 // increments; a mesh file is kept, so the estimate then covers the steps
-// only), run first and quietly; its history is what the main run's answer
+// only), run quietly once the main run has reached its end; its history is what the answer
 // compares with. Its result file is removed.
 static PetscErrorCode Companion(const tf::Options &opt, std::vector<tf::HistoryRow> &rows)
 {
@@ -56,18 +56,21 @@ static PetscErrorCode Companion(const tf::Options &opt, std::vector<tf::HistoryR
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
   if (rank == 0) std::remove(c.output.c_str());
-  // A companion that stops early (every rank alike) leaves the run without an estimate, not without a result.
-  if (failed == PETSC_ERR_NOT_CONVERGED || failed == PETSC_ERR_SIG) {
+  // A stop signal stops the job (Run's caller reports it); a companion that
+  // could not finish leaves the run without an estimate, not without a result.
+  if (failed == PETSC_ERR_NOT_CONVERGED) {
     const char *why = nullptr;
     (void)PetscErrorMessage(failed, nullptr, (char **)&why);
+    std::string text = why ? why : "?";
+    text = text.substr(0, text.find("; results up to there")); // its file is not kept
     PetscCall(
-      PetscPrintf(PETSC_COMM_WORLD, "tubeform: no error estimate: its companion run stopped (%s)\n", why ? why : "?"));
+      PetscPrintf(PETSC_COMM_WORLD, "tubeform: no error estimate: its companion run stopped (%s)\n", text.c_str()));
     rows.clear();
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(failed);
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,
-                        "tubeform: error estimate: companion run of %d x %d cells, %d trial increments (%.1f s)\n",
+                        "tubeform: companion run for the error estimate: %d x %d cells, %d trial increments (%.1f s)\n",
                         (int)c.mesh_nt, (int)c.mesh_ntheta, (int)c.increments, MPI_Wtime() - t0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -82,12 +85,10 @@ static PetscErrorCode Run(bool &collective)
   PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneNames(), opt));
   collective = false;
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
-  std::vector<tf::HistoryRow> companion;
-  if (opt.error_estimate && (opt.scene == "squaring" || opt.scene == "flattening"))
-    PetscCall(Companion(opt, companion));
   tf::Problem problem;
   PetscCall(problem.Setup(PETSC_COMM_WORLD, opt));
-  problem.SetCompanion(std::move(companion));
+  if (opt.error_estimate && (opt.scene == "squaring" || opt.scene == "flattening"))
+    problem.SetCompanion([&opt](std::vector<tf::HistoryRow> &rows) { return Companion(opt, rows); });
   PetscCall(problem.Run());
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -30,6 +30,12 @@ sticks and slides at T = mu N; friction dissipation = mu N x slip.
     about the centre = mu R sum f_n within 1 %, and the dissipation = that
     moment x the turn within 1 % while it slides (the second half of the turn;
     over the whole turn the elastic wind-up and micro-slip take ~1 %).
+The checks above test the paper's friction law and r_min bounds, on its
+forward increments (-equilibrium_tol 0: with equilibrium iterations a step
+is accepted anywhere within R_max <= 0.005 q, which moves the plateau by up to
+that and is no test of the increment-size independence). The default
+(equilibrium) increments: the plateau within the equilibrium tolerance 5e-3
+of mu N at 20 and 200 increments.
 """
 import numpy as np
 
@@ -40,9 +46,10 @@ k = Checks("slide")
 mu, N, vcri = 0.2, 100.0, 1e-3
 
 
-def history(extra, name):
+def history(extra, name, paper=True):
     f = out(name)
-    run(tf, mpirun, 1, ["-options_file", f"{src}/options/slide.opts", "-output", f, "-output_every", 100000] + extra)
+    run(tf, mpirun, 1, ["-options_file", f"{src}/options/slide.opts", "-output", f, "-output_every", 100000] + extra +
+        (["-equilibrium_tol", 0] if paper else []))
     import h5py
     with h5py.File(f, "r") as h:
         return {c: h["/history"][c][:] for c in h["/history"]}
@@ -72,6 +79,10 @@ k.check(abs(excess[20]) >= 5 * abs(excess[200]),
 k.check(abs(plateau[20] / plateau[200] - 1) < 2e-5, f"sliding force independent of the increment size: {plateau[20]:.5f} vs "
         f"{plateau[200]:.5f} ({plateau[20] / plateau[200] - 1:+.1e})")
 
+for n in (20, 200):
+    T = history(["-increments", n], f"slide_eq_{n}.h5", paper=False)["load"][-1]
+    k.check(abs(T / (mu * N) - 1) < 5e-3, f"equilibrium increments, {n}: sliding force {T:.4f} vs mu N ({T / (mu * N) - 1:+.1e})")
+
 H = history(["-slide_push", 0.002, "-increments", 200], "slide_stick.h5")
 stage2 = H["stage"] == 1
 low = stage2 & (H["load"] < 0.5 * mu * N)
@@ -95,7 +106,7 @@ fall_off, _, _ = reversal(2)
 k.check(fall_off > 0.5 * mu * N * 1.02, f"without the bound (-rmin_dphi 2) T falls by {fall_off:.3f} in one increment")
 import h5py  # noqa: E402
 f = out("slide_arc.h5")
-run(tf, mpirun, 1, ["-options_file", f"{src}/options/slide_arc.opts", "-output", f, "-output_every", 100000])
+run(tf, mpirun, 1, ["-options_file", f"{src}/options/slide_arc.opts", "-output", f, "-output_every", 100000, "-equilibrium_tol", 0])
 with h5py.File(f, "r") as hf:
     A = {c: hf["/history"][c][:] for c in hf["/history"]}
 R, sum_fn = 10.0, A["fn_sum"][-1]

@@ -125,6 +125,7 @@ class Checks:
         self.total += 1
         self.failed += not ok
         print(("ok     " if ok else "FAILED ") + what)
+        return ok
 
     def done(self):
         print(f"{self.name}: {self.total - self.failed} passed, {self.failed} failed")

@@ -21,7 +21,7 @@ namespace tf {
 
 namespace {
 // The layout of a checkpoint; a file of another version is refused.
-constexpr double kCheckpointVersion = 1;
+constexpr double kCheckpointVersion = 2;
 // Room a checkpoint is given before it is written: 8-byte numbers, fewer than
 // 64 per node, per cell and per history row (the state holds about 30, 40 and
 // 46), and 1 MB for HDF5's own.
@@ -102,6 +102,8 @@ PetscErrorCode Problem::Persist(Archive &ar, CheckpointHeader &head)
   PetscCall(ar.Value("inconsistent", inconsistent_));
   PetscCall(ar.Value("worst_error", worst_error_));
   PetscCall(ar.Value("worst_internal", worst_internal_));
+  PetscCall(ar.Value("q_sum", q_sum_)); // the time-averaged force of the equilibrium criterion
+  PetscCall(ar.Value("q_count", q_count_));
   PetscCall(ar.Value("warned", warned_));
   ar.Group("/energy");
   for (auto [name, w] : {std::pair{"w_ext", &energy_.w_ext},

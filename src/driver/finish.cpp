@@ -10,6 +10,7 @@ namespace tf {
 PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &stop)
 {
   PetscFunctionBeginUser;
+  if (companion_run_ && stop.why.empty()) PetscCall(companion_run_(companion_));
   PetscCall(PetscLogStagePush(Log::output_stage));
   const HistoryRow &last = history_.rows().back();
   // Shape metrics (C/t, C1/C2, springback) are the press scenes': those with final metrics of their own.

@@ -166,16 +166,16 @@ PetscErrorCode Problem::Run()
 
   PetscFunctionBeginUser;
   PetscCall(Open(writer));
+  const double end = path_.end;
+  std::vector<double> breaks = path_.breakpoints;
+  breaks.push_back(end);
+  at_.started.assign(breaks.size(), 0); // a checkpoint's must have as many stages
   OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / opt_.stroke : 0);
   if (!opt_.restart.empty())
     PetscCall(ReadCheckpoint(writer, output)); // the state and the results so far
   else
     PetscCall(Start(writer)); // increment 0: the initial state
 
-  const double end = path_.end;
-  std::vector<double> breaks = path_.breakpoints;
-  breaks.push_back(end);
-  if (at_.started.empty()) at_.started.assign(breaks.size(), 0);
   double &lambda = at_.lambda;
   PetscInt &inc = at_.inc;
   const double dl_load = 1.0 / opt_.increments;

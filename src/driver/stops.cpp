@@ -127,10 +127,11 @@ PetscErrorCode Problem::StopAfter(Stop &stop, bool &wrote_last)
                       100 * history_.rows().back().energy_error, opt_.max_energy_error, Where().c_str());
   } else if (unsettled_run_ >= opt_.friction_max_unsettled) {
     stop.code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
-    stop.why = Format("the friction iterations did not settle in %d increments in a row (-friction_max_unsettled), "
-                      "even on steps halved %d times: raise -friction_max_iters or -friction_tol, or try -dynamics "
-                      "auto (%s)",
-                      (int)unsettled_run_, kMaxCuts, Where().c_str());
+    const bool balance = opt_.equilibrium_tol > 0; // the equilibrium iterations carry the friction's
+    stop.why = Format("the %s iterations did not settle in %d increments in a row (-friction_max_unsettled), "
+                      "even on steps halved %d times: raise -friction_max_iters or %s, or try -dynamics auto (%s)",
+                      balance ? "equilibrium" : "friction", (int)unsettled_run_, kMaxCuts,
+                      balance ? "-equilibrium_tol" : "-friction_tol", Where().c_str());
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -73,7 +73,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                      opt.mesh_ntheta));
   PetscCall(read.Real(PetscOptionsObject, "-mesh_density",
                       "With -mesh_ntheta 0: elements around the tube per bending length sqrt(Ro t) (the presets: "
-                      "fast 12, default 20, accurate 28)",
+                      "fast 12, default 20, accurate 32)",
                       opt.mesh_density));
   PetscCall(
     read.String(PetscOptionsObject, "-mesh_file",
@@ -290,7 +290,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       opt.output_stroke));
   PetscCall(read.Bool(PetscOptionsObject, "-error_estimate",
                       "Estimate the error of the load and C/t (tool scenes) from a companion run at half the "
-                      "resolution, run first (docs/accuracy.md, \"The error estimate\")",
+                      "resolution, run after the main run (docs/accuracy.md, \"The error estimate\")",
                       opt.error_estimate));
   PetscCall(read.Real(PetscOptionsObject, "-target_load",
                       "Accuracy target of the load (relative; 0: none): an estimate above it is a warning and "

@@ -3,6 +3,7 @@
 // incremental loop that drives them along the scene's load path.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,9 +37,11 @@ public:
   PetscErrorCode Setup(MPI_Comm comm, const Options &opt, std::unique_ptr<Scene> scene);
   // Collective: the load path from lambda = 0 to its end; results written.
   PetscErrorCode Run();
-  // The history of a companion run of the same case at half the resolution,
-  // whose difference from this run's is its error estimate (driver/answer.hpp).
-  void SetCompanion(std::vector<HistoryRow> rows) { companion_ = std::move(rows); }
+  // A companion run of the same case at half the resolution, whose history's
+  // difference from this run's is its error estimate (driver/answer.hpp):
+  // called once the run has reached its end (not on a stop), before the answer.
+  using CompanionRun = std::function<PetscErrorCode(std::vector<HistoryRow> &)>;
+  void SetCompanion(CompanionRun run) { companion_run_ = std::move(run); }
   // No lines on the standard output (a companion run).
   void SetQuiet() { quiet_ = true; }
 
@@ -60,6 +63,7 @@ private:
   std::unique_ptr<ContactSet> contact_; // scenes with tools
   std::unique_ptr<Model> model_;        // what the scene sees
   History history_;
+  CompanionRun companion_run_;        // none: no estimate
   std::vector<HistoryRow> companion_; // the companion run's history (none: no estimate)
   bool quiet_ = false;
 
