@@ -24,6 +24,9 @@ constexpr int kBacktracks = 3;
 constexpr int kMaxCuts = 6;
 // Re-solves of a shortened non-linear step that go to its limits' estimate; later ones at least halve it.
 constexpr int kMaxResolves = 3;
+// A balanced step grows to its first event when that is more than this many
+// times its length away (closer ones: the step is taken; controller.cpp).
+constexpr double kGrowBeyond = 2.0;
 // -dynamics implicit: no step shorter than this fraction of the trial step.
 // Events closer than that (a node whose normal force is all but zero, a point
 // a hair from the yield surface) are taken with it; shorter steps would make
