@@ -11,7 +11,6 @@ Controller::Controller(Model &model, Scene &scene, Inertia *inertia, const Optio
   if (Equilibrium()) {
     iter_ = m_.system.CreateLocalVector();
     f_trial_ = m_.system.CreateLocalVector();
-    start_ = m_.system.CreateLocalVector();
     prev_ = m_.system.CreateLocalVector();
   }
 }
@@ -20,7 +19,6 @@ Controller::~Controller()
 {
   (void)VecDestroy(&iter_);
   (void)VecDestroy(&f_trial_);
-  (void)VecDestroy(&start_);
   (void)VecDestroy(&prev_);
 }
 
@@ -138,7 +136,6 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
   // only locates the events.
   if (Equilibrium() && t.limit.r >= 1.0 - opt_.rmin_event_tol) {
     const Trial solved = t;
-    PetscCall(VecCopy(du, start_));
     PetscCall(Balance(lambda, dl, du, t, inc));
     if (!t.settled && last) {
       // The shortest step does not balance: it is solved the paper's way, as
@@ -265,22 +262,11 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
     // ends; only inertia's shortest step is taken as it is (a compromise,
     // counted). The last solution is taken unscaled (scaling it would break
     // the friction forces' equilibrium).
-    //   With equilibrium iterations the trial's events come from its first
-    // solve, which does not chase the start's own out-of-balance; on the
-    // balanced path an event may lie further on (a node that the first solve
-    // brings onto the tool, the balanced one not yet). The search is then
-    // two-sided: a balanced step whose first event is more than kGrowBeyond
-    // times its length away grows to it (at most to the trial, within the
-    // first kMaxResolves tries), or the step would creep in shortest steps.
     double taken = r;
     for (int attempt = 1;; ++attempt) {
       dl *= taken;
       m_.body.ScaleTransitions(taken);
       PetscCall(SettledTrial(lambda, dl, du, t, inc));
-      if (Equilibrium() && attempt <= kMaxResolves && t.limit.r > kGrowBeyond && dl < dl_trial * (1 - kLambdaTol)) {
-        taken = std::min(t.limit.r, dl_trial / dl);
-        continue;
-      }
       if (t.limit.r >= 1.0 - opt_.rmin_event_tol) break;
       taken = attempt < kMaxResolves ? t.limit.r : std::min(t.limit.r, 0.5);
       if (InertiaActive()) taken = std::max(taken, MinStepFraction(dl));

@@ -24,9 +24,6 @@ constexpr int kBacktracks = 3;
 constexpr int kMaxCuts = 6;
 // Re-solves of a shortened non-linear step that go to its limits' estimate; later ones at least halve it.
 constexpr int kMaxResolves = 3;
-// A balanced step grows to its first event when that is more than this many
-// times its length away (closer ones: the step is taken; controller.cpp).
-constexpr double kGrowBeyond = 2.0;
 // -dynamics implicit: no step shorter than this fraction of the trial step.
 // Events closer than that (a node whose normal force is all but zero, a point
 // a hair from the yield surface) are taken with it; shorter steps would make
@@ -89,7 +86,6 @@ private:
   // internal force of the state it reaches (its mean nodal force magnitude in
   // q_iter_); have_iter_ false before the trial's first solve.
   Vec iter_ = nullptr, f_trial_ = nullptr;
-  Vec start_ = nullptr;                  // the step's incremental solution, before its equilibrium iterations
   Vec prev_ = nullptr;                   // the iterate the last correction started from (line search)
   double reject_above_ = PETSC_MAX_REAL; // an iterate out of balance by more is backtracked
   double q_iter_ = 0;
