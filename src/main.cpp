@@ -60,7 +60,10 @@ static PetscErrorCode Companion(const tf::Options &opt, std::vector<tf::HistoryR
   }
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
-  if (rank == 0) std::remove(c.output.c_str());
+  if (rank == 0) {
+    std::remove(c.output.c_str());
+    std::remove((c.output.substr(0, c.output.size() - 3) + ".xmf").c_str()); // its ParaView index
+  }
   // A stop signal stops the job (Run's caller reports it); a companion that
   // could not finish leaves the run without an estimate, not without a result.
   if (failed == PETSC_ERR_NOT_CONVERGED) {

@@ -1,16 +1,35 @@
 // Step 7 of a run: its answer (driver/answer.hpp) with the error estimate
 // from the companion run, the self-checks, the result file renamed into
 // place, and the stop that ended the run early, reported last.
+#include <string>
+
 #include "tubeform/core/log.hpp"
+#include "tubeform/core/signals.hpp"
 #include "tubeform/driver/answer.hpp"
 #include "tubeform/driver/problem.hpp"
 
 namespace tf {
 
-PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &stop)
+PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
 {
+  Stop stop = ended;
   PetscFunctionBeginUser;
-  if (companion_run_ && stop.why.empty()) PetscCall(companion_run_(companion_));
+  if (companion_run_ && stop.why.empty()) {
+    // A stop signal during the companion: this run's results are complete and
+    // written as such, without an estimate; the job still ends as asked.
+    const PetscErrorCode c = companion_run_(companion_);
+    if (c == PETSC_ERR_SIG) {
+      int mine = StopSignal(), any;
+      PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm_));
+      companion_.clear();
+      stop.signal = any, stop.code = PETSC_ERR_SIG;
+      stop.why = std::string("interrupted by ") + SignalName(any) +
+                 " during the companion run of the error estimate (the run itself had reached its end: complete, "
+                 "without an estimate)";
+    } else {
+      PetscCall(c);
+    }
+  }
   PetscCall(PetscLogStagePush(Log::output_stage));
   const HistoryRow &last = history_.rows().back();
   // Shape metrics (C/t, C1/C2, springback) are the press scenes': those with final metrics of their own.

@@ -130,7 +130,7 @@ private:
   PetscErrorCode StopAfter(Stop &stop, bool &wrote_last);
   // A checkpoint; one that cannot be written stops the run (stop.why).
   PetscErrorCode Checkpoint(ResultWriter &writer, const OutputSchedule &output, Stop &stop);
-  PetscErrorCode Finish(ResultWriter &writer, const Stop &stop);
+  PetscErrorCode Finish(ResultWriter &writer, const Stop &ended);
   std::string Where() const; // where the run stands, for a stop's message
   // The forces at the end of an increment (or of a restored state) at lambda:
   // applied, external (with friction), internal (with inertia), out-of-balance.
