@@ -58,11 +58,12 @@ for np_ in (1, 2):
 # Iterations that never settle (a tolerance no iterate meets): the run stops
 # after -friction_max_unsettled increments in a row, naming the option, with
 # the history up to there (every row's unsettled count rising). The paper's
-# friction iterations on 1 rank (-equilibrium_tol 0, -friction_tol 1e-300),
-# the default equilibrium iterations on 2 (-equilibrium_tol 1e-12: below
-# round-off of the out-of-balance forces).
-for np_, case in ((1, ["-equilibrium_tol", 0, "-friction_tol", "1e-300"]), (2, ["-equilibrium_tol", "1e-12"])):
-    f = out(f"unsettled_np{np_}.h5")
+# friction iterations (-equilibrium_tol 0, -friction_tol 1e-300) and the
+# default equilibrium iterations (-equilibrium_tol 1e-12: below round-off of
+# the out-of-balance forces), each on 1 and 2 ranks.
+for np_, case in [(n, c) for c in (["-equilibrium_tol", 0, "-friction_tol", "1e-300"], ["-equilibrium_tol", "1e-12"])
+                  for n in (1, 2)]:
+    f = out(f"unsettled_np{np_}_{case[-2][1:]}.h5")
     p = run(tf, mpirun, np_, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
                               f"{src}/options/preset-fast.opts", "-friction_max_iters", "2",
                               "-friction_max_unsettled", "4", "-output", f] + case, check=False)

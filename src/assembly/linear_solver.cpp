@@ -120,12 +120,12 @@ PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode DeterminantSign(KSP ksp, int &sign)
+PetscErrorCode FactoredMatrix(KSP ksp, Mat &factor, bool &mumps)
 {
   PC pc;
-  PetscBool redundant, lu;
+  PetscBool redundant, factored;
   PetscFunctionBeginUser;
-  sign = 0;
+  factor = nullptr, mumps = false;
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCREDUNDANT, &redundant));
   if (redundant) {
@@ -133,14 +133,24 @@ PetscErrorCode DeterminantSign(KSP ksp, int &sign)
     PetscCall(PCRedundantGetKSP(pc, &inner));
     PetscCall(KSPGetPC(inner, &pc));
   }
-  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCLU, &lu));
-  if (!lu) PetscFunctionReturn(PETSC_SUCCESS);
-  Mat factor = nullptr;
+  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &factored, PCLU, PCCHOLESKY, PCILU, PCICC, ""));
+  if (!factored) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PCFactorGetMatrix(pc, &factor));
-  MatSolverType type;
   if (!factor) PetscFunctionReturn(PETSC_SUCCESS);
+  MatSolverType type;
   PetscCall(MatFactorGetSolverType(factor, &type));
-  if (!type || std::string(type) != MATSOLVERMUMPS) PetscFunctionReturn(PETSC_SUCCESS);
+  mumps = type && std::string(type) == MATSOLVERMUMPS;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DeterminantSign(KSP ksp, int &sign)
+{
+  Mat factor;
+  bool mumps;
+  PetscFunctionBeginUser;
+  sign = 0;
+  PetscCall(FactoredMatrix(ksp, factor, mumps));
+  if (!mumps) PetscFunctionReturn(PETSC_SUCCESS);
   PetscInt on;
   PetscCall(MatMumpsGetIcntl(factor, 33, &on));
   if (on != 1) PetscFunctionReturn(PETSC_SUCCESS);

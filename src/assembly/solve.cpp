@@ -172,7 +172,6 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
       SETERRQ(mesh_->comm, PETSC_ERR_NOT_CONVERGED, "%s (KSP: %s)", why.c_str(), KSPConvergedReasons[reason]);
     }
     if (iterate_) PetscCall(VecAXPY(sol_, 1.0, x_));
-    PetscCall(DeterminantSign(ksp_, det_sign_));
     ++nsolves_;
     PetscCall(PetscLogEventEnd(Log::solve, 0, 0, 0, 0));
   }
@@ -210,7 +209,14 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode System::FreeNorm(Vec f_local, double &norm, NormType type)
+PetscErrorCode System::DeterminantSign(int &sign) const
+{
+  PetscFunctionBeginUser;
+  PetscCall(tf::DeterminantSign(ksp_, sign));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode System::FreeNorms(Vec f_local, double &norm2, double &norm_max)
 {
   PetscScalar *f;
   PetscReal nrm;
@@ -225,17 +231,20 @@ PetscErrorCode System::FreeNorm(Vec f_local, double &norm, NormType type)
   PetscCall(VecZeroEntries(rhs_));
   PetscCall(DMLocalToGlobal(mesh_->dm, f_local_, ADD_VALUES, rhs_));
   // A prescribed dof zeroed on one rank may carry a share from another: zero the owned rows too.
+  PetscInt lo;
+  PetscCall(VecGetOwnershipRange(rhs_, &lo, nullptr));
   PetscCall(VecGetArray(rhs_, &f));
   for (const auto &p : prescribed_)
     if (mesh_->node_owned[p.node]) {
-      PetscInt local = mesh_->node_dof[p.node] + p.comp, global, lo;
+      PetscInt local = mesh_->node_dof[p.node] + p.comp, global;
       PetscCall(ISLocalToGlobalMappingApply(ltog_, 1, &local, &global));
-      PetscCall(VecGetOwnershipRange(rhs_, &lo, nullptr));
       f[global - lo] = 0;
     }
   PetscCall(VecRestoreArray(rhs_, &f));
-  PetscCall(VecNorm(rhs_, type, &nrm));
-  norm = nrm;
+  PetscCall(VecNorm(rhs_, NORM_2, &nrm));
+  norm2 = nrm;
+  PetscCall(VecNorm(rhs_, NORM_INFINITY, &nrm));
+  norm_max = nrm;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,7 +1,8 @@
 #include "tubeform/assembly/solve_failure.hpp"
 
-#include <cstring>
+#include <string>
 
+#include "tubeform/assembly/linear_solver.hpp"
 #include "tubeform/core/core.hpp"
 
 namespace tf {
@@ -36,26 +37,12 @@ std::string MumpsError(PetscInt info1, PetscInt info2)
 
 PetscErrorCode DescribeSolveFailure(KSP ksp, std::string &why)
 {
-  PC pc;
-  PetscBool redundant, mumps;
+  Mat factor;
+  bool mumps;
   PetscFunctionBeginUser;
   why = "the linear solve failed";
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCREDUNDANT, &redundant));
-  if (redundant) {
-    KSP inner;
-    PetscCall(PCRedundantGetKSP(pc, &inner));
-    PetscCall(KSPGetPC(inner, &pc));
-  }
-  PetscBool factored;
-  PetscCall(PetscObjectTypeCompareAny((PetscObject)pc, &factored, PCLU, PCCHOLESKY, PCILU, PCICC, ""));
-  if (!factored) PetscFunctionReturn(PETSC_SUCCESS); // an iterative solver of the user's: KSP's reason says it
-  Mat factor = nullptr;
-  PetscCall(PCFactorGetMatrix(pc, &factor));
-  if (!factor) PetscFunctionReturn(PETSC_SUCCESS);
-  MatSolverType type;
-  PetscCall(MatFactorGetSolverType(factor, &type));
-  mumps = type && std::strcmp(type, MATSOLVERMUMPS) == 0 ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(FactoredMatrix(ksp, factor, mumps));
+  if (!factor) PetscFunctionReturn(PETSC_SUCCESS); // an iterative solver of the user's: KSP's reason says it
   if (mumps) {
     PetscInt info1, info2;
     PetscCall(MatMumpsGetInfog(factor, 1, &info1));

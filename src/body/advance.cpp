@@ -11,15 +11,6 @@
 
 namespace tf {
 
-namespace {
-Voigt Scaled(const Voigt &v, double f)
-{
-  Voigt s;
-  for (int c = 0; c < kNumStress; ++c) s[c] = f * v[c];
-  return s;
-}
-} // namespace
-
 bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState *to, Advanced &acc) const
 {
   fe::QuadGeometry mid, moved;

@@ -126,15 +126,6 @@ Mat4 Body::TransitionTangent(size_t i) const
   return c;
 }
 
-namespace {
-Voigt Scaled(const Voigt &v, double f)
-{
-  Voigt s;
-  for (int c = 0; c < kNumStress; ++c) s[c] = f * v[c];
-  return s;
-}
-} // namespace
-
 bool Body::ScanTransition(size_t i, const Voigt &deps, double omega, bool apply)
 {
   const double m = std::min(1.0, yield_factor_[i]);

@@ -319,7 +319,7 @@ void ContactSet::Leave(PetscInt node, double share)
 {
   // A force below the scale of zero stays zero (round-off of an exact r5 event).
   const Vec2 f = NodeForce(node, true);
-  if (!carry_ && mesh_->node_owned[node] && share * std::hypot(f[0], f[1]) > f_small_)
+  if (!balanced_ && mesh_->node_owned[node] && share * std::hypot(f[0], f[1]) > f_small_)
     for (int k = 0; k < 2; ++k) pending_[node][k] += share * f[k];
   fn_[node] = x_[node] = 0;
 }

@@ -40,7 +40,8 @@ PetscErrorCode Controller::Solve(double lambda, double dl, Vec du, double &dU, I
   const double dt = InertiaActive() ? dl * duration_ : 0.0;
   // K of the state at the start of the increment (+ M / dt^2), then the loads:
   // the tools' prescribed motion and friction rows first, the scene's supports
-  // and loads, the inertia load, the carried out-of-balance force.
+  // and loads, the inertia load; for an equilibrium iterate, the start's forces
+  // against the iterate's internal force.
   PetscCall(m_.system.Begin());
   PetscCall(m_.body.AssembleTangent(m_.system));
   // The state of the last iterate with this assembly's element state: QM6's
@@ -81,10 +82,7 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
 
   PetscFunctionBeginUser;
   t = Trial{};
-  // A contact node whose force would vanish within this fraction of the step
-  // is released in the trial rather than cutting it: round-off quasi-statically,
-  // the shortest step inertia allows otherwise.
-  const double release = InertiaActive() ? std::max(kReleaseWithin, MinStepFraction(dl)) : kReleaseWithin;
+  const double release = ReleaseWithin(dl);
   if (ContactActive()) m_.contact->ResetIterates();
   have_iter_ = false;
   // Re-solve until nothing changes: friction forces linearized about the last
@@ -117,18 +115,9 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
       PetscFunctionReturn(PETSC_SUCCESS);
     }
     // The shortest step still wanders (friction iterates drifting along a
-    // nearly free slip mode, or a loading switch cycle): it is solved once
-    // more the paper's way, the friction linearized about the start of the
-    // increment with the trial's active sets, and that solution is taken
-    // (r4-r6 and r1 still limit it). Counted (history column `unsettled`).
-    ++inc.unsettled;
-    if (ContactActive()) m_.contact->LinearizeAtStart();
-    PetscCall(Solve(lambda, dl, du, t.dU, inc));
-    t.limit = StepLimit{};
-    PetscCall(m_.body.ScanTrial(du, false, t.limit, switches, t.transitions));
-    t.left = switches;
-    if (ContactActive()) PetscCall(m_.contact->LimitStep(du, t.dU, t.limit));
-    PetscFunctionReturn(PETSC_SUCCESS); // taken as it is (no equilibrium iterations either)
+    // nearly free slip mode, or a loading switch cycle): taken unsettled.
+    PetscCall(SolveUnsettled(lambda, dl, du, t, inc));
+    PetscFunctionReturn(PETSC_SUCCESS); // (no equilibrium iterations either)
   }
   if (ContactActive()) PetscCall(m_.contact->LimitStep(du, t.dU, t.limit));
   // A step that will be taken (its first event within -rmin_event_tol of its
@@ -138,20 +127,27 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
     const Trial solved = t;
     PetscCall(Balance(lambda, dl, du, t, inc));
     if (!t.settled && last) {
-      // The shortest step does not balance: it is solved the paper's way, as
-      // an unsettled step is (counted): the friction linearized about the
-      // start of the increment, from the active set of the located events
-      // (the iterations' releases undone).
-      ++inc.unsettled;
+      // The shortest step does not balance: taken unsettled, from the active
+      // set of the located events (the iterations' releases undone).
       t = solved;
-      if (ContactActive()) m_.contact->ResetIterates(), m_.contact->LinearizeAtStart();
-      PetscCall(Solve(lambda, dl, du, t.dU, inc));
-      t.limit = StepLimit{};
-      PetscCall(m_.body.ScanTrial(du, false, t.limit, switches, t.transitions));
-      t.left = switches;
-      if (ContactActive()) PetscCall(m_.contact->LimitStep(du, t.dU, t.limit));
+      if (ContactActive()) m_.contact->ResetIterates();
+      PetscCall(SolveUnsettled(lambda, dl, du, t, inc));
     }
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Controller::SolveUnsettled(double lambda, double dl, Vec du, Trial &t, Increment &inc)
+{
+  PetscInt switches = 0;
+  PetscFunctionBeginUser;
+  ++inc.unsettled;
+  if (ContactActive()) m_.contact->LinearizeAtStart();
+  PetscCall(Solve(lambda, dl, du, t.dU, inc));
+  t.limit = StepLimit{};
+  PetscCall(m_.body.ScanTrial(du, false, t.limit, switches, t.transitions));
+  t.left = switches;
+  if (ContactActive()) PetscCall(m_.contact->LimitStep(du, t.dU, t.limit));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -160,7 +156,7 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
   PetscInt switches = 0;
 
   PetscFunctionBeginUser;
-  const double release = InertiaActive() ? std::max(kReleaseWithin, MinStepFraction(dl)) : kReleaseWithin;
+  const double release = ReleaseWithin(dl);
   PetscCall(VecCopy(du, iter_));
   have_iter_ = true;
   double first = -1, previous = PETSC_MAX_REAL;

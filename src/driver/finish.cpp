@@ -2,6 +2,7 @@
 // from the companion run, the self-checks, the result file renamed into
 // place, and the stop that ended the run early, reported last.
 #include <string>
+#include <vector>
 
 #include "tubeform/core/log.hpp"
 #include "tubeform/core/signals.hpp"
@@ -13,15 +14,16 @@ namespace tf {
 PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
 {
   Stop stop = ended;
+  std::vector<HistoryRow> companion; // its history (none: no estimate)
   PetscFunctionBeginUser;
   if (companion_run_ && stop.why.empty()) {
     // A stop signal during the companion: this run's results are complete and
     // written as such, without an estimate; the job still ends as asked.
-    const PetscErrorCode c = companion_run_(companion_);
+    const PetscErrorCode c = companion_run_(companion);
     if (c == PETSC_ERR_SIG) {
       int mine = StopSignal(), any;
       PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm_));
-      companion_.clear();
+      companion.clear();
       stop.signal = any, stop.code = PETSC_ERR_SIG;
       stop.why = std::string("interrupted by ") + SignalName(any) +
                  " during the companion run of the error estimate (the run itself had reached its end: complete, "
@@ -33,8 +35,8 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
   PetscCall(PetscLogStagePush(Log::output_stage));
   const HistoryRow &last = history_.rows().back();
   // Shape metrics (C/t, C1/C2, springback) are the press scenes': those with final metrics of their own.
-  const bool shape = !scene_->FinalMetrics(history_).empty();
-  const Answer answer = Summarize(history_.rows(), shape, companion_.empty() ? nullptr : &companion_);
+  const auto scene_metrics = scene_->FinalMetrics(history_);
+  const Answer answer = Summarize(history_.rows(), !scene_metrics.empty(), companion.empty() ? nullptr : &companion);
   std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke},
                                                          {"final_load", last.load},
                                                          {"x_max", last.x_max},
@@ -44,7 +46,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
                                                          {"interrupted", double(stop.signal)},
                                                          {"target_load", opt_.target_load},
                                                          {"target_c_over_t", opt_.target_c_over_t}};
-  for (const auto &m : scene_->FinalMetrics(history_)) metrics.push_back(m);
+  for (const auto &m : scene_metrics) metrics.push_back(m);
   for (const auto &m : AnswerAttributes(answer)) metrics.push_back(m);
   PetscCall(writer.Close(history_, metrics));
   int ok = history_.FinishCsv(); // rank 0 holds the file; every rank learns the outcome

@@ -103,9 +103,8 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
   for (auto [start, now] : {std::pair{forces_.f_app0, forces_.f_app}, std::pair{forces_.f_ext0, forces_.f_ext},
                             std::pair{forces_.f_int0, forces_.f_int}})
     PetscCall(VecAXPBY(start, 0.5, 0.5, now));
-  PetscCall(system_.FreeNorm(forces_.f_res, residual));
   double r_max;
-  PetscCall(system_.FreeNorm(forces_.f_res, r_max, NORM_INFINITY));
+  PetscCall(system_.FreeNorms(forces_.f_res, residual, r_max));
   q_sum_ += q_now_, q_count_ += 1;
 
   HistoryRow row;
@@ -117,7 +116,9 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
   row.friction_iters = taken.solves;
   row.residual = residual;
   row.r_max = r_max;
-  row.det_sign = system_.determinant_sign();
+  int sign;
+  PetscCall(system_.DeterminantSign(sign));
+  row.det_sign = sign;
   row.q_avg = q_sum_ / q_count_;
   row.redo = taken.redo;
   row.drift = done.body.drift;

@@ -73,7 +73,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                      opt.mesh_ntheta));
   PetscCall(read.Real(PetscOptionsObject, "-mesh_density",
                       "With -mesh_ntheta 0: elements around the tube per bending length sqrt(Ro t) (the presets: "
-                      "fast 12, default 20, accurate 32)",
+                      "default 20, accurate 32)",
                       opt.mesh_density));
   PetscCall(
     read.String(PetscOptionsObject, "-mesh_file",
@@ -293,8 +293,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       "resolution, run after the main run (docs/accuracy.md, \"The error estimate\")",
                       opt.error_estimate));
   PetscCall(read.Real(PetscOptionsObject, "-target_load",
-                      "Accuracy target of the load (relative; 0: none): an estimate above it is a warning and "
-                      "status inaccurate in sweeps",
+                      "Accuracy target of the load (relative; 0: none): an estimate above it is a warning at the "
+                      "end of the run",
                       opt.target_load));
   PetscCall(read.Real(PetscOptionsObject, "-target_c_over_t", "Accuracy target of C/t (absolute; 0: none)",
                       opt.target_c_over_t));

@@ -29,6 +29,12 @@ constexpr PetscInt kDistributedDofs = 20000;
 // saying which factorization was chosen and why.
 PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what);
 
+// The factored matrix of a direct solve (through PCREDUNDANT to its inner
+// KSP), or nullptr when the preconditioner factors nothing (an iterative
+// solver of the user's) or has not factored yet; `mumps` says whether MUMPS
+// made it.
+PetscErrorCode FactoredMatrix(KSP ksp, Mat &factor, bool &mumps);
+
 // Collective: the sign of the determinant of the last matrix MUMPS factored
 // (+1, -1), or 0 when MUMPS does not compute it (it does with
 // -redundant_mat_mumps_icntl_33 1, or -mat_mumps_icntl_33 1 when distributed).

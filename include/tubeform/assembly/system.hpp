@@ -109,8 +109,9 @@ public:
   double iterate_residual() const { return iterate_residual_; }
   bool solved() const { return solved_; }
   bool accepted() const { return accepted_; }
-  // The sign of the last factored matrix's determinant (0: not computed; linear_solver.hpp).
-  int determinant_sign() const { return det_sign_; }
+  // Collective: the sign of the last factored matrix's determinant (0: not
+  // computed; linear_solver.hpp), asked once an increment, not at every solve.
+  PetscErrorCode DeterminantSign(int &sign) const;
   // The reaction increments of the last solve as a local vector in the node
   // frames (prescribed dofs only, ghosts filled).
   Vec reactions_local() const { return reactions_local_; }
@@ -118,9 +119,9 @@ public:
   const std::vector<Prescribed> &prescribed() const { return prescribed_; }
   Vec CreateLocalVector() const;
 
-  // Global 2-norm of a local force vector (global frame) with the prescribed
-  // dofs removed: the out-of-balance force of the free dofs.
-  PetscErrorCode FreeNorm(Vec f_local, double &norm, NormType type = NORM_2);
+  // Global 2-norm and largest entry of a local force vector (global frame)
+  // with the prescribed dofs removed: the out-of-balance force of the free dofs.
+  PetscErrorCode FreeNorms(Vec f_local, double &norm2, double &norm_max);
 
   PetscInt factorizations() const { return nsolves_; }
   // Which factorization the solver uses and why (one line).
@@ -166,7 +167,6 @@ private:
   Vec iterate_ = nullptr; // the iterate of SetIterate (not owned)
   double accept_below_ = 0, reject_above_ = 0, iterate_residual_ = 0;
   bool solved_ = true, accepted_ = false;
-  int det_sign_ = 0;
   Vec x_ = nullptr, work_ = nullptr, work_local_ = nullptr; // the iterate in node frames; scratch
 
   void Rotate(PetscInt node, double &a, double &b, bool to_local) const;

@@ -155,9 +155,9 @@ public:
   int Segment(PetscInt node) const { return segment_[node]; }
   const Tool &tool() const { return tool_; }
   bool friction() const { return prm_.mu > 0; }
-  // Equilibrium is carried from increment to increment (the residual of the
-  // contact nodes included): a leaving node's force is left to it, not kept pending.
-  void SetCarryResidual(bool carry) { carry_ = carry; }
+  // Equilibrium iterations balance every step: the force of a node leaving the
+  // tool is balanced by the next step's iterations, not kept as a pending load.
+  void SetBalanced(bool balanced) { balanced_ = balanced; }
   // The resolution of the forces (N/mm): equilibrium iterations balance them to
   // within it, so a normal force below it counts as zero for releases and r5.
   void SetForceResolution(double f) { resolution_ = f; }
@@ -169,7 +169,7 @@ private:
   Tool tool_;
   ContactParams prm_;
   bool removed_ = false;
-  bool carry_ = false;
+  bool balanced_ = false;
   double resolution_ = 0;
   std::vector<PetscInt> candidates_;
   std::vector<char> contact_, global_frame_;

@@ -21,10 +21,10 @@ namespace tf {
 constexpr double kReportedStrokes[] = {1.0, 2.0, 3.0, 4.2};
 // The estimate is this many times the difference between the run and its
 // companion of half the resolution: with an order p >= 1 the finer run's
-// error is at most the difference (1 / (2^p - 1)); the factor covers a
-// pre-asymptotic range (Roache's safety factor for two-grid studies, 1.25 for
-// well-behaved sequences, is the lower end; calibrated on the validation set:
-// docs/accuracy.md, "The error estimate").
+// error is at most the difference (1 / (2^p - 1)). 1: that bound alone, no
+// safety factor for a pre-asymptotic range (Roache's 1.25 for two-grid
+// studies would be the usual lower end); not yet calibrated: the validation
+// set is still to be measured (docs/accuracy.md, "The error estimate").
 constexpr double kEstimateSafety = 1.0;
 
 struct Answer {

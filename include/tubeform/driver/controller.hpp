@@ -8,6 +8,8 @@
 
 #include <petscvec.h>
 
+#include <algorithm>
+
 #include "tubeform/body/inertia.hpp"
 #include "tubeform/io/options.hpp"
 #include "tubeform/scenes/scene.hpp"
@@ -99,6 +101,17 @@ private:
   bool InertiaActive() const { return inertia_ && inertia_->active(); }
   // The shortest step inertia allows, as a fraction of a step of dl.
   double MinStepFraction(double dl) const { return kMinDynamicStep / (opt_.increments * dl); }
+  // A contact node whose force would vanish within this fraction of a step of
+  // dl is released in the trial rather than cutting it: round-off
+  // quasi-statically, the shortest step inertia allows otherwise.
+  double ReleaseWithin(double dl) const
+  {
+    return InertiaActive() ? std::max(kReleaseWithin, MinStepFraction(dl)) : kReleaseWithin;
+  }
+  // A trial step taken unsettled (counted, history column `unsettled`): solved
+  // once more the paper's way, the friction linearized about the start of the
+  // increment with the current active sets; r1 and r4-r6 still limit it.
+  PetscErrorCode SolveUnsettled(double lambda, double dl, Vec du, Trial &t, Increment &inc);
   // One linear solve of the step dl with the current iterates.
   PetscErrorCode Solve(double lambda, double dl, Vec du, double &dU, Increment &inc);
   // One trial: solves until friction iterates and loading switches settle. A

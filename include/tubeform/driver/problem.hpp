@@ -63,8 +63,7 @@ private:
   std::unique_ptr<ContactSet> contact_; // scenes with tools
   std::unique_ptr<Model> model_;        // what the scene sees
   History history_;
-  CompanionRun companion_run_;        // none: no estimate
-  std::vector<HistoryRow> companion_; // the companion run's history (none: no estimate)
+  CompanionRun companion_run_; // none: no estimate
   bool quiet_ = false;
 
   // Where the loop stands on the load path (a checkpoint keeps it).

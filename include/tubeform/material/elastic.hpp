@@ -96,6 +96,8 @@ void RotateStress(ObjectiveScheme scheme, double omega, Voigt &sigma, double fra
 // Deviator {sxx, syy, szz, sxy} and the equivalent (von Mises) stress.
 Voigt Deviator(const Voigt &s);
 double VonMises(const Voigt &s);
+// The share f of an increment (a step split at the yield onset).
+inline Voigt Scaled(const Voigt &v, double f) { return {f * v[0], f * v[1], f * v[2], f * v[3]}; }
 // s : e with e in Voigt strain form (gamma_xy = 2 e_xy).
 inline double DevDotStrain(const Voigt &s, const Voigt &e)
 {
