@@ -168,7 +168,21 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
     reject_above_ = backtracks < kBacktracks ? previous : PETSC_MAX_REAL;
     PetscCall(Solve(lambda, dl, du, t.dU, inc));
     const double residual = m_.system.iterate_residual();
-    if (m_.system.accepted()) break; // the last iterate (= du) is in balance
+    if (m_.system.accepted()) {
+      // The last iterate (= du) is in balance. Its own reactions may still
+      // pull a node off the tool (the corrections moved its force past zero
+      // after the last release check): released, and the iterations go on
+      // without it. Left in contact it would end every step at its force's
+      // zero (r5 = 0), and the step would shrink to nothing.
+      PetscInt released = 0;
+      if (ContactActive()) PetscCall(m_.contact->ReleasePulled(du, t.dU, release, true, released));
+      if (released == 0) break;
+      // (the iterate is unchanged: no correction of it to halve back)
+      previous = PETSC_MAX_REAL, backtracks = 0;
+      PetscCall(VecCopy(iter_, prev_));
+      ++inc.balance;
+      continue;
+    }
     if (!m_.system.solved()) {
       ++backtracks;
       PetscCall(VecAXPBY(iter_, 0.5, 0.5, prev_)); // halfway back to where the correction started
