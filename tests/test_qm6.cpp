@@ -1,7 +1,9 @@
 // Unit tests of the incompatible-modes quadrilateral QM6: symmetry and the
 // rigid-body null space of the condensed tangent, the patch test on a
 // distorted cell, and a slender cantilever against Timoshenko beam theory
-// (where full-integration Q4 shear-locks). No MPI needed.
+// (where full-integration Q4 shear-locks); the same with the mean dilatation
+// (-element qm6bar), whose volumetric strain must be the cell's area change
+// at every Gauss point. No MPI needed.
 #include <algorithm>
 #include <cstdio>
 #include <vector>
@@ -54,7 +56,7 @@ static double MaxAbs(const fe::ElemMat &k)
   return m;
 }
 
-static void StiffnessTests()
+static void StiffnessTests(bool bar)
 {
   Mat4 c[4];
   Voigt s[4];
@@ -63,7 +65,7 @@ static void StiffnessTests()
   for (int g = 0; g < 4; ++g) s[g] = {10.0 + g, -4.0, 2.0, 3.0 - 2 * g};
   fe::ElemMat k;
   fe::Condensation cond;
-  CHECK(fe::QM6Stiffness(kCell, c, s, true, k, cond));
+  CHECK(fe::QM6Stiffness(kCell, c, s, true, k, cond, bar));
   double kmax = MaxAbs(k);
   for (int i = 0; i < 8; ++i)
     for (int j = 0; j < 8; ++j) CHECK_NEAR(k[i][j], k[j][i], 1e-12 * kmax);
@@ -83,7 +85,7 @@ static void StiffnessTests()
   // Unstressed: exactly 3 zero-energy modes. K r = 0 for the 2 translations
   // and the rotation, and K + kmax P (P the projector on them) is positive definite.
   for (auto &v : s) v = {0, 0, 0, 0};
-  CHECK(fe::QM6Stiffness(kCell, c, s, true, k, cond));
+  CHECK(fe::QM6Stiffness(kCell, c, s, true, k, cond, bar));
   kmax = MaxAbs(k);
   double rigid[3][8];
   for (int a = 0; a < 4; ++a) {
@@ -125,13 +127,13 @@ static void StiffnessTests()
   for (int g = 0; g < 4; ++g) {
     Voigt de;
     double w;
-    CHECK(fe::QM6Kinematics(kCell, g, du, alpha, de, w));
+    CHECK(fe::QM6Kinematics(kCell, g, du, alpha, de, w, bar));
     s[g] = {0, 0, 0, 0};
     for (int r = 0; r < 4; ++r)
       for (int q = 0; q < 4; ++q) s[g][r] += c[g][r][q] * de[q];
   }
   fe::ElemVec f;
-  CHECK(fe::QM6InternalForce(kCell, s, cond, f));
+  CHECK(fe::QM6InternalForce(kCell, s, cond, f, bar));
   for (int i = 0; i < 8; ++i) {
     double kd = 0;
     for (int j = 0; j < 8; ++j) kd += k[i][j] * du[j];
@@ -145,7 +147,7 @@ static void StiffnessTests()
   CHECK(!fe::QM6InternalForce(cw, s, cond, f));
 }
 
-static void PatchTests()
+static void PatchTests(bool bar)
 {
   // du = G x on the distorted cell: the modes stay idle (alpha = cond du = 0)
   // and every Gauss point sees the exact strain sym(G) and spin skew(G).
@@ -164,7 +166,7 @@ static void PatchTests()
   for (bool geometric : {false, true}) {
     fe::ElemMat k;
     fe::Condensation cond;
-    CHECK(fe::QM6Stiffness(kCell, c, s, geometric, k, cond));
+    CHECK(fe::QM6Stiffness(kCell, c, s, geometric, k, cond, bar));
     fe::InternalVec alpha{};
     for (int m = 0; m < 4; ++m) {
       for (int j = 0; j < 8; ++j) alpha[m] += cond[m][j] * du[j];
@@ -173,10 +175,10 @@ static void PatchTests()
     for (int g = 0; g < 4; ++g) {
       Voigt de;
       double w;
-      CHECK(fe::QM6Kinematics(kCell, g, du, alpha, de, w));
+      CHECK(fe::QM6Kinematics(kCell, g, du, alpha, de, w, bar));
       CHECK_NEAR(de[0], gm[0][0], 1e-14);
       CHECK_NEAR(de[1], gm[1][1], 1e-14);
-      CHECK_NEAR(de[2], 0.0, 0.0);
+      CHECK_NEAR(de[2], 0.0, bar ? 1e-14 : 0.0); // qm6bar: (mean - local) / 3, zero to round-off
       CHECK_NEAR(de[3], gm[0][1] + gm[1][0], 1e-14);
       CHECK_NEAR(w, 0.5 * (gm[0][1] - gm[1][0]), 1e-14);
     }
@@ -186,8 +188,58 @@ static void PatchTests()
     fe::QuadGeometry geo;
     fe::ComputeGeometry(kCell, geo);
     fe::InternalForce(geo, fe::Formulation::Q4, s, fq);
-    CHECK(fe::QM6InternalForce(kCell, s, cond, fm));
+    CHECK(fe::QM6InternalForce(kCell, s, cond, fm, bar));
     for (int j = 0; j < 8; ++j) CHECK_NEAR(fm[j], fq[j], 1e-12 * 120.0 * geo.area);
+  }
+}
+
+// Shoelace area of a quad.
+static double Area(const double x[8])
+{
+  double a = 0;
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    a += x[2 * i] * x[2 * j + 1] - x[2 * j] * x[2 * i + 1];
+  }
+  return 0.5 * a;
+}
+
+// The mean dilatation's defining property, against an independent measure: at
+// every Gauss point the volumetric strain is the cell's relative area change,
+// dA / A = (A(x + e du) - A(x - e du)) / (2 e A) (exact: the area is quadratic in
+// the coordinates), the modes included (their cell integral vanishes). Without
+// it (qm6) the Gauss points differ from that mean, so the check is not empty.
+static void MeanDilatationTests()
+{
+  Mat4 c[4];
+  Voigt s[4];
+  for (auto &m : c) m = IsotropicElasticMatrix(200.0, 0.3);
+  for (auto &v : s) v = {0, 0, 0, 0};
+  const fe::ElemVec du = {0.3, -0.1, 0.7, 0.2, -0.4, 0.9, 0.05, -0.6};
+  const double e = 1e-3;
+  double plus[8], minus[8];
+  for (int j = 0; j < 8; ++j) plus[j] = kCell[j] + e * du[j], minus[j] = kCell[j] - e * du[j];
+  const double mean = (Area(plus) - Area(minus)) / (2 * e * Area(kCell));
+  for (bool bar : {false, true}) {
+    fe::ElemMat k;
+    fe::Condensation cond;
+    CHECK(fe::QM6Stiffness(kCell, c, s, false, k, cond, bar));
+    fe::InternalVec alpha{};
+    for (int m = 0; m < 4; ++m)
+      for (int j = 0; j < 8; ++j) alpha[m] += cond[m][j] * du[j];
+    double spread = 0;
+    for (int g = 0; g < 4; ++g) {
+      Voigt de;
+      double w;
+      CHECK(fe::QM6Kinematics(kCell, g, du, alpha, de, w, bar));
+      spread = std::max(spread, std::fabs(de[0] + de[1] + de[2] - mean));
+    }
+    std::printf("%s: largest |tr deps_g - dA/A| over the Gauss points %.3g (dA/A = %.6g)\n", bar ? "qm6bar" : "qm6",
+                spread, mean);
+    if (bar)
+      CHECK(spread < 1e-12 * std::fabs(mean));
+    else
+      CHECK(spread > 1e-2 * std::fabs(mean));
   }
 }
 
@@ -251,8 +303,11 @@ static void CantileverTests()
 
 int main()
 {
-  StiffnessTests();
-  PatchTests();
+  for (bool bar : {false, true}) {
+    StiffnessTests(bar);
+    PatchTests(bar);
+  }
+  MeanDilatationTests();
   CantileverTests();
   return ReportChecks("test_qm6");
 }

@@ -4,7 +4,7 @@ namespace tf::fe {
 
 CellFormulation::CellFormulation(Formulation f, int num_cells) : kind_(f)
 {
-  if (f == Formulation::QM6) {
+  if (has_modes()) {
     condensation_.assign(num_cells, Condensation{});
     kii_inv_.assign(num_cells, ModeMatrix{});
   }
@@ -13,7 +13,7 @@ CellFormulation::CellFormulation(Formulation f, int num_cells) : kind_(f)
 bool CellFormulation::Stiffness(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 c[kGauss],
                                 const Voigt s[kGauss], ElemMat &ke)
 {
-  if (kind_ == Formulation::QM6) return QM6Stiffness(xe, geo, c, s, true, ke, condensation_[e], &kii_inv_[e]);
+  if (has_modes()) return QM6Stiffness(xe, geo, c, s, true, ke, condensation_[e], &kii_inv_[e], mean_dilatation());
   ElementStiffness(geo, kind_, c, s, true, ke);
   return true;
 }
@@ -21,7 +21,7 @@ bool CellFormulation::Stiffness(int e, const double xe[2 * kNodes], const QuadGe
 void CellFormulation::Kinematics(int e, const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du,
                                  Voigt &deps, double &omega) const
 {
-  if (kind_ != Formulation::QM6) {
+  if (!has_modes()) {
     IncrementKinematics(geo, g, kind_, du, deps, omega);
     return;
   }
@@ -29,14 +29,14 @@ void CellFormulation::Kinematics(int e, const double xe[2 * kNodes], const QuadG
   InternalVec alpha{};
   for (int k = 0; k < kInternal; ++k)
     for (int j = 0; j < kDofs; ++j) alpha[k] += condensation_[e][k][j] * du[j];
-  QM6Kinematics(xe, geo, g, du, alpha, deps, omega);
+  QM6Kinematics(xe, geo, g, du, alpha, deps, omega, mean_dilatation());
 }
 
 void CellFormulation::InternalForce(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss],
                                     ElemVec &f) const
 {
-  if (kind_ == Formulation::QM6)
-    QM6InternalForce(xe, geo, s, condensation_[e], f);
+  if (has_modes())
+    QM6InternalForce(xe, geo, s, condensation_[e], f, mean_dilatation());
   else
     fe::InternalForce(geo, kind_, s, f);
 }

@@ -16,6 +16,7 @@ const double kXiGauss[kGauss][2] = {{-kG, -kG}, {kG, -kG}, {kG, kG}, {-kG, kG}};
 struct Gradients {
   double g[kGauss][kShapes][2]; // d(shape s)/dx_j at Gauss point g
   double wdet[kGauss];          // quadrature weight times det J
+  double mean[kShapes][2];      // cell mean of d(shape s)/dx_j: bvol for the nodes, 0 for the modes
 };
 
 // Taylor's correction: dP/dx = (det J0 / det J_g) J0^{-T} dP/dxi, so that
@@ -47,13 +48,19 @@ void ComputeGradients(const double xe[2 * kNodes], const QuadGeometry &geo, Grad
     GradientsAt(xe, geo, g, gr.g[g]);
     gr.wdet[g] = geo.wdet[g];
   }
+  for (int s = 0; s < kShapes; ++s)
+    for (int r = 0; r < 2; ++r) gr.mean[s][r] = s < kNodes ? geo.bvol[s][r] : 0.0;
 }
+
+// The B-bar change of shape s's strain rows xx, yy, zz per unit of its dof c: (mean - local) / 3.
+double Dilatation(const Gradients &gr, int g, int s, int c) { return (gr.mean[s][c] - gr.g[g][s][c]) / 3.0; }
 
 // Dof of component c of shape s among the 12: (u_x, u_y) node by node, then alpha[2 c + m].
 int Dof(int s, int c) { return s < kNodes ? 2 * s + c : kDofs + kModes * c + (s - kNodes); }
 
-// Strain-displacement matrix of the 12 dofs at Gauss point g (zz row zero).
-void StrainMatrix12(const Gradients &gr, int g, double b[kVoigt][kAll])
+// Strain-displacement matrix of the 12 dofs at Gauss point g (zz row zero; with
+// the mean dilatation, the rows xx, yy, zz carry the cell's mean volumetric strain).
+void StrainMatrix12(const Gradients &gr, int g, double b[kVoigt][kAll], bool mean_dilatation)
 {
   for (int r = 0; r < kVoigt; ++r)
     for (int j = 0; j < kAll; ++j) b[r][j] = 0;
@@ -63,6 +70,9 @@ void StrainMatrix12(const Gradients &gr, int g, double b[kVoigt][kAll])
     b[1][Dof(s, 1)] = gy;
     b[3][Dof(s, 0)] = gy;
     b[3][Dof(s, 1)] = gx;
+    if (mean_dilatation)
+      for (int c = 0; c < 2; ++c)
+        for (int r = 0; r < 3; ++r) b[r][Dof(s, c)] += Dilatation(gr, g, s, c);
   }
 }
 
@@ -100,27 +110,28 @@ bool Solve4(double a[kInternal][kInternal], double x[kInternal][N])
 } // namespace
 
 bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const Voigt sigma[kGauss], bool geometric,
-                  ElemMat &ke, Condensation &cond)
+                  ElemMat &ke, Condensation &cond, bool mean_dilatation)
 {
   QuadGeometry geo;
-  return ComputeGeometry(xe, geo) && QM6Stiffness(xe, geo, tangent, sigma, geometric, ke, cond);
+  return ComputeGeometry(xe, geo) && QM6Stiffness(xe, geo, tangent, sigma, geometric, ke, cond, mean_dilatation);
 }
 
 bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 tangent[kGauss],
-                  const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond)
+                  const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond, bool mean_dilatation)
 {
-  return QM6Stiffness(xe, geo, tangent, sigma, geometric, ke, cond, nullptr);
+  return QM6Stiffness(xe, geo, tangent, sigma, geometric, ke, cond, nullptr, mean_dilatation);
 }
 
 bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 tangent[kGauss],
-                  const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond, ModeMatrix *kii_inv)
+                  const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond, ModeMatrix *kii_inv,
+                  bool mean_dilatation)
 {
   Gradients gr;
   ComputeGradients(xe, geo, gr);
   double k[kAll][kAll] = {};
   for (int g = 0; g < kGauss; ++g) {
     double b[kVoigt][kAll];
-    StrainMatrix12(gr, g, b);
+    StrainMatrix12(gr, g, b, mean_dilatation);
     // k += w det J  B12^T (C - Q) B12
     AddBtCB(b, JaumannTangent(tangent[g], sigma[g], geometric), gr.wdet[g], k);
     if (!geometric) continue;
@@ -160,16 +171,16 @@ bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Ma
 }
 
 bool QM6Kinematics(const double xe[2 * kNodes], int g, const ElemVec &du, const InternalVec &alpha, Voigt &deps,
-                   double &omega)
+                   double &omega, bool mean_dilatation)
 {
   QuadGeometry geo;
   if (!ComputeGeometry(xe, geo)) return false;
-  QM6Kinematics(xe, geo, g, du, alpha, deps, omega);
+  QM6Kinematics(xe, geo, g, du, alpha, deps, omega, mean_dilatation);
   return true;
 }
 
 void QM6Kinematics(const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du,
-                   const InternalVec &alpha, Voigt &deps, double &omega)
+                   const InternalVec &alpha, Voigt &deps, double &omega, bool mean_dilatation)
 {
   double gr[kShapes][2];
   GradientsAt(xe, geo, g, gr);
@@ -182,18 +193,26 @@ void QM6Kinematics(const double xe[2 * kNodes], const QuadGeometry &geo, int g, 
     }
   deps = {l[0][0], l[1][1], 0.0, l[0][1] + l[1][0]};
   omega = 0.5 * (l[0][1] - l[1][0]);
+  if (mean_dilatation) {
+    // The cell's mean volumetric strain in place of the point's (the modes' mean is zero).
+    double mean = 0;
+    for (int a = 0; a < kNodes; ++a) mean += geo.bvol[a][0] * du[2 * a] + geo.bvol[a][1] * du[2 * a + 1];
+    const double d = (mean - l[0][0] - l[1][1]) / 3.0;
+    for (int r = 0; r < 3; ++r) deps[r] += d;
+  }
 }
 
-bool QM6InternalForce(const double xe[2 * kNodes], const Voigt sigma[kGauss], const Condensation &cond, ElemVec &f)
+bool QM6InternalForce(const double xe[2 * kNodes], const Voigt sigma[kGauss], const Condensation &cond, ElemVec &f,
+                      bool mean_dilatation)
 {
   QuadGeometry geo;
   if (!ComputeGeometry(xe, geo)) return false;
-  QM6InternalForce(xe, geo, sigma, cond, f);
+  QM6InternalForce(xe, geo, sigma, cond, f, mean_dilatation);
   return true;
 }
 
 void QM6InternalForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt sigma[kGauss],
-                      const Condensation &cond, ElemVec &f)
+                      const Condensation &cond, ElemVec &f, bool mean_dilatation)
 {
   Gradients gr;
   ComputeGradients(xe, geo, gr);
@@ -201,10 +220,13 @@ void QM6InternalForce(const double xe[2 * kNodes], const QuadGeometry &geo, cons
   double f12[kAll] = {};
   for (int g = 0; g < kGauss; ++g) {
     const double sxx = sigma[g][0], syy = sigma[g][1], sxy = sigma[g][3];
+    const double trace = mean_dilatation ? sigma[g][0] + sigma[g][1] + sigma[g][2] : 0.0;
     for (int s = 0; s < kShapes; ++s) {
       const double gx = gr.g[g][s][0], gy = gr.g[g][s][1];
       f12[Dof(s, 0)] += gr.wdet[g] * (gx * sxx + gy * sxy);
       f12[Dof(s, 1)] += gr.wdet[g] * (gx * sxy + gy * syy);
+      if (mean_dilatation)
+        for (int c = 0; c < 2; ++c) f12[Dof(s, c)] += gr.wdet[g] * Dilatation(gr, g, s, c) * trace;
     }
   }
   for (int j = 0; j < kDofs; ++j) {
@@ -214,17 +236,21 @@ void QM6InternalForce(const double xe[2 * kNodes], const QuadGeometry &geo, cons
   }
 }
 
-void QM6ModeForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt sigma[kGauss], InternalVec &fi)
+void QM6ModeForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt sigma[kGauss], InternalVec &fi,
+                  bool mean_dilatation)
 {
   Gradients gr;
   ComputeGradients(xe, geo, gr);
   fi = {};
   for (int g = 0; g < kGauss; ++g) {
     const double sxx = sigma[g][0], syy = sigma[g][1], sxy = sigma[g][3];
+    const double trace = mean_dilatation ? sigma[g][0] + sigma[g][1] + sigma[g][2] : 0.0;
     for (int m = 0; m < kModes; ++m) {
       const double gx = gr.g[g][kNodes + m][0], gy = gr.g[g][kNodes + m][1];
       fi[kModes * 0 + m] += gr.wdet[g] * (gx * sxx + gy * sxy);
       fi[kModes * 1 + m] += gr.wdet[g] * (gx * sxy + gy * syy);
+      if (mean_dilatation)
+        for (int c = 0; c < 2; ++c) fi[kModes * c + m] += gr.wdet[g] * Dilatation(gr, g, kNodes + m, c) * trace;
     }
   }
 }

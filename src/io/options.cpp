@@ -11,7 +11,7 @@
 namespace tf {
 
 namespace {
-const char *const kElements[] = {"q4", "bbar", "qm6"};
+const char *const kElements[] = {"q4", "bbar", "qm6", "qm6bar"};
 const char *const kMaterials[] = {"aluminum", "copper", "custom"};
 const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
 
@@ -73,7 +73,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                      opt.mesh_ntheta));
   PetscCall(read.Real(PetscOptionsObject, "-mesh_density",
                       "With -mesh_ntheta 0: elements around the tube per bending length sqrt(Ro t) (the presets: "
-                      "default 20, accurate 32)",
+                      "fast 12, default 24, accurate 32)",
                       opt.mesh_density));
   PetscCall(
     read.String(PetscOptionsObject, "-mesh_file",
@@ -83,9 +83,12 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   read.Note("-element");
   PetscCall(PetscOptionsEList("-element",
                               "Element formulation: q4 (full integration), bbar (mean dilatation), qm6 (incompatible "
-                              "modes: no shear locking in bending)",
-                              "tubeform", kElements, 3, kElements[choice], &choice, nullptr));
-  opt.element = choice == 0 ? fe::Formulation::Q4 : choice == 1 ? fe::Formulation::BBar : fe::Formulation::QM6;
+                              "modes: no shear locking in bending), qm6bar (qm6 with the mean dilatation: no volumetric "
+                              "locking in plastic flow either)",
+                              "tubeform", kElements, 4, kElements[choice], &choice, nullptr));
+  const fe::Formulation kForms[] = {fe::Formulation::Q4, fe::Formulation::BBar, fe::Formulation::QM6,
+                                    fe::Formulation::QM6Bar};
+  opt.element = kForms[choice];
   opt.element_name = kElements[choice];
   TF_OPTIONS_END();
 

@@ -37,16 +37,17 @@ public:
   // are unknowns of the cell, started from cond du and corrected until their
   // force vanishes: Modes gives the start, KinematicsWith the strain for given
   // modes, ModeForce the force on them, CorrectModes alpha -= Kii^{-1} f_i.
-  bool has_modes() const { return kind_ == Formulation::QM6; }
+  bool has_modes() const { return kind_ == Formulation::QM6 || kind_ == Formulation::QM6Bar; }
+  bool mean_dilatation() const { return kind_ == Formulation::QM6Bar; }
   InternalVec Modes(int e, const ElemVec &du) const;
   void KinematicsWith(const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du,
                       const InternalVec &alpha, Voigt &deps, double &omega) const
   {
-    QM6Kinematics(xe, geo, g, du, alpha, deps, omega);
+    QM6Kinematics(xe, geo, g, du, alpha, deps, omega, mean_dilatation());
   }
   void ModeForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss], InternalVec &fi) const
   {
-    QM6ModeForce(xe, geo, s, fi);
+    QM6ModeForce(xe, geo, s, fi, mean_dilatation());
   }
   void CorrectModes(int e, const InternalVec &fi, InternalVec &alpha) const;
 
