@@ -1,4 +1,4 @@
-"""scripts/figures (issue 11) from nothing: runs the fast preset's cases into
+"""scripts/figures --quick (issue 11) from nothing: runs the fast preset's cases into
 the test directory and draws every figure as PNG and PDF. Checks that each
 of the 15 figures exists in both formats and is not empty, that every case
 finished, that the two tables (critical R/t, apex radius) were written, and the one claim of the paper's Fig. 3 that does not depend on
@@ -22,7 +22,8 @@ k = Checks("figures")
 out, res = os.path.join(os.getcwd(), "figs"), os.path.join(os.getcwd(), "figsweeps")
 for d in (out, res):
     shutil.rmtree(d, ignore_errors=True)  # from nothing, as on a clean checkout
-p = subprocess.run(["/usr/bin/python3", f"{src}/scripts/figures", "--out", out, "--results", res, "--exe", tf],
+p = subprocess.run(["/usr/bin/python3", f"{src}/scripts/figures", "--quick", "--out", out, "--results", res,
+                    "--exe", tf],
                    capture_output=True, text=True, timeout=900,
                    env=dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1"))
 print(p.stdout[-1500:], p.stderr[-1500:])

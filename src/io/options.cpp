@@ -81,11 +81,12 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                 opt.mesh_file));
   choice = 1;
   read.Note("-element");
-  PetscCall(PetscOptionsEList("-element",
-                              "Element formulation: q4 (full integration), bbar (mean dilatation), qm6 (incompatible "
-                              "modes: no shear locking in bending), qm6bar (qm6 with the mean dilatation: no volumetric "
-                              "locking in plastic flow either)",
-                              "tubeform", kElements, 4, kElements[choice], &choice, nullptr));
+  PetscCall(
+    PetscOptionsEList("-element",
+                      "Element formulation: q4 (full integration), bbar (mean dilatation), qm6 (incompatible "
+                      "modes: no shear locking in bending), qm6bar (qm6 with the mean dilatation: no volumetric "
+                      "locking in plastic flow either)",
+                      "tubeform", kElements, 4, kElements[choice], &choice, nullptr));
   const fe::Formulation kForms[] = {fe::Formulation::Q4, fe::Formulation::BBar, fe::Formulation::QM6,
                                     fe::Formulation::QM6Bar};
   opt.element = kForms[choice];
