@@ -14,8 +14,8 @@ enum class Formulation {
   Q4,   // full 2x2 integration (locks for near-incompressible flow)
   BBar, // mean-dilatation B-bar (Hughes 1980): volumetric strain averaged over the cell
   QM6,  // incompatible modes (Wilson; Taylor et al. 1976), free of shear locking: see qm6.hpp
-  // QM6 with the mean dilatation of B-bar: free of shear locking in bending and of
-  // volumetric locking in plastic (isochoric) flow; see qm6.hpp
+  // QM6 with the mean dilatation of B-bar: no shear locking in bending, a constant
+  // pressure per cell in plastic (isochoric) flow; see qm6.hpp
   QM6Bar,
 };
 
