@@ -1,0 +1,71 @@
+"""The default preset against the independent CalculiX references
+(tests/reference/calculix/, CPE8R converged in mesh and step as far as
+scripts/calculix/README.md shows; the die withdrawn, so these runs withdraw
+it too): the subset of docs/accuracy.md's validation that scripts/test runs.
+
+- default tube (aluminum 17.5/1.5, mu 0.05): the load at U = 1, 2, 3, 4.2 mm
+  within the preset's target 1.5 % and C/t at 2, 3, 4.2 mm within its 0.03
+  (the reference's own uncertainty is ~0.3 % in the load and ~0.01 in C/t at
+  4.2 mm, included in the margins the measured errors leave: 0.29 %, 0.022);
+  and the run's own error estimate at least its true load error (the
+  estimate must bound it: never report 1 % when it is 5 %);
+- the issue's mild steel tube (20/2, mu 0.1, 5 mm): the load within 1.5 % up
+  to U = 3 mm; at 4.2 and 5 mm within 1.5 % + 1 %, the part of the CalculiX
+  reference's end-of-stroke uncertainty not attributed (its 4 x 90 run with a
+  penalty of 1e7 gives 0.6 % and 0.8 % more than the 8 x 180 reference with
+  1e6: docs/accuracy.md); the estimate bounds the load error.
+Measured (docs/accuracy.md, "Against CalculiX"): default tube +0.13, +0.19,
++0.20, -0.29 %, C/t within 0.022, estimate 4.0 %; steel +0.64, +0.20, +0.28,
++1.56, +1.22 %, estimate 6.4 %.
+"""
+import csv
+import os
+import re
+
+import h5py
+import numpy as np
+
+from tfcheck import Checks, args, out, run
+
+tf, mpirun, src = args()
+k = Checks("against_calculix")
+DENSITY = {75000.0: 2.7e-9, 210000.0: 7.85e-9}  # t/mm^3 (inertia at 1 mm/s only regularizes)
+
+
+def reference(name):
+    path = os.path.join(src, "tests", "reference", "calculix", f"{name}.csv")
+    case = next(l for l in open(path) if l.startswith("# case:"))
+    v = dict(re.findall(r"(\w+) ([-\w.+]+)", case[len("# case:"):]))
+    rows = list(csv.DictReader(l for l in open(path) if not l.startswith("#")))
+    col = {c: np.array([float(r[c]) for r in rows]) for c in ("stroke", "load", "c_over_t", "stage")}
+    load = col["stage"] == 0
+    opts = ["-tube_ro", v["Ro"], "-tube_t", v["t"], "-material", "custom", "-material_e", v["E"], "-material_nu",
+            v["nu"], "-material_sy", v["sy"], "-material_k", v["K"], "-material_n", v["n"], "-material_density",
+            DENSITY.get(float(v["E"]), 7.85e-9), "-friction_mu", v["mu"], "-die_r_apex", v["r_apex"], "-stroke",
+            v["stroke"], "-unload", v["unload"]]
+    return opts, {c: x[load] for c, x in col.items()}, float(v["stroke"])
+
+
+for name, slack in (("default", 0.0), ("steel", 0.01)):
+    opts, R, stroke = reference(name)
+    f = out(f"ccx_{name}.h5")
+    run(tf, mpirun, 1, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
+                        f"{src}/options/preset-default.opts"] + opts + ["-progress", 0, "-output", f])
+    with h5py.File(f, "r") as h:
+        H = {c: h["/history"][c][:] for c in ("stroke", "load", "c_over_t", "stage")}
+        estimate = float(h["/history"].attrs["error_load"])
+    keep = H["stage"] == 0
+    U, P, C = H["stroke"][keep], H["load"][keep], H["c_over_t"][keep]
+    strokes = [u for u in (1.0, 2.0, 3.0, 4.2) if u < stroke - 1e-9] + [stroke]
+    err = [np.interp(u, U, P) / np.interp(u, R["stroke"], R["load"]) - 1 for u in strokes]
+    allowed = [0.015 + (slack if u > 3.0 + 1e-9 else 0.0) for u in strokes]
+    k.check(all(abs(e) <= a for e, a in zip(err, allowed)),
+            f"{name}: load error at U = {strokes}: " + ", ".join(f"{100 * e:+.2f}" for e in err)
+            + f" % (allowed " + ", ".join(f"{100 * a:.1f}" for a in allowed) + " %)")
+    if name == "default":
+        cerr = [np.interp(u, U, C) - np.interp(u, R["stroke"], R["c_over_t"]) for u in strokes if u >= 2]
+        k.check(all(abs(e) <= 0.03 for e in cerr), "default: C/t error at U = 2, 3, 4.2: "
+                + ", ".join(f"{e:+.4f}" for e in cerr) + " (0.03)")
+    worst = max(abs(e) for e in err)
+    k.check(estimate >= worst, f"{name}: the estimate {100 * estimate:.2f} % bounds the load error {100 * worst:.2f} %")
+k.done()
