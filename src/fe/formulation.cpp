@@ -26,10 +26,7 @@ void CellFormulation::Kinematics(int e, const double xe[2 * kNodes], const QuadG
     return;
   }
   // Internal modes of the increment from the condensation of its assembly.
-  InternalVec alpha{};
-  for (int k = 0; k < kInternal; ++k)
-    for (int j = 0; j < kDofs; ++j) alpha[k] += condensation_[e][k][j] * du[j];
-  QM6Kinematics(xe, geo, g, du, alpha, deps, omega, mean_dilatation());
+  QM6Kinematics(xe, geo, g, du, Modes(e, du), deps, omega, mean_dilatation());
 }
 
 void CellFormulation::InternalForce(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss],
