@@ -1,5 +1,6 @@
 """Running tubeform from the study scripts (scripts/tradeoff, converge, bench)
 and reading the numbers they compare out of a result history."""
+import csv
 import os
 import re
 import subprocess
@@ -23,6 +24,26 @@ def option(opts, name, default=None):
         if p == name:
             val = parts[i + 1]
     return val
+
+
+# Densities (t/mm^3) for a CalculiX case's -material custom: inertia at 1 mm/s only regularizes the steps.
+CCX_DENSITY = {75000.0: 2.7e-9, 210000.0: 7.85e-9}  # aluminum, steel
+
+
+def calculix_reference(name):
+    """A CalculiX reference of tests/reference/calculix/: tubeform's options for its scene (from the header's
+    case line), its loading rows (stroke, load, c_over_t, stage), its sprung-back C/t and its final stroke."""
+    path = os.path.join(root, "tests", "reference", "calculix", f"{name}.csv")
+    case = next(l for l in open(path) if l.startswith("# case:"))
+    v = dict(re.findall(r"(\w+) ([-\w.+]+)", case[len("# case:"):]))
+    opts = ["-tube_ro", v["Ro"], "-tube_t", v["t"], "-material", "custom", "-material_e", v["E"], "-material_nu",
+            v["nu"], "-material_sy", v["sy"], "-material_k", v["K"], "-material_n", v["n"], "-material_density",
+            CCX_DENSITY.get(float(v["E"]), 7.85e-9), "-friction_mu", v["mu"], "-die_r_apex", v["r_apex"], "-stroke",
+            v["stroke"], "-unload", v["unload"]]
+    rows = list(csv.DictReader(l for l in open(path) if not l.startswith("#")))
+    col = {c: np.array([float(r[c]) for r in rows]) for c in ("stroke", "load", "c_over_t", "stage")}
+    load = col["stage"] == 0
+    return [str(o) for o in opts], {c: x[load] for c, x in col.items()}, float(col["c_over_t"][-1]), float(v["stroke"])
 
 
 class RunFailed(RuntimeError):

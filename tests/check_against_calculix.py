@@ -18,9 +18,8 @@ Measured (docs/accuracy.md, "Against CalculiX"): default tube +0.13, +0.19,
 +0.20, -0.29 %, C/t within 0.022, estimate 4.0 %; steel +0.64, +0.20, +0.28,
 +1.56, +1.22 %, estimate 6.4 %.
 """
-import csv
 import os
-import re
+import sys
 
 import h5py
 import numpy as np
@@ -28,26 +27,12 @@ import numpy as np
 from tfcheck import Checks, args, out, run
 
 tf, mpirun, src = args()
+sys.path.insert(0, os.path.join(src, "scripts"))
+import tfruns  # noqa: E402
 k = Checks("against_calculix")
-DENSITY = {75000.0: 2.7e-9, 210000.0: 7.85e-9}  # t/mm^3 (inertia at 1 mm/s only regularizes)
-
-
-def reference(name):
-    path = os.path.join(src, "tests", "reference", "calculix", f"{name}.csv")
-    case = next(l for l in open(path) if l.startswith("# case:"))
-    v = dict(re.findall(r"(\w+) ([-\w.+]+)", case[len("# case:"):]))
-    rows = list(csv.DictReader(l for l in open(path) if not l.startswith("#")))
-    col = {c: np.array([float(r[c]) for r in rows]) for c in ("stroke", "load", "c_over_t", "stage")}
-    load = col["stage"] == 0
-    opts = ["-tube_ro", v["Ro"], "-tube_t", v["t"], "-material", "custom", "-material_e", v["E"], "-material_nu",
-            v["nu"], "-material_sy", v["sy"], "-material_k", v["K"], "-material_n", v["n"], "-material_density",
-            DENSITY.get(float(v["E"]), 7.85e-9), "-friction_mu", v["mu"], "-die_r_apex", v["r_apex"], "-stroke",
-            v["stroke"], "-unload", v["unload"]]
-    return opts, {c: x[load] for c, x in col.items()}, float(v["stroke"])
-
 
 for name, slack in (("default", 0.0), ("steel", 0.01)):
-    opts, R, stroke = reference(name)
+    opts, R, _, stroke = tfruns.calculix_reference(name)
     f = out(f"ccx_{name}.h5")
     run(tf, mpirun, 1, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
                         f"{src}/options/preset-default.opts"] + opts + ["-progress", 0, "-output", f])
