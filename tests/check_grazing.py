@@ -9,6 +9,12 @@ not seen: every following step then found that node's separation at r5 = 0,
 was cut to inertia's shortest step and taken past the event, 8510 times in
 this run (104 s instead of 18 s); a finer run of the default tube stalled.
 
+Its cost depends on the CPU: on OpenBLAS's Haswell kernel 1,098 increments
+(10 s), on Prescott 15,944 (74 s alone, 230 s beside other tests): the
+springback approaches a fold of the paper's load-controlled unloading and
+the rotation limit creeps towards it (docs/accuracy.md, "Presets"; issue
+22). Both pass the checks; the time allowed is 540 s for that reason.
+
 Checks, each against the method's own definition (no stored numbers):
 - the run ends (exit 0) with no step taken past an event and none unsettled
   (history columns events_inside, unsettled: running counts);
@@ -27,7 +33,7 @@ TOL = 0.005  # the default criterion (Abaqus's R_max <= 0.005 q), given explicit
 f = out("grazing.h5")
 p = run(tf, mpirun, 2, ["-options_file", f"{src}/options/squaring_cu_29_mu0.05.opts", "-options_file",
                         f"{src}/options/preset-default.opts", "-equilibrium_tol", TOL, "-error_estimate", 0, "-progress", 0, "-output", f],
-        check=False, timeout=240)
+        check=False, timeout=540)
 k.check(p.returncode == 0, f"thin copper tube, default preset: exit {p.returncode}")
 if p.returncode == 0:
     with h5py.File(f, "r") as h:
