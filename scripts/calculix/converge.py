@@ -39,6 +39,34 @@ CASES = {
                         '--friction_mu', '0.1', '--die_r_apex', '3', '--stroke', '5', '--report', '1,2,3,4.2'],
                   meshes=[(2, 45), (4, 90), (8, 180)], base_mesh=(4, 90)),
 }
+
+
+def validation_cases():
+    """The tubes of scripts/validate (issue 22's validation set) as cases named val_<tube>: three meshes of
+    CPE8R, the middle one with 18 elements per bending length sqrt(Ro t) around the quarter (the default
+    case's 4 x 90 has 17.5) and at least 90; penalty 1e6 MPa/mm, 1e5 for walls thinner than 1 mm (the
+    thin case's stall at 1e6)."""
+    import importlib.machinery
+    import math
+    v = importlib.machinery.SourceFileLoader('validate', os.path.join(ROOT, 'scripts', 'validate')).load_module()
+    out = {}
+    for name, (mat, ro, t, mu, stroke) in v.CASES.items():
+        args = ['--tube_ro', f'{ro:g}', '--tube_t', f'{t:g}', '--friction_mu', f'{mu:g}', '--die_r_apex', '3',
+                '--stroke', f'{stroke:g}', '--report', ','.join(f'{u:g}' for u in v.reported(name)[:-1])]
+        if v.MATERIALS[mat] is None:
+            args = ['--material', mat] + args
+        else:
+            e, nu, sy, k, n = v.MATERIALS[mat]
+            args = ['--material', 'custom', '--material_e', f'{e:g}', '--material_nu', f'{nu:g}', '--material_sy',
+                    f'{sy:g}', '--material_k', f'{k:g}', '--material_n', f'{n:g}'] + args
+        arc = 0.5 * math.pi * (ro - 0.5 * t)
+        nth = max(90, 2 * round(9 * arc / math.sqrt(ro * t)))
+        out['val_' + name] = dict(args=args, meshes=[(2, nth // 2), (4, nth), (8, 2 * nth)], base_mesh=(4, nth),
+                                  base_penalty=1e6 if t >= 1 else 1e5)
+    return out
+
+
+CASES.update(validation_cases())
 BASE_STEP = 0.05
 STEPS = [0.1, 0.05, 0.025]
 PENALTY_FACTORS = [0.1, 1, 10]  # of the case's base penalty

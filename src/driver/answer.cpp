@@ -132,17 +132,19 @@ PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, double target_load, d
     PetscCall(PetscPrintf(comm, "\n"));
   }
   if (a.estimated) {
-    PetscCall(
-      PetscPrintf(comm, "tubeform: estimated error (coarser companion run): load %.2g %%", 100 * a.worst_load_error));
+    PetscCall(PetscPrintf(comm,
+                          "tubeform: estimated error (an upper bound: %g x the difference from a run at half the "
+                          "resolution): load %.2g %%",
+                          kEstimateSafety, 100 * a.worst_load_error));
     if (a.tool) PetscCall(PetscPrintf(comm, ", C/t %.2g", a.worst_ct_error));
     if (target_load > 0) PetscCall(PetscPrintf(comm, " (targets %.3g %%, %.3g)", 100 * target_load, target_ct));
     PetscCall(PetscPrintf(comm, "\n"));
     const bool over = (target_load > 0 && a.worst_load_error > target_load) ||
                       (a.tool && target_ct > 0 && a.worst_ct_error > target_ct);
     if (over)
-      PetscCall(PetscPrintf(comm, "tubeform: warning: the estimated error passes the accuracy target: refine "
-                                  "(-mesh_density, -mesh_nt, -increments) or take a more accurate preset "
-                                  "(docs/accuracy.md)\n"));
+      PetscCall(PetscPrintf(comm, "tubeform: warning: the estimated error passes the accuracy target, which this "
+                                  "run therefore cannot confirm: refine (-mesh_density, -mesh_nt, -increments) or "
+                                  "take a more accurate preset (docs/accuracy.md)\n"));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
