@@ -14,6 +14,16 @@ import numpy as np  # noqa: E402
 from tfruns import option  # noqa: E402,F401  (scripts import it from here too)
 
 
+# Sweep statuses of a case that ran to its end: "inaccurate" only says its own
+# error estimate passes the preset's target (scripts/sweep), its results stand.
+FINISHED = ("done", "inaccurate")
+
+
+def finished(row):
+    """Whether a sweep summary row ran to its end (its results can be drawn)."""
+    return row["status"] in FINISHED
+
+
 def rt_axis(ax):
     """A logarithmic R/t axis with plain tick labels."""
     ax.set_xscale("log")

@@ -24,7 +24,7 @@ def _grid(rows, column):
     mus = sorted({_num(r["friction_mu"]) for r in rows})
     Z = np.full((len(mus), len(rts)), np.nan)
     for r in rows:
-        if r["status"] == "done":
+        if figlib.finished(r):
             Z[mus.index(_num(r["friction_mu"])), rts.index(_num(r["rt"]))] = _num(r[column])
     return rts, mus, Z
 
