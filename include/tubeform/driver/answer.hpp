@@ -24,10 +24,10 @@ constexpr double kReportedStrokes[] = {1.0, 2.0, 3.0, 4.2};
 // convergence index from two grids (with an order p >= 1 the finer run's
 // error is at most the difference, 1 / (2^p - 1), once both runs are in the
 // asymptotic range; the companion at half the preset's resolution often is
-// not). Measured: with 1 it bounded 16 of 20 load errors and 9 of 20 C/t
-// errors of the fast and default presets on the validation tubes, with 3
-// all load errors and 18 of 20 C/t errors (scripts/estimate_study.py;
-// docs/accuracy.md, "The error estimate").
+// not). Measured on the fast and default presets of ten validation tubes
+// (against CalculiX where it ran, our extrapolated references elsewhere):
+// with 1 it bounded 13 of 20 load errors and 11 of 20 C/t errors, with 3
+// all 40 (scripts/estimate_study.py; docs/accuracy.md, "The error estimate").
 constexpr double kEstimateSafety = 3.0;
 
 struct Answer {
