@@ -9,10 +9,10 @@ its companion (the run's own estimate's coarser pass: half the cells through the
 around, half the trial increments) as a run of its own, cached beside it (<tube>_<preset>_companion.h5).
 The true error is measured against the CalculiX reference of the tube where one exists
 (scripts/calculix/converge.py, cases val_<tube>: the finest mesh whose loading finished; loading only) and
-against scripts/validate's extrapolated reference otherwise. Estimators, each at the reported strokes (load, C/t) and after springback
-(C/t):
+against scripts/validate's extrapolated reference otherwise. Estimators, each at the reported strokes (load, C/t)
+and after springback (C/t):
 
-  raw      |run - companion| at the stroke (what the runs print today)
+  raw      |run - companion| at the stroke (what the runs print, times the factor)
   smooth   |S_run - S_comp| + A_run: S a straight line fitted by least squares to the curve over the
            window [u - w, u + w] of the stroke (clipped at the ends of the loading), A the run's largest
            departure from its line in that window (the contact ripple, a discretization error the converged
@@ -25,7 +25,6 @@ median ratio estimate / error.
 import argparse
 import concurrent.futures
 import importlib.machinery
-import json
 import os
 import sys
 
@@ -33,7 +32,6 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-import tfruns  # noqa: E402
 
 V = importlib.machinery.SourceFileLoader("validate", os.path.join(HERE, "validate")).load_module()
 WINDOW = 0.15  # mm of stroke each side: a few ripple periods on the default preset (0.05-0.1 mm each)

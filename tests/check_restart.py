@@ -230,7 +230,8 @@ k.check(w <= 3e-6, f"1 -> 2 ranks: load, stroke and shape within {w:.1e} ({col})
 
 # A checkpoint write that fails leaves the previous one intact.
 fresh("ck_keep.h5", "restart_keep.h5")
-run(tf, mpirun, 2, CASE + ["-output", out("restart_keep.h5"), "-checkpoint", out("ck_keep.h5"), "-checkpoint_every", 100])
+run(tf, mpirun, 2,
+    CASE + ["-output", out("restart_keep.h5"), "-checkpoint", out("ck_keep.h5"), "-checkpoint_every", 100])
 shutil.copy(out("ck_keep.h5"), out("ck_keep_before.h5"))
 os.mkdir(out("ck_keep.h5") + ".tmp")  # the scratch file cannot be created
 fresh("keep2.h5")
