@@ -26,7 +26,7 @@ constexpr double kReportedStrokes[] = {1.0, 2.0, 3.0, 4.2};
 // asymptotic range; the companion at half the preset's resolution often is
 // not). Measured on the fast and default presets of ten validation tubes
 // (against CalculiX where it ran, our extrapolated references elsewhere):
-// with 1 it bounded 13 of 20 load errors and 11 of 20 C/t errors, with 3
+// with 1 it bounded 12 of 20 load errors and 12 of 20 C/t errors, with 3
 // all 40 (scripts/estimate_study.py; docs/accuracy.md, "The error estimate").
 constexpr double kEstimateSafety = 3.0;
 
