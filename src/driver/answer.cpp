@@ -133,9 +133,9 @@ PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, double target_load, d
   }
   if (a.estimated) {
     PetscCall(PetscPrintf(comm,
-                          "tubeform: estimated error (an upper bound: %g x the difference from a run at half the "
+                          "tubeform: estimated error (an upper bound: %s x the difference from a run at half the "
                           "resolution): load %.2g %%",
-                          kEstimateSafety, 100 * a.worst_load_error));
+                          Format("%g", kEstimateSafety).c_str(), 100 * a.worst_load_error));
     if (a.tool) PetscCall(PetscPrintf(comm, ", C/t %.2g", a.worst_ct_error));
     if (target_load > 0) PetscCall(PetscPrintf(comm, " (targets %.3g %%, %.3g)", 100 * target_load, target_ct));
     PetscCall(PetscPrintf(comm, "\n"));
