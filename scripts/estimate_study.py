@@ -8,11 +8,12 @@ For each tube and preset it takes the preset's run cached by scripts/validate (r
 its companion (the run's own estimate's coarser pass: half the cells through the wall, at least 2, and
 around, half the trial increments) as a run of its own, cached beside it (<tube>_<preset>_companion.h5).
 The true error is measured against the CalculiX reference of the tube where one exists
-(scripts/calculix/converge.py, cases val_<tube>: the finest mesh whose loading finished; loading only) and
+(scripts/validate's ccx_reference: its middle or fine mesh whose loading finished; loading only) and
 against scripts/validate's extrapolated reference otherwise. Estimators, each at the reported strokes (load, C/t)
 and after springback (C/t):
 
-  raw      |run - companion| at the stroke (what the runs print, times the factor)
+  raw      |run - companion| at the stroke, relative to the run's load (what the runs print, times the factor;
+           checked equal to each run's own estimate)
   smooth   |S_run - S_comp| + A_run: S a straight line fitted by least squares to the curve over the
            window [u - w, u + w] of the stroke (clipped at the ends of the loading), A the run's largest
            departure from its line in that window (the contact ripple, a discretization error the converged
@@ -26,6 +27,7 @@ import argparse
 import concurrent.futures
 import importlib.machinery
 import os
+import re
 import sys
 
 import numpy as np
@@ -35,7 +37,17 @@ sys.path.insert(0, HERE)
 
 V = importlib.machinery.SourceFileLoader("validate", os.path.join(HERE, "validate")).load_module()
 WINDOW = 0.15  # mm of stroke each side: a few ripple periods on the default preset (0.05-0.1 mm each)
-PRESET_INCREMENTS = {"fast": (100, 10), "default": (200, 10)}
+# The factor the runs apply to their companion's difference (include/tubeform/driver/answer.hpp).
+RUN_FACTOR = float(re.search(r"kEstimateSafety = ([0-9.]+);",
+                             open(os.path.join(V.tfruns.root, "include", "tubeform", "driver",
+                                               "answer.hpp")).read()).group(1))
+
+
+def preset_option(preset, name):
+    """A numeric option of a preset file (comment lines left out)."""
+    text = [line for line in open(os.path.join(V.tfruns.root, "options", f"preset-{preset}.opts"))
+            if not line.lstrip().startswith("#")]
+    return int(V.tfruns.option(" ".join(text), name))
 
 
 def mesh_of(h5):
@@ -52,34 +64,15 @@ def mesh_of(h5):
 
 
 def companion(case, preset):
+    """The run's companion as src/main.cpp makes it (Companion()): half the cells through the wall (at least 2)
+    and around, half the trial and unloading increments."""
     main = os.path.join(V.OUT, f"{case}_{preset}.h5")
     nt, nth = mesh_of(main)
-    inc, uinc = PRESET_INCREMENTS[preset]
+    inc, uinc = preset_option(preset, "-increments"), preset_option(preset, "-unload_increments")
     extra = ["-options_file", f"options/preset-{preset}.opts", "-error_estimate", 0, "-mesh_nt", max(2, nt // 2),
-             "-mesh_ntheta", max(4, 2 * (nth // 4)), "-increments", inc // 2, "-unload_increments", max(1, uinc // 2)]
+             "-mesh_ntheta", max(4, 2 * (nth // 4)), "-increments", max(1, inc // 2), "-unload_increments",
+             max(1, uinc // 2)]
     return V.run(case, f"{preset}_companion", extra)
-
-
-def ccx_reference(case):
-    """The finest finished CalculiX run of the tube: (U, P, C) of its loading and its sprung-back C/t (or None)."""
-    sys.path.insert(0, os.path.join(HERE, "calculix"))
-    import converge
-    key = "val_" + case
-    if key not in converge.CASES:
-        return None
-    best = None
-    for lev in converge.levels(key, "mesh"):
-        name = converge.name_of(key, lev)
-        rows, meta = converge.load_rows(name)
-        if rows and meta.get("final_stroke", 0) >= V.CASES[case][4] - 1e-6:  # the loading finished
-            best = (name, rows)
-    if best is None:
-        return None
-    name, rows = best
-    load = [r for r in rows if r["stage"] == 0]
-    s = float("nan")  # ccx withdraws the die for springback, scripts/validate's runs reverse the load
-    return {"name": name, "U": np.array([r["stroke"] for r in load]), "P": np.array([r["load"] for r in load]),
-            "C": np.array([r["c_over_t"] for r in load]), "S": s}
 
 
 def fit(U, Y, u, lo, hi):
@@ -98,7 +91,8 @@ def estimates(m, c, strokes):
     out = {}
     P, C, S = V.values(m, strokes)
     Pc, Cc, Sc = V.values(c, strokes)
-    out["raw"] = ([abs(p / q - 1) for p, q in zip(P, Pc)], [abs(x - y) for x, y in zip(C, Cc)] + [abs(S - Sc)])
+    # (relative to the run's load, as src/driver/answer.cpp takes it)
+    out["raw"] = ([abs(p - q) / abs(p) for p, q in zip(P, Pc)], [abs(x - y) for x, y in zip(C, Cc)] + [abs(S - Sc)])
     lp, lc = [], []
     hi = m["U"][-1]
     for u, p in zip(strokes, P):
@@ -119,6 +113,10 @@ def main():
     ap.add_argument("-j", type=int, default=1)
     a = ap.parse_args()
     cases, presets = a.cases.split(","), a.presets.split(",")
+    unknown = [c for c in cases if c not in V.CASES] + [p for p in presets if p not in V.PRESETS]
+    if unknown:
+        ap.error(f"unknown tube or preset {', '.join(unknown)} (tubes: {', '.join(V.CASES)}; presets: "
+                 f"{', '.join(V.PRESETS)})")
     have = [(c, p) for c in cases for p in presets if os.path.exists(os.path.join(V.OUT, f"{c}_{p}.json"))]
     with concurrent.futures.ThreadPoolExecutor(a.j) as ex:
         list(ex.map(lambda job: companion(*job), have))
@@ -131,20 +129,23 @@ def main():
         if m["status"] != "done" or c["status"] != "done":
             continue
         strokes = V.reported(case)
-        ref = ccx_reference(case)
-        if ref is not None:
-            rname = ref["name"]
-            RP = [float(np.interp(u, ref["U"], ref["P"])) for u in strokes]
-            RC = [float(np.interp(u, ref["U"], ref["C"])) for u in strokes] + [ref["S"]]
-        else:
-            r = V.reference(case)
-            if r is None:
-                continue
-            rname, RP, RC = "own", r["P"], r["C"] + [r["S"]]
+        ref = V.ccx_reference(case)
+        rname = "own" if ref is None else ref["label"]
+        ref = ref or V.reference(case)
+        if ref is None:
+            continue
+        RP, RC = ref["P"], ref["C"] + [ref["S"]]
         P, C, S = V.values(m, strokes)
         ep = [abs(p / q - 1) for p, q in zip(P, RP)]
         ec = [abs(x - y) for x, y in zip(C + [S], RC)]
         est = estimates(m, c, strokes)
+        # The replica of the companion must be the run's own: its "raw" difference times the run's factor is the
+        # estimate the run wrote.
+        own = (float(m["attrs"]["error_load"]), float(m["attrs"]["error_c_over_t"]))
+        mine = (RUN_FACTOR * max(est["raw"][0]), RUN_FACTOR * max(e for e in est["raw"][1] if e == e))
+        if any(abs(x - y) > 1e-9 * max(abs(x), 1e-12) for x, y in zip(own, mine)):
+            sys.exit(f"estimate_study.py: {case} {preset}: the companion here gives {mine}, the run wrote {own}: "
+                     "the companion's rules (src/main.cpp) and companion() above differ")
         row = f"| {case} | {preset} | {rname} | {100 * max(ep):.2f} %"
         for name, (lp, _) in est.items():
             row += f" | {100 * max(lp):.2f} %"

@@ -27,8 +27,7 @@ constexpr double kReportedStrokes[] = {1.0, 2.0, 3.0, 4.2};
 // not). Measured on the fast and default presets of twelve validation tubes
 // (against CalculiX where it ran, our extrapolated references elsewhere):
 // with 1 it bounded 16 of 24 load errors and 14 of 24 C/t errors, with 3
-// 47 of the 48 (scripts/estimate_study.py; docs/accuracy.md, "The error
-// estimate").
+// all 48 (scripts/estimate_study.py; docs/accuracy.md, "The error estimate").
 constexpr double kEstimateSafety = 3.0;
 
 struct Answer {
