@@ -16,6 +16,10 @@ reference is a benchmark (scripts/tradeoff, docs/accuracy.md), not a test.
 - no staircase: from U = 0.2 mm (past the knee of first yield) the load is
   within 1 % of a least-squares quadratic over every 0.2 mm window (the
   preset's promise, computed here from the history alone);
+- a thick wall (R/t 6) in balance at every increment on the default preset;
+- the cells through the wall on three tubes (R/t 11.7, 10, 6): the presets'
+  rule (at least their floor, at most their share of the bending strain t/Ro
+  per cell), counted on the written mesh;
 - -unload_increments: springback with 10 unloading increments (the preset's)
   and with 100 gives C/t after springback within 0.005, half the 0.01 by which
   C/t counts as converged in the reference study (springback is elastic:
@@ -76,4 +80,37 @@ k.check(s < 0.01, f"default preset: load within {s:.2%} < 1 % of a quadratic ove
 d = abs(A["spring"] - runs["default_u100"]["spring"])
 k.check(d < 0.005, f"C/t after springback, 10 vs 100 unloading increments: {A['spring']:.4f} vs "
         f"{runs['default_u100']['spring']:.4f}, difference {d:.1e} < 0.005")
+
+# A thick wall (aluminum 15/2.5, R/t 6: 8 cells through on the default preset)
+# in balance at every increment: R_max <= 0.005 q_avg (the equilibrium
+# criterion, -equilibrium_tol) and no increment taken unsettled. Its points at
+# the loading/unloading boundary cycled Newton's tangent (15 unsettled
+# increments before the tangent of a point cycling stays elastic,
+# kMaxTangentFlips in include/tubeform/body/body.hpp).
+f = out("preset_default_thick.h5")
+run(tf, mpirun, 1, case("default", ["-tube_ro", 15, "-tube_t", 2.5, "-friction_mu", 0.2, "-stroke", 3,
+                                    "-error_estimate", 0, "-output", f]), timeout=600)
+with h5py.File(f, "r") as h:
+    H = h["/history"]
+    on = H["q_avg"][:] > 0
+    r = (H["r_max"][:][on] / H["q_avg"][:][on]).max()
+    unsettled, inconsistent = int(H["unsettled"][-1]), int(H["inconsistent"][-1])
+k.check(r <= 0.005 * (1 + 1e-12) and unsettled == 0 and inconsistent == 0,
+        f"default preset, thick wall 15/2.5: R_max / q_avg at most {r:.5f} (0.005), {unsettled} increments unsettled, "
+        f"{inconsistent} with inconsistent loading states (0)")
+
+# Cells through the wall follow the tube (options/preset-*.opts): at least the
+# preset's floor, and enough that a cell spans at most its share of the bending
+# strain t/Ro. Counted on the written mesh: the nodes on the symmetry line y = 0.
+for preset, s_max, floor in (("fast", 0.044, 2), ("default", 0.022, 4)):
+    for ro, t in ((17.5, 1.5), (20.0, 2.0), (15.0, 2.5)):
+        f = out(f"preset_wall_{preset}_{ro:g}_{t:g}.h5")
+        run(tf, mpirun, 1, case(preset, ["-tube_ro", ro, "-tube_t", t, "-stroke", 0.05, "-output_stroke", 0,
+                                         "-error_estimate", 0, "-output", f]), timeout=120)
+        with h5py.File(f, "r") as h:
+            xy = h["/geometry/vertices"][:]
+        across = int(np.sum(np.abs(xy[:, 1]) < 1e-9 * ro))
+        want = max(floor, int(np.ceil(t / (ro * s_max) - 1e-9)))
+        k.check(across == want + 1, f"{preset} preset, tube {ro:g}/{t:g}: {across - 1} cells through the wall, "
+                f"the rule gives {want}")
 k.done()

@@ -81,6 +81,15 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
   PetscCheck(ncells >= size_, comm, PETSC_ERR_USER_INPUT,
              "the mesh has %d cells, fewer than the %d MPI ranks: refine it or run on fewer ranks", ncells, (int)size_);
 
+  if (!quiet_) {
+    if (opt.mesh_file.empty())
+      PetscCall(PetscPrintf(comm, "tubeform: mesh %d x %d cells (through the wall x around), %s elements\n",
+                            (int)opt.mesh_nt, (int)opt.mesh_ntheta, opt.element_name.c_str()));
+    else
+      PetscCall(PetscPrintf(comm, "tubeform: mesh %d cells from %s, %s elements\n", ncells, opt.mesh_file.c_str(),
+                            opt.element_name.c_str()));
+  }
+
   // 2. Partition and distribute; the global system, the body, inertia.
   PetscCall(mesh_.Create(comm, serial, scene_->BoundarySets()));
   PetscCall(PetscLogEventEnd(Log::mesh, 0, 0, 0, 0));

@@ -67,7 +67,16 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   }
   PetscCall(read.Real(PetscOptionsObject, "-tube_ro", "Outer radius of the tube (mm)", opt.tube_ro));
   PetscCall(read.Real(PetscOptionsObject, "-tube_t", "Wall thickness (mm)", opt.tube_t));
-  PetscCall(read.Int(PetscOptionsObject, "-mesh_nt", "Elements through the wall (structured mesh)", opt.mesh_nt));
+  PetscCall(read.Int(PetscOptionsObject, "-mesh_nt",
+                     "Elements through the wall (structured mesh); 0: from -mesh_wall_strain and the tube",
+                     opt.mesh_nt));
+  PetscCall(read.Real(PetscOptionsObject, "-mesh_wall_strain",
+                      "With -mesh_nt 0: largest change of the ring's bending strain t/Ro across a cell (the presets: "
+                      "fast 0.044, default 0.022, accurate 0.011)",
+                      opt.mesh_wall_strain));
+  PetscCall(read.Int(PetscOptionsObject, "-mesh_nt_min",
+                     "With -mesh_nt 0: fewest elements through the wall (the presets: fast 2, default 4, accurate 8)",
+                     opt.mesh_nt_min));
   PetscCall(read.Int(PetscOptionsObject, "-mesh_ntheta",
                      "Elements around the quarter (structured mesh); 0: from -mesh_density and the tube",
                      opt.mesh_ntheta));

@@ -18,8 +18,17 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
              "-tube_ro %g: the outer radius must be a positive number of mm", opt.tube_ro);
   PetscCheck(opt.tube_t > 0 && opt.tube_t < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,
              "-tube_t %g: the wall thickness must be positive and smaller than -tube_ro %g", opt.tube_t, opt.tube_ro);
-  PetscCheck(opt.mesh_nt >= 1 && opt.mesh_nt <= 1000, comm, PETSC_ERR_USER_INPUT,
-             "-mesh_nt %d: must be between 1 and 1000", (int)opt.mesh_nt);
+  PetscCheck(opt.mesh_nt >= 0 && opt.mesh_nt <= 1000, comm, PETSC_ERR_USER_INPUT,
+             "-mesh_nt %d: must be between 1 and 1000, or 0 (from -mesh_wall_strain)", (int)opt.mesh_nt);
+  PetscCheck(opt.mesh_nt > 0 || (opt.mesh_wall_strain > 0 && opt.mesh_wall_strain <= 1), comm, PETSC_ERR_USER_INPUT,
+             "-mesh_nt 0 needs -mesh_wall_strain in (0, 1] (the largest change of the bending strain t/Ro across a "
+             "cell; got %g)",
+             opt.mesh_wall_strain);
+  PetscCheck(opt.mesh_nt > 0 || (opt.mesh_nt_min >= 1 && opt.mesh_nt_min <= 1000), comm, PETSC_ERR_USER_INPUT,
+             "-mesh_nt_min %d: must be between 1 and 1000", (int)opt.mesh_nt_min);
+  if (opt.mesh_nt == 0)
+    opt.mesh_nt =
+      std::min<PetscInt>(1000, ElementsThrough(opt.tube_ro, opt.tube_t, opt.mesh_wall_strain, opt.mesh_nt_min));
   PetscCheck(opt.mesh_ntheta == 0 || (opt.mesh_ntheta >= 2 && opt.mesh_ntheta <= 100000), comm, PETSC_ERR_USER_INPUT,
              "-mesh_ntheta %d: must be between 2 and 100000, or 0 (from -mesh_density)", (int)opt.mesh_ntheta);
   PetscCheck(opt.mesh_ntheta > 0 || (opt.mesh_density > 0 && opt.mesh_density <= 1000), comm, PETSC_ERR_USER_INPUT,

@@ -28,6 +28,14 @@ namespace tf {
 // changed the load by less than 1e-4 on the default preset).
 constexpr int kModeCorrections = 1;
 
+// Equilibrium iterations: tangent switches of one point within an increment
+// before its tangent stays elastic. The forces do not depend on the tangent
+// (the update is a function of the strain increment), so only convergence
+// does: a point at the loading/unloading boundary whose tangent flips every
+// iteration keeps Newton cycling, while the elastic tangent, the stiffer one,
+// converges (slower) on it.
+constexpr unsigned char kMaxTangentFlips = 2;
+
 struct BodyParams {
   fe::Formulation element = fe::Formulation::BBar;
   MaterialParams material;
@@ -121,6 +129,7 @@ private:
   std::vector<PointState> state_;
   std::vector<double> yield_factor_; // r1 of each Gauss point from the last ScanTrial
   std::vector<double> fraction_;     // yield_inside: elastic fraction m in the assembled tangent (1: elastic)
+  std::vector<unsigned char> flips_; // tangent switches of each point in this increment (kMaxTangentFlips)
   std::vector<PointState> onset_;    // yield_inside: state where the point meets the surface (plastic)
   std::vector<double> x_, u_;
   std::vector<std::pair<Voigt, double>> trial_; // ScanTrial: strain and spin increments of each point

@@ -25,7 +25,9 @@ struct Options {
   // Geometry and mesh
   double tube_ro = 17.5, tube_t = 1.5;
   PetscInt mesh_nt = 4, mesh_ntheta = 48;
-  double mesh_density = 0; // -mesh_ntheta 0: elements around per bending length sqrt(Ro t)
+  double mesh_density = 0;     // -mesh_ntheta 0: elements around per bending length sqrt(Ro t)
+  double mesh_wall_strain = 0; // -mesh_nt 0: largest change of the bending strain t/Ro across a cell
+  PetscInt mesh_nt_min = 2;    // -mesh_nt 0: fewest cells through the wall
   std::string mesh_file;
   fe::Formulation element = fe::Formulation::BBar;
   std::string element_name = "bbar";
@@ -117,6 +119,14 @@ inline PetscInt ElementsAround(double ro, double t, double density)
 {
   const double n = density * 0.5 * M_PI * ro / std::sqrt(ro * t);
   return std::max<PetscInt>(8, 2 * (PetscInt)std::ceil(0.5 * n));
+}
+
+// Cells through the wall for -mesh_nt 0: straightening the ring strains a
+// fibre at y from the mid-surface by about y / R, so a cell of height t / n
+// spans a bending strain of t / (n Ro); at most `strain` of it, at least `least` cells.
+inline PetscInt ElementsThrough(double ro, double t, double strain, PetscInt least)
+{
+  return std::max<PetscInt>(least, (PetscInt)std::ceil(t / (ro * strain) - 1e-9));
 }
 
 } // namespace tf
