@@ -148,7 +148,7 @@ bool Body::ScanTransition(size_t i, const Voigt &deps, double omega, bool apply)
 
 void Body::ResetTransitions()
 {
-  std::fill(flips_.begin(), flips_.end(), 0);
+  std::fill(flips_.begin(), flips_.end(), 0); // (a new increment: no tangent switches yet)
   for (size_t i = 0; i < fraction_.size(); ++i)
     if (fraction_[i] < 1) fraction_[i] = 1, Stale(i);
 }
@@ -199,7 +199,10 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
             if (apply && ps.plastic) ps.plastic = false, Stale(i);
           } else {
             ++local_switches;
-            if (apply) ps.plastic = !ps.plastic, flips_[i] += prm_.state_from_strain, Stale(i);
+            if (apply) {
+              ps.plastic = !ps.plastic, Stale(i);
+              if (prm_.state_from_strain) ++flips_[i];
+            }
           }
         }
         const double r1 = yield_factor_[i] = material_->YieldOnset(ps, deps, omega);

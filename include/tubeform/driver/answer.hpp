@@ -24,10 +24,10 @@ constexpr double kReportedStrokes[] = {1.0, 2.0, 3.0, 4.2};
 // convergence index from two grids (with an order p >= 1 the finer run's
 // error is at most the difference, 1 / (2^p - 1), once both runs are in the
 // asymptotic range; the companion at half the preset's resolution often is
-// not). Measured on the fast and default presets of twelve validation tubes
+// not). Measured on the fast and default presets of fourteen validation tubes
 // (against CalculiX where it ran, our extrapolated references elsewhere):
-// with 1 it bounded 16 of 24 load errors and 14 of 24 C/t errors, with 3
-// all 48 (scripts/estimate_study.py; docs/accuracy.md, "The error estimate").
+// with 1 it bounded 20 of 28 load errors and 22 of 28 C/t errors, with 3
+// all 56 (scripts/estimate_study.py; docs/accuracy.md, "The error estimate").
 constexpr double kEstimateSafety = 3.0;
 
 struct Answer {
