@@ -19,10 +19,16 @@
    are ~(period / process time)^2 smaller than the load).
 3. Aluminum 18.5/0.5 at mu = 0.35, whose quasi-static path stalls at
    U = 1.40 mm (docs/theory.md, "Stalls"), pressed to U = 2 mm at 1 and at
-   0.1 mm/s: both get there with every friction iteration settled; the
-   kinetic energy stays below 1e-5 of the external work (from the point where
-   that work is 1 % of its final value): the few local snaps as nodes touch or
-   leave the die release next to nothing, so the path is quasi-static; and
+   0.1 mm/s: both get there with every friction iteration settled; between
+   the local snaps the path is quasi-static: the median kinetic energy (from
+   the point where the external work is 1 % of its final value) is below
+   1e-7 of the external work and scales with the speed squared (0.1 mm/s
+   against 1 mm/s: 0.005-0.02, v^2 gives 0.01; measured 0.009-0.010 at
+   130-160 trial increments); the snaps themselves, as a node leaves the die
+   (U = 0.83 and 1.03 mm), release up to 1e-3 of the work whatever the
+   speed, so their peak is not bounded here (a bound of 1e-5 on it, asserted
+   before, held at 143 increments only: at 150 and 160 the same code
+   released 2-5e-4 at those snaps); and
    the loads at U = 1, 1.25 and 1.5 mm agree within 0.5 % (a rate-independent
    result; 0.5 % is the path sensitivity to the order of near-simultaneous
    contact events, seen between 1 and 2 ranks). Past U ~ 1.5 mm this tube
@@ -108,14 +114,17 @@ with ThreadPoolExecutor(max_workers=2) as pool:
 for u in (0.25, 0.5, 1.0):
     a, b = (np.interp(u, S[n]["stroke"], S[n]["load"]) for n in ("qs", "slow"))
     k.check(abs(b - a) < 1e-4 * a, f"squaring at 1 mm/s vs quasi-static, U = {u}: {b:.5f} vs {a:.5f} N/mm ({(b - a) / a:+.1e}, 1e-4)")
+median_ke = {}
 for n in ("thin1", "thin01"):
     h = S[n]
     k.check(h["stroke"][-1] >= 2 - 1e-9 and h["unsettled"][-1] == 0, f"{n}: aluminum 18.5/0.5, mu 0.35 reaches U = {h['stroke'][-1]:.3f} mm, unsettled steps {int(h['unsettled'][-1])}")
     on = h["w_ext"] > 0.01 * h["w_ext"][-1]
-    ke = (h["w_kinetic"][on] / h["w_ext"][on]).max()
-    k.check(ke < 1e-5, f"{n}: kinetic energy at most {ke:.1e} of the external work (1e-5)")
+    median_ke[n] = np.median(h["w_kinetic"][on] / h["w_ext"][on])
+    k.check(median_ke[n] < 1e-7, f"{n}: median kinetic energy {median_ke[n]:.1e} of the external work (1e-7)")
     e = np.abs(h["energy_error"][10:]).max()
     k.check(e < 0.02, f"{n}: energy balance error {e:.1e} (2 %)")
+ratio = median_ke["thin01"] / median_ke["thin1"]
+k.check(0.005 < ratio < 0.02, f"median kinetic energy, 0.1 against 1 mm/s: ratio {ratio:.4f} (v^2: 0.01; 0.005-0.02)")
 for u in (1.0, 1.25, 1.5):
     a, b = (np.interp(u, S[n]["stroke"], S[n]["load"]) for n in ("thin1", "thin01"))
     k.check(abs(b - a) < 5e-3 * a, f"mu 0.35 thin tube, 1 vs 0.1 mm/s at U = {u}: {a:.4f} vs {b:.4f} N/mm ({(b - a) / a:+.1e}, 0.5 %)")
