@@ -164,9 +164,8 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
   for (PetscInt it = 0;; ++it) {
     // A correction that does not reduce the out-of-balance force is halved
     // back towards the point it started from (a line search): along a soft
-    // mode of the tangent (a plastic hinge near collapse) the full step
-    // overshoots. No decrease after kBacktracks halvings: the step is halved.
-    reject_above_ = previous;
+    // mode of the tangent (a plastic hinge near collapse) the full step overshoots.
+    reject_above_ = backtracks < kBacktracks ? previous : PETSC_MAX_REAL;
     PetscCall(Solve(lambda, dl, du, t.dU, inc));
     const double residual = m_.system.iterate_residual();
     if (m_.system.accepted()) {
@@ -185,12 +184,7 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
       continue;
     }
     if (!m_.system.solved()) {
-      if (++backtracks > kBacktracks) {
-        t.settled = false;
-        have_iter_ = false;
-        reject_above_ = PETSC_MAX_REAL;
-        PetscFunctionReturn(PETSC_SUCCESS);
-      }
+      ++backtracks;
       PetscCall(VecAXPBY(iter_, 0.5, 0.5, prev_)); // halfway back to where the correction started
       continue;
     }
