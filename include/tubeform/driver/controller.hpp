@@ -21,11 +21,7 @@ namespace tf {
 // their first are diverging: the step is halved instead.
 constexpr double kDivergence = 10;
 // Halvings of a correction that does not reduce the out-of-balance force.
-// 10 (a 1/1024 step): along a soft mode (a folded thin wall springing back,
-// no die to hold it) the full correction raised the force 40-7000 x and three
-// halvings still left it above where it started; an iterate taken there
-// diverged (R/t 50 on the fast preset: 50 unsettled increments in a row).
-constexpr int kBacktracks = 10;
+constexpr int kBacktracks = 3;
 // Halvings of a trial step whose iterations do not settle; the last is taken unsettled.
 constexpr int kMaxCuts = 6;
 // Re-solves of a shortened non-linear step that go to its limits' estimate; later ones at least halve it.
