@@ -84,9 +84,9 @@ k.check(d < 0.005, f"C/t after springback, 10 vs 100 unloading increments: {A['s
 # A thick wall (aluminum 15/2.5, R/t 6: 8 cells through on the default preset)
 # in balance at every increment: R_max <= 0.005 q_avg (the equilibrium
 # criterion, -equilibrium_tol) and no increment taken unsettled. Its points at
-# the loading/unloading boundary cycled Newton's tangent while QM6's modes were
-# not in balance (15 unsettled increments; kModeTol in
-# include/tubeform/body/body.hpp, docs/theory.md 5a).
+# the loading/unloading boundary cycled Newton's tangent (15 unsettled
+# increments before the tangent of a point cycling stays elastic,
+# kMaxTangentFlips in include/tubeform/body/body.hpp).
 f = out("preset_default_thick.h5")
 run(tf, mpirun, 1, case("default", ["-tube_ro", 15, "-tube_t", 2.5, "-friction_mu", 0.2, "-stroke", 3,
                                     "-error_estimate", 0, "-output", f]), timeout=600)

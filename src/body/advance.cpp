@@ -28,13 +28,11 @@ bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState 
   if (!geo) return false; // reported by the next assembly
   // QM6 with equilibrium iterations: the increment's modes are the cell's own
   // unknowns, corrected (alpha -= Kii^{-1} f_i, f_i on the moved cell) until
-  // their force vanishes (kModeTol), so that the cell's nodal forces are those
-  // of a state in balance inside it, a function of the nodal increment alone,
-  // and the condensed tangent is their derivative.
+  // their force vanishes, so that the cell's nodal forces are those of a state
+  // in balance inside it and the condensed tangent is their derivative.
   const bool balance = prm_.state_from_strain && cells_.has_modes() && fe::ComputeGeometry(xm, moved);
-  fe::InternalVec alpha = balance ? cells_.Modes((int)e, due) : fe::InternalVec{}, from = alpha;
-  double last = HUGE_VAL; // the modes' force at `from`, where the last correction started
-  for (int it = 0, halvings = 0;; ++it) {
+  fe::InternalVec alpha = balance ? cells_.Modes((int)e, due) : fe::InternalVec{};
+  for (int it = 0;; ++it) {
     // Without balancing (one pass) the sums go straight into acc, in the order they always did.
     Advanced local;
     Advanced &sink = balance ? local : acc;
@@ -47,35 +45,24 @@ bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState 
         cells_.Kinematics((int)e, xe, *geo, g, due, deps, omega);
       to[g] = AdvancePoint(fe::kGauss * e + g, deps, omega, r, geo->wdet[g], sink);
     }
-    if (!balance) return true;
-    Voigt s[fe::kGauss];
-    fe::InternalVec fi;
-    double scale = 0, area = 0, worst = 0;
-    for (int g = 0; g < fe::kGauss; ++g) {
-      s[g] = to[g].sigma, area += moved.wdet[g];
-      for (double v : s[g]) scale = std::max(scale, std::abs(v));
+    // A fixed number of corrections (not a tolerance): the forces are then a
+    // smooth function of the nodal increments, which the Newton iterations of
+    // the increment need.
+    const bool done = !balance || it == kModeCorrections;
+    if (!done) {
+      Voigt s[fe::kGauss];
+      fe::InternalVec fi;
+      for (int g = 0; g < fe::kGauss; ++g) s[g] = to[g].sigma;
+      cells_.ModeForce(xm, moved, s, fi);
+      cells_.CorrectModes((int)e, fi, alpha);
     }
-    cells_.ModeForce(xm, moved, s, fi);
-    for (double v : fi) worst = std::max(worst, std::abs(v));
-    if (worst <= kModeTol * scale * std::sqrt(area) || it == kModeCorrections) {
-      acc.w_int += local.w_int, acc.w_plastic += local.w_plastic, acc.n_plastic += local.n_plastic;
-      acc.drift = std::max(acc.drift, local.drift);
+    if (done) {
+      if (balance) {
+        acc.w_int += local.w_int, acc.w_plastic += local.w_plastic, acc.n_plastic += local.n_plastic;
+        acc.drift = std::max(acc.drift, local.drift);
+      }
       return true;
     }
-    if (worst > last && halvings < kModeHalvings) {
-      // The correction raised the force (a point's response turned over
-      // between elastic and plastic): halfway back to where it started.
-      for (int k = 0; k < fe::kInternal; ++k) alpha[k] = 0.5 * (alpha[k] + from[k]);
-      ++halvings;
-      continue;
-    }
-    from = alpha, last = worst, halvings = 0;
-    // First with the assembled Kii (exact when every point responds as its
-    // tangent says), then with the tangents of the points' own response to
-    // this strain increment (plastic where it flowed).
-    Mat4 c[fe::kGauss];
-    for (int g = 0; g < fe::kGauss; ++g) c[g] = material_->Tangent(to[g]), s[g] = state_[fe::kGauss * e + g].sigma;
-    if (it == 0 || !cells_.CorrectModesWith(xe, *geo, c, s, fi, alpha)) cells_.CorrectModes((int)e, fi, alpha);
   }
 }
 

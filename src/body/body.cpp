@@ -32,6 +32,7 @@ PetscErrorCode Body::Setup(const Mesh &mesh, const BodyParams &prm)
   state_.assign(fe::kGauss * mesh.num_cells, PointState{});
   yield_factor_.assign(state_.size(), kNever);
   fraction_.assign(state_.size(), 1.0);
+  flips_.assign(state_.size(), 0);
   onset_.assign(state_.size(), PointState{});
   ke_.resize(mesh.num_cells);
   ke_stale_.assign(mesh.num_cells, 1);
@@ -147,6 +148,7 @@ bool Body::ScanTransition(size_t i, const Voigt &deps, double omega, bool apply)
 
 void Body::ResetTransitions()
 {
+  std::fill(flips_.begin(), flips_.end(), 0); // (a new increment: no tangent switches yet)
   for (size_t i = 0; i < fraction_.size(); ++i)
     if (fraction_[i] < 1) fraction_[i] = 1, Stale(i);
 }
@@ -192,8 +194,16 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
         const auto &[deps, omega] = trial_[i];
         PointState &ps = state_[i];
         if (material_->Loading(ps, deps) != ps.plastic) {
-          ++local_switches;
-          if (apply) ps.plastic = !ps.plastic, Stale(i);
+          if (prm_.state_from_strain && flips_[i] >= kMaxTangentFlips) {
+            // Cycling at the loading/unloading boundary: the elastic tangent from here on.
+            if (apply && ps.plastic) ps.plastic = false, Stale(i);
+          } else {
+            ++local_switches;
+            if (apply) {
+              ps.plastic = !ps.plastic, Stale(i);
+              if (prm_.state_from_strain) ++flips_[i];
+            }
+          }
         }
         const double r1 = yield_factor_[i] = material_->YieldOnset(ps, deps, omega);
         if (!prm_.yield_inside) {

@@ -52,14 +52,4 @@ void CellFormulation::CorrectModes(int e, const InternalVec &fi, InternalVec &al
     for (int j = 0; j < kInternal; ++j) alpha[i] -= kii_inv_[e][i][j] * fi[j];
 }
 
-bool CellFormulation::CorrectModesWith(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 c[kGauss],
-                                       const Voigt s[kGauss], const InternalVec &fi, InternalVec &alpha) const
-{
-  ModeMatrix kii_inv;
-  if (!QM6ModeInverse(xe, geo, c, s, kii_inv, mean_dilatation())) return false;
-  for (int i = 0; i < kInternal; ++i)
-    for (int j = 0; j < kInternal; ++j) alpha[i] -= kii_inv[i][j] * fi[j];
-  return true;
-}
-
 } // namespace tf::fe

@@ -170,32 +170,6 @@ bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Ma
   return true;
 }
 
-bool QM6ModeInverse(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 tangent[kGauss],
-                    const Voigt sigma[kGauss], ModeMatrix &kii_inv, bool mean_dilatation)
-{
-  // The modes' block of QM6Stiffness (geometric terms included) alone.
-  Gradients gr;
-  ComputeGradients(xe, geo, gr);
-  double kii[kInternal][kInternal] = {}, id[kInternal][kInternal] = {};
-  for (int g = 0; g < kGauss; ++g) {
-    double b[kVoigt][kAll], bm[kVoigt][kInternal];
-    StrainMatrix12(gr, g, b, mean_dilatation);
-    for (int r = 0; r < kVoigt; ++r)
-      for (int m = 0; m < kInternal; ++m) bm[r][m] = b[r][kDofs + m];
-    AddBtCB(bm, JaumannTangent(tangent[g], sigma[g], true), gr.wdet[g], kii);
-    for (int s = kNodes; s < kShapes; ++s)
-      for (int t = kNodes; t < kShapes; ++t) {
-        const double kst = gr.wdet[g] * InitialStress(gr.g[g][s], gr.g[g][t], sigma[g]);
-        for (int comp = 0; comp < 2; ++comp) kii[Dof(s, comp) - kDofs][Dof(t, comp) - kDofs] += kst;
-      }
-  }
-  for (int i = 0; i < kInternal; ++i) id[i][i] = 1;
-  if (!Solve4<kInternal>(kii, id)) return false;
-  for (int i = 0; i < kInternal; ++i)
-    for (int j = 0; j < kInternal; ++j) kii_inv[i][j] = id[i][j];
-  return true;
-}
-
 bool QM6Kinematics(const double xe[2 * kNodes], int g, const ElemVec &du, const InternalVec &alpha, Voigt &deps,
                    double &omega, bool mean_dilatation)
 {

@@ -22,25 +22,21 @@
 
 namespace tf {
 
-// QM6's modes in balance (equilibrium iterations): Newton on each cell's
-// modes from cond du until their force is at most kModeTol of the cell's
-// force scale (largest stress times the square root of its area). The nodal
-// forces then depend on the nodal increment alone, not on the tangent the
-// modes started from: with a fixed single correction they carried the
-// tangent's condensation times the force left on the modes, so a point's
-// tangent switch moved the out-of-balance force of the same iterate, and
-// Newton cycled at the loading/unloading boundary (docs/theory.md, 5a).
-// 1e-5: the force left leaks into the nodes at 1e-5 of the cell's own force,
-// 500 x below the equilibrium criterion 0.005 q; 1e-6 cost the nearly
-// incompressible tube (nu 0.499) 20 % more time in its forces, 1e-5 half that.
-constexpr double kModeTol = 1e-5;
-// At most this many corrections (a cell that still misses the tolerance keeps
-// the last: measured on the thick wall 15/2.5, 52 of 380,000 cell updates
-// reach 30, their force then within 4e-7 of the scale at the median).
-constexpr int kModeCorrections = 30;
-// A correction that raises the modes' force is halved back at most this many
-// times (a point's response turned over between elastic and plastic).
-constexpr int kModeHalvings = 4;
+// QM6's modes in balance (equilibrium iterations): corrections per cell of
+// the modes cond du (Kii is their exact stiffness for a linear step, so one
+// removes all but the step's second-order part of their force; a second
+// changed the load by less than 1e-4 on the default preset).
+constexpr int kModeCorrections = 1;
+
+// Equilibrium iterations: tangent switches of one point within an increment
+// before its tangent stays elastic. The forces do not depend on the tangent
+// (the update is a function of the strain increment), so only convergence
+// does: a point at the loading/unloading boundary whose tangent flips every
+// iteration keeps Newton cycling, while the elastic tangent, the stiffer one,
+// converges (slower) on it. 8: with 2 so many points of a nearly
+// incompressible tube (nu 0.499) froze that its iterations slowed 2 x; with 4
+// a thin tube's committed state once read 0.0135 q (tests/check_release_energy.py).
+constexpr unsigned char kMaxTangentFlips = 8;
 
 struct BodyParams {
   fe::Formulation element = fe::Formulation::BBar;
@@ -135,6 +131,7 @@ private:
   std::vector<PointState> state_;
   std::vector<double> yield_factor_; // r1 of each Gauss point from the last ScanTrial
   std::vector<double> fraction_;     // yield_inside: elastic fraction m in the assembled tangent (1: elastic)
+  std::vector<unsigned char> flips_; // tangent switches of each point in this increment (kMaxTangentFlips)
   std::vector<PointState> onset_;    // yield_inside: state where the point meets the surface (plastic)
   std::vector<double> x_, u_;
   std::vector<std::pair<Voigt, double>> trial_; // ScanTrial: strain and spin increments of each point

@@ -50,10 +50,6 @@ public:
     QM6ModeForce(xe, geo, s, fi, mean_dilatation());
   }
   void CorrectModes(int e, const InternalVec &fi, InternalVec &alpha) const;
-  // The same correction with Kii of the tangents c (stresses s, for the
-  // initial-stress part) on a cell's configuration: false if Kii is singular.
-  bool CorrectModesWith(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 c[kGauss],
-                        const Voigt s[kGauss], const InternalVec &fi, InternalVec &alpha) const;
 
   // qm6: the condensation of every cell (empty for other elements). State a
   // checkpoint keeps: the internal force of a committed state uses the last tangent's.

@@ -67,10 +67,6 @@ void QM6Kinematics(const double xe[2 * kNodes], const QuadGeometry &geo, int g, 
 bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 tangent[kGauss],
                   const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond, ModeMatrix *kii_inv,
                   bool mean_dilatation = false);
-// Kii^{-1} alone (the modes' block of QM6Stiffness with its geometric terms):
-// false if Kii is singular.
-bool QM6ModeInverse(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 tangent[kGauss],
-                    const Voigt sigma[kGauss], ModeMatrix &kii_inv, bool mean_dilatation = false);
 // f_i = sum_g w det J G_g^T sigma_g: the force on the internal modes (zero when they are in balance).
 void QM6ModeForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt sigma[kGauss], InternalVec &fi,
                   bool mean_dilatation = false);
