@@ -32,7 +32,10 @@
     /usr/bin/python3 scripts/history_stats.py snaps F.h5 [F.h5 ...]
         Runs with inertia: the median kinetic energy of the loading (the tube
         moving with the punch) and every local peak above ten times it (a
-        local snap), with its stroke and its share of the work done by then.
+        local snap), with its stroke and its share of the work done by then;
+        and when the run's largest load is one such row's transient (a row
+        that advanced under 1e-4 mm reading > 5 % above both neighbours), its
+        neighbours and the load at the end of loading.
 
     /usr/bin/python3 scripts/history_stats.py metrics F.h5 [F.h5 ...]
         A tool scene's numbers of docs/accuracy.md, one line per file: the
@@ -128,6 +131,15 @@ def snaps(paths):
         peaks = [i for i in range(1, len(ke) - 1) if ke[i] > ke[i - 1] and ke[i] >= ke[i + 1] and ke[i] > 10 * base]
         print(f"{path}: median kinetic energy {base:.1e} N mm/mm; peaks above 10x: " +
               (", ".join(f"U = {H['stroke'][i]:.2f} mm {ke[i]:.1e} ({ke[i] / H['w_ext'][i]:.1e} of w_ext)" for i in peaks) or "none"))
+        # The largest load, and whether it is one row's transient: a row that
+        # advanced the stroke by less than 1e-4 mm reading more than 5 % above
+        # both neighbours (docs/results.md, "The largest load of a thin tube").
+        U, P = H["stroke"], H["load"]
+        j = int(np.argmax(P))
+        if 0 < j < len(P) - 1 and U[j] - U[j - 1] < 1e-4 and P[j] > 1.05 * max(P[j - 1], P[j + 1]):
+            print(f"    largest load {P[j]:.1f} N/mm at U = {U[j]:.3f} mm is a transient: its neighbours "
+                  f"{P[j - 1]:.1f}, {P[j + 1]:.1f}; kinetic energy {ke[j] / H['w_ext'][j]:.1e} of w_ext; "
+                  f"end of loading {P[-1]:.1f}")
 
 
 def metrics(paths):

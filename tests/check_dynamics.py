@@ -28,7 +28,8 @@
    (U = 0.83 and 1.03 mm), release up to 1e-3 of the work whatever the
    speed, so their peak is not bounded here (a bound of 1e-5 on it, asserted
    before, held at 143 increments only: at 150 and 160 the same code
-   released 2-5e-4 at those snaps); and
+   released 2-5e-4 at those snaps, `scripts/history_stats.py snaps` on these
+   runs with `-increments 150`); and
    the loads at U = 1, 1.25 and 1.5 mm agree within 0.5 % (a rate-independent
    result; 0.5 % is the path sensitivity to the order of near-simultaneous
    contact events, seen between 1 and 2 ranks). Past U ~ 1.5 mm this tube
