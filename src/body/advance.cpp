@@ -11,27 +11,109 @@
 
 namespace tf {
 
-bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState *to, Advanced &acc) const
+namespace {
+// Passes of the fixed point between a cell's loading states and its modes'
+// condensation (AdvanceCell): a state switched by the new condensation's
+// modes is itself at the loading/unloading boundary.
+constexpr int kSelectPasses = 3;
+} // namespace
+
+void Body::SelectTangent(size_t i, const Voigt &deps, double omega, bool &plastic, double &m) const
+{
+  PointState start = state_[i];
+  start.plastic = false;
+  plastic = material_->Loading(start, deps); // on the surface and loading
+  m = plastic || !prm_.yield_inside ? 1.0 : std::min(1.0, material_->YieldOnset(start, deps, omega));
+}
+
+bool Body::CellOwnTangents(PetscInt e, const double xs[2 * fe::kNodes], const fe::QuadGeometry &gs,
+                           const fe::ElemVec &due, const fe::Condensation &cond, Mat4 c[fe::kGauss],
+                           bool plastic_out[fe::kGauss], double m_out[fe::kGauss]) const
+{
+  bool differ = false;
+  const fe::InternalVec alpha = fe::CellFormulation::ModesOf(cond, due);
+  for (int g = 0; g < fe::kGauss; ++g) {
+    const size_t i = fe::kGauss * e + g;
+    Voigt deps;
+    double omega, m;
+    bool plastic;
+    cells_.KinematicsWith(xs, gs, g, due, alpha, deps, omega);
+    SelectTangent(i, deps, omega, plastic, m);
+    plastic_out[g] = plastic, m_out[g] = m;
+    PointState ps = state_[i];
+    ps.plastic = plastic;
+    if (m < 1) {
+      // m D_e + (1 - m) D_ep at the onset on the elastic path (as ScanTransition).
+      PointState on = ps;
+      RotateStress(ObjectiveScheme::Forward, m * omega, on.sigma);
+      material_->Update(on, Scaled(deps, m));
+      on.plastic = true;
+      const Mat4 de = material_->Tangent(ps), dep = material_->Tangent(on);
+      for (int r = 0; r < 4; ++r)
+        for (int k = 0; k < 4; ++k) c[g][r][k] = m * de[r][k] + (1 - m) * dep[r][k];
+    } else {
+      c[g] = material_->Tangent(ps);
+    }
+    // The assembled tangent is this one when the loading state and the elastic
+    // fraction are the same (ScanTrial took both from the same increment).
+    differ = differ || plastic != state_[i].plastic || m != fraction_[i];
+  }
+  return differ;
+}
+
+bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState *to, Advanced &acc,
+                       fe::Condensation *used) const
 {
   fe::QuadGeometry mid, moved;
-  double xe[2 * fe::kNodes], xm[2 * fe::kNodes];
+  double xe[2 * fe::kNodes], xm[2 * fe::kNodes], xs[2 * fe::kNodes];
   const bool midpoint = prm_.kinematics == ObjectiveScheme::Midpoint;
   // Gradients on the start configuration (the paper's forward form: the
   // cached geometry), or on the mid-increment one (Hughes-Winget: a rigid
   // rotation then gives zero strain and an exact rotation of the stress).
   const fe::QuadGeometry *geo = CellGeometry(e, xe);
-  for (int k = 0; k < 2 * fe::kNodes; ++k) xm[k] = xe[k] + due[k];
+  const fe::QuadGeometry *start = geo;
+  for (int k = 0; k < 2 * fe::kNodes; ++k) xs[k] = xe[k], xm[k] = xe[k] + due[k];
   if (midpoint) {
     for (int k = 0; k < 2 * fe::kNodes; ++k) xe[k] += 0.5 * due[k];
     geo = fe::ComputeGeometry(xe, mid) ? &mid : nullptr;
   }
   if (!geo) return false; // reported by the next assembly
+  if (used && cells_.has_modes()) *used = cells_.assembled((int)e);
   // QM6 with equilibrium iterations: the increment's modes are the cell's own
   // unknowns, corrected (alpha -= Kii^{-1} f_i, f_i on the moved cell) until
   // their force vanishes, so that the cell's nodal forces are those of a state
   // in balance inside it and the condensed tangent is their derivative.
   const bool balance = prm_.state_from_strain && cells_.has_modes() && fe::ComputeGeometry(xm, moved);
-  fe::InternalVec alpha = balance ? cells_.Modes((int)e, due) : fe::InternalVec{};
+  // The condensation they take is that of the tangents the increment itself
+  // selects (the assembled one where those are the assembled tangents): the
+  // forces are then a function of the nodal increments, whatever loading
+  // states the assembly took (docs/theory.md, 5a).
+  fe::Condensation own;
+  fe::ModeMatrix own_kii_inv;
+  const fe::Condensation *cond = balance ? &cells_.assembled((int)e) : nullptr;
+  const fe::ModeMatrix *kii_inv = balance ? &cells_.assembled_kii_inv((int)e) : nullptr;
+  if (balance && OwnTangents()) {
+    // A fixed point: the states the modes of a condensation select, then the
+    // condensation of those states, until they select themselves (from the
+    // assembled one, which ScanTrial took from the last iterate's increment).
+    Mat4 c[fe::kGauss];
+    Voigt s[fe::kGauss];
+    bool plastic[fe::kGauss], last_plastic[fe::kGauss];
+    double m[fe::kGauss], last_m[fe::kGauss];
+    for (int g = 0; g < fe::kGauss; ++g) s[g] = state_[fe::kGauss * e + g].sigma;
+    for (int pass = 0; pass < kSelectPasses; ++pass) {
+      const bool differ = CellOwnTangents(e, xs, *start, due, *cond, c, plastic, m);
+      if (pass == 0 && !differ) break;
+      if (pass > 0 && std::equal(plastic, plastic + fe::kGauss, last_plastic) && std::equal(m, m + fe::kGauss, last_m))
+        break;
+      if (!cells_.Condense(xs, *start, c, s, own, own_kii_inv)) break;
+      cond = &own, kii_inv = &own_kii_inv;
+      std::copy(plastic, plastic + fe::kGauss, last_plastic);
+      std::copy(m, m + fe::kGauss, last_m);
+    }
+  }
+  if (used && balance) *used = *cond;
+  fe::InternalVec alpha = balance ? fe::CellFormulation::ModesOf(*cond, due) : fe::InternalVec{};
   for (int it = 0;; ++it) {
     // Without balancing (one pass) the sums go straight into acc, in the order they always did.
     Advanced local;
@@ -54,7 +136,7 @@ bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState 
       fe::InternalVec fi;
       for (int g = 0; g < fe::kGauss; ++g) s[g] = to[g].sigma;
       cells_.ModeForce(xm, moved, s, fi);
-      cells_.CorrectModes((int)e, fi, alpha);
+      fe::CellFormulation::CorrectModesOf(*kii_inv, fi, alpha);
     }
     if (done) {
       if (balance) {
@@ -136,15 +218,19 @@ PetscErrorCode Body::TrialForce(Vec du_local, double r, Vec f_local, double *mag
   last_trial_.du.assign(du, du + n);
   last_trial_.r = r;
   last_trial_.states.resize(state_.size());
+  if (cells_.has_modes()) last_trial_.conds.resize(mesh_->num_cells);
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
     fe::ElemVec due, fe_;
     PointState *to = &last_trial_.states[fe::kGauss * e];
     Voigt s[fe::kGauss];
+    fe::Condensation cond;
     GatherCell(*mesh_, e, du, due);
-    if (!AdvanceCell(e, due, r, to, acc)) { // inverted: the next assembly reports it
+    if (!AdvanceCell(e, due, r, to, acc, &cond)) { // inverted: the next assembly reports it
       for (int g = 0; g < fe::kGauss; ++g) to[g] = state_[fe::kGauss * e + g];
+      if (cells_.has_modes()) last_trial_.conds[e] = cells_.assembled((int)e);
       continue;
     }
+    if (cells_.has_modes()) last_trial_.conds[e] = cond;
     // Forces of the new stresses on the moved corners (as the commit's next InternalForce).
     double xe[2 * fe::kNodes];
     fe::QuadGeometry geo;
@@ -152,7 +238,10 @@ PetscErrorCode Body::TrialForce(Vec du_local, double r, Vec f_local, double *mag
     for (int k = 0; k < 2 * fe::kNodes; ++k) xe[k] += due[k];
     if (!fe::ComputeGeometry(xe, geo)) continue;
     for (int g = 0; g < fe::kGauss; ++g) s[g] = to[g].sigma;
-    cells_.InternalForce((int)e, xe, geo, s, fe_);
+    if (cells_.has_modes())
+      cells_.InternalForceOf(xe, geo, s, cond, fe_);
+    else
+      cells_.InternalForce((int)e, xe, geo, s, fe_);
     for (double v : fe_) *magnitude += std::abs(v);
     *count += 2 * fe::kNodes;
     for (int a = 0; a < fe::kNodes; ++a) {

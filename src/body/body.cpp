@@ -32,7 +32,6 @@ PetscErrorCode Body::Setup(const Mesh &mesh, const BodyParams &prm)
   state_.assign(fe::kGauss * mesh.num_cells, PointState{});
   yield_factor_.assign(state_.size(), kNever);
   fraction_.assign(state_.size(), 1.0);
-  flips_.assign(state_.size(), 0);
   onset_.assign(state_.size(), PointState{});
   ke_.resize(mesh.num_cells);
   ke_stale_.assign(mesh.num_cells, 1);
@@ -148,7 +147,6 @@ bool Body::ScanTransition(size_t i, const Voigt &deps, double omega, bool apply)
 
 void Body::ResetTransitions()
 {
-  std::fill(flips_.begin(), flips_.end(), 0); // (a new increment: no tangent switches yet)
   for (size_t i = 0; i < fraction_.size(); ++i)
     if (fraction_[i] < 1) fraction_[i] = 1, Stale(i);
 }
@@ -193,19 +191,18 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
         const size_t i = fe::kGauss * e + g;
         const auto &[deps, omega] = trial_[i];
         PointState &ps = state_[i];
-        if (material_->Loading(ps, deps) != ps.plastic) {
-          if (prm_.state_from_strain && flips_[i] >= kMaxTangentFlips) {
-            // Cycling at the loading/unloading boundary: the elastic tangent from here on.
-            if (apply && ps.plastic) ps.plastic = false, Stale(i);
-          } else {
-            ++local_switches;
-            if (apply) {
-              ps.plastic = !ps.plastic, Stale(i);
-              if (prm_.state_from_strain) ++flips_[i];
-            }
-          }
+        bool loading = material_->Loading(ps, deps);
+        if (OwnTangents()) {
+          double m;
+          SelectTangent(i, deps, omega, loading, m);
         }
-        const double r1 = yield_factor_[i] = material_->YieldOnset(ps, deps, omega);
+        if (loading != ps.plastic) {
+          ++local_switches;
+          if (apply) ps.plastic = loading, Stale(i);
+        }
+        PointState start = ps;
+        if (OwnTangents()) start.plastic = loading; // (switched or not: the onset of the selected state)
+        const double r1 = yield_factor_[i] = material_->YieldOnset(start, deps, omega);
         if (!prm_.yield_inside) {
           yield.Offer(r1, Limiter::Yield, mesh_->cell_orig[e]);
         } else if (!ps.plastic) {
@@ -247,14 +244,20 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
     // The equilibrium iterations evaluated this very increment last: its states.
     state_.swap(last_trial_.states);
     acc = last_trial_.acc;
+    if (cells_.has_modes())
+      for (PetscInt e = 0; e < mesh_->num_cells; ++e) cells_.SetCommitted((int)e, last_trial_.conds[e]);
   } else {
     std::vector<PointState> next(state_.size());
+    if (cells_.has_modes()) cells_.CommitAssembled(); // (a cell advanced below replaces its own)
     for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
       fe::ElemVec due;
+      fe::Condensation used;
       GatherCell(*mesh_, e, du, due);
       PointState *to = &next[fe::kGauss * e];
-      if (!AdvanceCell(e, due, r, to, acc))
+      if (!AdvanceCell(e, due, r, to, acc, &used))
         for (int g = 0; g < fe::kGauss; ++g) to[g] = state_[fe::kGauss * e + g];
+      else if (cells_.has_modes())
+        cells_.SetCommitted((int)e, used);
     }
     state_.swap(next);
   }

@@ -28,16 +28,6 @@ namespace tf {
 // changed the load by less than 1e-4 on the default preset).
 constexpr int kModeCorrections = 1;
 
-// Equilibrium iterations: tangent switches of one point within an increment
-// before its tangent stays elastic. The forces do not depend on the tangent
-// (the update is a function of the strain increment), so only convergence
-// does: a point at the loading/unloading boundary whose tangent flips every
-// iteration keeps Newton cycling, while the elastic tangent, the stiffer one,
-// converges (slower) on it. 8: with 2 so many points of a nearly
-// incompressible tube (nu 0.499) froze that its iterations slowed 2 x; with 4
-// a thin tube's committed state once read 0.0135 q (tests/check_release_energy.py).
-constexpr unsigned char kMaxTangentFlips = 8;
-
 struct BodyParams {
   fe::Formulation element = fe::Formulation::BBar;
   MaterialParams material;
@@ -131,7 +121,6 @@ private:
   std::vector<PointState> state_;
   std::vector<double> yield_factor_; // r1 of each Gauss point from the last ScanTrial
   std::vector<double> fraction_;     // yield_inside: elastic fraction m in the assembled tangent (1: elastic)
-  std::vector<unsigned char> flips_; // tangent switches of each point in this increment (kMaxTangentFlips)
   std::vector<PointState> onset_;    // yield_inside: state where the point meets the surface (plastic)
   std::vector<double> x_, u_;
   std::vector<std::pair<Voigt, double>> trial_; // ScanTrial: strain and spin increments of each point
@@ -161,7 +150,23 @@ private:
   // The states cell e's points reach with its nodal increments due (a solution
   // scaled by r), into to[0..kGauss); false (to untouched) if the cell's
   // geometry is inverted. Shared by Commit and TrialForce.
-  bool AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState *to, Advanced &acc) const;
+  // `used`: the condensation the cell's modes and forces were taken with (qm6).
+  bool AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState *to, Advanced &acc,
+                   fe::Condensation *used = nullptr) const;
+  // qm6 with equilibrium iterations: the tangents are selected by the strain
+  // increment itself (OwnTangents), not by the assembly, so that a cell's
+  // forces are a function of its nodal increments (docs/theory.md, 5a).
+  bool OwnTangents() const { return prm_.state_from_strain && cells_.has_modes() && material_->plastic_law(); }
+  // Point i's loading state for the selecting increment (deps, omega): plastic
+  // (on the surface and loading), or elastic with the fraction m < 1 of the
+  // step before the yield onset (yield_inside), or elastic (m = 1).
+  void SelectTangent(size_t i, const Voigt &deps, double omega, bool &plastic, double &m) const;
+  // The tangents (c) and loading states (plastic, m) that cell e's increment
+  // due selects with its modes of the condensation `cond`, on the start
+  // corners xs (geometry gs); true when they differ from the assembled ones.
+  bool CellOwnTangents(PetscInt e, const double xs[2 * fe::kNodes], const fe::QuadGeometry &gs, const fe::ElemVec &due,
+                       const fe::Condensation &cond, Mat4 c[fe::kGauss], bool plastic[fe::kGauss],
+                       double m[fe::kGauss]) const;
   // The state point i reaches with strain and spin increments deps, omega;
   // adds its work (weight wdet) and drift into acc.
   PointState AdvancePoint(size_t i, const Voigt &deps, double omega, double r, double wdet, Advanced &acc) const;
@@ -170,6 +175,7 @@ private:
     std::vector<double> du; // its local increment
     double r = 0;
     std::vector<PointState> states;
+    std::vector<fe::Condensation> conds; // qm6: per cell, the condensation of its forces
     Advanced acc;
     bool valid = false;
   };

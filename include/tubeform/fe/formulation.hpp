@@ -29,7 +29,8 @@ public:
   // (qm6: its modes from the last stiffness of the cell).
   void Kinematics(int e, const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du, Voigt &deps,
                   double &omega) const;
-  // Nodal forces of the cell's Gauss-point stresses.
+  // Nodal forces of the cell's Gauss-point stresses (qm6: with the
+  // condensation its committed state was reached with, SetCommitted).
   void InternalForce(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss],
                      ElemVec &f) const;
 
@@ -51,14 +52,34 @@ public:
   }
   void CorrectModes(int e, const InternalVec &fi, InternalVec &alpha) const;
 
-  // qm6: the condensation of every cell (empty for other elements). State a
-  // checkpoint keeps: the internal force of a committed state uses the last tangent's.
-  std::vector<Condensation> &condensations() { return condensation_; }
+  // qm6, the force's own condensation (equilibrium iterations): the modes and
+  // nodal forces of an increment taken with the condensation of the tangents
+  // its own strain increment selects, not the assembled one, so that the
+  // forces are a function of the nodal increment (docs/theory.md, 5a).
+  // Condense computes cond and Kii^{-1} of tangents c without storing them
+  // (false: Kii singular); the *Of functions take them explicitly.
+  bool Condense(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 c[kGauss], const Voigt s[kGauss],
+                Condensation &cond, ModeMatrix &kii_inv) const;
+  static InternalVec ModesOf(const Condensation &cond, const ElemVec &du);
+  static void CorrectModesOf(const ModeMatrix &kii_inv, const InternalVec &fi, InternalVec &alpha);
+  void InternalForceOf(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt s[kGauss],
+                       const Condensation &cond, ElemVec &f) const;
+  const Condensation &assembled(int e) const { return condensation_[e]; }
+  const ModeMatrix &assembled_kii_inv(int e) const { return kii_inv_[e]; }
+  // The condensation of the committed state's forces: cell e's (from the
+  // increment that reached it), or the assembled ones for every cell.
+  void SetCommitted(int e, const Condensation &cond) { committed_[e] = cond; }
+  void CommitAssembled() { committed_ = condensation_; }
+
+  // qm6: the committed state's condensation of every cell (empty for other
+  // elements). State a checkpoint keeps: the committed state's internal force uses it.
+  std::vector<Condensation> &condensations() { return committed_; }
 
 private:
   Formulation kind_ = Formulation::BBar;
   std::vector<Condensation> condensation_; // qm6: per cell, from the last Stiffness
   std::vector<ModeMatrix> kii_inv_;        // qm6: per cell, Kii^{-1} of the last Stiffness
+  std::vector<Condensation> committed_;    // qm6: per cell, of the committed state's forces
 };
 
 } // namespace tf::fe
