@@ -16,6 +16,9 @@ namespace {
 // condensation (AdvanceCell): a state switched by the new condensation's
 // modes is itself at the loading/unloading boundary.
 constexpr int kSelectPasses = 3;
+// Elastic fractions m (of the step before a point's yield onset) that move by
+// less than this between passes select the same tangent.
+constexpr double kSelectTol = 1e-6;
 } // namespace
 
 void Body::SelectTangent(size_t i, const Voigt &deps, double omega, bool &plastic, double &m) const
@@ -104,7 +107,8 @@ bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState 
     for (int pass = 0; pass < kSelectPasses; ++pass) {
       const bool differ = CellOwnTangents(e, xs, *start, due, *cond, c, plastic, m);
       if (pass == 0 && !differ) break;
-      if (pass > 0 && std::equal(plastic, plastic + fe::kGauss, last_plastic) && std::equal(m, m + fe::kGauss, last_m))
+      if (pass > 0 && std::equal(plastic, plastic + fe::kGauss, last_plastic) &&
+          std::equal(m, m + fe::kGauss, last_m, [](double a, double b) { return std::abs(a - b) <= kSelectTol; }))
         break;
       if (!cells_.Condense(xs, *start, c, s, own, own_kii_inv)) break;
       cond = &own, kii_inv = &own_kii_inv;

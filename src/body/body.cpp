@@ -191,17 +191,15 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
         const size_t i = fe::kGauss * e + g;
         const auto &[deps, omega] = trial_[i];
         PointState &ps = state_[i];
-        bool loading = material_->Loading(ps, deps);
-        if (OwnTangents()) {
-          double m;
-          SelectTangent(i, deps, omega, loading, m);
-        }
+        // Own tangents: the state AdvanceCell selects (SelectTangent), on the surface and loading.
+        PointState start = ps;
+        if (OwnTangents()) start.plastic = false;
+        const bool loading = material_->Loading(start, deps);
         if (loading != ps.plastic) {
           ++local_switches;
           if (apply) ps.plastic = loading, Stale(i);
         }
-        PointState start = ps;
-        if (OwnTangents()) start.plastic = loading; // (switched or not: the onset of the selected state)
+        start.plastic = OwnTangents() ? loading : ps.plastic; // (the onset of the selected state)
         const double r1 = yield_factor_[i] = material_->YieldOnset(start, deps, omega);
         if (!prm_.yield_inside) {
           yield.Offer(r1, Limiter::Yield, mesh_->cell_orig[e]);

@@ -5,11 +5,25 @@
 
 namespace tf {
 
-double LudwikHardening::YieldStress(double ep) const { return sy0_ + k_ * std::pow(std::max(ep, 0.0), n_); }
+LudwikHardening::LudwikHardening(double sy0, double k, double n)
+    : sy0_(sy0), k_(k), n_(n), unyielded_(sy0 + k * std::pow(0.0, n))
+{}
+
+double LudwikHardening::YieldStress(double ep) const
+{
+  if (ep <= 0) return unyielded_; // (never yielded: most points of a run)
+  if (ep != memo_ep_) memo_ep_ = ep, memo_sy_ = sy0_ + k_ * std::pow(ep, n_);
+  return memo_sy_;
+}
 
 SwiftHardening::SwiftHardening(double sy0, double k, double n) : k_(k), n_(n), ep0_(std::pow(sy0 / k, 1.0 / n)) {}
 
-double SwiftHardening::YieldStress(double ep) const { return k_ * std::pow(ep0_ + std::max(ep, 0.0), n_); }
+double SwiftHardening::YieldStress(double ep) const
+{
+  const double e = std::max(ep, 0.0);
+  if (e != memo_ep_) memo_ep_ = e, memo_sy_ = k_ * std::pow(ep0_ + e, n_);
+  return memo_sy_;
+}
 
 double TableHardening::YieldStress(double ep) const
 {
