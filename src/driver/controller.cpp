@@ -1,6 +1,7 @@
 #include "tubeform/driver/controller.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace tf {
@@ -272,12 +273,30 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
     // ends; only inertia's shortest step is taken as it is (a compromise,
     // counted). The last solution is taken unscaled (scaling it would break
     // the friction forces' equilibrium).
-    double taken = r;
+    double taken = r, within = 0, past = dl; // the longest step found within its limits, the shortest past them
+    int grows = 0;
     for (int attempt = 1;; ++attempt) {
       dl *= taken;
       m_.body.ScaleTransitions(taken);
       PetscCall(SettledTrial(lambda, dl, du, t, inc));
-      if (t.limit.r >= 1.0 - opt_.rmin_event_tol) break;
+      if (t.limit.r >= 1.0 - opt_.rmin_event_tol) {
+        // Within its limits. With inertia, far within: lengthened (kGrowAbove).
+        // (Only a step cut by a bound on its size, r2 or r3: an event is where
+        // it is, and a re-solved step ends at it.)
+        const bool bound = inc.who == Limiter::Strain || inc.who == Limiter::Rotation;
+        if (!InertiaActive() || !bound || grows >= kMaxGrows || t.limit.r < kGrowAbove || dl > kGrowBelow * dl_trial)
+          break;
+        within = dl, ++grows;
+        taken = std::min({t.limit.r, kGrowFactor, std::sqrt(past / dl)});
+        if (taken < kGrowAbove) break;
+        continue;
+      }
+      past = std::min(past, dl);
+      if (within > 0) {
+        // A lengthened step went past its limits: back to the last one within, as it was.
+        taken = within / dl, grows = kMaxGrows, within = 0;
+        continue;
+      }
       taken = attempt < kMaxResolves ? t.limit.r : std::min(t.limit.r, 0.5);
       if (InertiaActive()) taken = std::max(taken, MinStepFraction(dl));
       if (taken >= 1.0) break;

@@ -26,6 +26,19 @@ constexpr int kBacktracks = 3;
 constexpr int kMaxCuts = 6;
 // Re-solves of a shortened non-linear step that go to its limits' estimate; later ones at least halve it.
 constexpr int kMaxResolves = 3;
+// Inertia: a re-solved step cut by a bound on its size (r2, r3) and well
+// inside its limits (at least kGrowAbove times its length away) is lengthened, at most kGrowFactor
+// times and at most halfway (geometrically) to the shortest step found past
+// them, up to kMaxGrows times. A step cut from the trial's linear scaling can
+// be orders of magnitude too short there: near a snap K + M / dt^2 is nearly
+// singular at the trial's dt and dominated by the mass at the cut one.
+constexpr double kGrowAbove = 2;
+// ... when it is this fraction of its trial step or less: there M / dt^2 is a
+// million times its value at the trial's dt (a step cut by an event near its
+// trial length is solved to the event, as it was).
+constexpr double kGrowBelow = 1e-3;
+constexpr double kGrowFactor = 10;
+constexpr int kMaxGrows = 4;
 // -dynamics implicit: no step shorter than this fraction of the trial step.
 // Events closer than that (a node whose normal force is all but zero, a point
 // a hair from the yield surface) are taken with it; shorter steps would make
