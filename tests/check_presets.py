@@ -85,8 +85,10 @@ k.check(d < 0.005, f"C/t after springback, 10 vs 100 unloading increments: {A['s
 # in balance at every increment: R_max <= 0.005 q_avg (the equilibrium
 # criterion, -equilibrium_tol) and no increment taken unsettled. Its points at
 # the loading/unloading boundary cycled Newton's tangent (15 unsettled
-# increments before the tangent of a point cycling stays elastic,
-# kMaxTangentFlips in include/tubeform/body/body.hpp).
+# increments; a cap on a point's switches hid it on OpenBLAS's default kernel,
+# and 2 stayed unsettled on OPENBLAS_CORETYPE=Prescott), until QM6's forces
+# took the condensation of the tangents their own increment selects (docs/theory.md,
+# 5a): 0 unsettled on both kernels.
 f = out("preset_default_thick.h5")
 run(tf, mpirun, 1, case("default", ["-tube_ro", 15, "-tube_t", 2.5, "-friction_mu", 0.2, "-stroke", 3,
                                     "-error_estimate", 0, "-output", f]), timeout=600)
