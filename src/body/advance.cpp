@@ -21,47 +21,37 @@ constexpr int kSelectPasses = 3;
 constexpr double kSelectTol = 1e-6;
 } // namespace
 
-void Body::SelectTangent(size_t i, const Voigt &deps, double omega, bool &plastic, double &m) const
-{
-  PointState start = state_[i];
-  start.plastic = false;
-  plastic = material_->Loading(start, deps); // on the surface and loading
-  m = plastic || !prm_.yield_inside ? 1.0 : std::min(1.0, material_->YieldOnset(start, deps, omega));
-}
-
-bool Body::CellOwnTangents(PetscInt e, const double xs[2 * fe::kNodes], const fe::QuadGeometry &gs,
-                           const fe::ElemVec &due, const fe::Condensation &cond, Mat4 c[fe::kGauss],
-                           bool plastic_out[fe::kGauss], double m_out[fe::kGauss]) const
+bool Body::SelectStates(PetscInt e, const double xs[2 * fe::kNodes], const fe::QuadGeometry &gs, const fe::ElemVec &due,
+                        const fe::Condensation &cond, Selected sel[fe::kGauss]) const
 {
   bool differ = false;
   const fe::InternalVec alpha = fe::CellFormulation::ModesOf(cond, due);
   for (int g = 0; g < fe::kGauss; ++g) {
     const size_t i = fe::kGauss * e + g;
-    Voigt deps;
-    double omega, m;
-    bool plastic;
-    cells_.KinematicsWith(xs, gs, g, due, alpha, deps, omega);
-    SelectTangent(i, deps, omega, plastic, m);
-    plastic_out[g] = plastic, m_out[g] = m;
-    PointState ps = state_[i];
-    ps.plastic = plastic;
-    if (m < 1) {
-      // m D_e + (1 - m) D_ep at the onset on the elastic path (as ScanTransition).
-      PointState on = ps;
-      RotateStress(ObjectiveScheme::Forward, m * omega, on.sigma);
-      material_->Update(on, Scaled(deps, m));
-      on.plastic = true;
-      const Mat4 de = material_->Tangent(ps), dep = material_->Tangent(on);
-      for (int r = 0; r < 4; ++r)
-        for (int k = 0; k < 4; ++k) c[g][r][k] = m * de[r][k] + (1 - m) * dep[r][k];
-    } else {
-      c[g] = material_->Tangent(ps);
+    Selected &p = sel[g];
+    cells_.KinematicsWith(xs, gs, g, due, alpha, p.deps, p.omega);
+    p.plastic = OwnLoading(i, p.deps);
+    p.m = 1;
+    if (!p.plastic && prm_.yield_inside) {
+      PointState start = state_[i];
+      start.plastic = false;
+      p.m = std::min(1.0, material_->YieldOnset(start, p.deps, p.omega));
     }
     // The assembled tangent is this one when the loading state and the elastic
     // fraction are the same (ScanTrial took both from the same increment).
-    differ = differ || plastic != state_[i].plastic || m != fraction_[i];
+    differ = differ || p.plastic != state_[i].plastic || p.m != fraction_[i];
   }
   return differ;
+}
+
+void Body::SelectedTangents(PetscInt e, const Selected sel[fe::kGauss], Mat4 c[fe::kGauss]) const
+{
+  for (int g = 0; g < fe::kGauss; ++g) {
+    const Selected &p = sel[g];
+    PointState ps = state_[fe::kGauss * e + g];
+    ps.plastic = p.plastic;
+    c[g] = p.m < 1 ? TransitionTangent(ps, OnsetState(ps, p.deps, p.omega, p.m), p.m) : material_->Tangent(ps);
+  }
 }
 
 bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState *to, Advanced &acc,
@@ -75,13 +65,13 @@ bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState 
   // rotation then gives zero strain and an exact rotation of the stress).
   const fe::QuadGeometry *geo = CellGeometry(e, xe);
   const fe::QuadGeometry *start = geo;
+  if (used && cells_.has_modes()) *used = cells_.assembled((int)e); // (unless the own one below)
   for (int k = 0; k < 2 * fe::kNodes; ++k) xs[k] = xe[k], xm[k] = xe[k] + due[k];
   if (midpoint) {
     for (int k = 0; k < 2 * fe::kNodes; ++k) xe[k] += 0.5 * due[k];
     geo = fe::ComputeGeometry(xe, mid) ? &mid : nullptr;
   }
   if (!geo) return false; // reported by the next assembly
-  if (used && cells_.has_modes()) *used = cells_.assembled((int)e);
   // QM6 with equilibrium iterations: the increment's modes are the cell's own
   // unknowns, corrected (alpha -= Kii^{-1} f_i, f_i on the moved cell) until
   // their force vanishes, so that the cell's nodal forces are those of a state
@@ -101,19 +91,19 @@ bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState 
     // assembled one, which ScanTrial took from the last iterate's increment).
     Mat4 c[fe::kGauss];
     Voigt s[fe::kGauss];
-    bool plastic[fe::kGauss], last_plastic[fe::kGauss];
-    double m[fe::kGauss], last_m[fe::kGauss];
+    Selected sel[fe::kGauss], last[fe::kGauss];
+    const auto same = [](const Selected &a, const Selected &b) {
+      return a.plastic == b.plastic && std::abs(a.m - b.m) <= kSelectTol;
+    };
     for (int g = 0; g < fe::kGauss; ++g) s[g] = state_[fe::kGauss * e + g].sigma;
     for (int pass = 0; pass < kSelectPasses; ++pass) {
-      const bool differ = CellOwnTangents(e, xs, *start, due, *cond, c, plastic, m);
+      const bool differ = SelectStates(e, xs, *start, due, *cond, sel);
       if (pass == 0 && !differ) break;
-      if (pass > 0 && std::equal(plastic, plastic + fe::kGauss, last_plastic) &&
-          std::equal(m, m + fe::kGauss, last_m, [](double a, double b) { return std::abs(a - b) <= kSelectTol; }))
-        break;
+      if (pass > 0 && std::equal(sel, sel + fe::kGauss, last, same)) break;
+      SelectedTangents(e, sel, c);
       if (!cells_.Condense(xs, *start, c, s, own, own_kii_inv)) break;
       cond = &own, kii_inv = &own_kii_inv;
-      std::copy(plastic, plastic + fe::kGauss, last_plastic);
-      std::copy(m, m + fe::kGauss, last_m);
+      std::copy(sel, sel + fe::kGauss, last);
     }
   }
   if (used && balance) *used = *cond;
@@ -229,12 +219,12 @@ PetscErrorCode Body::TrialForce(Vec du_local, double r, Vec f_local, double *mag
     Voigt s[fe::kGauss];
     fe::Condensation cond;
     GatherCell(*mesh_, e, du, due);
-    if (!AdvanceCell(e, due, r, to, acc, &cond)) { // inverted: the next assembly reports it
+    const bool advanced = AdvanceCell(e, due, r, to, acc, &cond);
+    if (cells_.has_modes()) last_trial_.conds[e] = cond;
+    if (!advanced) { // inverted: the next assembly reports it
       for (int g = 0; g < fe::kGauss; ++g) to[g] = state_[fe::kGauss * e + g];
-      if (cells_.has_modes()) last_trial_.conds[e] = cells_.assembled((int)e);
       continue;
     }
-    if (cells_.has_modes()) last_trial_.conds[e] = cond;
     // Forces of the new stresses on the moved corners (as the commit's next InternalForce).
     double xe[2 * fe::kNodes];
     fe::QuadGeometry geo;

@@ -115,15 +115,29 @@ PetscErrorCode Body::AssembleTangent(System &system)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-Mat4 Body::TransitionTangent(size_t i) const
+PointState Body::OnsetState(const PointState &elastic, const Voigt &deps, double omega, double m) const
 {
-  // m D_e + (1 - m) D_ep, D_ep at the onset state.
-  const Mat4 de = material_->Tangent(state_[i]), dep = material_->Tangent(onset_[i]);
-  const double m = fraction_[i];
+  PointState on = elastic;
+  RotateStress(ObjectiveScheme::Forward, m * omega, on.sigma);
+  material_->Update(on, Scaled(deps, m));
+  on.plastic = true;
+  return on;
+}
+
+Mat4 Body::TransitionTangent(const PointState &elastic, const PointState &onset, double m) const
+{
+  const Mat4 de = material_->Tangent(elastic), dep = material_->Tangent(onset);
   Mat4 c;
   for (int r = 0; r < 4; ++r)
     for (int k = 0; k < 4; ++k) c[r][k] = m * de[r][k] + (1 - m) * dep[r][k];
   return c;
+}
+
+bool Body::OwnLoading(size_t i, const Voigt &deps) const
+{
+  PointState start = state_[i];
+  start.plastic = false;
+  return material_->Loading(start, deps);
 }
 
 bool Body::ScanTransition(size_t i, const Voigt &deps, double omega, bool apply)
@@ -133,15 +147,7 @@ bool Body::ScanTransition(size_t i, const Voigt &deps, double omega, bool apply)
   if (!apply) return true;
   fraction_[i] = m;
   Stale(i);
-  if (m < 1) {
-    // The state at the onset on the linear elastic path (Update of an elastic
-    // point); its C_ep takes H' as a plastic point would next.
-    PointState on = state_[i];
-    RotateStress(ObjectiveScheme::Forward, m * omega, on.sigma);
-    material_->Update(on, Scaled(deps, m));
-    on.plastic = true;
-    onset_[i] = on;
-  }
+  if (m < 1) onset_[i] = OnsetState(state_[i], deps, omega, m); // (on the linear elastic path)
   return true;
 }
 
@@ -191,15 +197,14 @@ PetscErrorCode Body::ScanTrial(Vec du_local, bool apply, StepLimit &limit, Petsc
         const size_t i = fe::kGauss * e + g;
         const auto &[deps, omega] = trial_[i];
         PointState &ps = state_[i];
-        // Own tangents: the state AdvanceCell selects (SelectTangent), on the surface and loading.
-        PointState start = ps;
-        if (OwnTangents()) start.plastic = false;
-        const bool loading = material_->Loading(start, deps);
+        // Own tangents: the state AdvanceCell selects (OwnLoading).
+        const bool loading = OwnTangents() ? OwnLoading(i, deps) : material_->Loading(ps, deps);
         if (loading != ps.plastic) {
           ++local_switches;
           if (apply) ps.plastic = loading, Stale(i);
         }
-        start.plastic = OwnTangents() ? loading : ps.plastic; // (the onset of the selected state)
+        PointState start = ps;
+        if (OwnTangents()) start.plastic = loading; // (the onset of the selected state)
         const double r1 = yield_factor_[i] = material_->YieldOnset(start, deps, omega);
         if (!prm_.yield_inside) {
           yield.Offer(r1, Limiter::Yield, mesh_->cell_orig[e]);
@@ -246,7 +251,6 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
       for (PetscInt e = 0; e < mesh_->num_cells; ++e) cells_.SetCommitted((int)e, last_trial_.conds[e]);
   } else {
     std::vector<PointState> next(state_.size());
-    if (cells_.has_modes()) cells_.CommitAssembled(); // (a cell advanced below replaces its own)
     for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
       fe::ElemVec due;
       fe::Condensation used;
@@ -254,8 +258,7 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
       PointState *to = &next[fe::kGauss * e];
       if (!AdvanceCell(e, due, r, to, acc, &used))
         for (int g = 0; g < fe::kGauss; ++g) to[g] = state_[fe::kGauss * e + g];
-      else if (cells_.has_modes())
-        cells_.SetCommitted((int)e, used);
+      if (cells_.has_modes()) cells_.SetCommitted((int)e, used);
     }
     state_.swap(next);
   }

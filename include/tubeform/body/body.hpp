@@ -157,16 +157,26 @@ private:
   // increment itself (OwnTangents), not by the assembly, so that a cell's
   // forces are a function of its nodal increments (docs/theory.md, 5a).
   bool OwnTangents() const { return prm_.state_from_strain && cells_.has_modes() && material_->plastic_law(); }
-  // Point i's loading state for the selecting increment (deps, omega): plastic
-  // (on the surface and loading), or elastic with the fraction m < 1 of the
-  // step before the yield onset (yield_inside), or elastic (m = 1).
-  void SelectTangent(size_t i, const Voigt &deps, double omega, bool &plastic, double &m) const;
-  // The tangents (c) and loading states (plastic, m) that cell e's increment
-  // due selects with its modes of the condensation `cond`, on the start
-  // corners xs (geometry gs); true when they differ from the assembled ones.
-  bool CellOwnTangents(PetscInt e, const double xs[2 * fe::kNodes], const fe::QuadGeometry &gs, const fe::ElemVec &due,
-                       const fe::Condensation &cond, Mat4 c[fe::kGauss], bool plastic[fe::kGauss],
-                       double m[fe::kGauss]) const;
+  // Point i's loading state for its strain increment from the start state:
+  // on the yield surface and loading (the rule of ScanTrial and AdvanceCell
+  // with own tangents, whatever its tangent's flag).
+  bool OwnLoading(size_t i, const Voigt &deps) const;
+  // What a point's increment selects: plastic (on the surface and loading),
+  // or elastic with the fraction m < 1 of the step before the yield onset
+  // (yield_inside), or elastic (m = 1); its strain and spin increments.
+  struct Selected {
+    bool plastic = false;
+    double m = 1;
+    Voigt deps{};
+    double omega = 0;
+  };
+  // The states cell e's increment due selects with the modes of the
+  // condensation `cond`, on the start corners xs (geometry gs); true when
+  // they differ from the assembled ones.
+  bool SelectStates(PetscInt e, const double xs[2 * fe::kNodes], const fe::QuadGeometry &gs, const fe::ElemVec &due,
+                    const fe::Condensation &cond, Selected sel[fe::kGauss]) const;
+  // The tangents of those states.
+  void SelectedTangents(PetscInt e, const Selected sel[fe::kGauss], Mat4 c[fe::kGauss]) const;
   // The state point i reaches with strain and spin increments deps, omega;
   // adds its work (weight wdet) and drift into acc.
   PointState AdvancePoint(size_t i, const Voigt &deps, double omega, double r, double wdet, Advanced &acc) const;
@@ -182,7 +192,13 @@ private:
   mutable TrialStates last_trial_;
   void Stale(size_t point) { ke_stale_[point / fe::kGauss] = 1; }
   void StaleAll() { std::fill(ke_stale_.begin(), ke_stale_.end(), 1); }
-  Mat4 TransitionTangent(size_t i) const;
+  // The state where an elastic point meets the yield surface, at the fraction
+  // m of its linear elastic step (deps, omega); plastic: its C_ep takes H' as
+  // a plastic point would next.
+  PointState OnsetState(const PointState &elastic, const Voigt &deps, double omega, double m) const;
+  // m D_e + (1 - m) D_ep, D_ep at the onset state.
+  Mat4 TransitionTangent(const PointState &elastic, const PointState &onset, double m) const;
+  Mat4 TransitionTangent(size_t i) const { return TransitionTangent(state_[i], onset_[i], fraction_[i]); }
   // yield_inside, point i elastic: whether its elastic fraction min(1, r1) moved
   // by more than yield_tol from the assembled one; with `apply` it is taken
   // (and its onset state computed).

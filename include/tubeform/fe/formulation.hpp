@@ -66,10 +66,8 @@ public:
                        const Condensation &cond, ElemVec &f) const;
   const Condensation &assembled(int e) const { return condensation_[e]; }
   const ModeMatrix &assembled_kii_inv(int e) const { return kii_inv_[e]; }
-  // The condensation of the committed state's forces: cell e's (from the
-  // increment that reached it), or the assembled ones for every cell.
+  // The condensation of cell e's committed forces (from the increment that reached it).
   void SetCommitted(int e, const Condensation &cond) { committed_[e] = cond; }
-  void CommitAssembled() { committed_ = condensation_; }
 
   // qm6: the committed state's condensation of every cell (empty for other
   // elements). State a checkpoint keeps: the committed state's internal force uses it.
