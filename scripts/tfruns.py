@@ -43,7 +43,18 @@ def calculix_reference(name):
     rows = list(csv.DictReader(l for l in open(path) if not l.startswith("#")))
     col = {c: np.array([float(r[c]) for r in rows]) for c in ("stroke", "load", "c_over_t", "stage")}
     load = col["stage"] == 0
-    return [str(o) for o in opts], {c: x[load] for c, x in col.items()}, float(col["c_over_t"][-1]), float(v["stroke"])
+    return [str(o) for o in opts], {c: x[load] for c, x in col.items()}, sprung_back(path, col), float(v["stroke"])
+
+
+def sprung_back(path, col):
+    """C/t after springback of a CalculiX reference: its last row where its withdrawal finished ('finished': True
+    in the header), else the note's value from a coarser mesh that did withdraw ("sprung back on ...: C/t X"),
+    else nan. (A run whose withdrawal stopped ends on a loaded or part-withdrawn row: not springback.)"""
+    head = "".join(l for l in open(path) if l.startswith("#"))
+    if "'finished': True" in head and col["stage"][-1] == 1:
+        return float(col["c_over_t"][-1])
+    m = re.search(r"sprung back on [^:]*: C/t ([0-9.]+)", head)
+    return float(m.group(1)) if m else float("nan")
 
 
 class RunFailed(RuntimeError):

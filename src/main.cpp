@@ -39,6 +39,7 @@ static PetscErrorCode Companion(const tf::Options &opt, std::vector<tf::HistoryR
   tf::Options c = opt;
   PetscFunctionBeginUser;
   c.mesh_nt = std::max<PetscInt>(kCompanionMinNt, opt.mesh_nt / 2);
+  tf::ChooseElement(c); // -element auto: the companion's element follows its own wall
   c.mesh_ntheta = std::max<PetscInt>(4, 2 * (opt.mesh_ntheta / 4));
   c.increments = std::max<PetscInt>(1, opt.increments / 2);
   if (opt.unload_increments > 0) c.unload_increments = std::max<PetscInt>(1, opt.unload_increments / 2);

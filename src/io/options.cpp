@@ -11,7 +11,7 @@
 namespace tf {
 
 namespace {
-const char *const kElements[] = {"q4", "bbar", "qm6", "qm6bar"};
+const char *const kElements[] = {"q4", "bbar", "qm6", "qm6bar", "auto"};
 const char *const kMaterials[] = {"aluminum", "copper", "custom"};
 const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
 
@@ -94,12 +94,19 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
     PetscOptionsEList("-element",
                       "Element formulation: q4 (full integration), bbar (mean dilatation), qm6 (incompatible "
                       "modes: no shear locking in bending), qm6bar (qm6 with the mean dilatation: no volumetric "
-                      "locking in plastic flow either)",
-                      "tubeform", kElements, 4, kElements[choice], &choice, nullptr));
+                      "locking in plastic flow either), auto (the presets: qm6, or qm6bar from -element_bar_nt cells "
+                      "through the wall on)",
+                      "tubeform", kElements, 5, kElements[choice], &choice, nullptr));
   const fe::Formulation kForms[] = {fe::Formulation::Q4, fe::Formulation::BBar, fe::Formulation::QM6,
-                                    fe::Formulation::QM6Bar};
+                                    fe::Formulation::QM6Bar, fe::Formulation::QM6};
   opt.element = kForms[choice];
   opt.element_name = kElements[choice];
+  opt.element_auto = choice == 4;
+  PetscCall(
+    read.Int(PetscOptionsObject, "-element_bar_nt",
+             "With -element auto: qm6bar from this many cells through the wall on, qm6 below (docs/accuracy.md, "
+             "\"The element through the wall\")",
+             opt.element_bar_nt));
   TF_OPTIONS_END();
 
   TF_OPTIONS_BEGIN(comm, "tubeform: material");

@@ -29,6 +29,9 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
   if (opt.mesh_nt == 0)
     opt.mesh_nt =
       std::min<PetscInt>(1000, ElementsThrough(opt.tube_ro, opt.tube_t, opt.mesh_wall_strain, opt.mesh_nt_min));
+  PetscCheck(opt.element_bar_nt >= 1, comm, PETSC_ERR_USER_INPUT,
+             "-element_bar_nt %d: must be at least 1 (cells through the wall)", (int)opt.element_bar_nt);
+  ChooseElement(opt);
   PetscCheck(opt.mesh_ntheta == 0 || (opt.mesh_ntheta >= 2 && opt.mesh_ntheta <= 100000), comm, PETSC_ERR_USER_INPUT,
              "-mesh_ntheta %d: must be between 2 and 100000, or 0 (from -mesh_density)", (int)opt.mesh_ntheta);
   PetscCheck(opt.mesh_ntheta > 0 || (opt.mesh_density > 0 && opt.mesh_density <= 1000), comm, PETSC_ERR_USER_INPUT,

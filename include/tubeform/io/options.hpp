@@ -31,6 +31,8 @@ struct Options {
   std::string mesh_file;
   fe::Formulation element = fe::Formulation::BBar;
   std::string element_name = "bbar";
+  bool element_auto = false;   // -element auto: qm6 or qm6bar from the cells through the wall (ChooseElement)
+  PetscInt element_bar_nt = 5; // -element auto: qm6bar from this many cells through the wall on
   // Material
   MaterialParams material;
   // Incremental driver (METHOD.md sec. 4)
@@ -127,6 +129,21 @@ inline PetscInt ElementsAround(double ro, double t, double density)
 inline PetscInt ElementsThrough(double ro, double t, double strain, PetscInt least)
 {
   return std::max<PetscInt>(least, (PetscInt)std::ceil(t / (ro * strain) - 1e-9));
+}
+
+// -element auto: the element follows the wall like its cell count. With n
+// cells through a bending wall qm6 is stiff by about 1/n where the wall
+// yields through its thickness (the strain through a cell is linear, the
+// plastic flow's is not), qm6bar soft by about 1/n^2 where it bends
+// elastically (its mean dilatation drops the linear volumetric strain of a
+// bent cell); from `bar_nt` cells on the second is the smaller
+// (docs/accuracy.md, "The element through the wall"). A mesh file keeps qm6.
+inline void ChooseElement(Options &opt)
+{
+  if (!opt.element_auto) return;
+  const bool bar = opt.mesh_file.empty() && opt.mesh_nt >= opt.element_bar_nt;
+  opt.element = bar ? fe::Formulation::QM6Bar : fe::Formulation::QM6;
+  opt.element_name = bar ? "qm6bar" : "qm6";
 }
 
 } // namespace tf
