@@ -83,8 +83,8 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
 
   if (!quiet_) {
     if (opt.mesh_file.empty())
-      PetscCall(PetscPrintf(comm, "tubeform: mesh %d cells (-mesh_nt %d x -mesh_ntheta %d), %s elements\n", ncells,
-                            (int)opt.mesh_nt, (int)opt.mesh_ntheta, opt.element_name.c_str()));
+      PetscCall(PetscPrintf(comm, "tubeform: mesh %d cells (%s), %s elements\n", ncells,
+                            scene_->MeshLayout(opt).c_str(), opt.element_name.c_str()));
     else
       PetscCall(PetscPrintf(comm, "tubeform: mesh %d cells from %s, %s elements\n", ncells, opt.mesh_file.c_str(),
                             opt.element_name.c_str()));

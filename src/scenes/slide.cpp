@@ -23,6 +23,11 @@ public:
     mesh = GenerateRectangle(kWidth, kHeight, (int)opt.mesh_ntheta, (int)opt.mesh_nt);
     return "";
   }
+  std::string MeshLayout(const Options &opt) const override
+  {
+    return "-mesh_ntheta " + std::to_string(opt.mesh_ntheta) + " along x -mesh_nt " + std::to_string(opt.mesh_nt) +
+           " through the block";
+  }
   LoadPath Path(const Options &opt) const override
   {
     if (opt.slide_back > 0) return {3.0, opt.dynamics_time, {1.0, 2.0}};

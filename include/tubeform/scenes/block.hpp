@@ -19,6 +19,10 @@ public:
     mesh = GenerateRectangle(1.0, 1.0, (int)opt.mesh_nt, (int)opt.mesh_nt);
     return "";
   }
+  std::string MeshLayout(const Options &opt) const override
+  {
+    return "-mesh_nt " + std::to_string(opt.mesh_nt) + " x " + std::to_string(opt.mesh_nt) + " on the unit square";
+  }
   LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}}; }
   PetscErrorCode ExternalForce(Model &, double, Vec f) override { return VecZeroEntries(f); }
 

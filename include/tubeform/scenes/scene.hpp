@@ -48,6 +48,12 @@ public:
   // boundary sets it must carry.
   virtual std::vector<std::string> BoundarySets() const = 0;
   virtual std::string BuildMesh(const Options &opt, SerialMesh &mesh) const = 0;
+  // The structured mesh's counts as the run reports them (a tube's by default).
+  virtual std::string MeshLayout(const Options &opt) const
+  {
+    return "-mesh_nt " + std::to_string(opt.mesh_nt) + " through the wall x -mesh_ntheta " +
+           std::to_string(opt.mesh_ntheta) + " around";
+  }
   virtual LoadPath Path(const Options &opt) const = 0;
 
   // Once, before the first increment: the tools the scene presses against the
