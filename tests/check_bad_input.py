@@ -30,6 +30,8 @@ cases = [
     (["-mesh_nt", "0"], "-mesh_nt"),
     (["-mesh_nt", "0", "-mesh_wall_strain", "0.02", "-mesh_nt_min", "0"], "-mesh_nt_min"),
     (["-mesh_nt", "0", "-mesh_wall_strain", "2"], "-mesh_wall_strain"),
+    (["-element", "auto", "-element_bar_nt", "0"], "-element_bar_nt"),
+    (["-element", "qm7"], "-element"),
     (["-material_nu", "0.5"], "-material_nu"),
     (["-material_law", "bogus"], "-material_law"),
     (["-scene", "nonsense"], "-scene"),
@@ -83,7 +85,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 41 and len(selected) == 4, f"{len(cases)} cases on 1 rank (41), {len(selected)} on 2 (4)")
+k.check(len(cases) == 43 and len(selected) == 4, f"{len(cases)} cases on 1 rank (43), {len(selected)} on 2 (4)")
 
 
 def refused(np_, extra, needle):
