@@ -22,30 +22,22 @@ struct Gradients {
 // Taylor's correction: dP/dx = (det J0 / det J_g) J0^{-T} dP/dxi, so that
 // sum_g w det J_g dP/dx = det J0 J0^{-T} sum_g dP/dxi = 0 (dP/dxi is odd).
 // Gradients of the 6 shapes at Gauss point g of a cell with geometry `geo`.
-void GradientsAt(const double xe[2 * kNodes], const QuadGeometry &geo, int g, double out[kShapes][2])
+void GradientsAt(const QuadGeometry &geo, int g, double out[kShapes][2])
 {
-  double n[kNodes], dn[kNodes][2], j0[2][2] = {{0, 0}, {0, 0}};
-  ShapeFunctions(0, 0, n, dn);
-  for (int a = 0; a < kNodes; ++a)
-    for (int r = 0; r < 2; ++r)
-      for (int s = 0; s < 2; ++s) j0[r][s] += xe[2 * a + r] * dn[a][s];
-  // det J = a0 + a1 xi + a2 eta on a bilinear cell: det J0 is the mean of the (positive) Gauss values.
-  const double det0 = j0[0][0] * j0[1][1] - j0[0][1] * j0[1][0];
-  const double inv0[2][2] = {{j0[1][1] / det0, -j0[0][1] / det0}, {-j0[1][0] / det0, j0[0][0] / det0}}; // dxi_s/dx_r
   for (int a = 0; a < kNodes; ++a)
     for (int r = 0; r < 2; ++r) out[a][r] = geo.dndx[g][a][r];
-  const double scale = det0 / geo.wdet[g]; // unit weights: wdet = det J_g
+  const double scale = geo.det0 / geo.wdet[g]; // unit weights: wdet = det J_g
   // dP_1/dxi = (-2 xi, 0), dP_2/dxi = (0, -2 eta).
   for (int r = 0; r < 2; ++r) {
-    out[kNodes][r] = scale * (-2 * kXiGauss[g][0]) * inv0[0][r];
-    out[kNodes + 1][r] = scale * (-2 * kXiGauss[g][1]) * inv0[1][r];
+    out[kNodes][r] = scale * (-2 * kXiGauss[g][0]) * geo.inv0[0][r];
+    out[kNodes + 1][r] = scale * (-2 * kXiGauss[g][1]) * geo.inv0[1][r];
   }
 }
 
-void ComputeGradients(const double xe[2 * kNodes], const QuadGeometry &geo, Gradients &gr)
+void ComputeGradients(const QuadGeometry &geo, Gradients &gr)
 {
   for (int g = 0; g < kGauss; ++g) {
-    GradientsAt(xe, geo, g, gr.g[g]);
+    GradientsAt(geo, g, gr.g[g]);
     gr.wdet[g] = geo.wdet[g];
   }
   for (int s = 0; s < kShapes; ++s)
@@ -127,7 +119,7 @@ bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Ma
                   bool mean_dilatation)
 {
   Gradients gr;
-  ComputeGradients(xe, geo, gr);
+  ComputeGradients(geo, gr);
   double k[kAll][kAll] = {};
   for (int g = 0; g < kGauss; ++g) {
     double b[kVoigt][kAll];
@@ -183,7 +175,7 @@ void QM6Kinematics(const double xe[2 * kNodes], const QuadGeometry &geo, int g, 
                    const InternalVec &alpha, Voigt &deps, double &omega, bool mean_dilatation)
 {
   double gr[kShapes][2];
-  GradientsAt(xe, geo, g, gr);
+  GradientsAt(geo, g, gr);
   // L_ij = d(du_i)/dx_j summed over the nodal shape functions and the modes.
   double l[2][2] = {{0, 0}, {0, 0}};
   for (int s = 0; s < kShapes; ++s)
@@ -215,7 +207,7 @@ void QM6InternalForce(const double xe[2 * kNodes], const QuadGeometry &geo, cons
                       const Condensation &cond, ElemVec &f, bool mean_dilatation)
 {
   Gradients gr;
-  ComputeGradients(xe, geo, gr);
+  ComputeGradients(geo, gr);
   // f12 = sum_g w det J B12^T sigma_g: per shape, grad P . sigma on each component.
   double f12[kAll] = {};
   for (int g = 0; g < kGauss; ++g) {
@@ -240,7 +232,7 @@ void QM6ModeForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Vo
                   bool mean_dilatation)
 {
   Gradients gr;
-  ComputeGradients(xe, geo, gr);
+  ComputeGradients(geo, gr);
   fi = {};
   for (int g = 0; g < kGauss; ++g) {
     const double sxx = sigma[g][0], syy = sigma[g][1], sxy = sigma[g][3];

@@ -20,12 +20,33 @@ void ShapeFunctions(double xi, double eta, double n[kNodes], double dn[kNodes][2
   }
 }
 
+namespace {
+// The shape functions and their natural derivatives at the 2x2 Gauss points
+// (index g) and at the centre (index kGauss), evaluated once: every cell's
+// geometry needs them, many times an increment.
+struct ShapeTable {
+  double n[kGauss + 1][kNodes], dn[kGauss + 1][kNodes][2];
+  ShapeTable()
+  {
+    for (int g = 0; g < kGauss; ++g) ShapeFunctions(kXiGauss[g][0], kXiGauss[g][1], n[g], dn[g]);
+    ShapeFunctions(0, 0, n[kGauss], dn[kGauss]);
+  }
+};
+const ShapeTable &Shapes()
+{
+  static const ShapeTable table;
+  return table;
+}
+} // namespace
+
 void LumpedMass(const double xe[2 * kNodes], double rho, double m[kNodes])
 {
   for (int a = 0; a < kNodes; ++a) m[a] = 0;
+  const ShapeTable &shapes = Shapes();
   for (int g = 0; g < kGauss; ++g) {
-    double n[kNodes], dn[kNodes][2], j[2][2] = {{0, 0}, {0, 0}};
-    ShapeFunctions(kXiGauss[g][0], kXiGauss[g][1], n, dn);
+    const auto &n = shapes.n[g];
+    const auto &dn = shapes.dn[g];
+    double j[2][2] = {{0, 0}, {0, 0}};
     for (int a = 0; a < kNodes; ++a)
       for (int r = 0; r < 2; ++r)
         for (int s = 0; s < 2; ++s) j[r][s] += xe[2 * a + r] * dn[a][s];
@@ -36,11 +57,12 @@ void LumpedMass(const double xe[2 * kNodes], double rho, double m[kNodes])
 
 bool ComputeGeometry(const double xe[2 * kNodes], QuadGeometry &geo)
 {
+  const ShapeTable &shapes = Shapes();
   geo.area = 0;
   for (int a = 0; a < kNodes; ++a) geo.bvol[a][0] = geo.bvol[a][1] = 0;
   for (int g = 0; g < kGauss; ++g) {
-    double n[kNodes], dn[kNodes][2], j[2][2] = {{0, 0}, {0, 0}};
-    ShapeFunctions(kXiGauss[g][0], kXiGauss[g][1], n, dn);
+    const auto &dn = shapes.dn[g];
+    double j[2][2] = {{0, 0}, {0, 0}};
     for (int a = 0; a < kNodes; ++a)
       for (int r = 0; r < 2; ++r)
         for (int s = 0; s < 2; ++s) j[r][s] += xe[2 * a + r] * dn[a][s]; // J_rs = dx_r/dxi_s
@@ -56,6 +78,19 @@ bool ComputeGeometry(const double xe[2 * kNodes], QuadGeometry &geo)
   }
   for (int a = 0; a < kNodes; ++a)
     for (int r = 0; r < 2; ++r) geo.bvol[a][r] /= geo.area;
+  // The centre's Jacobian (QM6's modes): det J = a0 + a1 xi + a2 eta on a
+  // bilinear cell, so det J0 is the mean of the (positive) Gauss values.
+  {
+    const auto &dn = shapes.dn[kGauss];
+    double j0[2][2] = {{0, 0}, {0, 0}};
+    for (int a = 0; a < kNodes; ++a)
+      for (int r = 0; r < 2; ++r)
+        for (int s = 0; s < 2; ++s) j0[r][s] += xe[2 * a + r] * dn[a][s];
+    const double det0 = j0[0][0] * j0[1][1] - j0[0][1] * j0[1][0];
+    geo.det0 = det0;
+    geo.inv0[0][0] = j0[1][1] / det0, geo.inv0[0][1] = -j0[0][1] / det0;
+    geo.inv0[1][0] = -j0[1][0] / det0, geo.inv0[1][1] = j0[0][0] / det0;
+  }
   return true;
 }
 

@@ -12,8 +12,7 @@ LudwikHardening::LudwikHardening(double sy0, double k, double n)
 double LudwikHardening::YieldStress(double ep) const
 {
   if (ep <= 0) return unyielded_; // (never yielded: most points of a run)
-  if (ep != memo_ep_) memo_ep_ = ep, memo_sy_ = sy0_ + k_ * std::pow(ep, n_);
-  return memo_sy_;
+  return memo_.Get(ep, [this](double e) { return sy0_ + k_ * std::pow(e, n_); });
 }
 
 SwiftHardening::SwiftHardening(double sy0, double k, double n) : k_(k), n_(n), ep0_(std::pow(sy0 / k, 1.0 / n)) {}
@@ -21,8 +20,7 @@ SwiftHardening::SwiftHardening(double sy0, double k, double n) : k_(k), n_(n), e
 double SwiftHardening::YieldStress(double ep) const
 {
   const double e = std::max(ep, 0.0);
-  if (e != memo_ep_) memo_ep_ = e, memo_sy_ = k_ * std::pow(ep0_ + e, n_);
-  return memo_sy_;
+  return memo_.Get(e, [this](double x) { return k_ * std::pow(ep0_ + x, n_); });
 }
 
 double TableHardening::YieldStress(double ep) const

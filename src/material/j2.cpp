@@ -95,6 +95,10 @@ UpdateInfo J2Plasticity::Update(PointState &s, const Voigt &deps) const
 double J2Plasticity::YieldOnset(const PointState &s, const Voigt &deps, double omega) const
 {
   if (s.plastic) return kNever;
+  // On the surface (within kOnSurface) or past it: not an r1 event; a loading
+  // point there is switched to plastic by Loading, or marked at the commit.
+  const double sy = h_->YieldStress(s.ep);
+  if (VonMises(s.sigma) >= (1 - kOnSurface) * sy) return kNever;
   // Linear stress path sigma + r dsigma (elastic law, spin and Kirchhoff term);
   // 3/2 |dev(sigma + r dsigma)|^2 = sigma_y^2 is a quadratic in r.
   Voigt ds{};
@@ -109,11 +113,7 @@ double J2Plasticity::YieldOnset(const PointState &s, const Voigt &deps, double o
   const auto dot = [](const Voigt &x, const Voigt &y) {
     return x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + 2 * x[3] * y[3];
   };
-  const double sy = h_->YieldStress(s.ep);
   const double qa = 1.5 * dot(d1, d1), qb = 3 * dot(s0, d1), qc = 1.5 * dot(s0, s0) - sy * sy;
-  // On the surface (within kOnSurface) or past it: not an r1 event; a loading
-  // point there is switched to plastic by Loading, or marked at the commit.
-  if (VonMises(s.sigma) >= (1 - kOnSurface) * sy) return kNever;
   if (qa <= 0) return kNever;
   const double root = std::sqrt(qb * qb - 4 * qa * qc); // real since qc < 0 < qa
   // The positive root, in the form free of cancellation for either sign of qb.

@@ -33,6 +33,8 @@ struct QuadGeometry {
   double wdet[kGauss];            // quadrature weight times det J
   double bvol[kNodes][2];         // cell mean of dN_a/dx_j (B-bar volumetric row)
   double area;
+  double det0;       // det J at the cell centre (xi = eta = 0)
+  double inv0[2][2]; // J^{-1} at the centre, dxi_s/dx_r (QM6's corrected modes)
 };
 
 // Gauss point natural coordinates (+-1/sqrt 3) and the shape functions there.

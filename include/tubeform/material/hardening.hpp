@@ -2,12 +2,39 @@
 // equivalent plastic strain ep (METHOD.md section 1, Materials).
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace tf {
+
+// The flow stress at recently seen plastic strains. Each point's ep is asked
+// for several times an increment (scan, trial forces, commit), between the
+// other points' asks, and pow was 9 % of a default run's time. Direct-mapped
+// on the bits of ep: a hit returns the value the law computed for that very
+// ep, so the results are the law's own, bit for bit.
+class FlowMemo {
+public:
+  FlowMemo() { ep_.fill(std::numeric_limits<double>::quiet_NaN()); }
+  template <class Law>
+  double Get(double ep, const Law &law) const
+  {
+    std::uint64_t bits;
+    std::memcpy(&bits, &ep, sizeof bits);
+    const std::size_t slot = (bits * 0x9E3779B97F4A7C15ull) >> (64 - kSlotBits);
+    if (ep_[slot] != ep) ep_[slot] = ep, sy_[slot] = law(ep);
+    return sy_[slot];
+  }
+
+private:
+  // 4096 slots (64 kB): a default run's 2,080 points and their trial strains, few collisions.
+  static constexpr int kSlotBits = 12;
+  mutable std::array<double, std::size_t(1) << kSlotBits> ep_, sy_;
+};
 
 class Hardening {
 public:
@@ -27,9 +54,7 @@ public:
 
 private:
   double sy0_, k_, n_, unyielded_; // unyielded_: the stress at ep = 0
-  // The last ep and its stress: a point's checks of one increment ask for the
-  // same ep several times in a row, and pow was 9 % of a default run's time.
-  mutable double memo_ep_ = std::numeric_limits<double>::quiet_NaN(), memo_sy_ = 0;
+  FlowMemo memo_;
 };
 
 // sigma_y = K (ep0 + ep)^n with ep0 = (sy0 / K)^(1/n), so that sigma_y(0) = sy0.
@@ -40,7 +65,7 @@ public:
 
 private:
   double k_, n_, ep0_;
-  mutable double memo_ep_ = std::numeric_limits<double>::quiet_NaN(), memo_sy_ = 0; // as Ludwik's
+  FlowMemo memo_;
 };
 
 // Piecewise linear through (ep_i, sigma_i), ep_0 = 0, constant past the last point.
