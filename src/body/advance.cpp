@@ -148,7 +148,8 @@ PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double 
   PointState ps = state_[i];
   // Strang splitting: half the rotation, the constitutive increment in the
   // mid-rotated frame, the other half (forward scheme: all at once, first order).
-  RotateStress(prm_.kinematics, omega, ps.sigma, midpoint ? 0.5 : 1.0);
+  const StressRotation turn(prm_.kinematics, omega, midpoint ? 0.5 : 1.0);
+  turn.Apply(ps.sigma);
   // The internal work is taken in the frame of the constitutive increment: the
   // stress turned by the first half rotation and the updated one before the
   // second (midpoint); the forward scheme's start stress as it always was.
@@ -180,7 +181,7 @@ PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double 
     u = material_->Update(ps, deps);
   }
   const Voigt after = ps.sigma;
-  if (midpoint) RotateStress(prm_.kinematics, omega, ps.sigma, 0.5);
+  if (midpoint) turn.Apply(ps.sigma);
   // Points that reach the yield surface in this increment (the limiter and
   // those grouped with it), or pass it, are plastic from now on.
   const bool reached = !prm_.yield_inside && !prm_.state_from_strain && yf <= r * (1 + prm_.group_tol);

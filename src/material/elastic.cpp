@@ -53,19 +53,34 @@ UpdateInfo Elastic::Update(PointState &s, const Voigt &deps) const
   return {};
 }
 
-void RotateStress(ObjectiveScheme scheme, double omega, Voigt &sigma, double fraction)
+StressRotation::StressRotation(ObjectiveScheme scheme, double omega, double fraction) : scheme_(scheme)
 {
   if (scheme == ObjectiveScheme::Forward) {
-    JaumannUpdate({0, 0, 0, 0}, 0.0, fraction * omega, sigma);
+    omega_ = fraction * omega;
     return;
   }
   // Q = (I - W/2)^-1 (I + W/2) = [[c, s], [-s, c]], a rotation by phi = 2 atan(omega/2);
-  // a fraction of it turns by fraction * phi. sigma <- Q sigma Q^T.
-  const double phi = 2 * std::atan(0.5 * omega) * fraction, c = std::cos(phi), s = std::sin(phi);
-  const double xx = sigma[0], yy = sigma[1], xy = sigma[3];
+  // a fraction of it turns by fraction * phi.
+  const double phi = 2 * std::atan(0.5 * omega) * fraction;
+  c_ = std::cos(phi), s_ = std::sin(phi);
+}
+
+void StressRotation::Apply(Voigt &sigma) const
+{
+  if (scheme_ == ObjectiveScheme::Forward) {
+    JaumannUpdate({0, 0, 0, 0}, 0.0, omega_, sigma);
+    return;
+  }
+  // sigma <- Q sigma Q^T.
+  const double c = c_, s = s_, xx = sigma[0], yy = sigma[1], xy = sigma[3];
   sigma[0] = c * c * xx + 2 * c * s * xy + s * s * yy;
   sigma[1] = s * s * xx - 2 * c * s * xy + c * c * yy;
   sigma[3] = -c * s * xx + (c * c - s * s) * xy + c * s * yy;
+}
+
+void RotateStress(ObjectiveScheme scheme, double omega, Voigt &sigma, double fraction)
+{
+  StressRotation(scheme, omega, fraction).Apply(sigma);
 }
 
 Voigt Deviator(const Voigt &s)

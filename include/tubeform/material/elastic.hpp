@@ -92,6 +92,17 @@ void JaumannUpdate(const Voigt &dtau, double trace_deps, double omega, Voigt &si
 // constitutive increment makes the update second order).
 enum class ObjectiveScheme { Forward, Midpoint };
 void RotateStress(ObjectiveScheme scheme, double omega, Voigt &sigma, double fraction = 1.0);
+// The same turn prepared once (its angle's atan, sin and cos) for several
+// stresses: the two half turns of a midpoint update are one rotation.
+class StressRotation {
+public:
+  StressRotation(ObjectiveScheme scheme, double omega, double fraction = 1.0);
+  void Apply(Voigt &sigma) const;
+
+private:
+  ObjectiveScheme scheme_;
+  double omega_ = 0, c_ = 1, s_ = 0; // Forward: the spin turned; Midpoint: cos and sin of the angle
+};
 
 // Deviator {sxx, syy, szz, sxy} and the equivalent (von Mises) stress.
 Voigt Deviator(const Voigt &s);
