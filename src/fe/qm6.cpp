@@ -49,6 +49,8 @@ double Dilatation(const Gradients &gr, int g, int s, int c) { return (gr.mean[s]
 
 // Dof of component c of shape s among the 12: (u_x, u_y) node by node, then alpha[2 c + m].
 int Dof(int s, int c) { return s < kNodes ? 2 * s + c : kDofs + kModes * c + (s - kNodes); }
+// The component of each of the 12 dofs (its normal strain row without the mean dilatation).
+constexpr int kComponent12[kAll] = {0, 1, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1};
 
 // Strain-displacement matrix of the 12 dofs at Gauss point g (zz row zero; with
 // the mean dilatation, the rows xx, yy, zz carry the cell's mean volumetric strain).
@@ -125,7 +127,10 @@ bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Ma
     double b[kVoigt][kAll];
     StrainMatrix12(gr, g, b, mean_dilatation);
     // k += w det J  B12^T (C - Q) B12
-    AddBtCB(b, JaumannTangent(tangent[g], sigma[g], geometric), gr.wdet[g], k);
+    if (mean_dilatation)
+      AddBtCB(b, JaumannTangent(tangent[g], sigma[g], geometric), gr.wdet[g], k);
+    else
+      AddBtCBPlain(b, kComponent12, JaumannTangent(tangent[g], sigma[g], geometric), gr.wdet[g], k);
     if (!geometric) continue;
     // Initial-stress stiffness (grad P_s . sigma . grad P_t) I over nodes and modes alike.
     for (int s = 0; s < kShapes; ++s)

@@ -8,6 +8,8 @@ namespace {
 constexpr double kXiNode[kNodes][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 const double kG = 1.0 / std::sqrt(3.0);
 const double kXiGauss[kGauss][2] = {{-kG, -kG}, {kG, -kG}, {kG, kG}, {-kG, kG}};
+// The component of each dof (u_x, u_y node by node): its normal strain row.
+constexpr int kComponent8[kDofs] = {0, 1, 0, 1, 0, 1, 0, 1};
 } // namespace
 
 void ShapeFunctions(double xi, double eta, double n[kNodes], double dn[kNodes][2])
@@ -146,7 +148,10 @@ void ElementStiffness(const QuadGeometry &geo, Formulation f, const Mat4 tangent
     double b[kVoigt][kDofs];
     StrainMatrix(geo, g, f, b);
     // ke += w det J  B^T (C - Q) B
-    AddBtCB(b, JaumannTangent(tangent[g], sigma[g], geometric), geo.wdet[g], ke);
+    if (f == Formulation::BBar)
+      AddBtCB(b, JaumannTangent(tangent[g], sigma[g], geometric), geo.wdet[g], ke);
+    else
+      AddBtCBPlain(b, kComponent8, JaumannTangent(tangent[g], sigma[g], geometric), geo.wdet[g], ke);
     if (!geometric) continue;
     // Initial-stress stiffness: (grad N_a . sigma . grad N_b) on both components.
     for (int a = 0; a < kNodes; ++a)

@@ -83,6 +83,22 @@ void AddBtCB(const double (&b)[kVoigt][N], const Mat4 &c, double w, K &k)
     }
 }
 
+// AddBtCB for a plain strain matrix (no mean dilatation): column j strains
+// the row comp[j] (xx for an x dof, yy for a y dof) and the shear row xy,
+// nothing else. AddBtCB's sums without their zero terms, in its order: the
+// same values, at less than half the work of QM6's 12 columns.
+template <int N, class K>
+void AddBtCBPlain(const double (&b)[kVoigt][N], const int (&comp)[N], const Mat4 &c, double w, K &k)
+{
+  double cb[kVoigt][N];
+  for (int r = 0; r < kVoigt; ++r)
+    for (int j = 0; j < N; ++j) cb[r][j] = c[r][comp[j]] * b[comp[j]][j] + c[r][3] * b[3][j];
+  for (int i = 0; i < N; ++i) {
+    const int ri = comp[i];
+    for (int j = 0; j < N; ++j) k[i][j] += w * (b[ri][i] * cb[ri][j] + b[3][i] * cb[3][j]);
+  }
+}
+
 // Element tangent  K = sum_g w det J [ Bbar^T (C_g - Q(sigma_g)) Bbar + G^T S_g G ],
 // with C_g the tangent relating the Jaumann rate of Kirchhoff stress to d, and
 // the initial-stress part G^T S G = (grad N_a . sigma . grad N_b) I.
