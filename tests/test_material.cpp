@@ -165,6 +165,23 @@ int main()
     CHECK_NEAR(SwiftHardening(165.3, 500.0, 0.2).YieldStress(ep), Swift(165.3, 500.0, 0.2)(ep), kRoundOff * 165.3);
     CHECK_NEAR(TableHardening({0, 0.01, 0.05}, {165, 200, 240}).YieldStress(ep), Table(ep), kRoundOff * 165);
   }
+  {
+    // The flow stress memo (FlowMemo): one law asked for more strains than it
+    // has slots, each several times in a scattered order, answers each exactly
+    // as the formula does (a slot taken by another strain must not answer).
+    const LudwikHardening l(165.3, 673.5, 0.927);
+    const SwiftHardening s(165.3, 500.0, 0.2);
+    std::vector<double> eps;
+    for (int i = 1; i <= 20000; ++i) eps.push_back(1e-6 * i * (1 + 1e-3 * (i % 7)));
+    int wrong = 0;
+    for (int pass = 0; pass < 3; ++pass)
+      for (size_t k = 0; k < eps.size(); ++k) {
+        const double ep = eps[(k * 7919 + pass * 104729) % eps.size()];
+        wrong += l.YieldStress(ep) != 165.3 + 673.5 * std::pow(ep, 0.927);
+        wrong += s.YieldStress(ep) != Swift(165.3, 500.0, 0.2)(ep);
+      }
+    CHECK(wrong == 0);
+  }
   CHECK_NEAR(SwiftHardening(165.3, 500.0, 0.2).YieldStress(0), 165.3, kRoundOff * 165.3);
   const TableHardening t({0, 0.01, 0.05}, {165, 200, 240});
   CHECK_NEAR(t.YieldStress(0.005), 182.5, kRoundOff * 182.5);
