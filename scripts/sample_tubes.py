@@ -1,0 +1,127 @@
+#!/usr/bin/python3
+"""A robustness sample of a preset on tubes nobody tuned it for: random tubes
+(a fixed seed) and four fixed ones, one rank, one run at a time, each run's
+answer, estimate, warnings and self-checks in one table.
+
+    /usr/bin/python3 scripts/sample_tubes.py [--preset default] [--seed 2026] [--count 16] [--time-limit 240]
+                                             [--cases r01,a] [--table]
+
+Each random tube is drawn uniformly in R/t 5-60 (Ro 12-25 mm), E 70-210 GPa,
+nu 0.28-0.36, E/sigma_y 150-1500, Ludwik K 0.5-4 sigma_y, n 0.1-1, mu 0-0.4
+and a stroke from 2 mm to 0.3 Ro. The fixed ones: the mild steel of issue 22
+(20/2, mu 0.1 and 0.4), a thin aluminum-like tube (25/0.45, mu 0.2) and a
+thick, strongly hardening wall (15/2.8, mu 0.35). Runs are cached in
+results/sample/<preset>/ (delete a case's .log to run it again); the table is
+written to results/sample/<preset>/table.md and printed. Wall times are of a
+shared machine: compare increments and factorizations.
+"""
+import argparse
+import os
+import random
+import re
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import tfruns  # noqa: E402
+
+FIXED = {  # name: E, nu, sigma_y, K, n, Ro, t, mu, stroke
+    "a": (210000, 0.30, 350, 500, 0.30, 20, 2.0, 0.10, 5.0),
+    "b": (210000, 0.30, 350, 500, 0.30, 20, 2.0, 0.40, 5.0),
+    "c": (70000, 0.33, 100, 300, 0.40, 25, 0.45, 0.20, 5.0),
+    "d": (200000, 0.30, 250, 1000, 0.50, 15, 2.8, 0.35, 3.5),
+}
+KEYS = ("E", "nu", "sy", "K", "n", "ro", "t", "mu", "stroke")
+
+
+def draw(seed, count):
+    """The random tubes, drawn in a fixed order per case (R/t, Ro, E, nu, E/sy, K/sy, n, mu, stroke)."""
+    rng = random.Random(seed)
+    cases = {}
+    for i in range(count):
+        rt, ro = rng.uniform(5, 60), rng.uniform(12, 25)
+        e, nu, esy, kf, n, mu = (rng.uniform(70000, 210000), rng.uniform(0.28, 0.36), rng.uniform(150, 1500),
+                                 rng.uniform(0.5, 4), rng.uniform(0.1, 1), rng.uniform(0, 0.4))
+        stroke = rng.uniform(2, 0.3 * ro)
+        cases[f"r{i + 1:02d}"] = dict(E=e, nu=nu, sy=e / esy, K=kf * e / esy, n=n, ro=ro, t=ro / rt, mu=mu,
+                                      stroke=stroke)
+    cases.update({k: dict(zip(KEYS, v)) for k, v in FIXED.items()})
+    return cases
+
+
+def options(c, preset, out, time_limit):
+    o = ["-options_file", "options/squaring.opts", "-options_file", f"options/preset-{preset}.opts", "-material",
+         "custom", "-material_e", c["E"], "-material_nu", c["nu"], "-material_sy", c["sy"], "-material_k", c["K"],
+         "-material_n", c["n"], "-tube_ro", c["ro"], "-tube_t", c["t"], "-friction_mu", c["mu"], "-stroke",
+         c["stroke"], "-time_limit", time_limit, "-output", out]
+    return [f"{x:.6g}" if isinstance(x, float) else str(x) for x in o]
+
+
+def parse(log):
+    """What the run's last lines say (tubeform's answer, estimate, self-checks)."""
+    def num(pattern):
+        m = re.search(pattern, log)
+        return m.group(1) if m else ""
+    errors = [l for l in log.splitlines() if l.startswith("tubeform: error")]
+    return {
+        "cells": num(r"mesh (\d+ cells \([^)]*\), \w+)"), "increments": num(r"done, (\d+) increments"),
+        "factorizations": num(r"increments, (\d+) factorizations"),
+        "load": num(r"load at the end of loading \(U = [^)]*\) (\S+) N/mm"),
+        "ct": num(r"C/t (\S+), C1/C2 \S+ loaded"), "ct_back": num(r"after springback C/t (\S+),"),
+        "est_load": num(r"estimated error.*?: load (\S+) %"), "est_ct": num(r"estimated error.*C/t (\S+) \(targets"),
+        "warns": "yes" if "estimated error passes" in log else "no",
+        "energy": num(r"energy balance within (\S+) %"), "internal": num(r"internal work within (\S+) %"),
+        "past": num(r"compromises: (\d+) steps past"), "unsettled": num(r"(\d+) unsettled"),
+        "inconsistent": num(r"(\d+) with inconsistent"), "error": errors[0][len("tubeform: error: "):] if errors else "",
+    }
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--preset", default="default", choices=("fast", "default", "accurate"))
+    ap.add_argument("--seed", type=int, default=2026)
+    ap.add_argument("--count", type=int, default=16)
+    ap.add_argument("--time-limit", type=float, default=240, help="each run's -time_limit (s)")
+    ap.add_argument("--cases", default="", help="only these (comma-separated names: r01, ..., a, b, c, d)")
+    ap.add_argument("--table", action="store_true", help="tabulate what is cached, run nothing")
+    a = ap.parse_args()
+    cases = draw(a.seed, a.count)
+    if a.cases:
+        unknown = set(a.cases.split(",")) - set(cases)
+        if unknown:
+            sys.exit(f"scripts/sample_tubes.py: --cases: unknown {sorted(unknown)}; known: {', '.join(cases)}")
+        cases = {k: v for k, v in cases.items() if k in a.cases.split(",")}
+    out = os.path.join(tfruns.root, "results", "sample", a.preset)
+    os.makedirs(out, exist_ok=True)
+    head = ("| case | R/t | E/sy | n | mu | stroke | exit | wall s | increments | factorizations | load N/mm | C/t "
+            "loaded | after springback | estimate: load %, C/t | warns | energy % | internal work % | unsettled | "
+            "inconsistent | past an event |")
+    lines = [head, "|" + "---|" * head.count(" | ")]
+    for name, c in cases.items():
+        log_path = os.path.join(out, f"{name}.log")
+        if not a.table and not os.path.exists(log_path):
+            cmd = ["mpirun", "-n", "1", tfruns.EXE] + options(c, a.preset, os.path.join(out, f"{name}.h5"),
+                                                              a.time_limit)
+            t0 = time.time()
+            p = subprocess.run(cmd, cwd=tfruns.root, env=tfruns.env, capture_output=True, text=True)
+            with open(log_path, "w") as f:
+                f.write(" ".join(cmd) + "\n" + p.stdout + p.stderr + f"\nexit {p.returncode} wall {time.time() - t0:.1f}\n")
+        if not os.path.exists(log_path):
+            continue
+        log = open(log_path).read()
+        r = parse(log)
+        end = re.search(r"exit (-?\d+) wall (\S+)", log)
+        lines.append(f"| {name} | {c['ro'] / c['t']:.1f} | {c['E'] / c['sy']:.0f} | {c['n']:.2f} | {c['mu']:.2f} | "
+                     f"{c['stroke']:.2f} | {end.group(1)} | {end.group(2)} | {r['increments']} | "
+                     f"{r['factorizations']} | {r['load']} | {r['ct']} | {r['ct_back']} | {r['est_load']}, "
+                     f"{r['est_ct']} | {r['warns']} | {r['energy']} | {r['internal']} | {r['unsettled']} | "
+                     f"{r['inconsistent']} | {r['past']}{' ' + r['error'] if r['error'] else ''} |")
+        print(lines[-1], flush=True)
+    with open(os.path.join(out, "table.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines[:2]))
+
+
+if __name__ == "__main__":
+    main()
