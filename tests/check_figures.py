@@ -24,7 +24,7 @@ for d in (out, res):
     shutil.rmtree(d, ignore_errors=True)  # from nothing, as on a clean checkout
 p = subprocess.run(["/usr/bin/python3", f"{src}/scripts/figures", "--quick", "--out", out, "--results", res,
                     "--exe", tf],
-                   capture_output=True, text=True, timeout=900,
+                   capture_output=True, text=True, timeout=1100,
                    env=dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1"))
 print(p.stdout[-1500:], p.stderr[-1500:])
 k.check(p.returncode == 0 and "15 figures" in p.stdout, f"scripts/figures exit {p.returncode}")
