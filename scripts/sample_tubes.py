@@ -4,7 +4,7 @@
 answer, estimate, warnings and self-checks in one table.
 
     /usr/bin/python3 scripts/sample_tubes.py [--preset default] [--seed 2026] [--count 16] [--time-limit 240]
-                                             [--cases r01,a] [--table]
+                                             [--cases r01,a] [--table] [--against default]
 
 Each random tube is drawn uniformly in R/t 5-60 (Ro 12-25 mm), E 70-210 GPa,
 nu 0.28-0.36, E/sigma_y 150-1500, Ludwik K 0.5-4 sigma_y, n 0.1-1, mu 0-0.4
@@ -14,6 +14,13 @@ thick, strongly hardening wall (15/2.8, mu 0.35). Runs are cached in
 results/sample/<preset>/ (delete a case's .log to run it again); the table is
 written to results/sample/<preset>/table.md and printed. Wall times are of a
 shared machine: compare increments and factorizations.
+
+--against PRESET compares the cached runs with those of a finer preset on the
+same tubes (a proxy reference, not an independent one: twice the resolution,
+the same method): the load at the end of loading and C/t loaded and after
+springback, each difference beside this preset's estimate; an estimate
+smaller than its difference is marked, since the finer run's own error would
+have to cancel it for the estimate to bound the true error.
 """
 import argparse
 import os
@@ -85,6 +92,8 @@ def main():
     ap.add_argument("--time-limit", type=float, default=240, help="each run's -time_limit (s)")
     ap.add_argument("--cases", default="", help="only these (comma-separated names: r01, ..., a, b, c, d)")
     ap.add_argument("--table", action="store_true", help="tabulate what is cached, run nothing")
+    ap.add_argument("--against", choices=("fast", "default", "accurate"),
+                    help="compare the cached runs with a finer preset's cached runs (run nothing)")
     a = ap.parse_args()
     cases = draw(a.seed, a.count)
     if a.cases:
@@ -93,11 +102,13 @@ def main():
             sys.exit(f"scripts/sample_tubes.py: --cases: unknown {sorted(unknown)}; known: {', '.join(cases)}")
         cases = {k: v for k, v in cases.items() if k in a.cases.split(",")}
     out = os.path.join(tfruns.root, "results", "sample", a.preset)
+    if a.against:
+        return compare(cases, out, os.path.join(tfruns.root, "results", "sample", a.against), a.preset, a.against)
     os.makedirs(out, exist_ok=True)
     head = ("| case | R/t | E/sy | n | mu | stroke | exit | wall s | increments | factorizations | load N/mm | C/t "
             "loaded | after springback | estimate: load %, C/t | warns | energy % | internal work % | unsettled | "
             "inconsistent | past an event |")
-    lines = [head, "|" + "---|" * head.count(" | ")]
+    lines = [head, "|" + "---|" * (head.count(" | ") + 1)]
     for name, c in cases.items():
         log_path = os.path.join(out, f"{name}.log")
         if not a.table and not os.path.exists(log_path):
@@ -121,6 +132,34 @@ def main():
     with open(os.path.join(out, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines[:2]))
+
+
+def compare(cases, out, ref_dir, preset, against):
+    """The table of --against: this preset's answer against the finer preset's, beside this preset's estimate."""
+    head = (f"| case | R/t | mu | load: {preset} N/mm | {against} | difference % | estimate % | C/t loaded: "
+            f"difference | after springback | estimate | estimates at least the differences |")
+    lines = [head, "|" + "---|" * (head.count(" | ") + 1)]
+    counts = {"cases": 0, "load": 0, "ct": 0}
+    for name, c in cases.items():
+        paths = [os.path.join(d, f"{name}.log") for d in (out, ref_dir)]
+        if not all(os.path.exists(p) for p in paths):
+            continue
+        r, f = (parse(open(p).read()) for p in paths)
+        if not all(x[k] for x in (r, f) for k in ("load", "ct", "ct_back", "est_load", "est_ct")):
+            lines.append(f"| {name} | {c['ro'] / c['t']:.1f} | {c['mu']:.2f} | not finished on both |||||||")
+            continue
+        dp = abs(float(r["load"]) / float(f["load"]) - 1) * 100
+        dc, db = abs(float(r["ct"]) - float(f["ct"])), abs(float(r["ct_back"]) - float(f["ct_back"]))
+        ok_p, ok_c = float(r["est_load"]) >= dp, float(r["est_ct"]) >= max(dc, db)
+        counts["cases"] += 1
+        counts["load"] += ok_p
+        counts["ct"] += ok_c
+        lines.append(f"| {name} | {c['ro'] / c['t']:.1f} | {c['mu']:.2f} | {r['load']} | {f['load']} | {dp:.2f} | "
+                     f"{r['est_load']} | {dc:.4f} | {db:.4f} | {r['est_ct']} | "
+                     f"{'yes' if ok_p and ok_c else 'load ' + ('yes' if ok_p else 'NO') + ', C/t ' + ('yes' if ok_c else 'NO')} |")
+    print("\n".join(lines))
+    print(f"estimates at least the differences: load on {counts['load']} of {counts['cases']} tubes, "
+          f"C/t on {counts['ct']} of {counts['cases']}")
 
 
 if __name__ == "__main__":
