@@ -177,11 +177,12 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
     worst_internal_ = std::max(worst_internal_, std::abs(row.internal_error));
     if (!warned_ && std::abs(row.energy_error) > kEnergyWarning) {
       warned_ = true;
-      PetscCall(PetscPrintf(comm_,
-                            "tubeform: warning: energy balance error %.1f %% at increment %d (lambda %.4f): the "
-                            "solution is drifting from equilibrium; try smaller -rmin_deps / -increments, or see "
-                            "docs/theory.md\n",
-                            100 * row.energy_error, (int)inc, lambda));
+      PetscCall(PetscPrintf(
+        comm_,
+        "tubeform: warning: energy balance error %.1f %% at increment %d (lambda %.4f): the "
+        "solution is drifting from equilibrium; try shorter steps (more -increments, a smaller -rmin_deps), or see "
+        "docs/theory.md\n",
+        100 * row.energy_error, (int)inc, lambda));
     }
     diverged_ = std::abs(row.energy_error) > opt_.max_energy_error;
   }

@@ -122,9 +122,11 @@ PetscErrorCode Problem::StopAfter(Stop &stop, bool &wrote_last)
                       (int)at_.inc, nonfinite_.c_str(), at.c_str(), Where().c_str());
   } else if (diverged_) {
     stop.code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
-    stop.why = Format("the energy balance error %.1f %% passed -max_energy_error %g: the solution has left "
-                      "equilibrium (smaller -increments / -rmin_deps; docs/accuracy.md, \"Extremes\") (%s)",
-                      100 * history_.rows().back().energy_error, opt_.max_energy_error, Where().c_str());
+    stop.why =
+      Format("the energy balance error %.1f %% passed -max_energy_error %g: the solution has left "
+             "equilibrium (shorter steps: more -increments, a smaller -rmin_deps; docs/accuracy.md, \"Extremes\") "
+             "(%s)",
+             100 * history_.rows().back().energy_error, opt_.max_energy_error, Where().c_str());
   } else if (unsettled_run_ >= opt_.friction_max_unsettled) {
     stop.code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
     const bool balance = opt_.equilibrium_tol > 0; // the equilibrium iterations carry the friction's
