@@ -42,18 +42,26 @@ FIXED = {  # name: E, nu, sigma_y, K, n, Ro, t, mu, stroke
 KEYS = ("E", "nu", "sy", "K", "n", "ro", "t", "mu", "stroke")
 
 
-def draw(seed, count):
-    """The random tubes, drawn in a fixed order per case (R/t, Ro, E, nu, E/sy, K/sy, n, mu, stroke)."""
+# Ranges of the random tubes: (R/t, mu, shortest stroke mm, longest stroke / Ro); --wide takes issue 22's own
+# sample's (R/t from 4, mu to 0.5, strokes from 1 mm to 0.35 Ro, 1 or 2 ranks).
+RANGES = {False: ((5, 60), (0, 0.4), 2, 0.3), True: ((4, 60), (0, 0.5), 1, 0.35)}
+
+
+def draw(seed, count, wide=False):
+    """The random tubes, drawn in a fixed order per case (R/t, Ro, E, nu, E/sy, K/sy, n, mu, stroke; with wide, the
+    ranks), and the fixed ones (not with wide)."""
     rng = random.Random(seed)
+    (rt_lo, rt_hi), (mu_lo, mu_hi), s_lo, s_hi = RANGES[wide]
     cases = {}
     for i in range(count):
-        rt, ro = rng.uniform(5, 60), rng.uniform(12, 25)
+        rt, ro = rng.uniform(rt_lo, rt_hi), rng.uniform(12, 25)
         e, nu, esy, kf, n, mu = (rng.uniform(70000, 210000), rng.uniform(0.28, 0.36), rng.uniform(150, 1500),
-                                 rng.uniform(0.5, 4), rng.uniform(0.1, 1), rng.uniform(0, 0.4))
-        stroke = rng.uniform(2, 0.3 * ro)
+                                 rng.uniform(0.5, 4), rng.uniform(0.1, 1), rng.uniform(mu_lo, mu_hi))
+        stroke = rng.uniform(s_lo, s_hi * ro)
         cases[f"r{i + 1:02d}"] = dict(E=e, nu=nu, sy=e / esy, K=kf * e / esy, n=n, ro=ro, t=ro / rt, mu=mu,
-                                      stroke=stroke)
-    cases.update({k: dict(zip(KEYS, v)) for k, v in FIXED.items()})
+                                      stroke=stroke, np=rng.choice((1, 2)) if wide else 1)
+    if not wide:
+        cases.update({k: dict(zip(KEYS, v), np=1) for k, v in FIXED.items()})
     return cases
 
 
@@ -80,7 +88,8 @@ def parse(log):
         "warns": "yes" if "estimated error passes" in log else "no",
         "energy": num(r"energy balance within (\S+) %"), "internal": num(r"internal work within (\S+) %"),
         "past": num(r"compromises: (\d+) steps past"), "unsettled": num(r"(\d+) unsettled"),
-        "inconsistent": num(r"(\d+) with inconsistent"), "error": errors[0][len("tubeform: error: "):] if errors else "",
+        "inconsistent": num(r"(\d+) with inconsistent"),
+        "error": errors[0][len("tubeform: error: "):] if errors else "",
     }
 
 
@@ -92,16 +101,18 @@ def main():
     ap.add_argument("--time-limit", type=float, default=240, help="each run's -time_limit (s)")
     ap.add_argument("--cases", default="", help="only these (comma-separated names: r01, ..., a, b, c, d)")
     ap.add_argument("--table", action="store_true", help="tabulate what is cached, run nothing")
+    ap.add_argument("--wide", action="store_true", help="issue 22's own sample ranges (R/t 4-60, mu 0-0.5, strokes "
+                    "1 mm-0.35 Ro, 1 or 2 ranks), cached apart (results/sample/<preset>_wide_<seed>/)")
     ap.add_argument("--against", choices=("fast", "default", "accurate"),
                     help="compare the cached runs with a finer preset's cached runs (run nothing)")
     a = ap.parse_args()
-    cases = draw(a.seed, a.count)
+    cases = draw(a.seed, a.count, a.wide)
     if a.cases:
         unknown = set(a.cases.split(",")) - set(cases)
         if unknown:
             sys.exit(f"scripts/sample_tubes.py: --cases: unknown {sorted(unknown)}; known: {', '.join(cases)}")
         cases = {k: v for k, v in cases.items() if k in a.cases.split(",")}
-    out = os.path.join(tfruns.root, "results", "sample", a.preset)
+    out = os.path.join(tfruns.root, "results", "sample", a.preset + (f"_wide_{a.seed}" if a.wide else ""))
     if a.against:
         return compare(cases, out, os.path.join(tfruns.root, "results", "sample", a.against), a.preset, a.against)
     os.makedirs(out, exist_ok=True)
@@ -112,18 +123,20 @@ def main():
     for name, c in cases.items():
         log_path = os.path.join(out, f"{name}.log")
         if not a.table and not os.path.exists(log_path):
-            cmd = ["mpirun", "-n", "1", tfruns.EXE] + options(c, a.preset, os.path.join(out, f"{name}.h5"),
+            cmd = ["mpirun", "-n", str(c["np"]), tfruns.EXE] + options(c, a.preset, os.path.join(out, f"{name}.h5"),
                                                               a.time_limit)
             t0 = time.time()
             p = subprocess.run(cmd, cwd=tfruns.root, env=tfruns.env, capture_output=True, text=True)
             with open(log_path, "w") as f:
-                f.write(" ".join(cmd) + "\n" + p.stdout + p.stderr + f"\nexit {p.returncode} wall {time.time() - t0:.1f}\n")
+                f.write(" ".join(cmd) + "\n" + p.stdout + p.stderr +
+                        f"\nexit {p.returncode} wall {time.time() - t0:.1f}\n")
         if not os.path.exists(log_path):
             continue
         log = open(log_path).read()
         r = parse(log)
         end = re.search(r"exit (-?\d+) wall (\S+)", log)
-        lines.append(f"| {name} | {c['ro'] / c['t']:.1f} | {c['E'] / c['sy']:.0f} | {c['n']:.2f} | {c['mu']:.2f} | "
+        label = name + (" (2 ranks)" if c["np"] == 2 else "")
+        lines.append(f"| {label} | {c['ro'] / c['t']:.1f} | {c['E'] / c['sy']:.0f} | {c['n']:.2f} | {c['mu']:.2f} | "
                      f"{c['stroke']:.2f} | {end.group(1)} | {end.group(2)} | {r['increments']} | "
                      f"{r['factorizations']} | {r['load']} | {r['ct']} | {r['ct_back']} | {r['est_load']}, "
                      f"{r['est_ct']} | {r['warns']} | {r['energy']} | {r['internal']} | {r['unsettled']} | "
@@ -132,6 +145,13 @@ def main():
     with open(os.path.join(out, "table.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines[:2]))
+
+
+def verdict(ok_load, ok_ct):
+    """'yes' when both estimates are at least their differences, else which one is not."""
+    if ok_load and ok_ct:
+        return "yes"
+    return f"load {'yes' if ok_load else 'NO'}, C/t {'yes' if ok_ct else 'NO'}"
 
 
 def compare(cases, out, ref_dir, preset, against):
@@ -156,7 +176,7 @@ def compare(cases, out, ref_dir, preset, against):
         counts["ct"] += ok_c
         lines.append(f"| {name} | {c['ro'] / c['t']:.1f} | {c['mu']:.2f} | {r['load']} | {f['load']} | {dp:.2f} | "
                      f"{r['est_load']} | {dc:.4f} | {db:.4f} | {r['est_ct']} | "
-                     f"{'yes' if ok_p and ok_c else 'load ' + ('yes' if ok_p else 'NO') + ', C/t ' + ('yes' if ok_c else 'NO')} |")
+                     f"{verdict(ok_p, ok_c)} |")
     print("\n".join(lines))
     print(f"estimates at least the differences: load on {counts['load']} of {counts['cases']} tubes, "
           f"C/t on {counts['ct']} of {counts['cases']}")
