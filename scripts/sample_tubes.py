@@ -112,9 +112,12 @@ def main():
         if unknown:
             sys.exit(f"scripts/sample_tubes.py: --cases: unknown {sorted(unknown)}; known: {', '.join(cases)}")
         cases = {k: v for k, v in cases.items() if k in a.cases.split(",")}
-    out = os.path.join(tfruns.root, "results", "sample", a.preset + (f"_wide_{a.seed}" if a.wide else ""))
+    def cache(preset):
+        return os.path.join(tfruns.root, "results", "sample", preset + (f"_wide_{a.seed}" if a.wide else ""))
+
+    out = cache(a.preset)
     if a.against:
-        return compare(cases, out, os.path.join(tfruns.root, "results", "sample", a.against), a.preset, a.against)
+        return compare(cases, out, cache(a.against), a.preset, a.against)
     os.makedirs(out, exist_ok=True)
     head = ("| case | R/t | E/sy | n | mu | stroke | exit | wall s | increments | factorizations | load N/mm | C/t "
             "loaded | after springback | estimate: load %, C/t | warns | energy % | internal work % | unsettled | "
