@@ -2,8 +2,10 @@
 import glob
 import os
 import resource
+import shutil
 import subprocess
 import sys
+import tempfile
 
 import h5py
 import numpy as np
@@ -33,7 +35,15 @@ def run(tf, mpirun, np_, opts, check=True, timeout=300, report_hang=False):
     # One rank runs as an MPI singleton: the same code path, without mpirun's
     # ~2 s wind-down after a non-zero exit.
     cmd = ([mpirun, "-n", str(np_)] if np_ > 1 else []) + [tf] + [str(o) for o in opts]
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=sys.argv[3])
+    # Each run its own Open MPI session directory below the test's: runs a check
+    # starts at once (a thread pool) race in a shared one ("mkdir ... File exists",
+    # ORTE_ERROR_LOG session_dir.c: a singleton of verification_dynamics failed so).
+    env, session = dict(os.environ), None
+    if env.get("OMPI_MCA_orte_tmpdir_base"):
+        os.makedirs(env["OMPI_MCA_orte_tmpdir_base"], exist_ok=True)
+        session = tempfile.mkdtemp(dir=env["OMPI_MCA_orte_tmpdir_base"])
+        env["OMPI_MCA_orte_tmpdir_base"] = session
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=sys.argv[3], env=env)
     timed_out = False
     try:
         stdout, stderr = proc.communicate(timeout=timeout)
@@ -47,6 +57,8 @@ def run(tf, mpirun, np_, opts, check=True, timeout=300, report_hang=False):
         except subprocess.TimeoutExpired:
             proc.kill()
             stdout, stderr = proc.communicate()
+    if session:
+        shutil.rmtree(session, ignore_errors=True)
     p = subprocess.CompletedProcess(cmd, proc.returncode, stdout, stderr)
     p.timed_out = timed_out  # crashed() counts it
     if (check and p.returncode != 0) or (timed_out and not report_hang):
