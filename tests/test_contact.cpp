@@ -93,7 +93,7 @@ PetscErrorCode Commit(Block &b, double r, ContactCommit &report)
   PetscFunctionBeginUser;
   PetscCall(VecScale(b.du, r));
   PetscCall(b.body.Commit(b.du, r, info)); // the geometry first: the contact set projects the new positions
-  PetscCall(b.contact.Commit(b.du, 0.0, r, 0.0, report));
+  PetscCall(b.contact.Commit(b.du, 0.0, r, report));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

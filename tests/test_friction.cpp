@@ -112,16 +112,10 @@ int main()
     // Point at y = 0 moving up by 0.5 while the plate comes down by 1: meets at r = 1/1.5.
     CHECK_NEAR(plate.FirstContact({0.3, 0.0}, {0.0, 0.5}, 1.0), 1.0 / 1.5, 1e-14);
     CHECK(plate.FirstContact({0.3, 0.0}, {0.0, 0.1}, 0.1) > 1); // not reached
-    // Just past the step's end (r = 1 / 0.995): found only when the search goes that far (a re-solved
-    // step's touches located to -rmin_event_tol), line and arc alike.
-    CHECK(plate.FirstContact({0.3, 0.0}, {0.0, 0.4975}, 0.4975) > 1e299);
-    CHECK_NEAR(plate.FirstContact({0.3, 0.0}, {0.0, 0.4975}, 0.4975, 1.01), 1.0 / 0.995, 1e-14);
     const Tool die = BuildVDie(10.0, 2.0);
     // The apex arc: centre (0, 10 sqrt2 - 2 sqrt2), radius 2; a point straight below moving up meets it at the top.
     const double cy = 10 * std::sqrt(2.0) - 2 * std::sqrt(2.0), top = cy + 2;
     CHECK_NEAR(die.FirstContact({0.0, top - 1.0}, {0.0, 2.0}, 0.0), 0.5, 1e-12);
-    CHECK(die.FirstContact({0.0, top - 1.0}, {0.0, 0.995}, 0.0) > 1e299);
-    CHECK_NEAR(die.FirstContact({0.0, top - 1.0}, {0.0, 0.995}, 0.0, 1.01), 1.0 / 0.995, 1e-12);
     // On the flank x + y = 10 sqrt2 the projection has the flank normal and zero gap.
     const Projection pr = die.Project({5 * std::sqrt(2.0), 5 * std::sqrt(2.0)});
     CHECK(pr.segment == 1);

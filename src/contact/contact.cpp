@@ -288,7 +288,7 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
       // r4: exact first touch along the increment. A node released in this
       // trial starts on the surface: where it ends is checked by ReleasePulled.
       if (released_[node]) continue;
-      r4_[node] = tool_.FirstContact(Position(node), u, dU, 1 + prm_.event_tol);
+      r4_[node] = tool_.FirstContact(Position(node), u, dU);
       touch.Offer(r4_[node], Limiter::Contact, id);
       continue;
     }
@@ -333,15 +333,11 @@ void ContactSet::TakeFrame(PetscInt node, const Projection &pr)
   kappa_[node] = pr.curvature;
 }
 
-PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, double located, ContactCommit &report)
+PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &report)
 {
   const PetscScalar *d, *react;
   double local[3] = {0, 0, slid_off_}, global[3]; // friction work; tension, force dropped (maxima)
   const double event = r * (1 + prm_.group_tol);
-  // A touch located just past the step's end is taken with it: the node's gap
-  // is closed by the next step's prescribed motion and no force changes. (A
-  // separation is not: it would drop the node's remaining force.)
-  const double touch = r * (1 + std::max(prm_.group_tol, located));
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::contact, 0, 0, 0, 0));
@@ -377,7 +373,7 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, double located, C
       if (owned) local[2] = std::max(local[2], fn_[node]);
       Leave(node, 1 - r);
       released_[node] = 0;
-    } else if (r4_[node] <= touch) {
+    } else if (r4_[node] <= event) {
       contact_[node] = 1;
       fn_[node] = x_[node] = rate_[node] = 0;
     }

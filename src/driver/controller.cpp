@@ -318,11 +318,6 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   // within -rmin_event_tol that is the event's location tolerance, beyond it
   // (inertia's shortest step) a compromise.
   inc.event_inside = resolve && t.limit.r < 1.0 - opt_.rmin_event_tol;
-  // A step solved again, or corrected by the equilibrium iterations, ends at
-  // its first event only to -rmin_event_tol: a touch that far beyond its end
-  // is taken with it (the node closes its gap in the next step), not left to
-  // an increment of a hundredth of a step.
-  inc.located = resolve || Equilibrium() ? opt_.rmin_event_tol : 0.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -242,8 +242,7 @@ PetscErrorCode Problem::Run()
       PetscCall(VecCopy(now, start));
     PetscCall(body_.Commit(du, taken.scale, done.body));
     if (inertia_) PetscCall(inertia_->Advance(du, taken.dl * path_.duration, done.dw_inertia));
-    if (contact_ && contact_->active())
-      PetscCall(contact_->Commit(du, taken.dU, taken.scale, taken.located, done.contact));
+    if (contact_ && contact_->active()) PetscCall(contact_->Commit(du, taken.dU, taken.scale, done.contact));
     const double lambda0 = lambda;
     const bool on_break = std::abs(lambda + taken.dl - next_break) < kSnapToBreak * dl_stage;
     lambda = on_break ? next_break : lambda + taken.dl;

@@ -165,8 +165,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       opt.rmin_yield_tol));
   PetscCall(read.Real(PetscOptionsObject, "-rmin_event_tol",
                       "Steps that are not linear in r (friction, inertia) are solved again until their first "
-                      "event lies within this fraction of the step's end; a contact that far beyond the end of "
-                      "such a step happens with it",
+                      "event lies within this fraction of the step's end",
                       opt.rmin_event_tol));
   const std::string stall_help =
     "Stop (results so far written) when this many increments advance the load path by less than " +

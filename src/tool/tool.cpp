@@ -54,7 +54,7 @@ Projection Tool::Project(const Vec2 &x) const
   return best;
 }
 
-double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU, double r_max) const
+double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
 {
   // Relative motion in the tool's frame: y(r) = x - off + r (dx - dU direction).
   const Vec2 off = Offset(), y0 = Sub(x, off), dy = Sub(dx, Scale(direction, dU));
@@ -65,7 +65,7 @@ double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU, double r_max
       const double g0 = Dot(Sub(y0, s.a), s.n_line), dg = Dot(dy, s.n_line);
       if (!(dg < 0) || g0 < 0) continue;
       const double r = -g0 / dg;
-      if (r <= 0 || r > r_max) continue;
+      if (r <= 0 || r > 1) continue;
       const Vec2 ab = Sub(s.b, s.a), hit = Add(y0, Scale(dy, r));
       const double t = Dot(Sub(hit, s.a), ab) / Dot(ab, ab);
       if (t < -kOnSegment || t > 1 + kOnSegment) continue;
@@ -81,7 +81,7 @@ double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU, double r_max
       if (disc < 0) continue;
       const double sq = std::sqrt(disc);
       for (double r : {(-qb - sq) / (2 * qa), (-qb + sq) / (2 * qa)}) {
-        if (r <= 0 || r > r_max) continue;
+        if (r <= 0 || r > 1) continue;
         const Vec2 hit = Sub(Add(y0, Scale(dy, r)), s.c);
         if (AngleFrom(hit, s.t0) > s.t1 + kOnSegment) continue;
         // Only a crossing towards the tool side counts.

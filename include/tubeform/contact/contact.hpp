@@ -56,7 +56,6 @@ struct ContactParams {
   double dphi_rise = 1.0;  // r6, stick to slide: largest rise of |f_l / (mu f_n)| in an increment (1: none)
   double tol = 1e-4;       // friction iterations: change of f_l / (mu f_n) between iterates
   double group_tol = 1e-6; // contact/separation events within (1 + tol) r_min go together
-  double event_tol = 1e-2; // a step solved again to end at an event locates events to this fraction of it
   double gap_tol = 1e-7;   // a free node this close to the surface (mm) is in contact
 };
 
@@ -116,14 +115,12 @@ public:
   // r4 (contact), r5 (separation), r6 (stick / reversal) for the solution du of step dU.
   PetscErrorCode LimitStep(Vec du, double dU, StepLimit &limit);
   // Accepts the increment du with tool step dU, the last solution scaled by r
-  // (its reactions scaled by r, its events up to r (1 + group_tol) happen, and
-  // touches up to r (1 + located), the precision to which the step's end
-  // locates its events: -rmin_event_tol for a step solved again):
+  // (its reactions scaled by r, its events up to r (1 + group_tol) happen):
   // forces, slips, events, and the projection of every candidate on the
   // moved tool (frames of the contact nodes at the end of the step). Call
   // after the body's commit: the projection reads the positions at the end
   // of the step.
-  PetscErrorCode Commit(Vec du, double dU, double r, double located, ContactCommit &report);
+  PetscErrorCode Commit(Vec du, double dU, double r, ContactCommit &report);
 
   // Friction forces on the body (owned nodes, global frame) into a contribution vector.
   PetscErrorCode AddFrictionForces(Vec f) const;

@@ -60,8 +60,6 @@ struct Increment {
   PetscInt redo = 0;            // re-solves for loading/unloading switches
   PetscInt unsettled = 0;       // trial steps taken with unsettled iterations
   bool event_inside = false;    // the step taken goes past an event by more than -rmin_event_tol (a compromise)
-  double located = 0;           // its events are located to this fraction of it: touches so far beyond its
-                                // end count as reached (-rmin_event_tol for a step solved again or balanced)
   PetscInt inconsistent = 0;    // Gauss points whose loading state disagrees with the solution taken
   PetscInt balance = 0;         // equilibrium corrections of the step taken (solves beyond the paper's)
 };

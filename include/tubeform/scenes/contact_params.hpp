@@ -16,7 +16,6 @@ inline ContactParams MakeContactParams(const Options &opt, double default_vcri)
   prm.dphi_rise = opt.rmin_dphi_rise;
   prm.tol = opt.friction_tol;
   prm.group_tol = opt.rmin_group_tol;
-  prm.event_tol = opt.rmin_event_tol;
   return prm;
 }
 

@@ -48,10 +48,10 @@ public:
   // Closest point of the surface at the current stroke. Points whose
   // projection falls outside every segment get segment -1.
   Projection Project(const Vec2 &x) const;
-  // r4 of METHOD.md sec. 4: the smallest r in (0, r_max] at which the point
+  // r4 of METHOD.md sec. 4: the smallest r in (0, 1] at which the point
   // x + r dx meets the surface moved by r dU (lines: linear, arcs: quadratic,
   // exact); 1e300 if none.
-  double FirstContact(const Vec2 &x, const Vec2 &dx, double dU, double r_max = 1) const;
+  double FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const;
 };
 
 // The upper V-die of the quarter model (METHOD.md sec. 1): apex on the y axis
