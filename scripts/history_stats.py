@@ -45,7 +45,11 @@
 
     /usr/bin/python3 scripts/history_stats.py limiters F.h5 [F.h5 ...]
         What ended the loading increments: the count per limiter name
-        (history column `limiter`), and solves (friction_iters) per increment.
+        (history column `limiter`), and solves (friction_iters) per increment;
+        and the touch follow-ups: increments ended by the touch of the node
+        that also ended the increment before, at most 0.01 of its r_min (a
+        touch the step before left just past its end, docs/accuracy.md,
+        "Where the time went").
 """
 import sys
 
@@ -161,8 +165,11 @@ def limiters(paths):
         names = (names.decode() if isinstance(names, bytes) else str(names)).split(",")
         codes = H["limiter"][1:].astype(int)
         counts = ", ".join(f"{names[c]} {int((codes == c).sum())}" for c in sorted(set(codes)))
+        touch, where, r = names.index("contact"), H["limiter_where"], H["rmin"]
+        follow = sum(1 for i in range(2, len(codes) + 1) if H["limiter"][i] == touch == H["limiter"][i - 1]
+                     and where[i] == where[i - 1] and r[i] <= 0.01 * r[i - 1])
         print(f"{path}: {len(codes)} loading increments: {counts}; "
-              f"{H['friction_iters'][1:].mean():.1f} solves per increment")
+              f"{H['friction_iters'][1:].mean():.1f} solves per increment; {follow} touch follow-ups")
 
 
 if __name__ == "__main__":
