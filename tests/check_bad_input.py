@@ -72,7 +72,18 @@ cases = [
      "the V-die starts inside the body: node"),
     (["-max_energy_error", "0"], "-max_energy_error"),
     (["-rmin_deps_yield", "-1"], "-rmin_deps_yield"),
+    # The material library (options/materials): an unknown name lists the library; a material file that is
+    # missing, sets an option that is no material constant, or leaves one out names the file and the option.
+    (["-material", "steel"], "-material steel: not in the material library"),
+    (["-material", out("no_such_material.opts")], "no_such_material.opts: no such file"),
+    (["-material", out("stray.opts")], "-tube_t is not a constant"),
+    (["-material", out("incomplete.opts")], "does not set -material_k"),
 ]
+with open(out("stray.opts"), "w") as fh:
+    fh.write("-material_law ludwik -material_e 1000 -material_nu 0.3 -material_sy 10 -material_k 5 -material_n 0.5\n"
+             "-material_density 1e-9\n-tube_t 3\n")
+with open(out("incomplete.opts"), "w") as fh:
+    fh.write("-material_law swift\n-material_e 1000\n-material_nu 0.3\n-material_sy 10\n-material_density 1e-9\n")
 # Every case on 1 rank; on 2 ranks one of each kind (below), since mpirun
 # takes ~2 s to wind down a failed job.
 # Core files: looked for where tubeform runs, with the core size limit raised
@@ -81,11 +92,11 @@ cases = [
 cores, why_none = allow_core_dumps()
 print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
       f"       core dumps cannot appear on this machine ({why_none}): the crash check stands for them")
-# On 2 ranks one of each kind: option value, option choice, mesh file, output path.
+# On 2 ranks one of each kind: option value, option choice, mesh file, output path, material file.
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
-         ["-output", out("keep.csv/out.h5")])
+         ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 43 and len(selected) == 4, f"{len(cases)} cases on 1 rank (43), {len(selected)} on 2 (4)")
+k.check(len(cases) == 47 and len(selected) == 5, f"{len(cases)} cases on 1 rank (47), {len(selected)} on 2 (5)")
 
 
 def refused(np_, extra, needle):

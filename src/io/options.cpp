@@ -5,6 +5,7 @@
 #include <initializer_list>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/io/material_library.hpp"
 #include "tubeform/io/option_reader.hpp"
 #include "tubeform/step/rmin.hpp"
 
@@ -12,7 +13,6 @@ namespace tf {
 
 namespace {
 const char *const kElements[] = {"q4", "bbar", "qm6", "qm6bar", "auto"};
-const char *const kMaterials[] = {"aluminum", "copper", "custom"};
 const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
 
 // One of a list of words for a string-valued option; the current value is the default. Called between
@@ -110,11 +110,17 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   TF_OPTIONS_END();
 
   TF_OPTIONS_BEGIN(comm, "tubeform: material");
-  choice = 0;
-  read.Note("-material");
-  PetscCall(PetscOptionsEList("-material", "Material preset (Huang 2008, Table 1) or custom", "tubeform", kMaterials, 3,
-                              kMaterials[choice], &choice, nullptr));
-  MaterialPreset(kMaterials[choice], opt.material);
+  {
+    std::string dir, name = opt.material.name;
+    PetscCall(read.String(PetscOptionsObject, "-material_library",
+                          "Folder of the named materials (default: the source tree's options/materials)", dir));
+    dir = MaterialLibraryDir(dir);
+    std::string help = "Material: a name from the library (";
+    for (const auto &m : LibraryMaterials(dir)) help += m + ", ";
+    help += "docs/options.md \"Materials\"), a material file (path.opts), or custom (-material_e, ... given)";
+    PetscCall(read.String(PetscOptionsObject, "-material", help.c_str(), name));
+    PetscCall(LoadMaterial(comm, name, dir, opt.material));
+  }
   PetscCall(read.Real(PetscOptionsObject, "-material_e", "Young's modulus E (MPa)", opt.material.E));
   PetscCall(read.Real(PetscOptionsObject, "-material_nu", "Poisson's ratio", opt.material.nu));
   PetscCall(read.Real(PetscOptionsObject, "-material_sy", "Initial yield stress (MPa)", opt.material.sy));

@@ -4,21 +4,6 @@
 
 namespace tf {
 
-bool MaterialPreset(const std::string &name, MaterialParams &p)
-{
-  // Huang (2008), Table 1; flow curve sigma_y0 + K ep^n (METHOD.md decision).
-  // Densities (not in the paper): handbook values for aluminum and copper.
-  if (name == "aluminum")
-    p = {name, "ludwik", 75000.0, 0.34, 165.3, 673.5, 0.927, 2.70e-9, {}};
-  else if (name == "copper")
-    p = {name, "ludwik", 112000.0, 0.34, 445.0, 3628.6, 0.987, 8.93e-9, {}};
-  else if (name == "custom")
-    p.name = name;
-  else
-    return false;
-  return true;
-}
-
 Mat4 IsotropicElasticMatrix(double e, double nu)
 {
   const double lam = e * nu / ((1 + nu) * (1 - 2 * nu)), mu = e / (2 * (1 + nu));

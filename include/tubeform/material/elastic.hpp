@@ -27,7 +27,8 @@ struct UpdateInfo {
   double drift = 0; // sbar / sigma_y - 1 after the tangent update (before any correction)
 };
 
-// Material constants (METHOD.md Table 1 for the presets).
+// Material constants: the paper's aluminum (METHOD.md Table 1) until a
+// material file (options/materials/, io/material_library.hpp) or options set them.
 struct MaterialParams {
   std::string name = "aluminum";
   std::string law = "ludwik";
@@ -35,9 +36,6 @@ struct MaterialParams {
   double density = 2.70e-9;  // t/mm^3 (N, mm, s units): only -dynamics implicit uses it
   std::vector<double> table; // ep0, sy0, ep1, sy1, ... for law "table"
 };
-
-// Fills `p` with a named preset; false when the name is unknown.
-bool MaterialPreset(const std::string &name, MaterialParams &p);
 
 // A constitutive law in rate form. The objective part of the stress update
 // (the rotation of the stress by the spin) is done by the caller with

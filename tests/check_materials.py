@@ -1,0 +1,89 @@
+"""The material library (options/materials/*.opts, -material NAME): every
+file reaches the constitutive law with the constants it states.
+
+Each file is read here by this test's own parser and run in homogeneous
+plane-strain tension (options/tension.opts, -material NAME) with the paper's
+increments, so that r1 ends the first increment at the yield onset, and with
+-drift_correction, which puts every plastic point's sbar on sigma_y(ep):
+1. The onset: sigma_xx of the increment r1 ended (the last elastic one) against sigma_y0 / sqrt(1 - nu +
+   nu^2) (plane strain, sigma_zz = nu sigma_xx, sigma_yy = 0), and its ratio to
+   the log strain in the first increment against E / (1 - nu^2). Within 3e-3: the closed forms are
+   small-strain ones, and the run's Cauchy stress and logarithmic strain differ
+   from them by the order of the yield strain (sigma_y0 / E <= 4e-3 here);
+   measured below 2e-3 on every file. A constant off by 1 % fails.
+2. The flow curve: at every plastic increment sbar against the file's law,
+   Ludwik sy + K ep^n or Swift K (ep0 + ep)^n with ep0 = (sy / K)^(1/n), to
+   1e-9 (the correction is exact to round-off, ~1e-15): a wrong K, n, law or
+   sy fails by orders of magnitude more.
+3. Precedence: an option given after the name overrides the file's value
+   (-material dc04 -material_sy 200: the Swift curve through 200).
+4. The paper's two materials in their files are METHOD.md's Table 1 (read from
+   the spec here), so that -material aluminum, the default, is the paper's.
+"""
+import glob
+import math
+import os
+import re
+
+import h5py
+import numpy as np
+
+from tfcheck import Checks, args, out, run
+
+tf, mpirun, src = args()
+k = Checks("materials")
+
+
+def parse(path):
+    """Options of a material file (comments dropped), as this test reads them."""
+    words = " ".join(l.split("#", 1)[0] for l in open(path)).split()
+    return {w: words[i + 1] for i, w in enumerate(words) if w.startswith("-material_")}
+
+
+def law(o, sy_override=None):
+    sy, kk, n = float(sy_override or o["-material_sy"]), float(o["-material_k"]), float(o["-material_n"])
+    if o["-material_law"] == "ludwik":
+        return lambda ep: sy + kk * ep ** n
+    ep0 = (sy / kk) ** (1 / n)
+    return lambda ep: kk * (ep0 + ep) ** n
+
+
+def tension(extra):
+    f = out("material.h5")
+    run(tf, mpirun, 1, ["-options_file", f"{src}/options/tension.opts", "-tension_strain", 0.05, "-increments", 50,
+                        "-rmin_deps", 0.5, "-equilibrium_tol", 0, "-drift_correction", "-output", f] + extra)
+    with h5py.File(f, "r") as h:
+        return (h["/history"]["stroke"][:], h["/history"]["load"][:], h["/cell_fields/von_mises_c"][:].mean(axis=1),
+                h["/cell_fields/eps_p_c"][:].mean(axis=1))
+
+
+files = sorted(glob.glob(os.path.join(src, "options", "materials", "*.opts")))
+k.check(len(files) >= 7, f"{len(files)} materials in the library (at least the paper's two and five others)")
+for path in files:
+    name, o = os.path.basename(path)[:-5], parse(path)
+    E, nu, sy = float(o["-material_e"]), float(o["-material_nu"]), float(o["-material_sy"])
+    stroke, load, vm, ep = tension(["-material", name])
+    onset, last = sy / math.sqrt(1 - nu + nu * nu), np.flatnonzero(ep == 0)[-1]  # the increment r1 ended
+    modulus = load[1] / math.log1p(stroke[1]) / (E / (1 - nu * nu))
+    k.check(abs(load[last] / onset - 1) < 3e-3 and abs(modulus - 1) < 3e-3,
+            f"{name}: yield onset sigma_xx {load[last]:.2f} against {onset:.2f} MPa ({load[last] / onset - 1:+.1e}), "
+            f"modulus ratio {modulus:.5f} (both within 3e-3)")
+    m = ep > 0
+    curve = law(o)
+    err = max(abs(v / curve(x) - 1) for v, x in zip(vm[m], ep[m]))
+    k.check(m.sum() > 10 and err < 1e-9,
+            f"{name}: sbar on the file's {o['-material_law']} curve to {err:.1e} (1e-9), ep(end) {ep[-1]:.4f}")
+
+stroke, load, vm, ep = tension(["-material", "dc04", "-material_sy", 200])
+m, curve = ep > 0, law(parse(os.path.join(src, "options", "materials", "dc04.opts")), 200)
+err = max(abs(v / curve(x) - 1) for v, x in zip(vm[m], ep[m]))
+k.check(err < 1e-9, f"-material dc04 -material_sy 200: the Swift curve through 200 MPa, to {err:.1e}")
+
+spec = open(os.path.join(src, "..", "shared", "spec", "METHOD.md")).read()
+for name, row in (("aluminum", "aluminum"), ("copper", "hard copper")):
+    cells = re.search(rf"^\| {row} \| (\S+) \| (\S+) \| (\S+) \| K = (\S+), n = (\S+) \|", spec, re.M).groups()
+    o = parse(os.path.join(src, "options", "materials", f"{name}.opts"))
+    mine = [o[f"-material_{c}"] for c in ("e", "nu", "sy", "k", "n")]
+    k.check([float(c) for c in cells] == [float(c) for c in mine] and o["-material_law"] == "ludwik",
+            f"{name}.opts is METHOD.md's Table 1 ({', '.join(cells)}; Ludwik)")
+k.done()
