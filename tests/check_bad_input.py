@@ -78,6 +78,10 @@ cases = [
     (["-material", out("no_such_material.opts")], "no_such_material.opts: no such file"),
     (["-material", out("stray.opts")], "-tube_t is not a constant"),
     (["-material", out("incomplete.opts")], "does not set -material_k"),
+    # Kinematic hardening without backstresses, or with backstresses that outgrow the flow curve.
+    (["-hardening", "chaboche", "-material_law", "ludwik"], "-hardening chaboche needs -material_kinematic"),
+    (["-hardening", "chaboche", "-material_law", "ludwik", "-material_kinematic", "1e6,0"],
+     "-material_kinematic: the backstresses outgrow the flow curve"),
 ]
 with open(out("stray.opts"), "w") as fh:
     fh.write("-material_law ludwik -material_e 1000 -material_nu 0.3 -material_sy 10 -material_k 5 -material_n 0.5\n"
@@ -96,7 +100,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 47 and len(selected) == 5, f"{len(cases)} cases on 1 rank (47), {len(selected)} on 2 (5)")
+k.check(len(cases) == 49 and len(selected) == 5, f"{len(cases)} cases on 1 rank (49), {len(selected)} on 2 (5)")
 
 
 def refused(np_, extra, needle):

@@ -149,7 +149,9 @@ PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double 
   // Strang splitting: half the rotation, the constitutive increment in the
   // mid-rotated frame, the other half (forward scheme: all at once, first order).
   const StressRotation turn(prm_.kinematics, omega, midpoint ? 0.5 : 1.0);
+  const int nback = material_->backstresses();
   turn.Apply(ps.sigma);
+  for (int k = 0; k < nback; ++k) turn.Apply(ps.back[k]);
   // The internal work is taken in the frame of the constitutive increment: the
   // stress turned by the first half rotation and the updated one before the
   // second (midpoint); the forward scheme's start stress as it always was.
@@ -165,7 +167,7 @@ PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double 
   // own stress path (the stored yield factor is its trial's).
   double onset = prm_.yield_inside ? yf / r : kNever;
   if (prm_.state_from_strain && material_->plastic_law()) {
-    ps.plastic = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
+    ps.plastic = material_->OnSurface(ps);
     // (the onset of a point off the surface, whatever its last increment's flag)
     PointState start = state_[i];
     start.plastic = false;
@@ -181,11 +183,14 @@ PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double 
     u = material_->Update(ps, deps);
   }
   const Voigt after = ps.sigma;
-  if (midpoint) turn.Apply(ps.sigma);
+  if (midpoint) {
+    turn.Apply(ps.sigma);
+    for (int k = 0; k < nback; ++k) turn.Apply(ps.back[k]);
+  }
   // Points that reach the yield surface in this increment (the limiter and
   // those grouped with it), or pass it, are plastic from now on.
   const bool reached = !prm_.yield_inside && !prm_.state_from_strain && yf <= r * (1 + prm_.group_tol);
-  const bool on_surface = VonMises(ps.sigma) >= (1 - kOnSurface) * material_->YieldStress(ps.ep);
+  const bool on_surface = material_->OnSurface(ps);
   if (!ps.plastic && material_->plastic_law() && (reached || on_surface)) ps.plastic = true;
   acc.n_plastic += ps.plastic;
   for (int c = 0; c < kNumStress; ++c)

@@ -118,7 +118,9 @@ PetscErrorCode Body::AssembleTangent(System &system)
 PointState Body::OnsetState(const PointState &elastic, const Voigt &deps, double omega, double m) const
 {
   PointState on = elastic;
-  RotateStress(ObjectiveScheme::Forward, m * omega, on.sigma);
+  const StressRotation turn(ObjectiveScheme::Forward, m * omega);
+  turn.Apply(on.sigma);
+  for (int k = 0; k < material_->backstresses(); ++k) turn.Apply(on.back[k]);
   material_->Update(on, Scaled(deps, m));
   on.plastic = true;
   return on;

@@ -8,7 +8,7 @@ namespace tf {
 
 PetscErrorCode Body::Persist(Archive &ar)
 {
-  // Per point: stress (4), ep, hslope, plastic.
+  // Per point: stress (4), ep, hslope, plastic (and the backstresses below).
   constexpr int kPerPoint = kNumStress + 3;
   std::vector<double> points(kPerPoint * state_.size());
   bool elastic_only = elastic_only_;
@@ -22,6 +22,13 @@ PetscErrorCode Body::Persist(Archive &ar)
     d[kNumStress] = p.ep, d[kNumStress + 1] = p.hslope, d[kNumStress + 2] = p.plastic;
   }
   PetscCall(ar.CellData("points", points, kPerPoint * fe::kGauss));
+  // Kinematic hardening: each point's backstresses (4 components each).
+  const int nback = material_->backstresses(), kPerBack = kNumStress * nback;
+  std::vector<double> back(kPerBack * state_.size());
+  for (size_t i = 0; i < state_.size() && !ar.reading(); ++i)
+    for (int b = 0; b < nback; ++b)
+      std::copy(state_[i].back[b].begin(), state_[i].back[b].end(), &back[kPerBack * i + kNumStress * b]);
+  if (nback > 0) PetscCall(ar.CellData("backstresses", back, kPerBack * fe::kGauss));
   // qm6: the incompatible modes' condensation of each cell's last tangent.
   auto &cond = cells_.condensations();
   constexpr int kPerCell = fe::kInternal * fe::kDofs;
@@ -43,6 +50,8 @@ PetscErrorCode Body::Persist(Archive &ar)
     const double *d = &points[kPerPoint * i];
     std::copy(d, d + kNumStress, p.sigma.begin());
     p.ep = d[kNumStress], p.hslope = d[kNumStress + 1], p.plastic = d[kNumStress + 2] != 0;
+    for (int b = 0; b < nback; ++b)
+      std::copy(&back[kPerBack * i + kNumStress * b], &back[kPerBack * i + kNumStress * (b + 1)], p.back[b].begin());
   }
   StaleAll(); // new geometry and stresses
   geometry_.valid = false;

@@ -219,6 +219,18 @@ PetscErrorCode Problem::WriteFields(ResultWriter &writer, PetscInt step, double 
       const double vals[7] = {s[0], s[1], s[2], s[3], VonMises(s), ps.ep, ps.plastic ? 1.0 : 0.0};
       for (int k = 0; k < 7; ++k) cells[k].values[e] += vals[k] / fe::kGauss;
     }
+  // Kinematic hardening: the sum of the backstresses (the yield surface's centre).
+  if (body_.material().backstresses() > 0) {
+    const char *names[kNumStress] = {"backstress_xx", "backstress_yy", "backstress_zz", "backstress_xy"};
+    for (int c = 0; c < kNumStress; ++c) {
+      CellField f{names[c], std::vector<double>(mesh_.num_cells, 0.0)};
+      for (PetscInt e = 0; e < mesh_.num_cells; ++e)
+        for (int g = 0; g < fe::kGauss; ++g)
+          for (int b = 0; b < body_.material().backstresses(); ++b)
+            f.values[e] += body_.state()[fe::kGauss * e + g].back[b][c] / fe::kGauss;
+      cells.push_back(std::move(f));
+    }
+  }
   // Node fields: the displacement and, with a tool, each node's contact state
   // (0 free, 1 in contact) and its contact force in the global frame (N/mm).
   std::vector<NodeField> nodes = {{"displacement_u", 2, body_.displacement()}};

@@ -92,6 +92,11 @@ PetscErrorCode ReadFile(MPI_Comm comm, const std::string &file, const std::strin
                file.c_str());
     p.table.assign(table, table + n);
   }
+  // Backstresses of the material (used with -hardening chaboche).
+  PetscReal pairs[2 * kMaxBackstresses];
+  PetscInt npairs = 2 * kMaxBackstresses;
+  PetscCall(PetscOptionsGetRealArray(f.o, nullptr, "-material_kinematic", pairs, &npairs, &set));
+  p.kinematic.assign(pairs, pairs + (set ? npairs : 0));
   // Whatever the file set that was not read above is not a material constant.
   PetscInt left;
   char **names, **values;
@@ -100,7 +105,7 @@ PetscErrorCode ReadFile(MPI_Comm comm, const std::string &file, const std::strin
   PetscCall(PetscOptionsLeftRestore(f.o, &left, &names, &values));
   PetscCheck(stray.empty(), comm, PETSC_ERR_USER_INPUT,
              "-material %s: %s is not a constant of its -material_law %s (a material file sets -material_e, _nu, "
-             "_density, _law and the law's _sy, _k, _n or _table)",
+             "_density, _law, the law's _sy, _k, _n or _table, and _kinematic)",
              file.c_str(), stray.c_str(), p.law.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }

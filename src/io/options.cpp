@@ -14,6 +14,8 @@ namespace tf {
 namespace {
 const char *const kElements[] = {"q4", "bbar", "qm6", "qm6bar", "auto"};
 const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
+// Reversals -tension_cycle takes at most.
+constexpr PetscInt kMaxTensionCycle = 16;
 
 // One of a list of words for a string-valued option; the current value is the default. Called between
 // PetscOptionsBegin and PetscOptionsEnd (it needs their PetscOptionsObject).
@@ -145,6 +147,20 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                                     "tubeform", table, &n, &set));
     if (set) opt.material.table.assign(table, table + n);
   }
+  {
+    PetscReal pairs[2 * kMaxBackstresses] = {0};
+    PetscInt n = 2 * kMaxBackstresses;
+    read.Note("-material_kinematic");
+    PetscCall(PetscOptionsRealArray("-material_kinematic",
+                                    "Backstresses for -hardening chaboche: C1,gamma1[,C2,gamma2[,C3,gamma3]] (MPa, -; "
+                                    "gamma 0: linear); their share of the flow curve moves to the kinematic part",
+                                    "tubeform", pairs, &n, &set));
+    if (set) opt.material.kinematic.assign(pairs, pairs + n);
+  }
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-hardening",
+                       "isotropic (the flow curve expands the yield surface), or chaboche (the backstresses of "
+                       "-material_kinematic move it; the same monotonic flow curve)",
+                       {"isotropic", "chaboche"}, opt.material.hardening));
   TF_OPTIONS_END();
 
   TF_OPTIONS_BEGIN(comm, "tubeform: incremental driver (r_min method)");
@@ -285,6 +301,17 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       opt.slide_back));
   PetscCall(read.Real(PetscOptionsObject, "-tension_strain",
                       "tension scene: final nominal strain in x (negative: compression)", opt.tension_strain));
+  {
+    PetscReal cycle[kMaxTensionCycle];
+    PetscInt n = kMaxTensionCycle;
+    read.Note("-tension_cycle");
+    PetscCall(PetscOptionsRealArray("-tension_cycle",
+                                    "tension scene: nominal strains the block is then taken to in turn, each over "
+                                    "-unload_increments trial increments (a tension-compression cycle: -tension_strain "
+                                    "0.02 -tension_cycle -0.02,0.02)",
+                                    "tubeform", cycle, &n, &set));
+    if (set) opt.tension_cycle.assign(cycle, cycle + n);
+  }
   PetscCall(read.Real(PetscOptionsObject, "-rotation_angle",
                       "rotation scene: rigid rotation after the prestretch (degrees)", opt.rotation_angle));
   PetscCall(read.Real(PetscOptionsObject, "-rotation_strain",

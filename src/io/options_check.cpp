@@ -3,12 +3,48 @@
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/option_reader.hpp"
 #include "tubeform/io/options.hpp"
+#include "tubeform/material/factory.hpp"
+#include "tubeform/material/kinematic.hpp"
 #include "tubeform/step/rmin.hpp"
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
 
 namespace tf {
+
+namespace {
+
+// Plastic strains the isotropic part of -hardening chaboche is checked up to (tube squaring stays far below).
+constexpr double kKinematicCheckStrain = 2.0;
+constexpr int kKinematicCheckPoints = 2000;
+
+// -hardening chaboche: pairs of non-negative constants whose monotonic share
+// stays below the flow curve (R(p) > 0), on a plastic law.
+PetscErrorCode CheckKinematic(MPI_Comm comm, const MaterialParams &m)
+{
+  PetscFunctionBeginUser;
+  if (m.hardening != "chaboche") PetscFunctionReturn(PETSC_SUCCESS);
+  const auto &k = m.kinematic;
+  PetscCheck(m.law != "elastic", comm, PETSC_ERR_USER_INPUT,
+             "-hardening chaboche: needs a plastic -material_law (ludwik, swift, table), not elastic");
+  PetscCheck(!k.empty() && k.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
+             "-hardening chaboche needs -material_kinematic C1,gamma1[,C2,gamma2[,C3,gamma3]] (pairs; got %d numbers)",
+             (int)k.size());
+  for (size_t i = 0; i < k.size(); i += 2)
+    PetscCheck(k[i] > 0 && k[i + 1] >= 0 && std::isfinite(k[i]) && std::isfinite(k[i + 1]), comm, PETSC_ERR_USER_INPUT,
+               "-material_kinematic: C %g, gamma %g: need C > 0 and gamma >= 0", k[i], k[i + 1]);
+  const RemainderHardening rest(MakeHardening(m), Backstresses(k));
+  for (int i = 0; i <= kKinematicCheckPoints; ++i) {
+    const double p = kKinematicCheckStrain * i / kKinematicCheckPoints, r = rest.YieldStress(p);
+    PetscCheck(r > 0, comm, PETSC_ERR_USER_INPUT,
+               "-material_kinematic: the backstresses outgrow the flow curve at plastic strain %g (its isotropic "
+               "part would be %g MPa): lower C or raise gamma",
+               p, r);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace
 
 PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
 {
@@ -89,6 +125,7 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
     PetscCheck(t[1] > 0, comm, PETSC_ERR_USER_INPUT,
                "-material_table: the initial yield stress must be positive (got %g)", t[1]);
   }
+  PetscCall(CheckKinematic(comm, m));
   PetscCheck(opt.die_r_apex >= 0 && opt.die_r_apex < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,
              "-die_r_apex %g: must lie in [0, -tube_ro)", opt.die_r_apex);
   PetscCheck(opt.die_u_close >= 0 && opt.die_r_edge >= 0, comm, PETSC_ERR_USER_INPUT,

@@ -2,12 +2,12 @@
 
 #include "tubeform/material/hardening.hpp"
 #include "tubeform/material/j2.hpp"
+#include "tubeform/material/kinematic.hpp"
 
 namespace tf {
 
-std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, bool drift_correction)
+std::unique_ptr<Hardening> MakeHardening(const MaterialParams &m)
 {
-  if (m.law == "elastic") return std::make_unique<Elastic>(m.E, m.nu);
   std::unique_ptr<Hardening> h;
   if (m.law == "ludwik")
     h = std::make_unique<LudwikHardening>(m.sy, m.K, m.n);
@@ -17,6 +17,18 @@ std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, 
     std::vector<double> ep, sy;
     for (size_t i = 0; i + 1 < m.table.size(); i += 2) ep.push_back(m.table[i]), sy.push_back(m.table[i + 1]);
     h = std::make_unique<TableHardening>(ep, sy);
+  }
+  return h;
+}
+
+std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, bool drift_correction)
+{
+  if (m.law == "elastic") return std::make_unique<Elastic>(m.E, m.nu);
+  std::unique_ptr<Hardening> h = MakeHardening(m);
+  if (m.hardening == "chaboche" && !m.kinematic.empty()) {
+    std::vector<Backstress> back = Backstresses(m.kinematic);
+    h = std::make_unique<RemainderHardening>(std::move(h), back);
+    return std::make_unique<KinematicJ2>(m.E, m.nu, std::move(h), std::move(back), dep_ref, drift_correction);
   }
   return std::make_unique<J2Plasticity>(m.E, m.nu, std::move(h), dep_ref, drift_correction);
 }

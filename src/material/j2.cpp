@@ -22,24 +22,21 @@ Mat4 J2Plasticity::Tangent(const PointState &s) const
   return d;
 }
 
-double J2Plasticity::PlasticStep(double ep, double a, double sbar, double hslope) const
+namespace {
+
+// The root of g, increasing, with g(lo) < 0 < g(hi): the bracket is first
+// narrowed at `guess` (the step the last plastic modulus predicts: the root
+// itself when H' is constant), then regula falsi (Illinois) to round-off.
+template <class G>
+double Root(const G &g, double lo, double hi, double glo, double ghi, double guess)
 {
-  // g(dep) = 3G dep + sigma_y(ep + dep) - sigma_y(ep) - 3G a / sbar is increasing,
-  // g(0) < 0 <= g(a / sbar): bracketed; regula falsi (Illinois) to round-off.
-  const double target = 3 * g_ * a / sbar, s0 = h_->YieldStress(ep);
-  const auto g = [&](double x) { return 3 * g_ * x + h_->YieldStress(ep + x) - s0 - target; };
-  double lo = 0, hi = a / sbar, glo = g(lo), ghi = g(hi);
-  if (ghi <= 0) return hi;
-  // The bracket is first narrowed at the step the last plastic modulus
-  // predicts (the root itself when H' is constant): the iterations then start
-  // close to the root instead of at the perfectly plastic bound.
-  if (hslope > 0) {
-    const double x = target / (3 * g_ + hslope), gx = x < hi ? g(x) : 1.0;
-    if (gx == 0) return x;
+  if (guess > 0) {
+    const double gx = guess < hi ? g(guess) : 1.0;
+    if (gx == 0) return guess;
     if (gx < 0)
-      lo = x, glo = gx;
-    else if (x < hi)
-      hi = x, ghi = gx;
+      lo = guess, glo = gx;
+    else if (guess < hi)
+      hi = guess, ghi = gx;
   }
   int side = 0;
   for (int it = 0; it < kPlasticStepIterations && hi - lo > kPlasticStepTol * hi; ++it) {
@@ -56,6 +53,39 @@ double J2Plasticity::PlasticStep(double ep, double a, double sbar, double hslope
     }
   }
   return 0.5 * (lo + hi);
+}
+
+} // namespace
+
+double KinematicShare::Value(double x) const
+{
+  double v = 0;
+  for (int i = 0; i < n; ++i) v += gamma[i] > 0 ? amp[i] * -std::expm1(-gamma[i] * x) : amp[i] * x;
+  return v;
+}
+
+double KinematicShare::Slope() const
+{
+  double v = 0;
+  for (int i = 0; i < n; ++i) v += gamma[i] > 0 ? amp[i] * gamma[i] : amp[i];
+  return v;
+}
+
+double J2Plasticity::PlasticStep(double ep, double a, double sbar, double hslope, const KinematicShare *kin) const
+{
+  // g(dep) = 3G dep + sigma_y(ep + dep) - sigma_y(ep) [+ the backstresses' share] - 3G a / sbar
+  // is increasing, g(0) < 0 <= g(a / sbar): bracketed.
+  const double target = 3 * g_ * a / sbar, s0 = h_->YieldStress(ep), hi = a / sbar;
+  if (kin) {
+    const auto g = [&](double x) { return 3 * g_ * x + h_->YieldStress(ep + x) - s0 + kin->Value(x) - target; };
+    const double glo = g(0), ghi = g(hi);
+    if (ghi <= 0) return hi;
+    return Root(g, 0, hi, glo, ghi, hslope > 0 ? target / (3 * g_ + hslope + kin->Slope()) : 0);
+  }
+  const auto g = [&](double x) { return 3 * g_ * x + h_->YieldStress(ep + x) - s0 - target; };
+  const double glo = g(0), ghi = g(hi);
+  if (ghi <= 0) return hi;
+  return Root(g, 0, hi, glo, ghi, hslope > 0 ? target / (3 * g_ + hslope) : 0);
 }
 
 UpdateInfo J2Plasticity::Update(PointState &s, const Voigt &deps) const

@@ -108,8 +108,9 @@ public:
   const Mesh &mesh() const { return *mesh_; }
   MPI_Comm comm() const { return mesh_->comm; }
   const std::vector<PointState> &state() const { return state_; } // kGauss per local cell
-  const std::vector<double> &position() const { return x_; }      // current coordinates, 2 per local node
-  const std::vector<double> &displacement() const { return u_; }  // total displacement, 2 per local node
+  const Material &material() const { return *material_; }
+  const std::vector<double> &position() const { return x_; }     // current coordinates, 2 per local node
+  const std::vector<double> &displacement() const { return u_; } // total displacement, 2 per local node
 
 private:
   const Mesh *mesh_ = nullptr;

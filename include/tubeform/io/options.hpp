@@ -78,9 +78,10 @@ struct Options {
   double slide_n = 100.0, slide_push = 0.2; // slide scene: normal force (N/mm, arc: pressure MPa), push (mm)
   double slide_back = 0;                    // slide scene (flat): push back by this much in a third stage (mm)
   std::string slide_tool = "flat";
-  double tension_strain = 0.1;   // signed: < 0 compresses
-  double rotation_angle = 90.0;  // degrees
-  double rotation_strain = 1e-3; // prestretch before the rotation
+  double tension_strain = 0.1;       // signed: < 0 compresses
+  std::vector<double> tension_cycle; // nominal strains the block is then taken to in turn (reversals)
+  double rotation_angle = 90.0;      // degrees
+  double rotation_strain = 1e-3;     // prestretch before the rotation
   double column_l = 25.0, column_t = 1.0, column_imperfection = 0.025;
   // Output
   std::string output = "results/tubeform.h5";

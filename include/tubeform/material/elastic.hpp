@@ -2,6 +2,7 @@
 // objective (Jaumann) stress update shared by every material law.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -13,12 +14,18 @@ namespace tf {
 using fe::Mat4;
 using fe::Voigt;
 
+// Backstresses a point carries at most (Chaboche's model takes up to three).
+constexpr int kMaxBackstresses = 3;
+
 // State carried at each Gauss point from increment to increment.
 struct PointState {
   Voigt sigma{};        // Cauchy stress {xx, yy, zz, xy}
-  double ep = 0;        // equivalent plastic strain
+  double ep = 0;        // equivalent plastic strain (accumulated: p of kinematic hardening)
   double hslope = 0;    // hardening modulus H' of the last plastic update (0: not yet plastic)
   bool plastic = false; // alpha of METHOD.md sec. 2: on the yield surface and loading
+  // Deviatoric backstresses of kinematic hardening (zero without it), turned
+  // with the stress by the spin; the yield surface is centred on their sum.
+  std::array<Voigt, kMaxBackstresses> back{};
 };
 
 // What one material update did (per unit volume).
@@ -35,6 +42,11 @@ struct MaterialParams {
   double E = 75000, nu = 0.34, sy = 165.3, K = 673.5, n = 0.927;
   double density = 2.70e-9;  // t/mm^3 (N, mm, s units): only -dynamics implicit uses it
   std::vector<double> table; // ep0, sy0, ep1, sy1, ... for law "table"
+  // isotropic, or chaboche: the flow curve above stays the monotonic one and
+  // the backstresses (C1, gamma1, C2, gamma2, ...: Armstrong-Frederick with
+  // one pair, gamma 0 linear) take their share of it (material/kinematic.hpp).
+  std::string hardening = "isotropic";
+  std::vector<double> kinematic;
 };
 
 // A constitutive law in rate form. The objective part of the stress update
@@ -58,6 +70,10 @@ public:
   virtual bool Loading(const PointState &, const Voigt &) const { return false; }
   virtual double YieldStress(double) const { return kNever; }
   virtual bool plastic_law() const { return false; }
+  // Whether the point's stress is on its yield surface (within kOnSurface).
+  virtual bool OnSurface(const PointState &) const { return false; }
+  // How many backstresses the law evolves (0: none to turn with the stress).
+  virtual int backstresses() const { return 0; }
 };
 
 class Elastic : public Material {

@@ -4,14 +4,19 @@
 #include <memory>
 
 #include "tubeform/material/elastic.hpp"
+#include "tubeform/material/hardening.hpp"
 
 namespace tf {
+
+// The flow curve of a plastic law ("ludwik", "swift", "table").
+std::unique_ptr<Hardening> MakeHardening(const MaterialParams &m);
 
 // law "elastic": linear elastic; "ludwik", "swift", "table": J2 plasticity
 // with that flow curve. `dep_ref` is the plastic strain step over which H' is
 // taken as a secant before a point has yielded once (the strain-limit step,
 // -rmin_deps); `drift_correction` scales plastic stresses back onto the yield
-// surface after each update.
+// surface after each update. With hardening "chaboche" the backstresses of
+// m.kinematic take their share of the flow curve (material/kinematic.hpp).
 std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, bool drift_correction);
 
 } // namespace tf

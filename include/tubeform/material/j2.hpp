@@ -20,6 +20,16 @@ constexpr double kOnSurface = 1e-6;
 constexpr double kPlasticStepTol = 1e-14;
 constexpr int kPlasticStepIterations = 200;
 
+// The backstresses' part of a plastic step's consistency (kinematic.hpp): how
+// far their projection on the step's flow direction moves over a plastic
+// strain step x, each integrated exactly for that direction.
+struct KinematicShare {
+  int n = 0;
+  double amp[kMaxBackstresses] = {}, gamma[kMaxBackstresses] = {}; // gamma 0: amp is C (linear)
+  double Value(double x) const;                                    // sum amp (1 - exp(-gamma x)), or amp x
+  double Slope() const;                                            // its derivative at x = 0
+};
+
 class J2Plasticity : public Material {
 public:
   // dep_ref: plastic strain step over which H' is taken (as a secant) before a
@@ -34,13 +44,17 @@ public:
   bool Loading(const PointState &s, const Voigt &deps) const override;
   double YieldStress(double ep) const override { return h_->YieldStress(ep); }
   bool plastic_law() const override { return true; }
+  bool OnSurface(const PointState &s) const override
+  {
+    return VonMises(s.sigma) >= (1 - kOnSurface) * h_->YieldStress(s.ep);
+  }
 
-  // Solves 3G dep + sigma_y(ep + dep) - sigma_y(ep) = 3G a / sbar for dep >= 0:
-  // the plastic strain step whose secant modulus is the H' of the update.
-  // `hslope`: the last plastic step's modulus (0: none), the first guess.
-  double PlasticStep(double ep, double a, double sbar, double hslope = 0) const;
+  // Solves 3G dep + sigma_y(ep + dep) - sigma_y(ep) [+ kin->Value(dep)] = 3G a / sbar
+  // for dep >= 0: the plastic strain step whose secant modulus is the H' of the
+  // update. `hslope`: the last plastic step's modulus (0: none), the first guess.
+  double PlasticStep(double ep, double a, double sbar, double hslope = 0, const KinematicShare *kin = nullptr) const;
 
-private:
+protected:
   Elastic elastic_;
   std::unique_ptr<Hardening> h_;
   double g_, dep_ref_;
