@@ -302,7 +302,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(read.Real(PetscOptionsObject, "-tension_strain",
                       "tension scene: final nominal strain in x (negative: compression)", opt.tension_strain));
   {
-    PetscReal cycle[kMaxTensionCycle];
+    PetscReal cycle[kMaxTensionCycle] = {0}; // -help prints the first entry as the default
     PetscInt n = kMaxTensionCycle;
     read.Note("-tension_cycle");
     PetscCall(PetscOptionsRealArray("-tension_cycle",
