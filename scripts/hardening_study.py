@@ -1,0 +1,78 @@
+#!/usr/bin/python3
+"""What the hardening model moves (issue 24): the paper's squaring with its
+springback, isotropic against mixed and kinematic hardening of the same
+monotonic flow curve.
+
+    /usr/bin/python3 scripts/hardening_study.py [--cases default,cu_29_mu0.05,al_37_mu0.05] [--preset default]
+
+The paper gives no cyclic data, so this is a sensitivity study, not a
+calibration: Hodge's mixed hardening with a linear (Prager) backstress taking
+the share 1 - M of the Ludwik hardening, -material_kinematic C,0 with
+C = (1 - M) K, for M = 1 (isotropic), 0.5 and 0 (the whole hardening
+kinematic; the flow curve sigma_y0 + K p^n stays the monotonic curve, docs/theory.md
+"Kinematic hardening"); and a saturating Armstrong-Frederick backstress of
+0.6 sigma_y0 reached within p ~ 0.02 (C = 0.6 sigma_y0 gamma, gamma = 200: the
+shape tests/check_kinematic.py verifies), a strong Bauschinger effect whose
+reverse yield comes near zero stress. Each case on the preset; the table gives the load at
+the end of loading, C/t and C1/C2 loaded and after springback, and the
+springback of the half-extents x_max (C1) and y_max (C2). Runs are kept under
+results/hardening/ (delete one to run it again); the table goes to
+results/hardening/table.md.
+"""
+import argparse
+import os
+import sys
+
+import h5py
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import tfruns  # noqa: E402
+
+OUT = os.path.join(tfruns.root, "results", "hardening")
+# case name -> (options file, Ludwik sigma_y0 and K of its material: METHOD.md Table 1)
+CASES = {"default": ("options/squaring.opts", 165.3, 673.5),
+         "al_37_mu0.05": ("options/squaring_al_37_mu0.05.opts", 165.3, 673.5),
+         "cu_29_mu0.05": ("options/squaring_cu_29_mu0.05.opts", 445.0, 3628.6)}
+MIXED = (1.0, 0.5, 0.0)  # Hodge's M: the isotropic share of the hardening
+AF_SHARE, AF_GAMMA = 0.6, 200.0  # the saturating backstress: 0.6 sigma_y0, reached within p ~ 3 / gamma
+
+
+def row(name, preset, m):
+    """One run: m the isotropic share (Hodge's M) with a linear backstress, or "AF" the saturating one."""
+    case, sy0, k = CASES[name]
+    h5 = os.path.join(OUT, f"{name}_{preset}_M{m}.h5")
+    extra = ["-options_file", f"options/preset-{preset}.opts", "-error_estimate", "0"]
+    if m == "AF":
+        extra += ["-hardening", "chaboche", "-material_kinematic", f"{AF_SHARE * sy0 * AF_GAMMA:g},{AF_GAMMA:g}"]
+    elif m < 1:
+        extra += ["-hardening", "chaboche", "-material_kinematic", f"{(1 - m) * k:g},0"]
+    if not os.path.exists(h5):
+        wall, inc, _, _ = tfruns.run(case, extra, h5)
+        print(f"  {os.path.basename(h5)}: {wall:.1f} s, {inc} increments", flush=True)
+    with h5py.File(h5, "r") as f:
+        a = f["/history"].attrs
+        return (f"| {name} | {m} | {a['loaded_load']:.2f} | {a['loaded_c_over_t']:.4f} | "
+                f"{a['loaded_deviation_ratio']:.4f} | {a['unloaded_c_over_t']:.4f} | {a['unloaded_deviation_ratio']:.4f} | "
+                f"{a['unloaded_x_max'] - a['loaded_x_max']:+.4f} | {a['unloaded_y_max'] - a['loaded_y_max']:+.4f} |")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--cases", default=",".join(CASES))
+    ap.add_argument("--preset", default="default")
+    a = ap.parse_args()
+    os.makedirs(OUT, exist_ok=True)
+    lines = ["| case | M (isotropic share), or AF | load at the end of loading (N/mm) | C/t loaded | C1/C2 loaded | "
+             "C/t sprung back | C1/C2 sprung back | springback of C1 (mm) | of C2 (mm) |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for name in a.cases.split(","):
+        for m in MIXED + ("AF",):
+            lines.append(row(name, a.preset, m))
+    text = "\n".join(lines)
+    print(text)
+    with open(os.path.join(OUT, "table.md"), "w") as f:
+        f.write(text + "\n")
+
+
+if __name__ == "__main__":
+    main()
