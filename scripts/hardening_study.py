@@ -15,9 +15,10 @@ kinematic; the flow curve sigma_y0 + K p^n stays the monotonic curve, docs/theor
 shape tests/check_kinematic.py verifies), a strong Bauschinger effect whose
 reverse yield comes near zero stress. Each case on the preset; the table gives the load at
 the end of loading, C/t and C1/C2 loaded and after springback, and the
-springback of the half-extents x_max (C1) and y_max (C2). Runs are kept under
-results/hardening/ (delete one to run it again); the table goes to
-results/hardening/table.md.
+springback of the half-extents x_max (C1) and y_max (C2), and
+docs/figures/hardening_springback.png draws C/t over the stroke of each run
+with its value after springback. Runs are kept under results/hardening/
+(delete one to run it again); the table goes to results/hardening/table.md.
 """
 import argparse
 import os
@@ -56,6 +57,32 @@ def row(name, preset, m):
                 f"{a['unloaded_x_max'] - a['loaded_x_max']:+.4f} | {a['unloaded_y_max'] - a['loaded_y_max']:+.4f} |")
 
 
+def figure(names, preset):
+    """C/t over the loading of each case and model, and after springback (the markers at the end)."""
+    import figlib  # noqa: F401  (matplotlib without a display)
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(1, len(names), figsize=(4.2 * len(names), 3.6), squeeze=False)
+    for ax, name in zip(axes[0], names):
+        for m, style in zip(MIXED + ("AF",), ("-", "--", ":", "-.")):
+            with h5py.File(os.path.join(OUT, f"{name}_{preset}_M{m}.h5"), "r") as f:
+                h = f["/history"]
+                load = h["stage"][:] == 0
+                u, ct = h["stroke"][:][load], h["c_over_t"][:][load]
+                label = "isotropic" if m == 1.0 else (f"M = {m:g} (linear)" if m != "AF" else "AF (saturating)")
+                line, = ax.plot(u, ct, style, label=label)
+                ax.plot([u[-1]], [h.attrs["unloaded_c_over_t"]], "o", color=line.get_color(), mfc="none")
+        ax.set_title(name)
+        ax.set_xlabel("stroke U (mm)")
+        ax.set_ylabel("C/t (circle: after springback)")
+        ax.grid(alpha=0.3)
+    axes[0][0].legend(fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(tfruns.root, "docs", "figures", "hardening_springback.png")
+    fig.savefig(path, dpi=110)
+    print(f"figure: {path}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--cases", default=",".join(CASES))
@@ -72,6 +99,7 @@ def main():
     print(text)
     with open(os.path.join(OUT, "table.md"), "w") as f:
         f.write(text + "\n")
+    figure(a.cases.split(","), a.preset)
 
 
 if __name__ == "__main__":
