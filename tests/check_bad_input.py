@@ -82,6 +82,9 @@ cases = [
     (["-hardening", "chaboche", "-material_law", "ludwik"], "-hardening chaboche needs -material_kinematic"),
     (["-hardening", "chaboche", "-material_law", "ludwik", "-material_kinematic", "1e6,0"],
      "-material_kinematic: the backstresses outgrow the flow curve"),
+    # Hill's yield: r-values that are not positive, both forms at once.
+    (["-material_r", "1.5,1,-1"], "r-values must be positive"),
+    (["-material_r", "1.5,1,0.7", "-material_hill", "0.5,0.5,0.5,1.5"], "-material_r and -material_hill"),
 ]
 with open(out("stray.opts"), "w") as fh:
     fh.write("-material_law ludwik -material_e 1000 -material_nu 0.3 -material_sy 10 -material_k 5 -material_n 0.5\n"
@@ -100,7 +103,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 49 and len(selected) == 5, f"{len(cases)} cases on 1 rank (49), {len(selected)} on 2 (5)")
+k.check(len(cases) == 51 and len(selected) == 5, f"{len(cases)} cases on 1 rank (51), {len(selected)} on 2 (5)")
 
 
 def refused(np_, extra, needle):

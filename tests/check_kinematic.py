@@ -194,7 +194,7 @@ run(tf, mpirun, 1, CYC + ["-output", out("ck_part.h5"), "-checkpoint", out("ck.h
 run(tf, mpirun, 1, CYC + ["-output", out("ck_part.h5"), "-restart", out("ck.h5")])
 with h5py.File(out("ck_full.h5"), "r") as a, h5py.File(out("ck_part.h5"), "r") as b:
     worst = max(np.abs(a["/history"][c][:] - b["/history"][c][:]).max() / max(np.abs(a["/history"][c][:]).max(), 1e-300)
-                for c in ("stroke", "load", "w_int"))
+                if len(a["/history"][c]) == len(b["/history"][c]) else np.inf for c in ("stroke", "load", "w_int"))
     rows = len(a["/history"]["stroke"])
 k.check(worst <= 1e-12, f"restart from increment 80 of {rows - 1} (past the first reversal): history within {worst:.1e}")
 

@@ -150,8 +150,10 @@ PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double 
   // mid-rotated frame, the other half (forward scheme: all at once, first order).
   const StressRotation turn(prm_.kinematics, omega, midpoint ? 0.5 : 1.0);
   const int nback = material_->backstresses();
+  const bool axes = material_->anisotropic();
   turn.Apply(ps.sigma);
   for (int k = 0; k < nback; ++k) turn.Apply(ps.back[k]);
+  if (axes) ps.frame += turn.Angle();
   // The internal work is taken in the frame of the constitutive increment: the
   // stress turned by the first half rotation and the updated one before the
   // second (midpoint); the forward scheme's start stress as it always was.
@@ -186,6 +188,7 @@ PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double 
   if (midpoint) {
     turn.Apply(ps.sigma);
     for (int k = 0; k < nback; ++k) turn.Apply(ps.back[k]);
+    if (axes) ps.frame += turn.Angle();
   }
   // Points that reach the yield surface in this increment (the limiter and
   // those grouped with it), or pass it, are plastic from now on.

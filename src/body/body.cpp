@@ -30,6 +30,16 @@ PetscErrorCode Body::Setup(const Mesh &mesh, const BodyParams &prm)
     deps_limit_ = std::min(deps_limit_, prm.rmin_deps_yield * material_->YieldStress(0.0) / prm.material.E);
   cells_ = fe::CellFormulation(prm.element, (int)mesh.num_cells);
   state_.assign(fe::kGauss * mesh.num_cells, PointState{});
+  if (material_->anisotropic())
+    for (PetscInt e = 0; e < mesh.num_cells; ++e) {
+      double xe[2 * fe::kNodes], xg[fe::kGauss][2];
+      for (int a = 0; a < fe::kNodes; ++a)
+        for (int k = 0; k < 2; ++k) xe[2 * a + k] = mesh.x0[2 * mesh.cell_nodes[fe::kNodes * e + a] + k];
+      fe::GaussPoints(xe, xg);
+      for (int g = 0; g < fe::kGauss; ++g)
+        state_[fe::kGauss * e + g].frame =
+          prm.material.axes == "tube" ? std::atan2(xg[g][1], xg[g][0]) : prm.material.axes_angle;
+    }
   yield_factor_.assign(state_.size(), kNever);
   fraction_.assign(state_.size(), 1.0);
   onset_.assign(state_.size(), PointState{});
@@ -121,6 +131,7 @@ PointState Body::OnsetState(const PointState &elastic, const Voigt &deps, double
   const StressRotation turn(ObjectiveScheme::Forward, m * omega);
   turn.Apply(on.sigma);
   for (int k = 0; k < material_->backstresses(); ++k) turn.Apply(on.back[k]);
+  if (material_->anisotropic()) on.frame += turn.Angle();
   material_->Update(on, Scaled(deps, m));
   on.plastic = true;
   return on;

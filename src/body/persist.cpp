@@ -29,6 +29,10 @@ PetscErrorCode Body::Persist(Archive &ar)
     for (int b = 0; b < nback; ++b)
       std::copy(state_[i].back[b].begin(), state_[i].back[b].end(), &back[kPerBack * i + kNumStress * b]);
   if (nback > 0) PetscCall(ar.CellData("backstresses", back, kPerBack * fe::kGauss));
+  // Anisotropic yield: each point's material axes.
+  std::vector<double> frames(material_->anisotropic() ? state_.size() : 0);
+  for (size_t i = 0; i < frames.size() && !ar.reading(); ++i) frames[i] = state_[i].frame;
+  if (!frames.empty()) PetscCall(ar.CellData("frames", frames, fe::kGauss));
   // qm6: the incompatible modes' condensation of each cell's last tangent.
   auto &cond = cells_.condensations();
   constexpr int kPerCell = fe::kInternal * fe::kDofs;
@@ -50,6 +54,7 @@ PetscErrorCode Body::Persist(Archive &ar)
     const double *d = &points[kPerPoint * i];
     std::copy(d, d + kNumStress, p.sigma.begin());
     p.ep = d[kNumStress], p.hslope = d[kNumStress + 1], p.plastic = d[kNumStress + 2] != 0;
+    if (!frames.empty()) p.frame = frames[i];
     for (int b = 0; b < nback; ++b)
       std::copy(&back[kPerBack * i + kNumStress * b], &back[kPerBack * i + kNumStress * (b + 1)], p.back[b].begin());
   }

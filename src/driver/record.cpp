@@ -219,6 +219,14 @@ PetscErrorCode Problem::WriteFields(ResultWriter &writer, PetscInt step, double 
       const double vals[7] = {s[0], s[1], s[2], s[3], VonMises(s), ps.ep, ps.plastic ? 1.0 : 0.0};
       for (int k = 0; k < 7; ++k) cells[k].values[e] += vals[k] / fe::kGauss;
     }
+  // Anisotropic yield: the material's radial axis (degrees from x; the cell's mean of its points').
+  if (body_.material().anisotropic()) {
+    CellField f{"material_axes", std::vector<double>(mesh_.num_cells, 0.0)};
+    for (PetscInt e = 0; e < mesh_.num_cells; ++e)
+      for (int g = 0; g < fe::kGauss; ++g)
+        f.values[e] += body_.state()[fe::kGauss * e + g].frame * 180 / M_PI / fe::kGauss;
+    cells.push_back(std::move(f));
+  }
   // Kinematic hardening: the sum of the backstresses (the yield surface's centre).
   if (body_.material().backstresses() > 0) {
     const char *names[kNumStress] = {"backstress_xx", "backstress_yy", "backstress_zz", "backstress_xy"};

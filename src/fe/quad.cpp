@@ -22,6 +22,16 @@ void ShapeFunctions(double xi, double eta, double n[kNodes], double dn[kNodes][2
   }
 }
 
+void GaussPoints(const double xe[2 * kNodes], double xg[kGauss][2])
+{
+  for (int g = 0; g < kGauss; ++g) {
+    double n[kNodes], dn[kNodes][2];
+    ShapeFunctions(kXiGauss[g][0], kXiGauss[g][1], n, dn);
+    xg[g][0] = xg[g][1] = 0;
+    for (int a = 0; a < kNodes; ++a) xg[g][0] += n[a] * xe[2 * a], xg[g][1] += n[a] * xe[2 * a + 1];
+  }
+}
+
 namespace {
 // The shape functions and their natural derivatives at the 2x2 Gauss points
 // (index g) and at the centre (index kGauss), evaluated once: every cell's

@@ -157,6 +157,32 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                                     "tubeform", pairs, &n, &set));
     if (set) opt.material.kinematic.assign(pairs, pairs + n);
   }
+  {
+    PetscReal r[3] = {0}, fghl[4] = {0};
+    PetscInt nr = 3, nh = 4;
+    read.Note("-material_r");
+    PetscCall(PetscOptionsRealArray("-material_r",
+                                    "Hill 1948 yield from the Lankford coefficients r0,r45,r90 (0: along the tube, 90: "
+                                    "across; r45 does not act in plane strain); 1,1,1: von Mises",
+                                    "tubeform", r, &nr, &set));
+    if (set) opt.material.lankford.assign(r, r + nr);
+    read.Note("-material_hill");
+    PetscCall(PetscOptionsRealArray("-material_hill",
+                                    "Hill 1948 yield from F,G,H,L in the tube's axes (1 axial, 2 hoop, 3 radial; "
+                                    "von Mises: 0.5,0.5,0.5,1.5)",
+                                    "tubeform", fghl, &nh, &set));
+    if (set) opt.material.hill.assign(fghl, fghl + nh);
+  }
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-material_axes",
+                       "The material's radial axis for -material_r/-material_hill: tube (from the tube's centre to "
+                       "the point, turning with the material) or fixed (at -material_axes_angle)",
+                       {"tube", "fixed"}, opt.material.axes));
+  {
+    double degrees = opt.material.axes_angle * 180 / M_PI;
+    PetscCall(read.Real(PetscOptionsObject, "-material_axes_angle",
+                        "With -material_axes fixed: the radial axis's angle from x (degrees)", degrees));
+    opt.material.axes_angle = degrees * M_PI / 180;
+  }
   PetscCall(ChooseWord(PetscOptionsObject, read, "-hardening",
                        "isotropic (the flow curve expands the yield surface), or chaboche (the backstresses of "
                        "-material_kinematic move it; the same monotonic flow curve)",

@@ -44,6 +44,30 @@ PetscErrorCode CheckKinematic(MPI_Comm comm, const MaterialParams &m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// Hill 1948: positive r-values or F, G, H, L whose quadratic form is positive on deviators; with isotropic hardening.
+PetscErrorCode CheckHill(MPI_Comm comm, const MaterialParams &m)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(m.lankford.empty() || m.hill.empty(), comm, PETSC_ERR_USER_INPUT,
+             "-material_r and -material_hill: give one of the two");
+  PetscCheck(m.lankford.empty() || m.lankford.size() == 3, comm, PETSC_ERR_USER_INPUT,
+             "-material_r: give r0,r45,r90 (got %d numbers)", (int)m.lankford.size());
+  for (double r : m.lankford)
+    PetscCheck(r > 0 && std::isfinite(r), comm, PETSC_ERR_USER_INPUT, "-material_r: %g: r-values must be positive", r);
+  PetscCheck(m.hill.empty() || m.hill.size() == 4, comm, PETSC_ERR_USER_INPUT,
+             "-material_hill: give F,G,H,L (got %d numbers)", (int)m.hill.size());
+  if (m.hill.size() == 4) {
+    const double f = m.hill[0], g = m.hill[1], h = m.hill[2], l = m.hill[3];
+    PetscCheck(f * g + g * h + h * f > 0 && f + g > 0 && g + h > 0 && h + f > 0 && l > 0, comm, PETSC_ERR_USER_INPUT,
+               "-material_hill %g,%g,%g,%g: need FG + GH + HF > 0, F + G, G + H, H + F > 0 and L > 0 (a closed yield "
+               "surface)",
+               f, g, h, l);
+  }
+  PetscCheck(!HillCoefficients(m) || m.hardening == "isotropic", comm, PETSC_ERR_USER_INPUT,
+             "-hardening chaboche with Hill's yield (-material_r, -material_hill): not available; use one of the two");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace
 
 PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
@@ -126,6 +150,7 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
                "-material_table: the initial yield stress must be positive (got %g)", t[1]);
   }
   PetscCall(CheckKinematic(comm, m));
+  PetscCall(CheckHill(comm, m));
   PetscCheck(opt.die_r_apex >= 0 && opt.die_r_apex < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,
              "-die_r_apex %g: must lie in [0, -tube_ro)", opt.die_r_apex);
   PetscCheck(opt.die_u_close >= 0 && opt.die_r_edge >= 0, comm, PETSC_ERR_USER_INPUT,

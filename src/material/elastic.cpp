@@ -46,9 +46,13 @@ StressRotation::StressRotation(ObjectiveScheme scheme, double omega, double frac
   }
   // Q = (I - W/2)^-1 (I + W/2) = [[c, s], [-s, c]], a rotation by phi = 2 atan(omega/2);
   // a fraction of it turns by fraction * phi.
-  const double phi = 2 * std::atan(0.5 * omega) * fraction;
-  c_ = std::cos(phi), s_ = std::sin(phi);
+  phi_ = 2 * std::atan(0.5 * omega) * fraction;
+  c_ = std::cos(phi_), s_ = std::sin(phi_);
 }
+
+// W = [[0, omega], [-omega, 0]] is the spin of a counter-clockwise turn by -omega
+// (v = dtheta (-y, x) has W_xy = -dtheta): Q = [[c, s], [-s, c]] turns by -phi.
+double StressRotation::Angle() const { return scheme_ == ObjectiveScheme::Forward ? -omega_ : -phi_; }
 
 void StressRotation::Apply(Voigt &sigma) const
 {

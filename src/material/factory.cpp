@@ -1,6 +1,7 @@
 #include "tubeform/material/factory.hpp"
 
 #include "tubeform/material/hardening.hpp"
+#include "tubeform/material/hill.hpp"
 #include "tubeform/material/j2.hpp"
 #include "tubeform/material/kinematic.hpp"
 
@@ -21,6 +22,17 @@ std::unique_ptr<Hardening> MakeHardening(const MaterialParams &m)
   return h;
 }
 
+std::optional<std::array<double, 4>> HillCoefficients(const MaterialParams &m)
+{
+  std::array<double, 4> fghl{0.5, 0.5, 0.5, 1.5}; // von Mises
+  if (m.hill.size() == 4)
+    fghl = {m.hill[0], m.hill[1], m.hill[2], m.hill[3]};
+  else if (m.lankford.size() == 3)
+    fghl = HillFromR(m.lankford[0], m.lankford[2]);
+  if (fghl == std::array<double, 4>{0.5, 0.5, 0.5, 1.5}) return std::nullopt;
+  return fghl;
+}
+
 std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, bool drift_correction)
 {
   if (m.law == "elastic") return std::make_unique<Elastic>(m.E, m.nu);
@@ -30,6 +42,8 @@ std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, 
     h = std::make_unique<RemainderHardening>(std::move(h), back);
     return std::make_unique<KinematicJ2>(m.E, m.nu, std::move(h), std::move(back), dep_ref, drift_correction);
   }
+  if (const auto fghl = HillCoefficients(m))
+    return std::make_unique<HillPlasticity>(m.E, m.nu, std::move(h), *fghl, dep_ref, drift_correction);
   return std::make_unique<J2Plasticity>(m.E, m.nu, std::move(h), dep_ref, drift_correction);
 }
 

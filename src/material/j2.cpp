@@ -88,6 +88,15 @@ double J2Plasticity::PlasticStep(double ep, double a, double sbar, double hslope
   return Root(g, 0, hi, glo, ghi, hslope > 0 ? target / (3 * g_ + hslope) : 0);
 }
 
+double J2Plasticity::SecantStep(double ep, double target, double m, double hi, double hslope) const
+{
+  const double s0 = h_->YieldStress(ep);
+  const auto g = [&](double x) { return m * x + h_->YieldStress(ep + x) - s0 - target; };
+  const double glo = g(0), ghi = g(hi);
+  if (ghi <= 0) return hi;
+  return Root(g, 0, hi, glo, ghi, hslope > 0 ? target / (m + hslope) : 0);
+}
+
 UpdateInfo J2Plasticity::Update(PointState &s, const Voigt &deps) const
 {
   UpdateInfo info;

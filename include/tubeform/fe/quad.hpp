@@ -39,6 +39,8 @@ struct QuadGeometry {
 
 // Gauss point natural coordinates (+-1/sqrt 3) and the shape functions there.
 void ShapeFunctions(double xi, double eta, double n[kNodes], double dn[kNodes][2]);
+// The coordinates of a cell's Gauss points (in the order of the point states).
+void GaussPoints(const double xe[2 * kNodes], double xg[kGauss][2]);
 
 // Row-sum lumped mass of a cell: m_a = rho * integral of N_a over the cell
 // (2x2 Gauss), per unit thickness. Exact for the bilinear shape functions.

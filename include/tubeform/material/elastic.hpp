@@ -26,6 +26,9 @@ struct PointState {
   // Deviatoric backstresses of kinematic hardening (zero without it), turned
   // with the stress by the spin; the yield surface is centred on their sum.
   std::array<Voigt, kMaxBackstresses> back{};
+  // Anisotropic yield: the angle (rad, from x) of the material's radial axis,
+  // turned with the stress by the spin.
+  double frame = 0;
 };
 
 // What one material update did (per unit volume).
@@ -47,6 +50,14 @@ struct MaterialParams {
   // one pair, gamma 0 linear) take their share of it (material/kinematic.hpp).
   std::string hardening = "isotropic";
   std::vector<double> kinematic;
+  // Hill 1948 in the tube's axes (1 axial, 2 hoop, 3 radial): F, G, H, L, or
+  // the Lankford coefficients r0, r45, r90 they follow from (both empty, or
+  // every r = 1: von Mises).
+  std::vector<double> hill, lankford;
+  // Where the material's radial axis points at the start: "tube" (from the
+  // tube's centre, the origin, to the point) or "fixed" (at axes_angle, rad).
+  std::string axes = "tube";
+  double axes_angle = 0;
 };
 
 // A constitutive law in rate form. The objective part of the stress update
@@ -74,6 +85,8 @@ public:
   virtual bool OnSurface(const PointState &) const { return false; }
   // How many backstresses the law evolves (0: none to turn with the stress).
   virtual int backstresses() const { return 0; }
+  // Whether the law reads the point's material axes (PointState::frame).
+  virtual bool anisotropic() const { return false; }
 };
 
 class Elastic : public Material {
@@ -112,10 +125,12 @@ class StressRotation {
 public:
   StressRotation(ObjectiveScheme scheme, double omega, double fraction = 1.0);
   void Apply(Voigt &sigma) const;
+  // The angle it turns by (rad, counter-clockwise): what a material axis turns by.
+  double Angle() const;
 
 private:
   ObjectiveScheme scheme_;
-  double omega_ = 0, c_ = 1, s_ = 0; // Forward: the spin turned; Midpoint: cos and sin of the angle
+  double omega_ = 0, c_ = 1, s_ = 0, phi_ = 0; // Forward: the spin turned; Midpoint: the angle, its cos and sin
 };
 
 // Deviator {sxx, syy, szz, sxy} and the equivalent (von Mises) stress.

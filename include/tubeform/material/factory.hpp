@@ -1,12 +1,17 @@
 // The constitutive law of a run from its material parameters.
 #pragma once
 
+#include <array>
 #include <memory>
+#include <optional>
 
 #include "tubeform/material/elastic.hpp"
 #include "tubeform/material/hardening.hpp"
 
 namespace tf {
+
+// Hill 1948's F, G, H, L of the material (material/hill.hpp), none for von Mises.
+std::optional<std::array<double, 4>> HillCoefficients(const MaterialParams &m);
 
 // The flow curve of a plastic law ("ludwik", "swift", "table").
 std::unique_ptr<Hardening> MakeHardening(const MaterialParams &m);

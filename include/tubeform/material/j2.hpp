@@ -53,6 +53,8 @@ public:
   // for dep >= 0: the plastic strain step whose secant modulus is the H' of the
   // update. `hslope`: the last plastic step's modulus (0: none), the first guess.
   double PlasticStep(double ep, double a, double sbar, double hslope = 0, const KinematicShare *kin = nullptr) const;
+  // The same equation in general form: m dep + sigma_y(ep + dep) - sigma_y(ep) = target, dep in [0, hi = target / m].
+  double SecantStep(double ep, double target, double m, double hi, double hslope) const;
 
 protected:
   Elastic elastic_;
