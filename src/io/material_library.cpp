@@ -97,6 +97,13 @@ PetscErrorCode ReadFile(MPI_Comm comm, const std::string &file, const std::strin
   PetscInt npairs = 2 * kMaxBackstresses;
   PetscCall(PetscOptionsGetRealArray(f.o, nullptr, "-material_kinematic", pairs, &npairs, &set));
   p.kinematic.assign(pairs, pairs + (set ? npairs : 0));
+  // Hill's anisotropic yield (r-values, or F, G, H, L).
+  PetscReal r[3], fghl[4];
+  PetscInt nr = 3, nh = 4;
+  PetscCall(PetscOptionsGetRealArray(f.o, nullptr, "-material_r", r, &nr, &set));
+  p.lankford.assign(r, r + (set ? nr : 0));
+  PetscCall(PetscOptionsGetRealArray(f.o, nullptr, "-material_hill", fghl, &nh, &set));
+  p.hill.assign(fghl, fghl + (set ? nh : 0));
   // Whatever the file set that was not read above is not a material constant.
   PetscInt left;
   char **names, **values;
@@ -105,7 +112,7 @@ PetscErrorCode ReadFile(MPI_Comm comm, const std::string &file, const std::strin
   PetscCall(PetscOptionsLeftRestore(f.o, &left, &names, &values));
   PetscCheck(stray.empty(), comm, PETSC_ERR_USER_INPUT,
              "-material %s: %s is not a constant of its -material_law %s (a material file sets -material_e, _nu, "
-             "_density, _law, the law's _sy, _k, _n or _table, and _kinematic)",
+             "_density, _law, the law's _sy, _k, _n or _table, and _kinematic, _r or _hill)",
              file.c_str(), stray.c_str(), p.law.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
