@@ -16,6 +16,8 @@ const char *const kElements[] = {"q4", "bbar", "qm6", "qm6bar", "auto"};
 const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
 // Reversals -tension_cycle takes at most.
 constexpr PetscInt kMaxTensionCycle = 16;
+// Flow-curve points -material_table takes at most (ep, sigma pairs).
+constexpr PetscInt kMaxTable = 200;
 
 // One of a list of words for a string-valued option; the current value is the default. Called between
 // PetscOptionsBegin and PetscOptionsEnd (it needs their PetscOptionsObject).
@@ -32,6 +34,21 @@ PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &re
     if (value == list[k]) choice = k;
   PetscCall(PetscOptionsEList(name, help, "tubeform", list, n, list[choice], &choice, nullptr));
   value = list[choice];
+  PetscFunctionReturn(0);
+}
+
+// A list of at most `max` numbers; `value` is kept when the option is not given.
+PetscErrorCode RealList(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
+                        PetscInt max, std::vector<double> &value)
+{
+  std::vector<PetscReal> buf(max, 0.0); // -help prints the first entry as the default
+  PetscInt n = max;
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  read.Note(name);
+  PetscCall(PetscOptionsRealArray(name, help, "tubeform", buf.data(), &n, &set));
+  if (set) value.assign(buf.begin(), buf.begin() + n);
   PetscFunctionReturn(0);
 }
 
@@ -138,41 +155,21 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                               "Flow curve: elastic (no yield), ludwik sy+K ep^n, swift K(ep0+ep)^n, table", "tubeform",
                               kLaws, 4, kLaws[choice], &choice, nullptr));
   opt.material.law = kLaws[choice];
-  {
-    PetscReal table[200] = {0}; // -help prints the first entry as the default
-    PetscInt n = 200;
-    read.Note("-material_table");
-    PetscCall(PetscOptionsRealArray("-material_table",
-                                    "Flow curve for -material_law table: ep0,sy0,ep1,sy1,... (ep0 = 0, ep increasing)",
-                                    "tubeform", table, &n, &set));
-    if (set) opt.material.table.assign(table, table + n);
-  }
-  {
-    PetscReal pairs[2 * kMaxBackstresses] = {0};
-    PetscInt n = 2 * kMaxBackstresses;
-    read.Note("-material_kinematic");
-    PetscCall(PetscOptionsRealArray("-material_kinematic",
-                                    "Backstresses for -hardening chaboche: C1,gamma1[,C2,gamma2[,C3,gamma3]] (MPa, -; "
-                                    "gamma 0: linear); their share of the flow curve moves to the kinematic part",
-                                    "tubeform", pairs, &n, &set));
-    if (set) opt.material.kinematic.assign(pairs, pairs + n);
-  }
-  {
-    PetscReal r[3] = {0}, fghl[4] = {0};
-    PetscInt nr = 3, nh = 4;
-    read.Note("-material_r");
-    PetscCall(PetscOptionsRealArray("-material_r",
-                                    "Hill 1948 yield from the Lankford coefficients r0,r45,r90 (0: along the tube, 90: "
-                                    "across; r45 does not act in plane strain); 1,1,1: von Mises",
-                                    "tubeform", r, &nr, &set));
-    if (set) opt.material.lankford.assign(r, r + nr);
-    read.Note("-material_hill");
-    PetscCall(PetscOptionsRealArray("-material_hill",
-                                    "Hill 1948 yield from F,G,H,L in the tube's axes (1 axial, 2 hoop, 3 radial; "
-                                    "von Mises: 0.5,0.5,0.5,1.5)",
-                                    "tubeform", fghl, &nh, &set));
-    if (set) opt.material.hill.assign(fghl, fghl + nh);
-  }
+  PetscCall(RealList(PetscOptionsObject, read, "-material_table",
+                     "Flow curve for -material_law table: ep0,sy0,ep1,sy1,... (ep0 = 0, ep increasing)", kMaxTable,
+                     opt.material.table));
+  PetscCall(RealList(PetscOptionsObject, read, "-material_kinematic",
+                     "Backstresses for -hardening chaboche: C1,gamma1[,C2,gamma2[,C3,gamma3]] (MPa, -; gamma 0: "
+                     "linear); their share of the flow curve moves to the kinematic part",
+                     2 * kMaxBackstresses, opt.material.kinematic));
+  PetscCall(RealList(PetscOptionsObject, read, "-material_r",
+                     "Hill 1948 yield from the Lankford coefficients r0,r45,r90 (0: along the tube, 90: across; r45 "
+                     "does not act in plane strain); 1,1,1: von Mises",
+                     3, opt.material.lankford));
+  PetscCall(RealList(PetscOptionsObject, read, "-material_hill",
+                     "Hill 1948 yield from F,G,H,L in the tube's axes (1 axial, 2 hoop, 3 radial; von Mises: "
+                     "0.5,0.5,0.5,1.5)",
+                     4, opt.material.hill));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-material_axes",
                        "The material's radial axis for -material_r/-material_hill: tube (from the tube's centre to "
                        "the point, turning with the material) or fixed (at -material_axes_angle)",
@@ -327,17 +324,11 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       opt.slide_back));
   PetscCall(read.Real(PetscOptionsObject, "-tension_strain",
                       "tension scene: final nominal strain in x (negative: compression)", opt.tension_strain));
-  {
-    PetscReal cycle[kMaxTensionCycle] = {0}; // -help prints the first entry as the default
-    PetscInt n = kMaxTensionCycle;
-    read.Note("-tension_cycle");
-    PetscCall(PetscOptionsRealArray("-tension_cycle",
-                                    "tension scene: nominal strains the block is then taken to in turn, each over "
-                                    "-unload_increments trial increments (a tension-compression cycle: -tension_strain "
-                                    "0.02 -tension_cycle -0.02,0.02)",
-                                    "tubeform", cycle, &n, &set));
-    if (set) opt.tension_cycle.assign(cycle, cycle + n);
-  }
+  PetscCall(RealList(PetscOptionsObject, read, "-tension_cycle",
+                     "tension scene: nominal strains the block is then taken to in turn, each over "
+                     "-unload_increments trial increments (a tension-compression cycle: -tension_strain 0.02 "
+                     "-tension_cycle -0.02,0.02)",
+                     kMaxTensionCycle, opt.tension_cycle));
   PetscCall(read.Real(PetscOptionsObject, "-rotation_angle",
                       "rotation scene: rigid rotation after the prestretch (degrees)", opt.rotation_angle));
   PetscCall(read.Real(PetscOptionsObject, "-rotation_strain",

@@ -119,18 +119,8 @@ double HillPlasticity::YieldOnset(const PointState &s, const Voigt &deps, double
   // as the stress does: only the law's increment and the Kirchhoff term change
   // the stress there. Quadratic in r: Q(s0 + r ds) = sy^2.
   (void)omega;
-  Voigt ds{};
-  const Mat4 &de = elastic_.matrix();
-  const double trace = deps[0] + deps[1] + deps[2];
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) ds[r] += de[r][c] * deps[c];
-    ds[r] -= s.sigma[r] * trace;
-  }
-  const double qa = Quadratic(ds, s.frame), qb = 2 * Bilinear(s.sigma, ds, s.frame),
-               qc = Quadratic(s.sigma, s.frame) - sy * sy;
-  if (qa <= 0) return kNever;
-  const double root = std::sqrt(qb * qb - 4 * qa * qc);
-  return qb >= 0 ? -2 * qc / (qb + root) : (-qb + root) / (2 * qa);
+  const Voigt ds = ElasticPath(s, deps, 0.0);
+  return OnsetRoot(Quadratic(ds, s.frame), 2 * Bilinear(s.sigma, ds, s.frame), Quadratic(s.sigma, s.frame) - sy * sy);
 }
 
 bool HillPlasticity::Loading(const PointState &s, const Voigt &deps) const

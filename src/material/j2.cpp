@@ -138,8 +138,16 @@ double J2Plasticity::YieldOnset(const PointState &s, const Voigt &deps, double o
   // point there is switched to plastic by Loading, or marked at the commit.
   const double sy = h_->YieldStress(s.ep);
   if (VonMises(s.sigma) >= (1 - kOnSurface) * sy) return kNever;
-  // Linear stress path sigma + r dsigma (elastic law, spin and Kirchhoff term);
-  // 3/2 |dev(sigma + r dsigma)|^2 = sigma_y^2 is a quadratic in r.
+  // Linear stress path sigma + r dsigma; 3/2 |dev(sigma + r dsigma)|^2 = sigma_y^2 is a quadratic in r.
+  const Voigt s0 = Deviator(s.sigma), d1 = Deviator(ElasticPath(s, deps, omega));
+  const auto dot = [](const Voigt &x, const Voigt &y) {
+    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + 2 * x[3] * y[3];
+  };
+  return OnsetRoot(1.5 * dot(d1, d1), 3 * dot(s0, d1), 1.5 * dot(s0, s0) - sy * sy);
+}
+
+Voigt J2Plasticity::ElasticPath(const PointState &s, const Voigt &deps, double omega) const
+{
   Voigt ds{};
   const Mat4 &de = elastic_.matrix();
   for (int r = 0; r < 4; ++r)
@@ -148,11 +156,11 @@ double J2Plasticity::YieldOnset(const PointState &s, const Voigt &deps, double o
   RotateStress(ObjectiveScheme::Forward, omega, rotated);
   const double trace = deps[0] + deps[1] + deps[2];
   for (int r = 0; r < 4; ++r) ds[r] += rotated[r] - s.sigma[r] - s.sigma[r] * trace;
-  const Voigt s0 = Deviator(s.sigma), d1 = Deviator(ds);
-  const auto dot = [](const Voigt &x, const Voigt &y) {
-    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + 2 * x[3] * y[3];
-  };
-  const double qa = 1.5 * dot(d1, d1), qb = 3 * dot(s0, d1), qc = 1.5 * dot(s0, s0) - sy * sy;
+  return ds;
+}
+
+double J2Plasticity::OnsetRoot(double qa, double qb, double qc)
+{
   if (qa <= 0) return kNever;
   const double root = std::sqrt(qb * qb - 4 * qa * qc); // real since qc < 0 < qa
   // The positive root, in the form free of cancellation for either sign of qb.

@@ -132,26 +132,14 @@ double KinematicJ2::YieldOnset(const PointState &s, const Voigt &deps, double om
   const double sy = h_->YieldStress(s.ep);
   const Voigt x0 = Relative(s);
   if (Equivalent(x0) >= (1 - kOnSurface) * sy) return kNever;
-  // Linear path of xi: the stress as in j2.cpp (elastic law, spin, Kirchhoff
-  // term) less the backstresses' turn by the spin.
-  Voigt ds{};
-  const Mat4 &de = elastic_.matrix();
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) ds[r] += de[r][c] * deps[c];
-  Voigt rotated = s.sigma;
-  RotateStress(ObjectiveScheme::Forward, omega, rotated);
-  const double trace = deps[0] + deps[1] + deps[2];
-  for (int r = 0; r < 4; ++r) ds[r] += rotated[r] - s.sigma[r] - s.sigma[r] * trace;
-  Voigt d1 = Deviator(ds);
+  // Linear path of xi: the stress's elastic path less the backstresses' turn by the spin.
+  Voigt d1 = Deviator(ElasticPath(s, deps, omega));
   for (size_t i = 0; i < back_.size(); ++i) {
     Voigt turned = s.back[i];
     RotateStress(ObjectiveScheme::Forward, omega, turned);
     for (int r = 0; r < 4; ++r) d1[r] -= turned[r] - s.back[i][r];
   }
-  const double qa = 1.5 * Dot(d1, d1), qb = 3 * Dot(x0, d1), qc = 1.5 * Dot(x0, x0) - sy * sy;
-  if (qa <= 0) return kNever;
-  const double root = std::sqrt(qb * qb - 4 * qa * qc);
-  return qb >= 0 ? -2 * qc / (qb + root) : (-qb + root) / (2 * qa);
+  return OnsetRoot(1.5 * Dot(d1, d1), 3 * Dot(x0, d1), 1.5 * Dot(x0, x0) - sy * sy);
 }
 
 bool KinematicJ2::Loading(const PointState &s, const Voigt &deps) const
