@@ -17,8 +17,6 @@ Voigt ToAxes(const Voigt &t, double angle)
 
 Voigt FromAxes(const Voigt &t, double angle) { return ToAxes(t, -angle); }
 
-double Dot(const Voigt &a, const Voigt &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2 * a[3] * b[3]; }
-
 } // namespace
 
 std::array<double, 4> HillFromR(double r0, double r90)
@@ -44,11 +42,16 @@ double HillPlasticity::Bilinear(const Voigt &a, const Voigt &b, double frame) co
 
 double HillPlasticity::Quadratic(const Voigt &sigma, double frame) const { return Bilinear(sigma, sigma, frame); }
 
+double HillPlasticity::Equivalent(const Voigt &sigma, double frame) const
+{
+  return std::sqrt(std::max(Quadratic(sigma, frame), 0.0));
+}
+
 Voigt HillPlasticity::Normal(const Voigt &sigma, double frame, double &eq) const
 {
   const Voigt x = ToAxes(sigma, frame);
   const double s1 = x[2], s2 = x[1], s3 = x[0];
-  eq = std::sqrt(std::max(Quadratic(sigma, frame), 0.0));
+  eq = Equivalent(sigma, frame);
   if (!(eq > 0)) return {};
   // d sigma_eq / d sigma_ii = (1/2 d(sigma_eq^2)/d sigma_ii) / sigma_eq; the shear's tensor component L s23 / sigma_eq.
   const double d1 = -g_h_ * (s3 - s1) + h_h_ * (s1 - s2), d2 = f_ * (s2 - s3) - h_h_ * (s1 - s2),
@@ -58,7 +61,7 @@ Voigt HillPlasticity::Normal(const Voigt &sigma, double frame, double &eq) const
 
 bool HillPlasticity::OnSurface(const PointState &s) const
 {
-  return std::sqrt(std::max(Quadratic(s.sigma, s.frame), 0.0)) >= (1 - kOnSurface) * h_->YieldStress(s.ep);
+  return Equivalent(s.sigma, s.frame) >= (1 - kOnSurface) * h_->YieldStress(s.ep);
 }
 
 Mat4 HillPlasticity::Tangent(const PointState &s) const
@@ -69,7 +72,7 @@ Mat4 HillPlasticity::Tangent(const PointState &s) const
   const Voigt n = Normal(s.sigma, s.frame, eq);
   if (!(eq > 0)) return d;
   // C_e : n = 2G n for a deviatoric n: D_ep = D_e - (2G)^2 n n / (2G n : n + H').
-  const double two_g = 2 * g_, beta = two_g * two_g / (two_g * Dot(n, n) + Modulus(s));
+  const double two_g = 2 * g_, beta = two_g * two_g / (two_g * TensorDot(n, n) + Modulus(s));
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) d[r][c] -= beta * n[r] * n[c];
   return d;
@@ -82,24 +85,21 @@ UpdateInfo HillPlasticity::Update(PointState &s, const Voigt &deps) const
   double eq;
   const Voigt n = Normal(s.sigma, s.frame, eq);
   const double a = DevDotStrain(n, deps);
-  const Mat4 &de = elastic_.matrix();
-  Voigt dsig{};
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) dsig[r] += de[r][c] * deps[c];
+  const Voigt dsig = ElasticStress(deps);
   if (!(s.plastic && a > 0 && eq > 0)) {
     for (int r = 0; r < 4; ++r) s.sigma[r] += dsig[r] - s.sigma[r] * trace;
     if (s.plastic && a <= 0) s.plastic = false; // elastic unloading
     return info;
   }
   // (T2) with 3G -> 2G n : n and 3G a / sbar -> 2G n : de: the secant over the step's own plastic strain.
-  const double two_g = 2 * g_, nn = Dot(n, n);
+  const double two_g = 2 * g_, nn = TensorDot(n, n);
   const double dep = SecantStep(s.ep, two_g * a, two_g * nn, a / nn, s.hslope);
   const double sy_old = h_->YieldStress(s.ep), sy_new = h_->YieldStress(s.ep + dep);
   for (int r = 0; r < 4; ++r) s.sigma[r] += dsig[r] - two_g * dep * n[r] - s.sigma[r] * trace;
   if (dep > 0) s.hslope = (sy_new - sy_old) / dep;
   s.ep += dep;
   info.dwp = 0.5 * (sy_old + sy_new) * dep;
-  const double eq_new = std::sqrt(std::max(Quadratic(s.sigma, s.frame), 0.0));
+  const double eq_new = Equivalent(s.sigma, s.frame);
   info.drift = eq_new / sy_new - 1;
   if (drift_correction_ && eq_new > 0) {
     // sigma_eq is of degree one in the deviator: scale it back onto the surface, pressure kept.
@@ -114,7 +114,7 @@ double HillPlasticity::YieldOnset(const PointState &s, const Voigt &deps, double
 {
   if (s.plastic) return kNever;
   const double sy = h_->YieldStress(s.ep);
-  if (std::sqrt(std::max(Quadratic(s.sigma, s.frame), 0.0)) >= (1 - kOnSurface) * sy) return kNever;
+  if (Equivalent(s.sigma, s.frame) >= (1 - kOnSurface) * sy) return kNever;
   // The elastic stress path in the material's axes, which turn with the spin
   // as the stress does: only the law's increment and the Kirchhoff term change
   // the stress there. Quadratic in r: Q(s0 + r ds) = sy^2.

@@ -103,10 +103,7 @@ UpdateInfo J2Plasticity::Update(PointState &s, const Voigt &deps) const
   const double trace = deps[0] + deps[1] + deps[2];
   const Voigt dev = Deviator(s.sigma);
   const double sbar = VonMises(s.sigma), a = DevDotStrain(dev, deps);
-  const Mat4 &de = elastic_.matrix();
-  Voigt dsig{};
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) dsig[r] += de[r][c] * deps[c];
+  const Voigt dsig = ElasticStress(deps);
   if (s.plastic && a > 0 && sbar > 0) {
     // Tangent update with H' the secant over this step's own plastic strain:
     // dsigma = C_e de - 3G (dep / sbar) s, exact on a proportional path.
@@ -140,18 +137,21 @@ double J2Plasticity::YieldOnset(const PointState &s, const Voigt &deps, double o
   if (VonMises(s.sigma) >= (1 - kOnSurface) * sy) return kNever;
   // Linear stress path sigma + r dsigma; 3/2 |dev(sigma + r dsigma)|^2 = sigma_y^2 is a quadratic in r.
   const Voigt s0 = Deviator(s.sigma), d1 = Deviator(ElasticPath(s, deps, omega));
-  const auto dot = [](const Voigt &x, const Voigt &y) {
-    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2] + 2 * x[3] * y[3];
-  };
-  return OnsetRoot(1.5 * dot(d1, d1), 3 * dot(s0, d1), 1.5 * dot(s0, s0) - sy * sy);
+  return OnsetRoot(1.5 * TensorDot(d1, d1), 3 * TensorDot(s0, d1), 1.5 * TensorDot(s0, s0) - sy * sy);
 }
 
-Voigt J2Plasticity::ElasticPath(const PointState &s, const Voigt &deps, double omega) const
+Voigt J2Plasticity::ElasticStress(const Voigt &deps) const
 {
   Voigt ds{};
   const Mat4 &de = elastic_.matrix();
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) ds[r] += de[r][c] * deps[c];
+  return ds;
+}
+
+Voigt J2Plasticity::ElasticPath(const PointState &s, const Voigt &deps, double omega) const
+{
+  Voigt ds = ElasticStress(deps);
   Voigt rotated = s.sigma;
   RotateStress(ObjectiveScheme::Forward, omega, rotated);
   const double trace = deps[0] + deps[1] + deps[2];

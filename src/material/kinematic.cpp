@@ -6,10 +6,7 @@ namespace tf {
 
 namespace {
 
-// a : b of two symmetric tensors in Voigt stress form (the shear counted twice).
-double Dot(const Voigt &a, const Voigt &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2 * a[3] * b[3]; }
-
-double Equivalent(const Voigt &xi) { return std::sqrt(1.5 * Dot(xi, xi)); }
+double Equivalent(const Voigt &xi) { return std::sqrt(1.5 * TensorDot(xi, xi)); }
 
 } // namespace
 
@@ -45,7 +42,7 @@ Voigt KinematicJ2::Relative(const PointState &s) const
 double KinematicJ2::KinematicModulus(const PointState &s, const Voigt &xi, double xibar) const
 {
   double hk = 0;
-  for (size_t i = 0; i < back_.size(); ++i) hk += back_[i].c - 1.5 * back_[i].gamma * Dot(xi, s.back[i]) / xibar;
+  for (size_t i = 0; i < back_.size(); ++i) hk += back_[i].c - 1.5 * back_[i].gamma * TensorDot(xi, s.back[i]) / xibar;
   return hk;
 }
 
@@ -76,10 +73,7 @@ UpdateInfo KinematicJ2::Update(PointState &s, const Voigt &deps) const
   const double trace = deps[0] + deps[1] + deps[2];
   const Voigt xi = Relative(s);
   const double xibar = Equivalent(xi), a = DevDotStrain(xi, deps);
-  const Mat4 &de = elastic_.matrix();
-  Voigt dsig{};
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) dsig[r] += de[r][c] * deps[c];
+  const Voigt dsig = ElasticStress(deps);
   if (!(s.plastic && a > 0 && xibar > 0)) {
     for (int r = 0; r < 4; ++r) s.sigma[r] += dsig[r] - s.sigma[r] * trace;
     if (s.plastic && a <= 0) s.plastic = false; // elastic unloading
@@ -93,7 +87,7 @@ UpdateInfo KinematicJ2::Update(PointState &s, const Voigt &deps) const
   kin.n = (int)back_.size();
   for (int i = 0; i < kin.n; ++i) {
     const Backstress &b = back_[i];
-    const double along = 1.5 * Dot(xi, s.back[i]) / xibar;
+    const double along = 1.5 * TensorDot(xi, s.back[i]) / xibar;
     kin.gamma[i] = b.gamma;
     kin.amp[i] = b.gamma > 0 ? b.c / b.gamma - along : b.c;
   }
@@ -114,7 +108,7 @@ UpdateInfo KinematicJ2::Update(PointState &s, const Voigt &deps) const
   s.ep += dep;
   // sigma : dep_tensor = (xibar + 3/2 alpha : xi / xibar) dp: the isotropic part and the work stored in the
   // backstresses.
-  info.dwp = (0.5 * (r_old + r_new) + 1.5 * Dot(mid, xi) / xibar) * dep;
+  info.dwp = (0.5 * (r_old + r_new) + 1.5 * TensorDot(mid, xi) / xibar) * dep;
   const Voigt xi_new = Relative(s);
   const double xibar_new = Equivalent(xi_new);
   info.drift = xibar_new / r_new - 1;
@@ -139,7 +133,7 @@ double KinematicJ2::YieldOnset(const PointState &s, const Voigt &deps, double om
     RotateStress(ObjectiveScheme::Forward, omega, turned);
     for (int r = 0; r < 4; ++r) d1[r] -= turned[r] - s.back[i][r];
   }
-  return OnsetRoot(1.5 * Dot(d1, d1), 3 * Dot(x0, d1), 1.5 * Dot(x0, x0) - sy * sy);
+  return OnsetRoot(1.5 * TensorDot(d1, d1), 3 * TensorDot(x0, d1), 1.5 * TensorDot(x0, x0) - sy * sy);
 }
 
 bool KinematicJ2::Loading(const PointState &s, const Voigt &deps) const

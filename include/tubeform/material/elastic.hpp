@@ -138,6 +138,11 @@ Voigt Deviator(const Voigt &s);
 double VonMises(const Voigt &s);
 // The share f of an increment (a step split at the yield onset).
 inline Voigt Scaled(const Voigt &v, double f) { return {f * v[0], f * v[1], f * v[2], f * v[3]}; }
+// a : b of two tensors in Voigt stress form (the shear counted twice).
+inline double TensorDot(const Voigt &a, const Voigt &b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2 * a[3] * b[3];
+}
 // s : e with e in Voigt strain form (gamma_xy = 2 e_xy).
 inline double DevDotStrain(const Voigt &s, const Voigt &e)
 {

@@ -36,6 +36,7 @@ public:
 
   // sigma_eq^2 of a stress in global Voigt form at material axes `frame`, and n (global, tensor components).
   double Quadratic(const Voigt &sigma, double frame) const;
+  double Equivalent(const Voigt &sigma, double frame) const; // sigma_eq
   Voigt Normal(const Voigt &sigma, double frame, double &eq) const;
 
 private:

@@ -57,6 +57,8 @@ public:
   double SecantStep(double ep, double target, double m, double hi, double hslope) const;
 
 protected:
+  // C_e : deps (Voigt strain in, stress out).
+  Voigt ElasticStress(const Voigt &deps) const;
   // The elastic stress change of a step (the law, the spin's turn and the Kirchhoff term), linear in its length.
   Voigt ElasticPath(const PointState &s, const Voigt &deps, double omega) const;
   // The root r in (0, inf) of qa r^2 + qb r + qc = 0 with qc < 0 (the onset on a path), kNever if qa <= 0.
