@@ -3,7 +3,7 @@
 springback, isotropic against mixed and kinematic hardening of the same
 monotonic flow curve.
 
-    /usr/bin/python3 scripts/hardening_study.py [--cases default,cu_29_mu0.05,al_37_mu0.05] [--preset default]
+    /usr/bin/python3 scripts/hardening_study.py [--cases NAME,...] [--preset default] [--figure-cases NAME,...]
 
 The paper gives no cyclic data, so this is a sensitivity study, not a
 calibration: Hodge's mixed hardening with a linear (Prager) backstress taking
@@ -31,9 +31,12 @@ import tfruns  # noqa: E402
 
 OUT = os.path.join(tfruns.root, "results", "hardening")
 # case name -> (options file, Ludwik sigma_y0 and K of its material: METHOD.md Table 1)
-CASES = {"default": ("options/squaring.opts", 165.3, 673.5),
-         "al_37_mu0.05": ("options/squaring_al_37_mu0.05.opts", 165.3, 673.5),
-         "cu_29_mu0.05": ("options/squaring_cu_29_mu0.05.opts", 445.0, 3628.6)}
+AL, CU = (165.3, 673.5), (445.0, 3628.6)
+CASES = {"default": ("options/squaring.opts",) + AL}
+for tube, material in (("al_11.67", AL), ("al_37", AL), ("cu_29", CU)):
+    for mu in ("0.05", "0.20", "0.35"):
+        CASES[f"{tube}_mu{mu}"] = (f"options/squaring_{tube}_mu{mu}.opts",) + material
+FIGURE_CASES = "default,al_37_mu0.05,cu_29_mu0.05"  # the figure's panels (the table has every case)
 MIXED = (1.0, 0.5, 0.0)  # Hodge's M: the isotropic share of the hardening
 AF_SHARE, AF_GAMMA = 0.6, 200.0  # the saturating backstress: 0.6 sigma_y0, reached within p ~ 3 / gamma
 
@@ -87,6 +90,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--cases", default=",".join(CASES))
     ap.add_argument("--preset", default="default")
+    ap.add_argument("--figure-cases", default=FIGURE_CASES, help="the cases the figure draws")
     a = ap.parse_args()
     os.makedirs(OUT, exist_ok=True)
     lines = ["| case | M (isotropic share), or AF | load at the end of loading (N/mm) | C/t loaded | C1/C2 loaded | "
@@ -99,7 +103,7 @@ def main():
     print(text)
     with open(os.path.join(OUT, "table.md"), "w") as f:
         f.write(text + "\n")
-    figure(a.cases.split(","), a.preset)
+    figure([c for c in a.figure_cases.split(",") if c in a.cases.split(",")], a.preset)
 
 
 if __name__ == "__main__":

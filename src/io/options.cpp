@@ -14,7 +14,7 @@ namespace tf {
 namespace {
 const char *const kElements[] = {"q4", "bbar", "qm6", "qm6bar", "auto"};
 const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
-// Reversals -tension_cycle takes at most.
+// Reversals -tension_cycle and -bending_cycle take at most.
 constexpr PetscInt kMaxTensionCycle = 16;
 // Flow-curve points -material_table takes at most (ep, sigma pairs).
 constexpr PetscInt kMaxTable = 200;
@@ -329,6 +329,14 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                      "-unload_increments trial increments (a tension-compression cycle: -tension_strain 0.02 "
                      "-tension_cycle -0.02,0.02)",
                      kMaxTensionCycle, opt.tension_cycle));
+  PetscCall(read.Real(PetscOptionsObject, "-bending_strain",
+                      "bending scene: the outer fibre's nominal strain at the end of the first stage (y > 0; "
+                      "negative: bent the other way)",
+                      opt.bending_strain));
+  PetscCall(RealList(PetscOptionsObject, read, "-bending_cycle",
+                     "bending scene: outer-fibre strains the strip is then taken to in turn, each over "
+                     "-unload_increments trial increments (bend and unbend: -bending_strain 0.01 -bending_cycle 0)",
+                     kMaxTensionCycle, opt.bending_cycle));
   PetscCall(read.Real(PetscOptionsObject, "-rotation_angle",
                       "rotation scene: rigid rotation after the prestretch (degrees)", opt.rotation_angle));
   PetscCall(read.Real(PetscOptionsObject, "-rotation_strain",

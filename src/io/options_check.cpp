@@ -184,6 +184,8 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
              "-shear_gamma %g: must be a finite non-zero shear strain", opt.shear_gamma);
   PetscCheck(std::isfinite(opt.tension_strain) && opt.tension_strain != 0 && std::fabs(opt.tension_strain) < 1, comm,
              PETSC_ERR_USER_INPUT, "-tension_strain %g: must be non-zero with |strain| < 1", opt.tension_strain);
+  PetscCheck(std::isfinite(opt.bending_strain) && opt.bending_strain != 0 && std::fabs(opt.bending_strain) < 0.2, comm,
+             PETSC_ERR_USER_INPUT, "-bending_strain %g: must be non-zero with |strain| < 0.2", opt.bending_strain);
   PetscCheck(std::fabs(opt.rotation_angle) <= 3600, comm, PETSC_ERR_USER_INPUT,
              "-rotation_angle %g: must lie within +-3600 degrees", opt.rotation_angle);
   PetscCheck(opt.column_l > 0 && opt.column_t > 0 && opt.column_t < opt.column_l, comm, PETSC_ERR_USER_INPUT,

@@ -10,6 +10,7 @@ std::unique_ptr<Scene> MakeShearScene(const Options &opt);
 std::unique_ptr<Scene> MakeRotationScene(const Options &opt);
 std::unique_ptr<Scene> MakeColumnScene(const Options &opt);
 std::unique_ptr<Scene> MakeTensionScene(const Options &opt);
+std::unique_ptr<Scene> MakeBendingScene(const Options &opt);
 std::unique_ptr<Scene> MakeSlideScene(const Options &opt);
 std::unique_ptr<Scene> MakeArcSlideScene(const Options &opt);
 
@@ -30,6 +31,7 @@ const std::vector<SceneEntry> &SceneRegistry()
     {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene},
     {"column", "a bowed strip shortened past its Euler load (geometric stiffness)", MakeColumnScene},
     {"tension", "plane-strain tension or compression of a block (flow curve)", MakeTensionScene},
+    {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene},
     {"slide", "a block pushed along a floor, or a ring turned in a cylinder (-slide_tool arc): Coulomb friction",
      MakeAnySlideScene},
   };

@@ -80,6 +80,8 @@ struct Options {
   std::string slide_tool = "flat";
   double tension_strain = 0.1;       // signed: < 0 compresses
   std::vector<double> tension_cycle; // nominal strains the block is then taken to in turn (reversals)
+  double bending_strain = 0.01;      // the outer fibre's nominal strain at lambda 1 (signed)
+  std::vector<double> bending_cycle; // outer-fibre strains the strip is then taken to in turn
   double rotation_angle = 90.0;      // degrees
   double rotation_strain = 1e-3;     // prestretch before the rotation
   double column_l = 25.0, column_t = 1.0, column_imperfection = 0.025;

@@ -1,0 +1,85 @@
+// Pure bending of a plane-strain strip (the side of a squared tube bent and
+// unbent): a strip kThickness thick, of which the half kLength long is
+// modelled, the cut at x = 0 a symmetry plane (u_x = 0, its middle node
+// u_y = 0), the end x = kLength kept plane and turned about its middle:
+// u_x = 2 e(lambda) kLength y / kThickness, so that the outer fibre's
+// nominal strain is e(lambda) (-bending_strain at lambda 1, then each
+// -bending_cycle value one unit of lambda later, scenes/strain_path.hpp).
+// u_y is free on both ends and the edges y = +-kThickness/2 are free: each
+// fibre is in plane-strain uniaxial stress, the state of pure bending.
+// History: stroke = the outer fibre's nominal strain, load = the bending
+// moment on the end about its middle (N mm per mm of width).
+#include <cmath>
+
+#include "tubeform/mesh/generator.hpp"
+#include "tubeform/scenes/common.hpp"
+#include "tubeform/scenes/strain_path.hpp"
+
+namespace tf {
+
+namespace {
+
+constexpr double kThickness = 1.0; // mm: the strip's thickness
+// mm: the modelled half length. A quarter of the thickness turns the end by
+// half the outer strain, so that the end's rotation (second order in it) adds
+// less than 1e-5 to any fibre's strain at an outer strain of 2 %.
+constexpr double kLength = 0.25;
+
+class BendingScene : public Scene {
+public:
+  explicit BendingScene(const Options &opt) : opt_(opt), strain_(opt.bending_strain, opt.bending_cycle) {}
+  std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
+  {
+    if (opt.mesh_nt % 2)
+      return "-mesh_nt " + std::to_string(opt.mesh_nt) +
+             ": the bending strip needs an even number of elements through the thickness (a node in the middle)";
+    mesh = GenerateRectangle(kLength, kThickness, (int)opt.mesh_ntheta, (int)opt.mesh_nt);
+    for (int n = 0; n < mesh.num_nodes(); ++n) mesh.xy[2 * n + 1] -= 0.5 * kThickness;
+    return "";
+  }
+  std::string MeshLayout(const Options &opt) const override
+  {
+    return "-mesh_nt " + std::to_string(opt.mesh_nt) + " through the thickness x -mesh_ntheta " +
+           std::to_string(opt.mesh_ntheta) + " along";
+  }
+  LoadPath Path(const Options &opt) const override { return strain_.Path(opt.dynamics_time); }
+  PetscErrorCode Load(Model &m, double lambda, double dlambda) override
+  {
+    const double de = strain_.Change(lambda, dlambda);
+    for (PetscInt n : m.mesh.node_sets["left"]) {
+      m.system.Prescribe(n, 0, 0.0);
+      if (std::abs(m.mesh.x0[2 * n + 1]) < kOnAxis) m.system.Prescribe(n, 1, 0.0);
+    }
+    for (PetscInt n : m.mesh.node_sets["right"])
+      m.system.Prescribe(n, 0, 2 * de * kLength * m.mesh.x0[2 * n + 1] / kThickness);
+    return 0;
+  }
+  PetscErrorCode ExternalForce(Model &, double, Vec f) override { return VecZeroEntries(f); }
+  PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
+  {
+    PetscFunctionBeginUser;
+    row.stroke = strain_.At(lambda);
+    row.stage = StrainPath::Stage(lambda);
+    // M = sum f_x (y - y_mid) on the end (current y; f_y is nil there, u_y being free).
+    const auto &x = m.body.position();
+    double mid_local = -INFINITY, mid;
+    for (PetscInt n : m.mesh.node_sets["right"])
+      if (std::abs(m.mesh.x0[2 * n + 1]) < kOnAxis) mid_local = x[2 * n + 1];
+    PetscCall(MPIU_Allreduce(&mid_local, &mid, 1, MPIU_REAL, MPIU_MAX, m.comm));
+    PetscCall(SetForce(
+      m, "right", f_int, [&](PetscInt n, double d[2]) { d[0] = x[2 * n + 1] - mid, d[1] = 0; }, row.load));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+private:
+  static constexpr double kOnAxis = 1e-9; // mm: a node this close to y = 0 is the middle of its end
+  Options opt_;
+  StrainPath strain_;
+};
+
+} // namespace
+
+std::unique_ptr<Scene> MakeBendingScene(const Options &opt) { return std::make_unique<BendingScene>(opt); }
+
+} // namespace tf
