@@ -12,6 +12,16 @@
         The Swift law sigma = K (ep0 + ep)^N with sigma(0) = SY whose
         Considere necking gives the engineering tensile strength RM: the K a
         material file takes (ep0 = (SY / K)^(1 / N) follows from SY).
+
+    /usr/bin/python3 scripts/materials.py --uvc E FY QINF B DINF A C1 G1 [C2 G2 ...]
+        A material file's lines for an Updated Voce-Chaboche calibration
+        (Hartloper, de Castro e Sousa, Lignos, J. Struct. Eng.,
+        doi:10.1061/(ASCE)ST.1943-541X.0002964): the monotonic curve
+        fy + QINF (1 - exp(-B p)) - DINF (1 - exp(-A p)) + sum C/G (1 - exp(-G p))
+        tabulated at 100 plastic strains from 0 to 2 (geometric from 1e-4:
+        within 0.1 MPa of the curve between points), and the backstresses; with
+        -hardening chaboche the isotropic part is the Voce terms again
+        (docs/theory.md, "Kinematic hardening").
 """
 import glob
 import math
@@ -70,7 +80,29 @@ def swift_k(sy, rm, n):
     return k
 
 
+UVC_POINTS = 100  # -material_table takes at most 100 (ep, sigma) pairs
+UVC_FIRST, UVC_LAST = 1e-4, 2.0  # plastic strains of the first point past 0 and of the last (the check's p = 2)
+
+
+def uvc_lines(e, fy, q, b, d, a, *back):
+    """-material_* lines of a UVC calibration (E and stresses in MPa)."""
+    pairs = list(zip(back[::2], back[1::2]))
+
+    def curve(p):
+        return fy + q * (1 - math.exp(-b * p)) - d * (1 - math.exp(-a * p)) + sum(
+            c / g * (1 - math.exp(-g * p)) for c, g in pairs)
+
+    ps = [0.0] + [UVC_FIRST * (UVC_LAST / UVC_FIRST) ** (k / (UVC_POINTS - 2)) for k in range(UVC_POINTS - 1)]
+    table = ",".join(f"{p:.6g},{curve(p):.6g}" for p in ps)
+    kin = ",".join(f"{v:g}" for cg in pairs for v in cg)
+    return [f"-material_law table", f"-material_e {e:g}", f"-material_sy {fy:g}", f"-material_table {table}",
+            f"-material_kinematic {kin}"]
+
+
 def main():
+    if len(sys.argv) >= 10 and sys.argv[1] == "--uvc" and len(sys.argv) % 2 == 0:
+        print("\n".join(uvc_lines(*map(float, sys.argv[2:]))))
+        return
     if len(sys.argv) == 5 and sys.argv[1] == "--swift":
         sy, rm, n = map(float, sys.argv[2:])
         k = swift_k(sy, rm, n)
@@ -81,6 +113,10 @@ def main():
     for path in sorted(glob.glob(os.path.join(ROOT, "options", "materials", "*.opts"))):
         o = read_opts(path)
         law = o.get("-material_law", "ludwik")
+        if law == "table":
+            print(f"| {os.path.basename(path)[:-5]} | table | {o['-material_e']} | {o['-material_nu']} | "
+                  f"{o['-material_sy']} | - | - | {o['-material_density']} | - | - |")
+            continue
         sy, k, n = (float(o[key]) for key in ("-material_sy", "-material_k", "-material_n"))
         neck = considere(law, sy, k, n) if law in ("ludwik", "swift") else None
         tail = f"{neck[0]:.3f} | {neck[1]:.0f}" if neck and n < 1 else "- (linear: no necking) | -"
