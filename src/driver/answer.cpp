@@ -65,8 +65,8 @@ Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const std::vect
   }
   if (transient && transient->load > a.load_max)
     a.transient_max = transient->load, a.transient_stroke = transient->stroke;
-  for (double u : kReportedStrokes)
-    if (u < a.stroke * (1 - 1e-9)) a.strokes.push_back(u);
+  for (double u : kReportedStrokes) // (tool strokes in mm: the tool scenes')
+    if (tool && u < a.stroke * (1 - 1e-9)) a.strokes.push_back(u);
   a.strokes.push_back(a.stroke);
   for (double u : a.strokes) {
     a.loads.push_back(At(loading, &HistoryRow::load, u));
@@ -134,9 +134,9 @@ PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, double target_load, d
   for (size_t k = 0; k + 1 < a.strokes.size(); ++k) at += Format(k ? ", %.5g" : "%.5g", a.loads[k]);
   std::string where;
   for (size_t k = 0; k + 1 < a.strokes.size(); ++k) where += Format(k ? ", %g" : "%g", a.strokes[k]);
-  PetscCall(PetscPrintf(comm, "tubeform: load at the end of loading (U = %g) %.5g N/mm, largest %.5g", a.stroke, a.load,
-                        a.load_max));
-  if (!at.empty()) PetscCall(PetscPrintf(comm, "; at U = %s: %s", where.c_str(), at.c_str()));
+  PetscCall(PetscPrintf(comm, "tubeform: load at the end of loading (%s = %g) %.5g %s, largest %.5g",
+                        a.stroke_name.c_str(), a.stroke, a.load, a.load_unit.c_str(), a.load_max));
+  if (!at.empty()) PetscCall(PetscPrintf(comm, "; at %s = %s: %s", a.stroke_name.c_str(), where.c_str(), at.c_str()));
   PetscCall(PetscPrintf(comm, "\n"));
   if (a.transient_max > 0)
     PetscCall(PetscPrintf(comm,

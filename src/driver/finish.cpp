@@ -36,7 +36,8 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
   const HistoryRow &last = history_.rows().back();
   // Shape metrics (C/t, C1/C2, springback) are the press scenes': those with final metrics of their own.
   const auto scene_metrics = scene_->FinalMetrics(history_);
-  const Answer answer = Summarize(history_.rows(), !scene_metrics.empty(), companion.empty() ? nullptr : &companion);
+  Answer answer = Summarize(history_.rows(), !scene_metrics.empty(), companion.empty() ? nullptr : &companion);
+  answer.stroke_name = scene_->StrokeName(), answer.load_unit = scene_->LoadUnit();
   std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke},
                                                          {"final_load", last.load},
                                                          {"x_max", last.x_max},

@@ -56,6 +56,8 @@ public:
     return 0;
   }
   PetscErrorCode ExternalForce(Model &, double, Vec f) override { return VecZeroEntries(f); }
+  const char *StrokeName() const override { return "outer-fibre strain"; }
+  const char *LoadUnit() const override { return "N mm/mm (moment)"; }
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
   {
     PetscFunctionBeginUser;

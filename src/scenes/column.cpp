@@ -42,6 +42,8 @@ public:
     return 0;
   }
   PetscErrorCode ExternalForce(Model &, double, Vec f) override { return VecZeroEntries(f); }
+  const char *StrokeName() const override { return "end shortening (mm)"; }
+  const char *LoadUnit() const override { return "N/mm (axial force)"; }
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
   {
     PetscFunctionBeginUser;

@@ -48,6 +48,8 @@ public:
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
+  const char *StrokeName() const override { return "inner radial displacement (mm)"; }
+  const char *LoadUnit() const override { return "MPa"; }
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
   {
     double sum[3] = {0, 0, 0}, g[3];

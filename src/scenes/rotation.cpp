@@ -29,6 +29,8 @@ public:
     }
     return 0;
   }
+  const char *StrokeName() const override { return "angle (deg)"; }
+  const char *LoadUnit() const override { return "MPa (mean von Mises)"; }
   PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
   {
     PetscFunctionBeginUser;

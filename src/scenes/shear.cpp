@@ -16,6 +16,8 @@ public:
     PrescribeBoundary(m, [&](PetscInt n, double d[2]) { d[0] = dgamma * m.body.position()[2 * n + 1], d[1] = 0; });
     return 0;
   }
+  const char *StrokeName() const override { return "gamma"; }
+  const char *LoadUnit() const override { return "MPa (mean sigma_xy)"; }
   PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
   {
     PetscFunctionBeginUser;

@@ -58,6 +58,8 @@ public:
     PetscCall(TopLoad(m, -std::min(lambda, 1.0) * opt_.slide_n, f, false));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  const char *StrokeName() const override { return "push (mm)"; }
+  const char *LoadUnit() const override { return "N/mm (tangential force)"; }
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
   {
     PetscFunctionBeginUser;

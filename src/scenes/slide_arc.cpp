@@ -64,6 +64,8 @@ public:
     PetscCall(AddEdgePressure(m, "inner", std::min(lambda, 1.0) * opt_.slide_n, f, false));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  const char *StrokeName() const override { return "turn (rad)"; }
+  const char *LoadUnit() const override { return "N mm/mm (moment)"; }
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
   {
     PetscFunctionBeginUser;

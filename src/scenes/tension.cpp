@@ -21,6 +21,8 @@ public:
     for (PetscInt n : m.mesh.node_sets["right"]) m.system.Prescribe(n, 0, strain_.Change(lambda, dlambda));
     return 0;
   }
+  const char *StrokeName() const override { return "nominal strain"; }
+  const char *LoadUnit() const override { return "MPa (mean sigma_xx)"; }
   PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
   {
     PetscFunctionBeginUser;

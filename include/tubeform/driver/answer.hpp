@@ -37,9 +37,10 @@ constexpr double kEstimateSafety = 3.0;
 constexpr double kQuasiStaticKinetic = 1e-5;
 
 struct Answer {
-  bool tool = false;       // a tool scene: C/t, C1/C2 and springback mean something
-  bool springback = false; // the run went on past the end of loading
-  double stroke = 0;       // at the end of loading
+  bool tool = false;                                 // a tool scene: C/t, C1/C2 and springback mean something
+  bool springback = false;                           // the run went on past the end of loading
+  std::string stroke_name = "U", load_unit = "N/mm"; // the scene's, for the printed summary
+  double stroke = 0;                                 // at the end of loading
   double load = 0;
   // The largest load of the quasi-static rows, and the largest of the dynamic
   // transients' rows where it is above that (else 0) and its stroke.

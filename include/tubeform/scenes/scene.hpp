@@ -82,6 +82,9 @@ public:
   // Collective: writes or reads the state the scene carries between
   // increments (a stage's loads) for checkpoints; none by default.
   virtual PetscErrorCode Persist(Model &m, Archive &ar) { return 0; }
+  // How the run's summary line names `stroke` and the unit of `load` (docs/scenes.md).
+  virtual const char *StrokeName() const { return "U"; }
+  virtual const char *LoadUnit() const { return "N/mm"; }
   // Scene metrics written as attributes at the end.
   virtual std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const { return {}; }
 };
