@@ -5,6 +5,7 @@ per output increment, in the shapes ParaView's XDMF reader expects), the
 (structured mesh: (nt+1)(ntheta+1) nodes, nt*ntheta cells), not from the code.
 """
 import csv
+import math
 import os
 import xml.etree.ElementTree as ET
 
@@ -100,6 +101,40 @@ k.check(dF <= 1e-13, f"2 x sum of nodal contact forces {2 * abs(F[:, 1].sum()):.
         f"({dF:.1e} relative)")
 loaded = np.hypot(F[:, 0], F[:, 1]) > 1e-9 * load
 k.check(loaded.any() and (S[loaded] == 1).all(), f"{loaded.sum()} nodes carry force, all flagged in contact")
+
+# The tool in the results (issue 23): its outline at the start against the V-die of METHOD.md (apex fillet of
+# -die_r_apex on the flanks x + y = Ro sqrt2, read from the options here), its displacement at every field step
+# the stroke of that step (lambda x U while pressing, U after: the paper's unloading leaves it in place), and the
+# moment on it in the history against the one the written contact forces give about the tool's origin (a
+# consistency check: both sum the same forces, through the file here). Tolerances: round-off (1e-12 mm) for
+# the geometry; the moment 1e-9 relative (the file's node order sums differently).
+RO, RA, S2 = 17.5, 3.0, math.sqrt(2)  # options/squaring.opts
+with h5py.File("stroke.h5", "r") as h:
+    V, L, Dsp = h["/tools/V-die/vertices"][:], h["/tools/V-die/lines"][:], h["/tools/V-die/displacement"][:]
+    X, u = h["/geometry/vertices"][:], h["/vertex_fields/displacement_u"][j]
+    moment = h["/history/tool_moment"][:][h["/history/stage"][:] == 0][-1]
+on_arc = np.abs(np.hypot(V[:, 0], V[:, 1] - (RO * S2 - RA * S2)) - RA) < 1e-12
+on_flank = np.abs(V[:, 0] + V[:, 1] - RO * S2) < 1e-12
+top = V[:, 1].max()
+k.check(on_arc.sum() >= 3 and (on_arc | on_flank).all() and abs(top - (RO * S2 - RA * (S2 - 1))) < 1e-12
+        and L.min() == 0 and L.max() == len(V) - 1,
+        f"the V-die's outline: {on_arc.sum()} points on the apex fillet, the rest on the flank, apex at y {top:.6f}")
+want = -np.minimum(t, 1.0) * U_end
+k.check(Dsp.shape == (len(t), len(V), 2) and np.abs(Dsp[:, :, 0]).max() < 1e-12
+        and np.abs(Dsp[:, :, 1] - want[:, None]).max() < 1e-12,
+        f"the V-die's displacement at each of the {len(t)} field steps is (0, -U) of the step")
+xc, o = X + u, np.array([0.0, -U_end])
+fm = -((xc[:, 0] - o[0]) * F[:, 1] - (xc[:, 1] - o[1]) * F[:, 0]).sum()
+k.check(abs(fm - moment) <= 1e-9 * abs(moment),
+        f"tool_moment {moment:.6f} N mm/mm at the end of loading: the written contact forces give {fm:.6f}")
+xmf = ET.parse("stroke.xmf").getroot()
+steps_x = xmf.findall("./Domain/Grid/Grid")
+times = [float(g.find("Time").get("Value")) for g in steps_x]
+kids = [[c.get("Name") for c in g.findall("Grid")] for g in steps_x]
+k.check(len(steps_x) == len(t) and all(c == ["body", "V-die"] for c in kids)
+        and np.allclose(times, t * U_end, rtol=1e-5),
+        f"stroke.xmf: {len(steps_x)} steps of the body and the V-die, times lambda x U / 1 mm/s "
+        f"({times[1]:g} ... {times[-1]:g})")
 names = {a.get("Name") for a in ET.parse("stroke.xmf").getroot().iter("Attribute")}
 k.check({"displacement_u", "contact_state", "contact_force", "eps_p", "von_mises"} <= names,
         f"the xmf's fields: {sorted(names)}")

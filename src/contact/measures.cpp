@@ -66,16 +66,20 @@ PetscErrorCode ContactSet::AddPendingForces(Vec f) const
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::TotalForce(double force[2]) const
+PetscErrorCode ContactSet::TotalForce(double force[2], double *moment) const
 {
-  double local[2] = {0, 0};
+  double local[3] = {0, 0, 0}, global[3];
   PetscFunctionBeginUser;
+  const Vec2 o = tool_.Offset();
   for (PetscInt node : candidates_) {
     if (!contact_[node] || !mesh_->node_owned[node]) continue;
-    const Vec2 fc = NodeForce(node, true);
+    const Vec2 fc = NodeForce(node, true), x = Position(node);
     for (int k = 0; k < 2; ++k) local[k] += fc[k];
+    local[2] += (x[0] - o[0]) * fc[1] - (x[1] - o[1]) * fc[0];
   }
-  PetscCallMPI(MPI_Allreduce(local, force, 2, MPI_DOUBLE, MPI_SUM, comm()));
+  PetscCallMPI(MPI_Allreduce(local, global, 3, MPI_DOUBLE, MPI_SUM, comm()));
+  force[0] = global[0], force[1] = global[1];
+  if (moment) *moment = global[2];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

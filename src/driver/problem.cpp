@@ -146,6 +146,7 @@ PetscErrorCode Problem::Open(ResultWriter &writer)
     model_->contact = contact_.get();
   }
   if (opt_.restart.empty()) PetscCall(writer.Open(mesh_, opt_.output));
+  writer.SetTimeScale(path_.duration); // the .xmf's time: seconds of the load path (a tool's stroke at 1 mm/s)
   int ok = history_.OpenCsv(opt_.history_csv, rank_);
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
   PetscCheck(ok, comm_, PETSC_ERR_USER_INPUT,

@@ -259,7 +259,20 @@ PetscErrorCode Problem::WriteFields(ResultWriter &writer, PetscInt step, double 
     nodes.push_back(std::move(state));
     nodes.push_back(std::move(force));
   }
-  PetscCall(writer.WriteStep(step, t, nodes, cells));
+  // The tools' outlines where they are (kept at every step once written: in place after the paper's
+  // unloading removed them).
+  std::vector<ToolShape> tools;
+  if (contact_) {
+    Tool start = contact_->tool();
+    start.stroke = 0;
+    const Outline o = ToolOutline(contact_->tool()), o0 = ToolOutline(start);
+    ToolShape shape{contact_->tool().name, {}, {}, {}};
+    for (const Vec2 &p : o0.points) shape.xy0.insert(shape.xy0.end(), {p[0], p[1]});
+    for (const Vec2 &p : o.points) shape.xy.insert(shape.xy.end(), {p[0], p[1]});
+    for (const auto &l : o.lines) shape.lines.insert(shape.lines.end(), {l[0], l[1]});
+    tools.push_back(std::move(shape));
+  }
+  PetscCall(writer.WriteStep(step, t, nodes, cells, tools));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -60,6 +60,9 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"n_contact_apex", &HistoryRow::n_contact_apex, "contact nodes on the V-die's apex fillet"},
     {"tool_fx", &HistoryRow::tool_fx, "force of the model on the tool, x (N/mm)"},
     {"tool_fy", &HistoryRow::tool_fy, "force of the model on the tool, y (N/mm)"},
+    {"tool_moment", &HistoryRow::tool_moment,
+     "moment of the model's forces on the tool about the tool frame's origin, which moves with the tool (the "
+     "tube's centre at stroke 0; N mm/mm, counter-clockwise positive)"},
     {"w_kinetic", &HistoryRow::w_kinetic, "kinetic energy (-dynamics implicit; 0 quasi-static)"},
     {"w_inertia", &HistoryRow::w_inertia, "work of the inertia forces (trapezoidal)"},
     {"w_damped", &HistoryRow::w_damped, "energy damped by backward Euler: w_inertia - w_kinetic"},

@@ -130,7 +130,7 @@ PetscErrorCode ResultWriter::Flush()
 }
 
 PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::vector<NodeField> &nodes,
-                                       const std::vector<CellField> &cells)
+                                       const std::vector<CellField> &cells, const std::vector<ToolShape> &tools)
 {
   Vec local, global;
   PetscScalar *a;
@@ -173,6 +173,20 @@ PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::ve
     PetscCall(VecRestoreArray(global, &a));
     PetscCall(WriteSeriesStep(file, ("/cell_fields/" + field.name + "_c").c_str(), global, 1, step));
     PetscCall(DMRestoreGlobalVector(mesh_->cell_dm, &global));
+  }
+  // Tools: every rank holds the same outline, rank 0 writes it.
+  tools_.clear();
+  for (const auto &t : tools) {
+    const std::string base = "/tools/" + t.name;
+    tools_.push_back({t.name, t.xy.size() / 2, t.lines.size() / 2});
+    std::vector<double> moved(t.xy.size());
+    for (size_t i = 0; i < t.xy.size(); ++i) moved[i] = t.xy[i] - t.xy0[i];
+    PetscCall(
+      WritePairsOnce(file, (base + "/lines").c_str(), H5T_NATIVE_INT, t.lines.data(), t.lines.size() / 2, rank == 0));
+    PetscCall(
+      WritePairsOnce(file, (base + "/vertices").c_str(), H5T_NATIVE_DOUBLE, t.xy0.data(), t.xy0.size() / 2, rank == 0));
+    PetscCall(
+      WriteSeriesPairs(file, (base + "/displacement").c_str(), moved.data(), moved.size() / 2, step, rank == 0));
   }
   PetscCall(PetscLogEventEnd(Log::output, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -246,54 +260,6 @@ std::string ResultWriter::XdmfPath() const
   std::string base = path_;
   if (base.size() > 3 && base.substr(base.size() - 3) == ".h5") base.resize(base.size() - 3);
   return base + ".xmf";
-}
-
-bool ResultWriter::WriteXdmf() const
-{
-  // ParaView reads the mesh (initial coordinates) and the fields from the .h5;
-  // "Warp By Vector" with displacement shows the deformed shape.
-  std::string h5 = path_;
-  const auto slash = h5.rfind('/');
-  if (slash != std::string::npos) h5 = h5.substr(slash + 1);
-  std::ofstream x(XdmfPath());
-  const PetscInt nv = mesh_->num_global_nodes, nc = mesh_->num_global_cells, nt = (PetscInt)times_.size();
-  x << "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n<Domain>\n";
-  x << "<Grid Name=\"tubeform\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (PetscInt k = 0; k < nt; ++k) {
-    x << " <Grid Name=\"step" << k << "\" GridType=\"Uniform\">\n";
-    x << "  <Time Value=\"" << times_[k] << "\"/>\n";
-    x << "  <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << nc << "\">\n";
-    x << "   <DataItem Format=\"HDF\" DataType=\"Int\" Dimensions=\"" << nc << " 4\">" << h5
-      << ":/viz/topology/cells</DataItem>\n  </Topology>\n";
-    x << "  <Geometry GeometryType=\"XY\">\n";
-    x << "   <DataItem Format=\"HDF\" Dimensions=\"" << nv << " 2\">" << h5
-      << ":/geometry/vertices</DataItem>\n  </Geometry>\n";
-    const auto hyperslab = [&](const std::string &path, PetscInt n, int comps) {
-      x << "   <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << n << (comps > 1 ? " " + std::to_string(comps) : "")
-        << "\">\n";
-      x << "    <DataItem Dimensions=\"3 " << (comps > 1 ? 3 : 2) << "\" Format=\"XML\">" << k << " 0"
-        << (comps > 1 ? " 0" : "") << " 1 1" << (comps > 1 ? " 1" : "") << " 1 " << n
-        << (comps > 1 ? " " + std::to_string(comps) : "") << "</DataItem>\n";
-      x << "    <DataItem Format=\"HDF\" Dimensions=\"" << nt << " " << n
-        << (comps > 1 ? " " + std::to_string(comps) : "") << "\">" << h5 << ":" << path
-        << "</DataItem>\n   </DataItem>\n";
-    };
-    for (const auto &[name, comps] : node_names_) {
-      x << "  <Attribute Name=\"" << name << "\" AttributeType=\"" << (comps == 2 ? "Vector" : "Scalar")
-        << "\" Center=\"Node\">\n";
-      hyperslab("/vertex_fields/" + name, nv, comps);
-      x << "  </Attribute>\n";
-    }
-    for (const auto &name : cell_names_) {
-      x << "  <Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
-      hyperslab("/cell_fields/" + name + "_c", nc, 1);
-      x << "  </Attribute>\n";
-    }
-    x << " </Grid>\n";
-  }
-  x << "</Grid>\n</Domain>\n</Xdmf>\n";
-  x.close();
-  return !x.fail();
 }
 
 } // namespace tf

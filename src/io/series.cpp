@@ -1,6 +1,7 @@
 #include "tubeform/io/series.hpp"
 
 #include <cstring>
+#include <string>
 
 #include "tubeform/core/core.hpp"
 
@@ -70,6 +71,47 @@ PetscErrorCode WriteRows(hid_t dset, int ndims, const hsize_t dims[], PetscInt s
 }
 
 } // namespace
+
+PetscErrorCode WriteSeriesPairs(hid_t file, const char *path, const double *values, hsize_t rows, PetscInt step,
+                                bool writer)
+{
+  hid_t dset;
+
+  PetscFunctionBeginUser;
+  hsize_t dims[3] = {0, rows, 2};
+  PetscCall(OpenStep(file, path, 3, dims, step, "vector", &dset));
+  PetscCall(WriteRows(dset, 3, dims, step, 0, writer ? rows : 0, values));
+  TF_CHECK_HDF5(H5Dclose(dset));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode WritePairsOnce(hid_t file, const char *path, hid_t type, const void *values, hsize_t rows, bool writer)
+{
+  PetscFunctionBeginUser;
+  const std::string p = path;
+  for (size_t slash = p.find('/', 1); slash != std::string::npos; slash = p.find('/', slash + 1)) {
+    const std::string group = p.substr(0, slash);
+    if (H5Lexists(file, group.c_str(), H5P_DEFAULT) > 0) continue;
+    const hid_t g = H5Gcreate2(file, group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    TF_CHECK_HDF5(g);
+    TF_CHECK_HDF5(H5Gclose(g));
+  }
+  if (H5Lexists(file, path, H5P_DEFAULT) > 0) PetscFunctionReturn(PETSC_SUCCESS);
+  hsize_t dims[2] = {rows, 2};
+  const hid_t space = H5Screate_simple(2, dims, nullptr);
+  TF_CHECK_HDF5(space);
+  const hid_t dset = H5Dcreate2(file, path, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  TF_CHECK_HDF5(dset);
+  if (!writer) TF_CHECK_HDF5(H5Sselect_none(space));
+  const hid_t mem = H5Screate_simple(2, dims, nullptr);
+  TF_CHECK_HDF5(mem);
+  if (!writer) TF_CHECK_HDF5(H5Sselect_none(mem));
+  TF_CHECK_HDF5(H5Dwrite(dset, type, mem, space, H5P_DEFAULT, values));
+  TF_CHECK_HDF5(H5Sclose(mem));
+  TF_CHECK_HDF5(H5Sclose(space));
+  TF_CHECK_HDF5(H5Dclose(dset));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 PetscErrorCode WriteSeriesStep(hid_t file, const char *path, Vec global, PetscInt bs, PetscInt step)
 {

@@ -137,7 +137,7 @@ public:
     PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
     PetscCall(VecZeroEntries(reversed_));
     PetscCall(m.contact->AddContactForces(reversed_));
-    PetscCall(m.contact->TotalForce(reversed_total_));
+    PetscCall(m.contact->TotalForce(reversed_total_, &reversed_moment_));
     m.contact->Remove();
     m.system.ClearFrames();
     m.body.SetElasticOnly();
@@ -173,15 +173,16 @@ public:
 
   PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
   {
-    double force[2];
+    double force[2], moment;
     PetscFunctionBeginUser;
     row.stroke = ToolStroke(lambda);
     if (unloading_) {
       for (int k = 0; k < 2; ++k) force[k] = (2.0 - lambda) * reversed_total_[k];
+      moment = (2.0 - lambda) * reversed_moment_;
     } else
-      PetscCall(m.contact->TotalForce(force));
+      PetscCall(m.contact->TotalForce(force, &moment));
     row.load = -2.0 * force[1]; // full tube: both halves push the die up
-    row.tool_fx = -force[0], row.tool_fy = -force[1];
+    row.tool_fx = -force[0], row.tool_fy = -force[1], row.tool_moment = -moment;
     PetscCall(OuterExtents(m, row));
     PetscCall(Shape(m, lambda, row));
     row.stage = StageOf(lambda);
@@ -207,13 +208,15 @@ public:
     PetscFunctionBeginUser;
     ar.Group("/scene");
     PetscCall(ar.Value("unloading", unloading_));
-    // The springback's total force and the side C is measured on (from the loading).
-    std::vector<double> pairs = {reversed_total_[0], reversed_total_[1], (double)side_ends_[0], (double)side_ends_[1]};
-    PetscCall(ar.Values("reversed_total_side_ends", pairs));
-    PetscCheck(pairs.size() == 4, m.comm, PETSC_ERR_USER_INPUT, "%s: /scene/reversed_total_side_ends is not 4 numbers",
-               ar.path().c_str());
+    // The springback's total force and moment and the side C is measured on (from the loading).
+    std::vector<double> pairs = {reversed_total_[0], reversed_total_[1], (double)side_ends_[0], (double)side_ends_[1],
+                                 reversed_moment_};
+    PetscCall(ar.Values("reversed_total_side_ends_moment", pairs));
+    PetscCheck(pairs.size() == 5, m.comm, PETSC_ERR_USER_INPUT,
+               "%s: /scene/reversed_total_side_ends_moment is not 5 numbers", ar.path().c_str());
     reversed_total_[0] = pairs[0], reversed_total_[1] = pairs[1];
     side_ends_[0] = (long)pairs[2], side_ends_[1] = (long)pairs[3];
+    reversed_moment_ = pairs[4];
     if (!unloading_) PetscFunctionReturn(PETSC_SUCCESS);
     // The reversed contact forces: contributions of the owned nodes.
     if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
@@ -245,6 +248,7 @@ private:
   bool unloading_ = false;
   Vec reversed_ = nullptr;
   double reversed_total_[2] = {0, 0};
+  double reversed_moment_ = 0;   // of the reversed forces about the tool frame's origin (TotalForce)
   long side_ends_[2] = {-1, -1}; // input node numbers of the side's ends (latest loading state)
 
   // C/t (METHOD.md sec. 6) and the corner radii. Loading: the largest gap

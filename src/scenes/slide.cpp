@@ -71,9 +71,9 @@ public:
       if (m.mesh.node_owned[k]) local[0] += m.body.displacement()[2 * k], local[1] += 1;
     PetscCallMPI(MPI_Allreduce(local, g, 2, MPI_DOUBLE, MPI_SUM, m.comm));
     row.slip = g[0] / g[1];
-    double force[2];
-    PetscCall(m.contact->TotalForce(force));
-    row.tool_fx = -force[0], row.tool_fy = -force[1];
+    double force[2], moment;
+    PetscCall(m.contact->TotalForce(force, &moment));
+    row.tool_fx = -force[0], row.tool_fy = -force[1], row.tool_moment = -moment;
     row.stage = lambda > 2.0 + kLambdaTol ? 2 : StageOf(lambda); // 2: pushed back
     PetscFunctionReturn(PETSC_SUCCESS);
   }

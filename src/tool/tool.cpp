@@ -1,5 +1,6 @@
 #include "tubeform/tool/tool.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tf {
@@ -94,6 +95,27 @@ double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
     }
   }
   return rmin;
+}
+
+Outline ToolOutline(const Tool &t)
+{
+  Outline o;
+  const Vec2 off = t.Offset();
+  for (const Segment &s : t.segments) {
+    const int first = (int)o.points.size();
+    if (s.kind == Segment::Line) {
+      o.points.push_back(Add(s.a, off));
+      o.points.push_back(Add(s.b, off));
+    } else {
+      const int n = std::max(1, (int)std::ceil((s.t1 - s.t0) / kOutlineStep));
+      for (int k = 0; k <= n; ++k) {
+        const double a = s.t0 + (s.t1 - s.t0) * k / n;
+        o.points.push_back(Add(s.c, Add(off, {s.radius * std::cos(a), s.radius * std::sin(a)})));
+      }
+    }
+    for (int k = first; k + 1 < (int)o.points.size(); ++k) o.lines.push_back({k, k + 1});
+  }
+  return o;
 }
 
 Tool BuildVDie(double ro, double r_apex, double u_close, double r_edge)

@@ -132,8 +132,9 @@ public:
   // The pending forces of released nodes (owned nodes, global frame) added to
   // f: applied loads until the following increments have removed them.
   PetscErrorCode AddPendingForces(Vec f) const;
-  // Collective: sum over contact nodes of the force on the body (global frame).
-  PetscErrorCode TotalForce(double force[2]) const;
+  // Collective: sum over contact nodes of the force on the body (global frame) and, if asked, its moment
+  // about the tool frame's origin at the current stroke (counter-clockwise positive, N mm/mm).
+  PetscErrorCode TotalForce(double force[2], double *moment = nullptr) const;
   PetscErrorCode Count(PetscInt &n) const;
   // Collective: sum over contact nodes of the normal force f_n.
   PetscErrorCode NormalForceSum(double &sum) const;

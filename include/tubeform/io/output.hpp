@@ -27,6 +27,14 @@ struct NodeField {
   std::vector<double> values; // `components` per local node
 };
 
+// A rigid tool's outline at one field step (the tools in ParaView): its points (x, y) at the start and now,
+// and the index pairs of the lines joining them, the same counts at every step.
+struct ToolShape {
+  std::string name;
+  std::vector<double> xy0, xy;
+  std::vector<int> lines;
+};
+
 class ResultWriter {
 public:
   ~ResultWriter();
@@ -41,8 +49,13 @@ public:
   PetscErrorCode Flush();
   const std::vector<double> &times() const { return times_; }
   // Collective: one time-series entry (the same fields at every step).
+  // A tool's outline goes to /tools/<name>/vertices (at the start) and /lines, its motion to
+  // /tools/<name>/displacement (step, point, 2), as the body's (ParaView's Warp By Vector moves both).
   PetscErrorCode WriteStep(PetscInt step, double time, const std::vector<NodeField> &nodes,
-                           const std::vector<CellField> &cells);
+                           const std::vector<CellField> &cells, const std::vector<ToolShape> &tools = {});
+  // The .xmf shows a field step written at load parameter lambda at the time lambda x scale: the load path's
+  // seconds (a tool scene's duration is its stroke over the punch speed).
+  void SetTimeScale(double scale) { time_scale_ = scale; }
   // Collective: history, attributes, the rename, then the .xmf (a failure of either is every rank's).
   PetscErrorCode Close(const History &history, const std::vector<std::pair<std::string, double>> &metrics);
 
@@ -53,6 +66,12 @@ private:
   std::vector<double> times_;
   std::vector<std::string> cell_names_;
   std::vector<std::pair<std::string, int>> node_names_; // name, components
+  struct ToolEntry {
+    std::string name;
+    size_t points, lines;
+  };
+  std::vector<ToolEntry> tools_;
+  double time_scale_ = 1;
   // The .xmf beside the .h5 (rank 0 alone; false when it could not be written).
   bool WriteXdmf() const;
   std::string XdmfPath() const;

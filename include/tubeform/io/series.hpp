@@ -22,4 +22,13 @@ PetscErrorCode WriteSeriesStep(hid_t file, const char *path, Vec global, PetscIn
 // the rank with `writer` true (one rank).
 PetscErrorCode WriteSeriesValue(hid_t file, const char *path, double value, PetscInt step, bool writer);
 
+// Collective: `rows` x 2 values as step `step` of the (step, rows, 2) dataset `path`, written by the rank
+// with `writer` true (one rank; the others' `values` are not read).
+PetscErrorCode WriteSeriesPairs(hid_t file, const char *path, const double *values, hsize_t rows, PetscInt step,
+                                bool writer);
+
+// Collective: creates the groups of `path` that are missing and, unless it exists, the (rows, 2) dataset
+// `path` of HDF5 type `type` (H5T_NATIVE_INT, H5T_NATIVE_DOUBLE), written by the rank with `writer` true.
+PetscErrorCode WritePairsOnce(hid_t file, const char *path, hid_t type, const void *values, hsize_t rows, bool writer);
+
 } // namespace tf

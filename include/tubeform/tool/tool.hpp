@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,17 @@ public:
   // exact); 1e300 if none.
   double FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const;
 };
+
+// A tool's working surface as lines for the results (ParaView): the points of
+// each segment at the current stroke, arcs every kOutlineStep radians at most,
+// and the index pairs of the lines joining them. The counts depend only on the
+// segments, so a tool's outline has the same size at every stroke.
+struct Outline {
+  std::vector<Vec2> points;
+  std::vector<std::array<int, 2>> lines;
+};
+constexpr double kOutlineStep = M_PI / 90; // 2 degrees: an apex fillet of 3 mm is drawn to 1.5 um
+Outline ToolOutline(const Tool &t);
 
 // The upper V-die of the quarter model (METHOD.md sec. 1): apex on the y axis
 // at (0, ro sqrt2) rounded by an arc of radius r_apex centred at
