@@ -113,6 +113,13 @@ for every, stage in ((loading * 2 // 3, "loading"), (loading + (rows - loading) 
     k.check(w <= 1e-12 and du <= 1e-12,
             f"np=2 restart in the {stage} stage: history within {w:.1e} ({col}), fields within {du:.1e} (1e-12)")
     k.check("restarting from" in p.stdout, "the restart says where it continues from")
+    # The tool's motion (issue 23) goes on from the checkpoint's steps: the uninterrupted run's, to round-off.
+    with h5py.File(out("part.h5"), "r") as hp, h5py.File(out("full_np2.h5"), "r") as hf:
+        tp, tf_ = hp["/tools/V-die/displacement"][:], hf["/tools/V-die/displacement"][:]
+    dt = np.abs(tp - tf_).max() if tp.shape == tf_.shape else np.inf
+    k.check(dt <= 1e-12 and tp.shape[0] == u.shape[0],
+            f"np=2 restart in the {stage} stage: the V-die's displacement at all {tp.shape[0]} field steps within "
+            f"{dt:.1e} mm (1e-12)")
 
 # The pressure scene with qm6 and -equilibrium_tol 0.005: the energy input from
 # the supports and the out-of-balance force both read the internal force,
