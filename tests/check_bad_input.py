@@ -49,6 +49,7 @@ cases = [
     (["-rmin_dphi", "3"], "-rmin_dphi"),
     (["-slide_back", "-1"], "-slide_back"),
     (["-bending_strain", "0"], "-bending_strain"),
+    (["-die_angle", "40"], "-die_angle"),
     (["-scene", "bending", "-mesh_nt", "3"], "needs an even number of elements"),
     (["-rmin_yield", "bogus"], "-rmin_yield"),
     (["-rmin_yield_tol", "0"], "-rmin_yield_tol"),
@@ -105,7 +106,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 53 and len(selected) == 5, f"{len(cases)} cases on 1 rank (53), {len(selected)} on 2 (5)")
+k.check(len(cases) == 54 and len(selected) == 5, f"{len(cases)} cases on 1 rank (54), {len(selected)} on 2 (5)")
 
 
 def refused(np_, extra, needle):

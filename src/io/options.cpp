@@ -280,6 +280,9 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       "Choose the stroke by the paper's rule: outer corner radius (mm) of the "
                       "perimeter-conserving rounded square (e.g. 4 t)",
                       opt.stroke_corner_radius));
+  PetscCall(read.Real(PetscOptionsObject, "-die_angle",
+                      "V-die: the angle between its flanks (degrees; the paper's 90), the lower die its mirror",
+                      opt.die_angle));
   PetscCall(read.Real(PetscOptionsObject, "-die_r_apex", "V-die apex fillet radius (mm)", opt.die_r_apex));
   PetscCall(
     read.Real(PetscOptionsObject, "-die_u_close",

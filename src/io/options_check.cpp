@@ -14,6 +14,9 @@ namespace tf {
 
 namespace {
 
+// -die_angle's range (degrees): the V-dies tests/check_die_angle.py presses (the flank's reach of 1.3 ro is
+// beyond the squared side over it).
+constexpr double kDieAngleMin = 60, kDieAngleMax = 150;
 // Plastic strains the isotropic part of -hardening chaboche is checked up to (tube squaring stays far below).
 constexpr double kKinematicCheckStrain = 2.0;
 constexpr int kKinematicCheckPoints = 2000;
@@ -151,6 +154,8 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
   }
   PetscCall(CheckKinematic(comm, m));
   PetscCall(CheckHill(comm, m));
+  PetscCheck(opt.die_angle >= kDieAngleMin && opt.die_angle <= kDieAngleMax, comm, PETSC_ERR_USER_INPUT,
+             "-die_angle %g: must lie in [%g, %g] degrees", opt.die_angle, kDieAngleMin, kDieAngleMax);
   PetscCheck(opt.die_r_apex >= 0 && opt.die_r_apex < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,
              "-die_r_apex %g: must lie in [0, -tube_ro)", opt.die_r_apex);
   PetscCheck(opt.die_u_close >= 0 && opt.die_r_edge >= 0, comm, PETSC_ERR_USER_INPUT,

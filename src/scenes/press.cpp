@@ -52,7 +52,8 @@ class PressScene : public Scene {
 public:
   PressScene(const Options &opt, bool squaring) : opt_(opt), squaring_(squaring)
   {
-    stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius) : opt.stroke;
+    stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_angle)
+                                           : opt.stroke;
     back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
     flank_ = squaring_ && opt.die_r_apex > 0 ? 1 : 0;
   }
@@ -78,7 +79,7 @@ public:
     PetscFunctionBeginUser;
     PetscCall(CheckReach(m.comm));
     if (squaring_)
-      tools.tool = BuildVDie(opt_.tube_ro, opt_.die_r_apex, opt_.die_u_close, opt_.die_r_edge);
+      tools.tool = BuildVDie(opt_.tube_ro, opt_.die_r_apex, opt_.die_u_close, opt_.die_r_edge, opt_.die_angle);
     else
       tools.tool = BuildFlatPlate(opt_.tube_ro, -kPlateOverhang * opt_.tube_ro, (1 + kPlateReach) * opt_.tube_ro);
     tools.candidates = "outer";
@@ -111,8 +112,9 @@ public:
     PetscFunctionBeginUser;
     const double ro = opt_.tube_ro, ri = ro - opt_.tube_t;
     if (squaring_) {
-      // The cavity is a square of half-diagonal Ro sqrt(2) - U: area 2 (Ro sqrt(2) - U)^2.
-      const double area = M_PI * (ro * ro - ri * ri), closed = ro * std::sqrt(2.0) - std::sqrt(0.5 * area);
+      // The cavity is a rhombus of half-diagonals D = h - U and D tan(half): area 2 D^2 tan(half).
+      const VAngle v(opt_.die_angle);
+      const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
       PetscCheck(stroke_ < closed, comm, PETSC_ERR_USER_INPUT,
                  "-stroke %g: the dies would close on the tube at U = %.4g mm (the cavity between them is then "
                  "smaller than the tube's cross-section of %.4g mm^2); choose a smaller stroke",

@@ -118,42 +118,53 @@ Outline ToolOutline(const Tool &t)
   return o;
 }
 
-Tool BuildVDie(double ro, double r_apex, double u_close, double r_edge)
+VAngle::VAngle(double degrees)
+{
+  // At 90 degrees sqrt(2) itself and pi / 4, so that the paper's die is the same to the last bit as before angles.
+  if (degrees == 90) {
+    half = M_PI / 4, qs = qc = std::sqrt(2.0);
+  } else {
+    half = degrees * M_PI / 360, qs = 1 / std::sin(half), qc = 1 / std::cos(half);
+  }
+}
+
+Tool BuildVDie(double ro, double r_apex, double u_close, double r_edge, double angle)
 {
   Tool t;
   t.name = "V-die";
-  const double s2 = std::sqrt(2.0), h = ro * s2;
-  const Vec2 n_flank = {-1 / s2, -1 / s2};
+  const VAngle v(angle);
+  const double h = ro * v.qs; // the flanks' intersection: they touch the tube's outer circle
+  const Vec2 n_flank = {-1 / v.qc, -1 / v.qs};
   Vec2 flank_start = {0, h};
   if (r_apex > 0) {
     Segment arc;
     arc.kind = Segment::Arc;
-    arc.c = {0, h - r_apex * s2};
+    arc.c = {0, h - r_apex * v.qs};
     arc.radius = r_apex;
-    arc.t0 = M_PI / 4;
+    arc.t0 = v.half; // the flank's tangent point: the radius along -n_flank
     arc.t1 = M_PI / 2;
     arc.concave = true;
     t.segments.push_back(arc);
-    flank_start = {r_apex / s2, arc.c[1] + r_apex / s2};
+    flank_start = {r_apex / v.qc, arc.c[1] + r_apex / v.qs};
   }
   Segment flank;
   flank.n_line = n_flank;
   flank.a = flank_start;
   if (u_close > 0) {
-    // Flank meets the parting face y = u_close at x = h - u_close; a convex fillet
-    // of radius r_edge tangent to both has its centre inside the die at
-    // (h - u_close - r_edge tan(22.5 deg) ... ), derived from the two tangencies.
-    const double xe = h - u_close;
-    const double d = r_edge * std::tan(M_PI / 8); // setback of the tangent points from the corner
-    flank.b = {xe - d / s2, u_close + d / s2};
+    // The flank meets the parting face y = u_close at x = xe; a convex fillet of radius r_edge tangent to both
+    // turns through pi/2 - half, its tangent points set back from the corner by r_edge tan((pi/2 - half) / 2).
+    const double xe = (h - u_close) * (v.qc / v.qs);
+    const double d = r_edge * std::tan((M_PI / 2 - v.half) / 2);
+    flank.b = {xe - d / v.qs, u_close + d / v.qc};
     t.segments.push_back(flank);
     if (r_edge > 0) {
       Segment edge;
       edge.kind = Segment::Arc;
       edge.radius = r_edge;
       edge.c = {xe + d, u_close + r_edge};
-      // From the face tangent point (angle -90 deg) to the flank tangent point (angle -135 deg): t in [-135, -90] deg.
-      edge.t0 = -3 * M_PI / 4 + 2 * M_PI;
+      // From the flank tangent point (the radius along n_flank, pi + half) to the face's (-pi/2), as angles in
+      // [0, 2 pi).
+      edge.t0 = -(M_PI - v.half) + 2 * M_PI;
       edge.t1 = -M_PI / 2 + 2 * M_PI;
       edge.concave = false;
       t.segments.push_back(edge);
@@ -164,7 +175,7 @@ Tool BuildVDie(double ro, double r_apex, double u_close, double r_edge)
     face.n_line = {0, -1};
     t.segments.push_back(face);
   } else {
-    flank.b = {1.3 * ro, h - 1.3 * ro};
+    flank.b = {1.3 * ro, h - 1.3 * ro * (v.qs / v.qc)};
     t.segments.push_back(flank);
   }
   return t;
@@ -182,11 +193,14 @@ Tool BuildFlatPlate(double y0, double x0, double x1, bool floor)
   return t;
 }
 
-double StrokeForCornerRadius(double ro, double rc)
+double StrokeForCornerRadius(double ro, double rc, double angle)
 {
-  // Sides on |x| + |y| = d: side 2^(1/2) d, perimeter 4 sqrt2 d - (8 - 2 pi) rc = 2 pi ro.
-  const double d = (2 * M_PI * ro + (8 - 2 * M_PI) * rc) / (4 * std::sqrt(2.0));
-  return ro * std::sqrt(2.0) - d;
+  // The cavity is a rhombus of vertical half-diagonal D = h - U and sides D / cos(half); rounding each corner
+  // (turning by 2 (pi/2 - half) at the top and bottom, 2 half at the sides) by rc cuts 2 rc tan(turn / 2) from
+  // the sides and adds rc x turn: perimeter 4 D / cos(half) - 4 rc (cot(half) + tan(half)) + 2 pi rc = 2 pi ro.
+  const VAngle v(angle);
+  const double d = (2 * M_PI * ro + (4 * (v.qs / v.qc + v.qc / v.qs) - 2 * M_PI) * rc) / (4 * v.qc);
+  return ro * v.qs - d;
 }
 
 } // namespace tf

@@ -66,20 +66,29 @@ struct Outline {
 constexpr double kOutlineStep = M_PI / 90; // 2 degrees: an apex fillet of 3 mm is drawn to 1.5 um
 Outline ToolOutline(const Tool &t);
 
-// The upper V-die of the quarter model (METHOD.md sec. 1): apex on the y axis
-// at (0, ro sqrt2) rounded by an arc of radius r_apex centred at
-// (0, ro sqrt2 - r_apex sqrt2); the flank x + y = ro sqrt2 runs to x = 1.3 ro,
-// or, with u_close > 0, to the parting face y = u_close (at stroke 0) through
-// a convex edge fillet of radius r_edge. Moves down by the stroke.
-Tool BuildVDie(double ro, double r_apex, double u_close = 0, double r_edge = 0);
+// The half-angle of a V-die of `degrees` between its flanks, with 1 / sin and
+// 1 / cos of it.
+struct VAngle {
+  explicit VAngle(double degrees);
+  double half, qs, qc;
+};
+
+// The upper V-die of the quarter model (METHOD.md sec. 1), of `angle` degrees
+// between its flanks (the paper's 90 by default): the flanks touch the tube's
+// outer circle, meeting on the y axis at (0, h), h = ro / sin(angle / 2),
+// rounded there by an arc of radius r_apex centred at (0, h - r_apex / sin);
+// the flank runs to x = 1.3 ro, or, with u_close > 0, to the parting face
+// y = u_close (at stroke 0) through a convex edge fillet of radius r_edge.
+// Moves down by the stroke.
+Tool BuildVDie(double ro, double r_apex, double u_close = 0, double r_edge = 0, double angle = 90);
 
 // A flat plate y = y0 from x = x0 to x1, pressing down (body below), or with
 // `floor` a support with the body above it.
 Tool BuildFlatPlate(double y0, double x0, double x1, bool floor = false);
 
-// The paper's stroke rule: the stroke at which a rounded square of corner
-// radius rc, with its sides on the closed dies' flanks, has the perimeter of
-// the tube's outer circle 2 pi ro.
-double StrokeForCornerRadius(double ro, double rc);
+// The paper's stroke rule: the stroke at which a rounded rhombus (a square at
+// 90 degrees) of corner radius rc, its sides on the closed dies' flanks, has
+// the perimeter of the tube's outer circle 2 pi ro.
+double StrokeForCornerRadius(double ro, double rc, double angle = 90);
 
 } // namespace tf
