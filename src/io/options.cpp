@@ -280,6 +280,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       "Choose the stroke by the paper's rule: outer corner radius (mm) of the "
                       "perimeter-conserving rounded square (e.g. 4 t)",
                       opt.stroke_corner_radius));
+  PetscCall(read.String(PetscOptionsObject, "-die_profile",
+                        "squaring: the upper die's right half from a profile file (lines and arcs, docs/dies.md) in "
+                        "place of the V-die of -die_angle, -die_r_apex, -die_u_close, -die_r_edge",
+                        opt.die_profile));
   PetscCall(read.Real(PetscOptionsObject, "-die_angle",
                       "V-die: the angle between its flanks (degrees; the paper's 90), the lower die its mirror",
                       opt.die_angle));

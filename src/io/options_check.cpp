@@ -154,6 +154,9 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
   }
   PetscCall(CheckKinematic(comm, m));
   PetscCall(CheckHill(comm, m));
+  PetscCheck(opt.die_profile.empty() || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+             "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
+             opt.stroke_corner_radius);
   PetscCheck(opt.die_angle >= kDieAngleMin && opt.die_angle <= kDieAngleMax, comm, PETSC_ERR_USER_INPUT,
              "-die_angle %g: must lie in [%g, %g] degrees", opt.die_angle, kDieAngleMin, kDieAngleMax);
   PetscCheck(opt.die_r_apex >= 0 && opt.die_r_apex < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,

@@ -14,6 +14,7 @@
 #include "tubeform/metrics/shape.hpp"
 #include "tubeform/scenes/common.hpp"
 #include "tubeform/scenes/contact_params.hpp"
+#include "tubeform/scenes/die.hpp"
 
 namespace tf {
 
@@ -55,7 +56,6 @@ public:
     stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_angle)
                                            : opt.stroke;
     back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
-    flank_ = squaring_ && opt.die_r_apex > 0 ? 1 : 0;
   }
 
   std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
@@ -78,9 +78,12 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(CheckReach(m.comm));
-    if (squaring_)
-      tools.tool = BuildVDie(opt_.tube_ro, opt_.die_r_apex, opt_.die_u_close, opt_.die_r_edge, opt_.die_angle);
-    else
+    if (squaring_) {
+      Die die;
+      PetscCall(BuildDie(m.comm, opt_, die));
+      tools.tool = die.tool;
+      flank_ = die.flank, apex_ = die.apex;
+    } else
       tools.tool = BuildFlatPlate(opt_.tube_ro, -kPlateOverhang * opt_.tube_ro, (1 + kPlateReach) * opt_.tube_ro);
     tools.candidates = "outer";
     tools.symmetry = {{"x0", {1, 0}}, {"y0", {0, 1}}};
@@ -111,7 +114,9 @@ public:
   {
     PetscFunctionBeginUser;
     const double ro = opt_.tube_ro, ri = ro - opt_.tube_t;
-    if (squaring_) {
+    if (squaring_ && !opt_.die_profile.empty()) {
+      // A profile of one's own: no closed form of its cavity; a stroke that closes it fails in the run.
+    } else if (squaring_) {
       // The cavity is a rhombus of half-diagonals D = h - U and D tan(half): area 2 D^2 tan(half).
       const VAngle v(opt_.die_angle);
       const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
@@ -246,7 +251,7 @@ private:
   Options opt_;
   bool squaring_;
   double stroke_ = 0, back_ = 0;
-  int flank_ = 0;
+  int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
   bool unloading_ = false;
   Vec reversed_ = nullptr;
   double reversed_total_[2] = {0, 0};
@@ -268,7 +273,7 @@ private:
       row.r_corner_y = AxisCornerRadius(all.back().y, all[all.size() - 2].y, all[all.size() - 2].x);
     }
     if (!squaring_) PetscFunctionReturn(PETSC_SUCCESS);
-    for (const auto &o : all) row.n_contact_apex += o.contact && flank_ == 1 && o.segment == 0;
+    for (const auto &o : all) row.n_contact_apex += o.contact && apex_ >= 0 && o.segment == apex_;
     if (StageOf(lambda) > 0) {
       size_t ends[2] = {all.size(), all.size()};
       for (size_t k = 0; k < all.size(); ++k)
@@ -283,7 +288,7 @@ private:
     const Vec2 off = tool.Offset();
     const Line flank{{fl.a[0] + off[0], fl.a[1] + off[1]}, fl.n_line, {fl.n_line[1], -fl.n_line[0]}};
     // The line starts at the flank's apex end (s = 0), where the fillet ends.
-    const SideSpan side = SideOnFlank(all, flank, flank_, flank_ == 1 ? 0 : -1, 0.0);
+    const SideSpan side = SideOnFlank(all, flank, flank_, apex_, 0.0);
     side_ends_[0] = side.empty() ? -1 : all[side.ends[0]].id;
     side_ends_[1] = side.empty() ? -1 : all[side.ends[1]].id;
     const GapRange g = GapsTo(all, flank, side.smin, side.smax);

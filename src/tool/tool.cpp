@@ -1,7 +1,11 @@
 #include "tubeform/tool/tool.hpp"
 
+#include <stdexcept>
+
 #include <algorithm>
 #include <cmath>
+
+#include "tubeform/tool/profile.hpp"
 
 namespace tf {
 
@@ -128,56 +132,39 @@ VAngle::VAngle(double degrees)
   }
 }
 
+std::string MakeVDie(double ro, double r_apex, double u_close, double r_edge, double angle, Tool &t)
+{
+  // As a profile (tool/profile.hpp), so that a profile file with these numbers is the same die to the last bit.
+  const VAngle v(angle);
+  const double h = ro * v.qs, half = angle / 2; // the flanks' intersection (they touch the tube); degrees
+  std::vector<ProfileItem> items;
+  Vec2 flank_start = {0, h};
+  if (r_apex > 0) {
+    const double cy = h - r_apex * v.qs;
+    items.push_back({true, {0, cy, r_apex, 90, half}}); // walked from the apex to the flank's tangent point
+    flank_start = {r_apex / v.qc, cy + r_apex / v.qs};
+  }
+  if (u_close > 0) {
+    // The flank meets the parting face y = u_close at x = xe; a convex fillet of radius r_edge tangent to both
+    // turns through 90 - half degrees, its tangent points set back from the corner by r_edge tan of half that.
+    const double xe = (h - u_close) * (v.qc / v.qs);
+    const double d = r_edge * std::tan((M_PI / 2 - v.half) / 2);
+    items.push_back({false, {flank_start[0], flank_start[1], xe - d / v.qs, u_close + d / v.qc}});
+    if (r_edge > 0) items.push_back({true, {xe + d, u_close + r_edge, r_edge, 180 + half, 270}});
+    items.push_back({false, {xe + d, u_close, 2.0 * ro, u_close}});
+  } else {
+    items.push_back({false, {flank_start[0], flank_start[1], 1.3 * ro, h - 1.3 * ro * (v.qs / v.qc)}});
+  }
+  const std::string error = BuildProfile(items, "the V-die", t);
+  t.name = "V-die";
+  return error;
+}
+
 Tool BuildVDie(double ro, double r_apex, double u_close, double r_edge, double angle)
 {
   Tool t;
-  t.name = "V-die";
-  const VAngle v(angle);
-  const double h = ro * v.qs; // the flanks' intersection: they touch the tube's outer circle
-  const Vec2 n_flank = {-1 / v.qc, -1 / v.qs};
-  Vec2 flank_start = {0, h};
-  if (r_apex > 0) {
-    Segment arc;
-    arc.kind = Segment::Arc;
-    arc.c = {0, h - r_apex * v.qs};
-    arc.radius = r_apex;
-    arc.t0 = v.half; // the flank's tangent point: the radius along -n_flank
-    arc.t1 = M_PI / 2;
-    arc.concave = true;
-    t.segments.push_back(arc);
-    flank_start = {r_apex / v.qc, arc.c[1] + r_apex / v.qs};
-  }
-  Segment flank;
-  flank.n_line = n_flank;
-  flank.a = flank_start;
-  if (u_close > 0) {
-    // The flank meets the parting face y = u_close at x = xe; a convex fillet of radius r_edge tangent to both
-    // turns through pi/2 - half, its tangent points set back from the corner by r_edge tan((pi/2 - half) / 2).
-    const double xe = (h - u_close) * (v.qc / v.qs);
-    const double d = r_edge * std::tan((M_PI / 2 - v.half) / 2);
-    flank.b = {xe - d / v.qs, u_close + d / v.qc};
-    t.segments.push_back(flank);
-    if (r_edge > 0) {
-      Segment edge;
-      edge.kind = Segment::Arc;
-      edge.radius = r_edge;
-      edge.c = {xe + d, u_close + r_edge};
-      // From the flank tangent point (the radius along n_flank, pi + half) to the face's (-pi/2), as angles in
-      // [0, 2 pi).
-      edge.t0 = -(M_PI - v.half) + 2 * M_PI;
-      edge.t1 = -M_PI / 2 + 2 * M_PI;
-      edge.concave = false;
-      t.segments.push_back(edge);
-    }
-    Segment face;
-    face.a = {xe + d, u_close};
-    face.b = {2.0 * ro, u_close};
-    face.n_line = {0, -1};
-    t.segments.push_back(face);
-  } else {
-    flank.b = {1.3 * ro, h - 1.3 * ro * (v.qs / v.qc)};
-    t.segments.push_back(flank);
-  }
+  const std::string error = MakeVDie(ro, r_apex, u_close, r_edge, angle, t);
+  if (!error.empty()) throw std::invalid_argument(error);
   return t;
 }
 

@@ -69,7 +69,8 @@ struct Options {
   double stroke_corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
   // Tools, contact, friction (METHOD.md sec. 1, 3)
   double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
-  double die_angle = 90;                        // degrees between the V-die's flanks
+  std::string die_profile; // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
+  double die_angle = 90;   // degrees between the V-die's flanks
   double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
   double friction_tol = ContactParams{}.tol;
   double rmin_dphi = ContactParams{}.dphi_max;       // r6: largest fall of f_l / (mu f_n) towards stick in an increment

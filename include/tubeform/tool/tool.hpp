@@ -80,6 +80,9 @@ struct VAngle {
 // the flank runs to x = 1.3 ro, or, with u_close > 0, to the parting face
 // y = u_close (at stroke 0) through a convex edge fillet of radius r_edge.
 // Moves down by the stroke.
+// "" or why these numbers make no die (a parting face above the apex, ...), naming "the V-die".
+std::string MakeVDie(double ro, double r_apex, double u_close, double r_edge, double angle, Tool &t);
+// The same, throwing std::invalid_argument on an error (for tests and code that checked its numbers).
 Tool BuildVDie(double ro, double r_apex, double u_close = 0, double r_edge = 0, double angle = 90);
 
 // A flat plate y = y0 from x = x0 to x1, pressing down (body below), or with

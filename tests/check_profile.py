@@ -1,0 +1,94 @@
+"""A die of one's own from a profile file (-die_profile, src/tool/profile.cpp, issue 23):
+
+1. The paper's V-die written as a profile (its numbers from METHOD.md's geometry, computed here) presses the
+   tube exactly as the built-in V-die: the same history, bit for bit (both go through one construction).
+2. A flat-bottomed die (a flat face over the tube, a concave fillet, a 45-degree flank) pressed frictionless
+   to U = 1 mm: the contact forces the file holds on nodes on the flat face are vertical (within 1e-9 of
+   their magnitude): the die the contact sees is the profile's; 1 vs 2 ranks within 1.3e-8 of the largest
+   load (tests/check_squaring.py's bound).
+3. Bad profiles: a gap, a start off the axis, the tube on the wrong side, an arc not tangent to its
+   neighbour, a word that is no number, a missing file: one error line naming the file (and line), exit 1,
+   on 1 rank and (the gap) on 2.
+"""
+import math
+import os
+
+import h5py
+import numpy as np
+
+from tfcheck import Checks, args, out, run
+
+tf, mpirun, src = args()
+k = Checks("profile")
+RO, RA = 17.5, 3.0  # options/squaring.opts
+BASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src}/options/preset-fast.opts",
+        "-error_estimate", 0, "-progress", 0, "-stroke", 1.5]
+
+
+def write(name, text):
+    with open(out(name), "w") as f:
+        f.write(text)
+    return out(name)
+
+
+def history(name):
+    with h5py.File(out(name), "r") as h:
+        return {c: h["/history"][c][:] for c in h["/history"]}
+
+
+# 1. The V-die as a profile: apex fillet from 90 to 45 degrees, the flank x + y = Ro sqrt2 to x = 1.3 Ro; the
+# shipped file (options/dies/v90_r3.profile) holds these numbers.
+s2 = math.sqrt(2.0)
+h, cy = RO * s2, RO * s2 - RA * s2
+mine = f"arc 0 {cy!r} {RA!r} 90 45\nline {RA / s2!r} {cy + RA / s2!r} {1.3 * RO!r} {h - 1.3 * RO!r}\n"
+v90 = f"{src}/options/dies/v90_r3.profile"
+shipped = "".join(l for l in open(v90) if not l.startswith("#"))
+k.check(shipped == mine, "options/dies/v90_r3.profile holds the V-die's numbers computed here from METHOD.md")
+run(tf, mpirun, 1, BASE + ["-output", out("builtin.h5")])
+run(tf, mpirun, 1, BASE + ["-die_profile", v90, "-output", out("v90.h5")])
+a, b = history("builtin.h5"), history("v90.h5")
+same = a.keys() == b.keys() and all(np.array_equal(a[c], b[c]) for c in a)
+k.check(same, f"the V-die as a profile file: the built-in die's history bit for bit ({len(a['stroke'])} rows)")
+
+# 2. A flat-bottomed die: the face y = Ro from the axis to x = 7, a fillet of 3 mm turning down to 45 degrees
+# (options/dies/flat_bottom.profile; A >= 6.01 keeps the flank x + y = A + Ro - R + R sqrt2 at least Ro from
+# the tube's centre)
+A, R = 7.0, 3.0
+flat = f"{src}/options/dies/flat_bottom.profile"
+for np_ in (1, 2):
+    run(tf, mpirun, np_, BASE + ["-die_profile", flat, "-friction_mu", 0, "-stroke", 1.0,
+                                 "-output", out(f"flat_np{np_}.h5")])
+with h5py.File(out("flat_np1.h5"), "r") as hf:
+    j = int(np.flatnonzero(hf["/time"][:, 0] <= 1 + 1e-12)[-1])
+    X, u = hf["/geometry/vertices"][:], hf["/vertex_fields/displacement_u"][j]
+    F, S = hf["/vertex_fields/contact_force"][j], hf["/vertex_fields/contact_state"][j]
+    U = hf["/history/stroke"][:][hf["/history/stage"][:] == 0][-1]
+xc = X + u
+on_face = (S > 0.5) & (np.abs(xc[:, 1] - (RO - U)) < 1e-6) & (xc[:, 0] < A)
+mag = np.hypot(F[:, 0], F[:, 1])
+k.check(on_face.any() and (np.abs(F[on_face, 0]) <= 1e-9 * mag[on_face]).all(),
+        f"flat-bottomed die, mu 0, U {U:g}: {on_face.sum()} nodes on the flat face, their forces vertical")
+l1, l2 = history("flat_np1.h5")["load"], history("flat_np2.h5")["load"]
+diff = np.abs(l1 - l2).max() / np.abs(l1).max() if l1.shape == l2.shape else math.inf
+k.check(diff < 1.3e-8, f"flat-bottomed die: 1 vs 2 ranks, loads within {diff:.1e} of the largest (1.3e-8)")
+
+# 3. Bad profiles.
+BAD = [("gap.profile", "line 0 20 5 20\nline 5.1 20 20 5\n", "gap.profile:2: a gap"),
+       ("offaxis.profile", "line 1 20 20 20\n", "offaxis.profile:1: the profile must start on the axis"),
+       ("reversed.profile", "line 0 20 -20 20\n", "reversed.profile:1: the tube is on the wrong side"),
+       # (the arc starts where the face ends, turned by 19.5 degrees from it)
+       ("kink.profile", f"line 0 {RO} {A} {RO}\narc {A - 1} {RO - math.sqrt(8)!r} {R} "
+                        f"{math.degrees(math.atan2(math.sqrt(8), 1))!r} 45\n", "kink.profile:2: the arc is not tangent"),
+       ("word.profile", "line 0 20 five 20\n", "word.profile:1: not a number"),
+       ("missing.profile", None, "missing.profile: cannot read the file")]
+for name, text, want in BAD:
+    path = write(name, text) if text is not None else out(name)
+    if text is None and os.path.exists(path):
+        os.remove(path)
+    for np_ in ((1, 2) if name == "gap.profile" else (1,)):
+        p = run(tf, mpirun, np_, BASE + ["-die_profile", path, "-output", out("bad.h5")], check=False)
+        lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
+        k.check(p.returncode != 0 and len(lines) == 1 and want in lines[0] and "-die_profile" in lines[0],
+                f"{name} on {np_} rank(s): exit {p.returncode}, {len(lines)} error line: "
+                f"{lines[0][:110] if lines else '(none)'}")
+k.done()
