@@ -9,6 +9,12 @@
 3. Bad profiles: a gap, a start off the axis, the tube on the wrong side, an arc not tangent to its
    neighbour, a word that is no number, a missing file: one error line naming the file (and line), exit 1,
    on 1 rank and (the gap) on 2.
+4. DXF (written here, group codes by hand: what CAD exports): the V-die as a LINE listed first and walked
+   the wrong way and an ARC, read through dxflib and chained from the axis, is the built-in die bit for bit;
+   the flat-bottomed die as one LWPOLYLINE whose fillet is a bulge gives the text profile's history within
+   1e-9 of each column's largest value (the bulge's centre and angles are computed, to round-off); bad
+   drawings (a piece not joined, two pieces going on from one point, none on the axis, not DXF) are refused
+   in one line naming the file and the entity.
 """
 import math
 import os
@@ -91,4 +97,59 @@ for name, text, want in BAD:
         k.check(p.returncode != 0 and len(lines) == 1 and want in lines[0] and "-die_profile" in lines[0],
                 f"{name} on {np_} rank(s): exit {p.returncode}, {len(lines)} error line: "
                 f"{lines[0][:110] if lines else '(none)'}")
+
+
+# 4. DXF.
+def dxf(name, entities):
+    lines = ["0", "SECTION", "2", "ENTITIES"] + [w for e in entities for w in e] + ["0", "ENDSEC", "0", "EOF"]
+    return write(name, "\n".join(lines) + "\n")
+
+
+def dline(x0, y0, x1, y1):
+    return ["0", "LINE", "8", "0", "10", repr(x0), "20", repr(y0), "30", "0.0", "11", repr(x1), "21", repr(y1),
+            "31", "0.0"]
+
+
+def darc(cx, cy, r, a1, a2):  # counter-clockwise from a1 to a2, as DXF has it
+    return ["0", "ARC", "8", "0", "10", repr(cx), "20", repr(cy), "30", "0.0", "40", repr(r), "50", repr(a1),
+            "51", repr(a2)]
+
+
+def dpoly(points):  # (x, y, bulge to the next vertex)
+    e = ["0", "LWPOLYLINE", "8", "0", "90", str(len(points)), "70", "0"]
+    for x, y, bulge in points:
+        e += ["10", repr(x), "20", repr(y), "42", repr(bulge)]
+    return e
+
+
+v90_dxf = dxf("v90.dxf", [dline(1.3 * RO, h - 1.3 * RO, RA / s2, cy + RA / s2), darc(0.0, cy, RA, 45.0, 90.0)])
+run(tf, mpirun, 1, BASE + ["-die_profile", v90_dxf, "-output", out("v90_dxf.h5")])
+c = history("v90_dxf.h5")
+k.check(c.keys() == a.keys() and all(np.array_equal(a[col], c[col]) for col in a),
+        "the V-die as DXF (LINE walked backwards, ARC): the built-in die's history bit for bit")
+end = (A + R / s2, RO - R + R / s2)
+flat_dxf = dxf("flat.dxf", [dpoly([(0.0, RO, 0.0), (A, RO, -math.tan(math.radians(45) / 4)), (end[0], end[1], 0.0),
+                                   (1.3 * RO, end[1] - (1.3 * RO - end[0]), 0.0)])])
+run(tf, mpirun, 1, BASE + ["-die_profile", flat_dxf, "-friction_mu", 0, "-stroke", 1.0, "-output", out("flat_dxf.h5")])
+d, t1 = history("flat_dxf.h5"), history("flat_np1.h5")
+worst = max(np.abs(d[col] - t1[col]).max() / max(np.abs(t1[col]).max(), 1e-300) for col in t1
+            if np.isfinite(t1[col]).all()) if d.keys() == t1.keys() and len(d["stroke"]) == len(t1["stroke"]) else math.inf
+k.check(worst <= 1e-9, f"the flat-bottomed die as an LWPOLYLINE with a bulge: the text profile's history within "
+        f"{worst:.1e} (1e-9)")
+BAD_DXF = [("apart.dxf", [dline(0.0, 20.0, 5.0, 20.0), dline(5.5, 20.0, 20.0, 5.0)], "is not joined to the chain"),
+           ("branch.dxf", [dline(0.0, 20.0, 5.0, 20.0), dline(5.0, 20.0, 20.0, 5.0), dline(5.0, 20.0, 20.0, 10.0)],
+            "both go on from"),
+           ("offaxis.dxf", [dline(1.0, 20.0, 5.0, 20.0)], "0 entities touch the axis")]
+for name, entities, want in BAD_DXF:
+    path = dxf(name, entities)
+    p = run(tf, mpirun, 1, BASE + ["-die_profile", path, "-output", out("bad.h5")], check=False)
+    lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
+    k.check(p.returncode != 0 and len(lines) == 1 and want in lines[0] and name in lines[0],
+            f"{name}: exit {p.returncode}, {len(lines)} error line: {lines[0][:120] if lines else '(none)'}")
+notdxf = write("notdxf.dxf", "this is no drawing\n")
+p = run(tf, mpirun, 2, BASE + ["-die_profile", notdxf, "-output", out("bad.h5")], check=False)
+lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
+k.check(p.returncode != 0 and len(lines) == 1 and "notdxf.dxf" in lines[0],
+        f"a text file named .dxf on 2 ranks: exit {p.returncode}, {len(lines)} error line: "
+        f"{lines[0][:120] if lines else '(none)'}")
 k.done()

@@ -281,7 +281,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       "perimeter-conserving rounded square (e.g. 4 t)",
                       opt.stroke_corner_radius));
   PetscCall(read.String(PetscOptionsObject, "-die_profile",
-                        "squaring: the upper die's right half from a profile file (lines and arcs, docs/dies.md) in "
+                        "squaring: the upper die's right half from a DXF file (*.dxf) or a text profile of lines and "
+                        "arcs (docs/dies.md) in "
                         "place of the V-die of -die_angle, -die_r_apex, -die_u_close, -die_r_edge",
                         opt.die_profile));
   PetscCall(read.Real(PetscOptionsObject, "-die_angle",

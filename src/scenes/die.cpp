@@ -38,7 +38,16 @@ PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die)
   PetscCheck(size >= 0, comm, PETSC_ERR_USER_INPUT, "-die_profile %s: cannot read the file", opt.die_profile.c_str());
   text.resize(size);
   if (size > 0) PetscCallMPI(MPI_Bcast(&text[0], (PetscMPIInt)size, MPI_CHAR, 0, comm));
-  const std::string error = ParseProfile(text, opt.die_profile, die.tool);
+  std::string error;
+  const std::string &f = opt.die_profile;
+  const bool dxf = f.size() > 4 && (f.compare(f.size() - 4, 4, ".dxf") == 0 || f.compare(f.size() - 4, 4, ".DXF") == 0);
+  if (dxf) {
+    std::vector<ProfileItem> items;
+    error = DxfProfile(text, f, items);
+    if (error.empty()) error = BuildProfile(items, f, die.tool);
+  } else {
+    error = ParseProfile(text, f, die.tool);
+  }
   PetscCheck(error.empty(), comm, PETSC_ERR_USER_INPUT, "-die_profile %s", error.c_str());
   die.flank = LongestLine(die.tool);
   PetscCheck(die.flank >= 0, comm, PETSC_ERR_USER_INPUT,

@@ -17,6 +17,10 @@ struct Walk {
 };
 
 std::string Where(const std::string &file, int line) { return file + ":" + std::to_string(line) + ": "; }
+std::string Where(const std::string &file, const ProfileItem &item)
+{
+  return item.where.empty() ? Where(file, item.line) : file + ": " + item.where + ": ";
+}
 
 double Angle(const Vec2 &a, const Vec2 &b)
 {
@@ -66,14 +70,14 @@ std::string BuildProfile(const std::vector<ProfileItem> &items, const std::strin
     if (!item.arc) {
       s.a = {v[0], v[1]}, s.b = {v[2], v[3]};
       const double len = std::hypot(v[2] - v[0], v[3] - v[1]);
-      if (!(len > kProfileGap)) return Where(file, line) + "a line of no length";
+      if (!(len > kProfileGap)) return Where(file, item) + "a line of no length";
       const Vec2 d = {(v[2] - v[0]) / len, (v[3] - v[1]) / len};
       s.n_line = {d[1], -d[0]}; // the right-hand side of the walk: the tube's
       w = {s.a, s.b, d, d, line, false};
     } else {
-      if (!(v[2] > 0)) return Where(file, line) + "an arc needs a positive radius";
+      if (!(v[2] > 0)) return Where(file, item) + "an arc needs a positive radius";
       if (!(std::abs(v[4] - v[3]) > 0 && std::abs(v[4] - v[3]) < 360))
-        return Where(file, line) + "an arc turns through more than 0 and less than 360 degrees";
+        return Where(file, item) + "an arc turns through more than 0 and less than 360 degrees";
       const double a0 = v[3] * M_PI / 180, a1 = v[4] * M_PI / 180, sense = a1 > a0 ? 1 : -1;
       s.kind = Segment::Arc;
       s.c = {v[0], v[1]}, s.radius = v[2];
@@ -84,7 +88,7 @@ std::string BuildProfile(const std::vector<ProfileItem> &items, const std::strin
       w = {at(a0), at(a1), dir(a0), dir(a1), line, true};
     }
     if (walks.empty() && std::abs(w.start[0]) > kProfileGap)
-      return Where(file, line) +
+      return Where(file, item) +
              "the profile must start on the axis x = 0 (the die's middle), not at x = " + std::to_string(w.start[0]);
     if (!walks.empty()) {
       const Walk &p = walks.back();
@@ -93,13 +97,13 @@ std::string BuildProfile(const std::vector<ProfileItem> &items, const std::strin
       if (gap > kProfileGap) {
         std::snprintf(buf, sizeof buf, "a gap of %.3g mm from the end of the segment of line %d (%g, %g)", gap, p.line,
                       p.end[0], p.end[1]);
-        return Where(file, line) + buf;
+        return Where(file, item) + buf;
       }
       const double turn = Angle(p.dir_end, w.dir_start);
       if ((w.arc || p.arc) && turn > kProfileTangency) {
         std::snprintf(buf, sizeof buf, "the arc is not tangent to its neighbour at (%g, %g): they turn by %.3g degrees",
                       w.start[0], w.start[1], turn * 180 / M_PI);
-        return Where(file, w.arc ? line : p.line) + buf;
+        return Where(file, w.arc ? item : items[walks.size() - 1]) + buf;
       }
     }
     walks.push_back(w);
@@ -109,7 +113,7 @@ std::string BuildProfile(const std::vector<ProfileItem> &items, const std::strin
   // Orientation: where the die comes nearest the tube's centre, its tube side must face the centre.
   Projection pr = tool.Project({0, 0});
   if (pr.segment >= 0 && pr.n[0] * -pr.point[0] + pr.n[1] * -pr.point[1] <= 0)
-    return Where(file, walks[pr.segment].line) +
+    return Where(file, items[pr.segment]) +
            "the tube is on the wrong side: walk the profile from the axis outward with the tube on the right";
   return "";
 }

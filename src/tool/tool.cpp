@@ -141,7 +141,7 @@ std::string MakeVDie(double ro, double r_apex, double u_close, double r_edge, do
   Vec2 flank_start = {0, h};
   if (r_apex > 0) {
     const double cy = h - r_apex * v.qs;
-    items.push_back({true, {0, cy, r_apex, 90, half}}); // walked from the apex to the flank's tangent point
+    items.push_back({true, {0, cy, r_apex, 90, half}, 0, ""}); // walked from the apex to the flank's tangent point
     flank_start = {r_apex / v.qc, cy + r_apex / v.qs};
   }
   if (u_close > 0) {
@@ -149,11 +149,11 @@ std::string MakeVDie(double ro, double r_apex, double u_close, double r_edge, do
     // turns through 90 - half degrees, its tangent points set back from the corner by r_edge tan of half that.
     const double xe = (h - u_close) * (v.qc / v.qs);
     const double d = r_edge * std::tan((M_PI / 2 - v.half) / 2);
-    items.push_back({false, {flank_start[0], flank_start[1], xe - d / v.qs, u_close + d / v.qc}});
-    if (r_edge > 0) items.push_back({true, {xe + d, u_close + r_edge, r_edge, 180 + half, 270}});
-    items.push_back({false, {xe + d, u_close, 2.0 * ro, u_close}});
+    items.push_back({false, {flank_start[0], flank_start[1], xe - d / v.qs, u_close + d / v.qc}, 0, ""});
+    if (r_edge > 0) items.push_back({true, {xe + d, u_close + r_edge, r_edge, 180 + half, 270}, 0, ""});
+    items.push_back({false, {xe + d, u_close, 2.0 * ro, u_close}, 0, ""});
   } else {
-    items.push_back({false, {flank_start[0], flank_start[1], 1.3 * ro, h - 1.3 * ro * (v.qs / v.qc)}});
+    items.push_back({false, {flank_start[0], flank_start[1], 1.3 * ro, h - 1.3 * ro * (v.qs / v.qc)}, 0, ""});
   }
   const std::string error = BuildProfile(items, "the V-die", t);
   t.name = "V-die";

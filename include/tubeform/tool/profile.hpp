@@ -28,7 +28,8 @@ constexpr double kProfileTangency = 1e-4;
 struct ProfileItem {
   bool arc = false;
   std::vector<double> v;
-  int line = 0; // of the file (0: built in code)
+  int line = 0;      // of the file (0: built in code)
+  std::string where; // where the errors say it is, if not at `line` (a DXF entity)
 };
 
 // Parses `text` (the contents of `file`, named in the errors) into `tool`; returns "" or a one-line error
@@ -37,6 +38,11 @@ std::string ParseProfile(const std::string &text, const std::string &file, Tool 
 // The tool of a chain of segments, checked (gaps, tangency of arcs, the start on the axis, the tube's side):
 // "" or the error. The V-die is built through here too, so that a profile file of it is the same die.
 std::string BuildProfile(const std::vector<ProfileItem> &items, const std::string &file, Tool &tool);
+
+// The chain of a DXF file's LINE, ARC and LWPOLYLINE (or POLYLINE) entities (`text`, the file's contents),
+// in any order and either orientation, walked from the entity on the axis x = 0 outward (tool/dxf.cpp):
+// "" or a one-line error naming the file and the entity.
+std::string DxfProfile(const std::string &text, const std::string &file, std::vector<ProfileItem> &items);
 
 // The longest straight segment of a tool (the side the collapse C/t is measured against), -1 if none.
 int LongestLine(const Tool &tool);
