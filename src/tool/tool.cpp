@@ -124,7 +124,7 @@ Outline ToolOutline(const Tool &t)
 
 VAngle::VAngle(double degrees)
 {
-  // At 90 degrees sqrt(2) itself and pi / 4, so that the paper's die is the same to the last bit as before angles.
+  // At 90 degrees sqrt(2) itself and pi / 4: the paper's die without the round-off of sin and cos.
   if (degrees == 90) {
     half = M_PI / 4, qs = qc = std::sqrt(2.0);
   } else {
