@@ -27,7 +27,7 @@ constexpr double kLength = 0.25;
 
 class BendingScene : public Scene {
 public:
-  explicit BendingScene(const Options &opt) : opt_(opt), strain_(opt.bending_strain, opt.bending_cycle) {}
+  explicit BendingScene(const Options &opt) : strain_(opt.bending_strain, opt.bending_cycle) {}
   std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
   {
@@ -76,7 +76,6 @@ public:
 
 private:
   static constexpr double kOnAxis = 1e-9; // mm: a node this close to y = 0 is the middle of its end
-  Options opt_;
   StrainPath strain_;
 };
 

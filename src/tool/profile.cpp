@@ -12,7 +12,6 @@ namespace {
 // A segment as walked: its start and end points and its directions there.
 struct Walk {
   Vec2 start, end, dir_start, dir_end;
-  int line; // of the file
   bool arc;
 };
 
@@ -64,7 +63,6 @@ std::string BuildProfile(const std::vector<ProfileItem> &items, const std::strin
   std::vector<Walk> walks;
   for (const ProfileItem &item : items) {
     const std::vector<double> &v = item.v;
-    const int line = item.line;
     Segment s;
     Walk w{};
     if (!item.arc) {
@@ -73,7 +71,7 @@ std::string BuildProfile(const std::vector<ProfileItem> &items, const std::strin
       if (!(len > kProfileGap)) return Where(file, item) + "a line of no length";
       const Vec2 d = {(v[2] - v[0]) / len, (v[3] - v[1]) / len};
       s.n_line = {d[1], -d[0]}; // the right-hand side of the walk: the tube's
-      w = {s.a, s.b, d, d, line, false};
+      w = {s.a, s.b, d, d, false};
     } else {
       if (!(v[2] > 0)) return Where(file, item) + "an arc needs a positive radius";
       if (!(std::abs(v[4] - v[3]) > 0 && std::abs(v[4] - v[3]) < 360))
@@ -85,7 +83,7 @@ std::string BuildProfile(const std::vector<ProfileItem> &items, const std::strin
       s.concave = sense < 0; // walked clockwise, the tube (on the right) is inside the circle
       const auto at = [&](double a) { return Vec2{v[0] + v[2] * std::cos(a), v[1] + v[2] * std::sin(a)}; };
       const auto dir = [&](double a) { return Vec2{-sense * std::sin(a), sense * std::cos(a)}; };
-      w = {at(a0), at(a1), dir(a0), dir(a1), line, true};
+      w = {at(a0), at(a1), dir(a0), dir(a1), true};
     }
     if (walks.empty() && std::abs(w.start[0]) > kProfileGap)
       return Where(file, item) +
@@ -95,8 +93,8 @@ std::string BuildProfile(const std::vector<ProfileItem> &items, const std::strin
       const double gap = std::hypot(w.start[0] - p.end[0], w.start[1] - p.end[1]);
       char buf[160];
       if (gap > kProfileGap) {
-        std::snprintf(buf, sizeof buf, "a gap of %.3g mm from the end of the segment of line %d (%g, %g)", gap, p.line,
-                      p.end[0], p.end[1]);
+        std::snprintf(buf, sizeof buf, "a gap of %.3g mm from the end of the previous segment (%g, %g)", gap, p.end[0],
+                      p.end[1]);
         return Where(file, item) + buf;
       }
       const double turn = Angle(p.dir_end, w.dir_start);
