@@ -50,6 +50,10 @@ cases = [
     (["-slide_back", "-1"], "-slide_back"),
     (["-bending_strain", "0"], "-bending_strain"),
     (["-die_angle", "40"], "-die_angle"),
+    (["-model", "quarter", "-lower_die", "flat"], "-model quarter"),
+    (["-lower_die", "flat", "-unload", "withdraw"], "-unload withdraw"),
+    (["-scene", "squaring", "-lower_die", "no/such/die.profile"], "-lower_die no/such/die.profile"),
+    (["-lower_die_motion", "up"], "-lower_die_motion"),
     (["-scene", "bending", "-mesh_nt", "3"], "needs an even number of elements"),
     (["-rmin_yield", "bogus"], "-rmin_yield"),
     (["-rmin_yield_tol", "0"], "-rmin_yield_tol"),
@@ -106,7 +110,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 54 and len(selected) == 5, f"{len(cases)} cases on 1 rank (54), {len(selected)} on 2 (5)")
+k.check(len(cases) == 58 and len(selected) == 5, f"{len(cases)} cases on 1 rank (58), {len(selected)} on 2 (5)")
 
 
 def refused(np_, extra, needle):

@@ -55,7 +55,7 @@ PetscErrorCode Build(MPI_Comm comm, std::unique_ptr<Block> &b)
   prm.material.E = 1e9, prm.material.nu = 0.3; // strains ~1e-8: the steps are linear to that
   PetscCall(b->body.Setup(b->mesh, prm));
   ContactSpec spec;
-  spec.tool = BuildFlatPlate(0.0, -10.0, 10.0, true);
+  spec.tools = {BuildFlatPlate(0.0, -10.0, 10.0, true)};
   spec.candidates = "bottom";
   b->contact.Setup(b->mesh, b->system, b->body.position(), spec);
   PetscCall(b->contact.Initialize());

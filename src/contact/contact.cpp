@@ -22,59 +22,7 @@ Vec2 ContactSet::Increment(const PetscScalar *d, PetscInt node) const
 // along l minus the tool's.
 double ContactSet::Slip(PetscInt node, const Vec2 &u, double dU) const
 {
-  return Dot(u, l_[node]) - dU * Dot(tool_.direction, l_[node]);
-}
-
-void ContactSet::Setup(Mesh &mesh, System &system, const std::vector<double> &x, ContactSpec spec)
-{
-  mesh_ = &mesh;
-  system_ = &system;
-  x_body_ = &x;
-  tool_ = std::move(spec.tool);
-  prm_ = spec.params;
-  removed_ = false;
-  const PetscInt n = mesh.num_nodes;
-  candidates_ = mesh.node_sets[spec.candidates];
-  contact_.assign(n, 0);
-  released_.assign(n, 0);
-  frozen_.assign(n, 0);
-  global_frame_.assign(n, 0);
-  sym_dir_.assign(n, Vec2{0, 0});
-  segment_.assign(n, -1);
-  for (auto *v : {&fn_, &x_, &gap_, &kappa_, &dxk_, &fnk_, &rate_, &last_dx_}) v->assign(n, 0.0);
-  r4_.assign(n, kNever);
-  r5_.assign(n, kNever);
-  n_.assign(n, Vec2{0, -1});
-  pending_.assign(n, Vec2{0, 0});
-  l_.assign(n, Vec2{-1, 0});
-  for (const auto &s : spec.symmetry)
-    for (PetscInt node : mesh.node_sets[s.first]) sym_dir_[node] = s.second;
-}
-
-PetscErrorCode ContactSet::Initialize()
-{
-  PetscFunctionBeginUser;
-  // A node already on the surface (within round-off of the coordinates) starts in contact.
-  double size = 0, global_size;
-  for (double x : mesh_->x0) size = std::max(size, std::abs(x));
-  PetscCallMPI(MPI_Allreduce(&size, &global_size, 1, MPI_DOUBLE, MPI_MAX, comm()));
-  const double tol = kStartGap * (1 + global_size);
-  struct {
-    double depth;
-    int node;
-  } inside = {0.0, -1}, deepest;
-  for (PetscInt node : candidates_) {
-    const Projection pr = tool_.Project(Position(node));
-    if (pr.segment >= 0 && std::abs(pr.gap) <= tol) contact_[node] = 1;
-    if (pr.segment >= 0 && -pr.gap > std::max(tol, inside.depth)) inside = {-pr.gap, (int)mesh_->node_orig[node]};
-  }
-  // A tool that starts inside the body would push it out by its overlap in the
-  // first increment: a wrong start (a mesh file larger than -tube_ro, say).
-  PetscCallMPI(MPI_Allreduce(&inside, &deepest, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm()));
-  PetscCheck(deepest.node < 0, comm(), PETSC_ERR_USER_INPUT,
-             "the %s starts inside the body: node %d lies %g mm inside it (does -tube_ro match the mesh?)",
-             tool_.name.c_str(), deepest.node, deepest.depth);
-  PetscFunctionReturn(PETSC_SUCCESS);
+  return Dot(u, l_[node]) - dU * Dot(Direction(node), l_[node]);
 }
 
 void ContactSet::Remove()
@@ -99,7 +47,7 @@ PetscErrorCode ContactSet::BeginIncrement()
   f_small_ *= kSmallForce;
   for (PetscInt node : candidates_) {
     if (!contact_[node]) continue;
-    const Projection pr = tool_.Project(Position(node));
+    const Projection pr = tools_[tool_of_[node]].Project(Position(node));
     if (pr.segment < 0) {
       // Slid off the end of the tool: released, its force unloaded by the next steps (and reported).
       if (mesh_->node_owned[node]) slid_off_ = std::max(slid_off_, fn_[node]);
@@ -107,7 +55,7 @@ PetscErrorCode ContactSet::BeginIncrement()
       Leave(node, 1.0);
       continue;
     }
-    TakeFrame(node, pr);
+    TakeFrame(node, tool_of_[node], pr);
     // The frame (l, n) must contain a symmetry plane's held direction; if not
     // (a node on y = 0 against an inclined flank), the node keeps the global
     // frame and both its components are prescribed.
@@ -145,7 +93,6 @@ void ContactSet::LinearizeAtStart()
 PetscErrorCode ContactSet::Constrain(double dU)
 {
   PetscFunctionBeginUser;
-  const Vec2 dir = tool_.direction;
   // Moving tool: the slip per unit stroke of the latest solution; static tool:
   // the last increment's slip.
   if (predict_)
@@ -163,7 +110,7 @@ PetscErrorCode ContactSet::Constrain(double dU)
     if (f[0] != 0 || f[1] != 0) system_->AddForce(node, -f[0], -f[1]);
     if (!contact_[node]) continue;
     // Follow the tool along n and close any gap left by the last increment.
-    const double dn = dU * Dot(dir, n_[node]) - gap_[node];
+    const double dn = dU * Dot(Direction(node), n_[node]) - gap_[node];
     if (global_frame_[node]) {
       // du . n = dn with the held component zero: the free global component follows.
       const Vec2 s = sym_dir_[node];
@@ -174,7 +121,7 @@ PetscErrorCode ContactSet::Constrain(double dU)
     system_->Prescribe(node, 1, dn);
     if (!friction() || !SlipFree(node) || !mesh_->node_owned[node]) continue;
     const friction::RowTerms t = friction::Linearize(prm_.mu, prm_.vcri, fn_[node], fnk_[node], x_[node], dxk_[node],
-                                                     dU * Dot(dir, l_[node]), kappa_[node]);
+                                                     dU * Dot(Direction(node), l_[node]), kappa_[node]);
     system_->AddRowCoupling(node, t.row_n_coeff);
     PetscCall(system_->AddFrameStiffness(node, t.diag));
     system_->AddFrameForce(node, t.rhs, 0.0);
@@ -246,8 +193,9 @@ PetscErrorCode ContactSet::ReleasePulled(Vec du, double dU, double release_fract
       // Judged on settled friction iterates only: a passing iterate can swing
       // the node through the tool and would hold it there for the trial.
       const Vec2 x = Position(node), u = Increment(d, node);
-      const Vec2 end = {x[0] + u[0] - dU * tool_.direction[0], x[1] + u[1] - dU * tool_.direction[1]};
-      const Projection pr = tool_.Project(end);
+      const Vec2 &dir = Direction(node); // the tool it was released from
+      const Vec2 end = {x[0] + u[0] - dU * dir[0], x[1] + u[1] - dU * dir[1]};
+      const Projection pr = tools_[tool_of_[node]].Project(end);
       if (pr.segment < 0 || pr.gap >= 0) continue;
       local += mesh_->node_owned[node];
       if (apply) contact_[node] = frozen_[node] = 1, released_[node] = 0;
@@ -288,7 +236,10 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
       // r4: exact first touch along the increment. A node released in this
       // trial starts on the surface: where it ends is checked by ReleasePulled.
       if (released_[node]) continue;
-      r4_[node] = tool_.FirstContact(Position(node), u, dU);
+      for (int k = 0; k < (int)tools_.size(); ++k) {
+        const double r = tools_[k].FirstContact(Position(node), u, dU);
+        if (k == 0 || r < r4_[node]) r4_[node] = r, touch_[node] = k;
+      }
       touch.Offer(r4_[node], Limiter::Contact, id);
       continue;
     }
@@ -324,8 +275,9 @@ void ContactSet::Leave(PetscInt node, double share)
   fn_[node] = x_[node] = 0;
 }
 
-void ContactSet::TakeFrame(PetscInt node, const Projection &pr)
+void ContactSet::TakeFrame(PetscInt node, int k, const Projection &pr)
 {
+  tool_of_[node] = k;
   segment_[node] = pr.segment;
   n_[node] = pr.n;
   l_[node] = pr.l;
@@ -375,6 +327,7 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
       released_[node] = 0;
     } else if (r4_[node] <= event) {
       contact_[node] = 1;
+      tool_of_[node] = touch_[node];
       fn_[node] = x_[node] = rate_[node] = 0;
     }
   }
@@ -387,24 +340,25 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
   report.release_force = global[2];
   slid_off_ = 0;
 
-  // The tool has moved by dU with the increment.
-  tool_.stroke += dU;
+  // The tools have moved by dU with the increment.
+  for (Tool &t : tools_) t.stroke += dU;
   // The new geometry: contact nodes take the frame where they now are (the
   // forces are reported in it) and keep their gap for the next increment to
   // close (on arcs, sliding along the tangent leaves a second-order gap); a
   // free node that reached the surface up to round-off is in contact.
   double worst[2] = {0, 0}, global_worst[2]; // gap of a contact node, penetration
   for (PetscInt node : candidates_) {
-    const Projection pr = tool_.Project(Position(node));
+    int k = tool_of_[node];
+    const Projection pr = contact_[node] ? tools_[k].Project(Position(node)) : ProjectNearest(Position(node), k);
     if (pr.segment < 0) continue;
     if (!contact_[node] && pr.gap <= prm_.gap_tol) {
       contact_[node] = 1;
       fn_[node] = x_[node] = 0;
     }
     if (contact_[node])
-      TakeFrame(node, pr);
+      TakeFrame(node, k, pr);
     else
-      gap_[node] = pr.gap;
+      gap_[node] = pr.gap, tool_of_[node] = k;
     if (!mesh_->node_owned[node]) continue;
     if (contact_[node]) worst[0] = std::max(worst[0], pr.gap);
     worst[1] = std::max(worst[1], -pr.gap);

@@ -66,13 +66,13 @@ PetscErrorCode ContactSet::AddPendingForces(Vec f) const
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::TotalForce(double force[2], double *moment) const
+PetscErrorCode ContactSet::TotalForce(int k, double force[2], double *moment) const
 {
   double local[3] = {0, 0, 0}, global[3];
   PetscFunctionBeginUser;
-  const Vec2 o = tool_.Offset();
+  const Vec2 o = tools_[k].Offset();
   for (PetscInt node : candidates_) {
-    if (!contact_[node] || !mesh_->node_owned[node]) continue;
+    if (!contact_[node] || tool_of_[node] != k || !mesh_->node_owned[node]) continue;
     const Vec2 fc = NodeForce(node, true), x = Position(node);
     for (int k = 0; k < 2; ++k) local[k] += fc[k];
     local[2] += (x[0] - o[0]) * fc[1] - (x[1] - o[1]) * fc[0];
@@ -107,8 +107,10 @@ PetscErrorCode ContactSet::Penetration(double &penetration) const
   double local = 0;
   PetscFunctionBeginUser;
   for (PetscInt node : candidates_) {
-    const Projection pr = tool_.Project(Position(node));
-    if (pr.segment >= 0) local = std::max(local, -pr.gap);
+    for (const Tool &t : tools_) {
+      const Projection pr = t.Project(Position(node));
+      if (pr.segment >= 0) local = std::max(local, -pr.gap);
+    }
   }
   PetscCallMPI(MPI_Allreduce(&local, &penetration, 1, MPI_DOUBLE, MPI_MAX, comm()));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -262,11 +262,11 @@ PetscErrorCode Problem::WriteFields(ResultWriter &writer, PetscInt step, double 
   // The tools' outlines where they are (kept at every step once written: in place after the paper's
   // unloading removed them).
   std::vector<ToolShape> tools;
-  if (contact_) {
-    Tool start = contact_->tool();
+  for (int k = 0; contact_ && k < contact_->num_tools(); ++k) {
+    Tool start = contact_->tool(k);
     start.stroke = 0;
-    const Outline o = ToolOutline(contact_->tool()), o0 = ToolOutline(start);
-    ToolShape shape{contact_->tool().name, {}, {}, {}};
+    const Outline o = ToolOutline(contact_->tool(k)), o0 = ToolOutline(start);
+    ToolShape shape{contact_->tool(k).name, {}, {}, {}};
     for (const Vec2 &p : o0.points) shape.xy0.insert(shape.xy0.end(), {p[0], p[1]});
     for (const Vec2 &p : o.points) shape.xy.insert(shape.xy.end(), {p[0], p[1]});
     for (const auto &l : o.lines) shape.lines.insert(shape.lines.end(), {l[0], l[1]});

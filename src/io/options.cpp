@@ -295,6 +295,19 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
               opt.die_u_close));
   PetscCall(read.Real(PetscOptionsObject, "-die_r_edge", "V-die edge fillet radius between flank and parting face (mm)",
                       opt.die_r_edge));
+  PetscCall(
+    read.String(PetscOptionsObject, "-lower_die",
+                "tool scenes: the lower die: mirror (of the upper one), flat (a floor at y = -Ro), or a profile "
+                "file (*.dxf or text) drawn as an upper die, mirrored below the tube",
+                opt.lower_die));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-lower_die_motion",
+                       "tool scenes: the lower die moves up by the stroke U (mirror) or stays (fixed; the upper die "
+                       "then travels 2 U, so U is half the dies' closing either way)",
+                       {"mirror", "fixed"}, opt.lower_die_motion));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
+                       "tool scenes: the part of the tube modelled: quarter (symmetric about both axes), half "
+                       "(about the y axis), or auto (the quarter when the lower die mirrors the upper one)",
+                       {"auto", "quarter", "half"}, opt.model));
   PetscCall(read.Real(PetscOptionsObject, "-friction_mu",
                       "Coulomb friction coefficient (0: frictionless, no friction work at all)", opt.friction_mu));
   PetscCall(read.Real(PetscOptionsObject, "-friction_vcri",

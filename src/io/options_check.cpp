@@ -157,6 +157,16 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
   PetscCheck(opt.die_profile.empty() || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
              opt.stroke_corner_radius);
+  PetscCheck(
+    opt.lower_die == "mirror" || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+    "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
+    opt.stroke_corner_radius, opt.lower_die.c_str());
+  PetscCheck(opt.model != "quarter" || (opt.lower_die == "mirror" && opt.lower_die_motion == "mirror"), comm,
+             PETSC_ERR_USER_INPUT,
+             "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
+             "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
+  PetscCheck(QuarterModel(opt) || opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
+             "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
   PetscCheck(opt.die_angle >= kDieAngleMin && opt.die_angle <= kDieAngleMax, comm, PETSC_ERR_USER_INPUT,
              "-die_angle %g: must lie in [%g, %g] degrees", opt.die_angle, kDieAngleMin, kDieAngleMax);
   PetscCheck(opt.die_r_apex >= 0 && opt.die_r_apex < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,

@@ -34,6 +34,35 @@ SerialMesh GenerateQuarterAnnulus(double ro, double t, int nt, int ntheta)
   return m;
 }
 
+SerialMesh GenerateHalfAnnulus(double ro, double t, int nt, int ntheta)
+{
+  // The quarter and its mirror image below the x axis, node for node: the half model of a symmetric case
+  // sees exactly mirrored coordinates.
+  const SerialMesh q = GenerateQuarterAnnulus(ro, t, nt, ntheta);
+  SerialMesh m;
+  const auto id = [nt](int i, int j) { return i + (nt + 1) * j; }; // j = 0 .. 2 ntheta from -90 to 90 degrees
+  m.xy.resize(2 * (nt + 1) * (2 * ntheta + 1));
+  for (int j = 0; j <= 2 * ntheta; ++j) {
+    const int jq = j < ntheta ? ntheta - j : j - ntheta;
+    for (int i = 0; i <= nt; ++i) {
+      m.xy[2 * id(i, j)] = q.xy[2 * id(i, jq)];
+      m.xy[2 * id(i, j) + 1] = j < ntheta ? -q.xy[2 * id(i, jq) + 1] : q.xy[2 * id(i, jq) + 1];
+    }
+  }
+  for (int j = 0; j < 2 * ntheta; ++j)
+    for (int i = 0; i < nt; ++i)
+      m.quads.insert(m.quads.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  for (int j = 0; j < 2 * ntheta; ++j) {
+    m.edge_sets["inner"].push_back({id(0, j), id(0, j + 1)});
+    m.edge_sets["outer"].push_back({id(nt, j), id(nt, j + 1)});
+  }
+  for (int i = 0; i < nt; ++i) {
+    m.edge_sets["x0"].push_back({id(i, 0), id(i + 1, 0)});
+    m.edge_sets["x0"].push_back({id(i, 2 * ntheta), id(i + 1, 2 * ntheta)});
+  }
+  return m;
+}
+
 SerialMesh GenerateRectangle(double lx, double ly, int nx, int ny)
 {
   SerialMesh m;

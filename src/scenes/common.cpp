@@ -70,23 +70,28 @@ PetscErrorCode QuarterSymmetry(Model &m)
 
 PetscErrorCode OuterExtents(Model &m, HistoryRow &row)
 {
-  double ext[2] = {0, 0}, g[2];
+  double ext[3] = {0, 0, 0}, g[3];
   PetscFunctionBeginUser;
   for (PetscInt n : m.mesh.node_sets["outer"]) {
     ext[0] = std::max(ext[0], m.body.position()[2 * n]);
     ext[1] = std::max(ext[1], m.body.position()[2 * n + 1]);
+    ext[2] = std::max(ext[2], -m.body.position()[2 * n + 1]);
   }
-  PetscCall(MPIU_Allreduce(ext, g, 2, MPIU_REAL, MPIU_MAX, m.comm));
+  PetscCall(MPIU_Allreduce(ext, g, 3, MPIU_REAL, MPIU_MAX, m.comm));
   row.x_max = g[0];
-  row.y_max = g[1];
-  row.deviation_ratio = std::max(g[0], g[1]) > 0 ? std::min(g[0], g[1]) / std::max(g[0], g[1]) : 1.0;
+  // A model reaching below the x axis (the half): half its height.
+  row.y_max = g[2] > 0 ? 0.5 * (g[1] + g[2]) : g[1];
+  const double c1 = row.x_max, c2 = row.y_max;
+  row.deviation_ratio = std::max(c1, c2) > 0 ? std::min(c1, c2) / std::max(c1, c2) : 1.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-std::string TubeMesh(const Options &opt, SerialMesh &mesh)
+std::string TubeMesh(const Options &opt, SerialMesh &mesh, bool half)
 {
   if (!opt.mesh_file.empty()) return ReadGmsh(opt.mesh_file, mesh);
-  mesh = GenerateQuarterAnnulus(opt.tube_ro, opt.tube_t, (int)opt.mesh_nt, (int)opt.mesh_ntheta);
+  const int nt = (int)opt.mesh_nt, ntheta = (int)opt.mesh_ntheta;
+  mesh = half ? GenerateHalfAnnulus(opt.tube_ro, opt.tube_t, nt, ntheta)
+              : GenerateQuarterAnnulus(opt.tube_ro, opt.tube_t, nt, ntheta);
   return "";
 }
 

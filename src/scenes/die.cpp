@@ -7,6 +7,46 @@
 
 namespace tf {
 
+namespace {
+
+// Collective: the tool of the profile file `path` given to `option`, or an error on every rank. Rank 0 reads
+// the file; every rank parses the same text, so each reaches the same verdict.
+PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::string &path, Tool &tool)
+{
+  PetscMPIInt rank;
+  long size = -1;
+  std::string text;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    std::ifstream in(path);
+    if (in) {
+      std::ostringstream all;
+      all << in.rdbuf();
+      text = all.str();
+      size = (long)text.size();
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&size, 1, MPI_LONG, 0, comm));
+  PetscCheck(size >= 0, comm, PETSC_ERR_USER_INPUT, "%s %s: cannot read the file", option, path.c_str());
+  text.resize(size);
+  if (size > 0) PetscCallMPI(MPI_Bcast(&text[0], (PetscMPIInt)size, MPI_CHAR, 0, comm));
+  std::string error;
+  const std::string &f = path;
+  const bool dxf = f.size() > 4 && (f.compare(f.size() - 4, 4, ".dxf") == 0 || f.compare(f.size() - 4, 4, ".DXF") == 0);
+  if (dxf) {
+    std::vector<ProfileItem> items;
+    error = DxfProfile(text, f, items);
+    if (error.empty()) error = BuildProfile(items, f, tool);
+  } else {
+    error = ParseProfile(text, f, tool);
+  }
+  PetscCheck(error.empty(), comm, PETSC_ERR_USER_INPUT, "%s %s", option, error.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace
+
 PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die)
 {
   PetscFunctionBeginUser;
@@ -20,40 +60,32 @@ PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die)
     die.apex = die.flank - 1;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  // Rank 0 reads the file; every rank parses the same text, so each reaches the same verdict.
-  PetscMPIInt rank;
-  long size = -1;
-  std::string text;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) {
-    std::ifstream in(opt.die_profile);
-    if (in) {
-      std::ostringstream all;
-      all << in.rdbuf();
-      text = all.str();
-      size = (long)text.size();
-    }
-  }
-  PetscCallMPI(MPI_Bcast(&size, 1, MPI_LONG, 0, comm));
-  PetscCheck(size >= 0, comm, PETSC_ERR_USER_INPUT, "-die_profile %s: cannot read the file", opt.die_profile.c_str());
-  text.resize(size);
-  if (size > 0) PetscCallMPI(MPI_Bcast(&text[0], (PetscMPIInt)size, MPI_CHAR, 0, comm));
-  std::string error;
-  const std::string &f = opt.die_profile;
-  const bool dxf = f.size() > 4 && (f.compare(f.size() - 4, 4, ".dxf") == 0 || f.compare(f.size() - 4, 4, ".DXF") == 0);
-  if (dxf) {
-    std::vector<ProfileItem> items;
-    error = DxfProfile(text, f, items);
-    if (error.empty()) error = BuildProfile(items, f, die.tool);
-  } else {
-    error = ParseProfile(text, f, die.tool);
-  }
-  PetscCheck(error.empty(), comm, PETSC_ERR_USER_INPUT, "-die_profile %s", error.c_str());
+  PetscCall(ReadProfileTool(comm, "-die_profile", opt.die_profile, die.tool));
   die.flank = LongestLine(die.tool);
   PetscCheck(die.flank >= 0, comm, PETSC_ERR_USER_INPUT,
              "-die_profile %s: no straight segment (C/t is measured against the profile's longest line)",
              opt.die_profile.c_str());
   die.apex = die.flank > 0 && die.tool.segments[die.flank - 1].kind == Segment::Arc ? die.flank - 1 : -1;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &upper, Tool &lower)
+{
+  PetscFunctionBeginUser;
+  if (opt.lower_die == "mirror") {
+    lower = MirrorY(upper);
+  } else if (opt.lower_die == "flat") {
+    // A floor under the tube, reaching past its widening on the outside.
+    lower = BuildFlatPlate(-opt.tube_ro, -kFloorOverhang * opt.tube_ro, (1 + kFloorReach) * opt.tube_ro, true);
+  } else {
+    Tool drawn;
+    PetscCall(ReadProfileTool(comm, "-lower_die", opt.lower_die, drawn));
+    lower = MirrorY(drawn);
+  }
+  // Its name in errors and in the results (/tools/<name>): no spaces.
+  lower.name = opt.lower_die == "flat" ? "floor" : opt.lower_die == "mirror" ? "lower-" + upper.name : "lower-die";
+  // Per unit stroke U: up by U (the mirror of the upper die's motion), or fixed (the upper die then travels 2 U).
+  lower.direction = {0.0, opt.lower_die_motion == "fixed" ? 0.0 : 1.0};
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

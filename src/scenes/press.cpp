@@ -1,13 +1,17 @@
 // The tool scenes of METHOD.md section 1: `squaring` (quarter tube, upper
 // V-die) and `flattening` (quarter ring, flat plate), with unloading.
+// With a lower die that does not mirror the upper one (-lower_die,
+// -lower_die_motion) or -model half, the half tube x >= 0 between both dies.
 //
 // Load path: lambda in [0, 1] presses the tool to the final stroke; with
 // -unload reverse or withdraw, lambda in [1, 2] unloads:
 //   reverse  (the paper): every point elastic, the contact forces at the end
 //            of loading applied reversed as nodal loads, tools removed;
 //   withdraw: the tool moves back and releases the nodes one by one (r5).
-// History: stroke = tool stroke U (mm), load = punch load on the full tube,
-// 2 x the quarter's vertical tool force (N/mm).
+// History: stroke = tool stroke U (mm; half the dies' closing), load = punch
+// load on the full tube, 2 x the model's vertical force on the upper die (N/mm).
+// The punch load is the upper die's in either model: the quarter and the half
+// model carry half of it.
 #include <algorithm>
 #include <cmath>
 
@@ -20,18 +24,27 @@ namespace tf {
 
 namespace {
 
+// The segment of the upper die a node touches (-1: free, or on the lower die): the shape metrics' apex count.
+double UpperSegment(const Model &m, PetscInt n)
+{
+  if (!m.contact || !m.contact->InContact(n) || m.contact->ToolOf(n) != 0) return -1.0;
+  return double(m.contact->Segment(n));
+}
+
 // Outer-surface nodes of the whole mesh on every rank, along the surface from
 // the x axis to the y axis (contact state and segment once the tools are set up).
-PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all)
+// With `upper`, only the nodes that started on or above the x axis (the half model's upper quarter, on which
+// the shape metrics are measured as in the quarter model).
+PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper = false)
 {
   std::vector<double> mine;
   PetscMPIInt size;
   PetscFunctionBeginUser;
   const auto &x = m.body.position();
   for (PetscInt n : m.mesh.node_sets["outer"])
-    if (m.mesh.node_owned[n])
+    if (m.mesh.node_owned[n] && (!upper || m.mesh.x0[2 * n + 1] >= 0))
       mine.insert(mine.end(), {x[2 * n], x[2 * n + 1], m.contact ? double(m.contact->InContact(n)) : 0.0,
-                               m.contact ? double(m.contact->Segment(n)) : -1.0, double(m.mesh.node_orig[n])});
+                               UpperSegment(m, n), double(m.mesh.node_orig[n])});
   PetscCallMPI(MPI_Comm_size(m.comm, &size));
   std::vector<int> counts(size), displs(size);
   int count = (int)mine.size();
@@ -51,23 +64,35 @@ PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all)
 
 class PressScene : public Scene {
 public:
-  PressScene(const Options &opt, bool squaring) : opt_(opt), squaring_(squaring)
+  PressScene(const Options &opt, bool squaring) : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt))
   {
     stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_angle)
                                            : opt.stroke;
     back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
   }
 
-  std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
-  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
+  std::vector<std::string> BoundarySets() const override
+  {
+    if (half_) return {"inner", "outer", "x0"};
+    return {"inner", "outer", "x0", "y0"};
+  }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh, half_); }
+  std::string MeshLayout(const Options &opt) const override
+  {
+    return Scene::MeshLayout(opt) + (half_ ? " (the half model: twice that around)" : "");
+  }
   LoadPath Path(const Options &opt) const override
   {
     return {opt_.unload == "none" ? 1.0 : 2.0, stroke_ / opt.punch_speed, {1.0}};
   }
   // The quarter model carries half the punch load of the full tube (the
-  // other half pushes the left quarter); the reversed loads of the paper's
+  // other half pushes the left quarter), moving by U; the half model carries
+  // half of it on each die, closing by 2 U. The reversed loads of the paper's
   // unloading do no work along the stroke.
-  double LoadWorkShare(double lambda) const override { return lambda > 1.0 && opt_.unload == "reverse" ? 0.0 : 0.5; }
+  double LoadWorkShare(double lambda) const override
+  {
+    return lambda > 1.0 && opt_.unload == "reverse" ? 0.0 : half_ ? 1.0 : 0.5;
+  }
   double ToolStroke(double lambda) const override
   {
     if (lambda <= 1.0) return lambda * stroke_;
@@ -78,15 +103,26 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(CheckReach(m.comm));
+    Tool upper;
     if (squaring_) {
       Die die;
       PetscCall(BuildDie(m.comm, opt_, die));
-      tools.tool = die.tool;
+      upper = die.tool;
       flank_ = die.flank, apex_ = die.apex;
     } else
-      tools.tool = BuildFlatPlate(opt_.tube_ro, -kPlateOverhang * opt_.tube_ro, (1 + kPlateReach) * opt_.tube_ro);
+      upper = BuildFlatPlate(opt_.tube_ro, -kPlateOverhang * opt_.tube_ro, (1 + kPlateReach) * opt_.tube_ro);
     tools.candidates = "outer";
-    tools.symmetry = {{"x0", {1, 0}}, {"y0", {0, 1}}};
+    if (half_) {
+      // The half tube between both dies, mirrored about the y axis only.
+      Tool lower;
+      PetscCall(BuildLowerDie(m.comm, opt_, upper, lower));
+      if (opt_.lower_die_motion == "fixed") upper.direction = {0.0, -2.0}; // the dies close by 2 U either way
+      tools.tools = {upper, lower};
+      tools.symmetry = {{"x0", {1, 0}}};
+    } else {
+      tools.tools = {upper};
+      tools.symmetry = {{"x0", {1, 0}}, {"y0", {0, 1}}};
+    }
     // Default VCRI: 2 % of the mean distance between the outer surface's nodes
     // (of the mesh actually used: generated or read from a file).
     std::vector<SurfacePoint> outer;
@@ -114,7 +150,7 @@ public:
   {
     PetscFunctionBeginUser;
     const double ro = opt_.tube_ro, ri = ro - opt_.tube_t;
-    if (squaring_ && !opt_.die_profile.empty()) {
+    if (squaring_ && (!opt_.die_profile.empty() || opt_.lower_die != "mirror")) {
       // A profile of one's own: no closed form of its cavity; a stroke that closes it fails in the run.
     } else if (squaring_) {
       // The cavity is a rhombus of half-diagonals D = h - U and D tan(half): area 2 D^2 tan(half).
@@ -144,11 +180,12 @@ public:
     PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
     PetscCall(VecZeroEntries(reversed_));
     PetscCall(m.contact->AddContactForces(reversed_));
-    PetscCall(m.contact->TotalForce(reversed_total_, &reversed_moment_));
+    PetscCall(m.contact->TotalForce(kUpper, reversed_total_, &reversed_moment_));
     m.contact->Remove();
     m.system.ClearFrames();
     m.body.SetElasticOnly();
     unloading_ = true;
+    if (half_) PetscCall(ChoosePin(m));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
@@ -167,6 +204,11 @@ public:
       PetscCall(VecRestoreArrayRead(reversed_, &f));
     }
     PetscCall(QuarterSymmetry(m));
+    // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
+    // holds the tube's rigid motion along y.
+    if (unloading_ && pin_ >= 0)
+      PetscCheck(m.system.PrescribeAlong(pin_, 0, 1, 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "the springback's pin is not along a node frame axis");
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
@@ -187,9 +229,13 @@ public:
       for (int k = 0; k < 2; ++k) force[k] = (2.0 - lambda) * reversed_total_[k];
       moment = (2.0 - lambda) * reversed_moment_;
     } else
-      PetscCall(m.contact->TotalForce(force, &moment));
+      PetscCall(m.contact->TotalForce(kUpper, force, &moment));
     row.load = -2.0 * force[1]; // full tube: both halves push the die up
     row.tool_fx = -force[0], row.tool_fy = -force[1], row.tool_moment = -moment;
+    if (half_ && !unloading_) {
+      PetscCall(m.contact->TotalForce(kLower, force, &moment));
+      row.lower_fx = -force[0], row.lower_fy = -force[1], row.lower_moment = -moment;
+    }
     PetscCall(OuterExtents(m, row));
     PetscCall(Shape(m, lambda, row));
     row.stage = StageOf(lambda);
@@ -225,6 +271,7 @@ public:
     side_ends_[0] = (long)pairs[2], side_ends_[1] = (long)pairs[3];
     reversed_moment_ = pairs[4];
     if (!unloading_) PetscFunctionReturn(PETSC_SUCCESS);
+    if (half_ && ar.reading()) PetscCall(ChoosePin(m));
     // The reversed contact forces: contributions of the owned nodes.
     if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
     std::vector<double> f(2 * m.mesh.num_nodes);
@@ -248,8 +295,12 @@ private:
   // VCRI as a fraction of the outer nodes' spacing: a micro-slip far below an
   // element, so that sticking nodes hold (docs/theory.md, "The law").
   static constexpr double kVcriOfSpacing = 0.02;
+  // The tools' places in the contact set.
+  static constexpr int kUpper = 0, kLower = 1;
   Options opt_;
   bool squaring_;
+  bool half_;         // the half model x >= 0 with both dies
+  PetscInt pin_ = -1; // the half model's springback: the local node whose y is held (-1: none here)
   double stroke_ = 0, back_ = 0;
   int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
   bool unloading_ = false;
@@ -257,6 +308,27 @@ private:
   double reversed_total_[2] = {0, 0};
   double reversed_moment_ = 0;   // of the reversed forces about the tool frame's origin (TotalForce)
   long side_ends_[2] = {-1, -1}; // input node numbers of the side's ends (latest loading state)
+
+  // The half model's springback: the inner node nearest the x axis (a node on it, in a symmetric case, keeps
+  // y = 0) holds the tube's rigid motion along y; the lowest input number among equals.
+  PetscErrorCode ChoosePin(Model &m)
+  {
+    struct {
+      double y;
+      int id;
+    } mine = {kNever, -1}, best;
+    PetscFunctionBeginUser;
+    for (PetscInt n : m.mesh.node_sets["inner"]) {
+      const double y = std::abs(m.mesh.x0[2 * n + 1]);
+      const int id = (int)m.mesh.node_orig[n];
+      if (m.mesh.x0[2 * n] > 0 && (y < mine.y || (y == mine.y && id < mine.id))) mine = {y, id};
+    }
+    PetscCallMPI(MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MINLOC, m.comm));
+    pin_ = -1;
+    for (PetscInt n : m.mesh.node_sets["inner"])
+      if (m.mesh.node_orig[n] == best.id) pin_ = n;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
 
   // C/t (METHOD.md sec. 6) and the corner radii. Loading: the largest gap
   // between the flank and the outer surface along the side (SideOnFlank: the
@@ -267,7 +339,7 @@ private:
   {
     std::vector<SurfacePoint> all;
     PetscFunctionBeginUser;
-    PetscCall(GatherOuter(m, all));
+    PetscCall(GatherOuter(m, all, half_));
     if (all.size() >= 2) {
       row.r_corner_x = AxisCornerRadius(all.front().x, all[1].x, all[1].y);
       row.r_corner_y = AxisCornerRadius(all.back().y, all[all.size() - 2].y, all[all.size() - 2].x);
@@ -283,7 +355,7 @@ private:
       row.c_over_t = found ? ChordGap(all, ends[0], ends[1]) / opt_.tube_t : 0.0;
       PetscFunctionReturn(PETSC_SUCCESS);
     }
-    const Tool &tool = m.contact->tool();
+    const Tool &tool = m.contact->tool(kUpper);
     const Segment &fl = tool.segments[flank_];
     const Vec2 off = tool.Offset();
     const Line flank{{fl.a[0] + off[0], fl.a[1] + off[1]}, fl.n_line, {fl.n_line[1], -fl.n_line[0]}};

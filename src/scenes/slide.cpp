@@ -37,7 +37,7 @@ public:
   double LoadWorkShare(double lambda) const override { return lambda > 1.0 ? 1.0 : 0.0; }
   PetscErrorCode Initialize(Model &, ContactSpec &tools) override
   {
-    tools.tool = BuildFlatPlate(0.0, -kFloorHalfLength, kFloorHalfLength, true);
+    tools.tools = {BuildFlatPlate(0.0, -kFloorHalfLength, kFloorHalfLength, true)};
     tools.candidates = "bottom";
     tools.params = MakeContactParams(opt_, kVcri);
     return 0;
@@ -72,7 +72,7 @@ public:
     PetscCallMPI(MPI_Allreduce(local, g, 2, MPI_DOUBLE, MPI_SUM, m.comm));
     row.slip = g[0] / g[1];
     double force[2], moment;
-    PetscCall(m.contact->TotalForce(force, &moment));
+    PetscCall(m.contact->TotalForce(0, force, &moment));
     row.tool_fx = -force[0], row.tool_fy = -force[1], row.tool_moment = -moment;
     row.stage = lambda > 2.0 + kLambdaTol ? 2 : StageOf(lambda); // 2: pushed back
     PetscFunctionReturn(PETSC_SUCCESS);

@@ -32,8 +32,10 @@ public:
     arc.t0 = -M_PI / 3; // past both symmetry planes: the ring's ends stay on the arc
     arc.t1 = M_PI / 2 + M_PI / 3;
     arc.concave = true;
-    tools.tool.name = "cylinder";
-    tools.tool.segments = {arc};
+    Tool cylinder;
+    cylinder.name = "cylinder";
+    cylinder.segments = {arc};
+    tools.tools = {cylinder};
     tools.candidates = "outer";
     tools.params = MakeContactParams(opt_, kVcri);
     return 0;

@@ -101,6 +101,20 @@ double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
   return rmin;
 }
 
+Tool MirrorY(const Tool &t)
+{
+  Tool m = t;
+  const auto flip = [](const Vec2 &v) { return Vec2{v[0], -v[1]}; };
+  for (Segment &s : m.segments) {
+    s.a = flip(s.a), s.b = flip(s.b), s.c = flip(s.c), s.n_line = flip(s.n_line);
+    // The angle t maps to -t: the range [t0, t1] becomes [-t1, -t0].
+    const double t0 = s.t0;
+    s.t0 = -s.t1, s.t1 = -t0;
+  }
+  m.direction = flip(t.direction);
+  return m;
+}
+
 Outline ToolOutline(const Tool &t)
 {
   Outline o;

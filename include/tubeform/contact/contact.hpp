@@ -72,8 +72,10 @@ struct ContactCommit {
 
 // What a scene asks of the driver's contact set.
 struct ContactSpec {
-  Tool tool;
-  std::string candidates; // the node set that may touch the tool (e.g. "outer")
+  // The rigid tools, each moving by its direction per unit of the scene's
+  // stroke (a fixed tool: direction 0). A node touches one tool at a time.
+  std::vector<Tool> tools;
+  std::string candidates; // the node set that may touch the tools (e.g. "outer")
   // Node sets whose component along a global axis is held (e.g. x0 -> (1, 0)).
   std::vector<std::pair<std::string, Vec2>> symmetry;
   ContactParams params;
@@ -89,7 +91,10 @@ public:
   // the set takes no further part in the increments.
   void Remove();
   bool active() const { return !removed_; }
-  void SetStroke(double stroke) { tool_.stroke = stroke; }
+  void SetStroke(double stroke)
+  {
+    for (Tool &t : tools_) t.stroke = stroke;
+  }
 
   // Frames of the contact nodes on the current geometry (before assembly).
   PetscErrorCode BeginIncrement();
@@ -132,9 +137,9 @@ public:
   // The pending forces of released nodes (owned nodes, global frame) added to
   // f: applied loads until the following increments have removed them.
   PetscErrorCode AddPendingForces(Vec f) const;
-  // Collective: sum over contact nodes of the force on the body (global frame) and, if asked, its moment
-  // about the tool frame's origin at the current stroke (counter-clockwise positive, N mm/mm).
-  PetscErrorCode TotalForce(double force[2], double *moment = nullptr) const;
+  // Collective: sum over the nodes in contact with tool `k` of the force on the body (global frame) and, if
+  // asked, its moment about the tool frame's origin at the current stroke (counter-clockwise positive, N mm/mm).
+  PetscErrorCode TotalForce(int k, double force[2], double *moment = nullptr) const;
   PetscErrorCode Count(PetscInt &n) const;
   // Collective: sum over contact nodes of the normal force f_n.
   PetscErrorCode NormalForceSum(double &sum) const;
@@ -153,8 +158,11 @@ public:
   // slips, frames, pending forces, predictors) between increments.
   PetscErrorCode Persist(Archive &ar);
   bool InContact(PetscInt node) const { return contact_[node]; }
+  // The tool a node touches (or, free, the one it is nearest to) and the segment of it.
+  int ToolOf(PetscInt node) const { return tool_of_[node]; }
   int Segment(PetscInt node) const { return segment_[node]; }
-  const Tool &tool() const { return tool_; }
+  int num_tools() const { return (int)tools_.size(); }
+  const Tool &tool(int k) const { return tools_[k]; }
   bool friction() const { return prm_.mu > 0; }
   // Equilibrium iterations balance every step: the force of a node leaving the
   // tool is balanced by the next step's iterations, not kept as a pending load.
@@ -167,7 +175,7 @@ private:
   Mesh *mesh_ = nullptr;
   System *system_ = nullptr;
   const std::vector<double> *x_body_ = nullptr;
-  Tool tool_;
+  std::vector<Tool> tools_;
   ContactParams prm_;
   bool removed_ = false;
   bool balanced_ = false;
@@ -176,6 +184,8 @@ private:
   std::vector<char> contact_, global_frame_;
   std::vector<Vec2> sym_dir_; // held direction on a symmetry plane, {0, 0} if none
   std::vector<int> segment_;
+  std::vector<int> tool_of_; // the tool of segment_ (contact), or the nearest one (free)
+  std::vector<int> touch_;   // the tool a free node's r4 is with
   std::vector<double> fn_, x_, gap_, kappa_, dxk_, fnk_, r4_, r5_;
   std::vector<double> rate_;    // slip per unit stroke of the latest solution: predicts the next iterate
   std::vector<double> last_dx_; // slip of the last increment (predictor for static tools)
@@ -205,8 +215,13 @@ private:
   void Leave(PetscInt node, double share);
   // A symmetry plane's held direction is a global axis: the index of that axis.
   static int HeldComponent(const Vec2 &s) { return std::abs(s[0]) > std::abs(s[1]) ? 0 : 1; }
-  // Frame, gap and curvature of a contact node from its projection on the tool.
-  void TakeFrame(PetscInt node, const Projection &pr);
+  // Frame, gap and curvature of a contact node from its projection on tool k.
+  void TakeFrame(PetscInt node, int k, const Projection &pr);
+  // A point's projection on the nearest tool (the smallest gap among the
+  // tools it projects on; segment -1 and k = -1 if none).
+  Projection ProjectNearest(const Vec2 &x, int &k) const;
+  // The motion per unit stroke of the tool a node touches (or was released from).
+  const Vec2 &Direction(PetscInt node) const { return tools_[tool_of_[node]].direction; }
   Vec2 Increment(const PetscScalar *d, PetscInt node) const;
   double NormalReaction(PetscInt node, const PetscScalar *react) const;
   // The normal force increment of a solution with normal reaction reaction_n

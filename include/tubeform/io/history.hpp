@@ -21,6 +21,7 @@ struct HistoryRow {
   double r_corner_x = 0, r_corner_y = 0, penetration = 0, tension = 0, stage = 0, n_contact_apex = 0;
   double release_force = 0, contact_gap = 0, fn_mismatch = 0;
   double tool_fx = 0, tool_fy = 0, tool_moment = 0;
+  double lower_fx = 0, lower_fy = 0, lower_moment = 0;
   double w_kinetic = 0, w_inertia = 0, inertia = 0, w_damped = 0, w_tool = 0, internal_error = 0;
   double slip = 0, fn_sum = 0, det_sign = 0;
 };

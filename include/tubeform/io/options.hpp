@@ -69,8 +69,11 @@ struct Options {
   double stroke_corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
   // Tools, contact, friction (METHOD.md sec. 1, 3)
   double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
-  std::string die_profile; // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
-  double die_angle = 90;   // degrees between the V-die's flanks
+  std::string die_profile;          // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
+  double die_angle = 90;            // degrees between the V-die's flanks
+  std::string lower_die = "mirror"; // mirror, flat or a profile file drawn as an upper die
+  std::string lower_die_motion = "mirror";      // mirror (up by the stroke) or fixed
+  std::string model = "auto";                   // quarter, half, or auto: the quarter where it is exact
   double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
   double friction_tol = ContactParams{}.tol;
   double rmin_dphi = ContactParams{}.dphi_max;       // r6: largest fall of f_l / (mu f_n) towards stick in an increment
@@ -149,6 +152,14 @@ inline void ChooseElement(Options &opt)
   const bool bar = opt.mesh_file.empty() && opt.mesh_nt >= opt.element_bar_nt;
   opt.element = bar ? fe::Formulation::QM6Bar : fe::Formulation::QM6;
   opt.element_name = bar ? "qm6bar" : "qm6";
+}
+
+// The tool scenes model a quarter of the tube where that is exact (or asked for): -model quarter, or auto
+// with a lower die that mirrors the upper one in shape and motion; the half (x >= 0) otherwise.
+inline bool QuarterModel(const Options &opt)
+{
+  return opt.model == "quarter" ||
+         (opt.model == "auto" && opt.lower_die == "mirror" && opt.lower_die_motion == "mirror");
 }
 
 } // namespace tf

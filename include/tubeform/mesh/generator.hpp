@@ -10,6 +10,10 @@ namespace tf {
 // x axis, has id i + (nt + 1) j. Cells are counter-clockwise. Boundary sets:
 // inner (r = ro - t), outer (r = ro), y0 (theta = 0), x0 (theta = 90 deg).
 SerialMesh GenerateQuarterAnnulus(double ro, double t, int nt, int ntheta);
+// The half annulus x >= 0: the quarter's nodes and their mirror images below
+// the x axis (2 ntheta elements around, from -90 to 90 degrees); sets inner,
+// outer, and x0 (both ends, on x = 0).
+SerialMesh GenerateHalfAnnulus(double ro, double t, int nt, int ntheta);
 
 // A rectangle [0, lx] x [0, ly] of nx x ny cells with sets
 // "left", "right", "bottom", "top" (used by block scenes and tests).

@@ -17,10 +17,11 @@ PetscErrorCode AddEdgePressure(Model &m, const std::string &set, double pressure
                                double stiffness_p = 0);
 // u_x = 0 on x = 0, u_y = 0 on y = 0, in each node's frame.
 PetscErrorCode QuarterSymmetry(Model &m);
-// C1 = x_max, C2 = y_max of the outer surface and their ratio.
+// C1 = x_max, C2 = y_max of the outer surface (half its height where the model reaches below the x axis)
+// and their ratio.
 PetscErrorCode OuterExtents(Model &m, HistoryRow &row);
-// The tube mesh of the options: structured or -mesh_file.
-std::string TubeMesh(const Options &opt, SerialMesh &mesh);
+// The tube mesh of the options: structured (the quarter, or with `half` the half x >= 0) or -mesh_file.
+std::string TubeMesh(const Options &opt, SerialMesh &mesh, bool half = false);
 // The history's stage: 0 up to lambda = 1, 1 beyond (unloading, or a scene's second stage).
 inline double StageOf(double lambda) { return lambda > 1.0 + kLambdaTol ? 1 : 0; }
 

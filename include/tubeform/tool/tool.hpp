@@ -89,6 +89,9 @@ Tool BuildVDie(double ro, double r_apex, double u_close = 0, double r_edge = 0, 
 // `floor` a support with the body above it.
 Tool BuildFlatPlate(double y0, double x0, double x1, bool floor = false);
 
+// The mirror image of a tool about the x axis (y -> -y): its segments, the body's side and its motion.
+Tool MirrorY(const Tool &t);
+
 // The paper's stroke rule: the stroke at which a rounded rhombus (a square at
 // 90 degrees) of corner radius rc, its sides on the closed dies' flanks, has
 // the perimeter of the tube's outer circle 2 pi ro.

@@ -1,0 +1,88 @@
+// The contact set's start: its tools and candidate nodes, the nodes touching
+// a tool at stroke 0, and which tool a point is nearest to.
+#include <algorithm>
+#include <cmath>
+
+#include "tubeform/contact/contact.hpp"
+
+namespace tf {
+
+Projection ContactSet::ProjectNearest(const Vec2 &x, int &k) const
+{
+  Projection best;
+  k = -1;
+  for (int t = 0; t < (int)tools_.size(); ++t) {
+    const Projection pr = tools_[t].Project(x);
+    if (pr.segment >= 0 && (k < 0 || pr.gap < best.gap)) best = pr, k = t;
+  }
+  return best;
+}
+
+void ContactSet::Setup(Mesh &mesh, System &system, const std::vector<double> &x, ContactSpec spec)
+{
+  mesh_ = &mesh;
+  system_ = &system;
+  x_body_ = &x;
+  tools_ = std::move(spec.tools);
+  prm_ = spec.params;
+  removed_ = false;
+  const PetscInt n = mesh.num_nodes;
+  candidates_ = mesh.node_sets[spec.candidates];
+  contact_.assign(n, 0);
+  released_.assign(n, 0);
+  frozen_.assign(n, 0);
+  global_frame_.assign(n, 0);
+  sym_dir_.assign(n, Vec2{0, 0});
+  segment_.assign(n, -1);
+  tool_of_.assign(n, 0);
+  touch_.assign(n, 0);
+  for (auto *v : {&fn_, &x_, &gap_, &kappa_, &dxk_, &fnk_, &rate_, &last_dx_}) v->assign(n, 0.0);
+  r4_.assign(n, kNever);
+  r5_.assign(n, kNever);
+  n_.assign(n, Vec2{0, -1});
+  pending_.assign(n, Vec2{0, 0});
+  l_.assign(n, Vec2{-1, 0});
+  for (const auto &s : spec.symmetry)
+    for (PetscInt node : mesh.node_sets[s.first]) sym_dir_[node] = s.second;
+}
+
+PetscErrorCode ContactSet::Initialize()
+{
+  PetscFunctionBeginUser;
+  // A node already on the surface (within round-off of the coordinates) starts in contact.
+  double size = 0, global_size;
+  for (double x : mesh_->x0) size = std::max(size, std::abs(x));
+  PetscCallMPI(MPI_Allreduce(&size, &global_size, 1, MPI_DOUBLE, MPI_MAX, comm()));
+  const double tol = kStartGap * (1 + global_size);
+  struct {
+    double depth;
+    int node;
+  } inside = {0.0, -1}, deepest;
+  int which = 0;
+  for (PetscInt node : candidates_)
+    for (int k = 0; k < (int)tools_.size(); ++k) {
+      const Projection pr = tools_[k].Project(Position(node));
+      if (pr.segment >= 0 && std::abs(pr.gap) <= tol && !contact_[node]) contact_[node] = 1, tool_of_[node] = k;
+      if (pr.segment >= 0 && -pr.gap > std::max(tol, inside.depth))
+        inside = {-pr.gap, (int)mesh_->node_orig[node]}, which = k;
+    }
+  // A tool that starts inside the body would push it out by its overlap in the
+  // first increment: a wrong start (a mesh file larger than -tube_ro, say).
+  PetscCallMPI(MPI_Allreduce(&inside, &deepest, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm()));
+  if (deepest.node >= 0) {
+    // The tool's name from the rank that found the deepest node.
+    struct {
+      double depth;
+      int rank;
+    } mine = {inside.depth, 0}, top;
+    PetscCallMPI(MPI_Comm_rank(comm(), &mine.rank));
+    PetscCallMPI(MPI_Allreduce(&mine, &top, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm()));
+    PetscCallMPI(MPI_Bcast(&which, 1, MPI_INT, top.rank, comm()));
+  }
+  PetscCheck(deepest.node < 0, comm(), PETSC_ERR_USER_INPUT,
+             "the %s starts inside the body: node %d lies %g mm inside it (does -tube_ro match the mesh?)",
+             tools_[which].name.c_str(), deepest.node, deepest.depth);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
