@@ -54,6 +54,8 @@ cases = [
     (["-lower_die", "flat", "-unload", "withdraw"], "-unload withdraw"),
     (["-scene", "squaring", "-lower_die", "no/such/die.profile"], "-lower_die no/such/die.profile"),
     (["-lower_die_motion", "up"], "-lower_die_motion"),
+    (["-pass2_stroke", "2", "-unload", "withdraw"], "-pass2_stroke"),
+    (["-pass2_lower_die", "flat"], "give -pass2_stroke"),
     (["-scene", "bending", "-mesh_nt", "3"], "needs an even number of elements"),
     (["-rmin_yield", "bogus"], "-rmin_yield"),
     (["-rmin_yield_tol", "0"], "-rmin_yield_tol"),
@@ -110,7 +112,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 58 and len(selected) == 5, f"{len(cases)} cases on 1 rank (58), {len(selected)} on 2 (5)")
+k.check(len(cases) == 60 and len(selected) == 5, f"{len(cases)} cases on 1 rank (60), {len(selected)} on 2 (5)")
 
 
 def refused(np_, extra, needle):

@@ -304,6 +304,13 @@ void Body::SetElasticOnly()
   StaleAll();
 }
 
+void Body::SetPlasticAgain()
+{
+  elastic_only_ = false;
+  material_ = MakeMaterial(prm_.material, prm_.rmin_deps, prm_.drift_correction);
+  StaleAll();
+}
+
 PetscErrorCode Body::InternalForce(Vec f_local, double *magnitude, double *count) const
 {
   PetscScalar *f;

@@ -10,6 +10,15 @@ namespace tf {
 
 namespace {
 
+// The last row of the stages up to `stage`.
+const HistoryRow &LastUpTo(const std::vector<HistoryRow> &rows, double stage)
+{
+  const HistoryRow *last = &rows.front();
+  for (const auto &r : rows)
+    if (r.stage <= stage) last = &r;
+  return *last;
+}
+
 // The loading stage's rows (stage 0), in order.
 std::vector<const HistoryRow *> Loading(const std::vector<HistoryRow> &rows)
 {
@@ -48,7 +57,8 @@ Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const std::vect
   a.tool = tool;
   const auto loading = Loading(rows);
   if (loading.empty()) return a;
-  const HistoryRow &end = *loading.back(), &last = rows.back();
+  // The springback is the first pass's (stage 1); a second pass (stages 2, 3) is reported apart.
+  const HistoryRow &end = *loading.back(), &last = tool ? LastUpTo(rows, 1) : rows.back();
   a.springback = &last != &end;
   a.stroke = end.stroke;
   a.load = end.load;
@@ -75,6 +85,12 @@ Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const std::vect
   a.ct_loaded = end.c_over_t, a.dr_loaded = end.deviation_ratio, a.x_loaded = end.x_max, a.y_loaded = end.y_max;
   a.ct_unloaded = last.c_over_t, a.dr_unloaded = last.deviation_ratio;
   a.x_unloaded = last.x_max, a.y_unloaded = last.y_max;
+  if (tool && rows.back().stage >= 2) {
+    const HistoryRow &end2 = LastUpTo(rows, 2), &last2 = rows.back();
+    a.pass2 = true;
+    a.stroke2 = end2.stroke, a.load2 = end2.load, a.ct_loaded2 = end2.c_over_t, a.dr_loaded2 = end2.deviation_ratio;
+    a.ct_unloaded2 = last2.c_over_t, a.dr_unloaded2 = last2.deviation_ratio;
+  }
   if (!companion) return a;
   const auto coarse = Loading(*companion);
   if (coarse.empty()) return a;
@@ -89,7 +105,8 @@ Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const std::vect
     a.worst_ct_error = std::max(a.worst_ct_error, a.ct_error.back());
   }
   if (a.springback) {
-    a.ct_unloaded_error = kEstimateSafety * std::abs(a.ct_unloaded - companion->back().c_over_t);
+    a.ct_unloaded_error =
+      kEstimateSafety * std::abs(a.ct_unloaded - (tool ? LastUpTo(*companion, 1) : companion->back()).c_over_t);
     a.worst_ct_error = std::max(a.worst_ct_error, a.ct_unloaded_error);
   }
   return a;
@@ -152,6 +169,12 @@ PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, double target_load, d
                             a.ct_unloaded, a.dr_unloaded, a.x_unloaded - a.x_loaded, a.y_unloaded - a.y_loaded));
     PetscCall(PetscPrintf(comm, "\n"));
   }
+  if (a.pass2)
+    PetscCall(PetscPrintf(comm,
+                          "tubeform: second pass: load at its end (%s = %g) %.5g %s; C/t %.4f, C1/C2 %.4f loaded; "
+                          "after springback C/t %.4f, C1/C2 %.4f\n",
+                          a.stroke_name.c_str(), a.stroke2, a.load2, a.load_unit.c_str(), a.ct_loaded2, a.dr_loaded2,
+                          a.ct_unloaded2, a.dr_unloaded2));
   if (a.estimated) {
     PetscCall(PetscPrintf(comm,
                           "tubeform: estimated error (an upper bound: %s x the difference from a run at half the "

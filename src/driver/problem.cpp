@@ -216,7 +216,7 @@ PetscErrorCode Problem::Run()
       }
     const double next_break =
       *std::find_if(breaks.begin(), breaks.end(), [&](double b) { return b > lambda + kLambdaTol; });
-    const double dl_stage = lambda >= 1 - kLambdaTol ? dl_unload : dl_load;
+    const double dl_stage = scene_->Unloading(lambda) ? dl_unload : dl_load;
     const double dl = std::min(dl_stage, next_break - lambda);
 
     // 3. Frames of the supports and contact nodes on the current geometry.

@@ -308,6 +308,17 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                        "tool scenes: the part of the tube modelled: quarter (symmetric about both axes), half "
                        "(about the y axis), or auto (the quarter when the lower die mirrors the upper one)",
                        {"auto", "quarter", "half"}, opt.model));
+  PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
+                      "squaring: a second pass after the springback: press again to this stroke (mm, from the second "
+                      "pass's die touching the round tube's circle; 0: one pass), then spring back",
+                      opt.pass2_stroke));
+  PetscCall(read.String(PetscOptionsObject, "-pass2_die_profile",
+                        "squaring: the second pass's upper die from a profile file (default: the first pass's die)",
+                        opt.pass2_die_profile));
+  PetscCall(read.String(PetscOptionsObject, "-pass2_lower_die",
+                        "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first "
+                        "pass's -lower_die)",
+                        opt.pass2_lower_die));
   PetscCall(read.Real(PetscOptionsObject, "-friction_mu",
                       "Coulomb friction coefficient (0: frictionless, no friction work at all)", opt.friction_mu));
   PetscCall(read.Real(PetscOptionsObject, "-friction_vcri",

@@ -161,10 +161,18 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
     opt.lower_die == "mirror" || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
     "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
     opt.stroke_corner_radius, opt.lower_die.c_str());
-  PetscCheck(opt.model != "quarter" || (opt.lower_die == "mirror" && opt.lower_die_motion == "mirror"), comm,
-             PETSC_ERR_USER_INPUT,
+  const bool pass2_mirror = opt.pass2_lower_die.empty() || opt.pass2_lower_die == "mirror";
+  PetscCheck(opt.model != "quarter" || (opt.lower_die == "mirror" && pass2_mirror && opt.lower_die_motion == "mirror"),
+             comm, PETSC_ERR_USER_INPUT,
              "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
              "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
+  PetscCheck(opt.pass2_stroke >= 0 && std::isfinite(opt.pass2_stroke), comm, PETSC_ERR_USER_INPUT,
+             "-pass2_stroke %g: must be non-negative (0: one pass)", opt.pass2_stroke);
+  PetscCheck(opt.pass2_stroke == 0 || opt.unload == "reverse", comm, PETSC_ERR_USER_INPUT,
+             "-pass2_stroke %g: a second pass follows the paper's springback; use -unload reverse (not %s)",
+             opt.pass2_stroke, opt.unload.c_str());
+  PetscCheck(opt.pass2_stroke > 0 || (opt.pass2_die_profile.empty() && opt.pass2_lower_die.empty()), comm,
+             PETSC_ERR_USER_INPUT, "-pass2_die_profile, -pass2_lower_die: give -pass2_stroke for the second pass");
   PetscCheck(QuarterModel(opt) || opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
              "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
   PetscCheck(opt.die_angle >= kDieAngleMin && opt.die_angle <= kDieAngleMax, comm, PETSC_ERR_USER_INPUT,

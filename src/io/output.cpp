@@ -2,6 +2,7 @@
 
 #include <petscviewerhdf5.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -112,6 +113,57 @@ PetscErrorCode ResultWriter::Reopen(const Mesh &mesh, const std::string &path, c
   // length when rewritten: a longer string would be cut).
   if (H5Lexists(file, "/history", H5P_DEFAULT) > 0) TF_CHECK_HDF5(H5Ldelete(file, "/history", H5P_DEFAULT));
   if (H5Aexists(file, "options") > 0) TF_CHECK_HDF5(H5Adelete(file, "options"));
+  PetscCall(ReadTools());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ResultWriter::ReadTools()
+{
+  hid_t file;
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
+  tools_.clear();
+  if (!PathExists(file, "/tools")) PetscFunctionReturn(PETSC_SUCCESS);
+  const hid_t group = H5Gopen2(file, "/tools", H5P_DEFAULT);
+  TF_CHECK_HDF5(group);
+  H5G_info_t info;
+  TF_CHECK_HDF5(H5Gget_info(group, &info));
+  for (hsize_t i = 0; i < info.nlinks; ++i) {
+    char name[256];
+    TF_CHECK_HDF5(H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof(name), H5P_DEFAULT));
+    const std::string base = std::string("/tools/") + name;
+    hsize_t rows[3] = {0, 0, 0};
+    const auto extent = [&](const std::string &path, int at) -> PetscErrorCode {
+      hsize_t dims[3] = {0, 0, 0};
+      PetscFunctionBeginUser;
+      const hid_t dset = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+      TF_CHECK_HDF5(dset);
+      const hid_t space = H5Dget_space(dset);
+      TF_CHECK_HDF5(space);
+      TF_CHECK_HDF5(H5Sget_simple_extent_dims(space, dims, nullptr));
+      rows[at] = dims[0];
+      TF_CHECK_HDF5(H5Sclose(space));
+      TF_CHECK_HDF5(H5Dclose(dset));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    };
+    PetscCall(extent(base + "/vertices", 0));
+    PetscCall(extent(base + "/lines", 1));
+    PetscCall(extent(base + "/displacement", 2));
+    int first = 0;
+    const hid_t dset = H5Dopen2(file, (base + "/displacement").c_str(), H5P_DEFAULT);
+    TF_CHECK_HDF5(dset);
+    if (H5Aexists(dset, "first_step") > 0) {
+      const hid_t attr = H5Aopen(dset, "first_step", H5P_DEFAULT);
+      TF_CHECK_HDF5(attr);
+      TF_CHECK_HDF5(H5Aread(attr, H5T_NATIVE_INT, &first));
+      TF_CHECK_HDF5(H5Aclose(attr));
+    }
+    TF_CHECK_HDF5(H5Dclose(dset));
+    // Steps past the checkpoint's are written again as the run goes on.
+    const PetscInt last = std::min<PetscInt>((PetscInt)rows[2], (PetscInt)times_.size()) - 1;
+    if (first <= last) tools_.push_back({name, rows[0], rows[1], first, last});
+  }
+  TF_CHECK_HDF5(H5Gclose(group));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -175,10 +227,13 @@ PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::ve
     PetscCall(DMRestoreGlobalVector(mesh_->cell_dm, &global));
   }
   // Tools: every rank holds the same outline, rank 0 writes it.
-  tools_.clear();
   for (const auto &t : tools) {
     const std::string base = "/tools/" + t.name;
-    tools_.push_back({t.name, t.xy.size() / 2, t.lines.size() / 2});
+    auto entry = std::find_if(tools_.begin(), tools_.end(), [&](const ToolEntry &e) { return e.name == t.name; });
+    if (entry == tools_.end())
+      tools_.push_back({t.name, t.xy.size() / 2, t.lines.size() / 2, step, step});
+    else
+      entry->last = step;
     std::vector<double> moved(t.xy.size());
     for (size_t i = 0; i < t.xy.size(); ++i) moved[i] = t.xy[i] - t.xy0[i];
     PetscCall(

@@ -10,13 +10,13 @@ namespace tf {
 namespace {
 
 // Opens dataset `path` grown to `step` + 1 steps of `dims` (dims[0] ignored),
-// creating it (chunked by step, unlimited in steps) at step 0.
+// creating it (chunked by step, unlimited in steps) at step 0, or with `create`.
 PetscErrorCode OpenStep(hid_t file, const char *path, int ndims, hsize_t dims[], PetscInt step, const char *type,
-                        hid_t *dset)
+                        hid_t *dset, bool create = false)
 {
   PetscFunctionBeginUser;
   dims[0] = (hsize_t)step + 1;
-  if (step == 0) {
+  if (step == 0 || create) {
     hsize_t maxdims[3] = {H5S_UNLIMITED, dims[1], ndims > 2 ? dims[2] : 0}, chunk[3] = {1, dims[1], dims[2]};
     const hid_t space = H5Screate_simple(ndims, dims, maxdims), plist = H5Pcreate(H5P_DATASET_CREATE);
     TF_CHECK_HDF5(space);
@@ -37,6 +37,11 @@ PetscErrorCode OpenStep(hid_t file, const char *path, int ndims, hsize_t dims[],
     attr = H5Acreate2(*dset, "vector_field_type", str, scalar, H5P_DEFAULT, H5P_DEFAULT);
     TF_CHECK_HDF5(attr);
     TF_CHECK_HDF5(H5Awrite(attr, str, type));
+    TF_CHECK_HDF5(H5Aclose(attr));
+    const int first = (int)step; // the step it starts at (a tool of a second pass)
+    attr = H5Acreate2(*dset, "first_step", H5T_NATIVE_INT, scalar, H5P_DEFAULT, H5P_DEFAULT);
+    TF_CHECK_HDF5(attr);
+    TF_CHECK_HDF5(H5Awrite(attr, H5T_NATIVE_INT, &first));
     TF_CHECK_HDF5(H5Aclose(attr));
     TF_CHECK_HDF5(H5Tclose(str));
     TF_CHECK_HDF5(H5Sclose(scalar));
@@ -79,7 +84,7 @@ PetscErrorCode WriteSeriesPairs(hid_t file, const char *path, const double *valu
 
   PetscFunctionBeginUser;
   hsize_t dims[3] = {0, rows, 2};
-  PetscCall(OpenStep(file, path, 3, dims, step, "vector", &dset));
+  PetscCall(OpenStep(file, path, 3, dims, step, "vector", &dset, !PathExists(file, path)));
   PetscCall(WriteRows(dset, 3, dims, step, 0, writer ? rows : 0, values));
   TF_CHECK_HDF5(H5Dclose(dset));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -142,6 +147,15 @@ PetscErrorCode WriteSeriesValue(hid_t file, const char *path, double value, Pets
   PetscCall(WriteRows(dset, 2, dims, step, 0, writer ? 1 : 0, &value));
   TF_CHECK_HDF5(H5Dclose(dset));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+bool PathExists(hid_t file, const std::string &path)
+{
+  for (size_t slash = path.find('/', 1);; slash = path.find('/', slash + 1)) {
+    const std::string part = path.substr(0, slash);
+    if (H5Lexists(file, part.c_str(), H5P_DEFAULT) <= 0) return false;
+    if (slash == std::string::npos) return true;
+  }
 }
 
 } // namespace tf

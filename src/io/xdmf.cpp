@@ -20,14 +20,14 @@ bool ResultWriter::WriteXdmf() const
   x << "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n<Domain>\n";
   x << "<Grid Name=\"tubeform\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (PetscInt k = 0; k < nt; ++k) {
-    // Step k of the (step, n[, comps]) dataset `path`.
-    const auto hyperslab = [&](const std::string &path, PetscInt n, int comps) {
+    // Step k of the (steps, n[, comps]) dataset `path`.
+    const auto hyperslab = [&](const std::string &path, PetscInt n, int comps, PetscInt steps) {
       x << "   <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << n << (comps > 1 ? " " + std::to_string(comps) : "")
         << "\">\n";
       x << "    <DataItem Dimensions=\"3 " << (comps > 1 ? 3 : 2) << "\" Format=\"XML\">" << k << " 0"
         << (comps > 1 ? " 0" : "") << " 1 1" << (comps > 1 ? " 1" : "") << " 1 " << n
         << (comps > 1 ? " " + std::to_string(comps) : "") << "</DataItem>\n";
-      x << "    <DataItem Format=\"HDF\" Dimensions=\"" << nt << " " << n
+      x << "    <DataItem Format=\"HDF\" Dimensions=\"" << steps << " " << n
         << (comps > 1 ? " " + std::to_string(comps) : "") << "\">" << h5 << ":" << path
         << "</DataItem>\n   </DataItem>\n";
     };
@@ -48,17 +48,18 @@ bool ResultWriter::WriteXdmf() const
     for (const auto &[name, comps] : node_names_) {
       x << "  <Attribute Name=\"" << name << "\" AttributeType=\"" << (comps == 2 ? "Vector" : "Scalar")
         << "\" Center=\"Node\">\n";
-      hyperslab("/vertex_fields/" + name, nv, comps);
+      hyperslab("/vertex_fields/" + name, nv, comps, nt);
       x << "  </Attribute>\n";
     }
     for (const auto &name : cell_names_) {
       x << "  <Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
-      hyperslab("/cell_fields/" + name + "_c", nc, 1);
+      hyperslab("/cell_fields/" + name + "_c", nc, 1, nt);
       x << "  </Attribute>\n";
     }
     x << " </Grid>\n";
     if (tools_.empty()) continue;
     for (const auto &t : tools_) {
+      if (k < t.first || k > t.last) continue; // a pass's dies are shown while they are in place
       x << " <Grid Name=\"" << t.name << "\" GridType=\"Uniform\">\n";
       x << "  <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"" << t.lines << "\">\n";
       x << "   <DataItem Format=\"HDF\" DataType=\"Int\" Dimensions=\"" << t.lines << " 2\">" << h5 << ":/tools/"
@@ -67,7 +68,7 @@ bool ResultWriter::WriteXdmf() const
       x << "   <DataItem Format=\"HDF\" Dimensions=\"" << t.points << " 2\">" << h5 << ":/tools/" << t.name
         << "/vertices</DataItem>\n  </Geometry>\n";
       x << "  <Attribute Name=\"displacement_u\" AttributeType=\"Vector\" Center=\"Node\">\n";
-      hyperslab("/tools/" + t.name + "/displacement", (PetscInt)t.points, 2);
+      hyperslab("/tools/" + t.name + "/displacement", (PetscInt)t.points, 2, t.last + 1);
       x << "  </Attribute>\n";
       x << " </Grid>\n";
     }

@@ -69,14 +69,14 @@ PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &upper, Tool &lower)
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &upper, double floor_y, Tool &lower)
 {
   PetscFunctionBeginUser;
   if (opt.lower_die == "mirror") {
     lower = MirrorY(upper);
   } else if (opt.lower_die == "flat") {
     // A floor under the tube, reaching past its widening on the outside.
-    lower = BuildFlatPlate(-opt.tube_ro, -kFloorOverhang * opt.tube_ro, (1 + kFloorReach) * opt.tube_ro, true);
+    lower = BuildFlatPlate(floor_y, -kFloorOverhang * opt.tube_ro, (1 + kFloorReach) * opt.tube_ro, true);
   } else {
     Tool drawn;
     PetscCall(ReadProfileTool(comm, "-lower_die", opt.lower_die, drawn));

@@ -8,7 +8,11 @@
 //   reverse  (the paper): every point elastic, the contact forces at the end
 //            of loading applied reversed as nodal loads, tools removed;
 //   withdraw: the tool moves back and releases the nodes one by one (r5).
-// History: stroke = tool stroke U (mm; half the dies' closing), load = punch
+// With -pass2_stroke, a second pass after the paper's unloading: lambda in
+// [2, 3] presses the second pass's dies (-pass2_die_profile, -pass2_lower_die)
+// from their start, lambda in [3, 4] springs back again.
+// History: stroke = tool stroke U (mm; half the dies' closing; over two passes
+// the sum, the second pass's die at stroke - U1), load = punch
 // load on the full tube, 2 x the model's vertical force on the upper die (N/mm).
 // The punch load is the upper die's in either model: the quarter and the half
 // model carry half of it.
@@ -24,44 +28,6 @@ namespace tf {
 
 namespace {
 
-// The segment of the upper die a node touches (-1: free, or on the lower die): the shape metrics' apex count.
-double UpperSegment(const Model &m, PetscInt n)
-{
-  if (!m.contact || !m.contact->InContact(n) || m.contact->ToolOf(n) != 0) return -1.0;
-  return double(m.contact->Segment(n));
-}
-
-// Outer-surface nodes of the whole mesh on every rank, along the surface from
-// the x axis to the y axis (contact state and segment once the tools are set up).
-// With `upper`, only the nodes that started on or above the x axis (the half model's upper quarter, on which
-// the shape metrics are measured as in the quarter model).
-PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper = false)
-{
-  std::vector<double> mine;
-  PetscMPIInt size;
-  PetscFunctionBeginUser;
-  const auto &x = m.body.position();
-  for (PetscInt n : m.mesh.node_sets["outer"])
-    if (m.mesh.node_owned[n] && (!upper || m.mesh.x0[2 * n + 1] >= 0))
-      mine.insert(mine.end(), {x[2 * n], x[2 * n + 1], m.contact ? double(m.contact->InContact(n)) : 0.0,
-                               UpperSegment(m, n), double(m.mesh.node_orig[n])});
-  PetscCallMPI(MPI_Comm_size(m.comm, &size));
-  std::vector<int> counts(size), displs(size);
-  int count = (int)mine.size();
-  PetscCallMPI(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, m.comm));
-  int total = 0;
-  for (int r = 0; r < size; ++r) displs[r] = total, total += counts[r];
-  std::vector<double> buf(total);
-  PetscCallMPI(
-    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, buf.data(), counts.data(), displs.data(), MPI_DOUBLE, m.comm));
-  all.clear();
-  for (int k = 0; k + 4 < total; k += 5)
-    all.push_back({buf[k], buf[k + 1], (int)buf[k + 2], (int)buf[k + 3], (long)buf[k + 4]});
-  std::sort(all.begin(), all.end(),
-            [](const SurfacePoint &a, const SurfacePoint &b) { return std::atan2(a.y, a.x) < std::atan2(b.y, b.x); });
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 class PressScene : public Scene {
 public:
   PressScene(const Options &opt, bool squaring) : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt))
@@ -69,6 +35,7 @@ public:
     stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_angle)
                                            : opt.stroke;
     back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
+    stroke2_ = opt.pass2_stroke;
   }
 
   std::vector<std::string> BoundarySets() const override
@@ -83,18 +50,24 @@ public:
   }
   LoadPath Path(const Options &opt) const override
   {
+    if (stroke2_ > 0) return {4.0, stroke_ / opt.punch_speed, {1.0, 2.0, 3.0}};
     return {opt_.unload == "none" ? 1.0 : 2.0, stroke_ / opt.punch_speed, {1.0}};
   }
+  // Stages by the lambda an increment starts at: 0 press, 1 release, 2 press (the second pass), 3 release.
+  static int StageAt(double lambda) { return (int)std::floor(lambda + kLambdaTol); }
+  bool Unloading(double lambda) const override { return StageAt(lambda) % 2 == 1; }
   // The quarter model carries half the punch load of the full tube (the
   // other half pushes the left quarter), moving by U; the half model carries
   // half of it on each die, closing by 2 U. The reversed loads of the paper's
   // unloading do no work along the stroke.
   double LoadWorkShare(double lambda) const override
   {
-    return lambda > 1.0 && opt_.unload == "reverse" ? 0.0 : half_ ? 1.0 : 0.5;
+    return Unloading(lambda) && opt_.unload == "reverse" ? 0.0 : half_ ? 1.0 : 0.5;
   }
+  // The stroke of the dies in place: the first pass's, then (once its dies are set up) the second's.
   double ToolStroke(double lambda) const override
   {
+    if (pass_ == 1) return std::min(std::max(lambda - 2.0, 0.0), 1.0) * stroke2_;
     if (lambda <= 1.0) return lambda * stroke_;
     return opt_.unload == "withdraw" ? stroke_ - (lambda - 1.0) * back_ : stroke_;
   }
@@ -103,26 +76,18 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(CheckReach(m.comm));
-    Tool upper;
-    if (squaring_) {
-      Die die;
-      PetscCall(BuildDie(m.comm, opt_, die));
-      upper = die.tool;
-      flank_ = die.flank, apex_ = die.apex;
-    } else
-      upper = BuildFlatPlate(opt_.tube_ro, -kPlateOverhang * opt_.tube_ro, (1 + kPlateReach) * opt_.tube_ro);
-    tools.candidates = "outer";
-    if (half_) {
-      // The half tube between both dies, mirrored about the y axis only.
-      Tool lower;
-      PetscCall(BuildLowerDie(m.comm, opt_, upper, lower));
-      if (opt_.lower_die_motion == "fixed") upper.direction = {0.0, -2.0}; // the dies close by 2 U either way
-      tools.tools = {upper, lower};
-      tools.symmetry = {{"x0", {1, 0}}};
-    } else {
-      tools.tools = {upper};
-      tools.symmetry = {{"x0", {1, 0}}, {"y0", {0, 1}}};
+    if (stroke2_ > 0) {
+      // The second pass's dies are checked now, before any work (they are set up after the first springback).
+      std::vector<Tool> second;
+      PetscCall(PassTools(m, 1, second));
     }
+    PetscCall(PassTools(m, 0, tools.tools));
+    tools.candidates = "outer";
+    // The half tube between both dies is mirrored about the y axis only.
+    if (half_)
+      tools.symmetry = {{"x0", {1, 0}}};
+    else
+      tools.symmetry = {{"x0", {1, 0}}, {"y0", {0, 1}}};
     // Default VCRI: 2 % of the mean distance between the outer surface's nodes
     // (of the mesh actually used: generated or read from a file).
     std::vector<SurfacePoint> outer;
@@ -133,6 +98,8 @@ public:
     const double spacing =
       outer.size() > 1 ? length / (outer.size() - 1) : opt_.tube_ro * 0.5 * M_PI / opt_.mesh_ntheta;
     tools.params = MakeContactParams(opt_, kVcriOfSpacing * spacing);
+    spec_ = tools; // the second pass's set: the same nodes, supports and law
+    spec_.tools.clear();
     if (opt_.stroke_corner_radius > 0)
       PetscCall(PetscPrintf(m.comm,
                             "tubeform: stroke %.4f mm gives an outer corner radius of %.4g mm (perimeter-conserving "
@@ -176,8 +143,22 @@ public:
   {
     PetscFunctionBeginUser;
     if (opt_.unload != "reverse") PetscFunctionReturn(PETSC_SUCCESS);
+    if (!Unloading(lambda)) {
+      // The second pass: the springback's loads are all applied; its dies from their start, the material's law.
+      unloading_ = false;
+      pin_ = -1;
+      reversed_total_[0] = reversed_total_[1] = reversed_moment_ = 0;
+      m.body.SetPlasticAgain();
+      ContactSpec spec = spec_;
+      pass_ = 1;
+      PetscCall(PassTools(m, 1, spec.tools));
+      m.contact->Setup(m.mesh, m.system, m.body.position(), spec);
+      m.contact->SetStroke(0.0);
+      PetscCall(m.contact->Initialize());
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
     // The paper's unloading: contact forces become loads, tools go, all elastic.
-    PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
+    if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
     PetscCall(VecZeroEntries(reversed_));
     PetscCall(m.contact->AddContactForces(reversed_));
     PetscCall(m.contact->TotalForce(kUpper, reversed_total_, &reversed_moment_));
@@ -216,7 +197,7 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
-    if (unloading_) PetscCall(VecAXPY(f, 2.0 - lambda, reversed_));
+    if (unloading_) PetscCall(VecAXPY(f, ReleaseEnd() - lambda, reversed_));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
@@ -224,10 +205,10 @@ public:
   {
     double force[2], moment;
     PetscFunctionBeginUser;
-    row.stroke = ToolStroke(lambda);
+    row.stroke = (pass_ == 1 ? stroke_ : 0.0) + ToolStroke(lambda);
     if (unloading_) {
-      for (int k = 0; k < 2; ++k) force[k] = (2.0 - lambda) * reversed_total_[k];
-      moment = (2.0 - lambda) * reversed_moment_;
+      for (int k = 0; k < 2; ++k) force[k] = (ReleaseEnd() - lambda) * reversed_total_[k];
+      moment = (ReleaseEnd() - lambda) * reversed_moment_;
     } else
       PetscCall(m.contact->TotalForce(kUpper, force, &moment));
     row.load = -2.0 * force[1]; // full tube: both halves push the die up
@@ -244,16 +225,27 @@ public:
 
   std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const override
   {
-    // Loaded state: the last row of the loading stage.
-    const HistoryRow *loaded = &h.rows().front();
-    for (const auto &r : h.rows())
-      if (r.stage == 0) loaded = &r;
-    const HistoryRow &last = h.rows().back();
-    return {{"loaded_c_over_t", loaded->c_over_t}, {"loaded_deviation_ratio", loaded->deviation_ratio},
-            {"loaded_x_max", loaded->x_max},       {"loaded_y_max", loaded->y_max},
-            {"unloaded_c_over_t", last.c_over_t},  {"unloaded_deviation_ratio", last.deviation_ratio},
-            {"unloaded_x_max", last.x_max},        {"unloaded_y_max", last.y_max},
-            {"final_stroke_target", stroke_}};
+    // Per pass, the loaded state (the last row of its press) and the unloaded one (the last of its release):
+    // loaded_* and unloaded_* the first pass's (as the run's summary), pass2_loaded_* and so on the second's.
+    std::vector<std::pair<std::string, double>> m;
+    const int passes = stroke2_ > 0 ? 2 : 1;
+    for (int p = 0; p < passes; ++p) {
+      const HistoryRow *loaded = &h.rows().front(), *unloaded = loaded;
+      for (const auto &r : h.rows()) {
+        if (r.stage == 2 * p) loaded = &r;
+        if (r.stage <= 2 * p + 1) unloaded = &r;
+      }
+      const std::string pre = p == 0 ? "" : "pass2_";
+      for (auto [name, row] : {std::pair{"loaded_", loaded}, {"unloaded_", unloaded}})
+        for (auto [what, v] : {std::pair{"c_over_t", row->c_over_t},
+                               {"deviation_ratio", row->deviation_ratio},
+                               {"x_max", row->x_max},
+                               {"y_max", row->y_max}})
+          m.push_back({pre + name + what, v});
+    }
+    m.push_back({"final_stroke_target", stroke_});
+    if (passes == 2) m.push_back({"pass2_stroke_target", stroke2_});
+    return m;
   }
 
   PetscErrorCode Persist(Model &m, Archive &ar) override
@@ -261,6 +253,14 @@ public:
     PetscFunctionBeginUser;
     ar.Group("/scene");
     PetscCall(ar.Value("unloading", unloading_));
+    PetscCall(ar.Value("pass", pass_));
+    PetscCall(ar.Value("floor_y", floor_y_));
+    if (ar.reading() && pass_ == 1) {
+      // A restart in the second pass: its dies' shapes for the contact set (its state, strokes included, read).
+      std::vector<Tool> tools;
+      PetscCall(PassTools(m, 1, floor_y_, tools));
+      m.contact->ReplaceTools(std::move(tools));
+    }
     // The springback's total force and moment and the side C is measured on (from the loading).
     std::vector<double> pairs = {reversed_total_[0], reversed_total_[1], (double)side_ends_[0], (double)side_ends_[1],
                                  reversed_moment_};
@@ -299,8 +299,12 @@ private:
   static constexpr int kUpper = 0, kLower = 1;
   Options opt_;
   bool squaring_;
-  bool half_;         // the half model x >= 0 with both dies
-  PetscInt pin_ = -1; // the half model's springback: the local node whose y is held (-1: none here)
+  bool half_;          // the half model x >= 0 with both dies
+  double stroke2_ = 0; // the second pass's stroke (0: one pass)
+  PetscInt pass_ = 0;  // the pass whose dies are in place
+  double floor_y_ = 0; // where the floor of the pass in place is
+  ContactSpec spec_;   // the contact set's nodes, supports and law (for the second pass's dies)
+  PetscInt pin_ = -1;  // the half model's springback: the local node whose y is held (-1: none here)
   double stroke_ = 0, back_ = 0;
   int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
   bool unloading_ = false;
@@ -308,6 +312,64 @@ private:
   double reversed_total_[2] = {0, 0};
   double reversed_moment_ = 0;   // of the reversed forces about the tool frame's origin (TotalForce)
   long side_ends_[2] = {-1, -1}; // input node numbers of the side's ends (latest loading state)
+
+  // The end of the release stage under way: the reversed loads fall to zero there.
+  double ReleaseEnd() const { return pass_ == 1 ? 4.0 : 2.0; }
+
+  // The options of a pass: the second's dies where -pass2_die_profile, -pass2_lower_die give them.
+  Options PassOptions(int pass) const
+  {
+    Options o = opt_;
+    if (pass == 1 && !opt_.pass2_die_profile.empty()) o.die_profile = opt_.pass2_die_profile;
+    if (pass == 1 && !opt_.pass2_lower_die.empty()) o.lower_die = opt_.pass2_lower_die;
+    return o;
+  }
+
+  // Collective: the dies of a pass (the upper one, and in the half model the lower one), with the segments of
+  // the upper die the shape metrics use.
+  PetscErrorCode PassTools(Model &m, int pass, std::vector<Tool> &tools)
+  {
+    PetscFunctionBeginUser;
+    PetscCall(LowestPoint(m, floor_y_));
+    PetscCall(PassTools(m, pass, floor_y_, tools));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  // A floor goes under the tube's lowest point (y = -Ro before the first pass); the second pass's is kept for a
+  // restart.
+  PetscErrorCode LowestPoint(Model &m, double &y)
+  {
+    double low = 0, lowest;
+    PetscFunctionBeginUser;
+    for (PetscInt n : m.mesh.node_sets["outer"]) low = std::max(low, -m.body.position()[2 * n + 1]);
+    PetscCallMPI(MPI_Allreduce(&low, &lowest, 1, MPI_DOUBLE, MPI_MAX, m.comm));
+    y = -lowest;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscErrorCode PassTools(Model &m, int pass, double floor_y, std::vector<Tool> &tools)
+  {
+    const Options o = PassOptions(pass);
+    Tool upper;
+    PetscFunctionBeginUser;
+    if (squaring_) {
+      Die die;
+      PetscCall(BuildDie(m.comm, o, die));
+      upper = die.tool;
+      flank_ = die.flank, apex_ = die.apex;
+    } else
+      upper = BuildFlatPlate(o.tube_ro, -kPlateOverhang * o.tube_ro, (1 + kPlateReach) * o.tube_ro);
+    // The second pass's dies by their own names (errors, and their outlines in the results).
+    if (pass == 1) upper.name = "pass2-" + upper.name;
+    if (!half_) {
+      tools = {upper};
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    Tool lower;
+    PetscCall(BuildLowerDie(m.comm, o, upper, floor_y, lower));
+    if (o.lower_die_motion == "fixed") upper.direction = {0.0, -2.0}; // the dies close by 2 U either way
+    if (pass == 1 && lower.name.rfind("pass2-", 0) != 0) lower.name = "pass2-" + lower.name;
+    tools = {upper, lower};
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
 
   // The half model's springback: the inner node nearest the x axis (a node on it, in a symmetric case, keeps
   // y = 0) holds the tube's rigid motion along y; the lowest input number among equals.
@@ -346,7 +408,7 @@ private:
     }
     if (!squaring_) PetscFunctionReturn(PETSC_SUCCESS);
     for (const auto &o : all) row.n_contact_apex += o.contact && apex_ >= 0 && o.segment == apex_;
-    if (StageOf(lambda) > 0) {
+    if (unloading_) {
       size_t ends[2] = {all.size(), all.size()};
       for (size_t k = 0; k < all.size(); ++k)
         for (int e = 0; e < 2; ++e)

@@ -99,6 +99,9 @@ public:
   PetscErrorCode NonFiniteCell(PetscInt &cell) const;
   // From now on every point is elastic (the paper's unloading).
   void SetElasticOnly();
+  // The material's law again (a press after the paper's unloading): every point starts elastic, its stress
+  // and hardening as the unloading left them.
+  void SetPlasticAgain();
   // Collective: writes or reads what carries from one increment to the next
   // (point states, coordinates, displacements, elastic-only).
   PetscErrorCode Persist(Archive &ar);

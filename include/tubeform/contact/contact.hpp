@@ -91,6 +91,13 @@ public:
   // the set takes no further part in the increments.
   void Remove();
   bool active() const { return !removed_; }
+  // The tools' shapes (a restart in a stage whose tools are not the first ones), their strokes and the nodes'
+  // state kept.
+  void ReplaceTools(std::vector<Tool> tools)
+  {
+    for (size_t k = 0; k < tools.size() && k < tools_.size(); ++k) tools[k].stroke = tools_[k].stroke;
+    tools_ = std::move(tools);
+  }
   void SetStroke(double stroke)
   {
     for (Tool &t : tools_) t.stroke = stroke;

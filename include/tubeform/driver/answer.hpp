@@ -48,6 +48,9 @@ struct Answer {
   std::vector<double> strokes, loads, c_over_t; // the reported strokes (with the end of loading last)
   double ct_loaded = 0, dr_loaded = 1, x_loaded = 0, y_loaded = 0;
   double ct_unloaded = 0, dr_unloaded = 1, x_unloaded = 0, y_unloaded = 0;
+  // A second pass (history stages 2 and 3): its end of loading and its springback.
+  bool pass2 = false;
+  double stroke2 = 0, load2 = 0, ct_loaded2 = 0, dr_loaded2 = 1, ct_unloaded2 = 0, dr_unloaded2 = 1;
   // The estimate (estimated = false without a companion): relative load
   // error and absolute C/t error at each reported stroke, after springback,
   // and their largest.

@@ -72,8 +72,11 @@ struct Options {
   std::string die_profile;          // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
   double die_angle = 90;            // degrees between the V-die's flanks
   std::string lower_die = "mirror"; // mirror, flat or a profile file drawn as an upper die
-  std::string lower_die_motion = "mirror";      // mirror (up by the stroke) or fixed
-  std::string model = "auto";                   // quarter, half, or auto: the quarter where it is exact
+  std::string lower_die_motion = "mirror"; // mirror (up by the stroke) or fixed
+  std::string model = "auto";              // quarter, half, or auto: the quarter where it is exact
+  // A second pass after the springback: its stroke (0: none), its dies ("": the first pass's).
+  double pass2_stroke = 0;
+  std::string pass2_die_profile, pass2_lower_die;
   double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
   double friction_tol = ContactParams{}.tol;
   double rmin_dphi = ContactParams{}.dphi_max;       // r6: largest fall of f_l / (mu f_n) towards stick in an increment
@@ -158,8 +161,8 @@ inline void ChooseElement(Options &opt)
 // with a lower die that mirrors the upper one in shape and motion; the half (x >= 0) otherwise.
 inline bool QuarterModel(const Options &opt)
 {
-  return opt.model == "quarter" ||
-         (opt.model == "auto" && opt.lower_die == "mirror" && opt.lower_die_motion == "mirror");
+  const bool mirror = opt.lower_die == "mirror" && (opt.pass2_lower_die.empty() || opt.pass2_lower_die == "mirror");
+  return opt.model == "quarter" || (opt.model == "auto" && mirror && opt.lower_die_motion == "mirror");
 }
 
 } // namespace tf

@@ -66,11 +66,15 @@ private:
   std::vector<double> times_;
   std::vector<std::string> cell_names_;
   std::vector<std::pair<std::string, int>> node_names_; // name, components
+  // A tool in the results, written from field step `first` to `last` (the dies of one pass).
   struct ToolEntry {
     std::string name;
     size_t points, lines;
+    PetscInt first, last;
   };
   std::vector<ToolEntry> tools_;
+  // At a restart: the tools the file holds, up to the checkpoint's steps.
+  PetscErrorCode ReadTools();
   double time_scale_ = 1;
   // The .xmf beside the .h5 (rank 0 alone; false when it could not be written).
   bool WriteXdmf() const;

@@ -9,6 +9,8 @@
 #include <petscvec.h>
 #include <petscviewerhdf5.h>
 
+#include <string>
+
 #include "tubeform/core/core.hpp"
 
 namespace tf {
@@ -23,12 +25,16 @@ PetscErrorCode WriteSeriesStep(hid_t file, const char *path, Vec global, PetscIn
 PetscErrorCode WriteSeriesValue(hid_t file, const char *path, double value, PetscInt step, bool writer);
 
 // Collective: `rows` x 2 values as step `step` of the (step, rows, 2) dataset `path`, written by the rank
-// with `writer` true (one rank; the others' `values` are not read).
+// with `writer` true (one rank; the others' `values` are not read). A dataset first written at a later step
+// (a tool of a second pass) is created then, its earlier steps zero, its attribute first_step that step.
 PetscErrorCode WriteSeriesPairs(hid_t file, const char *path, const double *values, hsize_t rows, PetscInt step,
                                 bool writer);
 
 // Collective: creates the groups of `path` that are missing and, unless it exists, the (rows, 2) dataset
 // `path` of HDF5 type `type` (H5T_NATIVE_INT, H5T_NATIVE_DOUBLE), written by the rank with `writer` true.
 PetscErrorCode WritePairsOnce(hid_t file, const char *path, hid_t type, const void *values, hsize_t rows, bool writer);
+
+// Whether `path` names an object of the file (false where a group on the way is missing).
+bool PathExists(hid_t file, const std::string &path);
 
 } // namespace tf

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "tubeform/metrics/shape.hpp"
 #include "tubeform/scenes/scene.hpp"
 
 namespace tf {
@@ -20,10 +21,20 @@ PetscErrorCode QuarterSymmetry(Model &m);
 // C1 = x_max, C2 = y_max of the outer surface (half its height where the model reaches below the x axis)
 // and their ratio.
 PetscErrorCode OuterExtents(Model &m, HistoryRow &row);
+// Collective: the outer-surface nodes of the whole mesh on every rank, along the surface by angle (contact
+// state, and the segment of the upper die, tool 0, a node touches). With `upper`, only the nodes that started
+// on or above the x axis (the half model's upper quarter, on which the shape metrics are measured as in the
+// quarter model).
+PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper = false);
 // The tube mesh of the options: structured (the quarter, or with `half` the half x >= 0) or -mesh_file.
 std::string TubeMesh(const Options &opt, SerialMesh &mesh, bool half = false);
-// The history's stage: 0 up to lambda = 1, 1 beyond (unloading, or a scene's second stage).
-inline double StageOf(double lambda) { return lambda > 1.0 + kLambdaTol ? 1 : 0; }
+// The history's stage: 0 up to lambda = 1, 1 up to 2 (unloading, or a scene's second stage), and so on.
+inline double StageOf(double lambda)
+{
+  int stage = 0;
+  while (lambda > stage + 1.0 + kLambdaTol) ++stage;
+  return stage;
+}
 
 // Sum over ranks of each rank's element contributions at the nodes of a set
 // (owned and ghost: every contribution is counted once), dotted with `dir(n)`.

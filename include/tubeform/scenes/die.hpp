@@ -21,8 +21,8 @@ PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die);
 // The flat lower die reaches this far past the axis and past the tube's outer radius (fractions of Ro): a
 // tube squared on it widens by less than half its radius.
 constexpr double kFloorOverhang = 0.1, kFloorReach = 0.6;
-// Collective: the lower die of -lower_die (the upper die's mirror, a flat floor at y = -Ro, or a profile file
-// drawn as an upper die and mirrored below the tube) with its motion of -lower_die_motion.
-PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &upper, Tool &lower);
+// Collective: the lower die of -lower_die (the upper die's mirror, a flat floor at y = floor_y, or a profile
+// file drawn as an upper die and mirrored below the tube) with its motion of -lower_die_motion.
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &upper, double floor_y, Tool &lower);
 
 } // namespace tf

@@ -63,6 +63,8 @@ public:
   virtual double ToolStroke(double lambda) const { return 0; }
   // Before the first increment that starts at a breakpoint.
   virtual PetscErrorCode BeginStage(Model &m, double lambda) { return 0; }
+  // Whether the stage at lambda unloads (its trial steps are -unload_increments'): all past lambda = 1 by default.
+  virtual bool Unloading(double lambda) const { return lambda >= 1 - kLambdaTol; }
   // Before each increment's assembly (node frames the scene's supports need).
   virtual PetscErrorCode BeginIncrement(Model &m, double lambda) { return 0; }
   // Supports and loads of the increment lambda -> lambda + dlambda into the system.

@@ -1,0 +1,44 @@
+// The tool scenes' outer surface gathered on every rank (scenes/common.hpp).
+#include <algorithm>
+#include <cmath>
+
+#include "tubeform/scenes/common.hpp"
+
+namespace tf {
+
+// The segment of the upper die a node touches (-1: free, or on the lower die): the shape metrics' apex count.
+static double UpperSegment(const Model &m, PetscInt n)
+{
+  if (!m.contact || !m.contact->InContact(n) || m.contact->ToolOf(n) != 0) return -1.0;
+  return double(m.contact->Segment(n));
+}
+
+// Each rank's owned outer nodes (x, y, contact, segment, input number), gathered and sorted by angle.
+PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper)
+{
+  std::vector<double> mine;
+  PetscMPIInt size;
+  PetscFunctionBeginUser;
+  const auto &x = m.body.position();
+  for (PetscInt n : m.mesh.node_sets["outer"])
+    if (m.mesh.node_owned[n] && (!upper || m.mesh.x0[2 * n + 1] >= 0))
+      mine.insert(mine.end(), {x[2 * n], x[2 * n + 1], m.contact ? double(m.contact->InContact(n)) : 0.0,
+                               UpperSegment(m, n), double(m.mesh.node_orig[n])});
+  PetscCallMPI(MPI_Comm_size(m.comm, &size));
+  std::vector<int> counts(size), displs(size);
+  int count = (int)mine.size();
+  PetscCallMPI(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, m.comm));
+  int total = 0;
+  for (int r = 0; r < size; ++r) displs[r] = total, total += counts[r];
+  std::vector<double> buf(total);
+  PetscCallMPI(
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, buf.data(), counts.data(), displs.data(), MPI_DOUBLE, m.comm));
+  all.clear();
+  for (int k = 0; k + 4 < total; k += 5)
+    all.push_back({buf[k], buf[k + 1], (int)buf[k + 2], (int)buf[k + 3], (long)buf[k + 4]});
+  std::sort(all.begin(), all.end(),
+            [](const SurfacePoint &a, const SurfacePoint &b) { return std::atan2(a.y, a.x) < std::atan2(b.y, b.x); });
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
