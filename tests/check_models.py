@@ -40,6 +40,8 @@ D. Two passes (-pass2_stroke): press, the paper's springback, press again with t
      stopped within 1e-12 of each column's largest value (tests/check_restart.py's bound; measured 0; a
      restart that took the first pass's dies would press on the V instead of the floor); 1 vs 2 ranks within
      the bounds of A; the .xmf shows each pass's dies from the field step it starts at.
+E. The guide's example, options/own_die.opts (the shipped DXF die over a floor, then the V-die), runs on the
+   fast preset: four stages, the dies of both passes in the results.
 """
 import re
 
@@ -194,4 +196,12 @@ k.check(len(steps) == len(m["time"]) and 0 < switch < len(steps) and
         shown["pass2-floor"] == shown["pass2-V-die"],
         f"the .xmf shows the first pass's dies in steps 0-{switch - 1}, the second's from step {switch} to "
         f"{len(steps) - 1}")
+
+# E. The guide's example (docs/guide.md, section 8): the shipped DXF die over a floor, then the V-die over it.
+run(tf, mpirun, 1, ["-options_file", f"{src}/options/own_die.opts", "-options_file", f"{src}/options/preset-fast.opts",
+                    "-error_estimate", 0, "-progress", 0, "-output", out("models_own_die.h5")], timeout=600)
+with h5py.File(out("models_own_die.h5"), "r") as h:
+    stages, tools = set(h["/history/stage"][:].astype(int)), sorted(h["/tools"])
+k.check(stages == {0, 1, 2, 3} and tools == ["die", "floor", "pass2-die", "pass2-floor"],
+        f"options/own_die.opts: two passes, the DXF die and the V-die over floors ({', '.join(tools)})")
 k.done()
