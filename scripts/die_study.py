@@ -8,13 +8,16 @@ fast preset (its C/t within 0.05, docs/accuracy.md).
 
     /usr/bin/python3 scripts/die_study.py [--preset fast] [-j JOBS]
 
-Runs go to results/sweep/die_*; the table to stdout and results/die_study.md; the figure to
+Runs go to results/sweep/die_*; the table to stdout and results/die_study.md; the figures to
 docs/figures/die_collapse.png (C/t at the end of loading against R/t, one curve per die, the paper's
-claims as the shaded region where they say C/t is near zero). Never tuned toward the paper: the dies are
-the obvious neighbours of its unstated one.
+claims as the shaded region where they say C/t is near zero) and docs/figures/die_collapse_map.png (the
+collapse map of each die: C/t along the stroke for each R/t, and the stroke where it passes the
+no-collapse line, also in the table's last rows). Never tuned toward the paper: the dies are the obvious
+neighbours of its unstated one.
 """
 import argparse
 import csv
+import glob
 import os
 import subprocess
 import sys
@@ -50,6 +53,58 @@ def ct(rows, key, value):
     return out
 
 
+def histories(name, key):
+    """{(value of `key` or None, R/t): (stroke, C/t) of the loading stage} of a sweep's result files."""
+    import h5py
+    out = {}
+    for path in glob.glob(os.path.join(tfruns.root, "results", "sweep", name, "*.h5")):
+        parts = dict(p.split("-", 1) for p in os.path.basename(path)[:-3].split("_rt-")[0:1] if "-" in p)
+        rt = float(os.path.basename(path)[:-3].split("rt-")[1])
+        try:
+            with h5py.File(path, "r") as h:
+                s = h["/history/stage"][:] == 0
+                out[(parts.get(key), rt)] = (h["/history/stroke"][:][s], h["/history/c_over_t"][:][s])
+        except (OSError, KeyError):
+            continue  # a run that did not finish
+    return out
+
+
+def onset(curve):
+    """The stroke where C/t first passes the no-collapse line (linear between rows), None if it never does."""
+    u, c = curve
+    for k in range(1, len(u)):
+        if c[k] > figmaps.NO_COLLAPSE >= c[k - 1]:
+            return u[k - 1] + (figmaps.NO_COLLAPSE - c[k - 1]) / (c[k] - c[k - 1]) * (u[k] - u[k - 1])
+    return None
+
+
+def collapse_map(preset):
+    """One panel per die: C/t along the stroke for each R/t; the onset strokes as table rows."""
+    dies = {f"V {g} deg": histories(f"die_angle_{preset}", "die_angle") for g in ANGLES}
+    dies = {d: {rt: c for (g, rt), c in h.items() if g == d.split()[1]} for d, h in dies.items()}
+    dies["flat-bottomed"] = {rt: c for (_, rt), c in histories(f"die_flat_{preset}", None).items()}
+    fig, axes = plt.subplots(1, len(dies), figsize=(14, 3.8), sharey=True)
+    rows = []
+    for ax, (die, curves) in zip(axes, dies.items()):
+        for rt in sorted(curves):
+            ax.plot(curves[rt][0], curves[rt][1], label=f"R/t {rt:g}")
+        ax.axhline(figmaps.NO_COLLAPSE, color="k", lw=0.8, ls=":")
+        ax.set(xlabel="stroke U (mm)", title=die)
+        ax.grid(alpha=0.3)
+        cells = []
+        for r in RTS:
+            u = onset(curves[float(r)]) if float(r) in curves else None
+            cells.append("-" if float(r) not in curves else "none" if u is None else f"{u:.2f} mm")
+        rows.append(f"| {die} | collapse from | " + " | ".join(cells) + " |")
+    axes[0].set_ylabel("collapse ratio C/t")
+    axes[0].set_yscale("symlog", linthresh=0.1)
+    axes[0].set_ylim(0, None)
+    axes[0].legend(fontsize=8)
+    fig.tight_layout()
+    print("figure:", figlib.save(fig, os.path.join(tfruns.root, "docs", "figures"), "die_collapse_map"))
+    return rows
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--preset", default="fast")
@@ -70,6 +125,7 @@ def main():
         for die, c in curves.items():
             cells = [f"{c[float(r)]:.2f}" if float(r) in c else "-" for r in RTS]
             lines.append(f"| {die} | {stroke} | " + " | ".join(cells) + " |")
+    lines += collapse_map(a.preset)
     text = "\n".join(lines)
     print(text)
     with open(os.path.join(tfruns.root, "results", "die_study.md"), "w") as f:
