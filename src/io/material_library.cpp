@@ -3,7 +3,9 @@
 #include <dirent.h>
 
 #include <algorithm>
-#include <fstream>
+#include <sstream>
+
+#include "tubeform/io/text_file.hpp"
 
 namespace tf {
 
@@ -29,21 +31,13 @@ struct FileOptions {
 // here rather than by PetscOptionsInsertFile, which stops on rank 0 alone at a malformed line (the others hang).
 PetscErrorCode ReadText(MPI_Comm comm, const std::string &path, bool &ok, std::string &text)
 {
-  PetscMPIInt rank;
-  long size = -1;
+  std::string raw;
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(ReadTextOnRoot(comm, path, ok, raw));
   text.clear();
-  if (rank == 0) {
-    std::ifstream in(path);
-    std::string line;
-    while (in.good() && std::getline(in, line)) text += line.substr(0, line.find('#')) + " ";
-    if (in.eof()) size = (long)text.size();
-  }
-  PetscCallMPI(MPI_Bcast(&size, 1, MPI_LONG, 0, comm));
-  ok = size >= 0;
-  text.resize(ok ? size : 0);
-  if (size > 0) PetscCallMPI(MPI_Bcast(&text[0], (PetscMPIInt)size, MPI_CHAR, 0, comm));
+  std::istringstream in(raw);
+  std::string line;
+  while (std::getline(in, line)) text += line.substr(0, line.find('#')) + " ";
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

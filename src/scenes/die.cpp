@@ -1,8 +1,6 @@
 #include "tubeform/scenes/die.hpp"
 
-#include <fstream>
-#include <sstream>
-
+#include "tubeform/io/text_file.hpp"
 #include "tubeform/tool/profile.hpp"
 
 namespace tf {
@@ -13,24 +11,11 @@ namespace {
 // the file; every rank parses the same text, so each reaches the same verdict.
 PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::string &path, Tool &tool)
 {
-  PetscMPIInt rank;
-  long size = -1;
   std::string text;
+  bool ok;
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) {
-    std::ifstream in(path);
-    if (in) {
-      std::ostringstream all;
-      all << in.rdbuf();
-      text = all.str();
-      size = (long)text.size();
-    }
-  }
-  PetscCallMPI(MPI_Bcast(&size, 1, MPI_LONG, 0, comm));
-  PetscCheck(size >= 0, comm, PETSC_ERR_USER_INPUT, "%s %s: cannot read the file", option, path.c_str());
-  text.resize(size);
-  if (size > 0) PetscCallMPI(MPI_Bcast(&text[0], (PetscMPIInt)size, MPI_CHAR, 0, comm));
+  PetscCall(ReadTextOnRoot(comm, path, ok, text));
+  PetscCheck(ok, comm, PETSC_ERR_USER_INPUT, "%s %s: cannot read the file", option, path.c_str());
   std::string error;
   const std::string &f = path;
   const bool dxf = f.size() > 4 && (f.compare(f.size() - 4, 4, ".dxf") == 0 || f.compare(f.size() - 4, 4, ".DXF") == 0);
