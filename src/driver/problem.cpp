@@ -196,7 +196,12 @@ PetscErrorCode Problem::Run()
   Stop stop;
   // A restart has written no field step yet: its last state is written whatever ends the run.
   bool wrote_last = opt_.restart.empty();
-  Progress progress(comm_, opt_.progress, end, path_.breakpoints.empty() ? end : path_.breakpoints.front(), at_.lambda);
+  std::vector<double> bounds = {0.0};
+  for (double b : path_.breakpoints)
+    if (b < end - kLambdaTol) bounds.push_back(b);
+  bounds.push_back(end);
+  Progress progress(
+    comm_, opt_.progress, bounds, [this](double lambda) { return scene_->Unloading(lambda); }, at_.lambda);
   const double t_start = MPI_Wtime();
   PetscCall(PetscLogStagePush(Log::load_stage));
   while (lambda < end - kLambdaTol) {
