@@ -50,12 +50,16 @@ cases = [
     (["-slide_back", "-1"], "-slide_back"),
     (["-bending_strain", "0"], "-bending_strain"),
     (["-die_angle", "40"], "-die_angle"),
-    (["-model", "quarter", "-lower_die", "flat"], "-model quarter"),
-    (["-lower_die", "flat", "-unload", "withdraw"], "-unload withdraw"),
+    (["-scene", "squaring", "-model", "quarter", "-lower_die", "flat"], "-model quarter"),
+    (["-scene", "squaring", "-lower_die", "flat", "-unload", "withdraw"], "-unload withdraw"),
     (["-scene", "squaring", "-lower_die", "no/such/die.profile"], "-lower_die no/such/die.profile"),
     (["-lower_die_motion", "up"], "-lower_die_motion"),
-    (["-pass2_stroke", "2", "-unload", "withdraw"], "-pass2_stroke"),
-    (["-pass2_lower_die", "flat"], "give -pass2_stroke"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-unload", "withdraw"], "-pass2_stroke"),
+    (["-scene", "squaring", "-pass2_lower_die", "flat"], "give -pass2_stroke"),
+    (["-lower_die", "flat"], "presses with no dies"),  # the base case is the pressure scene
+    (["-scene", "squaring", "-pass2_stroke", "9"], "-pass2_stroke 9"),  # past the closed cavity
+    (["-scene", "squaring", "-model", "half", "-mesh_file", f"{src}/meshes/thick_cylinder_4x8.msh"],
+     "does not reach below the x axis"),
     (["-scene", "bending", "-mesh_nt", "3"], "needs an even number of elements"),
     (["-rmin_yield", "bogus"], "-rmin_yield"),
     (["-rmin_yield_tol", "0"], "-rmin_yield_tol"),
@@ -112,7 +116,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 60 and len(selected) == 5, f"{len(cases)} cases on 1 rank (60), {len(selected)} on 2 (5)")
+k.check(len(cases) == 63 and len(selected) == 5, f"{len(cases)} cases on 1 rank (63), {len(selected)} on 2 (5)")
 
 
 def refused(np_, extra, needle):

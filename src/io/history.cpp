@@ -63,10 +63,6 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"tool_moment", &HistoryRow::tool_moment,
      "moment of the model's forces on the tool about the tool frame's origin, which moves with the tool (the "
      "tube's centre at stroke 0; N mm/mm, counter-clockwise positive)"},
-    {"lower_fx", &HistoryRow::lower_fx, "half model: force of the model on the lower die, x (N/mm; 0 in a quarter)"},
-    {"lower_fy", &HistoryRow::lower_fy, "half model: force of the model on the lower die, y (N/mm)"},
-    {"lower_moment", &HistoryRow::lower_moment,
-     "half model: moment of the model's forces on the lower die about its frame's origin (N mm/mm)"},
     {"w_kinetic", &HistoryRow::w_kinetic, "kinetic energy (-dynamics implicit; 0 quasi-static)"},
     {"w_inertia", &HistoryRow::w_inertia, "work of the inertia forces (trapezoidal)"},
     {"w_damped", &HistoryRow::w_damped, "energy damped by backward Euler: w_inertia - w_kinetic"},
@@ -76,6 +72,11 @@ const std::vector<HistoryColumn> &HistoryColumns()
      "1 if the increment was solved with inertia (-dynamics implicit, or auto once on)"},
     {"slip", &HistoryRow::slip, "slide scene: mean slip of the contact surface along the floor (mm)"},
     {"fn_sum", &HistoryRow::fn_sum, "sum of the contact nodes' normal forces (N/mm)"},
+    // (added last: a reader of the CSV by position finds the older columns where they were)
+    {"lower_fx", &HistoryRow::lower_fx, "half model: force of the model on the lower die, x (N/mm; 0 in a quarter)"},
+    {"lower_fy", &HistoryRow::lower_fy, "half model: force of the model on the lower die, y (N/mm)"},
+    {"lower_moment", &HistoryRow::lower_moment,
+     "half model: moment of the model's forces on the lower die about its frame's origin (N mm/mm)"},
   };
   return cols;
 }

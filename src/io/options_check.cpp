@@ -71,6 +71,40 @@ PetscErrorCode CheckHill(MPI_Comm comm, const MaterialParams &m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// The lower die, the model and the second pass (the tool scenes').
+PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, const Options &opt)
+{
+  PetscFunctionBeginUser;
+  const bool press = opt.scene == "squaring" || opt.scene == "flattening";
+  const bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != "auto" ||
+                     opt.pass2_stroke != 0 || !opt.pass2_die_profile.empty() || !opt.pass2_lower_die.empty();
+  PetscCheck(press || !asked, comm, PETSC_ERR_USER_INPUT,
+             "-lower_die, -lower_die_motion, -model, -pass2_*: the %s scene presses with no dies (these are the "
+             "squaring and flattening scenes' options)",
+             opt.scene.c_str());
+  PetscCheck(opt.scene == "squaring" || opt.pass2_die_profile.empty(), comm, PETSC_ERR_USER_INPUT,
+             "-pass2_die_profile: the %s scene presses with plates, not dies", opt.scene.c_str());
+  PetscCheck(
+    opt.lower_die == "mirror" || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+    "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
+    opt.stroke_corner_radius, opt.lower_die.c_str());
+  const bool pass2_mirror = opt.pass2_lower_die.empty() || opt.pass2_lower_die == "mirror";
+  PetscCheck(opt.model != "quarter" || (opt.lower_die == "mirror" && pass2_mirror && opt.lower_die_motion == "mirror"),
+             comm, PETSC_ERR_USER_INPUT,
+             "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
+             "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
+  PetscCheck(opt.pass2_stroke >= 0 && std::isfinite(opt.pass2_stroke), comm, PETSC_ERR_USER_INPUT,
+             "-pass2_stroke %g: must be non-negative (0: one pass)", opt.pass2_stroke);
+  PetscCheck(opt.pass2_stroke == 0 || opt.unload == "reverse", comm, PETSC_ERR_USER_INPUT,
+             "-pass2_stroke %g: a second pass follows the paper's springback; use -unload reverse (not %s)",
+             opt.pass2_stroke, opt.unload.c_str());
+  PetscCheck(opt.pass2_stroke > 0 || (opt.pass2_die_profile.empty() && opt.pass2_lower_die.empty()), comm,
+             PETSC_ERR_USER_INPUT, "-pass2_die_profile, -pass2_lower_die: give -pass2_stroke for the second pass");
+  PetscCheck(QuarterModel(opt) || opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
+             "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace
 
 PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
@@ -157,24 +191,7 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
   PetscCheck(opt.die_profile.empty() || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
              opt.stroke_corner_radius);
-  PetscCheck(
-    opt.lower_die == "mirror" || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-    "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
-    opt.stroke_corner_radius, opt.lower_die.c_str());
-  const bool pass2_mirror = opt.pass2_lower_die.empty() || opt.pass2_lower_die == "mirror";
-  PetscCheck(opt.model != "quarter" || (opt.lower_die == "mirror" && pass2_mirror && opt.lower_die_motion == "mirror"),
-             comm, PETSC_ERR_USER_INPUT,
-             "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
-             "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
-  PetscCheck(opt.pass2_stroke >= 0 && std::isfinite(opt.pass2_stroke), comm, PETSC_ERR_USER_INPUT,
-             "-pass2_stroke %g: must be non-negative (0: one pass)", opt.pass2_stroke);
-  PetscCheck(opt.pass2_stroke == 0 || opt.unload == "reverse", comm, PETSC_ERR_USER_INPUT,
-             "-pass2_stroke %g: a second pass follows the paper's springback; use -unload reverse (not %s)",
-             opt.pass2_stroke, opt.unload.c_str());
-  PetscCheck(opt.pass2_stroke > 0 || (opt.pass2_die_profile.empty() && opt.pass2_lower_die.empty()), comm,
-             PETSC_ERR_USER_INPUT, "-pass2_die_profile, -pass2_lower_die: give -pass2_stroke for the second pass");
-  PetscCheck(QuarterModel(opt) || opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
-             "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
+  PetscCall(CheckDiesAndPasses(comm, opt));
   PetscCheck(opt.die_angle >= kDieAngleMin && opt.die_angle <= kDieAngleMax, comm, PETSC_ERR_USER_INPUT,
              "-die_angle %g: must lie in [%g, %g] degrees", opt.die_angle, kDieAngleMin, kDieAngleMax);
   PetscCheck(opt.die_r_apex >= 0 && opt.die_r_apex < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,

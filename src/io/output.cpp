@@ -128,10 +128,17 @@ PetscErrorCode ResultWriter::ReadTools()
   TF_CHECK_HDF5(group);
   H5G_info_t info;
   TF_CHECK_HDF5(H5Gget_info(group, &info));
+  std::vector<std::string> names, stale;
   for (hsize_t i = 0; i < info.nlinks; ++i) {
-    char name[256];
-    TF_CHECK_HDF5(H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof(name), H5P_DEFAULT));
-    const std::string base = std::string("/tools/") + name;
+    const ssize_t length = H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+    TF_CHECK_HDF5(length);
+    std::string name(length + 1, '\0');
+    TF_CHECK_HDF5(H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, &name[0], name.size(), H5P_DEFAULT));
+    name.resize(length);
+    names.push_back(name);
+  }
+  for (const std::string &name : names) {
+    const std::string base = "/tools/" + name;
     hsize_t rows[3] = {0, 0, 0};
     const auto extent = [&](const std::string &path, int at) -> PetscErrorCode {
       hsize_t dims[3] = {0, 0, 0};
@@ -161,8 +168,12 @@ PetscErrorCode ResultWriter::ReadTools()
     TF_CHECK_HDF5(H5Dclose(dset));
     // Steps past the checkpoint's are written again as the run goes on.
     const PetscInt last = std::min<PetscInt>((PetscInt)rows[2], (PetscInt)times_.size()) - 1;
-    if (first <= last) tools_.push_back({name, rows[0], rows[1], first, last});
+    if (first <= last)
+      tools_.push_back({name, rows[0], rows[1], first, last});
+    else
+      stale.push_back(name); // first written after the checkpoint: written again as the run goes on
   }
+  for (const std::string &name : stale) TF_CHECK_HDF5(H5Ldelete(group, name.c_str(), H5P_DEFAULT));
   TF_CHECK_HDF5(H5Gclose(group));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -38,11 +38,13 @@ PetscErrorCode OpenStep(hid_t file, const char *path, int ndims, hsize_t dims[],
     TF_CHECK_HDF5(attr);
     TF_CHECK_HDF5(H5Awrite(attr, str, type));
     TF_CHECK_HDF5(H5Aclose(attr));
-    const int first = (int)step; // the step it starts at (a tool of a second pass)
-    attr = H5Acreate2(*dset, "first_step", H5T_NATIVE_INT, scalar, H5P_DEFAULT, H5P_DEFAULT);
-    TF_CHECK_HDF5(attr);
-    TF_CHECK_HDF5(H5Awrite(attr, H5T_NATIVE_INT, &first));
-    TF_CHECK_HDF5(H5Aclose(attr));
+    if (step > 0) {
+      const int first = (int)step; // the step a series starts at, if not the first (a tool of a second pass)
+      attr = H5Acreate2(*dset, "first_step", H5T_NATIVE_INT, scalar, H5P_DEFAULT, H5P_DEFAULT);
+      TF_CHECK_HDF5(attr);
+      TF_CHECK_HDF5(H5Awrite(attr, H5T_NATIVE_INT, &first));
+      TF_CHECK_HDF5(H5Aclose(attr));
+    }
     TF_CHECK_HDF5(H5Tclose(str));
     TF_CHECK_HDF5(H5Sclose(scalar));
   } else {

@@ -68,9 +68,9 @@ PetscErrorCode QuarterSymmetry(Model &m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode OuterExtents(Model &m, HistoryRow &row)
+PetscErrorCode OuterExtents(Model &m, HistoryRow &row, bool half)
 {
-  double ext[3] = {0, 0, 0}, g[3];
+  double ext[3] = {0, -kNever, -kNever}, g[3]; // (the half model's tube may sit anywhere along y)
   PetscFunctionBeginUser;
   for (PetscInt n : m.mesh.node_sets["outer"]) {
     ext[0] = std::max(ext[0], m.body.position()[2 * n]);
@@ -79,8 +79,7 @@ PetscErrorCode OuterExtents(Model &m, HistoryRow &row)
   }
   PetscCall(MPIU_Allreduce(ext, g, 3, MPIU_REAL, MPIU_MAX, m.comm));
   row.x_max = g[0];
-  // A model reaching below the x axis (the half): half its height.
-  row.y_max = g[2] > 0 ? 0.5 * (g[1] + g[2]) : g[1];
+  row.y_max = half ? 0.5 * (g[1] + g[2]) : g[1];
   const double c1 = row.x_max, c2 = row.y_max;
   row.deviation_ratio = std::max(c1, c2) > 0 ? std::min(c1, c2) / std::max(c1, c2) : 1.0;
   PetscFunctionReturn(PETSC_SUCCESS);

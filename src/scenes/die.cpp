@@ -1,5 +1,7 @@
 #include "tubeform/scenes/die.hpp"
 
+#include <cmath>
+
 #include "tubeform/io/text_file.hpp"
 #include "tubeform/tool/profile.hpp"
 
@@ -71,6 +73,66 @@ PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &uppe
   lower.name = opt.lower_die == "flat" ? "floor" : opt.lower_die == "mirror" ? "lower-" + upper.name : "lower-die";
   // Per unit stroke U: up by U (the mirror of the upper die's motion), or fixed (the upper die then travels 2 U).
   lower.direction = {0.0, opt.lower_die_motion == "fixed" ? 0.0 : 1.0};
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+Options PassOptions(const Options &opt, int pass)
+{
+  Options o = opt;
+  if (pass == 1 && !opt.pass2_die_profile.empty()) o.die_profile = opt.pass2_die_profile;
+  if (pass == 1 && !opt.pass2_lower_die.empty()) o.lower_die = opt.pass2_lower_die;
+  return o;
+}
+
+PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, double floor_y,
+                             std::vector<Tool> &tools, int &flank, int &apex)
+{
+  const Options o = PassOptions(opt, pass);
+  Tool upper;
+  PetscFunctionBeginUser;
+  if (squaring) {
+    Die die;
+    PetscCall(BuildDie(comm, o, die));
+    upper = die.tool;
+    flank = die.flank, apex = die.apex;
+  } else
+    upper = BuildFlatPlate(o.tube_ro, -kPlateOverhang * o.tube_ro, (1 + kPlateReach) * o.tube_ro);
+  tools = {upper};
+  if (half) {
+    Tool lower;
+    PetscCall(BuildLowerDie(comm, o, upper, floor_y, lower));
+    if (o.lower_die_motion == "fixed") tools[0].direction = {0.0, -2.0}; // the dies close by 2 U either way
+    tools.push_back(lower);
+  }
+  // The second pass's dies by their own names (errors, and their outlines in the results).
+  if (pass == 1)
+    for (Tool &t : tools) t.name = "pass2-" + t.name;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, double stroke, const char *option)
+{
+  PetscFunctionBeginUser;
+  const double ro = o.tube_ro, ri = ro - o.tube_t;
+  if (squaring && (!o.die_profile.empty() || o.lower_die != "mirror")) {
+    // A profile of one's own: no closed form of its cavity; a stroke that closes it fails in the run.
+  } else if (squaring) {
+    // The cavity is a rhombus of half-diagonals D = h - U and D tan(half): area 2 D^2 tan(half).
+    const VAngle v(o.die_angle);
+    const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
+    PetscCheck(stroke < closed, comm, PETSC_ERR_USER_INPUT,
+               "%s %g: the dies would close on the tube at U = %.4g mm (the cavity between them is then "
+               "smaller than the tube's cross-section of %.4g mm^2); choose a smaller stroke",
+               option, stroke, closed, area);
+    PetscCheck(o.die_u_close <= 0 || stroke <= o.die_u_close, comm, PETSC_ERR_USER_INPUT,
+               "%s %g: the dies' parting faces meet at -die_u_close %g mm; the stroke cannot pass it", option, stroke,
+               o.die_u_close);
+  } else {
+    PetscCheck(stroke < ro - o.tube_t, comm, PETSC_ERR_USER_INPUT,
+               "%s %g: the plate would press the ring's walls together at U = %.4g mm (Ro - t; the solver "
+               "models no contact of the tube with itself); choose a smaller stroke",
+               option, stroke, ro - o.tube_t);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -41,4 +41,14 @@ PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode LowestOuterY(Model &m, double &y)
+{
+  double low = 0, lowest;
+  PetscFunctionBeginUser;
+  for (PetscInt n : m.mesh.node_sets["outer"]) low = std::max(low, -m.body.position()[2 * n + 1]);
+  PetscCallMPI(MPI_Allreduce(&low, &lowest, 1, MPI_DOUBLE, MPI_MAX, m.comm));
+  y = -lowest;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace tf

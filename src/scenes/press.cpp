@@ -43,7 +43,17 @@ public:
     if (half_) return {"inner", "outer", "x0"};
     return {"inner", "outer", "x0", "y0"};
   }
-  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh, half_); }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
+  {
+    const std::string error = TubeMesh(opt, mesh, half_);
+    if (!error.empty() || !half_) return error;
+    // The half model's mesh reaches below the x axis as far as above it (a quarter would hang from nothing).
+    double low = 0, high = 0;
+    for (size_t k = 1; k < mesh.xy.size(); k += 2) low = std::min(low, mesh.xy[k]), high = std::max(high, mesh.xy[k]);
+    if (low < -kHalfCover * high) return "";
+    return "-mesh_file " + opt.mesh_file + ": the half model (-model, or a lower die that is not the upper one's " +
+           "mirror) needs the tube's half x >= 0 from -90 to 90 degrees; this mesh does not reach below the x axis";
+  }
   std::string MeshLayout(const Options &opt) const override
   {
     return Scene::MeshLayout(opt) + (half_ ? " (the half model: twice that around)" : "");
@@ -108,34 +118,12 @@ public:
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
-  // A stroke the tools cannot take is refused before any work: past the die's
-  // parting face, past the point where the cavity between the two V-dies is
-  // smaller than the tube's cross-section (plane strain plasticity keeps the
-  // area), or past the point where the plate brings the ring's walls together
-  // (no self-contact is modelled).
+  // A stroke the dies cannot take is refused before any work (scenes/die.hpp).
   PetscErrorCode CheckReach(MPI_Comm comm) const
   {
     PetscFunctionBeginUser;
-    const double ro = opt_.tube_ro, ri = ro - opt_.tube_t;
-    if (squaring_ && (!opt_.die_profile.empty() || opt_.lower_die != "mirror")) {
-      // A profile of one's own: no closed form of its cavity; a stroke that closes it fails in the run.
-    } else if (squaring_) {
-      // The cavity is a rhombus of half-diagonals D = h - U and D tan(half): area 2 D^2 tan(half).
-      const VAngle v(opt_.die_angle);
-      const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
-      PetscCheck(stroke_ < closed, comm, PETSC_ERR_USER_INPUT,
-                 "-stroke %g: the dies would close on the tube at U = %.4g mm (the cavity between them is then "
-                 "smaller than the tube's cross-section of %.4g mm^2); choose a smaller stroke",
-                 stroke_, closed, area);
-      PetscCheck(opt_.die_u_close <= 0 || stroke_ <= opt_.die_u_close, comm, PETSC_ERR_USER_INPUT,
-                 "-stroke %g: the dies' parting faces meet at -die_u_close %g mm; the stroke cannot pass it", stroke_,
-                 opt_.die_u_close);
-    } else {
-      PetscCheck(stroke_ < ro - opt_.tube_t, comm, PETSC_ERR_USER_INPUT,
-                 "-stroke %g: the plate would press the ring's walls together at U = %.4g mm (Ro - t; the solver "
-                 "models no contact of the tube with itself); choose a smaller stroke",
-                 stroke_, ro - opt_.tube_t);
-    }
+    PetscCall(CheckDieReach(comm, PassOptions(opt_, 0), squaring_, stroke_, "-stroke"));
+    if (stroke2_ > 0) PetscCall(CheckDieReach(comm, PassOptions(opt_, 1), squaring_, stroke2_, "-pass2_stroke"));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
@@ -146,7 +134,7 @@ public:
     if (!Unloading(lambda)) {
       // The second pass: the springback's loads are all applied; its dies from their start, the material's law.
       unloading_ = false;
-      pin_ = -1;
+      // (the pin stays until the second pass's dies hold the half model's tube: Load)
       reversed_total_[0] = reversed_total_[1] = reversed_moment_ = 0;
       m.body.SetPlasticAgain();
       ContactSpec spec = spec_;
@@ -157,6 +145,14 @@ public:
       PetscCall(m.contact->Initialize());
       PetscFunctionReturn(PETSC_SUCCESS);
     }
+    // A press that ended without touching the tube (its dies start where the first pass's started).
+    PetscInt touching;
+    PetscCall(m.contact->Count(touching));
+    if (touching == 0)
+      PetscCall(PetscPrintf(m.comm,
+                            "tubeform: warning: the %s pass's dies never touched the tube (their stroke %g mm is "
+                            "shorter than the way to it): its shape is the last springback's\n",
+                            pass_ == 1 ? "second" : "first", pass_ == 1 ? stroke2_ : stroke_));
     // The paper's unloading: contact forces become loads, tools go, all elastic.
     if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
     PetscCall(VecZeroEntries(reversed_));
@@ -187,7 +183,13 @@ public:
     PetscCall(QuarterSymmetry(m));
     // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
     // holds the tube's rigid motion along y.
-    if (unloading_ && pin_ >= 0)
+    if (pinned_ && !unloading_) {
+      // The second pass of the half model: the pin holds the tube until its dies do.
+      PetscInt touching;
+      PetscCall(m.contact->Count(touching));
+      pinned_ = touching == 0;
+    }
+    if (pinned_ && pin_ >= 0)
       PetscCheck(m.system.PrescribeAlong(pin_, 0, 1, 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
                  "the springback's pin is not along a node frame axis");
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -217,7 +219,7 @@ public:
       PetscCall(m.contact->TotalForce(kLower, force, &moment));
       row.lower_fx = -force[0], row.lower_fy = -force[1], row.lower_moment = -moment;
     }
-    PetscCall(OuterExtents(m, row));
+    PetscCall(OuterExtents(m, row, half_));
     PetscCall(Shape(m, lambda, row));
     row.stage = StageOf(lambda);
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -228,7 +230,8 @@ public:
     // Per pass, the loaded state (the last row of its press) and the unloaded one (the last of its release):
     // loaded_* and unloaded_* the first pass's (as the run's summary), pass2_loaded_* and so on the second's.
     std::vector<std::pair<std::string, double>> m;
-    const int passes = stroke2_ > 0 ? 2 : 1;
+    const bool second = std::any_of(h.rows().begin(), h.rows().end(), [](const HistoryRow &r) { return r.stage >= 2; });
+    const int passes = second ? 2 : 1;
     for (int p = 0; p < passes; ++p) {
       const HistoryRow *loaded = &h.rows().front(), *unloaded = loaded;
       for (const auto &r : h.rows()) {
@@ -244,7 +247,7 @@ public:
           m.push_back({pre + name + what, v});
     }
     m.push_back({"final_stroke_target", stroke_});
-    if (passes == 2) m.push_back({"pass2_stroke_target", stroke2_});
+    if (stroke2_ > 0) m.push_back({"pass2_stroke_target", stroke2_});
     return m;
   }
 
@@ -270,8 +273,9 @@ public:
     reversed_total_[0] = pairs[0], reversed_total_[1] = pairs[1];
     side_ends_[0] = (long)pairs[2], side_ends_[1] = (long)pairs[3];
     reversed_moment_ = pairs[4];
+    PetscCall(ar.Value("pinned", pinned_));
+    if (pinned_ && ar.reading()) PetscCall(ChoosePin(m));
     if (!unloading_) PetscFunctionReturn(PETSC_SUCCESS);
-    if (half_ && ar.reading()) PetscCall(ChoosePin(m));
     // The reversed contact forces: contributions of the owned nodes.
     if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
     std::vector<double> f(2 * m.mesh.num_nodes);
@@ -289,22 +293,24 @@ public:
   ~PressScene() override { (void)VecDestroy(&reversed_); }
 
 private:
-  // The flat plate reaches past the ring on both sides (fractions of ro): a
-  // crushed quarter ring widens by much less than half its radius.
-  static constexpr double kPlateOverhang = 0.1, kPlateReach = 0.5;
   // VCRI as a fraction of the outer nodes' spacing: a micro-slip far below an
   // element, so that sticking nodes hold (docs/theory.md, "The law").
   static constexpr double kVcriOfSpacing = 0.02;
+  // A half model's mesh reaches at least this share of its height above the x axis below it.
+  static constexpr double kHalfCover = 0.9;
+  // Where the load path's releases begin (lambda): each pass takes one unit of it to press and one to release.
+  static constexpr double kFirstRelease = 1.0, kSecondRelease = 3.0;
   // The tools' places in the contact set.
   static constexpr int kUpper = 0, kLower = 1;
   Options opt_;
   bool squaring_;
-  bool half_;          // the half model x >= 0 with both dies
-  double stroke2_ = 0; // the second pass's stroke (0: one pass)
-  PetscInt pass_ = 0;  // the pass whose dies are in place
-  double floor_y_ = 0; // where the floor of the pass in place is
-  ContactSpec spec_;   // the contact set's nodes, supports and law (for the second pass's dies)
-  PetscInt pin_ = -1;  // the half model's springback: the local node whose y is held (-1: none here)
+  bool half_;           // the half model x >= 0 with both dies
+  double stroke2_ = 0;  // the second pass's stroke (0: one pass)
+  PetscInt pass_ = 0;   // the pass whose dies are in place
+  double floor_y_ = 0;  // where the floor of the pass in place is
+  ContactSpec spec_;    // the contact set's nodes, supports and law (for the second pass's dies)
+  PetscInt pin_ = -1;   // the half model's springback: the local node whose y is held (-1: none here)
+  bool pinned_ = false; // the pin holds (every rank alike)
   double stroke_ = 0, back_ = 0;
   int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
   bool unloading_ = false;
@@ -313,62 +319,21 @@ private:
   double reversed_moment_ = 0;   // of the reversed forces about the tool frame's origin (TotalForce)
   long side_ends_[2] = {-1, -1}; // input node numbers of the side's ends (latest loading state)
 
-  // The end of the release stage under way: the reversed loads fall to zero there.
-  double ReleaseEnd() const { return pass_ == 1 ? 4.0 : 2.0; }
+  // The end of the release stage under way (the load path: press 0-1, release 1-2, press 2-3, release 3-4):
+  // the reversed loads fall to zero there.
+  double ReleaseEnd() const { return pass_ == 1 ? kSecondRelease + 1 : kFirstRelease + 1; }
 
-  // The options of a pass: the second's dies where -pass2_die_profile, -pass2_lower_die give them.
-  Options PassOptions(int pass) const
-  {
-    Options o = opt_;
-    if (pass == 1 && !opt_.pass2_die_profile.empty()) o.die_profile = opt_.pass2_die_profile;
-    if (pass == 1 && !opt_.pass2_lower_die.empty()) o.lower_die = opt_.pass2_lower_die;
-    return o;
-  }
-
-  // Collective: the dies of a pass (the upper one, and in the half model the lower one), with the segments of
-  // the upper die the shape metrics use.
+  // Collective: the dies of a pass; the floor under the tube's lowest point (kept for a restart).
   PetscErrorCode PassTools(Model &m, int pass, std::vector<Tool> &tools)
   {
     PetscFunctionBeginUser;
-    PetscCall(LowestPoint(m, floor_y_));
+    PetscCall(LowestOuterY(m, floor_y_));
     PetscCall(PassTools(m, pass, floor_y_, tools));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  // A floor goes under the tube's lowest point (y = -Ro before the first pass); the second pass's is kept for a
-  // restart.
-  PetscErrorCode LowestPoint(Model &m, double &y)
-  {
-    double low = 0, lowest;
-    PetscFunctionBeginUser;
-    for (PetscInt n : m.mesh.node_sets["outer"]) low = std::max(low, -m.body.position()[2 * n + 1]);
-    PetscCallMPI(MPI_Allreduce(&low, &lowest, 1, MPI_DOUBLE, MPI_MAX, m.comm));
-    y = -lowest;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscErrorCode PassTools(Model &m, int pass, double floor_y, std::vector<Tool> &tools)
   {
-    const Options o = PassOptions(pass);
-    Tool upper;
-    PetscFunctionBeginUser;
-    if (squaring_) {
-      Die die;
-      PetscCall(BuildDie(m.comm, o, die));
-      upper = die.tool;
-      flank_ = die.flank, apex_ = die.apex;
-    } else
-      upper = BuildFlatPlate(o.tube_ro, -kPlateOverhang * o.tube_ro, (1 + kPlateReach) * o.tube_ro);
-    // The second pass's dies by their own names (errors, and their outlines in the results).
-    if (pass == 1) upper.name = "pass2-" + upper.name;
-    if (!half_) {
-      tools = {upper};
-      PetscFunctionReturn(PETSC_SUCCESS);
-    }
-    Tool lower;
-    PetscCall(BuildLowerDie(m.comm, o, upper, floor_y, lower));
-    if (o.lower_die_motion == "fixed") upper.direction = {0.0, -2.0}; // the dies close by 2 U either way
-    if (pass == 1 && lower.name.rfind("pass2-", 0) != 0) lower.name = "pass2-" + lower.name;
-    tools = {upper, lower};
-    PetscFunctionReturn(PETSC_SUCCESS);
+    return BuildPassDies(m.comm, opt_, pass, squaring_, half_, floor_y, tools, flank_, apex_);
   }
 
   // The half model's springback: the inner node nearest the x axis (a node on it, in a symmetric case, keeps
@@ -387,6 +352,7 @@ private:
     }
     PetscCallMPI(MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MINLOC, m.comm));
     pin_ = -1;
+    pinned_ = true;
     for (PetscInt n : m.mesh.node_sets["inner"])
       if (m.mesh.node_orig[n] == best.id) pin_ = n;
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -403,12 +369,21 @@ private:
     PetscFunctionBeginUser;
     PetscCall(GatherOuter(m, all, half_));
     if (all.size() >= 2) {
-      row.r_corner_x = AxisCornerRadius(all.front().x, all[1].x, all[1].y);
+      // (the half model's tube moves with a fixed lower die: its neighbour's height from the axis node's)
+      row.r_corner_x = AxisCornerRadius(all.front().x, all[1].x, all[1].y - all.front().y);
       row.r_corner_y = AxisCornerRadius(all.back().y, all[all.size() - 2].y, all[all.size() - 2].x);
     }
     if (!squaring_) PetscFunctionReturn(PETSC_SUCCESS);
     for (const auto &o : all) row.n_contact_apex += o.contact && apex_ >= 0 && o.segment == apex_;
-    if (unloading_) {
+    const Tool &tool = m.contact->tool(kUpper);
+    const Segment &fl = tool.segments[flank_];
+    const Vec2 off = tool.Offset();
+    const Line flank{{fl.a[0] + off[0], fl.a[1] + off[1]}, fl.n_line, {fl.n_line[1], -fl.n_line[0]}};
+    // The line starts at the flank's apex end (s = 0), where the fillet ends.
+    const SideSpan side = unloading_ ? SideSpan{} : SideOnFlank(all, flank, flank_, apex_, 0.0);
+    // Without a side on the flank (springback; the second pass's die still on its way to the tube), C is the
+    // chord's gap of the side the last one left.
+    if (unloading_ || (pass_ == 1 && side.empty() && side_ends_[0] >= 0)) {
       size_t ends[2] = {all.size(), all.size()};
       for (size_t k = 0; k < all.size(); ++k)
         for (int e = 0; e < 2; ++e)
@@ -417,12 +392,6 @@ private:
       row.c_over_t = found ? ChordGap(all, ends[0], ends[1]) / opt_.tube_t : 0.0;
       PetscFunctionReturn(PETSC_SUCCESS);
     }
-    const Tool &tool = m.contact->tool(kUpper);
-    const Segment &fl = tool.segments[flank_];
-    const Vec2 off = tool.Offset();
-    const Line flank{{fl.a[0] + off[0], fl.a[1] + off[1]}, fl.n_line, {fl.n_line[1], -fl.n_line[0]}};
-    // The line starts at the flank's apex end (s = 0), where the fillet ends.
-    const SideSpan side = SideOnFlank(all, flank, flank_, apex_, 0.0);
     side_ends_[0] = side.empty() ? -1 : all[side.ends[0]].id;
     side_ends_[1] = side.empty() ? -1 : all[side.ends[1]].id;
     const GapRange g = GapsTo(all, flank, side.smin, side.smax);

@@ -18,14 +18,15 @@ PetscErrorCode AddEdgePressure(Model &m, const std::string &set, double pressure
                                double stiffness_p = 0);
 // u_x = 0 on x = 0, u_y = 0 on y = 0, in each node's frame.
 PetscErrorCode QuarterSymmetry(Model &m);
-// C1 = x_max, C2 = y_max of the outer surface (half its height where the model reaches below the x axis)
-// and their ratio.
-PetscErrorCode OuterExtents(Model &m, HistoryRow &row);
+// C1 = x_max, C2 = y_max of the outer surface (with `half`, the half model's: half its height) and their ratio.
+PetscErrorCode OuterExtents(Model &m, HistoryRow &row, bool half = false);
 // Collective: the outer-surface nodes of the whole mesh on every rank, along the surface by angle (contact
 // state, and the segment of the upper die, tool 0, a node touches). With `upper`, only the nodes that started
 // on or above the x axis (the half model's upper quarter, on which the shape metrics are measured as in the
 // quarter model).
 PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper = false);
+// Collective: the lowest y of the outer surface (where a floor goes under the tube).
+PetscErrorCode LowestOuterY(Model &m, double &y);
 // The tube mesh of the options: structured (the quarter, or with `half` the half x >= 0) or -mesh_file.
 std::string TubeMesh(const Options &opt, SerialMesh &mesh, bool half = false);
 // The history's stage: 0 up to lambda = 1, 1 up to 2 (unloading, or a scene's second stage), and so on.
