@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """Plots a tubeform result: load vs stroke (left) and the shapes (right): the
 initial mesh (grey), the loaded shape coloured by von Mises stress, and, when
-the run unloads, the shape after springback (red outline). For the squaring
-scene the die at the final stroke is drawn too.
+the run unloads, the shape after springback (red outline). A tool scene's
+tools are drawn where they were at the loaded state (from the result file's
+/tools). With two passes (-pass2_stroke) the curve has both presses and
+springbacks; the shapes are the second pass's.
 
     /usr/bin/python3 scripts/plot.py results/squaring.h5 results/squaring.png
 
@@ -20,6 +22,7 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 
 
 def main(path, png):
+    tools = []  # (outline's points at the loaded step, lines)
     with h5py.File(path, "r") as h:
         X = h["/geometry/vertices"][:]
         C = h["/viz/topology/cells"][:]
@@ -29,18 +32,29 @@ def main(path, png):
         hist = {k: h["/history"][k][:] for k in h["/history"]}
         opts = h.attrs.get("options", b"")
         opts = opts.decode() if isinstance(opts, bytes) else str(opts)
+        # The loaded state: the end of the last press (lambda 1, or 3 with a second pass).
+        press_end = 3.0 if t[-1] > 2.0 + 1e-9 else 1.0
+        loaded = int(np.nonzero(t <= press_end + 1e-9)[0][-1])
+        for name in h.get("/tools", {}):
+            g = h["/tools"][name]
+            d = g["displacement"]
+            if d.attrs.get("first_step", 0) <= loaded < d.shape[0]:
+                tools.append((g["vertices"][:] + d[loaded], g["lines"][:]))
     scene = option(opts, "-scene", "?")
-    loaded = int(np.nonzero(t <= 1.0 + 1e-9)[0][-1])
-    unloads = t[-1] > 1.0 + 1e-9
+    unloads = t[-1] > press_end + 1e-9
 
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(13, 5.5))
     stage = hist.get("stage", np.zeros_like(hist["stroke"]))
-    ax1.plot(hist["stroke"][stage == 0], hist["load"][stage == 0], "-", label="loading")
-    if (stage == 1).any():
-        # From the last loading row, so that a few long unloading steps still start at the peak.
-        un = np.flatnonzero(stage == 1)
-        un = np.concatenate(([un[0] - 1], un)) if un[0] > 0 else un
-        ax1.plot(hist["stroke"][un], hist["load"][un], "--", label="unloading")
+    names = {0: ("loading", "-", "C0"), 1: ("unloading", "--", "C1"), 2: ("second press", "-", "C2"),
+             3: ("second springback", "--", "C3")}
+    for st, (label, style, color) in names.items():
+        rows = np.flatnonzero(stage == st)
+        if not len(rows):
+            continue
+        # From the row before, so that a few long unloading steps still start at the peak.
+        rows = np.concatenate(([rows[0] - 1], rows)) if rows[0] > 0 and st > 0 else rows
+        ax1.plot(hist["stroke"][rows], hist["load"][rows], style, color=color, label=label)
+    if (stage > 0).any():
         ax1.legend()
     xlabel, ylabel = "stroke U (mm)", "punch load, full tube (N/mm)"
     if scene == "pressure":
@@ -57,14 +71,18 @@ def main(path, png):
     shape = PolyCollection((X + scale * U[loaded])[C], array=vm[loaded], cmap="viridis", edgecolors="k", linewidths=0.15)
     ax2.add_collection(shape)
     fig.colorbar(shape, ax=ax2, label="von Mises stress, loaded (MPa)")
+    for k, (xy, lines) in enumerate(tools):
+        for i, (a, b) in enumerate(lines):
+            ax2.plot(xy[[a, b], 0], xy[[a, b], 1], "b-", lw=1.2, label="tools, loaded" if k == 0 and i == 0 else None)
+    if scene == "squaring" and not tools:  # (a result written before the tools were)
+        draw_die(ax2, opts, hist["stroke"][stage == 0][-1], color="b", lw=1.2, label="die at the final stroke")
     if unloads:
         for a, b in outline_edges(C):
             p = X[[a, b]] + scale * U[-1][[a, b]]
             ax2.plot(p[:, 0], p[:, 1], "r-", lw=0.8)
         ax2.plot([], [], "r-", label="after springback")
+    if unloads or tools:
         ax2.legend(loc="lower left")
-    if scene == "squaring":
-        draw_die(ax2, opts, hist["stroke"][stage == 0][-1], color="b", lw=1.2, label="die at the final stroke")
     ax2.autoscale()
     ax2.set_aspect("equal")
     ax2.set_xlabel("x (mm)")
