@@ -54,34 +54,25 @@ PetscErrorCode ContactSet::Initialize()
   for (double x : mesh_->x0) size = std::max(size, std::abs(x));
   PetscCallMPI(MPI_Allreduce(&size, &global_size, 1, MPI_DOUBLE, MPI_MAX, comm()));
   const double tol = kStartGap * (1 + global_size);
+  // The deepest node inside a tool, its place `where` = input number x tools + tool.
+  const int ntools = (int)tools_.size();
   struct {
     double depth;
-    int node;
+    int where;
   } inside = {0.0, -1}, deepest;
-  int which = 0;
   for (PetscInt node : candidates_)
     for (int k = 0; k < (int)tools_.size(); ++k) {
       const Projection pr = tools_[k].Project(Position(node));
       if (pr.segment >= 0 && std::abs(pr.gap) <= tol && !contact_[node]) contact_[node] = 1, tool_of_[node] = k;
       if (pr.segment >= 0 && -pr.gap > std::max(tol, inside.depth))
-        inside = {-pr.gap, (int)mesh_->node_orig[node]}, which = k;
+        inside = {-pr.gap, (int)mesh_->node_orig[node] * ntools + k};
     }
   // A tool that starts inside the body would push it out by its overlap in the
   // first increment: a wrong start (a mesh file larger than -tube_ro, say).
   PetscCallMPI(MPI_Allreduce(&inside, &deepest, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm()));
-  if (deepest.node >= 0) {
-    // The tool's name from the rank that found the deepest node.
-    struct {
-      double depth;
-      int rank;
-    } mine = {inside.depth, 0}, top;
-    PetscCallMPI(MPI_Comm_rank(comm(), &mine.rank));
-    PetscCallMPI(MPI_Allreduce(&mine, &top, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm()));
-    PetscCallMPI(MPI_Bcast(&which, 1, MPI_INT, top.rank, comm()));
-  }
-  PetscCheck(deepest.node < 0, comm(), PETSC_ERR_USER_INPUT,
+  PetscCheck(deepest.where < 0, comm(), PETSC_ERR_USER_INPUT,
              "the %s starts inside the body: node %d lies %g mm inside it (does -tube_ro match the mesh?)",
-             tools_[which].name.c_str(), deepest.node, deepest.depth);
+             tools_[deepest.where % ntools].name.c_str(), deepest.where / ntools, deepest.depth);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -60,8 +60,9 @@ public:
   }
   LoadPath Path(const Options &opt) const override
   {
-    if (stroke2_ > 0) return {4.0, stroke_ / opt.punch_speed, {1.0, 2.0, 3.0}};
-    return {opt_.unload == "none" ? 1.0 : 2.0, stroke_ / opt.punch_speed, {1.0}};
+    if (stroke2_ > 0)
+      return {kSecondRelease + 1, stroke_ / opt.punch_speed, {kFirstRelease, kSecondPress, kSecondRelease}};
+    return {opt_.unload == "none" ? kFirstRelease : kFirstRelease + 1, stroke_ / opt.punch_speed, {kFirstRelease}};
   }
   // Stages by the lambda an increment starts at: 0 press, 1 release, 2 press (the second pass), 3 release.
   static int StageAt(double lambda) { return (int)std::floor(lambda + kLambdaTol); }
@@ -77,7 +78,7 @@ public:
   // The stroke of the dies in place: the first pass's, then (once its dies are set up) the second's.
   double ToolStroke(double lambda) const override
   {
-    if (pass_ == 1) return std::min(std::max(lambda - 2.0, 0.0), 1.0) * stroke2_;
+    if (pass_ == 1) return std::min(std::max(lambda - kSecondPress, 0.0), 1.0) * stroke2_;
     if (lambda <= 1.0) return lambda * stroke_;
     return opt_.unload == "withdraw" ? stroke_ - (lambda - 1.0) * back_ : stroke_;
   }
@@ -170,7 +171,7 @@ public:
   {
     PetscFunctionBeginUser;
     if (unloading_) {
-      // Reversed contact forces: from F at lambda = 1 to 0 at lambda = 2.
+      // Reversed contact forces: from F at the release's start to 0 at its end (ReleaseEnd).
       const PetscScalar *f;
       PetscCall(VecGetArrayRead(reversed_, &f));
       for (PetscInt n = 0; n < m.mesh.num_nodes; ++n) {
@@ -299,7 +300,7 @@ private:
   // A half model's mesh reaches at least this share of its height above the x axis below it.
   static constexpr double kHalfCover = 0.9;
   // Where the load path's releases begin (lambda): each pass takes one unit of it to press and one to release.
-  static constexpr double kFirstRelease = 1.0, kSecondRelease = 3.0;
+  static constexpr double kFirstRelease = 1.0, kSecondPress = 2.0, kSecondRelease = 3.0;
   // The tools' places in the contact set.
   static constexpr int kUpper = 0, kLower = 1;
   Options opt_;
