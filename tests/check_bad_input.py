@@ -23,6 +23,9 @@ base = ["-options_file", f"{src}/options/pressure.opts", "-mesh_nt", 2, "-mesh_n
 # A good run leaves a result we must not lose.
 run(tf, mpirun, 1, base + ["-output", out("keep.h5"), "-history_csv", out("keep.csv")])
 digest = hashlib.sha256(open("keep.h5", "rb").read()).hexdigest()
+# A flat die a millimetre above the tube (the base case's Ro = 20 mm): force control cannot start it.
+with open(out("above.profile"), "w") as f:
+    f.write("line 0 21 30 21\n")
 
 cases = [
     (["-tube_t", "-1"], "-tube_t"),
@@ -60,6 +63,14 @@ cases = [
     (["-scene", "squaring", "-pass2_stroke", "9"], "-pass2_stroke 9"),  # past the closed cavity
     (["-scene", "squaring", "-model", "half", "-mesh_file", f"{src}/meshes/thick_cylinder_4x8.msh"],
      "does not reach below the x axis"),
+    (["-scene", "squaring", "-die_force", "-5"], "-die_force -5"),
+    (["-die_force", "100"], "presses with no dies"),
+    (["-scene", "squaring", "-die_force", "100", "-model", "half"], "-lower_die_motion fixed"),
+    (["-scene", "squaring", "-die_force", "100", "-pass2_stroke", "2"], "not with a second pass"),
+    (["-scene", "squaring", "-die_force", "100", "-unload", "withdraw"], "-unload withdraw moves the die back"),
+    (["-scene", "squaring", "-die_force", "100", "-stroke_corner_radius", "4"], "-stroke_corner_radius"),
+    (["-scene", "squaring", "-die_force", "100", "-die_profile", out("above.profile")],
+     "touches no node of the body at its start"),
     (["-scene", "bending", "-mesh_nt", "3"], "needs an even number of elements"),
     (["-rmin_yield", "bogus"], "-rmin_yield"),
     (["-rmin_yield_tol", "0"], "-rmin_yield_tol"),
@@ -116,7 +127,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 63 and len(selected) == 5, f"{len(cases)} cases on 1 rank (63), {len(selected)} on 2 (5)")
+k.check(len(cases) == 70 and len(selected) == 5, f"{len(cases)} cases on 1 rank (70), {len(selected)} on 2 (5)")
 
 
 def refused(np_, extra, needle):

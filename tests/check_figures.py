@@ -1,13 +1,14 @@
-"""scripts/figures --quick (issue 11) from nothing: runs the fast preset's cases into
-the test directory and draws every figure as PNG and PDF. Checks that each
-of the 16 figures exists in both formats and is not empty, that every case
-finished, that the two tables (critical R/t, apex radius) were written, and the one claim of the paper's Fig. 3 that does not depend on
-its unknown die: at mu 0.05 the thick aluminum tube (R/t 11.67) needs the
-largest punch load at every stroke and the thin aluminum one (R/t 37) the
-smallest, copper (R/t 29) between (the thin aluminum tube's 0.5 mm wall on
-a smaller radius, with 2.7 times aluminum's initial yield stress); and
-copper needs more load than aluminum on the same tube (R/t 29), as the paper
-says.
+"""scripts/figures --quick (issue 11) from nothing: runs the fast preset's cases of its
+quick grid into the test directory (22 real runs, about a minute on 2 cores)
+and draws every figure as PNG and PDF. Checks that each of the 16 figures
+exists in both formats and is not empty, that every case finished, that the
+two tables (critical R/t, apex radius) were written, and the one claim of
+the paper's Fig. 3 that does not depend on its unknown die: at mu 0.05 the
+thick aluminum tube (R/t 11.67) needs the largest punch load at every stroke
+and the thin aluminum one (R/t 37) the smallest, copper (R/t 29) between (the
+thin aluminum tube's 0.5 mm wall on a smaller radius, with 2.7 times
+aluminum's initial yield stress); and copper needs more load than aluminum
+on the same tube (R/t 29), as the paper says.
 """
 import csv
 import glob
@@ -24,7 +25,7 @@ for d in (out, res):
     shutil.rmtree(d, ignore_errors=True)  # from nothing, as on a clean checkout
 p = subprocess.run(["/usr/bin/python3", f"{src}/scripts/figures", "--quick", "--out", out, "--results", res,
                     "--exe", tf],
-                   capture_output=True, text=True, timeout=1100,
+                   capture_output=True, text=True, timeout=540,
                    env=dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1"))
 print(p.stdout[-1500:], p.stderr[-1500:])
 k.check(p.returncode == 0 and "16 figures" in p.stdout, f"scripts/figures exit {p.returncode}")
@@ -40,15 +41,15 @@ status = []
 for f in glob.glob(os.path.join(res, "fig_fast_*", "summary.csv")):
     with open(f) as fh:
         status += [r["status"] for r in csv.DictReader(fh)]
-# The --quick grid: 3 paper tubes x 5 mu, R/t x 3 mu twice (4.2 mm and the rule), one material, 2 R/t x 4 apex radii,
-# the 3 paper tubes with a backstress. --quick runs without error estimates, so a finished case is "done" (never
-# "inaccurate").
-expected = 3 * 5 + 2 * 5 * 3 + 1 + 2 * 4 + 3
+# The --quick grid: 3 paper tubes x 2 mu, 2 R/t x 2 mu (4.2 mm), 3 R/t x 2 mu (the rule), one material, 1 R/t x 2
+# apex radii, the 3 paper tubes with a backstress. --quick runs without error estimates, so a finished case is "done"
+# (never "inaccurate").
+expected = 3 * 2 + 2 * 2 + 3 * 2 + 1 + 1 * 2 + 3
 k.check(len(status) == expected and all(s == "done" for s in status),
         f"{sum(s == 'done' for s in status)} of {len(status)} cases done ({expected} in the grid)")
-# The critical R/t table has a row per friction coefficient of the rule grid (3), the apex table one per case (8).
-rows = {"critical_rt_fast.md": 3, "die_apex_fast.md": 8}
-k.check(all(os.path.exists(os.path.join(out, t)) and open(os.path.join(out, t)).read().count("\n| ") - 1 >= n
+# The critical R/t table has a row per friction coefficient of the rule grid (2), the apex table one per case (2).
+rows = {"critical_rt_fast.md": 2, "die_apex_fast.md": 2}
+k.check(all(os.path.exists(os.path.join(out, t)) and open(os.path.join(out, t)).read().count("\n| ") - 1 == n
             for t, n in rows.items()), "both tables written, a row per case")
 P = {}
 for tube in ("al_11.67", "al_37", "cu_29"):

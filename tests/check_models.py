@@ -40,6 +40,13 @@ D. Two passes (-pass2_stroke): press, the paper's springback, press again with t
      stopped within 1e-12 of each column's largest value (tests/check_restart.py's bound; measured 0; a
      restart that took the first pass's dies would press on the V instead of the floor); 1 vs 2 ranks within
      the bounds of A; the .xmf shows each pass's dies from the field step it starts at.
+F. The full model (`-model full`): the whole tube, both V-dies across the y axis, its rotation and motion along x
+   held by the x of its two outer nodes on the y axis. The quarter's press again: load, C1, C2, C/t and C1/C2
+   within the bounds of A (measured 1.2e-10), its internal, friction and external work four times the quarter's;
+   the displacement field mirror-symmetric about the y axis within 1e-8 of its largest value (the same sums in
+   another order; measured 2.4e-13): a pin that carried a force, or a die's left half drawn on the wrong side,
+   would make the tube lean. The V-die over a flat floor (C's press) in the full model against C's half: the
+   same bounds (measured 3.2e-6 to U = 4.2 mm, where each step is balanced to C's -equilibrium_tol 1e-6).
 E. The guide's example, options/own_die.opts (the shipped DXF die over a floor, then the V-die), runs on the
    fast preset: four stages, the dies of both passes in the results.
 """
@@ -128,6 +135,23 @@ k.check(np.abs(h["tools"]["floor"]).max() == 0 and np.abs(h["tools"]["V-die"][-1
         "floor: it stays in the results, the die moves by 2 U")
 print(f"       U = {U}: load quarter {along(quarter, 'load')[-1]:.2f}, half {along(half, 'load')[-1]:.2f}, "
       f"V over floor {along(h, 'load')[-1]:.2f} N/mm")
+
+# F. The full model.
+full = press("models_full.h5", ["-model", "full"])
+agree(quarter, full, SHAPE, "full against quarter")
+agree(quarter, full, ("w_int", "w_friction", "w_ext"), "full = 4 x quarter", scale_b=0.25)
+X, Uf = full["X"], full["U"][-1]
+mirror = np.array([np.flatnonzero((np.abs(X[:, 0] + x) < 1e-9) & (np.abs(X[:, 1] - y) < 1e-9))[0] for x, y in X])
+lean = max(np.abs(Uf[mirror, 0] + Uf[:, 0]).max(), np.abs(Uf[mirror, 1] - Uf[:, 1]).max()) / np.abs(Uf).max()
+k.check(lean < 1e-8, f"full model: the displacement after springback mirror-symmetric about the y axis within "
+        f"{lean:.1e} of its largest value (1e-8)")
+full_floor = press("models_full_floor.h5", ["-model", "full", "-lower_die", "flat", "-lower_die_motion", "fixed",
+                                            "-equilibrium_tol", 1e-6])
+agree(h, full_floor, ("load", "y_max", "c_over_t"), "V over floor, full against half")
+with h5py.File(out("models_full.h5"), "r") as f:
+    spans = {t: (f["/tools"][t]["vertices"][:, 0].min(), f["/tools"][t]["vertices"][:, 0].max()) for t in f["/tools"]}
+k.check(sorted(spans) == ["V-die", "lower-V-die"] and all(lo < -U and hi > U for lo, hi in spans.values()),
+        "full model: both dies in the results, each across the y axis")
 
 # D. Two passes.
 def stage_end(h, stage, col):

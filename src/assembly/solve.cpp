@@ -104,21 +104,8 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
     PetscCall(MatMultAdd(kb_, x_, rhs_, rhs_));
   }
   PetscCall(AddCouplings());
-  if (iterate_) {
-    PetscCall(MatMult(k_, x_, work_));
-    PetscCall(VecAYPX(work_, -1.0, rhs_)); // b - K x
-    const PetscScalar *r;
-    PetscCall(VecGetArrayRead(work_, &r));
-    PetscInt n;
-    PetscCall(VecGetLocalSize(work_, &n));
-    std::vector<char> fixed(n, 0);
-    for (PetscInt row : rows) fixed[row - lo] = 1;
-    double local = 0;
-    for (PetscInt i = 0; i < n; ++i)
-      if (!fixed[i]) local = std::max(local, std::abs(PetscRealPart(r[i])));
-    PetscCall(VecRestoreArrayRead(work_, &r));
-    PetscCallMPI(MPI_Allreduce(&local, &iterate_residual_, 1, MPI_DOUBLE, MPI_MAX, mesh_->comm));
-  }
+  bool extra = false;
+  PetscCall(PrepareUnitMotion(extra));
 
   // Keep the unconstrained rows for the reactions: R = K(rows, :). The
   // submatrix is rebuilt only when some rank's prescribed set changed.
@@ -139,6 +126,29 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
   last_rows_ = rows;
   b_rows.resize(rows.size());
   if (!rows.empty()) PetscCall(VecGetValues(rhs_, (PetscInt)rows.size(), rows.data(), b_rows.data()));
+
+  if (iterate_) {
+    PetscCall(MatMult(k_, x_, work_));
+    PetscCall(VecAYPX(work_, -1.0, rhs_)); // b - K x
+    const PetscScalar *r;
+    PetscCall(VecGetArrayRead(work_, &r));
+    PetscInt n;
+    PetscCall(VecGetLocalSize(work_, &n));
+    std::vector<char> fixed(n, 0);
+    for (PetscInt row : rows) fixed[row - lo] = 1;
+    double local = 0;
+    for (PetscInt i = 0; i < n; ++i)
+      if (!fixed[i]) local = std::max(local, std::abs(PetscRealPart(r[i])));
+    PetscCall(VecRestoreArrayRead(work_, &r));
+    PetscCallMPI(MPI_Allreduce(&local, &iterate_residual_, 1, MPI_DOUBLE, MPI_MAX, mesh_->comm));
+    if (extra) {
+      // The extra unknown's condition at the iterate (its reactions: the forces the body needs there).
+      double missing;
+      PetscCall(Reactions(x_, rows, b_rows, reactions));
+      PetscCall(extra_->Missing(missing));
+      iterate_residual_ = std::max(iterate_residual_, std::abs(missing));
+    }
+  }
 
   if (iterate_ && (iterate_residual_ <= accept_below_ || iterate_residual_ > reject_above_)) {
     // In balance (or rejected): the iterate is the solution, no factorization.
@@ -172,32 +182,13 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
       SETERRQ(mesh_->comm, PETSC_ERR_NOT_CONVERGED, "%s (KSP: %s)", why.c_str(), KSPConvergedReasons[reason]);
     }
     if (iterate_) PetscCall(VecAXPY(sol_, 1.0, x_));
+    if (extra) PetscCall(CombineUnitMotion(rows, b_rows, reactions));
     ++nsolves_;
     PetscCall(PetscLogEventEnd(Log::solve, 0, 0, 0, 0));
   }
 
   // Reactions r = K(rows, :) du - f(rows), in the node frames.
-  {
-    Vec r;
-    const PetscScalar *ra;
-    PetscCall(MatCreateVecs(reaction_rows_, nullptr, &r));
-    PetscCall(MatMult(reaction_rows_, sol_, r));
-    PetscCall(VecGetArrayRead(r, &ra));
-    reactions.assign(prescribed_.size(), 0.0);
-    PetscCall(VecZeroEntries(reactions_global_));
-    size_t k = 0;
-    for (size_t q = 0; q < prescribed_.size(); ++q)
-      if (mesh_->node_owned[prescribed_[q].node]) {
-        reactions[q] = PetscRealPart(ra[k]) - PetscRealPart(b_rows[k]);
-        PetscCall(VecSetValue(reactions_global_, rows[k], reactions[q], INSERT_VALUES));
-        ++k;
-      }
-    PetscCall(VecRestoreArrayRead(r, &ra));
-    PetscCall(VecDestroy(&r));
-    PetscCall(VecAssemblyBegin(reactions_global_));
-    PetscCall(VecAssemblyEnd(reactions_global_));
-    PetscCall(DMGlobalToLocal(mesh_->dm, reactions_global_, INSERT_VALUES, reactions_local_));
-  }
+  PetscCall(Reactions(sol_, rows, b_rows, reactions));
 
   // Back to the global frame, ghosts filled.
   PetscCall(DMGlobalToLocal(mesh_->dm, sol_, INSERT_VALUES, du));
@@ -206,6 +197,32 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
   for (PetscInt n = 0; n < mesh_->num_nodes; ++n)
     if (has_frame_[n]) Rotate(n, d[mesh_->node_dof[n]], d[mesh_->node_dof[n] + 1], false);
   PetscCall(VecRestoreArray(du, &d));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode System::Reactions(Vec sol, const std::vector<PetscInt> &rows, const std::vector<PetscScalar> &b_rows,
+                                 std::vector<double> &reactions)
+{
+  Vec r;
+  const PetscScalar *ra;
+  PetscFunctionBeginUser;
+  PetscCall(MatCreateVecs(reaction_rows_, nullptr, &r));
+  PetscCall(MatMult(reaction_rows_, sol, r));
+  PetscCall(VecGetArrayRead(r, &ra));
+  reactions.assign(prescribed_.size(), 0.0);
+  PetscCall(VecZeroEntries(reactions_global_));
+  size_t k = 0;
+  for (size_t q = 0; q < prescribed_.size(); ++q)
+    if (mesh_->node_owned[prescribed_[q].node]) {
+      reactions[q] = PetscRealPart(ra[k]) - PetscRealPart(b_rows[k]);
+      PetscCall(VecSetValue(reactions_global_, rows[k], reactions[q], INSERT_VALUES));
+      ++k;
+    }
+  PetscCall(VecRestoreArrayRead(r, &ra));
+  PetscCall(VecDestroy(&r));
+  PetscCall(VecAssemblyBegin(reactions_global_));
+  PetscCall(VecAssemblyEnd(reactions_global_));
+  PetscCall(DMGlobalToLocal(mesh_->dm, reactions_global_, INSERT_VALUES, reactions_local_));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

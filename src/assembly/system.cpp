@@ -22,6 +22,8 @@ System::~System()
   (void)VecDestroy(&x_);
   (void)VecDestroy(&work_);
   (void)VecDestroy(&work_local_);
+  (void)VecDestroy(&unit_);
+  (void)VecDestroy(&unit_sol_);
   (void)VecDestroy(&reactions_local_);
   (void)VecDestroy(&reactions_global_);
   (void)KSPDestroy(&ksp_);
@@ -114,6 +116,7 @@ PetscErrorCode System::Begin()
   PetscCall(VecZeroEntries(f_local_));
   prescribed_.clear();
   couplings_.clear();
+  extra_ = nullptr;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

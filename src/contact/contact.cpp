@@ -22,7 +22,7 @@ Vec2 ContactSet::Increment(const PetscScalar *d, PetscInt node) const
 // along l minus the tool's.
 double ContactSet::Slip(PetscInt node, const Vec2 &u, double dU) const
 {
-  return Dot(u, l_[node]) - dU * Dot(Direction(node), l_[node]);
+  return Dot(u, l_[node]) - Dot(Motion(node, dU), l_[node]);
 }
 
 void ContactSet::Remove()
@@ -64,6 +64,7 @@ PetscErrorCode ContactSet::BeginIncrement()
     global_frame_[node] = on_plane && std::abs(std::abs(Dot(s, pr.l)) - 1) > kAxisTol;
     system_->SetFrame(node, global_frame_[node] ? 0.0 : std::atan2(pr.l[1], pr.l[0]));
   }
+  if (has_pad()) PetscCall(PadForce(pad_start_));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -93,6 +94,7 @@ void ContactSet::LinearizeAtStart()
 PetscErrorCode ContactSet::Constrain(double dU)
 {
   PetscFunctionBeginUser;
+  if (has_pad()) system_->SetExtraUnknown(this);
   // Moving tool: the slip per unit stroke of the latest solution; static tool:
   // the last increment's slip.
   if (predict_)
@@ -110,18 +112,20 @@ PetscErrorCode ContactSet::Constrain(double dU)
     if (f[0] != 0 || f[1] != 0) system_->AddForce(node, -f[0], -f[1]);
     if (!contact_[node]) continue;
     // Follow the tool along n and close any gap left by the last increment.
-    const double dn = dU * Dot(Direction(node), n_[node]) - gap_[node];
+    // (A force-controlled tool's nodes: per unit of its motion as well, the system's extra unknown.)
+    const double dn = Dot(Motion(node, dU), n_[node]) - gap_[node];
+    const double unit = tools_[tool_of_[node]].pad ? Dot(Direction(node), n_[node]) : 0.0;
     if (global_frame_[node]) {
       // du . n = dn with the held component zero: the free global component follows.
       const Vec2 s = sym_dir_[node];
       const int free = 1 - HeldComponent(s);
-      system_->Prescribe(node, free, dn / n_[node][free]);
+      system_->Prescribe(node, free, dn / n_[node][free], unit / n_[node][free]);
       continue; // the symmetry support itself is prescribed by the scene
     }
-    system_->Prescribe(node, 1, dn);
+    system_->Prescribe(node, 1, dn, unit);
     if (!friction() || !SlipFree(node) || !mesh_->node_owned[node]) continue;
     const friction::RowTerms t = friction::Linearize(prm_.mu, prm_.vcri, fn_[node], fnk_[node], x_[node], dxk_[node],
-                                                     dU * Dot(Direction(node), l_[node]), kappa_[node]);
+                                                     Dot(Motion(node, dU), l_[node]), kappa_[node]);
     system_->AddRowCoupling(node, t.row_n_coeff);
     PetscCall(system_->AddFrameStiffness(node, t.diag));
     system_->AddFrameForce(node, t.rhs, 0.0);
@@ -193,8 +197,8 @@ PetscErrorCode ContactSet::ReleasePulled(Vec du, double dU, double release_fract
       // Judged on settled friction iterates only: a passing iterate can swing
       // the node through the tool and would hold it there for the trial.
       const Vec2 x = Position(node), u = Increment(d, node);
-      const Vec2 &dir = Direction(node); // the tool it was released from
-      const Vec2 end = {x[0] + u[0] - dU * dir[0], x[1] + u[1] - dU * dir[1]};
+      const Vec2 t = Motion(node, dU); // of the tool it was released from
+      const Vec2 end = {x[0] + u[0] - t[0], x[1] + u[1] - t[1]};
       const Projection pr = tools_[tool_of_[node]].Project(end);
       if (pr.segment < 0 || pr.gap >= 0) continue;
       local += mesh_->node_owned[node];
@@ -237,7 +241,7 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
       // trial starts on the surface: where it ends is checked by ReleasePulled.
       if (released_[node]) continue;
       for (int k = 0; k < (int)tools_.size(); ++k) {
-        const double r = tools_[k].FirstContact(Position(node), u, dU);
+        const double r = tools_[k].FirstContact(Position(node), u, Step(k, dU));
         if (k == 0 || r < r4_[node]) r4_[node] = r, touch_[node] = k;
       }
       touch.Offer(r4_[node], Limiter::Contact, id);
@@ -293,6 +297,7 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::contact, 0, 0, 0, 0));
+  pad_step_ *= r; // (the force-controlled tool's motion in the solution, scaled as du was)
   PetscCall(VecGetArrayRead(du, &d));
   PetscCall(VecGetArrayRead(system_->reactions_local(), &react));
   for (PetscInt node : candidates_) {
@@ -340,8 +345,8 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
   report.release_force = global[2];
   slid_off_ = 0;
 
-  // The tools have moved by dU with the increment.
-  for (Tool &t : tools_) t.stroke += dU;
+  // The tools have moved by dU with the increment (a force-controlled one by its own step).
+  for (int k = 0; k < (int)tools_.size(); ++k) tools_[k].stroke += Step(k, dU);
   // The new geometry: contact nodes take the frame where they now are (the
   // forces are reported in it) and keep their gap for the next increment to
   // close (on arcs, sliding along the tangent leaves a second-order gap); a

@@ -12,6 +12,7 @@ PetscErrorCode ContactSet::Persist(Archive &ar)
   PetscCall(ar.Value("predict", predict_));
   PetscCall(ar.Value("settled", settled_));
   PetscCall(ar.Value("f_small", f_small_));
+  PetscCall(ar.Value("pad_step", pad_step_));
   std::vector<double> strokes;
   for (const Tool &t : tools_) strokes.push_back(t.stroke);
   PetscCall(ar.Values("strokes", strokes));

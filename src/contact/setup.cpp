@@ -73,6 +73,17 @@ PetscErrorCode ContactSet::Initialize()
   PetscCheck(deepest.where < 0, comm(), PETSC_ERR_USER_INPUT,
              "the %s starts inside the body: node %d lies %g mm inside it (does -tube_ro match the mesh?)",
              tools_[deepest.where % ntools].name.c_str(), deepest.where / ntools, deepest.depth);
+  // A force-controlled tool moves by what its force needs: it must hold the body from the start.
+  for (int k = 0; k < ntools; ++k) {
+    if (!tools_[k].pad) continue;
+    PetscInt local = 0, touching;
+    for (PetscInt node : candidates_) local += contact_[node] && tool_of_[node] == k && mesh_->node_owned[node];
+    PetscCall(MPIU_Allreduce(&local, &touching, 1, MPIU_INT, MPI_SUM, comm()));
+    PetscCheck(touching > 0, comm(), PETSC_ERR_USER_INPUT,
+               "the %s is force-controlled but touches no node of the body at its start (its force would move it "
+               "by nothing); start it on the body",
+               tools_[k].name.c_str());
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

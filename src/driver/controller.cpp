@@ -51,7 +51,10 @@ PetscErrorCode Controller::Solve(double lambda, double dl, Vec du, double &dU, I
   if (Equilibrium() && have_iter_) PetscCall(TrialState(iter_));
   if (dt > 0) PetscCall(inertia_->AddMass(m_.system, dt));
   dU = scene_.ToolStroke(lambda + dl) - scene_.ToolStroke(lambda);
-  if (ContactActive()) PetscCall(m_.contact->Constrain(dU));
+  if (ContactActive()) {
+    m_.contact->SetPadTarget(scene_.ToolForce(lambda), scene_.ToolForce(lambda + dl), std::min(1.0, dl / dl_trial_));
+    PetscCall(m_.contact->Constrain(dU));
+  }
   PetscCall(scene_.Load(m_, lambda, dl));
   if (dt > 0) inertia_->AddLoad(m_.system, dt);
   if (Equilibrium() && have_iter_) {
@@ -71,7 +74,10 @@ PetscErrorCode Controller::Solve(double lambda, double dl, Vec du, double &dU, I
   PetscCall(m_.system.Solve(du, reactions));
   // An iterate in balance is taken exactly as it was evaluated (the system's
   // copy went through the node frames and back).
-  if (Equilibrium() && have_iter_ && m_.system.accepted()) PetscCall(VecCopy(iter_, du));
+  if (Equilibrium() && have_iter_ && m_.system.accepted()) {
+    PetscCall(VecCopy(iter_, du));
+    SetPadStep(pad_iter_);
+  }
   m_.system.SetIterate(nullptr, 0);
   ++inc.solves;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -159,6 +165,7 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
   PetscFunctionBeginUser;
   const double release = ReleaseWithin(dl);
   PetscCall(VecCopy(du, iter_));
+  pad_iter_ = PadStep();
   have_iter_ = true;
   double first = -1, previous = PETSC_MAX_REAL;
   int backtracks = 0;
@@ -181,12 +188,15 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
       // (the iterate is unchanged: no correction of it to halve back)
       previous = PETSC_MAX_REAL, backtracks = 0;
       PetscCall(VecCopy(iter_, prev_));
+      pad_prev_ = pad_iter_;
       ++inc.balance;
       continue;
     }
     if (!m_.system.solved()) {
       ++backtracks;
       PetscCall(VecAXPBY(iter_, 0.5, 0.5, prev_)); // halfway back to where the correction started
+      pad_iter_ = 0.5 * (pad_iter_ + pad_prev_);
+      SetPadStep(pad_iter_);
       continue;
     }
     backtracks = 0;
@@ -201,6 +211,7 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
     }
     previous = residual;
     PetscCall(VecCopy(iter_, prev_));
+    pad_prev_ = pad_iter_;
     bool converged = true;
     if (Iterative()) PetscCall(m_.contact->UpdateIterates(du, t.dU, converged));
     t.limit = StepLimit{};
@@ -209,6 +220,7 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
     if (ContactActive()) PetscCall(m_.contact->ReleasePulled(du, t.dU, release, true, released));
     ++inc.balance;
     PetscCall(VecCopy(du, iter_));
+    pad_iter_ = PadStep();
   }
   have_iter_ = false;
   reject_above_ = PETSC_MAX_REAL;
@@ -248,6 +260,7 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   PetscFunctionBeginUser;
   inc = Increment{};
   const double dl_trial = dl;
+  dl_trial_ = dl;
   m_.body.ResetTransitions();
   // 1. The trial step and its r_min = min(1, r1..r6).
   PetscCall(SettledTrial(lambda, dl, du, t, inc));

@@ -306,8 +306,13 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                        {"mirror", "fixed"}, opt.lower_die_motion));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
                        "tool scenes: the part of the tube modelled: quarter (symmetric about both axes), half "
-                       "(about the y axis), or auto (the quarter when the lower die mirrors the upper one)",
-                       {"auto", "quarter", "half"}, opt.model));
+                       "(about the y axis), full (the whole tube, its rotation held by the x of its outer nodes on "
+                       "the y axis), or auto (the quarter when the lower die mirrors the upper one, else the half)",
+                       {"auto", "quarter", "half", "full"}, opt.model));
+  PetscCall(read.Real(PetscOptionsObject, "-die_force",
+                      "tool scenes: force control: the upper die presses with a punch load rising from 0 to this "
+                      "(N/mm) over the press, its stroke an unknown of each increment (0: the stroke -stroke)",
+                      opt.die_force));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
                       "squaring: a second pass after the springback: press again to this stroke (mm, from the second "
                       "pass's die touching the round tube's circle; 0: one pass), then spring back",

@@ -77,11 +77,29 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, const Options &opt)
   PetscFunctionBeginUser;
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
   const bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != "auto" ||
-                     opt.pass2_stroke != 0 || !opt.pass2_die_profile.empty() || !opt.pass2_lower_die.empty();
+                     opt.pass2_stroke != 0 || !opt.pass2_die_profile.empty() || !opt.pass2_lower_die.empty() ||
+                     opt.die_force != 0;
   PetscCheck(press || !asked, comm, PETSC_ERR_USER_INPUT,
-             "-lower_die, -lower_die_motion, -model, -pass2_*: the %s scene presses with no dies (these are the "
-             "squaring and flattening scenes' options)",
+             "-lower_die, -lower_die_motion, -model, -pass2_*, -die_force: the %s scene presses with no dies (these "
+             "are the squaring and flattening scenes' options)",
              opt.scene.c_str());
+  PetscCheck(opt.die_force >= 0 && std::isfinite(opt.die_force), comm, PETSC_ERR_USER_INPUT,
+             "-die_force %g: the punch load must be a non-negative number of N/mm (0: the die follows -stroke)",
+             opt.die_force);
+  if (opt.die_force > 0) {
+    // Force control drives one die; the stroke is its outcome.
+    PetscCheck(QuarterModel(opt) || opt.lower_die_motion == "fixed", comm, PETSC_ERR_USER_INPUT,
+               "-die_force %g: with the half model the lower die must stay (-lower_die_motion fixed); a lower die "
+               "moving by the upper one's unknown stroke is not available",
+               opt.die_force);
+    PetscCheck(opt.pass2_stroke == 0, comm, PETSC_ERR_USER_INPUT,
+               "-die_force %g: not with a second pass (-pass2_stroke); press one pass by force", opt.die_force);
+    PetscCheck(opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
+               "-die_force %g: -unload withdraw moves the die back by its stroke; use -unload reverse or none",
+               opt.die_force);
+    PetscCheck(opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+               "-die_force %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", opt.die_force);
+  }
   PetscCheck(opt.scene == "squaring" || opt.pass2_die_profile.empty(), comm, PETSC_ERR_USER_INPUT,
              "-pass2_die_profile: the %s scene presses with plates, not dies", opt.scene.c_str());
   PetscCheck(

@@ -63,6 +63,32 @@ SerialMesh GenerateHalfAnnulus(double ro, double t, int nt, int ntheta)
   return m;
 }
 
+SerialMesh GenerateFullAnnulus(double ro, double t, int nt, int ntheta)
+{
+  // The half and its mirror image left of the y axis, node for node: j = 0 .. 4 ntheta - 1 from -90 degrees
+  // counter-clockwise, the last ring of cells closing on the first ring of nodes.
+  const SerialMesh h = GenerateHalfAnnulus(ro, t, nt, ntheta);
+  SerialMesh m;
+  const int around = 4 * ntheta;
+  const auto id = [nt, around](int i, int j) { return i + (nt + 1) * (j % around); };
+  m.xy.resize(2 * (nt + 1) * around);
+  for (int j = 0; j < around; ++j) {
+    const int jh = j <= 2 * ntheta ? j : around - j; // the left half mirrors the right: x -> -x
+    for (int i = 0; i <= nt; ++i) {
+      m.xy[2 * id(i, j)] = j <= 2 * ntheta ? h.xy[2 * id(i, jh)] : -h.xy[2 * id(i, jh)];
+      m.xy[2 * id(i, j) + 1] = h.xy[2 * id(i, jh) + 1];
+    }
+  }
+  for (int j = 0; j < around; ++j)
+    for (int i = 0; i < nt; ++i)
+      m.quads.insert(m.quads.end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  for (int j = 0; j < around; ++j) {
+    m.edge_sets["inner"].push_back({id(0, j), id(0, j + 1)});
+    m.edge_sets["outer"].push_back({id(nt, j), id(nt, j + 1)});
+  }
+  return m;
+}
+
 SerialMesh GenerateRectangle(double lx, double ly, int nx, int ny)
 {
   SerialMesh m;

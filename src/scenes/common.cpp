@@ -68,29 +68,32 @@ PetscErrorCode QuarterSymmetry(Model &m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode OuterExtents(Model &m, HistoryRow &row, bool half)
+PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part)
 {
-  double ext[3] = {0, -kNever, -kNever}, g[3]; // (the half model's tube may sit anywhere along y)
+  // (the half and full models' tube may sit anywhere along y)
+  double ext[4] = {0, -kNever, -kNever, -kNever}, g[4];
   PetscFunctionBeginUser;
   for (PetscInt n : m.mesh.node_sets["outer"]) {
     ext[0] = std::max(ext[0], m.body.position()[2 * n]);
     ext[1] = std::max(ext[1], m.body.position()[2 * n + 1]);
     ext[2] = std::max(ext[2], -m.body.position()[2 * n + 1]);
+    ext[3] = std::max(ext[3], -m.body.position()[2 * n]);
   }
-  PetscCall(MPIU_Allreduce(ext, g, 3, MPIU_REAL, MPIU_MAX, m.comm));
-  row.x_max = g[0];
-  row.y_max = half ? 0.5 * (g[1] + g[2]) : g[1];
+  PetscCall(MPIU_Allreduce(ext, g, 4, MPIU_REAL, MPIU_MAX, m.comm));
+  row.x_max = part == TubePart::Full ? 0.5 * (g[0] + g[3]) : g[0];
+  row.y_max = part != TubePart::Quarter ? 0.5 * (g[1] + g[2]) : g[1];
   const double c1 = row.x_max, c2 = row.y_max;
   row.deviation_ratio = std::max(c1, c2) > 0 ? std::min(c1, c2) / std::max(c1, c2) : 1.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-std::string TubeMesh(const Options &opt, SerialMesh &mesh, bool half)
+std::string TubeMesh(const Options &opt, SerialMesh &mesh, TubePart part)
 {
   if (!opt.mesh_file.empty()) return ReadGmsh(opt.mesh_file, mesh);
   const int nt = (int)opt.mesh_nt, ntheta = (int)opt.mesh_ntheta;
-  mesh = half ? GenerateHalfAnnulus(opt.tube_ro, opt.tube_t, nt, ntheta)
-              : GenerateQuarterAnnulus(opt.tube_ro, opt.tube_t, nt, ntheta);
+  mesh = part == TubePart::Full   ? GenerateFullAnnulus(opt.tube_ro, opt.tube_t, nt, ntheta)
+         : part == TubePart::Half ? GenerateHalfAnnulus(opt.tube_ro, opt.tube_t, nt, ntheta)
+                                  : GenerateQuarterAnnulus(opt.tube_ro, opt.tube_t, nt, ntheta);
   return "";
 }
 

@@ -56,18 +56,20 @@ PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &upper, double floor_y, Tool &lower)
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &upper, double floor_y, bool full,
+                             Tool &lower)
 {
   PetscFunctionBeginUser;
   if (opt.lower_die == "mirror") {
     lower = MirrorY(upper);
   } else if (opt.lower_die == "flat") {
     // A floor under the tube, reaching past its widening on the outside.
-    lower = BuildFlatPlate(floor_y, -kFloorOverhang * opt.tube_ro, (1 + kFloorReach) * opt.tube_ro, true);
+    const double from = full ? -(1 + kFloorReach) * opt.tube_ro : -kFloorOverhang * opt.tube_ro;
+    lower = BuildFlatPlate(floor_y, from, (1 + kFloorReach) * opt.tube_ro, true);
   } else {
     Tool drawn;
     PetscCall(ReadProfileTool(comm, "-lower_die", opt.lower_die, drawn));
-    lower = MirrorY(drawn);
+    lower = full ? BothSides(MirrorY(drawn)) : MirrorY(drawn);
   }
   // Its name in errors and in the results (/tools/<name>): no spaces.
   lower.name = opt.lower_die == "flat" ? "floor" : opt.lower_die == "mirror" ? "lower-" + upper.name : "lower-die";
@@ -84,8 +86,8 @@ Options PassOptions(const Options &opt, int pass)
   return o;
 }
 
-PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, double floor_y,
-                             std::vector<Tool> &tools, int &flank, int &apex)
+PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, bool full,
+                             double floor_y, std::vector<Tool> &tools, int &flank, int &apex)
 {
   const Options o = PassOptions(opt, pass);
   Tool upper;
@@ -93,14 +95,16 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
   if (squaring) {
     Die die;
     PetscCall(BuildDie(comm, o, die));
-    upper = die.tool;
+    upper = full ? BothSides(die.tool) : die.tool; // (the right half's segments first: flank and apex stay)
     flank = die.flank, apex = die.apex;
-  } else
-    upper = BuildFlatPlate(o.tube_ro, -kPlateOverhang * o.tube_ro, (1 + kPlateReach) * o.tube_ro);
+  } else {
+    const double from = full ? -(1 + kPlateReach) * o.tube_ro : -kPlateOverhang * o.tube_ro;
+    upper = BuildFlatPlate(o.tube_ro, from, (1 + kPlateReach) * o.tube_ro);
+  }
   tools = {upper};
   if (half) {
     Tool lower;
-    PetscCall(BuildLowerDie(comm, o, upper, floor_y, lower));
+    PetscCall(BuildLowerDie(comm, o, upper, floor_y, full, lower));
     if (o.lower_die_motion == "fixed") tools[0].direction = {0.0, -2.0}; // the dies close by 2 U either way
     tools.push_back(lower);
   }

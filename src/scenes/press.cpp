@@ -1,7 +1,8 @@
 // The tool scenes of METHOD.md section 1: `squaring` (quarter tube, upper
 // V-die) and `flattening` (quarter ring, flat plate), with unloading.
 // With a lower die that does not mirror the upper one (-lower_die,
-// -lower_die_motion) or -model half, the half tube x >= 0 between both dies.
+// -lower_die_motion) or -model half, the half tube x >= 0 between both dies;
+// -model full: the whole tube, both dies across the y axis.
 //
 // Load path: lambda in [0, 1] presses the tool to the final stroke; with
 // -unload reverse or withdraw, lambda in [1, 2] unloads:
@@ -11,6 +12,8 @@
 // With -pass2_stroke, a second pass after the paper's unloading: lambda in
 // [2, 3] presses the second pass's dies (-pass2_die_profile, -pass2_lower_die)
 // from their start, lambda in [3, 4] springs back again.
+// With -die_force the upper die is force-controlled: its punch load rises
+// from 0 to the force over the press, and its stroke is the outcome.
 // History: stroke = tool stroke U (mm; half the dies' closing; over two passes
 // the sum, the second pass's die at stroke - U1), load = punch
 // load on the full tube, 2 x the model's vertical force on the upper die (N/mm).
@@ -30,7 +33,8 @@ namespace {
 
 class PressScene : public Scene {
 public:
-  PressScene(const Options &opt, bool squaring) : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt))
+  PressScene(const Options &opt, bool squaring)
+      : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(opt.model == "full")
   {
     stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_angle)
                                            : opt.stroke;
@@ -40,23 +44,33 @@ public:
 
   std::vector<std::string> BoundarySets() const override
   {
+    if (full_) return {"inner", "outer"};
     if (half_) return {"inner", "outer", "x0"};
     return {"inner", "outer", "x0", "y0"};
   }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
   {
-    const std::string error = TubeMesh(opt, mesh, half_);
+    const std::string error = TubeMesh(opt, mesh, Part());
     if (!error.empty() || !half_) return error;
-    // The half model's mesh reaches below the x axis as far as above it (a quarter would hang from nothing).
-    double low = 0, high = 0;
-    for (size_t k = 1; k < mesh.xy.size(); k += 2) low = std::min(low, mesh.xy[k]), high = std::max(high, mesh.xy[k]);
-    if (low < -kHalfCover * high) return "";
-    return "-mesh_file " + opt.mesh_file + ": the half model (-model, or a lower die that is not the upper one's " +
-           "mirror) needs the tube's half x >= 0 from -90 to 90 degrees; this mesh does not reach below the x axis";
+    // The half model's mesh reaches below the x axis as far as above it (a quarter would hang from nothing), the
+    // full model's left of the y axis as far as right of it.
+    double low[2] = {0, 0}, high[2] = {0, 0};
+    for (size_t k = 0; k < mesh.xy.size(); ++k)
+      low[k % 2] = std::min(low[k % 2], mesh.xy[k]), high[k % 2] = std::max(high[k % 2], mesh.xy[k]);
+    if (low[1] >= -kHalfCover * high[1])
+      return "-mesh_file " + opt.mesh_file + ": the half model (-model, or a lower die that is not the upper " +
+             "one's mirror) needs the tube's half x >= 0 from -90 to 90 degrees; this mesh does not reach below " +
+             "the x axis";
+    if (full_ && low[0] >= -kHalfCover * high[0])
+      return "-mesh_file " + opt.mesh_file + ": -model full needs the whole tube; this mesh does not reach left " +
+             "of the y axis";
+    return "";
   }
   std::string MeshLayout(const Options &opt) const override
   {
-    return Scene::MeshLayout(opt) + (half_ ? " (the half model: twice that around)" : "");
+    return Scene::MeshLayout(opt) + (full_   ? " (the full model: four times that around)"
+                                     : half_ ? " (the half model: twice that around)"
+                                             : "");
   }
   LoadPath Path(const Options &opt) const override
   {
@@ -69,18 +83,25 @@ public:
   bool Unloading(double lambda) const override { return StageAt(lambda) % 2 == 1; }
   // The quarter model carries half the punch load of the full tube (the
   // other half pushes the left quarter), moving by U; the half model carries
-  // half of it on each die, closing by 2 U. The reversed loads of the paper's
-  // unloading do no work along the stroke.
+  // half of it on each die, closing by 2 U; the full model all of it on each
+  // die. The reversed loads of the paper's unloading do no work along the stroke.
   double LoadWorkShare(double lambda) const override
   {
-    return Unloading(lambda) && opt_.unload == "reverse" ? 0.0 : half_ ? 1.0 : 0.5;
+    return Unloading(lambda) && opt_.unload == "reverse" ? 0.0 : full_ ? 2.0 : half_ ? 1.0 : 0.5;
   }
   // The stroke of the dies in place: the first pass's, then (once its dies are set up) the second's.
   double ToolStroke(double lambda) const override
   {
+    if (opt_.die_force > 0) return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
     if (pass_ == 1) return std::min(std::max(lambda - kSecondPress, 0.0), 1.0) * stroke2_;
     if (lambda <= 1.0) return lambda * stroke_;
     return opt_.unload == "withdraw" ? stroke_ - (lambda - 1.0) * back_ : stroke_;
+  }
+
+  // Force control: the model's half of the punch load, rising to -die_force over the press.
+  double ToolForce(double lambda) const override
+  {
+    return std::min(lambda, kFirstRelease) * opt_.die_force / LoadPerModelForce(); // (released: not read)
   }
 
   PetscErrorCode Initialize(Model &m, ContactSpec &tools) override
@@ -93,9 +114,13 @@ public:
       PetscCall(PassTools(m, 1, second));
     }
     PetscCall(PassTools(m, 0, tools.tools));
+    tools.tools[kUpper].pad = opt_.die_force > 0;
     tools.candidates = "outer";
     // The half tube between both dies is mirrored about the y axis only.
-    if (half_)
+    if (full_) {
+      PetscCall(MarkAxisPins(m));
+      tools.symmetry = {{"axis", {1, 0}}}; // (held by the scene: Load)
+    } else if (half_)
       tools.symmetry = {{"x0", {1, 0}}};
     else
       tools.symmetry = {{"x0", {1, 0}}, {"y0", {0, 1}}};
@@ -123,7 +148,7 @@ public:
   PetscErrorCode CheckReach(MPI_Comm comm) const
   {
     PetscFunctionBeginUser;
-    PetscCall(CheckDieReach(comm, PassOptions(opt_, 0), squaring_, stroke_, "-stroke"));
+    if (opt_.die_force == 0) PetscCall(CheckDieReach(comm, PassOptions(opt_, 0), squaring_, stroke_, "-stroke"));
     if (stroke2_ > 0) PetscCall(CheckDieReach(comm, PassOptions(opt_, 1), squaring_, stroke2_, "-pass2_stroke"));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -182,6 +207,7 @@ public:
       PetscCall(VecRestoreArrayRead(reversed_, &f));
     }
     PetscCall(QuarterSymmetry(m));
+    if (full_) PetscCall(HoldAxisPins(m));
     // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
     // holds the tube's rigid motion along y.
     if (pinned_ && !unloading_) {
@@ -208,19 +234,20 @@ public:
   {
     double force[2], moment;
     PetscFunctionBeginUser;
-    row.stroke = (pass_ == 1 ? stroke_ : 0.0) + ToolStroke(lambda);
+    row.stroke =
+      opt_.die_force > 0 ? m.contact->tool(kUpper).stroke : (pass_ == 1 ? stroke_ : 0.0) + ToolStroke(lambda);
     if (unloading_) {
       for (int k = 0; k < 2; ++k) force[k] = (ReleaseEnd() - lambda) * reversed_total_[k];
       moment = (ReleaseEnd() - lambda) * reversed_moment_;
     } else
       PetscCall(m.contact->TotalForce(kUpper, force, &moment));
-    row.load = -2.0 * force[1]; // full tube: both halves push the die up
+    row.load = -LoadPerModelForce() * force[1]; // full tube: both halves push the die up
     row.tool_fx = -force[0], row.tool_fy = -force[1], row.tool_moment = -moment;
     if (half_ && !unloading_) {
       PetscCall(m.contact->TotalForce(kLower, force, &moment));
       row.lower_fx = -force[0], row.lower_fy = -force[1], row.lower_moment = -moment;
     }
-    PetscCall(OuterExtents(m, row, half_));
+    PetscCall(OuterExtents(m, row, Part()));
     PetscCall(Shape(m, lambda, row));
     row.stage = StageOf(lambda);
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -247,7 +274,10 @@ public:
                                {"y_max", row->y_max}})
           m.push_back({pre + name + what, v});
     }
-    m.push_back({"final_stroke_target", stroke_});
+    if (opt_.die_force > 0)
+      m.push_back({"final_force_target", opt_.die_force});
+    else
+      m.push_back({"final_stroke_target", stroke_});
     if (stroke2_ > 0) m.push_back({"pass2_stroke_target", stroke2_});
     return m;
   }
@@ -305,7 +335,8 @@ private:
   static constexpr int kUpper = 0, kLower = 1;
   Options opt_;
   bool squaring_;
-  bool half_;           // the half model x >= 0 with both dies
+  bool half_;           // the half model x >= 0 with both dies (or the full model)
+  bool full_;           // the full model: the whole tube, both dies across the y axis
   double stroke2_ = 0;  // the second pass's stroke (0: one pass)
   PetscInt pass_ = 0;   // the pass whose dies are in place
   double floor_y_ = 0;  // where the floor of the pass in place is
@@ -334,30 +365,20 @@ private:
   }
   PetscErrorCode PassTools(Model &m, int pass, double floor_y, std::vector<Tool> &tools)
   {
-    return BuildPassDies(m.comm, opt_, pass, squaring_, half_, floor_y, tools, flank_, apex_);
+    return BuildPassDies(m.comm, opt_, pass, squaring_, half_, full_, floor_y, tools, flank_, apex_);
   }
 
-  // The half model's springback: the inner node nearest the x axis (a node on it, in a symmetric case, keeps
-  // y = 0) holds the tube's rigid motion along y; the lowest input number among equals.
+  // The half and full models' springback: one node holds the tube's rigid motion along y (scenes/pins.cpp).
   PetscErrorCode ChoosePin(Model &m)
   {
-    struct {
-      double y;
-      int id;
-    } mine = {kNever, -1}, best;
     PetscFunctionBeginUser;
-    for (PetscInt n : m.mesh.node_sets["inner"]) {
-      const double y = std::abs(m.mesh.x0[2 * n + 1]);
-      const int id = (int)m.mesh.node_orig[n];
-      if (m.mesh.x0[2 * n] > 0 && (y < mine.y || (y == mine.y && id < mine.id))) mine = {y, id};
-    }
-    PetscCallMPI(MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MINLOC, m.comm));
-    pin_ = -1;
+    PetscCall(ChooseSpringbackPin(m, pin_));
     pinned_ = true;
-    for (PetscInt n : m.mesh.node_sets["inner"])
-      if (m.mesh.node_orig[n] == best.id) pin_ = n;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  // The punch load per vertical force of the model on the upper die: the quarter and the half model carry half.
+  double LoadPerModelForce() const { return full_ ? 1.0 : 2.0; }
+  TubePart Part() const { return full_ ? TubePart::Full : half_ ? TubePart::Half : TubePart::Quarter; }
 
   // C/t (METHOD.md sec. 6) and the corner radii. Loading: the largest gap
   // between the flank and the outer surface along the side (SideOnFlank: the

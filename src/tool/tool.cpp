@@ -115,6 +115,28 @@ Tool MirrorY(const Tool &t)
   return m;
 }
 
+Tool MirrorX(const Tool &t)
+{
+  Tool m = t;
+  const auto flip = [](const Vec2 &v) { return Vec2{-v[0], v[1]}; };
+  for (Segment &s : m.segments) {
+    s.a = flip(s.a), s.b = flip(s.b), s.c = flip(s.c), s.n_line = flip(s.n_line);
+    // The angle t maps to pi - t: the range [t0, t1] becomes [pi - t1, pi - t0].
+    const double t0 = s.t0;
+    s.t0 = M_PI - s.t1, s.t1 = M_PI - t0;
+  }
+  m.direction = flip(t.direction);
+  return m;
+}
+
+Tool BothSides(const Tool &t)
+{
+  Tool both = t;
+  const Tool left = MirrorX(t);
+  both.segments.insert(both.segments.end(), left.segments.begin(), left.segments.end());
+  return both;
+}
+
 Outline ToolOutline(const Tool &t)
 {
   Outline o;

@@ -32,9 +32,24 @@ namespace tf {
 constexpr double kAxisTol = 1e-12;
 
 struct Prescribed {
-  PetscInt node; // local node
-  int comp;      // 0 = x (or l), 1 = y (or n) in the node's frame
-  double value;  // displacement increment
+  PetscInt node;     // local node
+  int comp;          // 0 = x (or l), 1 = y (or n) in the node's frame
+  double value;      // displacement increment
+  double unit = 0.0; // added to value per unit of the system's extra unknown (ExtraUnknown)
+};
+
+// One unknown beyond the dofs: the motion s of a force-controlled tool (docs/theory.md, "Force-controlled
+// tools"). Its nodes' prescribed values grow by their `unit` per unit of s; a condition on the reactions fixes
+// s. The system solves with the values given (s as the caller guessed it) and with a unit motion alone, on one
+// factorization, and takes the combination that meets the condition.
+class ExtraUnknown {
+public:
+  virtual ~ExtraUnknown() = default;
+  // Collective: what the condition still misses for the reactions in System::reactions_local() (an affine
+  // function of them, e.g. the target force less the tool's force; 0 when met).
+  virtual PetscErrorCode Missing(double &missing) = 0;
+  // The solution taken moves the unknown by ds beyond the guess its prescribed values were made with.
+  virtual void Moved(double ds) = 0;
 };
 
 class System {
@@ -85,7 +100,12 @@ public:
   // coeff x (row n, with its load): the unsymmetric friction correction row
   // (METHOD.md sec. 3). Rows l and n of a node share their pattern.
   void AddRowCoupling(PetscInt node, double coeff) { couplings_.push_back({node, 0, coeff}); }
-  void Prescribe(PetscInt node, int comp, double value) { prescribed_.push_back({node, comp, value}); }
+  void Prescribe(PetscInt node, int comp, double value, double unit = 0.0)
+  {
+    prescribed_.push_back({node, comp, value, unit});
+  }
+  // The extra unknown of this assembly (every rank alike; nullptr: none). Begin clears it.
+  void SetExtraUnknown(ExtraUnknown *extra) { extra_ = extra; }
   // Prescribes the displacement along the global unit direction (dx, dy); with
   // a frame, that direction must be one of the frame's axes. False otherwise.
   bool PrescribeAlong(PetscInt node, double dx, double dy, double value);
@@ -96,7 +116,7 @@ public:
   // Equilibrium iterations: the next Solve starts from the iterate du_i
   // (local, global frame; nullptr: none), whose body forces the caller has put
   // into the loads as f_ext - f_int(du_i). The Solve then reports the iterate's
-  // largest out-of-balance force on the free dofs (iterate_residual) and, when
+  // largest out-of-balance force on the free dofs, or the extra unknown's miss if larger (iterate_residual), and, when
   // it is at most `accept_below`, takes du_i as the solution without factoring
   // (accepted()); above `reject_above` it neither factors nor solves (the
   // caller backtracks: a line search); else it solves for the correction of du_i.
@@ -168,6 +188,20 @@ private:
   double accept_below_ = 0, reject_above_ = 0, iterate_residual_ = 0;
   bool solved_ = true, accepted_ = false;
   Vec x_ = nullptr, work_ = nullptr, work_local_ = nullptr; // the iterate in node frames; scratch
+  ExtraUnknown *extra_ = nullptr;
+  Vec unit_ = nullptr,
+      unit_sol_ = nullptr; // the extra unknown's unit motion: prescribed values, K times them; solution
+
+  // Reactions of a solution (node frames) at the prescribed rows: K(rows, :) sol - b_rows, into `reactions`
+  // (prescribed() order) and reactions_local().
+  PetscErrorCode Reactions(Vec sol, const std::vector<PetscInt> &rows, const std::vector<PetscScalar> &b_rows,
+                           std::vector<double> &reactions);
+  // The extra unknown (assembly/extra_unknown.cpp): its unit motion's prescribed values and their loads K u_1
+  // (after the couplings, before the prescribed rows are zeroed); after the factorization, the unit solution
+  // and the combination of the two that meets the condition.
+  PetscErrorCode PrepareUnitMotion(bool &any);
+  PetscErrorCode CombineUnitMotion(const std::vector<PetscInt> &rows, const std::vector<PetscScalar> &b_rows,
+                                   std::vector<double> &reactions);
 
   void Rotate(PetscInt node, double &a, double &b, bool to_local) const;
   // A local vector (global frame) into a global one in the node frames (ADD: summed contributions; INSERT: values).

@@ -14,6 +14,12 @@
 // permanent out-of-balance force (the method never corrects equilibrium), and
 // its work would leak out of the energy balance increment after increment.
 // The driver holds the set; scenes read its forces for their measurements.
+//
+// A force-controlled tool (Tool::pad, a pad or holder) moves by an unknown
+// stroke increment s chosen in every solve so that its force along its
+// direction meets the scene's target (System's extra unknown). Its contact
+// nodes follow it as any tool's do, and its events (r4, r5, r6) are those of
+// the motion s of the solution.
 #pragma once
 
 #include <petscvec.h>
@@ -81,7 +87,7 @@ struct ContactSpec {
   ContactParams params;
 };
 
-class ContactSet {
+class ContactSet : public ExtraUnknown {
 public:
   // `x`: the body's current coordinates (2 per local node), read at each call.
   void Setup(Mesh &mesh, System &system, const std::vector<double> &x, ContactSpec spec);
@@ -98,19 +104,48 @@ public:
     for (size_t k = 0; k < tools.size() && k < tools_.size(); ++k) tools[k].stroke = tools_[k].stroke;
     tools_ = std::move(tools);
   }
+  // The stroke of the tools that follow the scene's (a force-controlled one keeps its own).
   void SetStroke(double stroke)
   {
-    for (Tool &t : tools_) t.stroke = stroke;
+    for (Tool &t : tools_)
+      if (!t.pad) t.stroke = stroke;
   }
+  bool has_pad() const
+  {
+    for (const Tool &t : tools_)
+      if (t.pad) return true;
+    return false;
+  }
+  // The force-controlled tool's force along its direction at the end of a step, from the scene's target at its
+  // start and end (the model's units, N/mm): the step adds the target's increment to the force the tool had,
+  // and makes up the share `share` (the step's fraction of a full trial step) of what that force missed then.
+  // A miss left by the equilibrium tolerance is made up over a full step: at a plateau of the load (a slope
+  // near 0) it takes a long motion, which a step shortened to an event must not carry whole (it would land on
+  // the event again, however short). Taken by the next Constrain.
+  void SetPadTarget(double start, double end, double share)
+  {
+    pad_target_ = pad_start_ + (end - start) + share * (start - pad_start_);
+  }
+  // ExtraUnknown (collective): the target less the force of the force-controlled tool on the body along its
+  // direction, for the reactions in the system (friction and the turning of forces on arcs at the latest
+  // iterate); the motion found.
+  PetscErrorCode Missing(double &missing) override;
+  // Collective: the force the force-controlled tools put on the body along their directions (committed state).
+  PetscErrorCode PadForce(double &force) const;
+  void Moved(double ds) override { pad_step_ += ds; }
+  // The force-controlled tool's stroke increment in the latest solution: an iterate's own, which the caller
+  // keeps beside the iterate's displacements (a line search halving back moves it with them).
+  double pad_step() const { return pad_step_; }
+  void set_pad_step(double step) { pad_step_ = step; }
 
-  // Frames of the contact nodes on the current geometry (before assembly).
+  // Frames of the contact nodes on the current geometry (before assembly); the force-controlled tool's force.
   PetscErrorCode BeginIncrement();
   // New trial of a tool step: the committed active set, a new friction iteration sequence.
   void ResetIterates();
   // Friction iterate back to the increment's start (slip 0, committed f_n), no
   // predictor; the trial's releases stand.
   void LinearizeAtStart();
-  // Prescribed normal motion (tool step dU, closing any gap) and friction rows.
+  // Prescribed normal motion (tool step dU, or the force-controlled tool's, closing any gap) and friction rows.
   PetscErrorCode Constrain(double dU);
   // After a solve: new slip iterates; converged when the friction forces changed
   // by less than tol (relative to mu f_n) on every rank.
@@ -202,6 +237,9 @@ private:
   std::vector<char> released_, frozen_; // within the current step
   double f_small_ = 0;                  // contact forces below this count as zero
   double slid_off_ = 0;                 // largest normal force left by a slide off the tool's end (next report)
+  double pad_step_ = 0;                 // the force-controlled tool's stroke increment in the latest solution
+  double pad_target_ = 0;               // its force along its direction at the end of the step (SetPadTarget)
+  double pad_start_ = 0;                // and at the start of the increment (BeginIncrement)
   std::vector<Vec2> n_, l_;
   // Force (global frame) a released owned node still puts on the body, unloaded by the next steps.
   std::vector<Vec2> pending_;
@@ -229,6 +267,14 @@ private:
   Projection ProjectNearest(const Vec2 &x, int &k) const;
   // The motion per unit stroke of the tool a node touches (or was released from).
   const Vec2 &Direction(PetscInt node) const { return tools_[tool_of_[node]].direction; }
+  // Tool k's stroke increment in a step of the scene's stroke dU (a force-controlled tool: its own).
+  double Step(int k, double dU) const { return tools_[k].pad ? pad_step_ : dU; }
+  // The motion of the tool a node touches in that step.
+  Vec2 Motion(PetscInt node, double dU) const
+  {
+    const double s = Step(tool_of_[node], dU);
+    return {s * Direction(node)[0], s * Direction(node)[1]};
+  }
   Vec2 Increment(const PetscScalar *d, PetscInt node) const;
   double NormalReaction(PetscInt node, const PetscScalar *react) const;
   // The normal force increment of a solution with normal reaction reaction_n

@@ -105,6 +105,14 @@ private:
   double reject_above_ = PETSC_MAX_REAL; // an iterate out of balance by more is backtracked
   double q_iter_ = 0;
   bool have_iter_ = false;
+  double dl_trial_ = 0; // the increment's trial step (a force-controlled tool's catch-up is shared by it)
+  // A force-controlled tool's stroke increment of iter_ and prev_ (ContactSet::pad_step).
+  double pad_iter_ = 0, pad_prev_ = 0;
+  double PadStep() const { return ContactActive() ? m_.contact->pad_step() : 0.0; }
+  void SetPadStep(double step)
+  {
+    if (ContactActive()) m_.contact->set_pad_step(step);
+  }
 
   bool Equilibrium() const { return opt_.equilibrium_tol > 0; }
   bool ContactActive() const { return m_.contact && m_.contact->active(); }

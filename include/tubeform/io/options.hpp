@@ -73,7 +73,8 @@ struct Options {
   double die_angle = 90;            // degrees between the V-die's flanks
   std::string lower_die = "mirror"; // mirror, flat or a profile file drawn as an upper die
   std::string lower_die_motion = "mirror"; // mirror (up by the stroke) or fixed
-  std::string model = "auto";              // quarter, half, or auto: the quarter where it is exact
+  std::string model = "auto";              // quarter, half, full, or auto: the quarter where it is exact
+  double die_force = 0; // > 0: the upper die is force-controlled, its punch load rising to this (N/mm)
   // A second pass after the springback: its stroke (0: none), its dies ("": the first pass's).
   double pass2_stroke = 0;
   std::string pass2_die_profile, pass2_lower_die;

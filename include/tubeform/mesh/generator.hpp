@@ -14,6 +14,10 @@ SerialMesh GenerateQuarterAnnulus(double ro, double t, int nt, int ntheta);
 // the x axis (2 ntheta elements around, from -90 to 90 degrees); sets inner,
 // outer, and x0 (both ends, on x = 0).
 SerialMesh GenerateHalfAnnulus(double ro, double t, int nt, int ntheta);
+// The whole annulus: the half's nodes and their mirror images left of the y
+// axis (4 ntheta elements around, from -90 degrees counter-clockwise); sets
+// inner and outer only.
+SerialMesh GenerateFullAnnulus(double ro, double t, int nt, int ntheta);
 
 // A rectangle [0, lx] x [0, ly] of nx x ny cells with sets
 // "left", "right", "bottom", "top" (used by block scenes and tests).

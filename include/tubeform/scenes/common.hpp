@@ -18,17 +18,34 @@ PetscErrorCode AddEdgePressure(Model &m, const std::string &set, double pressure
                                double stiffness_p = 0);
 // u_x = 0 on x = 0, u_y = 0 on y = 0, in each node's frame.
 PetscErrorCode QuarterSymmetry(Model &m);
-// C1 = x_max, C2 = y_max of the outer surface (with `half`, the half model's: half its height) and their ratio.
-PetscErrorCode OuterExtents(Model &m, HistoryRow &row, bool half = false);
+// The part of the tube a tool scene models: the quarter x, y >= 0, the half x >= 0, or the whole tube.
+enum class TubePart { Quarter, Half, Full };
+// C1 = x_max, C2 = y_max of the outer surface (the half model's C2 half its height, the full model's C1 half
+// its width) and their ratio.
+PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part = TubePart::Quarter);
 // Collective: the outer-surface nodes of the whole mesh on every rank, along the surface by angle (contact
 // state, and the segment of the upper die, tool 0, a node touches). With `upper`, only the nodes that started
-// on or above the x axis (the half model's upper quarter, on which the shape metrics are measured as in the
-// quarter model).
+// in the quarter x, y >= 0 (the half and full models' upper right quarter, on which the shape metrics are
+// measured as in the quarter model).
 PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper = false);
 // Collective: the lowest y of the outer surface (where a floor goes under the tube).
 PetscErrorCode LowestOuterY(Model &m, double &y);
-// The tube mesh of the options: structured (the quarter, or with `half` the half x >= 0) or -mesh_file.
-std::string TubeMesh(const Options &opt, SerialMesh &mesh, bool half = false);
+
+// The half and full models' supports where no die holds the tube (scenes/pins.cpp).
+// Collective: the springback's pin (the tube's rigid motion along y): the local index of the inner node
+// nearest the x axis right of the y axis (a node on it keeps y = 0 in a symmetric case; the lowest input number
+// among equals), or -1 where another rank has it.
+PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin);
+// A mesh node this close to the y axis (relative to its height) is on it.
+constexpr double kAxisPin = 1e-9;
+// Collective: the full model's pins, node set "axis": the outer nodes on the y axis at the tube's top and at
+// its bottom, whose x held holds the tube's rotation and its motion along x (exactly, in a press symmetric
+// about the y axis: their x stays 0); an error on every rank if the mesh has none there.
+PetscErrorCode MarkAxisPins(Model &m);
+// Their x held (u_x = 0 in their node frames).
+PetscErrorCode HoldAxisPins(Model &m);
+// The tube mesh of the options: structured (the part asked) or -mesh_file.
+std::string TubeMesh(const Options &opt, SerialMesh &mesh, TubePart part = TubePart::Quarter);
 // The history's stage: 0 up to lambda = 1, 1 up to 2 (unloading, or a scene's second stage), and so on.
 inline double StageOf(double lambda)
 {

@@ -22,8 +22,10 @@ PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die);
 // tube squared on it widens by less than half its radius.
 constexpr double kFloorOverhang = 0.1, kFloorReach = 0.6;
 // Collective: the lower die of -lower_die (the upper die's mirror, a flat floor at y = floor_y, or a profile
-// file drawn as an upper die and mirrored below the tube) with its motion of -lower_die_motion.
-PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &upper, double floor_y, Tool &lower);
+// file drawn as an upper die and mirrored below the tube) with its motion of -lower_die_motion; `full`: both
+// sides of the y axis (the full model).
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &upper, double floor_y, bool full,
+                             Tool &lower);
 
 // The flattening scene's plate reaches past the ring on both sides (fractions of Ro): a crushed ring widens by
 // much less than half its radius.
@@ -31,10 +33,11 @@ constexpr double kPlateOverhang = 0.1, kPlateReach = 0.5;
 // The options of a pass (0, 1): the second's dies where -pass2_die_profile, -pass2_lower_die give them.
 Options PassOptions(const Options &opt, int pass);
 // Collective: the dies of a pass: the upper one (the squaring scene's die, or the flattening scene's plate) and,
-// in the half model, the lower one (a floor at floor_y); the second pass's named pass2-<name>. `flank` and
-// `apex`: the upper die's segments the shape metrics use.
-PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, double floor_y,
-                             std::vector<Tool> &tools, int &flank, int &apex);
+// in the half (and full) model, the lower one (a floor at floor_y); in the full model both reaching across the
+// y axis; the second pass's named pass2-<name>. `flank` and `apex`: the upper die's segments the shape metrics
+// use (of its right half).
+PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, bool full,
+                             double floor_y, std::vector<Tool> &tools, int &flank, int &apex);
 
 // Collective: refuses a stroke the dies of options `o` cannot take, naming `option`: past the parting faces,
 // past the point where the cavity between two V-dies is smaller than the tube's cross-section (plane strain

@@ -61,6 +61,8 @@ public:
   virtual PetscErrorCode Initialize(Model &m, ContactSpec &tools) { return 0; }
   // Tool stroke at lambda (the tools move rigidly by it along their direction).
   virtual double ToolStroke(double lambda) const { return 0; }
+  // The force a force-controlled tool (Tool::pad) puts on the model along its direction at lambda (N/mm).
+  virtual double ToolForce(double lambda) const { return 0; }
   // Before the first increment that starts at a breakpoint.
   virtual PetscErrorCode BeginStage(Model &m, double lambda) { return 0; }
   // Whether the stage at lambda unloads (its trial steps are -unload_increments'): all past lambda = 1 by default.

@@ -44,6 +44,7 @@ public:
   std::vector<Segment> segments; // in the tool's frame at stroke 0
   Vec2 direction{0, -1};         // motion per unit stroke
   double stroke = 0;             // current stroke
+  bool pad = false;              // force-controlled: its stroke is an unknown of each increment (ContactSet)
 
   Vec2 Offset() const { return {stroke * direction[0], stroke * direction[1]}; }
   // Closest point of the surface at the current stroke. Points whose
@@ -91,6 +92,11 @@ Tool BuildFlatPlate(double y0, double x0, double x1, bool floor = false);
 
 // The mirror image of a tool about the x axis (y -> -y): its segments, the body's side and its motion.
 Tool MirrorY(const Tool &t);
+// The mirror image of a tool about the y axis (x -> -x).
+Tool MirrorX(const Tool &t);
+// A tool drawn right of the y axis with its mirror image left of it (the right half's segments first, so their
+// indices stay): the whole tool a full model presses with.
+Tool BothSides(const Tool &t);
 
 // The paper's stroke rule: the stroke at which a rounded rhombus (a square at
 // 90 degrees) of corner radius rc, its sides on the closed dies' flanks, has

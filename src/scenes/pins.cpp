@@ -1,0 +1,63 @@
+// How the half and full models are held where no die holds them
+// (scenes/common.hpp): the springback's pin along y, and the full model's
+// pins along x on the y axis.
+#include <cmath>
+
+#include "tubeform/scenes/common.hpp"
+
+namespace tf {
+
+PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin)
+{
+  struct {
+    double y;
+    int id;
+  } mine = {kNever, -1}, best;
+  PetscFunctionBeginUser;
+  for (PetscInt n : m.mesh.node_sets["inner"]) {
+    const double y = std::abs(m.mesh.x0[2 * n + 1]);
+    const int id = (int)m.mesh.node_orig[n];
+    if (m.mesh.x0[2 * n] > 0 && (y < mine.y || (y == mine.y && id < mine.id))) mine = {y, id};
+  }
+  PetscCallMPI(MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MINLOC, m.comm));
+  pin = -1;
+  for (PetscInt n : m.mesh.node_sets["inner"])
+    if (m.mesh.node_orig[n] == best.id) pin = n;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode MarkAxisPins(Model &m)
+{
+  struct {
+    double y;
+    int id;
+  } mine[2] = {{-kNever, -1}, {-kNever, -1}}, best[2];
+  PetscFunctionBeginUser;
+  // The outer nodes nearest the y axis at its top and at its bottom (the largest |y| among those on it).
+  for (PetscInt n : m.mesh.node_sets["outer"]) {
+    const double x = m.mesh.x0[2 * n], y = m.mesh.x0[2 * n + 1];
+    const int side = y > 0 ? 0 : 1, id = (int)m.mesh.node_orig[n];
+    const double score = std::abs(y) - kNever * (std::abs(x) > kAxisPin * std::abs(y));
+    if (score > mine[side].y || (score == mine[side].y && id < mine[side].id)) mine[side] = {score, id};
+  }
+  PetscCallMPI(MPI_Allreduce(mine, best, 2, MPI_DOUBLE_INT, MPI_MAXLOC, m.comm));
+  PetscCheck(best[0].y > 0 && best[1].y > 0, m.comm, PETSC_ERR_USER_INPUT,
+             "the full model needs an outer node on the y axis at the tube's top and at its bottom (the mesh has "
+             "none there)");
+  auto &axis = m.mesh.node_sets["axis"];
+  axis.clear();
+  for (PetscInt n : m.mesh.node_sets["outer"])
+    if (m.mesh.node_orig[n] == best[0].id || m.mesh.node_orig[n] == best[1].id) axis.push_back(n);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode HoldAxisPins(Model &m)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt n : m.mesh.node_sets["axis"])
+    PetscCheck(m.system.PrescribeAlong(n, 1, 0, 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "the full model's pin is not along a node frame axis");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

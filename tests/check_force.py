@@ -1,0 +1,124 @@
+"""A force-controlled die (-die_force; issue 23, items 2 and 7): its stroke an unknown of every increment.
+
+Force control and stroke control press the same model along the same quasi-static path while the tube's
+resistance rises, so the load-stroke curve of a run driven by its force is checked against a run driven by
+its stroke (an independent control of the model: a different unknown, other increments):
+
+A. The ring between plates (options/flattening.opts, fast preset): the stroke run to U = 0.6 mm gives the force
+   P; the force run to P follows the stroke run's load along its stroke within 1e-2 of P (the two take
+   different increments; measured 7e-4 with U = 0.6, 3e-5 with U = 0.4, where the ring is still elastic) and
+   ends at P within 1e-3 (the equilibrium iterations accept a state whose force misses by at most
+   -equilibrium_tol x the mean nodal force: measured 4e-8). The same with the paper's method (no equilibrium
+   iterations, r1 at the yield onset: a step cut by r_min is the trial scaled, the die's motion with it):
+   within 1e-2 of P along the stroke, and at P within 1e-9 at the end (each linear step meets its force to
+   round-off). In each run no node ends inside the die (its stroke is where the body's contact nodes are) and
+   the energy balance from the reported load and stroke holds within tests/check_squaring.py's 5e-3 (a die
+   whose stroke ran ahead of the scaled step: 1.0e-2 mm inside, 3.3e-2 energy). A checkpoint inside the force press, continued with
+   -restart: the history of the run never stopped within 1e-12 of each column's largest value
+   (tests/check_restart.py's bound).
+B. The paper's tube in the V-dies with friction mu = 0.2 (options/squaring.opts, fast preset), then the paper's
+   springback: the die's force along its travel includes the flanks' friction, so a controlled force that left
+   the friction out would end on another curve. The stroke run to U = 1 mm gives P; the force run follows its
+   load along the stroke within 1e-2 of P (measured 3.5e-3) and springs back (stage 1, the die removed).
+C. Equilibrium with the controlled force (the half ring between a force-controlled plate and a fixed floor,
+   -equilibrium_tol 1e-6): the reported punch load ends at P within 1e-6, and at every increment of the press
+   the floor's vertical force, the reactions of other nodes through the tube, balances the plate's within 1e-6
+   of the punch force (measured 1e-11: the balance is met to the equilibrium tolerance, and each tool's force
+   is the sum of its nodes' reactions). 1 vs 2 ranks within tests/check_squaring.py's 1.3e-8.
+D. A force above the tube's resistance where its load-stroke curve has a maximum (the paper's tube, 200 N/mm:
+   the stroke run's load dips at U = 1.95 mm as the contact moves from node to node): the run stops with a
+   one-line error naming force control, exit 1, its results up to there written, every load below 200.
+"""
+import h5py
+import numpy as np
+
+from tfcheck import Checks, args, out, run
+
+tf, mpirun, src = args()
+k = Checks("force")
+
+
+def press(scene, name, extra, n=1, check=True):
+    opts = ["-options_file", f"{src}/options/{scene}.opts", "-options_file", f"{src}/options/preset-fast.opts",
+            "-error_estimate", 0, "-progress", 0, "-output", out(name)]
+    p = run(tf, mpirun, n, opts + extra, check=check, timeout=600)
+    with h5py.File(out(name), "r") as h:
+        r = {c: h["/history"][c][:] for c in h["/history"]}
+    return r, p
+
+
+def follows(ref, h, P, bound, label):
+    """h's load along its stroke against ref's (the stroke run), in units of P; h ends at P."""
+    s = h["stage"] == 0
+    dev = np.abs(h["load"][s] - np.interp(h["stroke"][s], ref["stroke"], ref["load"])).max() / P
+    k.check(dev < bound, f"{label}: the load along the stroke against the stroke run's within {dev:.1e} of P "
+            f"({bound:g}; P = {P:.4g} N/mm reached at U = {h['stroke'][s][-1]:.4f} mm, the stroke run's at "
+            f"{ref['stroke'][-1]:.4f})")
+    # The die where its stroke says (the body's nodes on it, none inside it: 1e-6 mm, ten times the contact
+    # set's gap tolerance, which the stroke runs meet within 3e-9), and the work it did from the
+    # reported load along that stroke against internal work (tests/check_squaring.py's (a): 5e-3).
+    pen, energy = np.abs(h["penetration"]).max(), np.abs(h["energy_error"]).max()
+    k.check(pen < 1e-6 and energy < 5e-3, f"{label}: no node inside the die ({pen:.1e} mm; 1e-6), the energy "
+            f"balance from the reported load and stroke within {energy:.1e} (5e-3)")
+    return abs(h["load"][s][-1] / P - 1)
+
+
+# A. The ring between plates.
+ref, _ = press("flattening", "force_ring_u.h5", ["-stroke", 0.6])
+P = ref["load"][-1]
+ring, _ = press("flattening", "force_ring_f.h5", ["-die_force", P])
+end = follows(ref, ring, P, 1e-2, "ring, force-controlled plate")
+k.check(end < 1e-3, f"ring: the press ends at the force asked within {end:.1e} (1e-3)")
+# The paper's method (no equilibrium iterations, r1 at the yield onset): a step cut by r_min is the trial's
+# solution scaled, the die's motion with it.
+PAPER = ["-equilibrium_tol", 0, "-rmin_yield", "onset"]
+ref0, _ = press("flattening", "force_ring_u0.h5", PAPER + ["-stroke", 0.6])
+ring0, _ = press("flattening", "force_ring_f0.h5", PAPER + ["-die_force", ref0["load"][-1]])
+end = follows(ref0, ring0, ref0["load"][-1], 1e-2, "ring, the paper's method (steps scaled by r_min)")
+k.check(end < 1e-9, f"ring, the paper's method: the press ends at the force asked within {end:.1e} (1e-9: each "
+        f"step meets its force exactly)")
+ck = out("force_ring_ck.h5")
+every = len(ring["load"]) // 2
+press("flattening", "force_ring_part.h5", ["-die_force", P, "-checkpoint", ck, "-checkpoint_every", every])
+part, _ = press("flattening", "force_ring_part.h5", ["-die_force", P, "-restart", ck])
+same = all(part[c].shape == ring[c].shape for c in ring)
+worst = max(np.abs(part[c] - ring[c]).max() / max(np.abs(ring[c]).max(), 1e-300) for c in ring) if same else 1
+k.check(same and worst <= 1e-12,
+        f"ring: continued from a checkpoint at increment {every} of the force press: the history within {worst:.1e} "
+        f"(1e-12)")
+
+# B. The V-dies with friction, then the springback.
+FRICTION = ["-friction_mu", 0.2]
+ref, _ = press("squaring", "force_sq_u.h5", FRICTION + ["-stroke", 1.0, "-unload", "none"])
+P = ref["load"][-1]
+sq, _ = press("squaring", "force_sq_f.h5", FRICTION + ["-die_force", P])
+follows(ref, sq, P, 1e-2, "V-dies, mu 0.2, force-controlled die")
+k.check(1 in set(sq["stage"].astype(int)) and sq["load"][-1] == 0,
+        "V-dies, force-controlled: the springback follows (stage 1, the die's load released)")
+
+# C. Equilibrium: the half ring between a force-controlled plate and a fixed floor.
+ref, _ = press("flattening", "force_ring_u.h5", ["-stroke", 0.6])
+P = ref["load"][-1]
+HALF = ["-model", "half", "-lower_die_motion", "fixed", "-equilibrium_tol", 1e-6, "-die_force", P]
+halves = {n: press("flattening", f"force_half_np{n}.h5", HALF, n)[0] for n in (1, 2)}
+h = halves[1]
+s = h["stage"] == 0
+end = abs(h["load"][s][-1] / P - 1)
+balance = (np.abs(h["tool_fy"][s] + h["lower_fy"][s]) / P).max()
+k.check(end < 1e-6 and balance < 1e-6 and np.abs(h["lower_fy"][s]).max() > 0.4 * P,
+        f"half ring over a floor: the plate's load ends at P within {end:.1e} (1e-6), the floor's force balances "
+        f"it within {balance:.1e} of P at every increment (1e-6)")
+a, b = halves[1], halves[2]
+worst = max(np.abs(a[c] - b[c]).max() / np.abs(a[c]).max() for c in ("load", "stroke", "x_max", "y_max")) \
+    if a["load"].shape == b["load"].shape else 1.0
+k.check(worst < 1.3e-8, f"half ring over a floor, 1 vs 2 ranks: every row within {worst:.1e} (1.3e-8)")
+
+# D. Past a maximum of the load.
+lim, p = press("squaring", "force_limit.h5", ["-die_force", 200, "-unload", "none"], check=False)
+lines = [line for line in (p.stdout + p.stderr).splitlines() if "error" in line]
+k.check(p.returncode == 1 and len(lines) == 1 and "force control cannot pass it" in lines[0]
+        and len(lim["load"]) > 10 and lim["load"].max() < 200,
+        f"a force above the load's maximum: exit {p.returncode}, one line ({lines[0][:60] if lines else ''}...), "
+        f"{len(lim['load'])} rows written up to U = {lim['stroke'][-1]:.3f} mm, the largest load "
+        f"{lim['load'].max():.1f} N/mm")
+k.done()
