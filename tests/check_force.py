@@ -7,8 +7,8 @@ its stroke (an independent control of the model: a different unknown, other incr
 A. The ring between plates (options/flattening.opts, fast preset): the stroke run to U = 0.6 mm gives the force
    P; the force run to P follows the stroke run's load along its stroke within 1e-2 of P (the two take
    different increments; measured 7e-4 with U = 0.6, 3e-5 with U = 0.4, where the ring is still elastic) and
-   ends at P within 1e-3 (the equilibrium iterations accept a state whose force misses by at most
-   -equilibrium_tol x the mean nodal force: measured 4e-8). The same with the paper's method (no equilibrium
+   ends at P within -equilibrium_tol x the mean nodal force (what the equilibrium iterations accept: 6.3e-3 of
+   P here; measured 4e-8). The same with the paper's method (no equilibrium
    iterations, r1 at the yield onset: a step cut by r_min is the trial scaled, the die's motion with it):
    within 1e-2 of P along the stroke, and at P within 1e-9 at the end (each linear step meets its force to
    round-off). In each run no node ends inside the die (its stroke is where the body's contact nodes are) and
@@ -23,7 +23,7 @@ B. The paper's tube in the V-dies with friction mu = 0.2 (options/squaring.opts,
 C. Equilibrium with the controlled force (the half ring between a force-controlled plate and a fixed floor,
    -equilibrium_tol 1e-6): the reported punch load ends at P within 1e-6, and at every increment of the press
    the floor's vertical force, the reactions of other nodes through the tube, balances the plate's within 1e-6
-   of the punch force (measured 1e-11: the balance is met to the equilibrium tolerance, and each tool's force
+   of the punch force (measured 2e-12: the balance is met to the equilibrium tolerance, and each tool's force
    is the sum of its nodes' reactions). 1 vs 2 ranks within tests/check_squaring.py's 1.3e-8.
 D. A force above the tube's resistance where its load-stroke curve has a maximum (the paper's tube, 200 N/mm:
    the stroke run's load dips at U = 1.95 mm as the contact moves from node to node): the run stops with a
@@ -68,7 +68,11 @@ ref, _ = press("flattening", "force_ring_u.h5", ["-stroke", 0.6])
 P = ref["load"][-1]
 ring, _ = press("flattening", "force_ring_f.h5", ["-die_force", P])
 end = follows(ref, ring, P, 1e-2, "ring, force-controlled plate")
-k.check(end < 1e-3, f"ring: the press ends at the force asked within {end:.1e} (1e-3)")
+# The equilibrium iterations accept a state whose force misses by at most -equilibrium_tol (the fast preset's
+# 5e-3) x the mean nodal force q_avg, of the model's force (half the punch load).
+accept = 2 * 5e-3 * ring["q_avg"][ring["stage"] == 0][-1] / P
+k.check(end <= accept, f"ring: the press ends at the force asked within {end:.1e} of it ({accept:.1e}: "
+        f"-equilibrium_tol x q_avg)")
 # The paper's method (no equilibrium iterations, r1 at the yield onset): a step cut by r_min is the trial's
 # solution scaled, the die's motion with it.
 PAPER = ["-equilibrium_tol", 0, "-rmin_yield", "onset"]
@@ -78,14 +82,16 @@ end = follows(ref0, ring0, ref0["load"][-1], 1e-2, "ring, the paper's method (st
 k.check(end < 1e-9, f"ring, the paper's method: the press ends at the force asked within {end:.1e} (1e-9: each "
         f"step meets its force exactly)")
 ck = out("force_ring_ck.h5")
-every = len(ring["load"]) // 2
+every = 2 * len(ring["load"]) // 3  # (not a divisor of the increments: the last checkpoint is inside the press)
 press("flattening", "force_ring_part.h5", ["-die_force", P, "-checkpoint", ck, "-checkpoint_every", every])
+with h5py.File(ck, "r") as c:
+    lam = c["/run/lambda"][0]
 part, _ = press("flattening", "force_ring_part.h5", ["-die_force", P, "-restart", ck])
 same = all(part[c].shape == ring[c].shape for c in ring)
 worst = max(np.abs(part[c] - ring[c]).max() / max(np.abs(ring[c]).max(), 1e-300) for c in ring) if same else 1
-k.check(same and worst <= 1e-12,
-        f"ring: continued from a checkpoint at increment {every} of the force press: the history within {worst:.1e} "
-        f"(1e-12)")
+k.check(same and worst <= 1e-12 and 0 < lam < 1,
+        f"ring: continued from a checkpoint inside the force press (lambda {lam:.3f}): the history within "
+        f"{worst:.1e} (1e-12)")
 
 # B. The V-dies with friction, then the springback.
 FRICTION = ["-friction_mu", 0.2]

@@ -6,13 +6,15 @@
 // and m_1 (for u_0 + u_1) give s = m_0 / (m_0 - m_1).
 #include <cmath>
 
+#include <string>
+
+#include "tubeform/assembly/solve_failure.hpp"
 #include "tubeform/assembly/system.hpp"
 
 namespace tf {
 
 PetscErrorCode System::PrepareUnitMotion(bool &any)
 {
-  PetscInt lo;
   PetscFunctionBeginUser;
   any = extra_ != nullptr; // (set alike on every rank)
   if (!any) PetscFunctionReturn(PETSC_SUCCESS);
@@ -23,7 +25,6 @@ PetscErrorCode System::PrepareUnitMotion(bool &any)
   // u_1 on the prescribed rows, then K u_1 with the friction rows coupled and before any row is zeroed: the
   // loads of the unit motion are -K u_1 on the free rows.
   PetscCall(VecZeroEntries(unit_));
-  PetscCall(VecGetOwnershipRange(unit_, &lo, nullptr));
   for (const auto &p : prescribed_) {
     if (!mesh_->node_owned[p.node] || p.unit == 0) continue;
     PetscInt local = mesh_->node_dof[p.node] + p.comp, global;
@@ -43,6 +44,8 @@ PetscErrorCode System::CombineUnitMotion(const std::vector<PetscInt> &rows, cons
   double missing[2];
   PetscFunctionBeginUser;
   // The unit motion's right-hand side: -K u_1 on the free rows, u_1 on every prescribed one (0 but the tool's).
+  // (Friction rows: their loads on l follow the tool's motion along l too; the friction iterations settle that
+  // part, as they settle the friction force in the tool's force: ContactSet::Missing.)
   PetscCall(VecAXPBY(work_, -1.0, 0.0, unit_sol_));
   size_t k = 0;
   for (const auto &p : prescribed_)
@@ -51,6 +54,14 @@ PetscErrorCode System::CombineUnitMotion(const std::vector<PetscInt> &rows, cons
   PetscCall(VecAssemblyBegin(work_));
   PetscCall(VecAssemblyEnd(work_));
   PetscCall(KSPSolve(ksp_, work_, unit_sol_));
+  KSPConvergedReason reason;
+  PetscCall(KSPGetConvergedReason(ksp_, &reason));
+  if (reason < 0) {
+    std::string why;
+    PetscCall(DescribeSolveFailure(ksp_, why));
+    SETERRQ(mesh_->comm, PETSC_ERR_NOT_CONVERGED, "%s (KSP, the force-controlled tool's unit motion: %s)", why.c_str(),
+            KSPConvergedReasons[reason]);
+  }
   // The misses of u_0 and u_0 + u_1.
   PetscCall(Reactions(sol_, rows, b_rows, reactions));
   PetscCall(extra_->Missing(missing[0]));

@@ -95,8 +95,8 @@ PetscErrorCode ContactSet::Constrain(double dU)
 {
   PetscFunctionBeginUser;
   if (has_pad()) system_->SetExtraUnknown(this);
-  // Moving tool: the slip per unit stroke of the latest solution; static tool:
-  // the last increment's slip.
+  // Moving tool: the slip per unit stroke of the latest solution; static tool: the last increment's slip
+  // (so too a force-controlled tool's nodes when the scene's stroke stands still: -die_force).
   if (predict_)
     for (PetscInt node : candidates_) dxk_[node] = !contact_[node] ? 0.0 : dU != 0 ? rate_[node] * dU : last_dx_[node];
   predict_ = false;

@@ -89,8 +89,8 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, const Options &opt)
   if (opt.die_force > 0) {
     // Force control drives one die; the stroke is its outcome.
     PetscCheck(QuarterModel(opt) || opt.lower_die_motion == "fixed", comm, PETSC_ERR_USER_INPUT,
-               "-die_force %g: with the half model the lower die must stay (-lower_die_motion fixed); a lower die "
-               "moving by the upper one's unknown stroke is not available",
+               "-die_force %g: with the half or full model the lower die must stay (-lower_die_motion fixed); a "
+               "lower die moving by the upper one's unknown stroke is not available",
                opt.die_force);
     PetscCheck(opt.pass2_stroke == 0, comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: not with a second pass (-pass2_stroke); press one pass by force", opt.die_force);

@@ -87,9 +87,28 @@ PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// A half or full model's mesh reaches at least this share of its extent on one side of an axis on the other.
+constexpr double kHalfCover = 0.9;
+
 std::string TubeMesh(const Options &opt, SerialMesh &mesh, TubePart part)
 {
-  if (!opt.mesh_file.empty()) return ReadGmsh(opt.mesh_file, mesh);
+  if (!opt.mesh_file.empty()) {
+    const std::string error = ReadGmsh(opt.mesh_file, mesh);
+    if (!error.empty() || part == TubePart::Quarter) return error;
+    // The half model's mesh reaches below the x axis as far as above it (a quarter would hang from nothing),
+    // the full model's left of the y axis as far as right of it.
+    double low[2] = {0, 0}, high[2] = {0, 0};
+    for (size_t k = 0; k < mesh.xy.size(); ++k)
+      low[k % 2] = std::min(low[k % 2], mesh.xy[k]), high[k % 2] = std::max(high[k % 2], mesh.xy[k]);
+    if (low[1] >= -kHalfCover * high[1])
+      return "-mesh_file " + opt.mesh_file + ": the " + (part == TubePart::Full ? "full" : "half") +
+             " model (-model, or a lower die that is not the upper one's mirror) needs the tube from -90 to 90 " +
+             "degrees at least; this mesh does not reach below the x axis";
+    if (part == TubePart::Full && low[0] >= -kHalfCover * high[0])
+      return "-mesh_file " + opt.mesh_file + ": -model full needs the whole tube; this mesh does not reach left " +
+             "of the y axis";
+    return "";
+  }
   const int nt = (int)opt.mesh_nt, ntheta = (int)opt.mesh_ntheta;
   mesh = part == TubePart::Full   ? GenerateFullAnnulus(opt.tube_ro, opt.tube_t, nt, ntheta)
          : part == TubePart::Half ? GenerateHalfAnnulus(opt.tube_ro, opt.tube_t, nt, ntheta)

@@ -6,9 +6,6 @@
 
 namespace tf {
 
-// A node of a mesh file this close to the y axis (relative to its height) started on it.
-constexpr double kOnAxis = 1e-9;
-
 // The segment of the upper die a node touches (-1: free, or on the lower die): the shape metrics' apex count.
 static double UpperSegment(const Model &m, PetscInt n)
 {
@@ -25,7 +22,7 @@ PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper)
   const auto &x = m.body.position();
   for (PetscInt n : m.mesh.node_sets["outer"])
     if (m.mesh.node_owned[n] &&
-        (!upper || (m.mesh.x0[2 * n + 1] >= 0 && m.mesh.x0[2 * n] >= -kOnAxis * m.mesh.x0[2 * n + 1])))
+        (!upper || (m.mesh.x0[2 * n + 1] >= 0 && m.mesh.x0[2 * n] >= -kAxisPin * m.mesh.x0[2 * n + 1])))
       mine.insert(mine.end(), {x[2 * n], x[2 * n + 1], m.contact ? double(m.contact->InContact(n)) : 0.0,
                                UpperSegment(m, n), double(m.mesh.node_orig[n])});
   PetscCallMPI(MPI_Comm_size(m.comm, &size));

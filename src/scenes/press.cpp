@@ -15,10 +15,9 @@
 // With -die_force the upper die is force-controlled: its punch load rises
 // from 0 to the force over the press, and its stroke is the outcome.
 // History: stroke = tool stroke U (mm; half the dies' closing; over two passes
-// the sum, the second pass's die at stroke - U1), load = punch
-// load on the full tube, 2 x the model's vertical force on the upper die (N/mm).
-// The punch load is the upper die's in either model: the quarter and the half
-// model carry half of it.
+// the sum, the second pass's die at stroke - U1), load = punch load on the
+// full tube (N/mm), the upper die's vertical force on the model: twice it in
+// the quarter and the half model, which carry half of it.
 #include <algorithm>
 #include <cmath>
 
@@ -48,24 +47,7 @@ public:
     if (half_) return {"inner", "outer", "x0"};
     return {"inner", "outer", "x0", "y0"};
   }
-  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
-  {
-    const std::string error = TubeMesh(opt, mesh, Part());
-    if (!error.empty() || !half_) return error;
-    // The half model's mesh reaches below the x axis as far as above it (a quarter would hang from nothing), the
-    // full model's left of the y axis as far as right of it.
-    double low[2] = {0, 0}, high[2] = {0, 0};
-    for (size_t k = 0; k < mesh.xy.size(); ++k)
-      low[k % 2] = std::min(low[k % 2], mesh.xy[k]), high[k % 2] = std::max(high[k % 2], mesh.xy[k]);
-    if (low[1] >= -kHalfCover * high[1])
-      return "-mesh_file " + opt.mesh_file + ": the half model (-model, or a lower die that is not the upper " +
-             "one's mirror) needs the tube's half x >= 0 from -90 to 90 degrees; this mesh does not reach below " +
-             "the x axis";
-    if (full_ && low[0] >= -kHalfCover * high[0])
-      return "-mesh_file " + opt.mesh_file + ": -model full needs the whole tube; this mesh does not reach left " +
-             "of the y axis";
-    return "";
-  }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh, Part()); }
   std::string MeshLayout(const Options &opt) const override
   {
     return Scene::MeshLayout(opt) + (full_   ? " (the full model: four times that around)"
@@ -206,7 +188,7 @@ public:
       }
       PetscCall(VecRestoreArrayRead(reversed_, &f));
     }
-    PetscCall(QuarterSymmetry(m));
+    if (!full_) PetscCall(QuarterSymmetry(m)); // (a full model's mesh file may carry x0 or y0 sets: not held)
     if (full_) PetscCall(HoldAxisPins(m));
     // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
     // holds the tube's rigid motion along y.
@@ -241,7 +223,7 @@ public:
       moment = (ReleaseEnd() - lambda) * reversed_moment_;
     } else
       PetscCall(m.contact->TotalForce(kUpper, force, &moment));
-    row.load = -LoadPerModelForce() * force[1]; // full tube: both halves push the die up
+    row.load = -LoadPerModelForce() * force[1]; // (the punch load on the whole tube)
     row.tool_fx = -force[0], row.tool_fy = -force[1], row.tool_moment = -moment;
     if (half_ && !unloading_) {
       PetscCall(m.contact->TotalForce(kLower, force, &moment));
@@ -327,8 +309,6 @@ private:
   // VCRI as a fraction of the outer nodes' spacing: a micro-slip far below an
   // element, so that sticking nodes hold (docs/theory.md, "The law").
   static constexpr double kVcriOfSpacing = 0.02;
-  // A half model's mesh reaches at least this share of its height above the x axis below it.
-  static constexpr double kHalfCover = 0.9;
   // Where the load path's releases begin (lambda): each pass takes one unit of it to press and one to release.
   static constexpr double kFirstRelease = 1.0, kSecondPress = 2.0, kSecondRelease = 3.0;
   // The tools' places in the contact set.

@@ -189,8 +189,8 @@ private:
   bool solved_ = true, accepted_ = false;
   Vec x_ = nullptr, work_ = nullptr, work_local_ = nullptr; // the iterate in node frames; scratch
   ExtraUnknown *extra_ = nullptr;
-  Vec unit_ = nullptr,
-      unit_sol_ = nullptr; // the extra unknown's unit motion: prescribed values, K times them; solution
+  // The extra unknown's unit motion: its prescribed values, K times them, then its solution.
+  Vec unit_ = nullptr, unit_sol_ = nullptr;
 
   // Reactions of a solution (node frames) at the prescribed rows: K(rows, :) sol - b_rows, into `reactions`
   // (prescribed() order) and reactions_local().
