@@ -27,7 +27,9 @@ C. Equilibrium with the controlled force (the half ring between a force-controll
    is the sum of its nodes' reactions). 1 vs 2 ranks within tests/check_squaring.py's 1.3e-8.
 D. A force above the tube's resistance where its load-stroke curve has a maximum (the paper's tube, 200 N/mm:
    the stroke run's load dips at U = 1.95 mm as the contact moves from node to node): the run stops with a
-   one-line error naming force control, exit 1, its results up to there written, every load below 200.
+   one-line error naming force control, exit 1, its results up to there written, every load below 200. A force
+   the dies cannot reach (their parting faces meet at U = 1 mm first): the run stops there with one line, its
+   results written (the first increment past the faces: at most 0.1 mm beyond them).
 """
 import h5py
 import numpy as np
@@ -127,4 +129,12 @@ k.check(p.returncode == 1 and len(lines) == 1 and "force control cannot pass it"
         f"a force above the load's maximum: exit {p.returncode}, one line ({lines[0][:60] if lines else ''}...), "
         f"{len(lim['load'])} rows written up to U = {lim['stroke'][-1]:.3f} mm, the largest load "
         f"{lim['load'].max():.1f} N/mm")
+# A force the dies cannot reach: parting faces at U = 1 mm (-die_u_close), below where the tube would carry 200.
+closed, p = press("squaring", "force_closed.h5", ["-die_force", 200, "-die_u_close", 1.0, "-unload", "none"],
+                  check=False)
+lines = [line for line in (p.stdout + p.stderr).splitlines() if "error" in line]
+k.check(p.returncode == 1 and len(lines) == 1 and "where the dies close on the tube or meet" in lines[0]
+        and 1.0 <= closed["stroke"][-1] < 1.1,
+        f"a force the dies cannot reach (parting faces at U = 1 mm): exit {p.returncode}, one line, results written "
+        f"up to U = {closed['stroke'][-1]:.3f} mm")
 k.done()

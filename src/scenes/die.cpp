@@ -114,6 +114,16 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+double DieReach(const Options &o, bool squaring)
+{
+  const double ro = o.tube_ro, ri = ro - o.tube_t;
+  if (squaring && (!o.die_profile.empty() || o.lower_die != "mirror")) return kNever;
+  if (!squaring) return ro - o.tube_t;
+  const VAngle v(o.die_angle);
+  const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
+  return o.die_u_close > 0 ? std::min(closed, o.die_u_close) : closed;
+}
+
 PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, double stroke, const char *option)
 {
   PetscFunctionBeginUser;

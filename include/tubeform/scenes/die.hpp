@@ -45,5 +45,8 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
 // self-contact is modelled). A profile of one's own or another lower die has no closed form of its cavity: a
 // stroke that closes it fails in the run.
 PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, double stroke, const char *option);
+// The first stroke CheckDieReach refuses (the dies closing on the tube, their parting faces meeting, the ring's
+// walls meeting); kNever where there is no closed form (a profile, another lower die).
+double DieReach(const Options &o, bool squaring);
 
 } // namespace tf
