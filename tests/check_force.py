@@ -99,7 +99,8 @@ k.check(same and worst <= 1e-12 and 0 < lam < 1,
 FRICTION = ["-friction_mu", 0.2]
 ref, _ = press("squaring", "force_sq_u.h5", FRICTION + ["-stroke", 1.0, "-unload", "none"])
 P = ref["load"][-1]
-sq, _ = press("squaring", "force_sq_f.h5", FRICTION + ["-die_force", P])
+# (-stroke sets the press's duration at -punch_speed: options/squaring.opts's inertia then matches the stroke run's)
+sq, _ = press("squaring", "force_sq_f.h5", FRICTION + ["-die_force", P, "-stroke", 1.0])
 follows(ref, sq, P, 1e-2, "V-dies, mu 0.2, force-controlled die")
 k.check(1 in set(sq["stage"].astype(int)) and sq["load"][-1] == 0,
         "V-dies, force-controlled: the springback follows (stage 1, the die's load released)")

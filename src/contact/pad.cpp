@@ -12,14 +12,12 @@
 
 namespace tf {
 
-namespace {
-// A tool's unit direction.
-Vec2 Unit(const Vec2 &d)
+double ContactSet::ForceAlong(PetscInt node, double fn, double fl) const
 {
+  const Vec2 &d = Direction(node);
   const double len = std::hypot(d[0], d[1]);
-  return {d[0] / len, d[1] / len};
+  return (fn * (n_[node][0] * d[0] + n_[node][1] * d[1]) + fl * (l_[node][0] * d[0] + l_[node][1] * d[1])) / len;
 }
-} // namespace
 
 PetscErrorCode ContactSet::PadForce(double &force) const
 {
@@ -27,8 +25,8 @@ PetscErrorCode ContactSet::PadForce(double &force) const
   PetscFunctionBeginUser;
   for (PetscInt node : candidates_) {
     if (!contact_[node] || !mesh_->node_owned[node] || !tools_[tool_of_[node]].pad) continue;
-    const Vec2 f = NodeForce(node, true), d = Unit(Direction(node));
-    local += f[0] * d[0] + f[1] * d[1];
+    const double fl = Frictional(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
+    local += ForceAlong(node, fn_[node], fl); // (NodeForce's, along the tool's direction)
   }
   PetscCallMPI(MPI_Allreduce(&local, &force, 1, MPI_DOUBLE, MPI_SUM, comm()));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -41,13 +39,10 @@ PetscErrorCode ContactSet::Missing(double &missing)
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(system_->reactions_local(), &react));
   for (PetscInt node : candidates_) {
-    if (!contact_[node] || !mesh_->node_owned[node]) continue;
-    const Tool &t = tools_[tool_of_[node]];
-    if (!t.pad) continue;
-    const Vec2 d = Unit(t.direction);
+    if (!contact_[node] || !mesh_->node_owned[node] || !tools_[tool_of_[node]].pad) continue;
     const double fn = fn_[node] + NormalIncrement(node, NormalReaction(node, react), dxk_[node]);
     const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fnk_[node], x_[node] + dxk_[node]) : 0.0;
-    local += fn * (n_[node][0] * d[0] + n_[node][1] * d[1]) + fl * (l_[node][0] * d[0] + l_[node][1] * d[1]);
+    local += ForceAlong(node, fn, fl);
   }
   PetscCall(VecRestoreArrayRead(system_->reactions_local(), &react));
   PetscCallMPI(MPI_Allreduce(&local, &force, 1, MPI_DOUBLE, MPI_SUM, comm()));

@@ -56,15 +56,20 @@ PetscErrorCode AddEdgePressure(Model &m, const std::string &set, double pressure
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode HoldAlong(Model &m, const std::string &set, double dx, double dy)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt n : m.mesh.node_sets[set])
+    PetscCheck(m.system.PrescribeAlong(n, dx, dy, 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "the support of node set %s is not along a node frame axis", set.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode QuarterSymmetry(Model &m)
 {
   PetscFunctionBeginUser;
-  for (PetscInt n : m.mesh.node_sets["x0"])
-    PetscCheck(m.system.PrescribeAlong(n, 1, 0, 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
-               "symmetry support not along a node frame axis");
-  for (PetscInt n : m.mesh.node_sets["y0"])
-    PetscCheck(m.system.PrescribeAlong(n, 0, 1, 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
-               "symmetry support not along a node frame axis");
+  PetscCall(HoldAlong(m, "x0", 1, 0));
+  PetscCall(HoldAlong(m, "y0", 0, 1));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -124,6 +124,17 @@ double DieReach(const Options &o, bool squaring)
   return o.die_u_close > 0 ? std::min(closed, o.die_u_close) : closed;
 }
 
+PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, bool squaring, double stroke)
+{
+  PetscFunctionBeginUser;
+  const double reach = DieReach(o, squaring);
+  PetscCheck(stroke < reach, comm, PETSC_ERR_NOT_CONVERGED,
+             "-die_force %g: the die has come down to U = %.4g mm, where %s (U = %.4g mm): the tube carries no more "
+             "in this model",
+             o.die_force, stroke, squaring ? "the dies close on the tube or meet" : "the ring's walls meet", reach);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, double stroke, const char *option)
 {
   PetscFunctionBeginUser;

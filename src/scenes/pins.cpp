@@ -51,13 +51,4 @@ PetscErrorCode MarkAxisPins(Model &m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode HoldAxisPins(Model &m)
-{
-  PetscFunctionBeginUser;
-  for (PetscInt n : m.mesh.node_sets["axis"])
-    PetscCheck(m.system.PrescribeAlong(n, 1, 0, 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
-               "the full model's pin is not along a node frame axis");
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 } // namespace tf

@@ -189,8 +189,10 @@ public:
       PetscCall(VecRestoreArrayRead(reversed_, &f));
     }
     if (!full_) PetscCall(QuarterSymmetry(m)); // (a full model's mesh file may carry x0 or y0 sets: not held)
-    PetscCall(CheckForceReach(m));             // (inside the increment: its failure writes the results so far)
-    if (full_) PetscCall(HoldAxisPins(m));
+    // (inside the increment: its failure writes the results so far)
+    if (opt_.die_force > 0 && m.contact->active())
+      PetscCall(CheckForceReach(m.comm, opt_, squaring_, m.contact->tool(kUpper).stroke));
+    if (full_) PetscCall(HoldAlong(m, "axis", 1, 0)); // (the full model's pins: scenes/pins.cpp)
     // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
     // holds the tube's rigid motion along y.
     if (pinned_ && !unloading_) {
@@ -347,21 +349,6 @@ private:
   PetscErrorCode PassTools(Model &m, int pass, double floor_y, std::vector<Tool> &tools)
   {
     return BuildPassDies(m.comm, opt_, pass, squaring_, half_, full_, floor_y, tools, flank_, apex_);
-  }
-
-  // A force-controlled die that comes down to where the dies close on the tube (or the ring's walls meet) stops
-  // the run there, its results written: the tube carries no more in this model.
-  PetscErrorCode CheckForceReach(Model &m) const
-  {
-    PetscFunctionBeginUser;
-    if (opt_.die_force == 0 || !m.contact->active()) PetscFunctionReturn(PETSC_SUCCESS);
-    const double reach = DieReach(opt_, squaring_), stroke = m.contact->tool(kUpper).stroke;
-    PetscCheck(stroke < reach, m.comm, PETSC_ERR_NOT_CONVERGED,
-               "-die_force %g: the die has come down to U = %.4g mm, where %s (U = %.4g mm): the tube carries no more "
-               "in this model",
-               opt_.die_force, stroke, squaring_ ? "the dies close on the tube or meet" : "the ring's walls meet",
-               reach);
-    PetscFunctionReturn(PETSC_SUCCESS);
   }
 
   // The half and full models' springback: one node holds the tube's rigid motion along y (scenes/pins.cpp).

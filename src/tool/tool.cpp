@@ -101,33 +101,27 @@ double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
   return rmin;
 }
 
-Tool MirrorY(const Tool &t)
+namespace {
+// The mirror image of a tool about an axis through the origin: about the x axis (y -> -y, an angle t -> -t) or
+// the y axis (x -> -x, t -> pi - t). Its segments, the body's side (the normals) and its motion.
+Tool Reflect(const Tool &t, bool about_x)
 {
   Tool m = t;
-  const auto flip = [](const Vec2 &v) { return Vec2{v[0], -v[1]}; };
+  const auto flip = [about_x](const Vec2 &v) { return about_x ? Vec2{v[0], -v[1]} : Vec2{-v[0], v[1]}; };
+  const double turn = about_x ? 0.0 : M_PI; // t -> turn - t: the range [t0, t1] becomes [turn - t1, turn - t0]
   for (Segment &s : m.segments) {
     s.a = flip(s.a), s.b = flip(s.b), s.c = flip(s.c), s.n_line = flip(s.n_line);
-    // The angle t maps to -t: the range [t0, t1] becomes [-t1, -t0].
     const double t0 = s.t0;
-    s.t0 = -s.t1, s.t1 = -t0;
+    s.t0 = turn - s.t1, s.t1 = turn - t0;
   }
   m.direction = flip(t.direction);
   return m;
 }
+} // namespace
 
-Tool MirrorX(const Tool &t)
-{
-  Tool m = t;
-  const auto flip = [](const Vec2 &v) { return Vec2{-v[0], v[1]}; };
-  for (Segment &s : m.segments) {
-    s.a = flip(s.a), s.b = flip(s.b), s.c = flip(s.c), s.n_line = flip(s.n_line);
-    // The angle t maps to pi - t: the range [t0, t1] becomes [pi - t1, pi - t0].
-    const double t0 = s.t0;
-    s.t0 = M_PI - s.t1, s.t1 = M_PI - t0;
-  }
-  m.direction = flip(t.direction);
-  return m;
-}
+Tool MirrorY(const Tool &t) { return Reflect(t, true); }
+
+Tool MirrorX(const Tool &t) { return Reflect(t, false); }
 
 Tool BothSides(const Tool &t)
 {

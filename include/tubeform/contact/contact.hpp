@@ -267,6 +267,8 @@ private:
   Projection ProjectNearest(const Vec2 &x, int &k) const;
   // The motion per unit stroke of the tool a node touches (or was released from).
   const Vec2 &Direction(PetscInt node) const { return tools_[tool_of_[node]].direction; }
+  // The component along its tool's direction of a contact force f_n n + f_l l on a node.
+  double ForceAlong(PetscInt node, double fn, double fl) const;
   // Tool k's stroke increment in a step of the scene's stroke dU (a force-controlled tool: its own).
   double Step(int k, double dU) const { return tools_[k].pad ? pad_step_ : dU; }
   // The motion of the tool a node touches in that step.

@@ -16,6 +16,8 @@ namespace tf {
 // the follower-load stiffness of the pressure stiffness_p into the system.
 PetscErrorCode AddEdgePressure(Model &m, const std::string &set, double pressure, Vec f_local, bool to_system,
                                double stiffness_p = 0);
+// The displacement along the global unit direction (dx, dy) held at 0 on a node set (an axis of each node's frame).
+PetscErrorCode HoldAlong(Model &m, const std::string &set, double dx, double dy);
 // u_x = 0 on x = 0, u_y = 0 on y = 0, in each node's frame.
 PetscErrorCode QuarterSymmetry(Model &m);
 // The part of the tube a tool scene models: the quarter x, y >= 0, the half x >= 0, or the whole tube.
@@ -39,11 +41,9 @@ PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin);
 // A mesh node this close to the y axis (relative to its height) is on it.
 constexpr double kAxisPin = 1e-9;
 // Collective: the full model's pins, node set "axis": the outer nodes on the y axis at the tube's top and at
-// its bottom, whose x held holds the tube's rotation and its motion along x (exactly, in a press symmetric
-// about the y axis: their x stays 0); an error on every rank if the mesh has none there.
+// its bottom, whose x held (HoldAlong(m, "axis", 1, 0)) holds the tube's rotation and its motion along x
+// (exactly, in a press symmetric about the y axis: their x stays 0); an error on every rank if the mesh has none.
 PetscErrorCode MarkAxisPins(Model &m);
-// Their x held (u_x = 0 in their node frames).
-PetscErrorCode HoldAxisPins(Model &m);
 // The tube mesh of the options: structured (the part asked) or -mesh_file.
 std::string TubeMesh(const Options &opt, SerialMesh &mesh, TubePart part = TubePart::Quarter);
 // The history's stage: 0 up to lambda = 1, 1 up to 2 (unloading, or a scene's second stage), and so on.

@@ -48,5 +48,8 @@ PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, dou
 // The first stroke CheckDieReach refuses (the dies closing on the tube, their parting faces meeting, the ring's
 // walls meeting); kNever where there is no closed form (a profile, another lower die).
 double DieReach(const Options &o, bool squaring);
+// Collective: a force-controlled die (-die_force) at `stroke` that has come down to DieReach stops the run
+// (PETSC_ERR_NOT_CONVERGED: inside an increment, the results so far are written).
+PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, bool squaring, double stroke);
 
 } // namespace tf
