@@ -55,7 +55,7 @@ import re
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, out, run
+from tfcheck import Checks, args, history_and_tools, out, run
 
 tf, mpirun, src = args()
 k = Checks("models")
@@ -69,12 +69,11 @@ GRID = np.linspace(0.2, U, 22)
 def press(name, extra, n=1):
     f = out(name)
     run(tf, mpirun, n, BASE + extra + ["-output", f], timeout=600)
+    r = history_and_tools(f)
     with h5py.File(f, "r") as h:
-        r = {c: h["/history"][c][:] for c in h["/history"]}
         r["X"] = h["/geometry/vertices"][:]
         r["time"] = h["/time"][:]
         r["U"] = h["/vertex_fields/displacement_u"][:]
-        r["tools"] = {t: h["/tools"][t]["displacement"][:] for t in h["/tools"]}
     return r
 
 

@@ -1,14 +1,17 @@
 // Unit tests of the tools' geometry on concave and convex arcs of both
 // orientations (issue 23, item 7): an upper die (the body below it) and its
-// mirror image below the body (MirrorY, the lower die of the half model).
+// images under the eight maps of a square onto itself (SquareMap: the mirror
+// image below the body, MirrorY, is the half model's lower die; the quarter
+// turns are the dies of a pass that turns the tube).
 //   - A point at distance delta from any segment, on the body's side along the
 //     segment's normal (from the construction: centre, radius, angle), projects
 //     back onto it with gap delta, that normal, and curvature +1/R on concave
-//     arcs, -1/R on convex ones, 0 on lines; its mirror image does the same on
-//     the mirrored tool, with the normal mirrored.
+//     arcs, -1/R on convex ones, 0 on lines; its image does the same on the
+//     mapped tool, with the normal mapped (the map applied to the
+//     construction's numbers here, independently of Transform's arcs).
 //   - First contact: the point moving by -2 delta n meets the static tool at
 //     r = 1/2 exactly, on arcs by the quadratic of Tool::FirstContact; the
-//     mirrored tool, moving by its own (mirrored) direction, meets the mirrored
+//     mapped tool, moving by its own (mapped) direction, meets the mapped
 //     point at the same r, and an original die moving by U meets a point
 //     rising towards it where the closed form says.
 // The tools: the flat-bottomed die of options/dies/flat_bottom.profile (a
@@ -26,17 +29,16 @@ using namespace tf;
 
 namespace {
 
-Vec2 Flip(const Vec2 &v) { return {v[0], -v[1]}; }
-
-// Every segment of `tool` and of its mirror, sampled at three points.
-void CheckBothOrientations(const Tool &tool, const char *name, int &concave, int &convex)
+// Every segment of `tool` and of its image under `map`, sampled at three points.
+void CheckImage(const Tool &tool, const SquareMap &map, int &concave, int &convex)
 {
   const double delta = 0.05;
-  const Tool mirror = MirrorY(tool);
-  CHECK(mirror.direction[1] == -tool.direction[1]);
+  const Tool image = Transform(tool, map);
+  CHECK_NEAR(image.direction[0], map(tool.direction)[0], 0.0);
+  CHECK_NEAR(image.direction[1], map(tool.direction)[1], 0.0);
   for (size_t k = 0; k < tool.segments.size(); ++k) {
     const Segment &s = tool.segments[k];
-    if (s.kind == Segment::Arc) (s.concave ? concave : convex)++;
+    if (s.kind == Segment::Arc && map.identity()) (s.concave ? concave : convex)++;
     for (double f : {0.2, 0.5, 0.8}) {
       Vec2 q, n;
       double curvature = 0;
@@ -50,32 +52,40 @@ void CheckBothOrientations(const Tool &tool, const char *name, int &concave, int
         curvature = (s.concave ? 1.0 : -1.0) / s.radius;
       }
       const Vec2 p = {q[0] + delta * n[0], q[1] + delta * n[1]};
-      const Projection a = tool.Project(p), b = mirror.Project(Flip(p));
+      const Projection a = tool.Project(p), b = image.Project(map(p));
       CHECK(a.segment == (int)k && b.segment == (int)k);
       CHECK_NEAR(a.gap, delta, 1e-12);
       CHECK_NEAR(b.gap, delta, 1e-12);
       CHECK_NEAR(a.n[0], n[0], 1e-12);
       CHECK_NEAR(a.n[1], n[1], 1e-12);
-      CHECK_NEAR(b.n[0], n[0], 1e-12);
-      CHECK_NEAR(b.n[1], -n[1], 1e-12);
+      CHECK_NEAR(b.n[0], map(n)[0], 1e-12);
+      CHECK_NEAR(b.n[1], map(n)[1], 1e-12);
       CHECK_NEAR(a.curvature, curvature, 1e-12);
       CHECK_NEAR(b.curvature, curvature, 1e-12);
       // Straight at the surface along -n: half way there in a step of 2 delta.
-      const Vec2 dx = {-2 * delta * n[0], -2 * delta * n[1]};
+      const Vec2 dx = {-2 * delta * n[0], -2 * delta * n[1]}, back = {-dx[0], -dx[1]};
       CHECK_NEAR(tool.FirstContact(p, dx, 0.0), 0.5, 1e-9);
-      CHECK_NEAR(mirror.FirstContact(Flip(p), Flip(dx), 0.0), 0.5, 1e-9);
+      CHECK_NEAR(image.FirstContact(map(p), map(dx), 0.0), 0.5, 1e-9);
       // Moving away it never meets the segment it left.
-      CHECK(tool.FirstContact(p, {-dx[0], -dx[1]}, 0.0) > 1);
-      CHECK(mirror.FirstContact(Flip(p), Flip({-dx[0], -dx[1]}), 0.0) > 1);
-      // A line coming down by dU onto a point that stays: gap delta closed at the rate dU (-n_y).
+      CHECK(tool.FirstContact(p, back, 0.0) > 1);
+      CHECK(image.FirstContact(map(p), map(back), 0.0) > 1);
+      // A line coming down by dU onto a point that stays: gap delta closed at the rate dU (-n_y); the image
+      // moving by its own direction closes the image's gap alike.
       if (s.kind == Segment::Line && n[1] < -0.2) {
         const double dU = 2 * delta / -n[1];
         CHECK_NEAR(tool.FirstContact(p, {0, 0}, dU), 0.5, 1e-9);
-        CHECK_NEAR(mirror.FirstContact(Flip(p), {0, 0}, dU), 0.5, 1e-9);
+        CHECK_NEAR(image.FirstContact(map(p), {0, 0}, dU), 0.5, 1e-9);
       }
     }
   }
-  std::printf("%s: %zu segments and their mirror images\n", name, tool.segments.size());
+}
+
+// The tool under all eight maps (MirrorY and MirrorX are two of them).
+void CheckAllImages(const Tool &tool, const char *name, int &concave, int &convex)
+{
+  for (bool reflect : {false, true})
+    for (int q = 0; q < 4; ++q) CheckImage(tool, {reflect, q}, concave, convex);
+  std::printf("%s: %zu segments and their images under the 8 maps of a square\n", name, tool.segments.size());
 }
 
 } // namespace
@@ -88,8 +98,8 @@ int main()
                            "line 9.121320343559642 16.621320343559642 22.75 2.992640687119284\n";
   Tool die;
   CHECK(ParseProfile(flat, "flat_bottom.profile", die).empty());
-  CheckBothOrientations(die, "flat-bottomed die", concave, convex);
-  CheckBothOrientations(BuildVDie(17.5, 3.0, 2.0, 1.5), "V-die with a parting face", concave, convex);
+  CheckAllImages(die, "flat-bottomed die", concave, convex);
+  CheckAllImages(BuildVDie(17.5, 3.0, 2.0, 1.5), "V-die with a parting face", concave, convex);
   CHECK(concave == 2 && convex == 1); // both kinds of arc were sampled (the fillets and the V's apex: concave)
   return ReportChecks("test_tool");
 }

@@ -126,6 +126,14 @@ def load(path):
     return out
 
 
+def history_and_tools(path):
+    """A result file's history columns, and under "tools" each tool's displacement at every field step."""
+    with h5py.File(path, "r") as h:
+        r = {c: h["/history"][c][:] for c in h["/history"]}
+        r["tools"] = {t: h["/tools"][t]["displacement"][:] for t in h["/tools"]}
+    return r
+
+
 class Checks:
     """Collects pass/fail lines; exit code 1 if any failed, or if none was made
     (a test whose checks were all skipped verifies nothing)."""

@@ -32,7 +32,7 @@ void ContactSet::Setup(Mesh &mesh, System &system, const std::vector<double> &x,
   released_.assign(n, 0);
   frozen_.assign(n, 0);
   global_frame_.assign(n, 0);
-  sym_dir_.assign(n, Vec2{0, 0});
+  sym_dir_.resize(n);
   segment_.assign(n, -1);
   tool_of_.assign(n, 0);
   touch_.assign(n, 0);
@@ -42,8 +42,14 @@ void ContactSet::Setup(Mesh &mesh, System &system, const std::vector<double> &x,
   n_.assign(n, Vec2{0, -1});
   pending_.assign(n, Vec2{0, 0});
   l_.assign(n, Vec2{-1, 0});
-  for (const auto &s : spec.symmetry)
-    for (PetscInt node : mesh.node_sets[s.first]) sym_dir_[node] = s.second;
+  SetSymmetry(spec.symmetry);
+}
+
+void ContactSet::SetSymmetry(const std::vector<std::pair<std::string, Vec2>> &symmetry)
+{
+  std::fill(sym_dir_.begin(), sym_dir_.end(), Vec2{0, 0});
+  for (const auto &s : symmetry)
+    for (PetscInt node : mesh_->node_sets[s.first]) sym_dir_[node] = s.second;
 }
 
 PetscErrorCode ContactSet::Initialize()

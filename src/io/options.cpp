@@ -304,11 +304,13 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                        "tool scenes: the lower die moves up by the stroke U (mirror) or stays (fixed; the upper die "
                        "then travels 2 U, so U is half the dies' closing either way)",
                        {"mirror", "fixed"}, opt.lower_die_motion));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
-                       "tool scenes: the part of the tube modelled: quarter (symmetric about both axes), half "
-                       "(about the y axis), full (the whole tube, its rotation held by the x of its outer nodes on "
-                       "the y axis), or auto (the quarter when the lower die mirrors the upper one, else the half)",
-                       {"auto", "quarter", "half", "full"}, opt.model));
+  PetscCall(ChooseWord(
+    PetscOptionsObject, read, "-model",
+    "tool scenes: the part of the tube modelled: quarter (symmetric about both axes), half "
+    "(about the y axis), full (the whole tube, its rotation held by the x of its outer nodes on "
+    "the y axis), or auto (the quarter when the lower die mirrors the upper one, else the half; the full for "
+    "a quarter turn of the tube, -pass2_turn, that the half cannot model)",
+    {"auto", "quarter", "half", "full"}, opt.model));
   PetscCall(read.Real(PetscOptionsObject, "-die_force",
                       "tool scenes: force control: the upper die presses with a punch load rising from 0 to this "
                       "(N/mm) over the press, its stroke an unknown of each increment (0: the stroke -stroke)",
@@ -324,6 +326,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                         "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first "
                         "pass's -lower_die)",
                         opt.pass2_lower_die));
+  PetscCall(read.Real(PetscOptionsObject, "-pass2_turn",
+                      "squaring: the tube turned counter-clockwise by this many degrees (a multiple of 90) before the "
+                      "second pass: its dies press along the turned axis (docs/dies.md)",
+                      opt.pass2_turn));
   PetscCall(read.Real(PetscOptionsObject, "-friction_mu",
                       "Coulomb friction coefficient (0: frictionless, no friction work at all)", opt.friction_mu));
   PetscCall(read.Real(PetscOptionsObject, "-friction_vcri",

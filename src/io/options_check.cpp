@@ -78,7 +78,7 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, const Options &opt)
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
   const bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != "auto" ||
                      opt.pass2_stroke != 0 || !opt.pass2_die_profile.empty() || !opt.pass2_lower_die.empty() ||
-                     opt.die_force != 0;
+                     opt.pass2_turn != 0 || opt.die_force != 0;
   PetscCheck(press || !asked, comm, PETSC_ERR_USER_INPUT,
              "-lower_die, -lower_die_motion, -model, -pass2_*, -die_force: the %s scene presses with no dies (these "
              "are the squaring and flattening scenes' options)",
@@ -118,6 +118,16 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, const Options &opt)
              opt.pass2_stroke, opt.unload.c_str());
   PetscCheck(opt.pass2_stroke > 0 || (opt.pass2_die_profile.empty() && opt.pass2_lower_die.empty()), comm,
              PETSC_ERR_USER_INPUT, "-pass2_die_profile, -pass2_lower_die: give -pass2_stroke for the second pass");
+  const int quarters = Pass2Quarters(opt);
+  PetscCheck(std::isfinite(opt.pass2_turn) && opt.pass2_turn == 90.0 * quarters && std::abs(quarters) <= 4, comm,
+             PETSC_ERR_USER_INPUT,
+             "-pass2_turn %g: the tube turns by quarter turns (a multiple of 90 degrees, -360 to 360)", opt.pass2_turn);
+  PetscCheck(opt.pass2_stroke > 0 || opt.pass2_turn == 0, comm, PETSC_ERR_USER_INPUT,
+             "-pass2_turn %g: give -pass2_stroke for the second pass", opt.pass2_turn);
+  PetscCheck(opt.model != "half" || quarters % 2 == 0, comm, PETSC_ERR_USER_INPUT,
+             "-pass2_turn %g with -model half: the half model's plane x = 0 is no symmetry plane of a press turned by "
+             "90 degrees; use -model full (or auto)",
+             opt.pass2_turn);
   PetscCheck(QuarterModel(opt) || opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
              "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
   PetscFunctionReturn(PETSC_SUCCESS);

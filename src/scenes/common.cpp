@@ -73,16 +73,18 @@ PetscErrorCode QuarterSymmetry(Model &m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part)
+PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part, const SquareMap &press)
 {
   // (the half and full models' tube may sit anywhere along y)
   double ext[4] = {0, -kNever, -kNever, -kNever}, g[4];
   PetscFunctionBeginUser;
+  const auto &x = m.body.position();
   for (PetscInt n : m.mesh.node_sets["outer"]) {
-    ext[0] = std::max(ext[0], m.body.position()[2 * n]);
-    ext[1] = std::max(ext[1], m.body.position()[2 * n + 1]);
-    ext[2] = std::max(ext[2], -m.body.position()[2 * n + 1]);
-    ext[3] = std::max(ext[3], -m.body.position()[2 * n]);
+    const Vec2 p = press({x[2 * n], x[2 * n + 1]});
+    ext[0] = std::max(ext[0], p[0]);
+    ext[1] = std::max(ext[1], p[1]);
+    ext[2] = std::max(ext[2], -p[1]);
+    ext[3] = std::max(ext[3], -p[0]);
   }
   PetscCall(MPIU_Allreduce(ext, g, 4, MPIU_REAL, MPIU_MAX, m.comm));
   row.x_max = part == TubePart::Full ? 0.5 * (g[0] + g[3]) : g[0];

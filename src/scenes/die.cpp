@@ -114,6 +114,14 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+SquareMap PassTurn(const Options &opt, int pass, bool half, bool full)
+{
+  const int k = pass == 1 ? Pass2Quarters(opt) : 0, q = ((k % 4) + 4) % 4;
+  if (full) return SquareMap::Turn(-k);
+  if (half) return q == 2 ? SquareMap{true, 0} : SquareMap{};
+  return q % 2 ? SquareMap{true, 1} : SquareMap{};
+}
+
 double DieReach(const Options &o, bool squaring)
 {
   const double ro = o.tube_ro, ri = ro - o.tube_t;

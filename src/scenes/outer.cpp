@@ -14,17 +14,18 @@ static double UpperSegment(const Model &m, PetscInt n)
 }
 
 // Each rank's owned outer nodes (x, y, contact, segment, input number), gathered and sorted by angle.
-PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper)
+PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper, const SquareMap &press)
 {
   std::vector<double> mine;
   PetscMPIInt size;
   PetscFunctionBeginUser;
   const auto &x = m.body.position();
-  for (PetscInt n : m.mesh.node_sets["outer"])
-    if (m.mesh.node_owned[n] &&
-        (!upper || (m.mesh.x0[2 * n + 1] >= 0 && m.mesh.x0[2 * n] >= -kAxisPin * m.mesh.x0[2 * n + 1])))
-      mine.insert(mine.end(), {x[2 * n], x[2 * n + 1], m.contact ? double(m.contact->InContact(n)) : 0.0,
-                               UpperSegment(m, n), double(m.mesh.node_orig[n])});
+  for (PetscInt n : m.mesh.node_sets["outer"]) {
+    const Vec2 p = press({x[2 * n], x[2 * n + 1]}), p0 = press({m.mesh.x0[2 * n], m.mesh.x0[2 * n + 1]});
+    if (m.mesh.node_owned[n] && (!upper || (p0[1] >= 0 && p0[0] >= -kAxisPin * p0[1])))
+      mine.insert(mine.end(), {p[0], p[1], m.contact ? double(m.contact->InContact(n)) : 0.0, UpperSegment(m, n),
+                               double(m.mesh.node_orig[n])});
+  }
   PetscCallMPI(MPI_Comm_size(m.comm, &size));
   std::vector<int> counts(size), displs(size);
   int count = (int)mine.size();
@@ -42,11 +43,12 @@ PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode LowestOuterY(Model &m, double &y)
+PetscErrorCode LowestOuterY(Model &m, double &y, const SquareMap &press)
 {
   double low = 0, lowest;
   PetscFunctionBeginUser;
-  for (PetscInt n : m.mesh.node_sets["outer"]) low = std::max(low, -m.body.position()[2 * n + 1]);
+  const auto &x = m.body.position();
+  for (PetscInt n : m.mesh.node_sets["outer"]) low = std::max(low, -press({x[2 * n], x[2 * n + 1]})[1]);
   PetscCallMPI(MPI_Allreduce(&low, &lowest, 1, MPI_DOUBLE, MPI_MAX, m.comm));
   y = -lowest;
   PetscFunctionReturn(PETSC_SUCCESS);

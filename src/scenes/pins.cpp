@@ -1,13 +1,13 @@
 // How the half and full models are held where no die holds them
 // (scenes/common.hpp): the springback's pin along y, and the full model's
-// pins along x on the y axis.
+// pins along x on the y axis (the press's axes: a turned pass's).
 #include <cmath>
 
 #include "tubeform/scenes/common.hpp"
 
 namespace tf {
 
-PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin)
+PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin, const SquareMap &press)
 {
   struct {
     double y;
@@ -15,9 +15,10 @@ PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin)
   } mine = {kNever, -1}, best;
   PetscFunctionBeginUser;
   for (PetscInt n : m.mesh.node_sets["inner"]) {
-    const double y = std::abs(m.mesh.x0[2 * n + 1]);
+    const Vec2 p0 = press({m.mesh.x0[2 * n], m.mesh.x0[2 * n + 1]});
+    const double y = std::abs(p0[1]);
     const int id = (int)m.mesh.node_orig[n];
-    if (m.mesh.x0[2 * n] > 0 && (y < mine.y || (y == mine.y && id < mine.id))) mine = {y, id};
+    if (p0[0] > 0 && (y < mine.y || (y == mine.y && id < mine.id))) mine = {y, id};
   }
   PetscCallMPI(MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MINLOC, m.comm));
   pin = -1;
@@ -26,7 +27,7 @@ PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MarkAxisPins(Model &m)
+PetscErrorCode MarkAxisPins(Model &m, const SquareMap &press)
 {
   struct {
     double y;
@@ -35,15 +36,16 @@ PetscErrorCode MarkAxisPins(Model &m)
   PetscFunctionBeginUser;
   // The outer nodes nearest the y axis at its top and at its bottom (the largest |y| among those on it).
   for (PetscInt n : m.mesh.node_sets["outer"]) {
-    const double x = m.mesh.x0[2 * n], y = m.mesh.x0[2 * n + 1];
+    const Vec2 p0 = press({m.mesh.x0[2 * n], m.mesh.x0[2 * n + 1]});
+    const double x = p0[0], y = p0[1];
     const int side = y > 0 ? 0 : 1, id = (int)m.mesh.node_orig[n];
     const double score = std::abs(y) - kNever * (std::abs(x) > kAxisPin * std::abs(y));
     if (score > mine[side].y || (score == mine[side].y && id < mine[side].id)) mine[side] = {score, id};
   }
   PetscCallMPI(MPI_Allreduce(mine, best, 2, MPI_DOUBLE_INT, MPI_MAXLOC, m.comm));
   PetscCheck(best[0].y > 0 && best[1].y > 0, m.comm, PETSC_ERR_USER_INPUT,
-             "the full model needs an outer node on the y axis at the tube's top and at its bottom (the mesh has "
-             "none there)");
+             "the full model needs an outer node on the press's y axis at the tube's top and at its bottom (the "
+             "mesh has none there)");
   auto &axis = m.mesh.node_sets["axis"];
   axis.clear();
   for (PetscInt n : m.mesh.node_sets["outer"])

@@ -33,7 +33,7 @@ namespace {
 class PressScene : public Scene {
 public:
   PressScene(const Options &opt, bool squaring)
-      : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(opt.model == "full")
+      : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(FullModel(opt))
   {
     stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_angle)
                                            : opt.stroke;
@@ -101,7 +101,7 @@ public:
     // The half tube between both dies is mirrored about the y axis only.
     if (full_) {
       PetscCall(MarkAxisPins(m));
-      tools.symmetry = {{"axis", {1, 0}}}; // (held by the scene: Load)
+      tools.symmetry = {{"axis", AxisHeld()}}; // (held by the scene: Load)
     } else if (half_)
       tools.symmetry = {{"x0", {1, 0}}};
     else
@@ -148,6 +148,12 @@ public:
       ContactSpec spec = spec_;
       pass_ = 1;
       PetscCall(PassTools(m, 1, spec.tools));
+      if (full_) {
+        // A turned tube is held on its press's axes (as a restart chooses them: Persist).
+        PetscCall(MarkAxisPins(m, Press()));
+        spec.symmetry = {{"axis", AxisHeld()}};
+      }
+      if (pinned_) PetscCall(ChoosePin(m));
       m.contact->Setup(m.mesh, m.system, m.body.position(), spec);
       m.contact->SetStroke(0.0);
       PetscCall(m.contact->Initialize());
@@ -192,7 +198,7 @@ public:
     // (inside the increment: its failure writes the results so far)
     if (opt_.die_force > 0 && m.contact->active())
       PetscCall(CheckForceReach(m.comm, opt_, squaring_, m.contact->tool(kUpper).stroke));
-    if (full_) PetscCall(HoldAlong(m, "axis", 1, 0)); // (the full model's pins: scenes/pins.cpp)
+    if (full_) PetscCall(HoldAlong(m, "axis", AxisHeld()[0], AxisHeld()[1])); // (the pins: scenes/pins.cpp)
     // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
     // holds the tube's rigid motion along y.
     if (pinned_ && !unloading_) {
@@ -201,8 +207,9 @@ public:
       PetscCall(m.contact->Count(touching));
       pinned_ = touching == 0;
     }
+    const Vec2 pin_dir = PassMap(pass_)({0, 1}); // (the press's y)
     if (pinned_ && pin_ >= 0)
-      PetscCheck(m.system.PrescribeAlong(pin_, 0, 1, 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+      PetscCheck(m.system.PrescribeAlong(pin_, pin_dir[0], pin_dir[1], 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
                  "the springback's pin is not along a node frame axis");
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -226,13 +233,16 @@ public:
       moment = (ReleaseEnd() - lambda) * reversed_moment_;
     } else
       PetscCall(m.contact->TotalForce(kUpper, force, &moment));
-    row.load = -LoadPerModelForce() * force[1]; // (the punch load on the whole tube)
-    row.tool_fx = -force[0], row.tool_fy = -force[1], row.tool_moment = -moment;
+    // (in the press's frame: a turned pass's die presses along its -y)
+    Vec2 f = Press()({force[0], force[1]});
+    row.load = -LoadPerModelForce() * f[1]; // (the punch load on the whole tube)
+    row.tool_fx = -f[0], row.tool_fy = -f[1], row.tool_moment = -Press().det() * moment;
     if (half_ && !unloading_) {
       PetscCall(m.contact->TotalForce(kLower, force, &moment));
-      row.lower_fx = -force[0], row.lower_fy = -force[1], row.lower_moment = -moment;
+      f = Press()({force[0], force[1]});
+      row.lower_fx = -f[0], row.lower_fy = -f[1], row.lower_moment = -Press().det() * moment;
     }
-    PetscCall(OuterExtents(m, row, Part()));
+    PetscCall(OuterExtents(m, row, Part(), Press()));
     PetscCall(Shape(m, lambda, row));
     row.stage = StageOf(lambda);
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -275,10 +285,15 @@ public:
     PetscCall(ar.Value("pass", pass_));
     PetscCall(ar.Value("floor_y", floor_y_));
     if (ar.reading() && pass_ == 1) {
-      // A restart in the second pass: its dies' shapes for the contact set (its state, strokes included, read).
+      // A restart in the second pass: its dies' shapes for the contact set (its state, strokes included, read),
+      // a turned tube's pins.
       std::vector<Tool> tools;
       PetscCall(PassTools(m, 1, floor_y_, tools));
       m.contact->ReplaceTools(std::move(tools));
+      if (full_) {
+        PetscCall(MarkAxisPins(m, Press()));
+        m.contact->SetSymmetry({{"axis", AxisHeld()}});
+      }
     }
     // The springback's total force and moment and the side C is measured on (from the loading).
     std::vector<double> pairs = {reversed_total_[0], reversed_total_[1], (double)side_ends_[0], (double)side_ends_[1],
@@ -342,20 +357,30 @@ private:
   PetscErrorCode PassTools(Model &m, int pass, std::vector<Tool> &tools)
   {
     PetscFunctionBeginUser;
-    PetscCall(LowestOuterY(m, floor_y_));
+    PetscCall(LowestOuterY(m, floor_y_, PassMap(pass).Inverse()));
     PetscCall(PassTools(m, pass, floor_y_, tools));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  // (the floor's y in the pass's press frame; the dies drawn there, then turned with the tube: PassMap)
   PetscErrorCode PassTools(Model &m, int pass, double floor_y, std::vector<Tool> &tools)
   {
-    return BuildPassDies(m.comm, opt_, pass, squaring_, half_, full_, floor_y, tools, flank_, apex_);
+    PetscFunctionBeginUser;
+    PetscCall(BuildPassDies(m.comm, opt_, pass, squaring_, half_, full_, floor_y, tools, flank_, apex_));
+    for (Tool &t : tools) t = Transform(t, PassMap(pass));
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
+
+  SquareMap PassMap(int pass) const { return PassTurn(opt_, pass, half_, full_); }
+  // The tube's coordinates into the frame of the press in place (its die moving along -y).
+  SquareMap Press() const { return PassMap(pass_).Inverse(); }
+  // The full model's pins hold the tube along the press's x.
+  Vec2 AxisHeld() const { return PassMap(pass_)({1, 0}); }
 
   // The half and full models' springback: one node holds the tube's rigid motion along y (scenes/pins.cpp).
   PetscErrorCode ChoosePin(Model &m)
   {
     PetscFunctionBeginUser;
-    PetscCall(ChooseSpringbackPin(m, pin_));
+    PetscCall(ChooseSpringbackPin(m, pin_, Press()));
     pinned_ = true;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -372,7 +397,7 @@ private:
   {
     std::vector<SurfacePoint> all;
     PetscFunctionBeginUser;
-    PetscCall(GatherOuter(m, all, half_));
+    PetscCall(GatherOuter(m, all, half_, Press()));
     if (all.size() >= 2) {
       // (the half model's tube moves with a fixed lower die: its neighbour's height from the axis node's)
       row.r_corner_x = AxisCornerRadius(all.front().x, all[1].x, all[1].y - all.front().y);
@@ -382,19 +407,23 @@ private:
     for (const auto &o : all) row.n_contact_apex += o.contact && apex_ >= 0 && o.segment == apex_;
     const Tool &tool = m.contact->tool(kUpper);
     const Segment &fl = tool.segments[flank_];
-    const Vec2 off = tool.Offset();
-    const Line flank{{fl.a[0] + off[0], fl.a[1] + off[1]}, fl.n_line, {fl.n_line[1], -fl.n_line[0]}};
+    const Vec2 off = tool.Offset(), a = Press()({fl.a[0] + off[0], fl.a[1] + off[1]}), n = Press()(fl.n_line);
+    const Line flank{a, n, {n[1], -n[0]}};
     // The line starts at the flank's apex end (s = 0), where the fillet ends.
     const SideSpan side = unloading_ ? SideSpan{} : SideOnFlank(all, flank, flank_, apex_, 0.0);
     // Without a side on the flank (springback; the second pass's die still on its way to the tube), C is the
     // chord's gap of the side the last one left.
+    // (the whole surface: a pass that turned the tube finds the side the first one left in another quarter)
     if (unloading_ || (pass_ == 1 && side.empty() && side_ends_[0] >= 0)) {
-      size_t ends[2] = {all.size(), all.size()};
-      for (size_t k = 0; k < all.size(); ++k)
+      std::vector<SurfacePoint> whole;
+      if (half_) PetscCall(GatherOuter(m, whole, false, Press()));
+      const std::vector<SurfacePoint> &on = half_ ? whole : all;
+      size_t ends[2] = {on.size(), on.size()};
+      for (size_t k = 0; k < on.size(); ++k)
         for (int e = 0; e < 2; ++e)
-          if (all[k].id == side_ends_[e]) ends[e] = k;
-      const bool found = ends[0] < all.size() && ends[1] < all.size();
-      row.c_over_t = found ? ChordGap(all, ends[0], ends[1]) / opt_.tube_t : 0.0;
+          if (on[k].id == side_ends_[e]) ends[e] = k;
+      const bool found = ends[0] < on.size() && ends[1] < on.size();
+      row.c_over_t = found ? ChordGap(on, ends[0], ends[1]) / opt_.tube_t : 0.0;
       PetscFunctionReturn(PETSC_SUCCESS);
     }
     side_ends_[0] = side.empty() ? -1 : all[side.ends[0]].id;

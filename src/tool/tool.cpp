@@ -101,27 +101,42 @@ double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
   return rmin;
 }
 
-namespace {
-// The mirror image of a tool about an axis through the origin: about the x axis (y -> -y, an angle t -> -t) or
-// the y axis (x -> -x, t -> pi - t). Its segments, the body's side (the normals) and its motion.
-Tool Reflect(const Tool &t, bool about_x)
+Vec2 SquareMap::operator()(const Vec2 &v) const
+{
+  const Vec2 r = {v[0], reflect ? -v[1] : v[1]};
+  switch (q) {
+  case 1:
+    return {-r[1], r[0]};
+  case 2:
+    return {-r[0], -r[1]};
+  case 3:
+    return {r[1], -r[0]};
+  default:
+    return r;
+  }
+}
+
+Tool Transform(const Tool &t, const SquareMap &map)
 {
   Tool m = t;
-  const auto flip = [about_x](const Vec2 &v) { return about_x ? Vec2{v[0], -v[1]} : Vec2{-v[0], v[1]}; };
-  const double turn = about_x ? 0.0 : M_PI; // t -> turn - t: the range [t0, t1] becomes [turn - t1, turn - t0]
+  // An angle t goes to (reflect ? -t : t) + q pi / 2; a reflection reverses the range [t0, t1].
+  const double turn = map.q * (M_PI / 2);
   for (Segment &s : m.segments) {
-    s.a = flip(s.a), s.b = flip(s.b), s.c = flip(s.c), s.n_line = flip(s.n_line);
+    s.a = map(s.a), s.b = map(s.b), s.c = map(s.c), s.n_line = map(s.n_line);
     const double t0 = s.t0;
-    s.t0 = turn - s.t1, s.t1 = turn - t0;
+    if (map.reflect)
+      s.t0 = turn - s.t1, s.t1 = turn - t0;
+    else
+      s.t0 = t0 + turn, s.t1 = s.t1 + turn;
   }
-  m.direction = flip(t.direction);
+  m.direction = map(t.direction);
   return m;
 }
-} // namespace
 
-Tool MirrorY(const Tool &t) { return Reflect(t, true); }
+// The mirror images about the x axis (y -> -y) and the y axis (x -> -x: the reflection, then half a turn).
+Tool MirrorY(const Tool &t) { return Transform(t, {true, 0}); }
 
-Tool MirrorX(const Tool &t) { return Reflect(t, false); }
+Tool MirrorX(const Tool &t) { return Transform(t, {true, 2}); }
 
 Tool BothSides(const Tool &t)
 {

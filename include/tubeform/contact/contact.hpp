@@ -104,6 +104,9 @@ public:
     for (size_t k = 0; k < tools.size() && k < tools_.size(); ++k) tools[k].stroke = tools_[k].stroke;
     tools_ = std::move(tools);
   }
+  // The node sets whose component along a direction the scene holds (ContactSpec::symmetry), in place of the
+  // set's (a pass that turns the tube turns the full model's pins).
+  void SetSymmetry(const std::vector<std::pair<std::string, Vec2>> &symmetry);
   // The stroke of the tools that follow the scene's (a force-controlled one keeps its own).
   void SetStroke(double stroke)
   {

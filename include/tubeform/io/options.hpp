@@ -78,6 +78,7 @@ struct Options {
   // A second pass after the springback: its stroke (0: none), its dies ("": the first pass's).
   double pass2_stroke = 0;
   std::string pass2_die_profile, pass2_lower_die;
+  double pass2_turn = 0; // the tube turned counter-clockwise before the second pass (degrees, quarter turns)
   double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
   double friction_tol = ContactParams{}.tol;
   double rmin_dphi = ContactParams{}.dphi_max;       // r6: largest fall of f_l / (mu f_n) towards stick in an increment
@@ -164,6 +165,14 @@ inline bool QuarterModel(const Options &opt)
 {
   const bool mirror = opt.lower_die == "mirror" && (opt.pass2_lower_die.empty() || opt.pass2_lower_die == "mirror");
   return opt.model == "quarter" || (opt.model == "auto" && mirror && opt.lower_die_motion == "mirror");
+}
+// The second pass's turn of the tube in quarter turns (-pass2_turn / 90; checked to be whole).
+inline int Pass2Quarters(const Options &opt) { return (int)std::lround(opt.pass2_turn / 90.0); }
+// The whole tube (-model full), or auto where neither the quarter nor the half is exact: the half's plane x = 0
+// is not a symmetry plane of a press turned by an odd number of quarter turns.
+inline bool FullModel(const Options &opt)
+{
+  return opt.model == "full" || (opt.model == "auto" && !QuarterModel(opt) && Pass2Quarters(opt) % 2 != 0);
 }
 
 } // namespace tf

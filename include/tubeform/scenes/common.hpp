@@ -23,27 +23,29 @@ PetscErrorCode QuarterSymmetry(Model &m);
 // The part of the tube a tool scene models: the quarter x, y >= 0, the half x >= 0, or the whole tube.
 enum class TubePart { Quarter, Half, Full };
 // C1 = x_max, C2 = y_max of the outer surface (the half model's C2 half its height, the full model's C1 half
-// its width) and their ratio.
-PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part = TubePart::Quarter);
+// its width) and their ratio. A pass that turned the tube measures in its press's frame: `press` maps the
+// tube's coordinates there (the inverse of the map that drew its dies).
+PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part = TubePart::Quarter, const SquareMap &press = {});
 // Collective: the outer-surface nodes of the whole mesh on every rank, along the surface by angle (contact
 // state, and the segment of the upper die, tool 0, a node touches). With `upper`, only the nodes that started
 // in the quarter x, y >= 0 (the half and full models' upper right quarter, on which the shape metrics are
-// measured as in the quarter model).
-PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper = false);
-// Collective: the lowest y of the outer surface (where a floor goes under the tube).
-PetscErrorCode LowestOuterY(Model &m, double &y);
+// measured as in the quarter model). Coordinates, and the quarter, in the press's frame (`press`).
+PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper = false, const SquareMap &press = {});
+// Collective: the lowest y of the outer surface in the press's frame (where a floor goes under the tube).
+PetscErrorCode LowestOuterY(Model &m, double &y, const SquareMap &press = {});
 
 // The half and full models' supports where no die holds the tube (scenes/pins.cpp).
-// Collective: the springback's pin (the tube's rigid motion along y): the local index of the inner node
-// nearest the x axis right of the y axis (a node on it keeps y = 0 in a symmetric case; the lowest input number
-// among equals), or -1 where another rank has it.
-PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin);
+// Collective: the springback's pin (the tube's rigid motion along the press's y, held along press.Inverse() of
+// (0, 1)): the local index of the inner node nearest the press's x axis on its positive side (a node on it
+// keeps y = 0 in a symmetric case; the lowest input number among equals), or -1 where another rank has it.
+PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin, const SquareMap &press = {});
 // A mesh node this close to the y axis (relative to its height) is on it.
 constexpr double kAxisPin = 1e-9;
-// Collective: the full model's pins, node set "axis": the outer nodes on the y axis at the tube's top and at
-// its bottom, whose x held (HoldAlong(m, "axis", 1, 0)) holds the tube's rotation and its motion along x
-// (exactly, in a press symmetric about the y axis: their x stays 0); an error on every rank if the mesh has none.
-PetscErrorCode MarkAxisPins(Model &m);
+// Collective: the full model's pins, node set "axis": the outer nodes on the press's y axis at the tube's top
+// and at its bottom, whose press x held (HoldAlong along press.Inverse() of (1, 0)) holds the tube's rotation
+// and its motion along the press's x (exactly, in a press symmetric about its y axis: their x stays 0); an
+// error on every rank if the mesh has none.
+PetscErrorCode MarkAxisPins(Model &m, const SquareMap &press = {});
 // The tube mesh of the options: structured (the part asked) or -mesh_file.
 std::string TubeMesh(const Options &opt, SerialMesh &mesh, TubePart part = TubePart::Quarter);
 // The history's stage: 0 up to lambda = 1, 1 up to 2 (unloading, or a scene's second stage), and so on.

@@ -38,6 +38,11 @@ Options PassOptions(const Options &opt, int pass);
 // use (of its right half).
 PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, bool full,
                              double floor_y, std::vector<Tool> &tools, int &flank, int &apex);
+// The map that draws a pass's dies, built in its press's frame, into the tube's: -pass2_turn turns the tube
+// before the second pass, so its dies turn the other way about the tube's centre. The quarter and the half model
+// draw the turned dies by the reflection that keeps their symmetry planes (the same press, by the tube's
+// symmetry): the quarter's quarter turn is the reflection about y = x, the half's half turn y -> -y.
+SquareMap PassTurn(const Options &opt, int pass, bool half, bool full);
 
 // Collective: refuses a stroke the dies of options `o` cannot take, naming `option`: past the parting faces,
 // past the point where the cavity between two V-dies is smaller than the tube's cross-section (plane strain

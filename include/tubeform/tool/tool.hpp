@@ -90,6 +90,23 @@ Tool BuildVDie(double ro, double r_apex, double u_close = 0, double r_edge = 0, 
 // `floor` a support with the body above it.
 Tool BuildFlatPlate(double y0, double x0, double x1, bool floor = false);
 
+// One of the eight maps of a square onto itself: the reflection y -> -y (if `reflect`), then q quarter turns
+// counter-clockwise about the origin. Exact: it only swaps and negates coordinates.
+struct SquareMap {
+  bool reflect = false;
+  int q = 0; // 0..3
+
+  static SquareMap Turn(int quarters) { return {false, ((quarters % 4) + 4) % 4}; }
+  bool identity() const { return !reflect && q == 0; }
+  Vec2 operator()(const Vec2 &v) const;
+  // The map that undoes this one (a reflection undoes itself).
+  SquareMap Inverse() const { return reflect ? *this : Turn(-q); }
+  // Its determinant: -1 for a reflection (a moment changes sign).
+  double det() const { return reflect ? -1.0 : 1.0; }
+};
+
+// A tool mapped by a SquareMap: its segments (their order kept), the body's side (the normals) and its motion.
+Tool Transform(const Tool &t, const SquareMap &map);
 // The mirror image of a tool about the x axis (y -> -y): its segments, the body's side and its motion.
 Tool MirrorY(const Tool &t);
 // The mirror image of a tool about the y axis (x -> -x).

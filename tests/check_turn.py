@@ -1,0 +1,136 @@
+"""Turning the tube between passes (-pass2_turn; issue 23, item 4).
+
+The paper's tube (options/squaring.opts, the fast preset): the V-dies press it to U = 3 mm, it springs back (the
+paper's unloading), is turned by a quarter turn and pressed again by 3 mm with the same dies, then springs back.
+The second pass's dies are drawn turned the other way about the tube's centre; its metrics and tool forces are
+in its press's frame (its die moving along -y).
+
+A. Two models, two constructions. The full model turns the dies by -90 degrees (their outlines, pins on the turned
+   axis, the springback's pin); the quarter model draws the same press by the reflection about y = x, which keeps
+   its symmetry planes (a quarter turn of a tube symmetric about both axes). Load, C1, C2, C/t and C1/C2 along
+   each press's stroke, and at the end of each springback, agree within tests/check_squaring.py's 1 vs 2 rank
+   bounds (1.3e-8 of the largest value up to U = 2.6 mm of the first press, 3e-5 beyond it and in the second
+   press, which starts from the collapsed wall that amplifies round-off; the models sum the same contributions
+   in another order; measured 6e-11 and 1.9e-8); the full model's internal work is four times the quarter's
+   within the same bounds. A die
+   turned the wrong way, a pin left on the first axis or a metric in the tube's frame moves these by O(1e-2) or
+   more.
+B. Half a turn is the same press (the tube after the first pass is symmetric about the x axis): the full model
+   (dies turned by 180 degrees) and the half model (dies drawn by y -> -y: the V-die below, its mirror above)
+   against the quarter model that does not turn, within A's bounds.
+C. What the turn does: the second pass's die moves along the tube's -x (its outline in the results: (-3, 0) mm at
+   the end); it first touches the tube at the stroke where the V-die's surface (computed here from its
+   dimensions) reaches the shape the first springback left, turned into its frame, within 1e-6 mm (measured
+   7e-13 mm); pressed across its first path the tube yields again (plastic work +0.45 %, bound > 0.2 %), where
+   pressing with the same die again retraces the elastic springback (+0.04 %, bound < 0.1 %).
+D. A checkpoint inside the turned second press of the full model, continued with -restart: the history of the run
+   never stopped within 1e-12 of each column's largest value (tests/check_restart.py's bound; a restart that
+   left the pins on the first pass's axis, or drew the dies unturned, would differ at O(1)). 1 vs 2 ranks: A's
+   bounds.
+"""
+import h5py
+import numpy as np
+
+from tfcheck import Checks, args, history_and_tools, out, run
+
+tf, mpirun, src = args()
+k = Checks("turn")
+U = 3.0
+BASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src}/options/preset-fast.opts",
+        "-error_estimate", 0, "-progress", 0, "-stroke", U, "-pass2_stroke", U]
+EARLY, LATE = 1.3e-8, 3e-5  # tests/check_squaring.py's 1 vs 2 rank bounds (docstring, A)
+GRID = np.linspace(0.2, U, 15)
+
+
+def press(name, extra, n=1):
+    run(tf, mpirun, n, BASE + extra + ["-output", out(name)], timeout=600)
+    return history_and_tools(out(name))
+
+
+def profile(h, stage, col):
+    """A press stage's column along its own stroke (the second pass's counted from its start)."""
+    s = h["stage"] == stage
+    return np.interp(GRID, h["stroke"][s] - (U if stage == 2 else 0), h[col][s])
+
+
+def end_of(h, stage, col):
+    return h[col][h["stage"] == stage][-1]
+
+
+def agree(a, b, cols, label, scale_b=1.0):
+    for col in cols:
+        top = max(np.abs(a[col]).max(), 1e-300)
+        rel = {st: np.abs(profile(a, st, col) - scale_b * profile(b, st, col)) / top for st in (0, 2)}
+        early = rel[0][GRID <= 2.6].max()
+        late = max(rel[0].max(), rel[2].max())
+        ends = max(abs(end_of(a, st, col) - scale_b * end_of(b, st, col)) / top for st in (0, 1, 2, 3))
+        k.check(early < EARLY and max(late, ends) < LATE,
+                f"{label}, {col}: the first press within {early:.1e} of its largest value up to U = 2.6 mm "
+                f"({EARLY:g}), both presses within {late:.1e}, each stage's end within {ends:.1e} ({LATE:g})")
+
+
+SHAPE = ("load", "x_max", "y_max", "c_over_t", "deviation_ratio")
+
+# A. The full model against the quarter, turned by 90 degrees.
+quarter = press("turn_quarter.h5", ["-pass2_turn", 90])
+full = press("turn_full.h5", ["-pass2_turn", 90, "-model", "full"])
+k.check(sorted(set(full["stage"].astype(int))) == [0, 1, 2, 3] and quarter["load"][quarter["stage"] == 2].max() > 0,
+        "two passes: stages 0-3 in the history, the turned second press carries a load")
+agree(quarter, full, SHAPE, "turned by 90 degrees, the full model against the quarter")
+agree(quarter, full, ("w_int",), "turned by 90 degrees, the full model's internal work against 4 x the quarter's",
+      scale_b=0.25)
+
+# B. Half a turn: the press of a pass that does not turn.
+plain = press("turn_none.h5", [])
+for model in ("full", "half"):
+    agree(plain, press(f"turn_{model}_180.h5", ["-pass2_turn", 180, "-model", model]), SHAPE,
+          f"turned by 180 degrees, the {model} model against the quarter model not turned")
+
+# C. Where the turned die moves, where it meets the tube, and what it does to it.
+moved = full["tools"]["pass2-V-die"][-1]
+k.check(np.abs(moved - [-U, 0]).max() < 1e-12,
+        f"the turned second pass's die moves along the tube's -x: its outline at the end displaced by "
+        f"({moved[0, 0]:g}, {moved[0, 1]:g}) mm")
+# The stroke at which the turned V-die (apex fillet r 3, flanks at 45 degrees touching the round tube's circle)
+# first reaches an outer node where the first springback left it, in the second press's frame (the tube's
+# coordinates turned by +90 degrees): min over the nodes of the die's lower surface above the node.
+RO, R_APEX = 17.5, 3.0
+with h5py.File(out("turn_full.h5"), "r") as h:
+    X, t = h["/geometry/vertices"][:], h["/time"][:, 0]
+    p = X + h["/vertex_fields/displacement_u"][int(np.argmin(np.abs(t - 2.0)))]
+p = p[np.abs(np.hypot(X[:, 0], X[:, 1]) - RO) < 1e-9]
+xs, ys = np.abs(-p[:, 1]), p[:, 0]
+apex_h = RO * np.sqrt(2)
+surface = np.where(xs >= R_APEX / np.sqrt(2), apex_h - xs,
+                   apex_h - R_APEX * np.sqrt(2) + np.sqrt(np.maximum(R_APEX**2 - xs**2, 0)))
+s2 = full["stage"] == 2
+first = full["stroke"][s2][np.argmax(full["n_contact"][s2] > 0)] - U
+miss = abs(first - (surface - ys).min())
+k.check(miss < 1e-6,
+        f"the turned die first touches the tube at stroke {first:.6f} mm, where its surface reaches the first "
+        f"springback's shape within {miss:.1e} mm (1e-6 mm: ten times the contact gap tolerance)")
+# Pressed across, the tube yields again; the same die again (the retrace of B's plain run) reloads the elastic
+# springback and ideally adds no plastic work.
+growth = {n: end_of(h, 2, "w_plastic") / end_of(h, 1, "w_plastic") - 1 for n, h in (("turned", quarter), ("plain", plain))}
+k.check(growth["turned"] > 2e-3 and growth["plain"] < 1e-3,
+        f"the turned press yields the tube again: plastic work +{growth['turned']:.2%} (more than 0.2 %), the "
+        f"same die again +{growth['plain']:.2%} (less than 0.1 %: the reload retraces the elastic springback)")
+
+# D. A checkpoint inside the turned press, continued; 1 vs 2 ranks.
+TURNED = ["-pass2_turn", 90, "-model", "full"]
+ck, part_name = out("turn_ck.h5"), "turn_part.h5"
+every = int(np.sum(full["stage"] <= 1)) + int(np.sum(full["stage"] == 2)) // 2
+run(tf, mpirun, 1, BASE + TURNED + ["-output", out(part_name), "-checkpoint", ck, "-checkpoint_every", every],
+    timeout=600)
+with h5py.File(ck, "r") as c:
+    lam = c["/run/lambda"][0]
+part = press(part_name, TURNED + ["-restart", ck])
+cols = [c for c in full if c != "tools"]
+same = all(part[c].shape == full[c].shape for c in cols)
+worst = max(np.abs(part[c] - full[c]).max() / max(np.abs(full[c]).max(), 1e-300) for c in cols) if same else 1
+k.check(same and worst <= 1e-12 and 2 < lam < 3,
+        f"the full model turned by 90 degrees, continued from a checkpoint inside the second press (lambda "
+        f"{lam:.3f}): the history within {worst:.1e} (1e-12)")
+two = press("turn_full_np2.h5", TURNED, 2)
+agree(full, two, SHAPE, "turned by 90 degrees, the full model on 1 vs 2 ranks")
+k.done()
