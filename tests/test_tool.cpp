@@ -14,12 +14,16 @@
 //     mapped tool, moving by its own (mapped) direction, meets the mapped
 //     point at the same r, and an original die moving by U meets a point
 //     rising towards it where the closed form says.
+// ClearanceBack (how far back a second pass's die starts to clear the tube) against
+// the closed forms of a plate and the V-die over a circle larger than the tube's.
 // The tools: the flat-bottomed die of options/dies/flat_bottom.profile (a
 // concave fillet between face and flank) and the V-die with a parting face
 // (a concave apex fillet, the tube inside its circle, and a convex edge
 // fillet).
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "check.hpp"
 #include "tubeform/tool/profile.hpp"
@@ -88,6 +92,35 @@ void CheckAllImages(const Tool &tool, const char *name, int &concave, int &conve
   std::printf("%s: %zu segments and their images under the 8 maps of a square\n", name, tool.segments.size());
 }
 
+// ClearanceBack against closed forms: points on a circle of radius R > Ro inside a die that touches the circle
+// of radius Ro at stroke 0. A flat plate at y = Ro moving down clears them moved up by R - Ro; the paper's
+// V-die (flanks at 45 degrees, their distance from the centre growing by b / sqrt 2 as it moves up by b) by
+// sqrt 2 (R - Ro), while the apex fillet (lowest point Ro sqrt 2 - 3 sqrt 2 + 3 = 21.26 mm) stays above R.
+void CheckClearance()
+{
+  const double ro = 17.5, r = ro + 0.3, tol = 1e-9;
+  std::vector<Vec2> circle;
+  for (int k = 0; k <= 720; ++k) circle.push_back({r * std::cos(k * M_PI / 360), r * std::sin(k * M_PI / 360)});
+  const Tool plate = BuildFlatPlate(ro, 0, 30), vdie = BuildVDie(ro, 3.0);
+  // (to the depth tol it allows, and the bisection's 1e-12 of the extent)
+  CHECK_NEAR(ClearanceBack(plate, circle, tol), r - ro - tol, 5e-11);
+  CHECK_NEAR(ClearanceBack(vdie, circle, tol), std::sqrt(2.0) * (r - ro - tol), 5e-11);
+  // Moved back by that, the nearest point is on the die's surface (within the tolerance), none inside it.
+  double nearest = kNever;
+  const Tool back = MovedBack(vdie, ClearanceBack(vdie, circle, tol));
+  for (const Vec2 &p : circle) {
+    const Projection pr = back.Project(p);
+    if (pr.segment >= 0) nearest = std::min(nearest, pr.gap);
+  }
+  CHECK(nearest >= -tol && nearest < 1e-9);
+  // Already clear: 0. A tool that does not move cannot clear points inside it: -1.
+  CHECK(ClearanceBack(vdie, {{0, 0}, {ro, 0}}, tol) == 0);
+  Tool fixed = plate;
+  fixed.direction = {0, 0};
+  CHECK(ClearanceBack(fixed, circle, tol) == -1);
+  std::printf("ClearanceBack: the plate and the V-die clear a circle of radius Ro + 0.3 as the closed forms say\n");
+}
+
 } // namespace
 
 int main()
@@ -101,5 +134,6 @@ int main()
   CheckAllImages(die, "flat-bottomed die", concave, convex);
   CheckAllImages(BuildVDie(17.5, 3.0, 2.0, 1.5), "V-die with a parting face", concave, convex);
   CHECK(concave == 2 && convex == 1); // both kinds of arc were sampled (the fillets and the V's apex: concave)
+  CheckClearance();
   return ReportChecks("test_tool");
 }

@@ -20,8 +20,9 @@
 namespace tf {
 
 namespace {
-// The layout of a checkpoint; a file of another version is refused (4: several tools; 5: a force-controlled one).
-constexpr double kCheckpointVersion = 5;
+// The layout of a checkpoint; a file of another version is refused (4: several tools; 5: a force-controlled one;
+// 6: the second pass's dies moved back to the tube).
+constexpr double kCheckpointVersion = 6;
 // Room a checkpoint is given before it is written: 8-byte numbers, fewer than
 // 64 per node, per cell and per history row (the state holds about 30, 40 and
 // 46), and 1 MB for HDF5's own.

@@ -101,7 +101,7 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
     inertia_ = std::make_unique<Inertia>();
     PetscCall(inertia_->Setup(body_, opt_.material.density, opt_.dynamics == Dynamics::Implicit));
   }
-  model_ = std::make_unique<Model>(Model{comm_, mesh_, system_, body_, nullptr});
+  model_ = std::make_unique<Model>(Model{comm_, mesh_, system_, body_, nullptr, quiet_});
   path_ = scene_->Path(opt_);
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(PETSC_SUCCESS);

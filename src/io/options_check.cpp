@@ -124,6 +124,12 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, const Options &opt)
              "-pass2_turn %g: the tube turns by quarter turns (a multiple of 90 degrees, -360 to 360)", opt.pass2_turn);
   PetscCheck(opt.pass2_stroke > 0 || opt.pass2_turn == 0, comm, PETSC_ERR_USER_INPUT,
              "-pass2_turn %g: give -pass2_stroke for the second pass", opt.pass2_turn);
+  PetscCheck(quarters % 2 == 0 || (opt.lower_die == "mirror" && opt.lower_die_motion == "mirror"), comm,
+             PETSC_ERR_USER_INPUT,
+             "-pass2_turn %g: the first pass's dies (-lower_die %s, -lower_die_motion %s) leave the tube symmetric "
+             "about the y axis only; a quarter turn would press it off that axis, which the model's pins cannot "
+             "hold (turn by 180 degrees, or press the first pass between mirrored dies)",
+             opt.pass2_turn, opt.lower_die.c_str(), opt.lower_die_motion.c_str());
   PetscCheck(opt.model != "half" || quarters % 2 == 0, comm, PETSC_ERR_USER_INPUT,
              "-pass2_turn %g with -model half: the half model's plane x = 0 is no symmetry plane of a press turned by "
              "90 degrees; use -model full (or auto)",

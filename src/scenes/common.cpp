@@ -94,6 +94,28 @@ PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part, const Squa
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+std::vector<std::pair<std::string, double>> PassMetrics(const History &h)
+{
+  std::vector<std::pair<std::string, double>> m;
+  const bool second = std::any_of(h.rows().begin(), h.rows().end(), [](const HistoryRow &r) { return r.stage >= 2; });
+  const int passes = second ? 2 : 1;
+  for (int p = 0; p < passes; ++p) {
+    const HistoryRow *loaded = &h.rows().front(), *unloaded = loaded;
+    for (const auto &r : h.rows()) {
+      if (r.stage == 2 * p) loaded = &r;
+      if (r.stage <= 2 * p + 1) unloaded = &r;
+    }
+    const std::string pre = p == 0 ? "" : "pass2_";
+    for (auto [name, row] : {std::pair{"loaded_", loaded}, {"unloaded_", unloaded}})
+      for (auto [what, v] : {std::pair{"c_over_t", row->c_over_t},
+                             {"deviation_ratio", row->deviation_ratio},
+                             {"x_max", row->x_max},
+                             {"y_max", row->y_max}})
+        m.push_back({pre + name + what, v});
+  }
+  return m;
+}
+
 // A half or full model's mesh reaches at least this share of its extent on one side of an axis on the other.
 constexpr double kHalfCover = 0.9;
 

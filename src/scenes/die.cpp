@@ -1,5 +1,6 @@
 #include "tubeform/scenes/die.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "tubeform/io/text_file.hpp"
@@ -111,6 +112,29 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
   // The second pass's dies by their own names (errors, and their outlines in the results).
   if (pass == 1)
     for (Tool &t : tools) t.name = "pass2-" + t.name;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, std::vector<Tool> &tools,
+                           std::vector<double> &back)
+{
+  PetscFunctionBeginUser;
+  std::vector<Vec2> points;
+  double extent = 0;
+  for (const auto &o : outer) points.push_back({o.x, o.y}), extent = std::max({extent, std::abs(o.x), std::abs(o.y)});
+  back.assign(tools.size(), 0.0);
+  for (size_t k = 0; k < tools.size(); ++k) {
+    // (a tenth of the contact set's start tolerance: the nearest node then starts on the die, in contact)
+    const double b = ClearanceBack(tools[k], points, 0.1 * kStartGap * (1 + extent));
+    if (b <= 0) continue; // (clear, or a tool that cannot clear the tube: the contact set says so)
+    back[k] = b;
+    tools[k] = MovedBack(tools[k], b);
+    if (say)
+      PetscCall(PetscPrintf(comm,
+                            "tubeform: the %s starts %.4g mm back along its motion, where it touches the tube (where "
+                            "the first pass's dies started it would be inside it)\n",
+                            tools[k].name.c_str(), b * std::hypot(tools[k].direction[0], tools[k].direction[1])));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

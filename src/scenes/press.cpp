@@ -118,7 +118,7 @@ public:
     tools.params = MakeContactParams(opt_, kVcriOfSpacing * spacing);
     spec_ = tools; // the second pass's set: the same nodes, supports and law
     spec_.tools.clear();
-    if (opt_.stroke_corner_radius > 0)
+    if (opt_.stroke_corner_radius > 0 && !m.quiet)
       PetscCall(PetscPrintf(m.comm,
                             "tubeform: stroke %.4f mm gives an outer corner radius of %.4g mm (perimeter-conserving "
                             "rounded square)\n",
@@ -148,6 +148,9 @@ public:
       ContactSpec spec = spec_;
       pass_ = 1;
       PetscCall(PassTools(m, 1, spec.tools));
+      std::vector<SurfacePoint> outer;
+      PetscCall(GatherOuter(m, outer));
+      PetscCall(StartOnTube(m.comm, !m.quiet, outer, spec.tools, start_back_));
       if (full_) {
         // A turned tube is held on its press's axes (as a restart chooses them: Persist).
         PetscCall(MarkAxisPins(m, Press()));
@@ -250,25 +253,7 @@ public:
 
   std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const override
   {
-    // Per pass, the loaded state (the last row of its press) and the unloaded one (the last of its release):
-    // loaded_* and unloaded_* the first pass's (as the run's summary), pass2_loaded_* and so on the second's.
-    std::vector<std::pair<std::string, double>> m;
-    const bool second = std::any_of(h.rows().begin(), h.rows().end(), [](const HistoryRow &r) { return r.stage >= 2; });
-    const int passes = second ? 2 : 1;
-    for (int p = 0; p < passes; ++p) {
-      const HistoryRow *loaded = &h.rows().front(), *unloaded = loaded;
-      for (const auto &r : h.rows()) {
-        if (r.stage == 2 * p) loaded = &r;
-        if (r.stage <= 2 * p + 1) unloaded = &r;
-      }
-      const std::string pre = p == 0 ? "" : "pass2_";
-      for (auto [name, row] : {std::pair{"loaded_", loaded}, {"unloaded_", unloaded}})
-        for (auto [what, v] : {std::pair{"c_over_t", row->c_over_t},
-                               {"deviation_ratio", row->deviation_ratio},
-                               {"x_max", row->x_max},
-                               {"y_max", row->y_max}})
-          m.push_back({pre + name + what, v});
-    }
+    std::vector<std::pair<std::string, double>> m = PassMetrics(h);
     if (opt_.die_force > 0)
       m.push_back({"final_force_target", opt_.die_force});
     else
@@ -284,11 +269,14 @@ public:
     PetscCall(ar.Value("unloading", unloading_));
     PetscCall(ar.Value("pass", pass_));
     PetscCall(ar.Value("floor_y", floor_y_));
+    PetscCall(ar.Values("pass2_back", start_back_));
     if (ar.reading() && pass_ == 1) {
       // A restart in the second pass: its dies' shapes for the contact set (its state, strokes included, read),
       // a turned tube's pins.
       std::vector<Tool> tools;
       PetscCall(PassTools(m, 1, floor_y_, tools));
+      for (size_t k = 0; k < tools.size() && k < start_back_.size(); ++k)
+        tools[k] = MovedBack(tools[k], start_back_[k]);
       m.contact->ReplaceTools(std::move(tools));
       if (full_) {
         PetscCall(MarkAxisPins(m, Press()));
@@ -333,14 +321,15 @@ private:
   static constexpr int kUpper = 0, kLower = 1;
   Options opt_;
   bool squaring_;
-  bool half_;           // the half model x >= 0 with both dies (or the full model)
-  bool full_;           // the full model: the whole tube, both dies across the y axis
-  double stroke2_ = 0;  // the second pass's stroke (0: one pass)
-  PetscInt pass_ = 0;   // the pass whose dies are in place
-  double floor_y_ = 0;  // where the floor of the pass in place is
-  ContactSpec spec_;    // the contact set's nodes, supports and law (for the second pass's dies)
-  PetscInt pin_ = -1;   // the half model's springback: the local node whose y is held (-1: none here)
-  bool pinned_ = false; // the pin holds (every rank alike)
+  bool half_;                      // the half model x >= 0 with both dies (or the full model)
+  bool full_;                      // the full model: the whole tube, both dies across the y axis
+  double stroke2_ = 0;             // the second pass's stroke (0: one pass)
+  PetscInt pass_ = 0;              // the pass whose dies are in place
+  double floor_y_ = 0;             // where the floor of the pass in place is
+  std::vector<double> start_back_; // how far back along its motion each second-pass die starts (StartOnTube)
+  ContactSpec spec_;               // the contact set's nodes, supports and law (for the second pass's dies)
+  PetscInt pin_ = -1;              // the half model's springback: the local node whose y is held (-1: none here)
+  bool pinned_ = false;            // the pin holds (every rank alike)
   double stroke_ = 0, back_ = 0;
   int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
   bool unloading_ = false;

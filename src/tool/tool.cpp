@@ -133,6 +133,37 @@ Tool Transform(const Tool &t, const SquareMap &map)
   return m;
 }
 
+Tool MovedBack(const Tool &t, double back)
+{
+  Tool m = t;
+  const Vec2 d = Scale(t.direction, -back);
+  for (Segment &s : m.segments) s.a = Add(s.a, d), s.b = Add(s.b, d), s.c = Add(s.c, d);
+  return m;
+}
+
+double ClearanceBack(const Tool &t, const std::vector<Vec2> &points, double tol)
+{
+  double extent = 0;
+  for (const Vec2 &p : points) extent = std::max(extent, std::hypot(p[0], p[1]));
+  const auto overlaps = [&](double back) {
+    const Tool moved = MovedBack(t, back);
+    for (const Vec2 &p : points) {
+      const Projection pr = moved.Project(p);
+      if (pr.segment >= 0 && pr.gap < -tol) return true;
+    }
+    return false;
+  };
+  if (!overlaps(0)) return 0;
+  const double speed = std::hypot(t.direction[0], t.direction[1]);
+  if (speed == 0 || overlaps(2 * extent / speed)) return -1;
+  double lo = 0, hi = 2 * extent / speed;
+  while (hi - lo > 1e-12 * extent / speed) {
+    const double mid = 0.5 * (lo + hi);
+    (overlaps(mid) ? lo : hi) = mid;
+  }
+  return hi;
+}
+
 // The mirror images about the x axis (y -> -y) and the y axis (x -> -x: the reflection, then half a turn).
 Tool MirrorY(const Tool &t) { return Transform(t, {true, 0}); }
 

@@ -46,6 +46,10 @@ constexpr double kAxisPin = 1e-9;
 // and its motion along the press's x (exactly, in a press symmetric about its y axis: their x stays 0); an
 // error on every rank if the mesh has none.
 PetscErrorCode MarkAxisPins(Model &m, const SquareMap &press = {});
+// A press's summary metrics per pass: the loaded state (the last row of its press, stage 2 p) and the unloaded
+// one (the last of its release): loaded_* and unloaded_* of C/t, C1/C2, x_max, y_max for the first pass (as the
+// run's summary), pass2_loaded_* and so on for the second.
+std::vector<std::pair<std::string, double>> PassMetrics(const History &h);
 // The tube mesh of the options: structured (the part asked) or -mesh_file.
 std::string TubeMesh(const Options &opt, SerialMesh &mesh, TubePart part = TubePart::Quarter);
 // The history's stage: 0 up to lambda = 1, 1 up to 2 (unloading, or a scene's second stage), and so on.

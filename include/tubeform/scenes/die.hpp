@@ -5,6 +5,7 @@
 #pragma once
 
 #include "tubeform/io/options.hpp"
+#include "tubeform/metrics/shape.hpp"
 #include "tubeform/tool/tool.hpp"
 
 namespace tf {
@@ -38,6 +39,12 @@ Options PassOptions(const Options &opt, int pass);
 // use (of its right half).
 PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, bool full,
                              double floor_y, std::vector<Tool> &tools, int &flank, int &apex);
+// Collective: the second pass's dies start where the first pass's started (on the round tube's circle) or,
+// where that is inside the tube's outer surface `outer` as the first springback left it (wider than round along
+// their motion: an oval, a turned square), moved back along their motion until they touch it (`back`: how far,
+// in units of stroke, each tool; with `say`, a line printed for each).
+PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, std::vector<Tool> &tools,
+                           std::vector<double> &back);
 // The map that draws a pass's dies, built in its press's frame, into the tube's: -pass2_turn turns the tube
 // before the second pass, so its dies turn the other way about the tube's centre. The quarter and the half model
 // draw the turned dies by the reflection that keeps their symmetry planes (the same press, by the tube's

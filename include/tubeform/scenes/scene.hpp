@@ -30,6 +30,7 @@ struct Model {
   System &system;
   Body &body;
   ContactSet *contact; // the driver's contact set; null when the scene has no tools
+  bool quiet = false;  // a companion run (the error estimate's): the scene prints no notes
 };
 
 // The load path: lambda runs over [0, end]; lambda 0 -> 1 takes `duration`

@@ -107,6 +107,13 @@ struct SquareMap {
 
 // A tool mapped by a SquareMap: its segments (their order kept), the body's side (the normals) and its motion.
 Tool Transform(const Tool &t, const SquareMap &map);
+// A tool moved back along its motion by `back` units of stroke (its segments at -back x direction).
+Tool MovedBack(const Tool &t, double back);
+// How far back along its motion (units of stroke, >= 0) a tool must start so that none of `points` lies more
+// than `tol` inside it: 0 if none does where it is; else the least such distance, to 1e-12 of the points'
+// extent (bisection between an overlapping start and a clear one). -1 if it overlaps them still when moved
+// back by twice their extent (a tool that does not move, or one whose motion leads into them).
+double ClearanceBack(const Tool &t, const std::vector<Vec2> &points, double tol);
 // The mirror image of a tool about the x axis (y -> -y): its segments, the body's side and its motion.
 Tool MirrorY(const Tool &t);
 // The mirror image of a tool about the y axis (x -> -x).
