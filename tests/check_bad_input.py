@@ -68,7 +68,7 @@ cases = [
     (["-scene", "squaring", "-die_force", "100", "-model", "half"], "-lower_die_motion fixed"),
     (["-scene", "squaring", "-die_force", "100", "-pass2_stroke", "2"], "not with a second pass"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "45"], "the tube turns by quarter turns"),
-    (["-scene", "squaring", "-pass2_turn", "90"], "-pass2_turn 90"),
+    (["-scene", "squaring", "-pass2_turn", "90"], "give -pass2_stroke"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "90", "-model", "half"], "use -model full"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "90", "-lower_die", "flat"], "off that axis"),
     (["-scene", "squaring", "-die_force", "100", "-unload", "withdraw"], "-unload withdraw moves the die back"),

@@ -84,6 +84,26 @@ void CheckImage(const Tool &tool, const SquareMap &map, int &concave, int &conve
   }
 }
 
+// The eight maps themselves: the images of the axes (the reflection y -> -y, then q quarter turns
+// counter-clockwise), each undone by its inverse, the determinant -1 for the reflections.
+void CheckMaps()
+{
+  const Vec2 ex = {1, 0}, ey = {0, 1};
+  const Vec2 turned[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}}; // (1, 0) after q quarter turns
+  for (bool reflect : {false, true})
+    for (int q = 0; q < 4; ++q) {
+      const SquareMap map{reflect, q};
+      const Vec2 x = map(ex), y = map(ey), v = {0.3, -1.7}, back = map.Inverse()(map(v));
+      CHECK(x[0] == turned[q][0] && x[1] == turned[q][1]);
+      // y: (0, 1), or (0, -1) reflected first, then turned: (1, 0) turned by q + 1 (q + 3) quarter turns
+      const Vec2 &ty = turned[(q + (reflect ? 3 : 1)) % 4];
+      CHECK(y[0] == ty[0] && y[1] == ty[1]);
+      CHECK(back[0] == v[0] && back[1] == v[1]);
+      CHECK(map.det() == (reflect ? -1.0 : 1.0));
+    }
+  CHECK(SquareMap::Turn(-1).q == 3 && SquareMap::Turn(5).q == 1);
+}
+
 // The tool under all eight maps (MirrorY and MirrorX are two of them).
 void CheckAllImages(const Tool &tool, const char *name, int &concave, int &convex)
 {
@@ -95,7 +115,8 @@ void CheckAllImages(const Tool &tool, const char *name, int &concave, int &conve
 // ClearanceBack against closed forms: points on a circle of radius R > Ro inside a die that touches the circle
 // of radius Ro at stroke 0. A flat plate at y = Ro moving down clears them moved up by R - Ro; the paper's
 // V-die (flanks at 45 degrees, their distance from the centre growing by b / sqrt 2 as it moves up by b) by
-// sqrt 2 (R - Ro), while the apex fillet (lowest point Ro sqrt 2 - 3 sqrt 2 + 3 = 21.26 mm) stays above R.
+// sqrt 2 (R - Ro), while the apex fillet (on the axis at Ro sqrt 2 - 3 sqrt 2 + 3 = 23.51 mm, its ends at
+// 22.63 mm) stays above R.
 void CheckClearance()
 {
   const double ro = 17.5, r = ro + 0.3, tol = 1e-9;
@@ -134,6 +155,7 @@ int main()
   CheckAllImages(die, "flat-bottomed die", concave, convex);
   CheckAllImages(BuildVDie(17.5, 3.0, 2.0, 1.5), "V-die with a parting face", concave, convex);
   CHECK(concave == 2 && convex == 1); // both kinds of arc were sampled (the fillets and the V's apex: concave)
+  CheckMaps();
   CheckClearance();
   return ReportChecks("test_tool");
 }

@@ -70,7 +70,7 @@ PetscErrorCode ContactSet::TotalForce(int k, double force[2], double *moment) co
 {
   double local[3] = {0, 0, 0}, global[3];
   PetscFunctionBeginUser;
-  const Vec2 o = tools_[k].Offset();
+  const Vec2 off = tools_[k].Offset(), o = {tools_[k].origin[0] + off[0], tools_[k].origin[1] + off[1]};
   for (PetscInt node : candidates_) {
     if (!contact_[node] || tool_of_[node] != k || !mesh_->node_owned[node]) continue;
     const Vec2 fc = NodeForce(node, true), x = Position(node);

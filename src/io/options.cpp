@@ -317,7 +317,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       opt.die_force));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
                       "squaring: a second pass after the springback: press again to this stroke (mm, from the second "
-                      "pass's die touching the round tube's circle; 0: one pass), then spring back",
+                      "pass's dies' start: on the round tube's circle, or moved back to where they touch the tube; 0: "
+                      "one pass), then spring back",
                       opt.pass2_stroke));
   PetscCall(read.String(PetscOptionsObject, "-pass2_die_profile",
                         "squaring: the second pass's upper die from a profile file (default: the first pass's die)",

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tubeform/contact/contact.hpp"
 #include "tubeform/io/text_file.hpp"
 #include "tubeform/tool/profile.hpp"
 
@@ -126,7 +127,11 @@ PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoi
   for (size_t k = 0; k < tools.size(); ++k) {
     // (a tenth of the contact set's start tolerance: the nearest node then starts on the die, in contact)
     const double b = ClearanceBack(tools[k], points, 0.1 * kStartGap * (1 + extent));
-    if (b <= 0) continue; // (clear, or a tool that cannot clear the tube: the contact set says so)
+    PetscCheck(b >= 0, comm, PETSC_ERR_USER_INPUT,
+               "the %s would start inside the tube as the first springback left it, and cannot be moved back along "
+               "its motion clear of it (a die that stays in place, -lower_die_motion fixed, is drawn where it is)",
+               tools[k].name.c_str());
+    if (b == 0) continue;
     back[k] = b;
     tools[k] = MovedBack(tools[k], b);
     if (say)

@@ -43,6 +43,17 @@ PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper,
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+void OrderAroundSide(std::vector<SurfacePoint> &all, const long ends[2])
+{
+  double mid[2] = {0, 0};
+  for (const auto &o : all)
+    if (o.id == ends[0] || o.id == ends[1]) mid[0] += o.x, mid[1] += o.y;
+  const double at = std::atan2(mid[1], mid[0]);
+  const auto around = [at](const SurfacePoint &o) { return std::remainder(std::atan2(o.y, o.x) - at, 2 * M_PI); };
+  std::stable_sort(all.begin(), all.end(),
+                   [&](const SurfacePoint &a, const SurfacePoint &b) { return around(a) < around(b); });
+}
+
 PetscErrorCode LowestOuterY(Model &m, double &y, const SquareMap &press)
 {
   double low = 0, lowest;

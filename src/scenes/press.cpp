@@ -11,7 +11,9 @@
 //   withdraw: the tool moves back and releases the nodes one by one (r5).
 // With -pass2_stroke, a second pass after the paper's unloading: lambda in
 // [2, 3] presses the second pass's dies (-pass2_die_profile, -pass2_lower_die)
-// from their start, lambda in [3, 4] springs back again.
+// from their start, lambda in [3, 4] springs back again; -pass2_turn turns the
+// tube by quarter turns before it (its dies drawn turned the other way, its
+// metrics and tool forces in its press's frame: die.hpp, PassTurn).
 // With -die_force the upper die is force-controlled: its punch load rises
 // from 0 to the force over the press, and its stroke is the outcome.
 // History: stroke = tool stroke U (mm; half the dies' closing; over two passes
@@ -100,6 +102,7 @@ public:
     tools.candidates = "outer";
     // The half tube between both dies is mirrored about the y axis only.
     if (full_) {
+      if (stroke2_ > 0) PetscCall(MarkAxisPins(m, PassMap(1).Inverse())); // (the second pass's axis: checked now)
       PetscCall(MarkAxisPins(m));
       tools.symmetry = {{"axis", AxisHeld()}}; // (held by the scene: Load)
     } else if (half_)
@@ -162,10 +165,10 @@ public:
       PetscCall(m.contact->Initialize());
       PetscFunctionReturn(PETSC_SUCCESS);
     }
-    // A press that ended without touching the tube (its dies start where the first pass's started).
+    // A press that ended without touching the tube (a stroke shorter than the way to it).
     PetscInt touching;
     PetscCall(m.contact->Count(touching));
-    if (touching == 0)
+    if (touching == 0 && !m.quiet)
       PetscCall(PetscPrintf(m.comm,
                             "tubeform: warning: the %s pass's dies never touched the tube (their stroke %g mm is "
                             "shorter than the way to it): its shape is the last springback's\n",
@@ -203,7 +206,7 @@ public:
       PetscCall(CheckForceReach(m.comm, opt_, squaring_, m.contact->tool(kUpper).stroke));
     if (full_) PetscCall(HoldAlong(m, "axis", AxisHeld()[0], AxisHeld()[1])); // (the pins: scenes/pins.cpp)
     // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
-    // holds the tube's rigid motion along y.
+    // holds the tube's rigid motion along the press's y.
     if (pinned_ && !unloading_) {
       // The second pass of the half model: the pin holds the tube until its dies do.
       PetscInt touching;
@@ -328,7 +331,7 @@ private:
   double floor_y_ = 0;             // where the floor of the pass in place is
   std::vector<double> start_back_; // how far back along its motion each second-pass die starts (StartOnTube)
   ContactSpec spec_;               // the contact set's nodes, supports and law (for the second pass's dies)
-  PetscInt pin_ = -1;              // the half model's springback: the local node whose y is held (-1: none here)
+  PetscInt pin_ = -1;              // the half model's springback: the local node whose press y is held (-1: none here)
   bool pinned_ = false;            // the pin holds (every rank alike)
   double stroke_ = 0, back_ = 0;
   int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
@@ -365,7 +368,8 @@ private:
   // The full model's pins hold the tube along the press's x.
   Vec2 AxisHeld() const { return PassMap(pass_)({1, 0}); }
 
-  // The half and full models' springback: one node holds the tube's rigid motion along y (scenes/pins.cpp).
+  // The half and full models' springback: one node holds the tube's rigid motion along the press's y
+  // (scenes/pins.cpp).
   PetscErrorCode ChoosePin(Model &m)
   {
     PetscFunctionBeginUser;
@@ -402,11 +406,13 @@ private:
     const SideSpan side = unloading_ ? SideSpan{} : SideOnFlank(all, flank, flank_, apex_, 0.0);
     // Without a side on the flank (springback; the second pass's die still on its way to the tube), C is the
     // chord's gap of the side the last one left.
-    // (the whole surface: a pass that turned the tube finds the side the first one left in another quarter)
     if (unloading_ || (pass_ == 1 && side.empty() && side_ends_[0] >= 0)) {
+      // (the half and full models: the whole surface, as a pass that turned the tube finds the side the first
+      // one left in another quarter)
       std::vector<SurfacePoint> whole;
       if (half_) PetscCall(GatherOuter(m, whole, false, Press()));
-      const std::vector<SurfacePoint> &on = half_ ? whole : all;
+      std::vector<SurfacePoint> &on = half_ ? whole : all;
+      if (half_) OrderAroundSide(on, side_ends_);
       size_t ends[2] = {on.size(), on.size()};
       for (size_t k = 0; k < on.size(); ++k)
         for (int e = 0; e < 2; ++e)

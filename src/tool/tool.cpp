@@ -129,7 +129,7 @@ Tool Transform(const Tool &t, const SquareMap &map)
     else
       s.t0 = t0 + turn, s.t1 = s.t1 + turn;
   }
-  m.direction = map(t.direction);
+  m.direction = map(t.direction), m.origin = map(t.origin);
   return m;
 }
 
@@ -138,6 +138,7 @@ Tool MovedBack(const Tool &t, double back)
   Tool m = t;
   const Vec2 d = Scale(t.direction, -back);
   for (Segment &s : m.segments) s.a = Add(s.a, d), s.b = Add(s.b, d), s.c = Add(s.c, d);
+  m.origin = Add(t.origin, d);
   return m;
 }
 

@@ -39,10 +39,11 @@ Options PassOptions(const Options &opt, int pass);
 // use (of its right half).
 PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, bool full,
                              double floor_y, std::vector<Tool> &tools, int &flank, int &apex);
-// Collective: the second pass's dies start where the first pass's started (on the round tube's circle) or,
+// The second pass's dies start where the first pass's started (on the round tube's circle) or,
 // where that is inside the tube's outer surface `outer` as the first springback left it (wider than round along
 // their motion: an oval, a turned square), moved back along their motion until they touch it (`back`: how far,
-// in units of stroke, each tool; with `say`, a line printed for each).
+// in units of stroke, each tool; with `say`, a line printed for each); an error on every rank for a die that
+// cannot be moved back clear of the tube (one that stays: its motion is none).
 PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, std::vector<Tool> &tools,
                            std::vector<double> &back);
 // The map that draws a pass's dies, built in its press's frame, into the tube's: -pass2_turn turns the tube

@@ -45,6 +45,7 @@ public:
   Vec2 direction{0, -1};         // motion per unit stroke
   double stroke = 0;             // current stroke
   bool pad = false;              // force-controlled: its stroke is an unknown of each increment (ContactSet)
+  Vec2 origin{};                 // the frame's origin at stroke 0: the tube's centre, or moved with the die (MovedBack)
 
   Vec2 Offset() const { return {stroke * direction[0], stroke * direction[1]}; }
   // Closest point of the surface at the current stroke. Points whose
