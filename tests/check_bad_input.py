@@ -71,6 +71,9 @@ cases = [
     (["-scene", "squaring", "-pass2_turn", "90"], "give -pass2_stroke"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "90", "-model", "half"], "use -model full"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "90", "-lower_die", "flat"], "off that axis"),
+    (["-scene", "squaring", "-side_die", "flat", "-pass2_stroke", "2"], "side dies press in one pass"),
+    (["-scene", "squaring", "-side_die", out("none.profile")], "-side_die"),
+    (["-scene", "tension", "-side_die", "flat"], "presses with no dies"),
     (["-scene", "squaring", "-die_force", "100", "-unload", "withdraw"], "-unload withdraw moves the die back"),
     (["-scene", "squaring", "-die_force", "100", "-stroke_corner_radius", "4"], "-stroke_corner_radius"),
     (["-scene", "squaring", "-die_force", "100", "-die_profile", out("above.profile")],
@@ -131,7 +134,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 74 and len(selected) == 5, f"{len(cases)} cases on 1 rank (74), {len(selected)} on 2 (5)")
+k.check(len(cases) == 77 and len(selected) == 5, f"{len(cases)} cases on 1 rank (77), {len(selected)} on 2 (5)")
 
 
 def refused(np_, extra, needle):

@@ -75,6 +75,8 @@ const std::vector<HistoryColumn> &HistoryColumns()
     // (added last: a reader of the CSV by position finds the older columns where they were)
     {"lower_fx", &HistoryRow::lower_fx, "half model: force of the model on the lower die, x (N/mm; 0 in a quarter)"},
     {"lower_fy", &HistoryRow::lower_fy, "half model: force of the model on the lower die, y (N/mm)"},
+    {"side_load", &HistoryRow::side_load,
+     "-side_die: each side die's force along its motion, on the whole tube (N/mm; 0 without)"},
     {"lower_moment", &HistoryRow::lower_moment,
      "half model: moment of the model's forces on the lower die about its frame's origin (N mm/mm)"},
   };

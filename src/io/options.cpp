@@ -304,21 +304,17 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                        "tool scenes: the lower die moves up by the stroke U (mirror) or stays (fixed; the upper die "
                        "then travels 2 U, so U is half the dies' closing either way)",
                        {"mirror", "fixed"}, opt.lower_die_motion));
-  PetscCall(ChooseWord(
-    PetscOptionsObject, read, "-model",
-    "tool scenes: the part of the tube modelled: quarter (symmetric about both axes), half "
-    "(about the y axis), full (the whole tube, its rotation held by the x of its outer nodes on "
-    "the y axis), or auto (the quarter when the lower die mirrors the upper one, else the half; the full for "
-    "a quarter turn of the tube, -pass2_turn, that the half cannot model)",
-    {"auto", "quarter", "half", "full"}, opt.model));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
+                       "tool scenes: the part of the tube modelled: quarter, half (x >= 0), full (held by the x of "
+                       "its outer nodes on the y axis), auto (the quarter where exact, else the half or the full)",
+                       {"auto", "quarter", "half", "full"}, opt.model));
   PetscCall(read.Real(PetscOptionsObject, "-die_force",
                       "tool scenes: force control: the upper die presses with a punch load rising from 0 to this "
                       "(N/mm) over the press, its stroke an unknown of each increment (0: the stroke -stroke)",
                       opt.die_force));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
-                      "squaring: a second pass after the springback: press again to this stroke (mm, from the second "
-                      "pass's dies' start: on the round tube's circle, or moved back to where they touch the tube; 0: "
-                      "one pass), then spring back",
+                      "squaring: a second pass after the springback: press again by this stroke (mm, from the dies' "
+                      "start, where they touch the tube at the latest; 0: one pass), then spring back",
                       opt.pass2_stroke));
   PetscCall(read.String(PetscOptionsObject, "-pass2_die_profile",
                         "squaring: the second pass's upper die from a profile file (default: the first pass's die)",
@@ -327,6 +323,10 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                         "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first "
                         "pass's -lower_die)",
                         opt.pass2_lower_die));
+  PetscCall(read.String(PetscOptionsObject, "-side_die",
+                        "tool scenes: side dies pressing by the stroke U: none, mirror (the upper die turned to the "
+                        "side), flat (a plate), or a profile file drawn as an upper die (docs/dies.md)",
+                        opt.side_die));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_turn",
                       "squaring: the tube turned counter-clockwise by this many degrees (a multiple of 90) before the "
                       "second pass: its dies press along the turned axis (docs/dies.md)",

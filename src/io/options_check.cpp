@@ -78,11 +78,12 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, const Options &opt)
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
   const bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != "auto" ||
                      opt.pass2_stroke != 0 || !opt.pass2_die_profile.empty() || !opt.pass2_lower_die.empty() ||
-                     opt.pass2_turn != 0 || opt.die_force != 0;
-  PetscCheck(press || !asked, comm, PETSC_ERR_USER_INPUT,
-             "-lower_die, -lower_die_motion, -model, -pass2_*, -die_force: the %s scene presses with no dies (these "
-             "are the squaring and flattening scenes' options)",
-             opt.scene.c_str());
+                     opt.pass2_turn != 0 || opt.die_force != 0 || opt.side_die != "none";
+  PetscCheck(
+    press || !asked, comm, PETSC_ERR_USER_INPUT,
+    "-lower_die, -lower_die_motion, -model, -pass2_*, -die_force, -side_die: the %s scene presses with no dies (these "
+    "are the squaring and flattening scenes' options)",
+    opt.scene.c_str());
   PetscCheck(opt.die_force >= 0 && std::isfinite(opt.die_force), comm, PETSC_ERR_USER_INPUT,
              "-die_force %g: the punch load must be a non-negative number of N/mm (0: the die follows -stroke)",
              opt.die_force);
@@ -118,6 +119,14 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, const Options &opt)
              opt.pass2_stroke, opt.unload.c_str());
   PetscCheck(opt.pass2_stroke > 0 || (opt.pass2_die_profile.empty() && opt.pass2_lower_die.empty()), comm,
              PETSC_ERR_USER_INPUT, "-pass2_die_profile, -pass2_lower_die: give -pass2_stroke for the second pass");
+  if (opt.side_die != "none") {
+    PetscCheck(!opt.side_die.empty(), comm, PETSC_ERR_USER_INPUT,
+               "-side_die: give none, mirror, flat or a profile file");
+    PetscCheck(opt.pass2_stroke == 0 && opt.die_force == 0 && opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
+               "-side_die %s: side dies press in one pass by the stroke: not with -pass2_stroke, -die_force or "
+               "-unload withdraw",
+               opt.side_die.c_str());
+  }
   const int quarters = Pass2Quarters(opt);
   PetscCheck(std::isfinite(opt.pass2_turn) && opt.pass2_turn == 90.0 * quarters && std::abs(quarters) <= 4, comm,
              PETSC_ERR_USER_INPUT,

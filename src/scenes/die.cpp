@@ -80,6 +80,36 @@ PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &uppe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, bool squaring, bool half, bool full,
+                           std::vector<Tool> &tools)
+{
+  Tool drawn; // drawn as an upper die (its right half), then turned to the side by the reflection about y = x
+  PetscFunctionBeginUser;
+  const bool plate = o.side_die == "flat" || (o.side_die == "mirror" && !squaring);
+  if (plate) {
+    // (the whole plate in the half and full models, which reach below the x axis)
+    drawn = BuildFlatPlate(o.tube_ro, half ? -(1 + kPlateReach) * o.tube_ro : -kPlateOverhang * o.tube_ro,
+                           (1 + kPlateReach) * o.tube_ro);
+  } else if (o.side_die == "mirror") {
+    Die die;
+    PetscCall(BuildDie(comm, o, die));
+    drawn = half ? BothSides(die.tool) : die.tool;
+  } else {
+    PetscCall(ReadProfileTool(comm, "-side_die", o.side_die, drawn));
+    drawn = half ? BothSides(drawn) : drawn;
+  }
+  Tool right = Transform(drawn, {true, 1}); // (x, y) -> (y, x): moving along -x by the stroke
+  right.name = "side-" + std::string(plate ? "plate" : o.side_die == "mirror" ? tools[0].name : "die");
+  right.direction = {-1.0, 0.0};
+  tools.push_back(right);
+  if (full) {
+    Tool left = MirrorX(right);
+    left.name = "left-" + right.name;
+    tools.push_back(left);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 Options PassOptions(const Options &opt, int pass)
 {
   Options o = opt;
@@ -110,6 +140,7 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
     if (o.lower_die_motion == "fixed") tools[0].direction = {0.0, -2.0}; // the dies close by 2 U either way
     tools.push_back(lower);
   }
+  if (pass == 0 && o.side_die != "none") PetscCall(AddSideDies(comm, o, squaring, half, full, tools));
   // The second pass's dies by their own names (errors, and their outlines in the results).
   if (pass == 1)
     for (Tool &t : tools) t.name = "pass2-" + t.name;
@@ -154,7 +185,7 @@ SquareMap PassTurn(const Options &opt, int pass, bool half, bool full)
 double DieReach(const Options &o, bool squaring)
 {
   const double ro = o.tube_ro, ri = ro - o.tube_t;
-  if (squaring && (!o.die_profile.empty() || o.lower_die != "mirror")) return kNever;
+  if (squaring && (!o.die_profile.empty() || o.lower_die != "mirror" || o.side_die != "none")) return kNever;
   if (!squaring) return ro - o.tube_t;
   const VAngle v(o.die_angle);
   const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
@@ -176,8 +207,8 @@ PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, dou
 {
   PetscFunctionBeginUser;
   const double ro = o.tube_ro, ri = ro - o.tube_t;
-  if (squaring && (!o.die_profile.empty() || o.lower_die != "mirror")) {
-    // A profile of one's own: no closed form of its cavity; a stroke that closes it fails in the run.
+  if (squaring && (!o.die_profile.empty() || o.lower_die != "mirror" || o.side_die != "none")) {
+    // A profile of one's own, side dies: no closed form of the cavity; a stroke that closes it fails in the run.
   } else if (squaring) {
     // The cavity is a rhombus of half-diagonals D = h - U and D tan(half): area 2 D^2 tan(half).
     const VAngle v(o.die_angle);

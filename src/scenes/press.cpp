@@ -243,6 +243,11 @@ public:
     Vec2 f = Press()({force[0], force[1]});
     row.load = -LoadPerModelForce() * f[1]; // (the punch load on the whole tube)
     row.tool_fx = -f[0], row.tool_fy = -f[1], row.tool_moment = -Press().det() * moment;
+    if (opt_.side_die != "none" && !unloading_) {
+      // (the right side die: whole in the half and full models, its upper half in the quarter)
+      PetscCall(m.contact->TotalForce(half_ ? kLower + 1 : kLower, force, nullptr));
+      row.side_load = -(half_ ? 1.0 : 2.0) * force[0];
+    }
     if (half_ && !unloading_) {
       PetscCall(m.contact->TotalForce(kLower, force, &moment));
       f = Press()({force[0], force[1]});

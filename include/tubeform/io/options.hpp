@@ -78,7 +78,8 @@ struct Options {
   // A second pass after the springback: its stroke (0: none), its dies ("": the first pass's).
   double pass2_stroke = 0;
   std::string pass2_die_profile, pass2_lower_die;
-  double pass2_turn = 0; // the tube turned counter-clockwise before the second pass (degrees, quarter turns)
+  std::string side_die = "none"; // side dies pressing along x by the stroke: none, mirror, flat or a profile file
+  double pass2_turn = 0;         // the tube turned counter-clockwise before the second pass (degrees, quarter turns)
   double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
   double friction_tol = ContactParams{}.tol;
   double rmin_dphi = ContactParams{}.dphi_max;       // r6: largest fall of f_l / (mu f_n) towards stick in an increment
