@@ -19,7 +19,8 @@ B. The half and the full model (the right plate whole, its mirror on the left in
    3e-5 beyond, where round-off grows as the flat contacts spread node by node (the same press summed in another
    order; measured 8.8e-9 and 1.3e-7), and against the quarter at the end of the press within 1e-3 (measured 6.9e-5:
    the quarter takes the simultaneous first touches of the two plates in another order, one increment fewer,
-   and the elastic-plastic path follows its steps). Their side plates' outlines move by (-U, 0) and (U, 0).
+   and the elastic-plastic path follows its steps). Their side plates' outlines move by (-U, 0) and (U, 0). The
+   half model on 1 vs 2 ranks within the same bounds as half vs full.
 C. The paper's V-dies with side plates (options/squaring.opts, fast preset, U = 3 mm): the plates stop the tube's
    widening: touching the round tube from the start, they hold its half-width at their x = Ro - U within 1e-4 mm
    at every increment (tests/check_squaring.py's penetration bound for steps accepted with a residual; measured 6.7e-6 mm in the
@@ -76,6 +77,13 @@ moved = {n: full["tools"][n][-1][0] for n in ("side-plate", "left-side-plate")}
 k.check(np.abs(moved["side-plate"] - [-2, 0]).max() < 1e-12 and np.abs(moved["left-side-plate"] - [2, 0]).max() < 1e-12,
         f"the full model's side plates move by ({moved['side-plate'][0]:g}, {moved['side-plate'][1]:g}) and "
         f"({moved['left-side-plate'][0]:g}, {moved['left-side-plate'][1]:g}) mm")
+
+two = press("side_half_np2.h5", ["-stroke", 2, "-model", "half"], 2)
+rel = [np.abs(half[c] - two[c]) / np.abs(half[c]).max() for c in cols] if two["load"].shape == half["load"].shape \
+    else [np.ones(1)]
+early, late = max(r[half["stroke"] <= 1.5].max() if len(r) > 1 else 1 for r in rel), max(r.max() for r in rel)
+k.check(early < 1.3e-8 and late < 3e-5, f"side plates, the half model on 1 vs 2 ranks: every row within {early:.1e} up "
+        f"to U = 1.5 mm (1.3e-8), {late:.1e} to the end (3e-5)")
 
 # C. V-dies and side plates.
 SQ = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src}/options/preset-fast.opts",
