@@ -74,6 +74,11 @@ cases = [
     (["-scene", "squaring", "-side_die", "flat", "-pass2_stroke", "2"], "side dies press in one pass"),
     (["-scene", "squaring", "-side_die", out("none.profile")], "-side_die"),
     (["-scene", "tension", "-side_die", "flat"], "presses with no dies"),
+    (["-scene", "squaring", "-stroke_path", "3,-1,4"], "-stroke_path: -1"),
+    (["-scene", "squaring", "-stroke_path", "3,3,4"], "other than the one before"),
+    (["-scene", "squaring", "-stroke_path", "3,0"], "must be positive"),
+    (["-scene", "squaring", "-stroke_path", "3,4", "-die_force", "10"], "-stroke_path: not with -die_force"),
+    (["-scene", "column", "-stroke_path", "1,2"], "-stroke_path: the column scene"),
     (["-scene", "squaring", "-die_force", "100", "-unload", "withdraw"], "-unload withdraw moves the die back"),
     (["-scene", "squaring", "-die_force", "100", "-stroke_corner_radius", "4"], "-stroke_corner_radius"),
     (["-scene", "squaring", "-die_force", "100", "-die_profile", out("above.profile")],
@@ -134,7 +139,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 77 and len(selected) == 5, f"{len(cases)} cases on 1 rank (77), {len(selected)} on 2 (5)")
+k.check(len(cases) == 82 and len(selected) == 5, f"{len(cases)} cases on 1 rank (82), {len(selected)} on 2 (5)")
 
 
 def refused(np_, extra, needle):

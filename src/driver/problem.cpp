@@ -179,8 +179,11 @@ PetscErrorCode Problem::Run()
   const double end = path_.end;
   std::vector<double> breaks = path_.breakpoints;
   breaks.push_back(end);
+  std::vector<double> ends = breaks; // (where an increment must end: the stages' and the kinks inside them)
+  ends.insert(ends.end(), path_.kinks.begin(), path_.kinks.end());
+  std::sort(ends.begin(), ends.end());
   at_.started.assign(breaks.size(), 0); // a checkpoint's must have as many stages
-  OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / opt_.stroke : 0);
+  OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / Travel(opt_) : 0);
   if (!opt_.restart.empty())
     PetscCall(ReadCheckpoint(writer, output)); // the state and the results so far
   else
@@ -220,7 +223,7 @@ PetscErrorCode Problem::Run()
         PetscCall(EndForces(lambda));
       }
     const double next_break =
-      *std::find_if(breaks.begin(), breaks.end(), [&](double b) { return b > lambda + kLambdaTol; });
+      *std::find_if(ends.begin(), ends.end(), [&](double b) { return b > lambda + kLambdaTol; });
     const double dl_stage = scene_->Unloading(lambda) ? dl_unload : dl_load;
     const double dl = std::min(dl_stage, next_break - lambda);
 

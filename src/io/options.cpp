@@ -276,10 +276,12 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       opt.pressure_u));
   PetscCall(read.Real(PetscOptionsObject, "-stroke",
                       "Final stroke U (mm): tool travel, or the prescribed end shortening of the column", opt.stroke));
-  PetscCall(read.Real(PetscOptionsObject, "-stroke_corner_radius",
-                      "Choose the stroke by the paper's rule: outer corner radius (mm) of the "
-                      "perimeter-conserving rounded square (e.g. 4 t)",
+  PetscCall(read.Real(PetscOptionsObject, "-stroke_corner_radius", "The paper's rule: the rounded square's corner (mm)",
                       opt.stroke_corner_radius));
+  PetscCall(RealList(PetscOptionsObject, read, "-stroke_path",
+                     "tool scenes: the die's strokes in turn (mm, >= 0), at the punch speed: press, back off, press "
+                     "again (in place of -stroke: the last is the final stroke)",
+                     kMaxPathPoints, opt.stroke_path));
   PetscCall(read.String(PetscOptionsObject, "-die_profile",
                         "squaring: the upper die's right half from a DXF file (*.dxf) or a text profile of lines and "
                         "arcs (docs/dies.md) in "

@@ -72,7 +72,7 @@ PetscErrorCode CheckHill(MPI_Comm comm, const MaterialParams &m)
 }
 
 // The lower die, the model and the second pass (the tool scenes').
-PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, const Options &opt)
+PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
@@ -126,6 +126,23 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, const Options &opt)
                "-side_die %s: side dies press in one pass by the stroke: not with -pass2_stroke, -die_force or "
                "-unload withdraw",
                opt.side_die.c_str());
+  }
+  if (!opt.stroke_path.empty()) {
+    // The die goes to each stroke in turn at the punch speed; the last is the press's final stroke.
+    PetscCheck(press, comm, PETSC_ERR_USER_INPUT, "-stroke_path: the %s scene presses with no dies", opt.scene.c_str());
+    double at = 0;
+    for (double u : opt.stroke_path) {
+      PetscCheck(std::isfinite(u) && u >= 0 && u != at, comm, PETSC_ERR_USER_INPUT,
+                 "-stroke_path: %g after %g: each stroke must be a non-negative number of mm, other than the one "
+                 "before it (the path starts at 0)",
+                 u, at);
+      at = u;
+    }
+    PetscCheck(opt.stroke_path.back() > 0, comm, PETSC_ERR_USER_INPUT,
+               "-stroke_path: the last stroke is the press's final one and must be positive");
+    PetscCheck(opt.die_force == 0 && opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+               "-stroke_path: not with -die_force or -stroke_corner_radius");
+    opt.stroke = opt.stroke_path.back();
   }
   const int quarters = Pass2Quarters(opt);
   PetscCheck(std::isfinite(opt.pass2_turn) && opt.pass2_turn == 90.0 * quarters && std::abs(quarters) <= 4, comm,

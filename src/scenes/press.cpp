@@ -27,6 +27,7 @@
 #include "tubeform/scenes/common.hpp"
 #include "tubeform/scenes/contact_params.hpp"
 #include "tubeform/scenes/die.hpp"
+#include "tubeform/scenes/stroke_path.hpp"
 
 namespace tf {
 
@@ -41,6 +42,7 @@ public:
                                            : opt.stroke;
     back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
     stroke2_ = opt.pass2_stroke;
+    path_ = StrokePath(opt.stroke_path, stroke_);
   }
 
   std::vector<std::string> BoundarySets() const override
@@ -58,9 +60,9 @@ public:
   }
   LoadPath Path(const Options &opt) const override
   {
-    if (stroke2_ > 0)
-      return {kSecondRelease + 1, stroke_ / opt.punch_speed, {kFirstRelease, kSecondPress, kSecondRelease}};
-    return {opt_.unload == "none" ? kFirstRelease : kFirstRelease + 1, stroke_ / opt.punch_speed, {kFirstRelease}};
+    const double t = path_.travel() / opt.punch_speed; // (the press's duration)
+    if (stroke2_ > 0) return {kSecondRelease + 1, t, {kFirstRelease, kSecondPress, kSecondRelease}, path_.Kinks()};
+    return {opt_.unload == "none" ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, path_.Kinks()};
   }
   // Stages by the lambda an increment starts at: 0 press, 1 release, 2 press (the second pass), 3 release.
   static int StageAt(double lambda) { return (int)std::floor(lambda + kLambdaTol); }
@@ -78,7 +80,7 @@ public:
   {
     if (opt_.die_force > 0) return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
     if (pass_ == 1) return std::min(std::max(lambda - kSecondPress, 0.0), 1.0) * stroke2_;
-    if (lambda <= 1.0) return lambda * stroke_;
+    if (lambda <= 1.0) return path_.Stroke(lambda);
     return opt_.unload == "withdraw" ? stroke_ - (lambda - 1.0) * back_ : stroke_;
   }
 
@@ -133,7 +135,8 @@ public:
   PetscErrorCode CheckReach(MPI_Comm comm) const
   {
     PetscFunctionBeginUser;
-    if (opt_.die_force == 0) PetscCall(CheckDieReach(comm, PassOptions(opt_, 0), squaring_, stroke_, "-stroke"));
+    if (opt_.die_force == 0)
+      PetscCall(CheckDieReach(comm, PassOptions(opt_, 0), squaring_, path_.deepest(), "-stroke"));
     if (stroke2_ > 0) PetscCall(CheckDieReach(comm, PassOptions(opt_, 1), squaring_, stroke2_, "-pass2_stroke"));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -339,6 +342,7 @@ private:
   PetscInt pin_ = -1;              // the half model's springback: the local node whose press y is held (-1: none here)
   bool pinned_ = false;            // the pin holds (every rank alike)
   double stroke_ = 0, back_ = 0;
+  StrokePath path_;           // the first press's (-stroke_path, or straight to the stroke)
   int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
   bool unloading_ = false;
   Vec reversed_ = nullptr;

@@ -67,6 +67,7 @@ struct Options {
   double pressure_u = 0.1;
   double stroke = 4.2;             // final tool stroke / prescribed end displacement (mm)
   double stroke_corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
+  std::vector<double> stroke_path; // tool scenes: the die's strokes in turn (empty: 0 to -stroke)
   // Tools, contact, friction (METHOD.md sec. 1, 3)
   double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
   std::string die_profile;          // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
@@ -158,6 +159,17 @@ inline void ChooseElement(Options &opt)
   const bool bar = opt.mesh_file.empty() && opt.mesh_nt >= opt.element_bar_nt;
   opt.element = bar ? fe::Formulation::QM6Bar : fe::Formulation::QM6;
   opt.element_name = bar ? "qm6bar" : "qm6";
+}
+
+// The most strokes -stroke_path takes (a press's path, not a cycle test: a few dozen).
+constexpr PetscInt kMaxPathPoints = 32;
+
+// The die's travel over the press (mm): along -stroke_path, or -stroke (-output_stroke counts it).
+inline double Travel(const Options &opt)
+{
+  double travel = opt.stroke_path.empty() ? opt.stroke : 0, at = 0;
+  for (double u : opt.stroke_path) travel += std::abs(u - at), at = u;
+  return travel;
 }
 
 // The tool scenes model a quarter of the tube where that is exact (or asked for): -model quarter, or auto

@@ -39,6 +39,7 @@ struct LoadPath {
   double end = 1.0;
   double duration = 1.0;
   std::vector<double> breakpoints;
+  std::vector<double> kinks; // where an increment ends too, inside a stage (a tool's path turning)
 };
 
 class Scene {
