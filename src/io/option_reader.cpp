@@ -117,4 +117,35 @@ PetscErrorCode OptionReader::CheckUnknown(MPI_Comm comm) const
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
+                          std::initializer_list<const char *> words, std::string &value)
+{
+  const char *const *list = words.begin();
+  const PetscInt n = (PetscInt)words.size();
+  PetscInt choice = 0;
+
+  PetscFunctionBeginUser;
+  read.Note(name);
+  for (PetscInt k = 0; k < n; ++k)
+    if (value == list[k]) choice = k;
+  PetscCall(PetscOptionsEList(name, help, "tubeform", list, n, list[choice], &choice, nullptr));
+  value = list[choice];
+  PetscFunctionReturn(0);
+}
+
+// A list of at most `max` numbers; `value` is kept when the option is not given.
+PetscErrorCode RealList(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
+                        PetscInt max, std::vector<double> &value)
+{
+  std::vector<PetscReal> buf(max, 0.0); // -help prints the first entry as the default
+  PetscInt n = max;
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  read.Note(name);
+  PetscCall(PetscOptionsRealArray(name, help, "tubeform", buf.data(), &n, &set));
+  if (set) value.assign(buf.begin(), buf.begin() + n);
+  PetscFunctionReturn(0);
+}
+
 } // namespace tf

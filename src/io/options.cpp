@@ -7,6 +7,7 @@
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/material_library.hpp"
 #include "tubeform/io/option_reader.hpp"
+#include "tubeform/io/tool_options.hpp"
 #include "tubeform/step/rmin.hpp"
 
 namespace tf {
@@ -18,39 +19,6 @@ const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
 constexpr PetscInt kMaxTensionCycle = 16;
 // Flow-curve points -material_table takes at most (ep, sigma pairs).
 constexpr PetscInt kMaxTable = 200;
-
-// One of a list of words for a string-valued option; the current value is the default. Called between
-// PetscOptionsBegin and PetscOptionsEnd (it needs their PetscOptionsObject).
-PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
-                          std::initializer_list<const char *> words, std::string &value)
-{
-  const char *const *list = words.begin();
-  const PetscInt n = (PetscInt)words.size();
-  PetscInt choice = 0;
-
-  PetscFunctionBeginUser;
-  read.Note(name);
-  for (PetscInt k = 0; k < n; ++k)
-    if (value == list[k]) choice = k;
-  PetscCall(PetscOptionsEList(name, help, "tubeform", list, n, list[choice], &choice, nullptr));
-  value = list[choice];
-  PetscFunctionReturn(0);
-}
-
-// A list of at most `max` numbers; `value` is kept when the option is not given.
-PetscErrorCode RealList(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
-                        PetscInt max, std::vector<double> &value)
-{
-  std::vector<PetscReal> buf(max, 0.0); // -help prints the first entry as the default
-  PetscInt n = max;
-  PetscBool set;
-
-  PetscFunctionBeginUser;
-  read.Note(name);
-  PetscCall(PetscOptionsRealArray(name, help, "tubeform", buf.data(), &n, &set));
-  if (set) value.assign(buf.begin(), buf.begin() + n);
-  PetscFunctionReturn(0);
-}
 
 } // namespace
 
@@ -278,61 +246,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       "Final stroke U (mm): tool travel, or the prescribed end shortening of the column", opt.stroke));
   PetscCall(read.Real(PetscOptionsObject, "-stroke_corner_radius", "The paper's rule: the rounded square's corner (mm)",
                       opt.stroke_corner_radius));
-  PetscCall(RealList(PetscOptionsObject, read, "-stroke_path",
-                     "tool scenes: the die's strokes in turn (mm, >= 0), at the punch speed: press, back off, press "
-                     "again (in place of -stroke: the last is the final stroke)",
-                     kMaxPathPoints, opt.stroke_path));
-  PetscCall(read.String(PetscOptionsObject, "-die_profile",
-                        "squaring: the upper die's right half from a DXF file (*.dxf) or a text profile of lines and "
-                        "arcs (docs/dies.md) in "
-                        "place of the V-die of -die_angle, -die_r_apex, -die_u_close, -die_r_edge",
-                        opt.die_profile));
-  PetscCall(read.Real(PetscOptionsObject, "-die_angle",
-                      "V-die: the angle between its flanks (degrees; the paper's 90), the lower die its mirror",
-                      opt.die_angle));
-  PetscCall(read.Real(PetscOptionsObject, "-die_r_apex", "V-die apex fillet radius (mm)", opt.die_r_apex));
-  PetscCall(
-    read.Real(PetscOptionsObject, "-die_u_close",
-              "V-die parting face at y = u_close - U: the dies close at stroke u_close (mm; 0: no parting face)",
-              opt.die_u_close));
-  PetscCall(read.Real(PetscOptionsObject, "-die_r_edge", "V-die edge fillet radius between flank and parting face (mm)",
-                      opt.die_r_edge));
-  PetscCall(
-    read.String(PetscOptionsObject, "-lower_die",
-                "tool scenes: the lower die: mirror (of the upper one), flat (a floor at y = -Ro), or a profile "
-                "file (*.dxf or text) drawn as an upper die, mirrored below the tube",
-                opt.lower_die));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-lower_die_motion",
-                       "tool scenes: the lower die moves up by the stroke U (mirror) or stays (fixed; the upper die "
-                       "then travels 2 U, so U is half the dies' closing either way)",
-                       {"mirror", "fixed"}, opt.lower_die_motion));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
-                       "tool scenes: the part of the tube modelled: quarter, half (x >= 0), full (held by the x of "
-                       "its outer nodes on the y axis), auto (the quarter where exact, else the half or the full)",
-                       {"auto", "quarter", "half", "full"}, opt.model));
-  PetscCall(read.Real(PetscOptionsObject, "-die_force",
-                      "tool scenes: force control: the upper die presses with a punch load rising from 0 to this "
-                      "(N/mm) over the press, its stroke an unknown of each increment (0: the stroke -stroke)",
-                      opt.die_force));
-  PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
-                      "squaring: a second pass after the springback: press again by this stroke (mm, from the dies' "
-                      "start, where they touch the tube at the latest; 0: one pass), then spring back",
-                      opt.pass2_stroke));
-  PetscCall(read.String(PetscOptionsObject, "-pass2_die_profile",
-                        "squaring: the second pass's upper die from a profile file (default: the first pass's die)",
-                        opt.pass2_die_profile));
-  PetscCall(read.String(PetscOptionsObject, "-pass2_lower_die",
-                        "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first "
-                        "pass's -lower_die)",
-                        opt.pass2_lower_die));
-  PetscCall(read.String(PetscOptionsObject, "-side_die",
-                        "tool scenes: side dies pressing by the stroke U: none, mirror (the upper die turned to the "
-                        "side), flat (a plate), or a profile file drawn as an upper die (docs/dies.md)",
-                        opt.side_die));
-  PetscCall(read.Real(PetscOptionsObject, "-pass2_turn",
-                      "squaring: the tube turned counter-clockwise by this many degrees (a multiple of 90) before the "
-                      "second pass: its dies press along the turned axis (docs/dies.md)",
-                      opt.pass2_turn));
+  PetscCall(ReadToolOptions(PetscOptionsObject, read, opt)); // (tool_options.cpp)
   PetscCall(read.Real(PetscOptionsObject, "-friction_mu",
                       "Coulomb friction coefficient (0: frictionless, no friction work at all)", opt.friction_mu));
   PetscCall(read.Real(PetscOptionsObject, "-friction_vcri",

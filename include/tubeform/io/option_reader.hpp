@@ -7,6 +7,7 @@
 
 #include <petscsys.h>
 
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,13 @@ private:
   std::vector<std::string> names_; // with the dash
   PetscErrorCode CheckNumber(MPI_Comm comm, const char *name, bool integer) const;
 };
+
+// One of a list of words for a string-valued option; the current value is the default.
+PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
+                          std::initializer_list<const char *> words, std::string &value);
+// A list of at most `max` numbers; `value` is kept when the option is not given.
+PetscErrorCode RealList(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
+                        PetscInt max, std::vector<double> &value);
 
 // Ends a PetscOptionsBegin block that an error leaves early (a PetscCall
 // returning from inside it), so that what the block allocated is freed;

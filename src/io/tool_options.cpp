@@ -1,0 +1,67 @@
+// The tool scenes' options (include/tubeform/io/tool_options.hpp); checked in options_check.cpp.
+#include "tubeform/io/tool_options.hpp"
+
+namespace tf {
+
+PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(RealList(PetscOptionsObject, read, "-stroke_path",
+                     "tool scenes: the die's strokes in turn (mm, >= 0), at the punch speed: press, back off, press "
+                     "again (in place of -stroke: the last is the final stroke)",
+                     kMaxPathPoints, opt.stroke_path));
+  PetscCall(read.String(PetscOptionsObject, "-die_profile",
+                        "squaring: the upper die's right half from a DXF file (*.dxf) or a text profile of lines and "
+                        "arcs (docs/dies.md) in "
+                        "place of the V-die of -die_angle, -die_r_apex, -die_u_close, -die_r_edge",
+                        opt.die_profile));
+  PetscCall(read.Real(PetscOptionsObject, "-die_angle",
+                      "V-die: the angle between its flanks (degrees; the paper's 90), the lower die its mirror",
+                      opt.die_angle));
+  PetscCall(read.Real(PetscOptionsObject, "-die_r_apex", "V-die apex fillet radius (mm)", opt.die_r_apex));
+  PetscCall(
+    read.Real(PetscOptionsObject, "-die_u_close",
+              "V-die parting face at y = u_close - U: the dies close at stroke u_close (mm; 0: no parting face)",
+              opt.die_u_close));
+  PetscCall(read.Real(PetscOptionsObject, "-die_r_edge", "V-die edge fillet radius between flank and parting face (mm)",
+                      opt.die_r_edge));
+  PetscCall(
+    read.String(PetscOptionsObject, "-lower_die",
+                "tool scenes: the lower die: mirror (of the upper one), flat (a floor at y = -Ro), or a profile "
+                "file (*.dxf or text) drawn as an upper die, mirrored below the tube",
+                opt.lower_die));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-lower_die_motion",
+                       "tool scenes: the lower die moves up by the stroke U (mirror) or stays (fixed; the upper die "
+                       "then travels 2 U, so U is half the dies' closing either way)",
+                       {"mirror", "fixed"}, opt.lower_die_motion));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
+                       "tool scenes: the part of the tube modelled: quarter, half (x >= 0), full (held by the x of "
+                       "its outer nodes on the y axis), auto (the quarter where exact, else the half or the full)",
+                       {"auto", "quarter", "half", "full"}, opt.model));
+  PetscCall(read.Real(PetscOptionsObject, "-die_force",
+                      "tool scenes: force control: the upper die presses with a punch load rising from 0 to this "
+                      "(N/mm) over the press, its stroke an unknown of each increment (0: the stroke -stroke)",
+                      opt.die_force));
+  PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
+                      "squaring: a second pass after the springback: press again by this stroke (mm, from the dies' "
+                      "start, where they touch the tube at the latest; 0: one pass), then spring back",
+                      opt.pass2_stroke));
+  PetscCall(read.String(PetscOptionsObject, "-pass2_die_profile",
+                        "squaring: the second pass's upper die from a profile file (default: the first pass's die)",
+                        opt.pass2_die_profile));
+  PetscCall(read.String(PetscOptionsObject, "-pass2_lower_die",
+                        "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first "
+                        "pass's -lower_die)",
+                        opt.pass2_lower_die));
+  PetscCall(read.String(PetscOptionsObject, "-side_die",
+                        "tool scenes: side dies pressing by the stroke U: none, mirror (the upper die turned to the "
+                        "side), flat (a plate), or a profile file drawn as an upper die (docs/dies.md)",
+                        opt.side_die));
+  PetscCall(read.Real(PetscOptionsObject, "-pass2_turn",
+                      "squaring: the tube turned counter-clockwise by this many degrees (a multiple of 90) before the "
+                      "second pass: its dies press along the turned axis (docs/dies.md)",
+                      opt.pass2_turn));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
