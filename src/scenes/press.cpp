@@ -27,6 +27,7 @@
 #include "tubeform/scenes/common.hpp"
 #include "tubeform/scenes/contact_params.hpp"
 #include "tubeform/scenes/die.hpp"
+#include "tubeform/scenes/press_shape.hpp"
 #include "tubeform/scenes/stroke_path.hpp"
 
 namespace tf {
@@ -390,51 +391,10 @@ private:
   double LoadPerModelForce() const { return full_ ? 1.0 : 2.0; }
   TubePart Part() const { return full_ ? TubePart::Full : half_ ? TubePart::Half : TubePart::Quarter; }
 
-  // C/t (METHOD.md sec. 6) and the corner radii. Loading: the largest gap
-  // between the flank and the outer surface along the side (SideOnFlank: the
-  // outermost flank contacts, and the fillet's end when the apex touches),
-  // whose end nodes are remembered. Unloading: the largest gap between the
-  // side and the chord through those two nodes.
-  PetscErrorCode Shape(Model &m, double lambda, HistoryRow &row)
+  PetscErrorCode Shape(Model &m, double, HistoryRow &row)
   {
-    std::vector<SurfacePoint> all;
-    PetscFunctionBeginUser;
-    PetscCall(GatherOuter(m, all, half_, Press()));
-    if (all.size() >= 2) {
-      // (the half model's tube moves with a fixed lower die: its neighbour's height from the axis node's)
-      row.r_corner_x = AxisCornerRadius(all.front().x, all[1].x, all[1].y - all.front().y);
-      row.r_corner_y = AxisCornerRadius(all.back().y, all[all.size() - 2].y, all[all.size() - 2].x);
-    }
-    if (!squaring_) PetscFunctionReturn(PETSC_SUCCESS);
-    for (const auto &o : all) row.n_contact_apex += o.contact && apex_ >= 0 && o.segment == apex_;
-    const Tool &tool = m.contact->tool(kUpper);
-    const Segment &fl = tool.segments[flank_];
-    const Vec2 off = tool.Offset(), a = Press()({fl.a[0] + off[0], fl.a[1] + off[1]}), n = Press()(fl.n_line);
-    const Line flank{a, n, {n[1], -n[0]}};
-    // The line starts at the flank's apex end (s = 0), where the fillet ends.
-    const SideSpan side = unloading_ ? SideSpan{} : SideOnFlank(all, flank, flank_, apex_, 0.0);
-    // Without a side on the flank (springback; the second pass's die still on its way to the tube), C is the
-    // chord's gap of the side the last one left.
-    if (unloading_ || (pass_ == 1 && side.empty() && side_ends_[0] >= 0)) {
-      // (the half and full models: the whole surface, as a pass that turned the tube finds the side the first
-      // one left in another quarter)
-      std::vector<SurfacePoint> whole;
-      if (half_) PetscCall(GatherOuter(m, whole, false, Press()));
-      std::vector<SurfacePoint> &on = half_ ? whole : all;
-      if (half_) OrderAroundSide(on, side_ends_);
-      size_t ends[2] = {on.size(), on.size()};
-      for (size_t k = 0; k < on.size(); ++k)
-        for (int e = 0; e < 2; ++e)
-          if (on[k].id == side_ends_[e]) ends[e] = k;
-      const bool found = ends[0] < on.size() && ends[1] < on.size();
-      row.c_over_t = found ? ChordGap(on, ends[0], ends[1]) / opt_.tube_t : 0.0;
-      PetscFunctionReturn(PETSC_SUCCESS);
-    }
-    side_ends_[0] = side.empty() ? -1 : all[side.ends[0]].id;
-    side_ends_[1] = side.empty() ? -1 : all[side.ends[1]].id;
-    const GapRange g = GapsTo(all, flank, side.smin, side.smax);
-    row.c_over_t = g.empty() ? 0.0 : std::max(g.max, 0.0) / opt_.tube_t;
-    PetscFunctionReturn(PETSC_SUCCESS);
+    const PressShapeState state{squaring_, half_, unloading_, pass_ == 1, flank_, apex_, opt_.tube_t, Press()};
+    return PressShape(m, state, side_ends_, row);
   }
 };
 
