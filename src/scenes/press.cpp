@@ -249,7 +249,7 @@ public:
     row.tool_fx = -f[0], row.tool_fy = -f[1], row.tool_moment = -Press().det() * moment;
     if (opt_.side_die != "none" && !unloading_) {
       // (the right side die: whole in the half and full models, its upper half in the quarter)
-      PetscCall(m.contact->TotalForce(half_ ? kLower + 1 : kLower, force, nullptr));
+      PetscCall(m.contact->TotalForce(SideDie(), force, nullptr));
       row.side_load = -(half_ ? 1.0 : 2.0) * force[0];
     }
     if (half_ && !unloading_) {
@@ -331,6 +331,8 @@ private:
   static constexpr double kFirstRelease = 1.0, kSecondPress = 2.0, kSecondRelease = 3.0;
   // The tools' places in the contact set.
   static constexpr int kUpper = 0, kLower = 1;
+  // The right side die's place (-side_die): after the lower die of the half and full models.
+  int SideDie() const { return half_ ? kLower + 1 : kLower; }
   Options opt_;
   bool squaring_;
   bool half_;                      // the half model x >= 0 with both dies (or the full model)

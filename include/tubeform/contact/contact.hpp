@@ -183,7 +183,8 @@ public:
   // f: applied loads until the following increments have removed them.
   PetscErrorCode AddPendingForces(Vec f) const;
   // Collective: sum over the nodes in contact with tool `k` of the force on the body (global frame) and, if
-  // asked, its moment about the tool frame's origin at the current stroke (counter-clockwise positive, N mm/mm).
+  // asked, its moment about the tool frame's origin (Tool::origin) at the current stroke (counter-clockwise positive, N
+  // mm/mm).
   PetscErrorCode TotalForce(int k, double force[2], double *moment = nullptr) const;
   PetscErrorCode Count(PetscInt &n) const;
   // Collective: sum over contact nodes of the normal force f_n.
