@@ -51,11 +51,12 @@ E. The guide's example, options/own_die.opts (the shipped DXF die over a floor, 
    fast preset: four stages, the dies of both passes in the results.
 """
 import re
+from concurrent.futures import ThreadPoolExecutor
 
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, history_and_tools, out, run
+from tfcheck import Checks, args, history_and_tools, out, run, run_all
 
 tf, mpirun, src = args()
 k = Checks("models")
@@ -66,9 +67,23 @@ EARLY, LATE = 1.3e-8, 3e-5  # tests/check_squaring.py's 1 vs 2 rank bounds (docs
 GRID = np.linspace(0.2, U, 22)
 
 
-def press(name, extra, n=1):
+MIXED = ["-pass2_stroke", 3.0, "-pass2_lower_die", "flat"]
+FLOOR = ["-lower_die", "flat", "-lower_die_motion", "fixed", "-equilibrium_tol", 1e-6]
+# The single-rank presses, run two at a time before the checks read them.
+RUNS = {"models_quarter.h5": [], "models_half.h5": ["-model", "half"],
+        "models_fixed.h5": ["-model", "half", "-lower_die_motion", "fixed"], "models_floor.h5": FLOOR,
+        "models_full.h5": ["-model", "full"], "models_full_floor.h5": ["-model", "full"] + FLOOR,
+        "models_twice.h5": ["-friction_mu", 0, "-pass2_stroke", U], "models_mixed_np1.h5": MIXED}
+OWN_DIE = ["-options_file", f"{src}/options/own_die.opts", "-options_file", f"{src}/options/preset-fast.opts",
+           "-error_estimate", 0, "-progress", 0, "-output", out("models_own_die.h5")]
+run_all(tf, mpirun, [BASE + extra + ["-output", out(name)] for name, extra in RUNS.items()] + [OWN_DIE], timeout=600)
+
+
+def press(name, n=1):
+    """The results of a press: one of RUNS (run already), or RUNS' entry of that name on n ranks."""
     f = out(name)
-    run(tf, mpirun, n, BASE + extra + ["-output", f], timeout=600)
+    if n > 1:
+        run(tf, mpirun, n, BASE + RUNS[name.replace(f"_np{n}", "_np1")] + ["-output", f], timeout=600)
     r = history_and_tools(f)
     with h5py.File(f, "r") as h:
         r["X"] = h["/geometry/vertices"][:]
@@ -101,15 +116,15 @@ def agree(a, b, cols, label, scale_b=1.0, early=EARLY, late=LATE):
 SHAPE = ("load", "x_max", "y_max", "c_over_t", "deviation_ratio")
 
 # A. Half against quarter.
-quarter = press("models_quarter.h5", [])
-half = press("models_half.h5", ["-model", "half"])
+quarter = press("models_quarter.h5")
+half = press("models_half.h5")
 k.check(sorted(half["tools"]) == sorted(["V-die", "lower-V-die"]) and list(quarter["tools"]) == ["V-die"],
         f"the half model presses with two dies ({', '.join(sorted(half['tools']))}), the quarter with one")
 agree(quarter, half, SHAPE, "half against quarter")
 agree(quarter, half, ("w_int", "w_friction", "w_ext"), "half = 2 x quarter", scale_b=0.5)
 
 # B. The lower die fixed, the upper travelling 2 U.
-fixed = press("models_fixed.h5", ["-model", "half", "-lower_die_motion", "fixed"])
+fixed = press("models_fixed.h5")
 agree(half, fixed, SHAPE, "fixed lower die against the moving one", early=1e-6, late=1e-6)
 end = int(np.flatnonzero(np.isclose(fixed["time"], 1.0))[0])
 axis = np.abs(fixed["X"][:, 1]) < 1e-12
@@ -122,7 +137,7 @@ k.check(np.abs(fd["lower-V-die"]).max() == 0 and np.abs(fd["V-die"][end][:, 1] +
         "fixed lower die: it stays in the results, the upper die moves by 2 U")
 
 # C. The V-die over a flat floor.
-h = press("models_floor.h5", ["-lower_die", "flat", "-lower_die_motion", "fixed", "-equilibrium_tol", 1e-6])
+h = press("models_floor.h5")
 e = np.abs(h["energy_error"]).max()
 k.check(e < 5e-3, f"floor: press work from the reported load = internal + friction + inertia work within {e:.2e} "
         f"(5e-3)")
@@ -136,7 +151,7 @@ print(f"       U = {U}: load quarter {along(quarter, 'load')[-1]:.2f}, half {alo
       f"V over floor {along(h, 'load')[-1]:.2f} N/mm")
 
 # F. The full model.
-full = press("models_full.h5", ["-model", "full"])
+full = press("models_full.h5")
 agree(quarter, full, SHAPE, "full against quarter")
 agree(quarter, full, ("w_int", "w_friction", "w_ext"), "full = 4 x quarter", scale_b=0.25)
 X, Uf = full["X"], full["U"][-1]
@@ -144,8 +159,7 @@ mirror = np.array([np.flatnonzero((np.abs(X[:, 0] + x) < 1e-9) & (np.abs(X[:, 1]
 lean = max(np.abs(Uf[mirror, 0] + Uf[:, 0]).max(), np.abs(Uf[mirror, 1] - Uf[:, 1]).max()) / np.abs(Uf).max()
 k.check(lean < 1e-8, f"full model: the displacement after springback mirror-symmetric about the y axis within "
         f"{lean:.1e} of its largest value (1e-8)")
-full_floor = press("models_full_floor.h5", ["-model", "full", "-lower_die", "flat", "-lower_die_motion", "fixed",
-                                            "-equilibrium_tol", 1e-6])
+full_floor = press("models_full_floor.h5")
 agree(h, full_floor, ("load", "y_max", "c_over_t"), "V over floor, full against half")
 with h5py.File(out("models_full.h5"), "r") as f:
     spans = {t: (f["/tools"][t]["vertices"][:, 0].min(), f["/tools"][t]["vertices"][:, 0].max()) for t in f["/tools"]}
@@ -157,7 +171,7 @@ def stage_end(h, stage, col):
     return h[col][h["stage"] == stage][-1]
 
 
-twice = press("models_twice.h5", ["-friction_mu", 0, "-pass2_stroke", U])
+twice = press("models_twice.h5")
 k.check(sorted(set(twice["stage"].astype(int))) == [0, 1, 2, 3] and abs(twice["stroke"][-1] - 2 * U) < 1e-12,
         "two passes: stages 0-3 in the history, the stroke summed over the passes")
 dl = abs(stage_end(twice, 2, "load") / stage_end(twice, 0, "load") - 1)
@@ -168,8 +182,7 @@ k.check(dl < 0.02 and dc < 2e-3 and dx < 2e-3,
         f"(0.02), C/t {dc:.1e} (2e-3), C1 and C2 {dx:.1e} mm (2e-3))")
 
 
-MIXED = ["-pass2_stroke", 3.0, "-pass2_lower_die", "flat"]
-mixed = {n: press(f"models_mixed_np{n}.h5", MIXED, n) for n in (1, 2)}
+mixed = {n: press(f"models_mixed_np{n}.h5", n) for n in (1, 2)}
 m = mixed[1]
 grow = stage_end(m, 2, "w_plastic") / stage_end(m, 1, "w_plastic") - 1
 k.check(grow > 0.05 and m["n_plastic"][m["stage"] == 2].max() > 0,
@@ -177,13 +190,18 @@ k.check(grow > 0.05 and m["n_plastic"][m["stage"] == 2].max() > 0,
         f"more than 5 %)")
 
 
-def restart_from(every, label):
+def stop_and_continue(every):
+    """The mixed press written to a checkpoint every `every` increments, then continued from its last one."""
     name, ck = f"models_part_{every}.h5", out(f"models_ck_{every}.h5")
     run(tf, mpirun, 1, BASE + MIXED + ["-output", out(name), "-checkpoint", ck, "-checkpoint_every", every],
         timeout=600)
+    run(tf, mpirun, 1, BASE + MIXED + ["-output", out(name), "-restart", ck], timeout=600)
+
+
+def restart_from(every, label):
+    name, ck = f"models_part_{every}.h5", out(f"models_ck_{every}.h5")
     with h5py.File(ck, "r") as c:
         lam = c["/run/lambda"][0]
-    run(tf, mpirun, 1, BASE + MIXED + ["-output", out(name), "-restart", ck], timeout=600)
     with h5py.File(out(name), "r") as h:
         part = {c: h["/history"][c][:] for c in h["/history"]}
     same = all(part[c].shape == m[c].shape for c in part)
@@ -194,8 +212,11 @@ def restart_from(every, label):
 
 
 first = int(np.sum(m["stage"] <= 1)) - 1  # the increments up to the end of the first springback
-restart_from(first, "between the stages")
-restart_from(first + int(np.sum(m["stage"] == 2)) // 2, "inside the second press")
+points = {"between the stages": first, "inside the second press": first + int(np.sum(m["stage"] == 2)) // 2}
+with ThreadPoolExecutor(max_workers=2) as pool:  # the two single-rank pairs of runs side by side
+    list(pool.map(stop_and_continue, points.values()))
+for label, every in points.items():
+    restart_from(every, label)
 k.check(sorted(m["tools"]) == sorted(["V-die", "lower-V-die", "pass2-V-die", "pass2-floor"]),
         f"V-dies, then a V-die over a floor: the dies of both passes in the results ({', '.join(sorted(m['tools']))})")
 worst = 0.0
@@ -219,8 +240,6 @@ k.check(len(steps) == len(m["time"]) and 0 < switch < len(steps) and
         f"{len(steps) - 1}")
 
 # E. The guide's example (docs/guide.md, section 8): the shipped DXF die over a floor, then the V-die over it.
-run(tf, mpirun, 1, ["-options_file", f"{src}/options/own_die.opts", "-options_file", f"{src}/options/preset-fast.opts",
-                    "-error_estimate", 0, "-progress", 0, "-output", out("models_own_die.h5")], timeout=600)
 with h5py.File(out("models_own_die.h5"), "r") as h:
     stages, tools = set(h["/history/stage"][:].astype(int)), sorted(h["/tools"])
 k.check(stages == {0, 1, 2, 3} and tools == ["die", "floor", "pass2-die", "pass2-floor"],

@@ -45,10 +45,12 @@ F. A quarter turn, then the V-die over a floor (-pass2_lower_die flat): -model a
    value (tests/check_models.py F's bound: the same sums in another order): the pins on the turned axis carry
    nothing; on the first pass's axis they would hold the tube against the floor's push and it would lean.
 """
+from concurrent.futures import ThreadPoolExecutor
+
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, history_and_tools, out, run
+from tfcheck import Checks, args, history_and_tools, out, run, run_all
 
 tf, mpirun, src = args()
 k = Checks("turn")
@@ -59,8 +61,21 @@ EARLY, LATE = 1.3e-8, 3e-5  # tests/check_squaring.py's 1 vs 2 rank bounds (docs
 GRID = np.linspace(0.2, U, 15)
 
 
-def press(name, extra, n=1):
-    run(tf, mpirun, n, BASE + extra + ["-output", out(name)], timeout=600)
+TURNED = ["-pass2_turn", 90, "-model", "full"]
+OVAL = ["-options_file", f"{src}/options/oval_then_square.opts", "-options_file", f"{src}/options/preset-fast.opts",
+        "-error_estimate", 0, "-progress", 0]
+# The single-rank runs, two at a time before the checks read them.
+RUNS = {"turn_quarter.h5": BASE + ["-pass2_turn", 90], "turn_full.h5": BASE + TURNED, "turn_none.h5": BASE,
+        "turn_full_180.h5": BASE + ["-pass2_turn", 180, "-model", "full"],
+        "turn_half_180.h5": BASE + ["-pass2_turn", 180, "-model", "half"], "turn_oval.h5": OVAL,
+        "turn_floor.h5": BASE + ["-pass2_turn", 90, "-pass2_lower_die", "flat"]}
+run_all(tf, mpirun, [opts + ["-output", out(name)] for name, opts in RUNS.items()], timeout=600)
+
+
+def press(name, n=1):
+    """The history and tools of one of RUNS, run already (or on n ranks now)."""
+    if n > 1:
+        run(tf, mpirun, n, RUNS[name.replace(f"_np{n}", "")] + ["-output", out(name)], timeout=600)
     return history_and_tools(out(name))
 
 
@@ -89,8 +104,8 @@ def agree(a, b, cols, label, scale_b=1.0):
 SHAPE = ("load", "x_max", "y_max", "c_over_t", "deviation_ratio")
 
 # A. The full model against the quarter, turned by 90 degrees.
-quarter = press("turn_quarter.h5", ["-pass2_turn", 90])
-full = press("turn_full.h5", ["-pass2_turn", 90, "-model", "full"])
+quarter = press("turn_quarter.h5")
+full = press("turn_full.h5")
 k.check(sorted(set(full["stage"].astype(int))) == [0, 1, 2, 3] and quarter["load"][quarter["stage"] == 2].max() > 0,
         "two passes: stages 0-3 in the history, the turned second press carries a load")
 agree(quarter, full, SHAPE, "turned by 90 degrees, the full model against the quarter")
@@ -98,9 +113,9 @@ agree(quarter, full, ("w_int",), "turned by 90 degrees, the full model's interna
       scale_b=0.25)
 
 # B. Half a turn: the press of a pass that does not turn.
-plain = press("turn_none.h5", [])
+plain = press("turn_none.h5")
 for model in ("full", "half"):
-    turned = press(f"turn_{model}_180.h5", ["-pass2_turn", 180, "-model", model])
+    turned = press(f"turn_{model}_180.h5")
     agree(plain, turned, SHAPE, f"turned by 180 degrees, the {model} model against the quarter model not turned")
 # The half model's upper die carries the quarter's contacts (its right half): its force across the press and its
 # moment, which the reflection that draws half a turn turns around, in the press's frame as the quarter's.
@@ -139,15 +154,19 @@ k.check(growth["turned"] > 2e-3 and growth["plain"] < 1e-3,
         f"same die again +{growth['plain']:.2%} (less than 0.1 %: the reload retraces the elastic springback)")
 
 # D. A checkpoint inside the turned press, continued; 1 vs 2 ranks.
-def continued(opts, whole, name, label):
-    """The run of `opts` checkpointed half way through its second press and continued, against `whole`."""
+def stop_and_continue(opts, whole, name):
+    """The run of `opts` checkpointed half way through its second press (as `whole` counts increments), continued."""
     ck = out(f"{name}_ck.h5")
     every = int(np.sum(whole["stage"] <= 1)) + int(np.sum(whole["stage"] == 2)) // 2
     run(tf, mpirun, 1, opts + ["-output", out(f"{name}.h5"), "-checkpoint", ck, "-checkpoint_every", every],
         timeout=600)
-    with h5py.File(ck, "r") as c:
-        lam = c["/run/lambda"][0]
     run(tf, mpirun, 1, opts + ["-output", out(f"{name}.h5"), "-restart", ck], timeout=600)
+
+
+def continued(whole, name, label):
+    """stop_and_continue's run against `whole`."""
+    with h5py.File(out(f"{name}_ck.h5"), "r") as c:
+        lam = c["/run/lambda"][0]
     part = history_and_tools(out(f"{name}.h5"))
     cols = [c for c in whole if c != "tools"]
     same = all(part[c].shape == whole[c].shape for c in cols)
@@ -157,24 +176,22 @@ def continued(opts, whole, name, label):
             f"{worst:.1e} (1e-12)")
 
 
-TURNED = ["-pass2_turn", 90, "-model", "full"]
-continued(BASE + TURNED, full, "turn_part", "the full model turned by 90 degrees")
-two = press("turn_full_np2.h5", TURNED, 2)
+ovl = "turn_oval.h5"
+oh = history_and_tools(out(ovl))
+with ThreadPoolExecutor(max_workers=2) as pool:  # D's and E's single-rank pairs of runs side by side
+    list(pool.map(lambda a: stop_and_continue(*a), ((BASE + TURNED, full, "turn_part"), (OVAL, oh, "turn_oval_part"))))
+continued(full, "turn_part", "the full model turned by 90 degrees")
+two = press("turn_full_np2.h5", 2)
 agree(full, two, SHAPE, "turned by 90 degrees, the full model on 1 vs 2 ranks")
 
 # E. An oval pre-form, then the square die (options/oval_then_square.opts, the quarter model): plates press the
 # tube into an oval; turned, the V-dies press across its long axis and start where they touch it.
-ovl = "turn_oval.h5"
-OVAL = ["-options_file", f"{src}/options/oval_then_square.opts", "-options_file", f"{src}/options/preset-fast.opts",
-        "-error_estimate", 0, "-progress", 0]
-run(tf, mpirun, 1, OVAL + ["-output", out(ovl)], timeout=600)
 with h5py.File(out(ovl), "r") as h:
     X, t = h["/geometry/vertices"][:], h["/time"][:, 0]
     p = X + h["/vertex_fields/displacement_u"][int(np.argmin(np.abs(t - 2.0)))]
     # The outline's first point: the apex fillet's end on the die's axis (the profile's arc runs from 90 to 45
     # degrees; the reflection that draws the turn reverses it, so it starts there). Checked: on the axis y = 0.
     apex = h["/tools/pass2-die/vertices"][0]
-    oh = {c: h["/history"][c][:] for c in h["/history"]}
 # The quarter model draws the turned V-die by y = x: in its press's frame a node is at (y, x).
 p = p[np.abs(np.hypot(X[:, 0], X[:, 1]) - RO) < 1e-9]
 xs, ys = np.abs(p[:, 1]), p[:, 0]
@@ -187,7 +204,7 @@ k.check(back > 0.01 and abs(moved - back) < 1e-6 and abs(apex[1]) < 1e-12 and oh
         f"oval, then the V-dies turned: on the round tube's circle the die would start {back:.4f} mm inside the "
         f"oval; it starts {moved:.4f} mm back along its motion (within {abs(moved - back):.1e} mm; 1e-6), touching "
         f"it ({oh['n_contact'][s2][0]:.0f} nodes in contact in the second press's first increment)")
-continued(OVAL, oh, "turn_oval_part", "oval, then the V-dies turned (the die's start moved back)")
+continued(oh, "turn_oval_part", "oval, then the V-dies turned (the die's start moved back)")
 dev = [end_of(oh, st, "deviation_ratio") for st in (1, 3)]
 k.check(abs(1 - dev[1]) < 0.5 * abs(1 - dev[0]),
         f"the V-dies square the oval: C1/C2 after springback {dev[0]:.4f} after the plates, {dev[1]:.4f} after the "
@@ -196,7 +213,6 @@ k.check(abs(1 - dev[1]) < 0.5 * abs(1 - dev[0]),
 # F. A quarter turn, then the V-die over a floor: the half model cannot draw it (its plane x = 0 is no symmetry
 # plane of that press); -model auto takes the full model, which holds the tube on the turned axis.
 FLOOR = "turn_floor.h5"
-run(tf, mpirun, 1, BASE + ["-pass2_turn", 90, "-pass2_lower_die", "flat", "-output", out(FLOOR)], timeout=600)
 with h5py.File(out(FLOOR), "r") as h:
     X, Uf, tools = h["/geometry/vertices"][:], h["/vertex_fields/displacement_u"][-1], sorted(h["/tools"])
 mirror = [np.flatnonzero((np.abs(X[:, 0] - x) < 1e-9) & (np.abs(X[:, 1] + y) < 1e-9)) for x, y in X]

@@ -6,6 +6,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+from concurrent.futures import ThreadPoolExecutor
 
 import h5py
 import numpy as np
@@ -67,6 +68,14 @@ def run(tf, mpirun, np_, opts, check=True, timeout=300, report_hang=False):
         raise SystemExit(f"tubeform did not finish within {timeout} s (killed)" if timed_out else
                          f"tubeform failed with exit code {p.returncode}")
     return p
+
+
+def run_all(tf, mpirun, jobs, **kw):
+    """Runs single-rank jobs (each a list of options) two at a time, the machine's two cores (a test that calls
+    it is given both: PROCESSORS 2 in tests/CMakeLists.txt); returns their CompletedProcesses in the jobs' order.
+    run()'s keywords apply to each; a failed one (check=True) ends the test as run() does."""
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        return list(pool.map(lambda opts: run(tf, mpirun, 1, opts, **kw), jobs))
 
 
 # What a crashed rank leaves in a run's output: PETSc's signal handler (it turns
