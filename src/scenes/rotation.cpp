@@ -13,7 +13,7 @@ namespace {
 class RotationScene : public BlockScene {
 public:
   using BlockScene::BlockScene;
-  LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {kStretch}}; }
+  LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {kStretch}, {}}; }
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     if (lambda < kStretch - kLambdaTol) {

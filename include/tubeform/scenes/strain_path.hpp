@@ -21,7 +21,7 @@ public:
   }
   LoadPath Path(double duration) const
   {
-    LoadPath path{(double)targets_.size() - 1, duration, {}};
+    LoadPath path{(double)targets_.size() - 1, duration, {}, {}};
     for (size_t k = 1; k + 1 < targets_.size(); ++k) path.breakpoints.push_back((double)k);
     return path;
   }
