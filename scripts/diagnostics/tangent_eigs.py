@@ -1,0 +1,48 @@
+#!/usr/bin/env python3
+"""The lowest eigenvalues of the tangent's free block, from matrices the patch
+rotation_mode.patch dumps (PETSc binary /tmp/K_<solve>.bin and the prescribed
+rows /tmp/K_<solve>_rows.txt). Run by scripts/diagnostics/rotation_mode.
+
+usage: tangent_eigs.py DIR SOLVE...
+A negative real eigenvalue of the unsymmetric free block is a static
+divergence of the quasi-static increment: the path is unstable along its
+eigenvector. The symmetric part's lowest eigenvalues are printed beside it
+(the friction rows make it indefinite without making the matrix unstable)."""
+import os
+import sys
+
+import numpy as np
+
+
+def read_petsc_aij(path):
+    """A sequential AIJ matrix in PETSc's binary format (big-endian int32 header, row lengths, columns, float64)."""
+    b = open(path, "rb").read()
+    _, m, n, nz = np.frombuffer(b[:16], ">i4")
+    off = 16
+    lengths = np.frombuffer(b[off:off + 4 * m], ">i4")
+    off += 4 * m
+    cols = np.frombuffer(b[off:off + 4 * nz], ">i4")
+    off += 4 * nz
+    vals = np.frombuffer(b[off:off + 8 * nz], ">f8")
+    k = np.zeros((m, n))
+    k[np.repeat(np.arange(m), lengths), cols] = vals
+    return k
+
+
+def main():
+    where = sys.argv[1]
+    for solve in sys.argv[2:]:
+        k = read_petsc_aij(os.path.join(where, f"K_{solve}.bin"))
+        rows = np.loadtxt(os.path.join(where, f"K_{solve}_rows.txt"), dtype=int, ndmin=1)
+        free = np.setdiff1d(np.arange(k.shape[0]), rows)
+        kf = k[np.ix_(free, free)]
+        w = np.sort_complex(np.linalg.eigvals(kf))
+        w = w[np.argsort(w.real)]
+        ws = np.linalg.eigvalsh(0.5 * (kf + kf.T))
+        print(f"solve {solve:>4}: {len(free)} free dofs, lowest eigenvalues "
+              + " ".join(f"{x.real:+.2e}" + (f"{x.imag:+.1e}j" if x.imag else "") for x in w[:3])
+              + f" (largest {abs(w[-1]):.2e}); symmetric part's lowest {ws[0]:+.2e}")
+
+
+if __name__ == "__main__":
+    main()
