@@ -207,4 +207,26 @@ for np_ in (1, 2):
         n = len(h["/history"]["stroke"])
         k.check(h["/history"].attrs["stalled"] == 1 and n == 11, f"np={np_} stall: results written and flagged ({n} history rows)")
     k.check(not os.path.exists(f + ".partial"), f"np={np_} stall: no .partial file left")
+# A second pass whose fixed die would start inside the tube (a plate at y = -15 mm held in place under the
+# paper's Ro = 17.5 mm tube) can only be seen at that pass's start: the run stops there, one line naming the
+# die, exit 1 on every rank, the first pass's results written and flagged stopped, nothing left .partial.
+with open(out("plate15.profile"), "w") as f:
+    f.write("line 0 15 30 15\n")
+for np_ in (1, 2):
+    f = out(f"inside_np{np_}.h5")
+    p = run(tf, mpirun, np_, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
+                              f"{src}/options/preset-fast.opts", "-mesh_ntheta", 12, "-error_estimate", 0, "-stroke", 1,
+                              "-model", "half", "-lower_die_motion", "fixed", "-pass2_stroke", 1,
+                              "-pass2_die_profile", out("plate15.profile"), "-output", f], check=False, timeout=60)
+    lines = [l for l in (p.stderr + p.stdout).splitlines() if "error" in l.lower()]
+    crash = crashed(p)
+    ok = p.returncode == 1 and not crash and len(lines) == 1 and "pass2-lower-die" in lines[0] and f in lines[0]
+    k.check(ok, f"np={np_} a fixed second-pass die inside the tube: exit {p.returncode}"
+            f"{', CRASH: ' + crash if crash else ''}, message: {lines[0] if lines else '(none)'}")
+    ok = os.path.exists(f) and not os.path.exists(f + ".partial")
+    if ok:
+        with h5py.File(f, "r") as h:
+            stages = set(h["/history/stage"][:].astype(int))
+            ok = h["/history"].attrs["stopped"] == 1 and stages == {0, 1}
+    k.check(ok, f"np={np_} a fixed second-pass die inside the tube: the first pass's results written, flagged stopped")
 k.done()

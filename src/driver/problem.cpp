@@ -216,12 +216,15 @@ PetscErrorCode Problem::Run()
 
     // 2. A stage of the load path (the paper's unloading) begins at its
     //    breakpoint; the loads at its start are the new stage's.
-    for (size_t b = 0; b + 1 < breaks.size(); ++b)
+    //    A stage the scene refuses to start (a second pass's die inside the tube) ends the run as a failed
+    //    increment does, with the results so far written.
+    for (size_t b = 0; b + 1 < breaks.size() && stop.why.empty(); ++b)
       if (!at_.started[b] && lambda >= breaks[b] - kLambdaTol) {
         at_.started[b] = 1;
-        PetscCall(scene_->BeginStage(*model_, lambda));
-        PetscCall(EndForces(lambda));
+        PetscCall(StopOnFailure(scene_->BeginStage(*model_, lambda), stop));
+        if (stop.why.empty()) PetscCall(EndForces(lambda));
       }
+    if (!stop.why.empty()) break;
     const double next_break =
       *std::find_if(ends.begin(), ends.end(), [&](double b) { return b > lambda + kLambdaTol; });
     const double dl_stage = scene_->Unloading(lambda) ? dl_unload : dl_load;

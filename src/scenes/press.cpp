@@ -148,16 +148,17 @@ public:
     if (opt_.unload != "reverse") PetscFunctionReturn(PETSC_SUCCESS);
     if (!Unloading(lambda)) {
       // The second pass: the springback's loads are all applied; its dies from their start, the material's law.
-      unloading_ = false;
-      // (the pin stays until the second pass's dies hold the half model's tube: Load)
-      reversed_total_[0] = reversed_total_[1] = reversed_moment_ = 0;
-      m.body.SetPlasticAgain();
+      // (Its dies first: one the scene refuses, inside the tube, ends the run with the first pass's results.)
       ContactSpec spec = spec_;
-      pass_ = 1;
       PetscCall(PassTools(m, 1, spec.tools));
       std::vector<SurfacePoint> outer;
       PetscCall(GatherOuter(m, outer));
       PetscCall(StartOnTube(m.comm, !m.quiet, outer, spec.tools, start_back_));
+      unloading_ = false;
+      // (the pin stays until the second pass's dies hold the half model's tube: Load)
+      reversed_total_[0] = reversed_total_[1] = reversed_moment_ = 0;
+      m.body.SetPlasticAgain();
+      pass_ = 1;
       if (full_) {
         // A turned tube is held on its press's axes (as a restart chooses them: Persist).
         PetscCall(MarkAxisPins(m, Press()));
