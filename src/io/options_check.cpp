@@ -78,7 +78,7 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
   const bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != "auto" ||
                      opt.pass2_stroke != 0 || !opt.pass2_die_profile.empty() || !opt.pass2_lower_die.empty() ||
-                     opt.pass2_turn != 0 || opt.die_force != 0 || opt.side_die != "none";
+                     opt.pass2_turn != 0 || opt.die_force != 0 || opt.side_die != "none" || !opt.pass2_side_die.empty();
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
     "-lower_die, -lower_die_motion, -model, -pass2_*, -die_force, -side_die: the %s scene presses with no dies (these "
@@ -117,15 +117,15 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
   PetscCheck(opt.pass2_stroke == 0 || opt.unload == "reverse", comm, PETSC_ERR_USER_INPUT,
              "-pass2_stroke %g: a second pass follows the paper's springback; use -unload reverse (not %s)",
              opt.pass2_stroke, opt.unload.c_str());
-  PetscCheck(opt.pass2_stroke > 0 || (opt.pass2_die_profile.empty() && opt.pass2_lower_die.empty()), comm,
-             PETSC_ERR_USER_INPUT, "-pass2_die_profile, -pass2_lower_die: give -pass2_stroke for the second pass");
-  if (opt.side_die != "none") {
-    PetscCheck(!opt.side_die.empty(), comm, PETSC_ERR_USER_INPUT,
-               "-side_die: give none, mirror, flat or a profile file");
-    PetscCheck(opt.pass2_stroke == 0 && opt.die_force == 0 && opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
-               "-side_die %s: side dies press in one pass by the stroke: not with -pass2_stroke, -die_force or "
-               "-unload withdraw",
-               opt.side_die.c_str());
+  PetscCheck(opt.pass2_stroke > 0 ||
+               (opt.pass2_die_profile.empty() && opt.pass2_lower_die.empty() && opt.pass2_side_die.empty()),
+             comm, PETSC_ERR_USER_INPUT,
+             "-pass2_die_profile, -pass2_lower_die, -pass2_side_die: give -pass2_stroke for the second pass");
+  for (const auto &[name, value] : {std::pair{"-side_die", &opt.side_die}, {"-pass2_side_die", &opt.pass2_side_die}}) {
+    if (*value == "none" || (value == &opt.pass2_side_die && value->empty())) continue;
+    PetscCheck(!value->empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name);
+    PetscCheck(opt.die_force == 0 && opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
+               "%s %s: side dies press by the stroke: not with -die_force or -unload withdraw", name, value->c_str());
   }
   if (!opt.stroke_path.empty()) {
     // The die goes to each stroke in turn at the punch speed; the last is the press's final stroke.

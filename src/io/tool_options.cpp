@@ -57,6 +57,11 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                         "tool scenes: side dies pressing by the stroke U: none, mirror (the upper die turned to the "
                         "side), flat (a plate), or a profile file drawn as an upper die (docs/dies.md)",
                         opt.side_die));
+  PetscCall(
+    read.String(PetscOptionsObject, "-pass2_side_die",
+                "squaring: the second pass's side dies: none, mirror, flat or a profile file (default: the first "
+                "pass's -side_die)",
+                opt.pass2_side_die));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_turn",
                       "squaring: the tube turned counter-clockwise by this many degrees (a multiple of 90) before the "
                       "second pass: its dies press along the turned axis (docs/dies.md)",

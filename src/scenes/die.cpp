@@ -80,22 +80,21 @@ PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &uppe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, bool squaring, bool half, bool full,
-                           std::vector<Tool> &tools)
+PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, const Tool &upper_right, bool half,
+                           bool full, std::vector<Tool> &tools)
 {
   Tool drawn; // drawn as an upper die (its right half), then turned to the side by the reflection about y = x
   PetscFunctionBeginUser;
+  const bool squaring = !upper_right.segments.empty();
   const bool plate = o.side_die == "flat" || (o.side_die == "mirror" && !squaring);
   if (plate) {
     // (the whole plate in the half and full models, which reach below the x axis)
     drawn = BuildFlatPlate(o.tube_ro, half ? -(1 + kPlateReach) * o.tube_ro : -kPlateOverhang * o.tube_ro,
                            (1 + kPlateReach) * o.tube_ro);
   } else if (o.side_die == "mirror") {
-    Die die;
-    PetscCall(BuildDie(comm, o, die));
-    drawn = half ? BothSides(die.tool) : die.tool;
+    drawn = half ? BothSides(upper_right) : upper_right;
   } else {
-    PetscCall(ReadProfileTool(comm, "-side_die", o.side_die, drawn));
+    PetscCall(ReadProfileTool(comm, option, o.side_die, drawn));
     drawn = half ? BothSides(drawn) : drawn;
   }
   Tool right = Transform(drawn, {true, 1}); // (x, y) -> (y, x): moving along -x by the stroke
@@ -115,6 +114,7 @@ Options PassOptions(const Options &opt, int pass)
   Options o = opt;
   if (pass == 1 && !opt.pass2_die_profile.empty()) o.die_profile = opt.pass2_die_profile;
   if (pass == 1 && !opt.pass2_lower_die.empty()) o.lower_die = opt.pass2_lower_die;
+  if (pass == 1 && !opt.pass2_side_die.empty()) o.side_die = opt.pass2_side_die;
   return o;
 }
 
@@ -122,12 +122,13 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
                              double floor_y, std::vector<Tool> &tools, int &flank, int &apex)
 {
   const Options o = PassOptions(opt, pass);
-  Tool upper;
+  Tool upper, right_half; // (the upper die, and its right half as drawn: the side dies' mirror)
   PetscFunctionBeginUser;
   if (squaring) {
     Die die;
     PetscCall(BuildDie(comm, o, die));
     upper = full ? BothSides(die.tool) : die.tool; // (the right half's segments first: flank and apex stay)
+    right_half = die.tool;
     flank = die.flank, apex = die.apex;
   } else {
     const double from = full ? -(1 + kPlateReach) * o.tube_ro : -kPlateOverhang * o.tube_ro;
@@ -140,7 +141,8 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
     if (o.lower_die_motion == "fixed") tools[0].direction = {0.0, -2.0}; // the dies close by 2 U either way
     tools.push_back(lower);
   }
-  if (pass == 0 && o.side_die != "none") PetscCall(AddSideDies(comm, o, squaring, half, full, tools));
+  if (o.side_die != "none")
+    PetscCall(AddSideDies(comm, o, pass == 1 ? "-pass2_side_die" : "-side_die", right_half, half, full, tools));
   // The second pass's dies by their own names (errors, and their outlines in the results).
   if (pass == 1)
     for (Tool &t : tools) t.name = "pass2-" + t.name;

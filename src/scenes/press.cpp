@@ -248,10 +248,11 @@ public:
     Vec2 f = Press()({force[0], force[1]});
     row.load = -LoadPerModelForce() * f[1]; // (the punch load on the whole tube)
     row.tool_fx = -f[0], row.tool_fy = -f[1], row.tool_moment = -Press().det() * moment;
-    if (opt_.side_die != "none" && !unloading_) {
+    if (PassOptions(opt_, pass_).side_die != "none" && !unloading_) {
       // (the right side die: whole in the half and full models, its upper half in the quarter)
+      // (its force along the press's x: a turned pass's side die presses along the press's -x)
       PetscCall(m.contact->TotalForce(SideDie(), force, nullptr));
-      row.side_load = -(half_ ? 1.0 : 2.0) * force[0];
+      row.side_load = -(half_ ? 1.0 : 2.0) * Press()({force[0], force[1]})[0];
     }
     if (half_ && !unloading_) {
       PetscCall(m.contact->TotalForce(kLower, force, &moment));
