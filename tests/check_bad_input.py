@@ -74,6 +74,9 @@ cases = [
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "90", "-lower_die", "flat"], "off that axis"),
     (["-scene", "squaring", "-side_die", "flat", "-die_force", "100"], "side dies press by the stroke"),
     (["-scene", "squaring", "-pass2_side_die", "flat"], "give -pass2_stroke"),
+    (["-scene", "squaring", "-side_force", "20"], "need -side_die"),
+    (["-scene", "squaring", "-side_die", "flat", "-side_force", "-1"], "-side_force -1"),
+    (["-scene", "squaring", "-side_die", "flat", "-side_force", "20", "-pass2_stroke", "2"], "one pass"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_die", out("none.profile")], "-pass2_side_die"),
     (["-scene", "squaring", "-side_die", out("none.profile")], "-side_die"),
     (["-scene", "tension", "-side_die", "flat"], "presses with no dies"),
@@ -142,7 +145,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 84 and len(selected) == 5, f"{len(cases)} cases on 1 rank (84), {len(selected)} on 2 (5)")
+k.check(len(cases) == 87 and len(selected) == 5, f"{len(cases)} cases on 1 rank (87), {len(selected)} on 2 (5)")
 
 
 def attempt(np_, extra):

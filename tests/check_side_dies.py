@@ -38,6 +38,19 @@ D. Side dies in a second pass (-pass2_side_die): the paper's tube pressed 2 mm b
    balance, from its reported load and side load, within 5e-3 (tests/check_squaring.py's (a); the side force in
    the tube's frame stops it at -25 %). The turned run on 1 vs 2 ranks within 1.3e-8 of the largest value in the
    first pass and 3e-5 in the second (tests/check_squaring.py's bounds).
+E. Force-controlled side dies (-side_force F: each side plate presses with a force rising from 0 to F over the
+   press, its travel an unknown of each increment), beside the V-dies (the paper's tube, fast preset, U = 3 mm):
+   - with the paper's exact linear steps (-equilibrium_tol 0), F = 20 N/mm: each side plate's force at the end
+     of every loading increment is lambda F within 1e-6 N/mm (issue 23's bound for a pad in equilibrium with its
+     force; measured 2e-11), and the plate rides the tube: the half-width C1 is at the plate, Ro minus its travel,
+     within 1e-4 mm at every increment (C's bound; measured 4e-15);
+   - the energy balance with the plates' work from their reported force and their own travel (`side_stroke`)
+     within 5e-3 at every increment (as C; the default equilibrium steps; the plates' work counted with the
+     die's stroke instead breaks it);
+   - the force's share in each model (the quarter carries half of one plate, the half model one, the full model
+     two): the half model against the quarter within tests/check_squaring.py's bounds (1.3e-8 of the largest
+     value to U = 2.6 mm, 3e-5 beyond), and the half model on 1 vs 2 ranks within the same;
+   - a checkpoint inside the press, continued: the history within 1e-12 (tests/check_restart.py's bound).
 """
 import math
 
@@ -61,7 +74,10 @@ RUNS = {"side_four.h5": RING + ["-stroke", 3], "side_half.h5": RING + ["-stroke"
         "side_full.h5": RING + ["-stroke", 2, "-model", "full"], "side_quarter.h5": RING + ["-stroke", 2],
         "side_v.h5": SQ + ["-side_die", "flat"], "side_v_alone.h5": SQ, "side_pass2_turned.h5": TURNED,
         "side_pass2_plain.h5": TWO + ["-pass2_die_profile", f"{src}/options/dies/plate.profile", "-pass2_side_die",
-                                      f"{src}/options/dies/v90_r3.profile"]}
+                                      f"{src}/options/dies/v90_r3.profile"],
+        "side_force_exact.h5": SQ + ["-side_die", "flat", "-side_force", 20, "-equilibrium_tol", 0],
+        "side_force.h5": SQ + ["-side_die", "flat", "-side_force", 20],
+        "side_force_half.h5": SQ + ["-side_die", "flat", "-side_force", 20, "-model", "half"]}
 run_all(tf, mpirun, [opts + ["-output", out(name)] for name, opts in RUNS.items()], timeout=600)
 
 
@@ -145,4 +161,44 @@ if len(two["stroke"]) == len(turned["stroke"]):
     late = max(r.max() for r in rel.values())
 k.check(early < 1.3e-8 and late < 3e-5, f"side dies in the turned second pass, 1 vs 2 ranks: the first pass within "
         f"{early:.1e} (1.3e-8), both within {late:.1e} (3e-5)")
+
+# E. Force-controlled side dies.
+exact = press("side_force_exact.h5")
+on = exact["stroke"] > 0
+miss = np.abs(exact["side_load"][on] - 20 * np.minimum(exact["stroke"][on] / 3, 1)).max()
+ride = np.abs(exact["x_max"] - (RO - exact["side_stroke"])).max()
+k.check(miss < 1e-6 and ride < 1e-4 and exact["side_stroke"][-1] < 0,
+        f"force-controlled side plates (20 N/mm): their force lambda F at every increment within {miss:.1e} N/mm "
+        f"(1e-6); they ride the tube, C1 at Ro less their travel within {ride:.1e} mm (1e-4), pushed back "
+        f"{-exact['side_stroke'][-1]:.3f} mm")
+held = press("side_force.h5")
+e = np.abs(held["energy_error"][1:]).max()
+k.check(e < 5e-3, f"force-controlled side plates: energy balance with their work over their own travel within "
+        f"{e:.1e} (5e-3)")
+half = press("side_force_half.h5")
+worst_early = worst = 1.0
+if half["stroke"].shape == held["stroke"].shape:
+    rel = {c: np.abs(half[c] - held[c]) / np.abs(held[c]).max() for c in ("load", "side_load", "side_stroke", "x_max")}
+    worst_early = max(r[held["stroke"] <= 2.6].max() for r in rel.values())
+    worst = max(r.max() for r in rel.values())
+k.check(worst_early < 1.3e-8 and worst < 3e-5, f"force-controlled side plates, the half model against the quarter: "
+        f"within {worst_early:.1e} to U = 2.6 mm (1.3e-8), {worst:.1e} to the end (3e-5)")
+two = press("side_force_half_np2.h5", 2)
+worst_early = worst = 1.0
+if half["stroke"].shape == two["stroke"].shape:
+    rel = {c: np.abs(half[c] - two[c]) / np.abs(half[c]).max() for c in ("load", "side_load", "side_stroke", "x_max")}
+    worst_early = max(r[half["stroke"] <= 2.6].max() for r in rel.values())
+    worst = max(r.max() for r in rel.values())
+k.check(worst_early < 1.3e-8 and worst < 3e-5, f"force-controlled side plates, the half model on 1 vs 2 ranks: "
+        f"within {worst_early:.1e} to U = 2.6 mm (1.3e-8), {worst:.1e} to the end (3e-5)")
+ck, every = out("side_force_ck.h5"), len(held["stroke"]) // 2
+run(tf, mpirun, 1, RUNS["side_force.h5"] + ["-output", out("side_force_part.h5"), "-checkpoint", ck,
+                                            "-checkpoint_every", every], timeout=600)
+run(tf, mpirun, 1, RUNS["side_force.h5"] + ["-output", out("side_force_part.h5"), "-restart", ck], timeout=600)
+part = history_and_tools(out("side_force_part.h5"))
+cols = [c for c in held if c != "tools"]
+same = all(part[c].shape == held[c].shape for c in cols)
+worst = max(np.abs(part[c] - held[c]).max() / max(np.abs(held[c]).max(), 1e-300) for c in cols) if same else 1
+k.check(same and worst <= 1e-12, f"force-controlled side plates, continued from a checkpoint at increment {every}: "
+        f"the history within {worst:.1e} (1e-12)")
 k.done()

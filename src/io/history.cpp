@@ -79,6 +79,8 @@ const std::vector<HistoryColumn> &HistoryColumns()
      "-side_die: each side die's force along its motion, on the whole tube (N/mm; 0 without)"},
     {"lower_moment", &HistoryRow::lower_moment,
      "half model: moment of the model's forces on the lower die about its frame's origin (N mm/mm)"},
+    {"side_stroke", &HistoryRow::side_stroke,
+     "-side_die: the side dies' travel towards the tube's centre (mm): the stroke, or their own with -side_force"},
   };
   return cols;
 }

@@ -127,6 +127,13 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
     PetscCheck(opt.die_force == 0 && opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
                "%s %s: side dies press by the stroke: not with -die_force or -unload withdraw", name, value->c_str());
   }
+  PetscCheck(opt.side_force >= 0 && std::isfinite(opt.side_force), comm, PETSC_ERR_USER_INPUT,
+             "-side_force %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",
+             opt.side_force);
+  PetscCheck(opt.side_force == 0 || (opt.side_die != "none" && opt.pass2_stroke == 0), comm, PETSC_ERR_USER_INPUT,
+             "-side_force %g: force-controlled side dies need -side_die (mirror, flat or a file) and one pass (not "
+             "with -pass2_stroke)",
+             opt.side_force);
   if (!opt.stroke_path.empty()) {
     // The die goes to each stroke in turn at the punch speed; the last is the press's final stroke.
     PetscCheck(press, comm, PETSC_ERR_USER_INPUT, "-stroke_path: the %s scene presses with no dies", opt.scene.c_str());

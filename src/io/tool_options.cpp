@@ -57,6 +57,11 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                         "tool scenes: side dies pressing by the stroke U: none, mirror (the upper die turned to the "
                         "side), flat (a plate), or a profile file drawn as an upper die (docs/dies.md)",
                         opt.side_die));
+  PetscCall(read.Real(PetscOptionsObject, "-side_force",
+                      "tool scenes with side dies: force control: each side die presses with a force rising from 0 to "
+                      "this (N/mm, on the whole tube) over the press, its travel an unknown of each increment (0: "
+                      "they move by the stroke)",
+                      opt.side_force));
   PetscCall(
     read.String(PetscOptionsObject, "-pass2_side_die",
                 "squaring: the second pass's side dies: none, mirror, flat or a profile file (default: the first "

@@ -85,10 +85,13 @@ public:
     return opt_.unload == "withdraw" ? stroke_ - (lambda - 1.0) * back_ : stroke_;
   }
 
-  // Force control: the model's half of the punch load, rising to -die_force over the press.
+  // Force control: the model's half of the punch load, rising to -die_force over the press; or the side dies'
+  // force in the model (-side_force).
   double ToolForce(double lambda) const override
   {
-    return std::min(lambda, kFirstRelease) * opt_.die_force / LoadPerModelForce(); // (released: not read)
+    const double model =
+      opt_.side_force > 0 ? opt_.side_force * SideDiesInModel() : opt_.die_force / LoadPerModelForce();
+    return std::min(lambda, kFirstRelease) * model; // (released: not read)
   }
 
   PetscErrorCode Initialize(Model &m, ContactSpec &tools) override
@@ -102,6 +105,7 @@ public:
     }
     PetscCall(PassTools(m, 0, tools.tools));
     tools.tools[kUpper].pad = opt_.die_force > 0;
+    for (size_t k = SideDie(); opt_.side_force > 0 && k < tools.tools.size(); ++k) tools.tools[k].pad = true;
     tools.candidates = "outer";
     // The half tube between both dies is mirrored about the y axis only.
     if (full_) {
@@ -248,6 +252,9 @@ public:
     Vec2 f = Press()({force[0], force[1]});
     row.load = -LoadPerModelForce() * f[1]; // (the punch load on the whole tube)
     row.tool_fx = -f[0], row.tool_fy = -f[1], row.tool_moment = -Press().det() * moment;
+    // (the side dies' travel: the stroke, through the springbacks too, or their own under -side_force)
+    if (opt_.side_die != "none" || PassOptions(opt_, 1).side_die != "none")
+      row.side_stroke = opt_.side_force > 0 ? m.contact->tool(SideDie()).stroke : row.stroke;
     if (PassOptions(opt_, pass_).side_die != "none" && !unloading_) {
       // (the right side die: whole in the half and full models, its upper half in the quarter)
       // (its force along the press's x: a turned pass's side die presses along the press's -x)
@@ -391,6 +398,9 @@ private:
     pinned_ = true;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  // The side dies' force in the model per side die's force on the whole tube: the quarter carries the upper
+  // half of one, the half model one, the full model two.
+  double SideDiesInModel() const { return full_ ? 2.0 : half_ ? 1.0 : 0.5; }
   // The punch load per vertical force of the model on the upper die: the quarter and the half model carry half.
   double LoadPerModelForce() const { return full_ ? 1.0 : 2.0; }
   TubePart Part() const { return full_ ? TubePart::Full : half_ ? TubePart::Half : TubePart::Quarter; }

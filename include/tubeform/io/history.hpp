@@ -22,7 +22,8 @@ struct HistoryRow {
   double release_force = 0, contact_gap = 0, fn_mismatch = 0;
   double tool_fx = 0, tool_fy = 0, tool_moment = 0;
   double lower_fx = 0, lower_fy = 0, lower_moment = 0;
-  double side_load = 0; // the side dies' force along their motion, each, on the whole tube (N/mm; 0: none)
+  double side_load = 0;   // the side dies' force along their motion, each, on the whole tube (N/mm; 0: none)
+  double side_stroke = 0; // the side dies' travel (mm): the stroke, or their own under -side_force (0: no side dies)
   double w_kinetic = 0, w_inertia = 0, inertia = 0, w_damped = 0, w_tool = 0, internal_error = 0;
   double slip = 0, fn_sum = 0, det_sign = 0;
 };

@@ -81,6 +81,7 @@ struct Options {
   std::string pass2_die_profile, pass2_lower_die;
   std::string side_die = "none"; // side dies pressing along x by the stroke: none, mirror, flat or a profile file
   std::string pass2_side_die;    // the second pass's side dies (empty: the first pass's -side_die)
+  double side_force = 0;         // side dies pressing with this force (N/mm, each), their travel unknown (0: stroke)
   double pass2_turn = 0;         // the tube turned counter-clockwise before the second pass (degrees, quarter turns)
   double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
   double friction_tol = ContactParams{}.tol;
