@@ -153,21 +153,18 @@ public:
     if (!Unloading(lambda)) {
       // The second pass: the springback's loads are all applied; its dies from their start, the material's law.
       // (Its dies first: one the scene refuses, inside the tube, ends the run with the first pass's results.)
-      ContactSpec spec = spec_;
-      PetscCall(PassTools(m, 1, spec.tools));
+      std::vector<Tool> drawn;
+      PetscCall(PassTools(m, 1, drawn)); // (the floor under the tube as the springback left it: floor_y_)
       std::vector<SurfacePoint> outer;
       PetscCall(GatherOuter(m, outer));
-      PetscCall(StartOnTube(m.comm, !m.quiet, outer, spec.tools, start_back_));
+      PetscCall(StartOnTube(m.comm, !m.quiet, outer, drawn, start_back_));
       unloading_ = false;
       // (the pin stays until the second pass's dies hold the half model's tube: Load)
       reversed_total_[0] = reversed_total_[1] = reversed_moment_ = 0;
       m.body.SetPlasticAgain();
       pass_ = 1;
-      if (full_) {
-        // A turned tube is held on its press's axes (as a restart chooses them: Persist).
-        PetscCall(MarkAxisPins(m, Press()));
-        spec.symmetry = {{"axis", AxisHeld()}};
-      }
+      ContactSpec spec = spec_;
+      PetscCall(SecondPass(m, spec.tools, spec.symmetry));
       if (pinned_) PetscCall(ChoosePin(m));
       m.contact->Setup(m.mesh, m.system, m.body.position(), spec);
       m.contact->SetStroke(0.0);
@@ -295,14 +292,10 @@ public:
       // A restart in the second pass: its dies' shapes for the contact set (its state, strokes included, read),
       // a turned tube's pins.
       std::vector<Tool> tools;
-      PetscCall(PassTools(m, 1, floor_y_, tools));
-      for (size_t k = 0; k < tools.size() && k < start_back_.size(); ++k)
-        tools[k] = MovedBack(tools[k], start_back_[k]);
+      std::vector<std::pair<std::string, Vec2>> symmetry;
+      PetscCall(SecondPass(m, tools, symmetry));
       m.contact->ReplaceTools(std::move(tools));
-      if (full_) {
-        PetscCall(MarkAxisPins(m, Press()));
-        m.contact->SetSymmetry({{"axis", AxisHeld()}});
-      }
+      if (!symmetry.empty()) m.contact->SetSymmetry(symmetry);
     }
     // The springback's total force and moment and the side C is measured on (from the loading).
     std::vector<double> pairs = {reversed_total_[0], reversed_total_[1], (double)side_ends_[0], (double)side_ends_[1],
@@ -380,6 +373,21 @@ private:
     PetscFunctionBeginUser;
     PetscCall(BuildPassDies(m.comm, opt_, pass, squaring_, half_, full_, floor_y, tools, flank_, apex_));
     for (Tool &t : tools) t = Transform(t, PassMap(pass));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  // The second pass's dies where they start (drawn on floor_y_, moved back by start_back_) and, in the full
+  // model, its pins on the press's axis with the held direction the contact set keeps (`symmetry`, left as it
+  // is in the other models): the pass's start (BeginStage) and a restart inside it (Persist) alike.
+  PetscErrorCode SecondPass(Model &m, std::vector<Tool> &tools, std::vector<std::pair<std::string, Vec2>> &symmetry)
+  {
+    PetscFunctionBeginUser;
+    PetscCall(PassTools(m, 1, floor_y_, tools));
+    for (size_t k = 0; k < tools.size() && k < start_back_.size(); ++k) tools[k] = MovedBack(tools[k], start_back_[k]);
+    if (full_) {
+      PetscCall(MarkAxisPins(m, Press()));
+      symmetry = {{"axis", AxisHeld()}};
+    }
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
