@@ -83,6 +83,23 @@ RUNS = {"side_four.h5": RING + ["-stroke", 3], "side_half.h5": RING + ["-stroke"
 run_all(tf, mpirun, [opts + ["-output", out(name)] for name, opts in RUNS.items()], timeout=600)
 
 
+def continued(name, whole, every, inside, label):
+    """RUNS[name] checkpointed every `every` increments and continued from its last checkpoint, which must lie
+    inside the load factors `inside` (a checkpoint at the run's end would restart nothing), against `whole`."""
+    ck = out(f"{name}_ck.h5")
+    opts = RUNS[f"{name}.h5"] + ["-output", out(f"{name}_part.h5")]
+    run(tf, mpirun, 1, opts + ["-checkpoint", ck, "-checkpoint_every", every], timeout=600)
+    with h5py.File(ck, "r") as c:
+        lam = c["/run/lambda"][0]
+    run(tf, mpirun, 1, opts + ["-restart", ck], timeout=600)
+    part = history_and_tools(out(f"{name}_part.h5"))
+    cols = [c for c in whole if c != "tools"]
+    same = all(part[c].shape == whole[c].shape for c in cols)
+    worst = max(np.abs(part[c] - whole[c]).max() / max(np.abs(whole[c]).max(), 1e-300) for c in cols) if same else 1
+    k.check(same and worst <= 1e-12 and inside[0] < lam < inside[1],
+            f"{label} (lambda {lam:.3f}): the history within {worst:.1e} (1e-12)")
+
+
 def press(name, n=1):
     """The history and tools of one of RUNS, run already (or on n ranks now)."""
     if n > 1:
@@ -142,6 +159,9 @@ k.check(over < 1e-4 and alone["x_max"][-1] > RO + 1,
 
 # D. Side dies in a second pass, drawn turned and not.
 turned, plain = press("side_pass2_turned.h5"), press("side_pass2_plain.h5")
+continued("side_pass2_turned", turned, int(np.sum(turned["stage"] <= 1)) + int(np.sum(turned["stage"] == 2)) // 2,
+          (2, 3), "side dies in the turned second pass (more tools than the first pass's), continued from a "
+          "checkpoint inside it")
 s2 = turned["stage"] == 2
 same = len(turned["stage"]) == len(plain["stage"]) and (turned["stage"] == plain["stage"]).all()
 worst = 1.0
@@ -197,14 +217,6 @@ full = press("side_force_full.h5")
 end = max(abs(full[c][-1] / held[c][-1] - 1) for c in ("load", "side_load", "side_stroke", "x_max"))
 k.check(end < 1e-3, f"force-controlled side plates, the full model (two plates sharing one travel) against the "
         f"quarter at the end of the press: within {end:.1e} (1e-3, as B)")
-ck, every = out("side_force_ck.h5"), len(held["stroke"]) // 2
-run(tf, mpirun, 1, RUNS["side_force.h5"] + ["-output", out("side_force_part.h5"), "-checkpoint", ck,
-                                            "-checkpoint_every", every], timeout=600)
-run(tf, mpirun, 1, RUNS["side_force.h5"] + ["-output", out("side_force_part.h5"), "-restart", ck], timeout=600)
-part = history_and_tools(out("side_force_part.h5"))
-cols = [c for c in held if c != "tools"]
-same = all(part[c].shape == held[c].shape for c in cols)
-worst = max(np.abs(part[c] - held[c]).max() / max(np.abs(held[c]).max(), 1e-300) for c in cols) if same else 1
-k.check(same and worst <= 1e-12, f"force-controlled side plates, continued from a checkpoint at increment {every}: "
-        f"the history within {worst:.1e} (1e-12)")
+continued("side_force", held, int(np.sum(held["stroke"] < 1.5)), (0, 1),
+          "force-controlled side plates, continued from a checkpoint inside the press")
 k.done()

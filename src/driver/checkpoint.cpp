@@ -21,8 +21,8 @@ namespace tf {
 
 namespace {
 // The layout of a checkpoint; a file of another version is refused (4: several tools; 5: a force-controlled one;
-// 6: the second pass's dies moved back to the tube).
-constexpr double kCheckpointVersion = 6;
+// 6: the second pass's dies moved back to the tube; 7: the side dies' travel, the scene read before the contacts).
+constexpr double kCheckpointVersion = 7;
 // Room a checkpoint is given before it is written: 8-byte numbers, fewer than
 // 64 per node, per cell and per history row (the state holds about 30, 40 and
 // 46), and 1 MB for HDF5's own.
@@ -119,8 +119,9 @@ PetscErrorCode Problem::Persist(Archive &ar, CheckpointHeader &head)
   PetscCall(system_.Persist(ar));
   PetscCall(body_.Persist(ar));
   if (inertia_) PetscCall(inertia_->Persist(ar));
-  if (contact_) PetscCall(contact_->Persist(ar));
+  // (the scene first: a restart inside a later pass gets that pass's tools, whose strokes the contact set reads)
   PetscCall(scene_->Persist(*model_, ar));
+  if (contact_) PetscCall(contact_->Persist(ar));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

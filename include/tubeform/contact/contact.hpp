@@ -97,13 +97,9 @@ public:
   // the set takes no further part in the increments.
   void Remove();
   bool active() const { return !removed_; }
-  // The tools' shapes (a restart in a stage whose tools are not the first ones), their strokes and the nodes'
-  // state kept.
-  void ReplaceTools(std::vector<Tool> tools)
-  {
-    for (size_t k = 0; k < tools.size() && k < tools_.size(); ++k) tools[k].stroke = tools_[k].stroke;
-    tools_ = std::move(tools);
-  }
+  // The tools of a restart inside a stage whose tools are not the first ones (called before Persist reads the
+  // set's state, their strokes included: their number may differ from the first stage's).
+  void ReplaceTools(std::vector<Tool> tools) { tools_ = std::move(tools); }
   // The node sets whose component along a direction the scene holds (ContactSpec::symmetry), in place of the
   // set's (a pass that turns the tube turns the full model's pins).
   void SetSymmetry(const std::vector<std::pair<std::string, Vec2>> &symmetry);
