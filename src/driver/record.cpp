@@ -137,9 +137,7 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
   const double share = scene_->LoadWorkShare(0.5 * (lambda0 + lambda));
   double dw_in;
   if (share > 0) {
-    // (side dies by their own travel: the stroke, or an unknown with -side_force)
-    const double dw_tool = share * 0.5 * (prev.load + row.load) * (row.stroke - prev.stroke) +
-                           share * 0.5 * (prev.side_load + row.side_load) * (row.side_stroke - prev.side_stroke);
+    const double dw_tool = scene_->ToolWork(prev, row, share);
     PetscCall(system_.ExternalWork(forces_.f_app0, nullptr, du, dw_in));
     dw_in += dw_tool;
     energy_.w_tool += dw_tool;

@@ -76,6 +76,20 @@ public:
   {
     return Unloading(lambda) && opt_.unload == "reverse" ? 0.0 : full_ ? 2.0 : half_ ? 1.0 : 0.5;
   }
+  // Each die's force in the model over its own travel (the trapezoid rule): the upper die's share of the punch
+  // load; in the half and full models the lower die's own force (a floor or die that is no mirror carries less
+  // than the upper one when side dies take some of the vertical force by friction); the side dies' force over
+  // their travel (the stroke, or their own under -side_force).
+  double ToolWork(const HistoryRow &prev, const HistoryRow &row, double share) const override
+  {
+    const bool fixed = half_ && opt_.lower_die_motion == "fixed";
+    const double dU = row.stroke - prev.stroke;
+    // (the quarter: share 0.5 of the punch load, the y = 0 plane standing in for the mirrored lower die)
+    double dw = (half_ ? (fixed ? 2.0 : 1.0) / LoadPerModelForce() : share) * 0.5 * (prev.load + row.load) * dU;
+    if (half_ && !fixed) dw -= 0.5 * (prev.lower_fy + row.lower_fy) * dU; // (moving up: the model pushes it down)
+    dw += SideDiesInModel() * 0.5 * (prev.side_load + row.side_load) * (row.side_stroke - prev.side_stroke);
+    return dw;
+  }
   // The stroke of the dies in place: the first pass's, then (once its dies are set up) the second's.
   double ToolStroke(double lambda) const override
   {

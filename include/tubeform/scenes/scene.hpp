@@ -85,6 +85,13 @@ public:
   // The energy check then takes its input from the reported load
   // (docs/theory.md, "Self-checks").
   virtual double LoadWorkShare(double lambda) const { return 0; }
+  // The tools' work on the model over a step from `prev` to `row` where LoadWorkShare (`share`) is not 0: by
+  // default the reported load over the stroke, the trapezoid rule; a scene with several tools whose forces
+  // differ sums each one's over its own travel.
+  virtual double ToolWork(const HistoryRow &prev, const HistoryRow &row, double share) const
+  {
+    return share * 0.5 * (prev.load + row.load) * (row.stroke - prev.stroke);
+  }
   // Collective: writes or reads the state the scene carries between
   // increments (a stage's loads) for checkpoints; none by default.
   virtual PetscErrorCode Persist(Model &m, Archive &ar) { return 0; }
