@@ -42,7 +42,8 @@ D. Side dies in a second pass (-pass2_side_die): the paper's tube pressed 2 mm b
    read in the tube's frame instead of the turned press's gives the other die's O(1); the turned run's energy
    balance, from its reported load and side load, within 5e-3 (tests/check_squaring.py's (a); the side force in
    the tube's frame stops it at -25 %). The turned run on 1 vs 2 ranks within 1.3e-8 of the largest value in the
-   first pass and 3e-5 in the second (tests/check_squaring.py's bounds).
+   first pass and 3e-5 in the second (tests/check_squaring.py's bounds: the first pass ends at U = 2 mm, before
+   the 2.6 mm where its round-off starts to grow, and its springback is elastic).
 E. Force-controlled side dies (-side_force F: each side plate presses with a force rising from 0 to F over the
    press, its travel an unknown of each increment), beside the V-dies (the paper's tube, fast preset, U = 3 mm):
    - with the paper's exact linear steps (-equilibrium_tol 0), F = 20 N/mm: each side plate's force at the end

@@ -78,11 +78,12 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
   const bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != "auto" ||
                      opt.pass2_stroke != 0 || !opt.pass2_die_profile.empty() || !opt.pass2_lower_die.empty() ||
-                     opt.pass2_turn != 0 || opt.die_force != 0 || opt.side_die != "none" || !opt.pass2_side_die.empty();
+                     opt.pass2_turn != 0 || opt.die_force != 0 || opt.side_die != "none" ||
+                     !opt.pass2_side_die.empty() || opt.side_force != 0;
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
-    "-lower_die, -lower_die_motion, -model, -pass2_*, -die_force, -side_die: the %s scene presses with no dies (these "
-    "are the squaring and flattening scenes' options)",
+    "-lower_die, -lower_die_motion, -model, -pass2_*, -die_force, -side_die, -side_force: the %s scene presses with "
+    "no dies (these are the squaring and flattening scenes' options)",
     opt.scene.c_str());
   PetscCheck(opt.die_force >= 0 && std::isfinite(opt.die_force), comm, PETSC_ERR_USER_INPUT,
              "-die_force %g: the punch load must be a non-negative number of N/mm (0: the die follows -stroke)",

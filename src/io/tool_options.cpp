@@ -53,10 +53,11 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                         "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first "
                         "pass's -lower_die)",
                         opt.pass2_lower_die));
-  PetscCall(read.String(PetscOptionsObject, "-side_die",
-                        "tool scenes: side dies pressing by the stroke U: none, mirror (the upper die turned to the "
-                        "side), flat (a plate), or a profile file drawn as an upper die (docs/dies.md)",
-                        opt.side_die));
+  PetscCall(
+    read.String(PetscOptionsObject, "-side_die",
+                "tool scenes: side dies pressing by the stroke U (or with -side_force): none, mirror (the upper "
+                "die turned to the side), flat (a plate), or a profile file drawn as an upper die (docs/dies.md)",
+                opt.side_die));
   PetscCall(read.Real(PetscOptionsObject, "-side_force",
                       "tool scenes with side dies: force control: each side die presses with a force rising from 0 to "
                       "this (N/mm, on the whole tube) over the press, its travel an unknown of each increment (0: "

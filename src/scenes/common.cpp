@@ -73,6 +73,18 @@ PetscErrorCode QuarterSymmetry(Model &m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+double PressToolWork(TubePart part, bool lower_fixed, const HistoryRow &prev, const HistoryRow &row)
+{
+  const bool two_dies = part != TubePart::Quarter, fixed = two_dies && lower_fixed;
+  const double dU = row.stroke - prev.stroke;
+  // (the share of the punch load the model carries: half in the quarter and the half model, all in the full one)
+  const double upper = !two_dies ? 0.5 : (fixed ? 2.0 : 1.0) / (part == TubePart::Full ? 1.0 : 2.0);
+  double dw = upper * 0.5 * (prev.load + row.load) * dU;
+  if (two_dies && !fixed) dw -= 0.5 * (prev.lower_fy + row.lower_fy) * dU; // (moving up; the model pushes it down)
+  dw += SideDiesInModel(part) * 0.5 * (prev.side_load + row.side_load) * (row.side_stroke - prev.side_stroke);
+  return dw;
+}
+
 PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part, const SquareMap &press)
 {
   // (the half and full models' tube may sit anywhere along y)

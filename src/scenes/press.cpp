@@ -16,6 +16,9 @@
 // metrics and tool forces in its press's frame: die.hpp, PassTurn).
 // With -die_force the upper die is force-controlled: its punch load rises
 // from 0 to the force over the press, and its stroke is the outcome.
+// -side_die adds dies at the tube's sides (-pass2_side_die: the second
+// pass's), moving by the stroke or, with -side_force, pressing with a force
+// their travel follows from (die.hpp, AddSideDies).
 // History: stroke = tool stroke U (mm; half the dies' closing; over two passes
 // the sum, the second pass's die at stroke - U1), load = punch load on the
 // full tube (N/mm), the upper die's vertical force on the model: twice it in
@@ -76,19 +79,10 @@ public:
   {
     return Unloading(lambda) && opt_.unload == "reverse" ? 0.0 : full_ ? 2.0 : half_ ? 1.0 : 0.5;
   }
-  // Each die's force in the model over its own travel (the trapezoid rule): the upper die's share of the punch
-  // load; in the half and full models the lower die's own force (a floor or die that is no mirror carries less
-  // than the upper one when side dies take some of the vertical force by friction); the side dies' force over
-  // their travel (the stroke, or their own under -side_force).
-  double ToolWork(const HistoryRow &prev, const HistoryRow &row, double share) const override
+  // Each die's force over its own travel (scenes/common.cpp).
+  double ToolWork(const HistoryRow &prev, const HistoryRow &row, double) const override
   {
-    const bool fixed = half_ && opt_.lower_die_motion == "fixed";
-    const double dU = row.stroke - prev.stroke;
-    // (the quarter: share 0.5 of the punch load, the y = 0 plane standing in for the mirrored lower die)
-    double dw = (half_ ? (fixed ? 2.0 : 1.0) / LoadPerModelForce() : share) * 0.5 * (prev.load + row.load) * dU;
-    if (half_ && !fixed) dw -= 0.5 * (prev.lower_fy + row.lower_fy) * dU; // (moving up: the model pushes it down)
-    dw += SideDiesInModel() * 0.5 * (prev.side_load + row.side_load) * (row.side_stroke - prev.side_stroke);
-    return dw;
+    return PressToolWork(Part(), opt_.lower_die_motion == "fixed", prev, row);
   }
   // The stroke of the dies in place: the first pass's, then (once its dies are set up) the second's.
   double ToolStroke(double lambda) const override
@@ -104,7 +98,7 @@ public:
   double ToolForce(double lambda) const override
   {
     const double model =
-      opt_.side_force > 0 ? opt_.side_force * SideDiesInModel() : opt_.die_force / LoadPerModelForce();
+      opt_.side_force > 0 ? opt_.side_force * SideDiesInModel(Part()) : opt_.die_force / LoadPerModelForce();
     return std::min(lambda, kFirstRelease) * model; // (released: not read)
   }
 
@@ -166,7 +160,8 @@ public:
     if (opt_.unload != "reverse") PetscFunctionReturn(PETSC_SUCCESS);
     if (!Unloading(lambda)) {
       // The second pass: the springback's loads are all applied; its dies from their start, the material's law.
-      // (Its dies first: one the scene refuses, inside the tube, ends the run with the first pass's results.)
+      // (Its dies first: one the scene refuses, inside the tube, ends the run with the first pass's results; the
+      // pass's floor and die measures are already its own then, which nothing reads after a stop.)
       std::vector<Tool> drawn;
       PetscCall(PassTools(m, 1, drawn)); // (the floor under the tube as the springback left it: floor_y_)
       std::vector<SurfacePoint> outer;
@@ -420,9 +415,6 @@ private:
     pinned_ = true;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  // The side dies' force in the model per side die's force on the whole tube: the quarter carries the upper
-  // half of one, the half model one, the full model two.
-  double SideDiesInModel() const { return full_ ? 2.0 : half_ ? 1.0 : 0.5; }
   // The punch load per vertical force of the model on the upper die: the quarter and the half model carry half.
   double LoadPerModelForce() const { return full_ ? 1.0 : 2.0; }
   TubePart Part() const { return full_ ? TubePart::Full : half_ ? TubePart::Half : TubePart::Quarter; }

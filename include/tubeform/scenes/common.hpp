@@ -22,6 +22,18 @@ PetscErrorCode HoldAlong(Model &m, const std::string &set, double dx, double dy)
 PetscErrorCode QuarterSymmetry(Model &m);
 // The part of the tube a tool scene models: the quarter x, y >= 0, the half x >= 0, or the whole tube.
 enum class TubePart { Quarter, Half, Full };
+// The side dies' force in the model per side die's force on the whole tube: the quarter carries the upper half
+// of one, the half model one, the full model two (-side_die).
+inline double SideDiesInModel(TubePart part)
+{
+  return part == TubePart::Full ? 2.0 : part == TubePart::Half ? 1.0 : 0.5;
+}
+// The press scenes' dies' work on the model over a step, each die's reported force over its own travel (the
+// trapezoid rule; self-check (a), Scene::ToolWork): the upper die's share of the punch load (the quarter's y = 0
+// plane stands in for a mirrored lower die; with `lower_fixed` the upper die travels 2 U); in the half and full
+// models a moving lower die's own force (a floor carries less than the die above it when side dies take some
+// of the vertical force by friction); the side dies' force over their travel (`side_stroke`).
+double PressToolWork(TubePart part, bool lower_fixed, const HistoryRow &prev, const HistoryRow &row);
 // C1 = x_max, C2 = y_max of the outer surface (the half model's C2 half its height, the full model's C1 half
 // its width) and their ratio. A pass that turned the tube measures in its press's frame: `press` maps the
 // tube's coordinates there (the inverse of the map that drew its dies).
