@@ -57,7 +57,10 @@ E. Force-controlled side dies (-side_force F: each side plate presses with a for
      two): the half model against the quarter within tests/check_squaring.py's bounds (1.3e-8 of the largest
      value to U = 2.6 mm, 3e-5 beyond), and the half model on 1 vs 2 ranks within the same; the full model
      against the quarter at the end within 1e-3 (B's bound: contact events grouped in another order);
-   - a checkpoint inside the press, continued: the history within 1e-12 (tests/check_restart.py's bound).
+   - a checkpoint inside the press, continued: the history within 1e-12 (tests/check_restart.py's bound);
+   - a force the tube cannot carry sideways (500 N/mm: the four-plate collapse of A is some 20 N/mm a plate):
+     the run stops where the plates' force stops growing, exit 1, one line naming the side plate, the results up
+     to there written.
 """
 import math
 
@@ -231,4 +234,12 @@ k.check(end < 1e-3, f"force-controlled side plates, the full model (two plates s
         f"quarter at the end of the press: within {end:.1e} (1e-3, as B)")
 continued("side_force", held, int(np.sum(held["stroke"] < 1.5)), (0, 1),
           "force-controlled side plates, continued from a checkpoint inside the press")
+p = run(tf, mpirun, 1, SQ + ["-side_die", "flat", "-side_force", 500, "-output", out("side_force_limit.h5")],
+        check=False, timeout=600)
+lines = [line for line in (p.stdout + p.stderr).splitlines() if "error" in line]
+with h5py.File(out("side_force_limit.h5"), "r") as h:
+    rows, stopped = len(h["/history/stroke"]), h["/history"].attrs["stopped"]
+k.check(p.returncode == 1 and len(lines) == 1 and "force-controlled side-plate" in lines[0] and rows > 10 and stopped,
+        f"a side force the tube cannot carry: exit {p.returncode}, one line ({lines[0][:70] if lines else ''}...), "
+        f"{rows} rows written, flagged stopped")
 k.done()

@@ -59,7 +59,7 @@ PetscErrorCode System::CombineUnitMotion(const std::vector<PetscInt> &rows, cons
   if (reason < 0) {
     std::string why;
     PetscCall(DescribeSolveFailure(ksp_, why));
-    SETERRQ(mesh_->comm, PETSC_ERR_NOT_CONVERGED, "%s (KSP, the force-controlled tool's unit motion: %s)", why.c_str(),
+    SETERRQ(mesh_->comm, PETSC_ERR_NOT_CONVERGED, "%s (KSP, %s's unit motion: %s)", why.c_str(), extra_->Name().c_str(),
             KSPConvergedReasons[reason]);
   }
   // The misses of u_0 and u_0 + u_1.
@@ -71,10 +71,10 @@ PetscErrorCode System::CombineUnitMotion(const std::vector<PetscInt> &rows, cons
   const double slope = missing[0] - missing[1];
   // (The unit motion's force, by the condition's sign convention: a tool pushing harder as it advances.)
   PetscCheck(slope > 0 && std::isfinite(missing[0] / slope), mesh_->comm, PETSC_ERR_NOT_CONVERGED,
-             "the force-controlled tool's force does not grow as it advances (%g N/mm per mm of its stroke): the "
-             "body's resistance under it has a maximum here (a limit point), or the tool touches nothing; force "
-             "control cannot pass it (press by stroke)",
-             slope);
+             "%s: its force does not grow as it advances (%g N/mm per mm of its stroke): the body's resistance "
+             "under it has a maximum here (a limit point), or it touches nothing; force control cannot pass it "
+             "(press by stroke)",
+             extra_->Name().c_str(), slope);
   const double s = missing[0] / slope;
   PetscCall(VecAXPY(sol_, s - 1.0, unit_sol_));
   extra_->Moved(s);

@@ -50,6 +50,8 @@ public:
   virtual PetscErrorCode Missing(double &missing) = 0;
   // The solution taken moves the unknown by ds beyond the guess its prescribed values were made with.
   virtual void Moved(double ds) = 0;
+  // What moves by the unknown, for errors ("the force-controlled V-die").
+  virtual std::string Name() const { return "the force-controlled tool"; }
 };
 
 class System {

@@ -132,6 +132,14 @@ public:
   // Collective: the force the force-controlled tools put on the body along their directions (committed state).
   PetscErrorCode PadForce(double &force) const;
   void Moved(double ds) override { pad_step_ += ds; }
+  // "the force-controlled " and the force-controlled tools' names.
+  std::string Name() const override
+  {
+    std::string names;
+    for (const Tool &t : tools_)
+      if (t.pad) names += (names.empty() ? "" : " and ") + t.name;
+    return "the force-controlled " + names;
+  }
   // The force-controlled tool's stroke increment in the latest solution: an iterate's own, which the caller
   // keeps beside the iterate's displacements (a line search halving back moves it with them).
   double pad_step() const { return pad_step_; }
