@@ -110,6 +110,15 @@ def continued(name, whole, every, inside, label):
             f"{label} (lambda {lam:.3f}): the history within {worst:.1e} (1e-12)")
 
 
+def agreement(a, b, cols, early):
+    """The largest difference of b's columns from a's, relative to each column's largest value in a: over the
+    rows where `early` (a mask of a's rows) holds, and over all; 1 and 1 where the two have different rows."""
+    if a["stroke"].shape != b["stroke"].shape:
+        return 1.0, 1.0
+    rel = [np.abs(b[c] - a[c]) / np.abs(a[c]).max() for c in cols]
+    return max(r[early].max() for r in rel), max(r.max() for r in rel)
+
+
 def press(name, n=1):
     """The history and tools of one of RUNS, run already (or on n ranks now)."""
     if n > 1:
@@ -191,11 +200,7 @@ e = np.abs(turned["energy_error"][1:]).max()
 k.check(e < 5e-3, f"side dies in the turned second pass: energy balance from the reported load and side load within "
         f"{e:.1e} (5e-3)")
 two = press("side_pass2_turned_np2.h5", 2)
-early = late = 1.0
-if len(two["stroke"]) == len(turned["stroke"]):
-    rel = {c: np.abs(two[c] - turned[c]) / np.abs(turned[c]).max() for c in ("load", "side_load", "x_max", "y_max")}
-    early = max(r[turned["stage"] <= 1].max() for r in rel.values())
-    late = max(r.max() for r in rel.values())
+early, late = agreement(turned, two, ("load", "side_load", "x_max", "y_max"), turned["stage"] <= 1)
 k.check(early < 1.3e-8 and late < 3e-5, f"side dies in the turned second pass, 1 vs 2 ranks: the first pass within "
         f"{early:.1e} (1.3e-8), both within {late:.1e} (3e-5)")
 
@@ -212,20 +217,13 @@ held = press("side_force.h5")
 e = np.abs(held["energy_error"][1:]).max()
 k.check(e < 5e-3, f"force-controlled side plates: energy balance with their work over their own travel within "
         f"{e:.1e} (5e-3)")
+PAD = ("load", "side_load", "side_stroke", "x_max")
 half = press("side_force_half.h5")
-worst_early = worst = 1.0
-if half["stroke"].shape == held["stroke"].shape:
-    rel = {c: np.abs(half[c] - held[c]) / np.abs(held[c]).max() for c in ("load", "side_load", "side_stroke", "x_max")}
-    worst_early = max(r[held["stroke"] <= 2.6].max() for r in rel.values())
-    worst = max(r.max() for r in rel.values())
+worst_early, worst = agreement(held, half, PAD, held["stroke"] <= 2.6)
 k.check(worst_early < 1.3e-8 and worst < 3e-5, f"force-controlled side plates, the half model against the quarter: "
         f"within {worst_early:.1e} to U = 2.6 mm (1.3e-8), {worst:.1e} to the end (3e-5)")
 two = press("side_force_half_np2.h5", 2)
-worst_early = worst = 1.0
-if half["stroke"].shape == two["stroke"].shape:
-    rel = {c: np.abs(half[c] - two[c]) / np.abs(half[c]).max() for c in ("load", "side_load", "side_stroke", "x_max")}
-    worst_early = max(r[half["stroke"] <= 2.6].max() for r in rel.values())
-    worst = max(r.max() for r in rel.values())
+worst_early, worst = agreement(half, two, PAD, half["stroke"] <= 2.6)
 k.check(worst_early < 1.3e-8 and worst < 3e-5, f"force-controlled side plates, the half model on 1 vs 2 ranks: "
         f"within {worst_early:.1e} to U = 2.6 mm (1.3e-8), {worst:.1e} to the end (3e-5)")
 full = press("side_force_full.h5")
