@@ -80,12 +80,11 @@ PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &uppe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, const Tool &upper_right, bool half,
-                           bool full, std::vector<Tool> &tools)
+PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, bool squaring, const Tool &upper_right,
+                           bool half, bool full, std::vector<Tool> &tools)
 {
   Tool drawn; // drawn as an upper die (its right half), then turned to the side by the reflection about y = x
   PetscFunctionBeginUser;
-  const bool squaring = !upper_right.segments.empty();
   const bool plate = o.side_die == "flat" || (o.side_die == "mirror" && !squaring);
   if (plate) {
     // (the whole plate in the half and full models, which reach below the x axis)
@@ -142,7 +141,8 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
     tools.push_back(lower);
   }
   if (o.side_die != "none")
-    PetscCall(AddSideDies(comm, o, pass == 1 ? "-pass2_side_die" : "-side_die", right_half, half, full, tools));
+    PetscCall(
+      AddSideDies(comm, o, pass == 1 ? "-pass2_side_die" : "-side_die", squaring, right_half, half, full, tools));
   // The second pass's dies by their own names (errors, and their outlines in the results).
   if (pass == 1)
     for (Tool &t : tools) t.name = "pass2-" + t.name;

@@ -47,6 +47,7 @@ public:
     back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
     stroke2_ = opt.pass2_stroke;
     path_ = StrokePath(opt.stroke_path, stroke_);
+    for (int pass = 0; pass < 2; ++pass) side_dies_[pass] = PassOptions(opt, pass).side_die != "none";
   }
 
   std::vector<std::string> BoundarySets() const override
@@ -259,9 +260,9 @@ public:
     row.load = -LoadPerModelForce() * f[1]; // (the punch load on the whole tube)
     row.tool_fx = -f[0], row.tool_fy = -f[1], row.tool_moment = -Press().det() * moment;
     // (the side dies' travel: the stroke, through the springbacks too, or their own under -side_force)
-    if (opt_.side_die != "none" || PassOptions(opt_, 1).side_die != "none")
+    if (side_dies_[0] || side_dies_[1])
       row.side_stroke = opt_.side_force > 0 ? m.contact->tool(SideDie()).stroke : row.stroke;
-    if (PassOptions(opt_, pass_).side_die != "none" && !unloading_) {
+    if (side_dies_[pass_] && !unloading_) {
       // (the right side die: whole in the half and full models, its upper half in the quarter)
       // (its force along the press's x: a turned pass's side die presses along the press's -x)
       PetscCall(m.contact->TotalForce(SideDie(), force, nullptr));
@@ -348,6 +349,7 @@ private:
   bool squaring_;
   bool half_;                      // the half model x >= 0 with both dies (or the full model)
   bool full_;                      // the full model: the whole tube, both dies across the y axis
+  bool side_dies_[2];              // each pass has side dies (-side_die, -pass2_side_die)
   double stroke2_ = 0;             // the second pass's stroke (0: one pass)
   PetscInt pass_ = 0;              // the pass whose dies are in place
   double floor_y_ = 0;             // where the floor of the pass in place is

@@ -47,11 +47,12 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
 PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, std::vector<Tool> &tools,
                            std::vector<double> &back);
 // Collective: a pass's side dies (o.side_die, read from `option`: -side_die or -pass2_side_die) appended to
-// `tools`: the right one (the upper die's right half `upper_right` for mirror, empty in the scenes pressing with
-// plates; a plate; or a profile drawn as an upper die), turned to the side by the reflection about y = x, moving
-// along -x by the stroke; whole in the half and full models; in the full model, its mirror on the left too.
-PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, const Tool &upper_right, bool half,
-                           bool full, std::vector<Tool> &tools);
+// `tools`: the right one (for mirror the squaring scene's upper die, whose right half is `upper_right`, or the
+// flattening scene's plate; a plate; or a profile drawn as an upper die), turned to the side by the reflection
+// about y = x, moving along -x by the stroke; whole in the half and full models; in the full model, its mirror on
+// the left too.
+PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, bool squaring, const Tool &upper_right,
+                           bool half, bool full, std::vector<Tool> &tools);
 // The map that draws a pass's dies, built in its press's frame, into the tube's: -pass2_turn turns the tube
 // before the second pass, so its dies turn the other way about the tube's centre. The quarter and the half model
 // draw the turned dies by the reflection that keeps their symmetry planes (the same press, by the tube's
