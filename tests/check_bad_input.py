@@ -77,6 +77,14 @@ cases = [
     (["-scene", "squaring", "-side_force", "20"], "need -side_die"),
     (["-scene", "squaring", "-side_die", "flat", "-side_force", "-1"], "-side_force -1"),
     (["-scene", "squaring", "-side_die", "flat", "-side_force", "20", "-pass2_stroke", "2"], "one pass"),
+    (["-scene", "squaring", "-die_offset", "0.5", "-model", "half"], "-die_offset 0.5: a die off the axis"),
+    (["-scene", "squaring", "-die_offset", "nan"], "-die_offset nan"),
+    (["-scene", "squaring", "-die_offset", "0.5", "-full_hold", "pins"], "with -full_hold pins"),
+    (["-scene", "squaring", "-full_hold", "rotation"], "-full_hold rotation: only the full model"),
+    (["-scene", "squaring", "-full_hold", "roll"], "-full_hold"),
+    (["-scene", "squaring", "-die_offset", "0.5", "-die_force", "100", "-lower_die_motion", "fixed"],
+     "the rotation hold (-full_hold, -die_offset): not with -die_force"),
+    (["-scene", "tension", "-die_offset", "0.5"], "presses with no dies"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_die", out("none.profile")],
      f"-pass2_side_die {out('none.profile')}: cannot read"),
     (["-scene", "squaring", "-side_die", out("none.profile")], "-side_die"),
@@ -146,7 +154,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 87 and len(selected) == 5, f"{len(cases)} cases on 1 rank (87), {len(selected)} on 2 (5)")
+k.check(len(cases) == 94 and len(selected) == 5, f"{len(cases)} cases on 1 rank (94), {len(selected)} on 2 (5)")
 
 
 def attempt(np_, extra):

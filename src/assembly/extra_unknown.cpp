@@ -5,6 +5,7 @@
 // condition on the reactions is affine in them, so its misses m_0 (for u_0)
 // and m_1 (for u_0 + u_1) give s = m_0 / (m_0 - m_1).
 #include <cmath>
+#include <cstdio>
 
 #include <string>
 
@@ -12,6 +13,18 @@
 #include "tubeform/assembly/system.hpp"
 
 namespace tf {
+
+std::string ExtraUnknown::Stalled(double slope) const
+{
+  if (slope > 0) return "";
+  char why[256];
+  std::snprintf(why, sizeof(why),
+                "its force does not grow as it advances (%g N/mm per mm of its stroke): the body's resistance under it "
+                "has a maximum here (a limit point), or it touches nothing; force control cannot pass it (press by "
+                "stroke)",
+                slope);
+  return why;
+}
 
 PetscErrorCode System::PrepareUnitMotion(bool &any)
 {
@@ -70,11 +83,9 @@ PetscErrorCode System::CombineUnitMotion(const std::vector<PetscInt> &rows, cons
   PetscCall(extra_->Missing(missing[1]));
   const double slope = missing[0] - missing[1];
   // (The unit motion's force, by the condition's sign convention: a tool pushing harder as it advances.)
-  PetscCheck(slope > 0 && std::isfinite(missing[0] / slope), mesh_->comm, PETSC_ERR_NOT_CONVERGED,
-             "%s: its force does not grow as it advances (%g N/mm per mm of its stroke): the body's resistance "
-             "under it has a maximum here (a limit point), or it touches nothing; force control cannot pass it "
-             "(press by stroke)",
-             extra_->Name().c_str(), slope);
+  const std::string stalled = extra_->Stalled(slope);
+  PetscCheck(stalled.empty() && std::isfinite(missing[0] / slope), mesh_->comm, PETSC_ERR_NOT_CONVERGED, "%s: %s",
+             extra_->Name().c_str(), stalled.empty() ? "no finite solution" : stalled.c_str());
   const double s = missing[0] / slope;
   PetscCall(VecAXPY(sol_, s - 1.0, unit_sol_));
   extra_->Moved(s);

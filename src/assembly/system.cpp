@@ -73,13 +73,13 @@ void System::SetFrame(PetscInt node, double angle)
   sin_[node] = s;
 }
 
-bool System::PrescribeAlong(PetscInt node, double dx, double dy, double value)
+bool System::PrescribeAlong(PetscInt node, double dx, double dy, double value, double unit)
 {
   const double dl = cos_[node] * dx + sin_[node] * dy, dn = -sin_[node] * dx + cos_[node] * dy;
   if (std::abs(std::abs(dl) - 1) < kAxisTol)
-    Prescribe(node, 0, dl * value);
+    Prescribe(node, 0, dl * value, dl * unit);
   else if (std::abs(std::abs(dn) - 1) < kAxisTol)
-    Prescribe(node, 1, dn * value);
+    Prescribe(node, 1, dn * value, dn * unit);
   else
     return false;
   return true;

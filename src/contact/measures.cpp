@@ -83,6 +83,19 @@ PetscErrorCode ContactSet::TotalForce(int k, double force[2], double *moment) co
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode ContactSet::FrictionMoment(const Vec2 &c, double &capacity) const
+{
+  double local = 0;
+  PetscFunctionBeginUser;
+  for (PetscInt node : candidates_) {
+    if (!contact_[node] || !mesh_->node_owned[node] || !Frictional(node)) continue;
+    const Vec2 x = Position(node), l = l_[node];
+    local += prm_.mu * std::abs(fn_[node]) * std::abs((x[0] - c[0]) * l[1] - (x[1] - c[1]) * l[0]);
+  }
+  PetscCall(MPIU_Allreduce(&local, &capacity, 1, MPIU_REAL, MPIU_SUM, comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode ContactSet::Count(PetscInt &n) const
 {
   PetscInt local = 0;

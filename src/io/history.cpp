@@ -81,6 +81,12 @@ const std::vector<HistoryColumn> &HistoryColumns()
      "half model: moment of the model's forces on the lower die about its frame's origin (N mm/mm)"},
     {"side_stroke", &HistoryRow::side_stroke,
      "-side_die: the side dies' travel towards the tube's centre (mm): the stroke, or their own with -side_force"},
+    {"hold_moment", &HistoryRow::hold_moment,
+     "full model, the rotation hold: the couple it puts on the tube (N mm/mm, counter-clockwise positive, in the "
+     "press's frame; 0 without it)"},
+    {"hold_friction", &HistoryRow::hold_friction,
+     "the rotation hold: the largest moment the contacts' friction could carry about the tube's centre (N mm/mm): "
+     "a hold_moment above it is one the real tube would turn under"},
   };
   return cols;
 }

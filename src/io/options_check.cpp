@@ -79,11 +79,12 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
   const bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != "auto" ||
                      opt.pass2_stroke != 0 || !opt.pass2_die_profile.empty() || !opt.pass2_lower_die.empty() ||
                      opt.pass2_turn != 0 || opt.die_force != 0 || opt.side_die != "none" ||
-                     !opt.pass2_side_die.empty() || opt.side_force != 0;
+                     !opt.pass2_side_die.empty() || opt.side_force != 0 || opt.die_offset != 0 ||
+                     opt.full_hold != "auto";
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
-    "-lower_die, -lower_die_motion, -model, -pass2_*, -die_force, -side_die, -side_force: the %s scene presses with "
-    "no dies (these are the squaring and flattening scenes' options)",
+    "-lower_die, -lower_die_motion, -model, -pass2_*, -die_force, -die_offset, -side_die, -side_force, -full_hold: "
+    "the %s scene presses with no dies (these are the squaring and flattening scenes' options)",
     opt.scene.c_str());
   PetscCheck(opt.die_force >= 0 && std::isfinite(opt.die_force), comm, PETSC_ERR_USER_INPUT,
              "-die_force %g: the punch load must be a non-negative number of N/mm (0: the die follows -stroke)",
@@ -168,6 +169,20 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
              "-pass2_turn %g with -model half: the half model's plane x = 0 is no symmetry plane of a press turned by "
              "90 degrees; use -model full (or auto)",
              opt.pass2_turn);
+  // The rotation hold: the full model; one extra unknown in a solve (scenes/hold.hpp).
+  PetscCheck(std::isfinite(opt.die_offset) && (opt.die_offset == 0 || FullModel(opt)), comm, PETSC_ERR_USER_INPUT,
+             "-die_offset %g: a die off the axis breaks the tube's mirror symmetry; give a number of mm with -model "
+             "full (or auto)",
+             opt.die_offset);
+  PetscCheck(opt.die_offset == 0 || opt.full_hold != "pins", comm, PETSC_ERR_USER_INPUT,
+             "-die_offset %g with -full_hold pins: the pins would hold the tube's slide against the die; use "
+             "-full_hold rotation (or auto)",
+             opt.die_offset);
+  PetscCheck(opt.full_hold == "auto" || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
+             "-full_hold %s: only the full model is held so (-model full)", opt.full_hold.c_str());
+  PetscCheck(!HeldByRotation(opt) || (opt.die_force == 0 && opt.side_force == 0), comm, PETSC_ERR_USER_INPUT,
+             "the rotation hold (-full_hold, -die_offset): not with -die_force or -side_force (one force-controlled "
+             "unknown in an increment)");
   PetscCheck(QuarterModel(opt) || opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
              "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
   PetscFunctionReturn(PETSC_SUCCESS);

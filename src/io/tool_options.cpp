@@ -35,13 +35,22 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                        "then travels 2 U, so U is half the dies' closing either way)",
                        {"mirror", "fixed"}, opt.lower_die_motion));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
-                       "tool scenes: the part of the tube modelled: quarter, half (x >= 0), full (held by the x of "
-                       "its outer nodes on the y axis), auto (the quarter where exact, else the half or the full)",
+                       "tool scenes: the part of the tube modelled: quarter, half (x >= 0), full (held as "
+                       "-full_hold says), auto (the quarter where exact, else the half or the full)",
                        {"auto", "quarter", "half", "full"}, opt.model));
   PetscCall(read.Real(PetscOptionsObject, "-die_force",
                       "tool scenes: force control: the upper die presses with a punch load rising from 0 to this "
                       "(N/mm) over the press, its stroke an unknown of each increment (0: the stroke -stroke)",
                       opt.die_force));
+  PetscCall(read.Real(PetscOptionsObject, "-die_offset",
+                      "tool scenes: the first pass's upper die moved off the y axis by this along x (mm; the full "
+                      "model, held by the rotation hold; docs/dies.md)",
+                      opt.die_offset));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-full_hold",
+                       "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "
+                       "on its inner nodes there holds its rotation alone, the dies its slide; docs/dies.md), auto "
+                       "(rotation with -die_offset, else pins)",
+                       {"auto", "pins", "rotation"}, opt.full_hold));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
                       "squaring: a second pass after the springback: press again by this stroke (mm, from the dies' "
                       "start, where they touch the tube at the latest; 0: one pass), then spring back",

@@ -176,6 +176,21 @@ PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoi
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, double offset, Tool &die)
+{
+  std::vector<Tool> one = {Shifted(die, {offset, 0})};
+  std::vector<double> back;
+  PetscFunctionBeginUser;
+  PetscCall(StartOnTube(comm, false, outer, one, back));
+  die = one[0];
+  if (say)
+    PetscCall(PetscPrintf(comm,
+                          "tubeform: the %s is %g mm off the axis; it starts %.4g mm back along its motion, "
+                          "where it touches the tube\n",
+                          die.name.c_str(), offset, back[0]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 SquareMap PassTurn(const Options &opt, int pass, bool half, bool full)
 {
   const int k = pass == 1 ? Pass2Quarters(opt) : 0, q = ((k % 4) + 4) % 4;

@@ -27,15 +27,15 @@ PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin, const SquareMap &pre
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MarkAxisPins(Model &m, const SquareMap &press)
+PetscErrorCode MarkAxisPins(Model &m, const SquareMap &press, const char *surface, const char *set)
 {
   struct {
     double y;
     int id;
   } mine[2] = {{-kNever, -1}, {-kNever, -1}}, best[2];
   PetscFunctionBeginUser;
-  // The outer nodes nearest the y axis at its top and at its bottom (the largest |y| among those on it).
-  for (PetscInt n : m.mesh.node_sets["outer"]) {
+  // The surface's nodes on the y axis at its top and at its bottom (the largest |y| among those on it).
+  for (PetscInt n : m.mesh.node_sets[surface]) {
     const Vec2 p0 = press({m.mesh.x0[2 * n], m.mesh.x0[2 * n + 1]});
     const double x = p0[0], y = p0[1];
     const int side = y > 0 ? 0 : 1, id = (int)m.mesh.node_orig[n];
@@ -44,11 +44,12 @@ PetscErrorCode MarkAxisPins(Model &m, const SquareMap &press)
   }
   PetscCallMPI(MPI_Allreduce(mine, best, 2, MPI_DOUBLE_INT, MPI_MAXLOC, m.comm));
   PetscCheck(best[0].y > 0 && best[1].y > 0, m.comm, PETSC_ERR_USER_INPUT,
-             "the full model needs an outer node on the press's y axis at the tube's top and at its bottom (the "
-             "mesh has none there)");
-  auto &axis = m.mesh.node_sets["axis"];
+             "the full model needs an %s node on the press's y axis at the tube's top and at its bottom (the "
+             "mesh has none there)",
+             surface);
+  auto &axis = m.mesh.node_sets[set];
   axis.clear();
-  for (PetscInt n : m.mesh.node_sets["outer"])
+  for (PetscInt n : m.mesh.node_sets[surface])
     if (m.mesh.node_orig[n] == best[0].id || m.mesh.node_orig[n] == best[1].id) axis.push_back(n);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

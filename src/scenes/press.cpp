@@ -30,6 +30,7 @@
 #include "tubeform/scenes/common.hpp"
 #include "tubeform/scenes/contact_params.hpp"
 #include "tubeform/scenes/die.hpp"
+#include "tubeform/scenes/hold.hpp"
 #include "tubeform/scenes/press_shape.hpp"
 #include "tubeform/scenes/stroke_path.hpp"
 
@@ -40,7 +41,7 @@ namespace {
 class PressScene : public Scene {
 public:
   PressScene(const Options &opt, bool squaring)
-      : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(FullModel(opt))
+      : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(FullModel(opt)), hold_on_(HeldByRotation(opt))
   {
     stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_angle)
                                            : opt.stroke;
@@ -113,22 +114,19 @@ public:
       PetscCall(PassTools(m, 1, second));
     }
     PetscCall(PassTools(m, 0, tools.tools));
+    std::vector<SurfacePoint> outer;
+    PetscCall(GatherOuter(m, outer));
+    if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
     tools.tools[kUpper].pad = opt_.die_force > 0;
     for (size_t k = SideDie(); opt_.side_force > 0 && k < tools.tools.size(); ++k) tools.tools[k].pad = true;
     tools.candidates = "outer";
-    // The half tube between both dies is mirrored about the y axis only.
-    if (full_) {
-      if (stroke2_ > 0) PetscCall(MarkAxisPins(m, PassMap(1).Inverse())); // (the second pass's axis: checked now)
-      PetscCall(MarkAxisPins(m));
-      tools.symmetry = {{"axis", AxisHeld()}}; // (held by the scene: Load)
-    } else if (half_)
-      tools.symmetry = {{"x0", {1, 0}}};
-    else
-      tools.symmetry = {{"x0", {1, 0}}, {"y0", {0, 1}}};
+    for (int pass = stroke2_ > 0; full_ && pass >= 0; --pass) { // (the second pass's axis checked now)
+      PetscCall(MarkAxisPins(m, PassMap(pass).Inverse()));
+      if (hold_on_) PetscCall(hold_.Mark(m, PassMap(pass).Inverse()));
+    }
+    tools.symmetry = Symmetry();
     // Default VCRI: 2 % of the mean distance between the outer surface's nodes
     // (of the mesh actually used: generated or read from a file).
-    std::vector<SurfacePoint> outer;
-    PetscCall(GatherOuter(m, outer));
     double length = 0;
     for (size_t k = 1; k < outer.size(); ++k)
       length += std::hypot(outer[k].x - outer[k - 1].x, outer[k].y - outer[k - 1].y);
@@ -220,7 +218,10 @@ public:
     // (inside the increment: its failure writes the results so far)
     if (opt_.die_force > 0 && m.contact->active())
       PetscCall(CheckForceReach(m.comm, opt_, squaring_, m.contact->tool(kUpper).stroke));
-    if (full_) PetscCall(HoldAlong(m, "axis", AxisHeld()[0], AxisHeld()[1])); // (the pins: scenes/pins.cpp)
+    if (hold_on_ && !unloading_)
+      PetscCall(hold_.Constrain(m, AxisHeld())); // (scenes/hold.hpp; released, the pins hold the tube)
+    else if (full_)
+      PetscCall(HoldAlong(m, "axis", AxisHeld()[0], AxisHeld()[1])); // (the pins: scenes/pins.cpp)
     // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
     // holds the tube's rigid motion along the press's y.
     if (pinned_ && !unloading_) {
@@ -244,7 +245,7 @@ public:
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
-  PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
+  PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
   {
     double force[2], moment;
     PetscFunctionBeginUser;
@@ -273,6 +274,7 @@ public:
       f = Press()({force[0], force[1]});
       row.lower_fx = -f[0], row.lower_fy = -f[1], row.lower_moment = -Press().det() * moment;
     }
+    if (hold_on_ && !unloading_) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
     PetscCall(OuterExtents(m, row, Part(), Press()));
     PetscCall(Shape(m, lambda, row));
     row.stage = StageOf(lambda);
@@ -357,6 +359,8 @@ private:
   ContactSpec spec_;               // the contact set's nodes, supports and law (for the second pass's dies)
   PetscInt pin_ = -1;              // the half model's springback: the local node whose press y is held (-1: none here)
   bool pinned_ = false;            // the pin holds (every rank alike)
+  const bool hold_on_;             // the full model held by the rotation hold (not its pins) while pressing
+  RotationHold hold_;
   double stroke_ = 0, back_ = 0;
   StrokePath path_;           // the first press's (-stroke_path, or straight to the stroke)
   int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
@@ -397,7 +401,8 @@ private:
     for (size_t k = 0; k < tools.size() && k < start_back_.size(); ++k) tools[k] = MovedBack(tools[k], start_back_[k]);
     if (full_) {
       PetscCall(MarkAxisPins(m, Press()));
-      symmetry = {{"axis", AxisHeld()}};
+      if (hold_on_) PetscCall(hold_.Mark(m, Press()));
+      symmetry = Symmetry();
     }
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -407,6 +412,15 @@ private:
   SquareMap Press() const { return PassMap(pass_).Inverse(); }
   // The full model's pins hold the tube along the press's x.
   Vec2 AxisHeld() const { return PassMap(pass_)({1, 0}); }
+  // The nodes whose direction the contact set keeps: the quarter's and the half's symmetry planes (the half tube
+  // between both dies is mirrored about the y axis only), the full model's pins (the rotation hold's: inner nodes).
+  std::vector<std::pair<std::string, Vec2>> Symmetry() const
+  {
+    if (full_ && hold_on_) return {};
+    if (full_) return {{"axis", AxisHeld()}};
+    if (half_) return {{"x0", {1, 0}}};
+    return {{"x0", {1, 0}}, {"y0", {0, 1}}};
+  }
 
   // The half and full models' springback: one node holds the tube's rigid motion along the press's y
   // (scenes/pins.cpp).

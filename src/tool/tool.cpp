@@ -133,10 +133,9 @@ Tool Transform(const Tool &t, const SquareMap &map)
   return m;
 }
 
-Tool MovedBack(const Tool &t, double back)
+Tool Shifted(const Tool &t, const Vec2 &d)
 {
   Tool m = t;
-  const Vec2 d = Scale(t.direction, -back);
   for (Segment &s : m.segments) s.a = Add(s.a, d), s.b = Add(s.b, d), s.c = Add(s.c, d);
   m.origin = Add(t.origin, d);
   return m;

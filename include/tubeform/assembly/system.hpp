@@ -52,6 +52,9 @@ public:
   virtual void Moved(double ds) = 0;
   // What moves by the unknown, for errors ("the force-controlled V-die").
   virtual std::string Name() const { return "the force-controlled tool"; }
+  // "" if a unit of the unknown changes its miss as the condition needs (`slope`: the miss's fall per unit), else
+  // why not, for the error: by default, a force that does not grow as its tool advances.
+  virtual std::string Stalled(double slope) const;
 };
 
 class System {
@@ -110,7 +113,8 @@ public:
   void SetExtraUnknown(ExtraUnknown *extra) { extra_ = extra; }
   // Prescribes the displacement along the global unit direction (dx, dy); with
   // a frame, that direction must be one of the frame's axes. False otherwise.
-  bool PrescribeAlong(PetscInt node, double dx, double dy, double value);
+  // `unit`: as Prescribed::unit, along the same direction.
+  bool PrescribeAlong(PetscInt node, double dx, double dy, double value, double unit = 0.0);
   // Solves; `du` (local vector, global frame, ghosts filled) receives the
   // increment and `reactions` the force increments at the prescribed dofs
   // (same order as prescribed(); entries for unowned nodes are 0).

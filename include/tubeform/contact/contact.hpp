@@ -191,6 +191,9 @@ public:
   // mm/mm).
   PetscErrorCode TotalForce(int k, double force[2], double *moment = nullptr) const;
   PetscErrorCode Count(PetscInt &n) const;
+  // Collective: the largest moment about c the contact nodes' friction could put on the body, each sliding along
+  // its tool with mu |f_n| (N mm/mm; the rotation hold's yardstick, scenes/hold.hpp).
+  PetscErrorCode FrictionMoment(const Vec2 &c, double &capacity) const;
   // Collective: sum over contact nodes of the normal force f_n.
   PetscErrorCode NormalForceSum(double &sum) const;
   // Collective: largest penetration (>= 0) of a candidate node into the tool (mm)

@@ -75,7 +75,9 @@ struct Options {
   std::string lower_die = "mirror"; // mirror, flat or a profile file drawn as an upper die
   std::string lower_die_motion = "mirror"; // mirror (up by the stroke) or fixed
   std::string model = "auto";              // quarter, half, full, or auto: the quarter where it is exact
-  double die_force = 0; // > 0: the upper die is force-controlled, its punch load rising to this (N/mm)
+  double die_force = 0;           // > 0: the upper die is force-controlled, its punch load rising to this (N/mm)
+  double die_offset = 0;          // the first pass's upper die off the y axis along the press's x (mm; full model)
+  std::string full_hold = "auto"; // the full model's support: pins, rotation (the rotation hold), auto
   // A second pass after the springback: its stroke (0: none), its dies ("": the first pass's).
   double pass2_stroke = 0;
   std::string pass2_die_profile, pass2_lower_die;
@@ -179,7 +181,8 @@ inline double Travel(const Options &opt)
 inline bool QuarterModel(const Options &opt)
 {
   const bool mirror = opt.lower_die == "mirror" && (opt.pass2_lower_die.empty() || opt.pass2_lower_die == "mirror");
-  return opt.model == "quarter" || (opt.model == "auto" && mirror && opt.lower_die_motion == "mirror");
+  return opt.model == "quarter" ||
+         (opt.model == "auto" && mirror && opt.lower_die_motion == "mirror" && opt.die_offset == 0);
 }
 // The second pass's turn of the tube in quarter turns (-pass2_turn / 90; checked to be whole).
 inline int Pass2Quarters(const Options &opt) { return (int)std::lround(opt.pass2_turn / 90.0); }
@@ -187,7 +190,14 @@ inline int Pass2Quarters(const Options &opt) { return (int)std::lround(opt.pass2
 // is not a symmetry plane of a press turned by an odd number of quarter turns.
 inline bool FullModel(const Options &opt)
 {
-  return opt.model == "full" || (opt.model == "auto" && !QuarterModel(opt) && Pass2Quarters(opt) % 2 != 0);
+  return opt.model == "full" ||
+         (opt.model == "auto" && !QuarterModel(opt) && (Pass2Quarters(opt) % 2 != 0 || opt.die_offset != 0));
+}
+// The full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked, or (auto) a die off the
+// axis, which the pins would hold the tube's slide against.
+inline bool HeldByRotation(const Options &opt)
+{
+  return FullModel(opt) && (opt.full_hold == "rotation" || (opt.full_hold == "auto" && opt.die_offset != 0));
 }
 
 } // namespace tf

@@ -60,8 +60,10 @@ constexpr double kAxisPin = 1e-9;
 // Collective: the full model's pins, node set "axis": the outer nodes on the press's y axis at the tube's top
 // and at its bottom, whose press x held (HoldAlong along press.Inverse() of (1, 0)) holds the tube's rotation
 // and its motion along the press's x (exactly, in a press symmetric about its y axis: their x stays 0); an
-// error on every rank if the mesh has none.
-PetscErrorCode MarkAxisPins(Model &m, const SquareMap &press = {});
+// error on every rank if the mesh has none. With `surface` "inner" and `set` "hold": the rotation hold's nodes
+// (scenes/hold.hpp).
+PetscErrorCode MarkAxisPins(Model &m, const SquareMap &press = {}, const char *surface = "outer",
+                            const char *set = "axis");
 // A press's summary metrics per pass: the loaded state (the last row of its press, stage 2 p) and the unloaded
 // one (the last of its release): loaded_* and unloaded_* of C/t, C1/C2, x_max, y_max for the first pass (as the
 // run's summary), pass2_loaded_* and so on for the second.

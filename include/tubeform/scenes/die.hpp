@@ -46,6 +46,10 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
 // cannot be moved back clear of the tube (one that stays: its motion is none).
 PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, std::vector<Tool> &tools,
                            std::vector<double> &back);
+// Collective: the first pass's upper die moved off the axis by `offset` along x (-die_offset) and, where that
+// puts it inside the tube's outer surface `outer`, back along its motion until it touches it (with `say`, a line
+// printed); an error on every rank if it cannot be moved clear.
+PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, double offset, Tool &die);
 // Collective: a pass's side dies (o.side_die, read from `option`: -side_die or -pass2_side_die) appended to
 // `tools`: the right one (for mirror the squaring scene's upper die, whose right half is `upper_right`, or the
 // flattening scene's plate; a plate; or a profile drawn as an upper die), turned to the side by the reflection

@@ -108,8 +108,13 @@ struct SquareMap {
 
 // A tool mapped by a SquareMap: its segments (their order kept), the body's side (the normals) and its motion.
 Tool Transform(const Tool &t, const SquareMap &map);
+// A tool moved by d (its segments and its frame's origin).
+Tool Shifted(const Tool &t, const Vec2 &d);
 // A tool moved back along its motion by `back` units of stroke (its segments at -back x direction).
-Tool MovedBack(const Tool &t, double back);
+inline Tool MovedBack(const Tool &t, double back)
+{
+  return Shifted(t, {-back * t.direction[0], -back * t.direction[1]});
+}
 // How far back along its motion (units of stroke, >= 0) a tool must start so that none of `points` lies more
 // than `tol` inside it: 0 if none does where it is; else the least such distance, to 1e-12 of the points'
 // extent (bisection between an overlapping start and a clear one). -1 if it overlaps them still when moved
