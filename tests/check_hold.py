@@ -18,11 +18,21 @@ B. Equilibrium of the tube, from the dies' reported forces and moments (tool_*, 
 C. The die 0.5 mm to the left (-die_offset -0.5) is the mirror image: load, tool_fy, lower_fy, x_max, y_max the
    same and tool_fx, lower_fx, hold_moment of opposite sign, within 1e-6 of each column's largest value (the mesh
    is mirrored to round-off, which the tube's soft sway between the dies (docs/dies.md) amplifies: measured
-   1e-8; a die moved the wrong way, or a sign of the couple in one direction only, is O(1)).
+   1.9e-9 here and 1.0e-8 at U = 2 mm, growing with the stroke as the round-off another CPU's kernels leave
+   would; the symmetric press under the hold drifts to 6e-4 from round-off alone, so 1e-6 keeps room for that
+   growth; a die moved the wrong way, or a sign of the couple in one direction only, is O(1)).
 D. The energy balance (self-check (a): the dies' work from their reported forces against internal work, the hold
    doing none) within 5e-3 at every loading increment from U = 0.1 mm (tests/check_side_dies.py C's bound).
 E. 1 vs 2 ranks within C's 1e-6; a checkpoint inside the press, continued: the history within 1e-12
    (tests/check_restart.py's bound).
+F. A second pass turned by a quarter turn after a first one over a flat floor (`-lower_die flat -pass2_turn 90
+   -pass2_stroke 2`, U = 2 mm each): the first pass leaves the tube symmetric about its y axis only, so the
+   second presses it off its press's axis; -full_hold auto holds that pass by the rotation hold (the first by the
+   pins). B's balance in the second pass (the dies' frame origins on the press's y axis: the upper die's moved
+   back to the tube, the run prints how far, the floor's rising by the pass's stroke), the energy balance of
+   both passes as D. The hold's couple there is about twice what the contacts' friction could carry (the
+   D-shaped tube is pressed off its centre by dies touching it at a few nodes): the run warns that the real
+   tube would turn, at the first row where the history's hold_moment exceeds hold_friction.
 """
 import re
 
@@ -107,4 +117,31 @@ same = all(part[c].shape == right[c].shape for c in right)
 worst = max(np.abs(part[c] - right[c]).max() / max(np.abs(right[c]).max(), 1e-300) for c in right) if same else 1
 k.check(same and worst <= 1e-12 and 0.2 < lam < 0.9,
         f"E. continued from a checkpoint inside the press (lambda {lam:.3f}): the history within {worst:.1e} (1e-12)")
+
+# F. A turned second pass off its press's axis.
+p = run(tf, mpirun, 1, BASE[:-4] + ["-stroke", 2, "-lower_die", "flat", "-pass2_turn", 90, "-pass2_stroke", 2,
+                                    "-output", out("turned.h5")], timeout=600)
+t = history("turned.h5")
+m = re.search(r"pass2-V-die starts ([0-9.e+-]+) mm back", p.stdout)
+back2 = float(m.group(1)) if m else float("nan")
+second = t["stage"] == 2
+U2 = t["stroke"] - 2.0
+bound = t["n_contact"] * (t["residual"] + t["fn_mismatch"])
+force = np.abs(t["tool_fx"] + t["lower_fx"])
+dies = t["tool_moment"] - (back2 - U2) * t["tool_fx"] + t["lower_moment"] - U2 * t["lower_fx"]
+moment = np.abs(dies - t["hold_moment"])
+k.check(np.all(force[second] <= bound[second]) and np.all(moment[second] <= RO * bound[second]),
+        f"F. the turned second pass's balance (the upper die moved back {back2} mm): net force at most "
+        f"{np.max(force[second] / np.maximum(bound[second], 1e-300)):.2g}, moment about the centre off the couple "
+        f"(largest {np.abs(t['hold_moment']).max():.0f} N mm/mm) at most "
+        f"{np.max(moment[second] / np.maximum(RO * bound[second], 1e-300)):.2g} of their bounds (1)")
+late = t["stroke"] >= 0.1
+k.check(np.abs(t["energy_error"][late]).max() <= 5e-3,
+        f"F. energy balance of both passes within {np.abs(t['energy_error'][late]).max():.1e} (5e-3)")
+over = np.where(second & (np.abs(t["hold_moment"]) > t["hold_friction"]))[0]
+said = re.search(r"warning: at U = ([0-9.e+-]+) mm the rotation hold carries", p.stdout)
+k.check(len(over) > 0 and said is not None and abs(float(said.group(1)) - t["stroke"][over[0]]) <= 1e-3,
+        f"F. the run warns that the real tube would turn (at U = {said.group(1) if said else '-'} mm), where the "
+        f"couple first exceeds the friction's largest ({t['stroke'][over[0]] if len(over) else '-'} mm; "
+        f"{np.abs(t['hold_moment'][second]).max() / t['hold_friction'][second].max():.1f} times it at most)")
 k.done()

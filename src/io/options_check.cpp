@@ -159,11 +159,12 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
              "-pass2_turn %g: the tube turns by quarter turns (a multiple of 90 degrees, -360 to 360)", opt.pass2_turn);
   PetscCheck(opt.pass2_stroke > 0 || opt.pass2_turn == 0, comm, PETSC_ERR_USER_INPUT,
              "-pass2_turn %g: give -pass2_stroke for the second pass", opt.pass2_turn);
-  PetscCheck(quarters % 2 == 0 || (opt.lower_die == "mirror" && opt.lower_die_motion == "mirror"), comm,
-             PETSC_ERR_USER_INPUT,
-             "-pass2_turn %g: the first pass's dies (-lower_die %s, -lower_die_motion %s) leave the tube symmetric "
-             "about the y axis only; a quarter turn would press it off that axis, which the model's pins cannot "
-             "hold (turn by 180 degrees, or press the first pass between mirrored dies)",
+  PetscCheck(quarters % 2 == 0 || (opt.lower_die == "mirror" && opt.lower_die_motion == "mirror") ||
+               opt.full_hold != "pins",
+             comm, PETSC_ERR_USER_INPUT,
+             "-pass2_turn %g with -full_hold pins: the first pass's dies (-lower_die %s, -lower_die_motion %s) leave "
+             "the tube symmetric about the y axis only; a quarter turn presses it off that axis, which the pins "
+             "would hold it against (use -full_hold rotation or auto)",
              opt.pass2_turn, opt.lower_die.c_str(), opt.lower_die_motion.c_str());
   PetscCheck(opt.model != "half" || quarters % 2 == 0, comm, PETSC_ERR_USER_INPUT,
              "-pass2_turn %g with -model half: the half model's plane x = 0 is no symmetry plane of a press turned by "
@@ -180,7 +181,8 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
              opt.die_offset);
   PetscCheck(opt.full_hold == "auto" || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
              "-full_hold %s: only the full model is held so (-model full)", opt.full_hold.c_str());
-  PetscCheck(!HeldByRotation(opt) || (opt.die_force == 0 && opt.side_force == 0), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(!(HeldByRotation(opt, 0) || HeldByRotation(opt, 1)) || (opt.die_force == 0 && opt.side_force == 0), comm,
+             PETSC_ERR_USER_INPUT,
              "the rotation hold (-full_hold, -die_offset): not with -die_force or -side_force (one force-controlled "
              "unknown in an increment)");
   PetscCheck(QuarterModel(opt) || opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,

@@ -46,11 +46,13 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                       "tool scenes: the first pass's upper die moved off the y axis by this along x (mm; the full "
                       "model, held by the rotation hold; docs/dies.md)",
                       opt.die_offset));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-full_hold",
-                       "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "
-                       "on its inner nodes there holds its rotation alone, the dies its slide; docs/dies.md), auto "
-                       "(rotation with -die_offset, else pins)",
-                       {"auto", "pins", "rotation"}, opt.full_hold));
+  PetscCall(
+    ChooseWord(PetscOptionsObject, read, "-full_hold",
+               "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "
+               "on its inner nodes there holds its rotation alone, the dies its slide; docs/dies.md), auto "
+               "(rotation where the pins would hold the tube's slide against the dies: with -die_offset, and in a "
+               "quarter-turned second pass after a first pass not mirrored top to bottom; else pins)",
+               {"auto", "pins", "rotation"}, opt.full_hold));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
                       "squaring: a second pass after the springback: press again by this stroke (mm, from the dies' "
                       "start, where they touch the tube at the latest; 0: one pass), then spring back",

@@ -41,14 +41,15 @@ namespace {
 class PressScene : public Scene {
 public:
   PressScene(const Options &opt, bool squaring)
-      : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(FullModel(opt)), hold_on_(HeldByRotation(opt))
+      : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(FullModel(opt))
   {
     stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_angle)
                                            : opt.stroke;
     back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
     stroke2_ = opt.pass2_stroke;
     path_ = StrokePath(opt.stroke_path, stroke_);
-    for (int pass = 0; pass < 2; ++pass) side_dies_[pass] = PassOptions(opt, pass).side_die != "none";
+    for (int pass = 0; pass < 2; ++pass)
+      side_dies_[pass] = PassOptions(opt, pass).side_die != "none", held_[pass] = HeldByRotation(opt, pass);
   }
 
   std::vector<std::string> BoundarySets() const override
@@ -122,7 +123,7 @@ public:
     tools.candidates = "outer";
     for (int pass = stroke2_ > 0; full_ && pass >= 0; --pass) { // (the second pass's axis checked now)
       PetscCall(MarkAxisPins(m, PassMap(pass).Inverse()));
-      if (hold_on_) PetscCall(hold_.Mark(m, PassMap(pass).Inverse()));
+      if (held_[pass]) PetscCall(hold_.Mark(m, PassMap(pass).Inverse()));
     }
     tools.symmetry = Symmetry();
     // Default VCRI: 2 % of the mean distance between the outer surface's nodes
@@ -218,7 +219,7 @@ public:
     // (inside the increment: its failure writes the results so far)
     if (opt_.die_force > 0 && m.contact->active())
       PetscCall(CheckForceReach(m.comm, opt_, squaring_, m.contact->tool(kUpper).stroke));
-    if (hold_on_ && !unloading_)
+    if (held_[pass_] && !unloading_)
       PetscCall(hold_.Constrain(m, AxisHeld())); // (scenes/hold.hpp; released, the pins hold the tube)
     else if (full_)
       PetscCall(HoldAlong(m, "axis", AxisHeld()[0], AxisHeld()[1])); // (the pins: scenes/pins.cpp)
@@ -274,7 +275,7 @@ public:
       f = Press()({force[0], force[1]});
       row.lower_fx = -f[0], row.lower_fy = -f[1], row.lower_moment = -Press().det() * moment;
     }
-    if (hold_on_ && !unloading_) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
+    if (held_[pass_] && !unloading_) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
     PetscCall(OuterExtents(m, row, Part(), Press()));
     PetscCall(Shape(m, lambda, row));
     row.stage = StageOf(lambda);
@@ -359,7 +360,7 @@ private:
   ContactSpec spec_;               // the contact set's nodes, supports and law (for the second pass's dies)
   PetscInt pin_ = -1;              // the half model's springback: the local node whose press y is held (-1: none here)
   bool pinned_ = false;            // the pin holds (every rank alike)
-  const bool hold_on_;             // the full model held by the rotation hold (not its pins) while pressing
+  bool held_[2];                   // the full model's pass held by the rotation hold (not its pins) while pressing
   RotationHold hold_;
   double stroke_ = 0, back_ = 0;
   StrokePath path_;           // the first press's (-stroke_path, or straight to the stroke)
@@ -392,18 +393,16 @@ private:
   }
 
   // The second pass's dies where they start (drawn on floor_y_, moved back by start_back_) and, in the full
-  // model, its pins on the press's axis with the held direction the contact set keeps (`symmetry`, left as it
-  // is in the other models): the pass's start (BeginStage) and a restart inside it (Persist) alike.
+  // model, its pins on the press's axis, and the held directions the contact set keeps (`symmetry`): the pass's
+  // start (BeginStage) and a restart inside it (Persist) alike.
   PetscErrorCode SecondPass(Model &m, std::vector<Tool> &tools, std::vector<std::pair<std::string, Vec2>> &symmetry)
   {
     PetscFunctionBeginUser;
     PetscCall(PassTools(m, 1, floor_y_, tools));
     for (size_t k = 0; k < tools.size() && k < start_back_.size(); ++k) tools[k] = MovedBack(tools[k], start_back_[k]);
-    if (full_) {
-      PetscCall(MarkAxisPins(m, Press()));
-      if (hold_on_) PetscCall(hold_.Mark(m, Press()));
-      symmetry = Symmetry();
-    }
+    if (full_) PetscCall(MarkAxisPins(m, Press()));
+    if (held_[1]) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)
+    symmetry = Symmetry();
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
@@ -416,7 +415,7 @@ private:
   // between both dies is mirrored about the y axis only), the full model's pins (the rotation hold's: inner nodes).
   std::vector<std::pair<std::string, Vec2>> Symmetry() const
   {
-    if (full_ && hold_on_) return {};
+    if (full_ && held_[pass_]) return {};
     if (full_) return {{"axis", AxisHeld()}};
     if (half_) return {{"x0", {1, 0}}};
     return {{"x0", {1, 0}}, {"y0", {0, 1}}};

@@ -193,11 +193,14 @@ inline bool FullModel(const Options &opt)
   return opt.model == "full" ||
          (opt.model == "auto" && !QuarterModel(opt) && (Pass2Quarters(opt) % 2 != 0 || opt.die_offset != 0));
 }
-// The full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked, or (auto) a die off the
-// axis, which the pins would hold the tube's slide against.
-inline bool HeldByRotation(const Options &opt)
+// A pass (0, 1) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked, or
+// (auto) where the pins would hold the tube's slide against the dies: a die off the axis, a second pass after it,
+// or a second pass turned by a quarter turn after a first one not symmetric about the press's x axis (a lower die
+// that does not mirror the upper one).
+inline bool HeldByRotation(const Options &opt, int pass)
 {
-  return FullModel(opt) && (opt.full_hold == "rotation" || (opt.full_hold == "auto" && opt.die_offset != 0));
+  const bool first_mirrored = opt.lower_die == "mirror" && opt.lower_die_motion == "mirror";
+  const bool off_axis = opt.die_offset != 0 || (pass == 1 && Pass2Quarters(opt) % 2 != 0 && !first_mirrored);
+  return FullModel(opt) && (opt.full_hold == "rotation" || (opt.full_hold == "auto" && off_axis));
 }
-
 } // namespace tf
