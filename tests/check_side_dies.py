@@ -15,9 +15,14 @@ A. Four plates: the ring of options/flattening.opts (Rm/t = 20, elastic-perfectl
      external work at every increment, as tests/check_flattening.py's (measured 6.5e-3 at its largest; without
      the side work the run stops at its own energy check, -99.7 %).
 B. The half and the full model (the right plate whole, its mirror on the left in the full model) against each
-   other within tests/check_squaring.py's 1 vs 2 rank bounds, 1.3e-8 of the largest value up to U = 1.5 mm and
-   3e-5 beyond, where round-off grows as the flat contacts spread node by node (the same press summed in another
-   order; measured 8.8e-9 and 1.3e-7), and against the quarter at the end of the press within 1e-3 (measured 6.9e-5:
+   other within 1e-7 of the largest value up to U = 1.5 mm and tests/check_squaring.py's 3e-5 beyond (the same
+   press summed in another order; measured 8.8e-9 and 1.2e-8 on two machines, and 1.3e-7). The early bound is
+   this press's own, derived as check_squaring.py derives its 3e-5: ten times what a perturbation of 1.3e-13 in
+   E moves the half model's load, side load, C1, C2 up to 1.5 mm (9.8e-9: -material_e 75000.00000000975 and
+   74999.99999999025 against 75000, `-options_file options/flattening.opts -side_die flat -model half -stroke
+   2`). Flat plates spread their contact node by node from the first increment, so the ring's path amplifies
+   round-off a thousand times more than the V-dies' before their collapse (whose 1.3e-8 this check borrowed
+   before: too close to what another CPU's round-off gives here). Against the quarter at the end of the press within 1e-3 (measured 6.9e-5:
    the quarter takes the simultaneous first touches of the two plates in another order, one increment fewer,
    and the elastic-plastic path follows its steps). Their side plates' outlines move by (-U, 0) and (U, 0). The
    half model on 1 vs 2 ranks within the same bounds as half vs full.
@@ -144,6 +149,7 @@ e = np.abs(four["energy_error"][1:]).max()
 k.check(e < 0.01, f"four plates: the energy balance with the side plates' work within {e:.1e} (1 %)")
 
 # B. The half and the full model.
+RING_EARLY = 1e-7  # ten times the ring's response to a 1.3e-13 perturbation of E up to U = 1.5 mm (docstring, B)
 half = press("side_half.h5")
 full = press("side_full.h5")
 quarter = press("side_quarter.h5")
@@ -152,8 +158,8 @@ same = all(half[c].shape == full[c].shape for c in cols)
 rel = [np.abs(half[c] - full[c]) / np.abs(half[c]).max() for c in cols] if same else [np.ones(1)]
 early = max(r[half["stroke"] <= 1.5].max() for r in rel) if same else 1
 late = max(r.max() for r in rel)
-k.check(early < 1.3e-8 and late < 3e-5, f"side plates, the half model against the full: every row within {early:.1e} "
-        f"up to U = 1.5 mm (1.3e-8), {late:.1e} to the end (3e-5)")
+k.check(early < RING_EARLY and late < 3e-5, f"side plates, the half model against the full: every row within "
+        f"{early:.1e} up to U = 1.5 mm ({RING_EARLY:.0e}), {late:.1e} to the end (3e-5)")
 end = max(abs(quarter[c][-1] / full[c][-1] - 1) for c in cols)
 k.check(end < 1e-3, f"side plates, the quarter against the full model at the end of the press: within {end:.1e} (1e-3)")
 moved = {n: full["tools"][n][-1][0] for n in ("side-plate", "left-side-plate")}
@@ -165,8 +171,8 @@ two = press("side_half_np2.h5", 2)
 rel = [np.abs(half[c] - two[c]) / np.abs(half[c]).max() for c in cols] if two["load"].shape == half["load"].shape \
     else [np.ones(1)]
 early, late = max(r[half["stroke"] <= 1.5].max() if len(r) > 1 else 1 for r in rel), max(r.max() for r in rel)
-k.check(early < 1.3e-8 and late < 3e-5, f"side plates, the half model on 1 vs 2 ranks: every row within {early:.1e} up "
-        f"to U = 1.5 mm (1.3e-8), {late:.1e} to the end (3e-5)")
+k.check(early < RING_EARLY and late < 3e-5, f"side plates, the half model on 1 vs 2 ranks: every row within "
+        f"{early:.1e} up to U = 1.5 mm ({RING_EARLY:.0e}), {late:.1e} to the end (3e-5)")
 
 # C. V-dies and side plates.
 walled, alone = history_and_tools(out("side_v.h5")), history_and_tools(out("side_v_alone.h5"))
