@@ -68,7 +68,9 @@ cases = [
     (["-die_force", "100"], "presses with no dies"),
     (["-scene", "squaring", "-die_force", "100", "-model", "half"], "-lower_die_motion fixed"),
     (["-scene", "squaring", "-die_force", "100", "-pass2_stroke", "2"], "not with a second pass"),
-    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "45"], "the tube turns by quarter turns"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "400"], "the tube turns by -360 to 360 degrees"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "45", "-model", "half"], "needs the full model"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "45", "-full_hold", "pins"], "needs the full model"),
     (["-scene", "squaring", "-pass2_turn", "90"], "give -pass2_stroke"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "90", "-model", "half"], "use -model full"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "90", "-lower_die", "flat", "-full_hold", "pins"],
@@ -86,6 +88,9 @@ cases = [
     (["-scene", "squaring", "-die_offset", "0.5", "-die_force", "100", "-lower_die_motion", "fixed"],
      "the rotation hold (-full_hold, -die_offset): not with -die_force"),
     (["-scene", "tension", "-die_offset", "0.5"], "presses with no dies"),
+    (["-scene", "flattening", "-die_offset", "0.5"], "-die_offset 0.5: the squaring scene's die"),
+    (["-scene", "squaring", "-die_offset", "0.5", "-pass2_stroke", "2"], "a second pass after it"),
+    (["-scene", "flattening", "-model", "full", "-full_hold", "rotation"], "plates do not hold"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_die", out("none.profile")],
      f"-pass2_side_die {out('none.profile')}: cannot read"),
     (["-scene", "squaring", "-side_die", out("none.profile")], "-side_die"),
@@ -155,7 +160,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 94 and len(selected) == 5, f"{len(cases)} cases on 1 rank (94), {len(selected)} on 2 (5)")
+k.check(len(cases) == 99 and len(selected) == 5, f"{len(cases)} cases on 1 rank (99), {len(selected)} on 2 (5)")
 
 
 def attempt(np_, extra):

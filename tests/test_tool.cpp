@@ -1,8 +1,8 @@
 // Unit tests of the tools' geometry on concave and convex arcs of both
 // orientations (issue 23, item 7): an upper die (the body below it) and its
-// images under the eight maps of a square onto itself (SquareMap: the mirror
+// images under the eight maps of a square onto itself (TurnMap: the mirror
 // image below the body, MirrorY, is the half model's lower die; the quarter
-// turns are the dies of a pass that turns the tube).
+// turns are the dies of a pass that turns the tube) and turns by other angles.
 //   - A point at distance delta from any segment, on the body's side along the
 //     segment's normal (from the construction: centre, radius, angle), projects
 //     back onto it with gap delta, that normal, and curvature +1/R on concave
@@ -34,7 +34,7 @@ using namespace tf;
 namespace {
 
 // Every segment of `tool` and of its image under `map`, sampled at three points.
-void CheckImage(const Tool &tool, const SquareMap &map, int &concave, int &convex)
+void CheckImage(const Tool &tool, const TurnMap &map, int &concave, int &convex)
 {
   const double delta = 0.05;
   const Tool image = Transform(tool, map);
@@ -92,7 +92,7 @@ void CheckMaps()
   const Vec2 turned[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}}; // (1, 0) after q quarter turns
   for (bool reflect : {false, true})
     for (int q = 0; q < 4; ++q) {
-      const SquareMap map{reflect, q};
+      const TurnMap map{reflect, q};
       const Vec2 x = map(ex), y = map(ey), v = {0.3, -1.7}, back = map.Inverse()(map(v));
       CHECK(x[0] == turned[q][0] && x[1] == turned[q][1]);
       // y: (0, 1), or (0, -1) reflected first, then turned: (1, 0) turned by q + 1 (q + 3) quarter turns
@@ -101,7 +101,18 @@ void CheckMaps()
       CHECK(back[0] == v[0] && back[1] == v[1]);
       CHECK(map.det() == (reflect ? -1.0 : 1.0));
     }
-  CHECK(SquareMap::Turn(-1).q == 3 && SquareMap::Turn(5).q == 1);
+  CHECK(TurnMap::Turn(-1).q == 3 && TurnMap::Turn(5).q == 1);
+  // A turn by any angle: its whole quarter turns exact, the rest a rotation; undone by its inverse to round-off.
+  for (double a : {0.3, -0.7, 2.5, M_PI / 4, -3 * M_PI / 4}) {
+    const TurnMap map = TurnMap::TurnBy(a);
+    const Vec2 v = {0.3, -1.7}, w = map(v), back = map.Inverse()(w);
+    CHECK(std::abs(map.angle) <= M_PI / 4 + 1e-15);
+    CHECK_NEAR(w[0], std::cos(a) * v[0] - std::sin(a) * v[1], 1e-15);
+    CHECK_NEAR(w[1], std::sin(a) * v[0] + std::cos(a) * v[1], 1e-15);
+    CHECK_NEAR(back[0], v[0], 1e-15);
+    CHECK_NEAR(back[1], v[1], 1e-15);
+  }
+  CHECK(TurnMap::TurnBy(M_PI / 2).q == 1 && TurnMap::TurnBy(M_PI / 2).angle == 0);
 }
 
 // The tool under all eight maps (MirrorY and MirrorX are two of them).
@@ -109,7 +120,10 @@ void CheckAllImages(const Tool &tool, const char *name, int &concave, int &conve
 {
   for (bool reflect : {false, true})
     for (int q = 0; q < 4; ++q) CheckImage(tool, {reflect, q}, concave, convex);
-  std::printf("%s: %zu segments and their images under the 8 maps of a square\n", name, tool.segments.size());
+  // (and turned by angles that are no quarter turns: a second pass's dies turned by -pass2_turn 45 and others)
+  for (double a : {M_PI / 4, -0.7, 2.5}) CheckImage(tool, TurnMap::TurnBy(a), concave, convex);
+  std::printf("%s: %zu segments and their images under the 8 maps of a square and 3 other turns\n", name,
+              tool.segments.size());
 }
 
 // ClearanceBack against closed forms: points on a circle of radius R > Ro inside a die that touches the circle

@@ -83,10 +83,10 @@ const std::vector<HistoryColumn> &HistoryColumns()
      "-side_die: the side dies' travel towards the tube's centre (mm): the stroke, or their own with -side_force"},
     {"hold_moment", &HistoryRow::hold_moment,
      "full model, the rotation hold: the couple it puts on the tube (N mm/mm, counter-clockwise positive, in the "
-     "press's frame; 0 without it)"},
+     "press's frame; 0 without it); in its springback, the moment the springback's pins carry"},
     {"hold_friction", &HistoryRow::hold_friction,
      "the rotation hold: the largest moment the contacts' friction could carry about the tube's centre (N mm/mm): "
-     "a hold_moment above it is one the real tube would turn under"},
+     "a hold_moment above it is one the real tube may turn under"},
   };
   return cols;
 }

@@ -154,9 +154,12 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
     opt.stroke = opt.stroke_path.back();
   }
   const int quarters = Pass2Quarters(opt);
-  PetscCheck(std::isfinite(opt.pass2_turn) && opt.pass2_turn == 90.0 * quarters && std::abs(quarters) <= 4, comm,
-             PETSC_ERR_USER_INPUT,
-             "-pass2_turn %g: the tube turns by quarter turns (a multiple of 90 degrees, -360 to 360)", opt.pass2_turn);
+  PetscCheck(std::isfinite(opt.pass2_turn) && std::abs(opt.pass2_turn) <= 360, comm, PETSC_ERR_USER_INPUT,
+             "-pass2_turn %g: the tube turns by -360 to 360 degrees", opt.pass2_turn);
+  PetscCheck(QuarterTurn(opt) || (FullModel(opt) && opt.full_hold != "pins"), comm, PETSC_ERR_USER_INPUT,
+             "-pass2_turn %g: a turn that is no multiple of 90 degrees needs the full model held by the rotation hold "
+             "(-model full or auto, -full_hold rotation or auto)",
+             opt.pass2_turn);
   PetscCheck(opt.pass2_stroke > 0 || opt.pass2_turn == 0, comm, PETSC_ERR_USER_INPUT,
              "-pass2_turn %g: give -pass2_stroke for the second pass", opt.pass2_turn);
   PetscCheck(quarters % 2 == 0 || (opt.lower_die == "mirror" && opt.lower_die_motion == "mirror") ||
@@ -175,6 +178,12 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
              "-die_offset %g: a die off the axis breaks the tube's mirror symmetry; give a number of mm with -model "
              "full (or auto)",
              opt.die_offset);
+  PetscCheck(opt.die_offset == 0 || (opt.scene == "squaring" && opt.pass2_stroke == 0), comm, PETSC_ERR_USER_INPUT,
+             "-die_offset %g: the squaring scene's die, in one pass (a plate off the axis is the same plate; a "
+             "second pass after it is not available)",
+             opt.die_offset);
+  PetscCheck(opt.full_hold != "rotation" || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
+             "-full_hold rotation: the %s scene's plates do not hold the tube's slide; use pins", opt.scene.c_str());
   PetscCheck(opt.die_offset == 0 || opt.full_hold != "pins", comm, PETSC_ERR_USER_INPUT,
              "-die_offset %g with -full_hold pins: the pins would hold the tube's slide against the die; use "
              "-full_hold rotation (or auto)",

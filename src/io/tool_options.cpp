@@ -43,8 +43,8 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                       "(N/mm) over the press, its stroke an unknown of each increment (0: the stroke -stroke)",
                       opt.die_force));
   PetscCall(read.Real(PetscOptionsObject, "-die_offset",
-                      "tool scenes: the first pass's upper die moved off the y axis by this along x (mm; the full "
-                      "model, held by the rotation hold; docs/dies.md)",
+                      "squaring: the first pass's upper die moved off the y axis by this along x (mm; one pass, the "
+                      "full model, held by the rotation hold; docs/dies.md)",
                       opt.die_offset));
   PetscCall(
     ChooseWord(PetscOptionsObject, read, "-full_hold",
@@ -80,8 +80,9 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                 "pass's -side_die)",
                 opt.pass2_side_die));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_turn",
-                      "squaring: the tube turned counter-clockwise by this many degrees (a multiple of 90) before the "
-                      "second pass: its dies press along the turned axis (docs/dies.md)",
+                      "squaring: the tube turned counter-clockwise by this many degrees (-360 to 360) before the "
+                      "second pass: its dies press along the turned axis (not a multiple of 90: the full model, "
+                      "held by the rotation hold; docs/dies.md)",
                       opt.pass2_turn));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

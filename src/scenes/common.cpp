@@ -85,7 +85,7 @@ double PressToolWork(TubePart part, bool lower_fixed, const HistoryRow &prev, co
   return dw;
 }
 
-PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part, const SquareMap &press)
+PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part, const TurnMap &press)
 {
   // (the half and full models' tube may sit anywhere along y)
   double ext[4] = {0, -kNever, -kNever, -kNever}, g[4];

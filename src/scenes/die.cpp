@@ -187,16 +187,26 @@ PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint
     PetscCall(PetscPrintf(comm,
                           "tubeform: the %s is %g mm off the axis; it starts %.4g mm back along its motion, "
                           "where it touches the tube\n",
-                          die.name.c_str(), offset, back[0]));
+                          die.name.c_str(), offset, back[0] * std::hypot(die.direction[0], die.direction[1])));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-SquareMap PassTurn(const Options &opt, int pass, bool half, bool full)
+TurnMap PassTurn(const Options &opt, int pass, bool half, bool full)
 {
   const int k = pass == 1 ? Pass2Quarters(opt) : 0, q = ((k % 4) + 4) % 4;
-  if (full) return SquareMap::Turn(-k);
-  if (half) return q == 2 ? SquareMap{true, 0} : SquareMap{};
-  return q % 2 ? SquareMap{true, 1} : SquareMap{};
+  if (full && pass == 1 && !QuarterTurn(opt)) return TurnMap::TurnBy(-opt.pass2_turn * M_PI / 180);
+  if (full) return TurnMap::Turn(-k);
+  if (half) return q == 2 ? TurnMap{true, 0} : TurnMap{};
+  return q % 2 ? TurnMap{true, 1} : TurnMap{};
+}
+
+PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring, double deepest)
+{
+  PetscFunctionBeginUser;
+  if (opt.die_force == 0) PetscCall(CheckDieReach(comm, PassOptions(opt, 0), squaring, deepest, "-stroke"));
+  if (opt.pass2_stroke > 0)
+    PetscCall(CheckDieReach(comm, PassOptions(opt, 1), squaring, opt.pass2_stroke, "-pass2_stroke"));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 double DieReach(const Options &o, bool squaring)

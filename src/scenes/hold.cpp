@@ -2,6 +2,7 @@
 #include "tubeform/scenes/hold.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 
@@ -9,11 +10,11 @@
 
 namespace tf {
 
-PetscErrorCode RotationHold::Mark(Model &m, const SquareMap &press)
+PetscErrorCode RotationHold::Mark(Model &m, const TurnMap &press)
 {
   PetscFunctionBeginUser;
   m_ = &m;
-  PetscCall(MarkAxisPins(m, press, "inner", "hold"));
+  PetscCall(MarkAxisPins(m, press, "inner", "hold", false)); // (a pair across the tube carries a couple anyway)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -33,12 +34,15 @@ PetscErrorCode RotationHold::Missing(double &missing)
   const PetscScalar *r;
   double local = 0, sum;
   PetscFunctionBeginUser;
-  // (the inner nodes carry no frame: the reactions' global components)
+  // (the reactions in the node's frame: turned by its angle into the global one)
   const Mesh &mesh = m_->mesh;
   PetscCall(VecGetArrayRead(m_->system.reactions_local(), &r));
-  for (PetscInt n : m_->mesh.node_sets["hold"])
-    if (mesh.node_owned[n])
-      local += along_[0] * PetscRealPart(r[mesh.node_dof[n]]) + along_[1] * PetscRealPart(r[mesh.node_dof[n] + 1]);
+  for (PetscInt n : m_->mesh.node_sets["hold"]) {
+    if (!mesh.node_owned[n]) continue;
+    const double a = m_->system.HasFrame(n) ? m_->system.FrameAngle(n) : 0.0, c = std::cos(a), s = std::sin(a);
+    const double rl = PetscRealPart(r[mesh.node_dof[n]]), rn = PetscRealPart(r[mesh.node_dof[n] + 1]);
+    local += along_[0] * (c * rl - s * rn) + along_[1] * (s * rl + c * rn);
+  }
   PetscCall(VecRestoreArrayRead(m_->system.reactions_local(), &r));
   PetscCall(MPIU_Allreduce(&local, &sum, 1, MPIU_REAL, MPIU_SUM, m_->comm));
   missing = -sum;
@@ -56,30 +60,52 @@ std::string RotationHold::Stalled(double slope) const
   return why;
 }
 
-PetscErrorCode RotationHold::Moment(Model &m, Vec f_int, double &moment, double &friction) const
+// Collective: the tube's centre (the hold's nodes' midpoint) and the moment about it of the forces f_int less
+// share x f_rev (f_rev may be null) at the local nodes `nodes` (each rank's contributions summed over the
+// nodes' copies, f_rev's at owned nodes).
+static PetscErrorCode NodesMoment(Model &m, Vec f_int, Vec f_rev, double share, const std::vector<PetscInt> &nodes,
+                                  Vec2 &centre, double &moment)
 {
-  const PetscScalar *f;
-  double local = 0, global; // the moment about the origin (a couple: about any point)
+  const PetscScalar *f, *r = nullptr;
+  double c[3] = {0, 0, 0}, cg[3], local = 0;
   PetscFunctionBeginUser;
   const auto &x = m.body.position();
-  // (f_int holds each rank's cells' contributions: summed over the nodes' copies on every rank)
-  PetscCall(VecGetArrayRead(f_int, &f));
-  for (PetscInt n : m.mesh.node_sets["hold"]) {
-    const double fx = PetscRealPart(f[m.mesh.node_dof[n]]), fy = PetscRealPart(f[m.mesh.node_dof[n] + 1]);
-    local += x[2 * n] * fy - x[2 * n + 1] * fx;
-  }
-  PetscCall(VecRestoreArrayRead(f_int, &f));
-  double c[2] = {0, 0}, cg[2];
-  int count = 0, countg;
   for (PetscInt n : m.mesh.node_sets["hold"])
-    if (m.mesh.node_owned[n]) c[0] += x[2 * n], c[1] += x[2 * n + 1], ++count;
-  PetscCall(MPIU_Allreduce(&local, &global, 1, MPIU_REAL, MPIU_SUM, m.comm));
-  PetscCall(MPIU_Allreduce(c, cg, 2, MPIU_REAL, MPIU_SUM, m.comm));
-  PetscCallMPI(MPI_Allreduce(&count, &countg, 1, MPI_INT, MPI_SUM, m.comm));
-  moment = global;
+    if (m.mesh.node_owned[n]) c[0] += x[2 * n], c[1] += x[2 * n + 1], c[2] += 1;
+  PetscCall(MPIU_Allreduce(c, cg, 3, MPIU_REAL, MPIU_SUM, m.comm));
+  centre = {cg[0] / std::max(cg[2], 1.0), cg[1] / std::max(cg[2], 1.0)};
+  PetscCall(VecGetArrayRead(f_int, &f));
+  if (f_rev) PetscCall(VecGetArrayRead(f_rev, &r));
+  for (PetscInt n : nodes) {
+    const PetscInt d = m.mesh.node_dof[n];
+    const double fx = PetscRealPart(f[d]) - (r ? share * PetscRealPart(r[d]) : 0.0);
+    const double fy = PetscRealPart(f[d + 1]) - (r ? share * PetscRealPart(r[d + 1]) : 0.0);
+    local += (x[2 * n] - centre[0]) * fy - (x[2 * n + 1] - centre[1]) * fx;
+  }
+  if (f_rev) PetscCall(VecRestoreArrayRead(f_rev, &r));
+  PetscCall(VecRestoreArrayRead(f_int, &f));
+  PetscCall(MPIU_Allreduce(&local, &moment, 1, MPIU_REAL, MPIU_SUM, m.comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode RotationHold::Moment(Model &m, Vec f_int, double &moment, double &friction) const
+{
+  Vec2 centre;
+  PetscFunctionBeginUser;
+  PetscCall(NodesMoment(m, f_int, nullptr, 0.0, m.mesh.node_sets["hold"], centre, moment));
   friction = 0;
-  if (m.contact && m.contact->active() && countg > 0)
-    PetscCall(m.contact->FrictionMoment({cg[0] / countg, cg[1] / countg}, friction));
+  if (m.contact && m.contact->active()) PetscCall(m.contact->FrictionMoment(centre, friction));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode RotationHold::SupportMoment(Model &m, Vec f_int, Vec f_rev, double share, PetscInt pin,
+                                           double &moment) const
+{
+  Vec2 centre;
+  PetscFunctionBeginUser;
+  std::vector<PetscInt> nodes = m.mesh.node_sets["axis"];
+  if (pin >= 0) nodes.push_back(pin);
+  PetscCall(NodesMoment(m, f_int, f_rev, share, nodes, centre, moment));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -88,14 +114,44 @@ PetscErrorCode RotationHold::Measure(Model &m, Vec f_int, double det, double ro,
   PetscFunctionBeginUser;
   PetscCall(Moment(m, f_int, row.hold_moment, row.hold_friction));
   row.hold_moment *= det;
-  const bool over = std::abs(row.hold_moment) > std::max(row.hold_friction, kNoise * std::abs(row.load) * ro);
+  largest_load_ = std::max(largest_load_, std::abs(row.load));
+  const bool over = std::abs(row.hold_moment) > row.hold_friction + kUnresolved * largest_load_ * ro;
   if (over && !warned_ && !m.quiet)
     PetscCall(PetscPrintf(m.comm,
                           "tubeform: warning: at U = %.4g mm the rotation hold carries %.4g N mm/mm, more than the "
-                          "contacts' friction could (%.4g): the real tube would turn (docs/dies.md, \"A die off the "
-                          "axis\")\n",
+                          "contacts' friction could against a turn (%.4g): the real tube may turn (docs/dies.md, "
+                          "\"A die off the axis\")\n",
                           row.stroke, row.hold_moment, row.hold_friction));
   warned_ = warned_ || over;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode RotationHold::AddForces(Model &m, Vec f) const
+{
+  Vec f_int;
+  const PetscScalar *fi;
+  PetscScalar *fa;
+  double local[4] = {0, 0, 0, 0}, sum[4]; // each node's force (top, bottom), summed over its copies' cells
+  PetscFunctionBeginUser;
+  const auto &nodes = m.mesh.node_sets["hold"];
+  PetscCall(VecDuplicate(f, &f_int));
+  PetscCall(m.body.InternalForce(f_int));
+  PetscCall(VecGetArrayRead(f_int, &fi));
+  // (the two nodes told apart by their input numbers, alike on every rank)
+  long first = LONG_MAX, lowest;
+  for (PetscInt n : nodes) first = std::min(first, (long)m.mesh.node_orig[n]);
+  PetscCallMPI(MPI_Allreduce(&first, &lowest, 1, MPI_LONG, MPI_MIN, m.comm));
+  const auto slot = [&](PetscInt n) { return (long)m.mesh.node_orig[n] == lowest ? 0 : 2; };
+  for (PetscInt n : nodes)
+    for (int c = 0; c < 2; ++c) local[slot(n) + c] += PetscRealPart(fi[m.mesh.node_dof[n] + c]);
+  PetscCall(VecRestoreArrayRead(f_int, &fi));
+  PetscCall(VecDestroy(&f_int));
+  PetscCall(MPIU_Allreduce(local, sum, 4, MPIU_REAL, MPIU_SUM, m.comm));
+  PetscCall(VecGetArray(f, &fa));
+  for (PetscInt n : nodes)
+    if (m.mesh.node_owned[n])
+      for (int c = 0; c < 2; ++c) fa[m.mesh.node_dof[n] + c] += sum[slot(n) + c];
+  PetscCall(VecRestoreArray(f, &fa));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -14,7 +14,7 @@ static double UpperSegment(const Model &m, PetscInt n)
 }
 
 // Each rank's owned outer nodes (x, y, contact, segment, input number), gathered and sorted by angle.
-PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper, const SquareMap &press)
+PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper, const TurnMap &press)
 {
   std::vector<double> mine;
   PetscMPIInt size;
@@ -54,7 +54,7 @@ void OrderAroundSide(std::vector<SurfacePoint> &all, const long ends[2])
                    [&](const SurfacePoint &a, const SurfacePoint &b) { return around(a) < around(b); });
 }
 
-PetscErrorCode LowestOuterY(Model &m, double &y, const SquareMap &press)
+PetscErrorCode LowestOuterY(Model &m, double &y, const TurnMap &press)
 {
   double low = 0, lowest;
   PetscFunctionBeginUser;

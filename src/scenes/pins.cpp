@@ -1,13 +1,14 @@
 // How the half and full models are held where no die holds them
 // (scenes/common.hpp): the springback's pin along y, and the full model's
-// pins along x on the y axis (the press's axes: a turned pass's).
+// pins along x on the y axis (the press's axes: a turned pass's), with their
+// node frames in a press turned by any angle.
 #include <cmath>
 
 #include "tubeform/scenes/common.hpp"
 
 namespace tf {
 
-PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin, const SquareMap &press)
+PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin, const TurnMap &press)
 {
   struct {
     double y;
@@ -27,7 +28,7 @@ PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin, const SquareMap &pre
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode MarkAxisPins(Model &m, const SquareMap &press, const char *surface, const char *set)
+PetscErrorCode MarkAxisPins(Model &m, const TurnMap &press, const char *surface, const char *set, bool exact)
 {
   struct {
     double y;
@@ -39,7 +40,8 @@ PetscErrorCode MarkAxisPins(Model &m, const SquareMap &press, const char *surfac
     const Vec2 p0 = press({m.mesh.x0[2 * n], m.mesh.x0[2 * n + 1]});
     const double x = p0[0], y = p0[1];
     const int side = y > 0 ? 0 : 1, id = (int)m.mesh.node_orig[n];
-    const double score = std::abs(y) - kNever * (std::abs(x) > kAxisPin * std::abs(y));
+    const double score = exact ? std::abs(y) - kNever * (std::abs(x) > kAxisPin * std::abs(y))
+                               : std::abs(y) / std::hypot(x, y); // (the cosine of its angle from the axis)
     if (score > mine[side].y || (score == mine[side].y && id < mine[side].id)) mine[side] = {score, id};
   }
   PetscCallMPI(MPI_Allreduce(mine, best, 2, MPI_DOUBLE_INT, MPI_MAXLOC, m.comm));
@@ -52,6 +54,17 @@ PetscErrorCode MarkAxisPins(Model &m, const SquareMap &press, const char *surfac
   for (PetscInt n : m.mesh.node_sets[surface])
     if (m.mesh.node_orig[n] == best[0].id || m.mesh.node_orig[n] == best[1].id) axis.push_back(n);
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void TurnedSupportFrames(Model &m, const Vec2 &axis, bool hold, bool pins, PetscInt pin)
+{
+  if (axis[0] == 0 || axis[1] == 0) return;
+  const double angle = std::atan2(axis[1], axis[0]);
+  for (PetscInt n : m.mesh.node_sets["hold"])
+    if (hold) m.system.SetFrame(n, angle);
+  for (PetscInt n : m.mesh.node_sets["axis"])
+    if (pins) m.system.SetFrame(n, angle);
+  if (pin >= 0) m.system.SetFrame(pin, angle);
 }
 
 } // namespace tf

@@ -108,7 +108,7 @@ public:
   PetscErrorCode Initialize(Model &m, ContactSpec &tools) override
   {
     PetscFunctionBeginUser;
-    PetscCall(CheckReach(m.comm));
+    PetscCall(CheckPressReach(m.comm, opt_, squaring_, path_.deepest())); // (before any work)
     if (stroke2_ > 0) {
       // The second pass's dies are checked now, before any work (they are set up after the first springback).
       std::vector<Tool> second;
@@ -141,16 +141,6 @@ public:
                             "tubeform: stroke %.4f mm gives an outer corner radius of %.4g mm (perimeter-conserving "
                             "rounded square)\n",
                             stroke_, opt_.stroke_corner_radius));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-
-  // A stroke the dies cannot take is refused before any work (scenes/die.hpp).
-  PetscErrorCode CheckReach(MPI_Comm comm) const
-  {
-    PetscFunctionBeginUser;
-    if (opt_.die_force == 0)
-      PetscCall(CheckDieReach(comm, PassOptions(opt_, 0), squaring_, path_.deepest(), "-stroke"));
-    if (stroke2_ > 0) PetscCall(CheckDieReach(comm, PassOptions(opt_, 1), squaring_, stroke2_, "-pass2_stroke"));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
@@ -192,6 +182,7 @@ public:
     if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
     PetscCall(VecZeroEntries(reversed_));
     PetscCall(m.contact->AddContactForces(reversed_));
+    if (held_[pass_]) PetscCall(hold_.AddForces(m, reversed_)); // (its couple falls with them)
     PetscCall(m.contact->TotalForce(kUpper, reversed_total_, &reversed_moment_));
     m.contact->Remove();
     m.system.ClearFrames();
@@ -199,6 +190,12 @@ public:
     unloading_ = true;
     if (half_) PetscCall(ChoosePin(m));
     PetscFunctionReturn(PETSC_SUCCESS);
+  }
+
+  PetscErrorCode BeginIncrement(Model &m, double) override
+  {
+    TurnedSupportFrames(m, AxisHeld(), held_[pass_] && !unloading_, unloading_ || !held_[pass_], pinned_ ? pin_ : -1);
+    return 0;
   }
 
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
@@ -276,6 +273,8 @@ public:
       row.lower_fx = -f[0], row.lower_fy = -f[1], row.lower_moment = -Press().det() * moment;
     }
     if (held_[pass_] && !unloading_) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
+    if (held_[pass_] && unloading_) // (what the springback's pins carry; scenes/hold.hpp)
+      PetscCall(hold_.SupportMoment(m, f_int, reversed_, ReleaseEnd() - lambda, pinned_ ? pin_ : -1, row.hold_moment));
     PetscCall(OuterExtents(m, row, Part(), Press()));
     PetscCall(Shape(m, lambda, row));
     row.stage = StageOf(lambda);
@@ -406,9 +405,9 @@ private:
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
-  SquareMap PassMap(int pass) const { return PassTurn(opt_, pass, half_, full_); }
+  TurnMap PassMap(int pass) const { return PassTurn(opt_, pass, half_, full_); }
   // The tube's coordinates into the frame of the press in place (its die moving along -y).
-  SquareMap Press() const { return PassMap(pass_).Inverse(); }
+  TurnMap Press() const { return PassMap(pass_).Inverse(); }
   // The full model's pins hold the tube along the press's x.
   Vec2 AxisHeld() const { return PassMap(pass_)({1, 0}); }
   // The nodes whose direction the contact set keeps: the quarter's and the half's symmetry planes (the half tube

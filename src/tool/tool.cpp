@@ -101,26 +101,39 @@ double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
   return rmin;
 }
 
-Vec2 SquareMap::operator()(const Vec2 &v) const
+TurnMap TurnMap::TurnBy(double radians)
 {
-  const Vec2 r = {v[0], reflect ? -v[1] : v[1]};
-  switch (q) {
-  case 1:
-    return {-r[1], r[0]};
-  case 2:
-    return {-r[0], -r[1]};
-  case 3:
-    return {r[1], -r[0]};
-  default:
-    return r;
-  }
+  const long quarters = std::lround(radians / (M_PI / 2));
+  return {false, (int)(((quarters % 4) + 4) % 4), radians - quarters * (M_PI / 2)};
 }
 
-Tool Transform(const Tool &t, const SquareMap &map)
+Vec2 TurnMap::operator()(const Vec2 &v) const
+{
+  const Vec2 r = {v[0], reflect ? -v[1] : v[1]};
+  Vec2 t;
+  switch (q) {
+  case 1:
+    t = {-r[1], r[0]};
+    break;
+  case 2:
+    t = {-r[0], -r[1]};
+    break;
+  case 3:
+    t = {r[1], -r[0]};
+    break;
+  default:
+    t = r;
+  }
+  if (angle == 0) return t;
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * t[0] - s * t[1], s * t[0] + c * t[1]};
+}
+
+Tool Transform(const Tool &t, const TurnMap &map)
 {
   Tool m = t;
   // An angle t goes to (reflect ? -t : t) + q pi / 2; a reflection reverses the range [t0, t1].
-  const double turn = map.q * (M_PI / 2);
+  const double turn = map.q * (M_PI / 2) + map.angle;
   for (Segment &s : m.segments) {
     s.a = map(s.a), s.b = map(s.b), s.c = map(s.c), s.n_line = map(s.n_line);
     const double t0 = s.t0;

@@ -176,31 +176,34 @@ inline double Travel(const Options &opt)
   return travel;
 }
 
+// The second pass's turn of the tube in quarter turns (-pass2_turn / 90, rounded), and whether it is whole.
+inline int Pass2Quarters(const Options &opt) { return (int)std::lround(opt.pass2_turn / 90.0); }
+inline bool QuarterTurn(const Options &opt) { return opt.pass2_turn == 90.0 * Pass2Quarters(opt); }
 // The tool scenes model a quarter of the tube where that is exact (or asked for): -model quarter, or auto
-// with a lower die that mirrors the upper one in shape and motion; the half (x >= 0) otherwise.
+// with a lower die that mirrors the upper one in shape and motion (and a turn by quarter turns); the half
+// (x >= 0) otherwise.
 inline bool QuarterModel(const Options &opt)
 {
   const bool mirror = opt.lower_die == "mirror" && (opt.pass2_lower_die.empty() || opt.pass2_lower_die == "mirror");
   return opt.model == "quarter" ||
-         (opt.model == "auto" && mirror && opt.lower_die_motion == "mirror" && opt.die_offset == 0);
+         (opt.model == "auto" && mirror && opt.lower_die_motion == "mirror" && opt.die_offset == 0 && QuarterTurn(opt));
 }
-// The second pass's turn of the tube in quarter turns (-pass2_turn / 90; checked to be whole).
-inline int Pass2Quarters(const Options &opt) { return (int)std::lround(opt.pass2_turn / 90.0); }
 // The whole tube (-model full), or auto where neither the quarter nor the half is exact: the half's plane x = 0
-// is not a symmetry plane of a press turned by an odd number of quarter turns.
+// is not a symmetry plane of a press turned by an odd number of quarter turns, or by another angle.
 inline bool FullModel(const Options &opt)
 {
-  return opt.model == "full" ||
-         (opt.model == "auto" && !QuarterModel(opt) && (Pass2Quarters(opt) % 2 != 0 || opt.die_offset != 0));
+  return opt.model == "full" || (opt.model == "auto" && !QuarterModel(opt) &&
+                                 (Pass2Quarters(opt) % 2 != 0 || !QuarterTurn(opt) || opt.die_offset != 0));
 }
 // A pass (0, 1) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked, or
 // (auto) where the pins would hold the tube's slide against the dies: a die off the axis, a second pass after it,
-// or a second pass turned by a quarter turn after a first one not symmetric about the press's x axis (a lower die
-// that does not mirror the upper one).
+// a second pass turned by a quarter turn after a first one not symmetric about the press's x axis (a lower die
+// that does not mirror the upper one), or by an angle that is no quarter turn (no mesh nodes on its axis).
 inline bool HeldByRotation(const Options &opt, int pass)
 {
   const bool first_mirrored = opt.lower_die == "mirror" && opt.lower_die_motion == "mirror";
-  const bool off_axis = opt.die_offset != 0 || (pass == 1 && Pass2Quarters(opt) % 2 != 0 && !first_mirrored);
+  const bool off_axis = opt.die_offset != 0 || (pass == 1 && !QuarterTurn(opt)) ||
+                        (pass == 1 && Pass2Quarters(opt) % 2 != 0 && !first_mirrored);
   return FullModel(opt) && (opt.full_hold == "rotation" || (opt.full_hold == "auto" && off_axis));
 }
 } // namespace tf

@@ -37,33 +37,38 @@ double PressToolWork(TubePart part, bool lower_fixed, const HistoryRow &prev, co
 // C1 = x_max, C2 = y_max of the outer surface (the half model's C2 half its height, the full model's C1 half
 // its width) and their ratio. A pass that turned the tube measures in its press's frame: `press` maps the
 // tube's coordinates there (the inverse of the map that drew its dies).
-PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part = TubePart::Quarter, const SquareMap &press = {});
+PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part = TubePart::Quarter, const TurnMap &press = {});
 // Collective: the outer-surface nodes of the whole mesh on every rank, along the surface by angle (contact
 // state, and the segment of the upper die, tool 0, a node touches). With `upper`, only the nodes that started
 // in the quarter x, y >= 0 (the half and full models' upper right quarter, on which the shape metrics are
 // measured as in the quarter model). Coordinates, and the quarter, in the press's frame (`press`).
-PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper = false, const SquareMap &press = {});
+PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper = false, const TurnMap &press = {});
 // The outer surface `all` in order around the tube from the point opposite the side between the nodes of input
 // numbers ends[0], ends[1] (so that the side lies between its ends in that order, whatever quarter it is in;
 // GatherOuter's order starts at -pi).
 void OrderAroundSide(std::vector<SurfacePoint> &all, const long ends[2]);
 // Collective: the lowest y of the outer surface in the press's frame (where a floor goes under the tube).
-PetscErrorCode LowestOuterY(Model &m, double &y, const SquareMap &press = {});
+PetscErrorCode LowestOuterY(Model &m, double &y, const TurnMap &press = {});
 
 // The half and full models' supports where no die holds the tube (scenes/pins.cpp).
 // Collective: the springback's pin (the tube's rigid motion along the press's y, held along press.Inverse() of
 // (0, 1)): the local index of the inner node nearest the press's x axis on its positive side (a node on it
 // keeps y = 0 in a symmetric case; the lowest input number among equals), or -1 where another rank has it.
-PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin, const SquareMap &press = {});
+PetscErrorCode ChooseSpringbackPin(Model &m, PetscInt &pin, const TurnMap &press = {});
 // A mesh node this close to the y axis (relative to its height) is on it.
 constexpr double kAxisPin = 1e-9;
 // Collective: the full model's pins, node set "axis": the outer nodes on the press's y axis at the tube's top
 // and at its bottom, whose press x held (HoldAlong along press.Inverse() of (1, 0)) holds the tube's rotation
 // and its motion along the press's x (exactly, in a press symmetric about its y axis: their x stays 0); an
-// error on every rank if the mesh has none. With `surface` "inner" and `set` "hold": the rotation hold's nodes
+// error on every rank if the mesh has none. Not `exact`: the surface's nodes nearest the axis (by angle), for a
+// press turned by an angle no node lies on. With `surface` "inner" and `set` "hold": the rotation hold's nodes
 // (scenes/hold.hpp).
-PetscErrorCode MarkAxisPins(Model &m, const SquareMap &press = {}, const char *surface = "outer",
-                            const char *set = "axis");
+PetscErrorCode MarkAxisPins(Model &m, const TurnMap &press = {}, const char *surface = "outer",
+                            const char *set = "axis", bool exact = true);
+// A press turned by an angle that is no quarter turn holds its supports along its own x and y (`axis`: its x in
+// the tube's frame): their nodes get that frame (System::SetFrame) where they are used: the rotation hold's
+// (`hold`), the pins (`pins`), the springback's pin (`pin`, -1: none here). Nothing along the global axes.
+void TurnedSupportFrames(Model &m, const Vec2 &axis, bool hold, bool pins, PetscInt pin);
 // A press's summary metrics per pass: the loaded state (the last row of its press, stage 2 p) and the unloaded
 // one (the last of its release): loaded_* and unloaded_* of C/t, C1/C2, x_max, y_max for the first pass (as the
 // run's summary), pass2_loaded_* and so on for the second.

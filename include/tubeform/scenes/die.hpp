@@ -58,10 +58,11 @@ PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint
 PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, bool squaring, const Tool &upper_right,
                            bool half, bool full, std::vector<Tool> &tools);
 // The map that draws a pass's dies, built in its press's frame, into the tube's: -pass2_turn turns the tube
-// before the second pass, so its dies turn the other way about the tube's centre. The quarter and the half model
+// before the second pass, so its dies turn the other way about the tube's centre (the full model: by any angle,
+// TurnMap::TurnBy, unless a whole number of quarter turns). The quarter and the half model
 // draw the turned dies by the reflection that keeps their symmetry planes (the same press, by the tube's
 // symmetry): the quarter's quarter turn is the reflection about y = x, the half's half turn y -> -y.
-SquareMap PassTurn(const Options &opt, int pass, bool half, bool full);
+TurnMap PassTurn(const Options &opt, int pass, bool half, bool full);
 
 // Collective: refuses a stroke the dies of options `o` cannot take, naming `option`: past the parting faces,
 // past the point where the cavity between two V-dies is smaller than the tube's cross-section (plane strain
@@ -69,6 +70,9 @@ SquareMap PassTurn(const Options &opt, int pass, bool half, bool full);
 // self-contact is modelled). A profile of one's own or another lower die has no closed form of its cavity: a
 // stroke that closes it fails in the run.
 PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, double stroke, const char *option);
+// Collective: CheckDieReach for a press's passes: the first pass's deepest stroke (-stroke, or -stroke_path's; not
+// with -die_force, whose stroke is its outcome) and the second's.
+PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring, double deepest);
 // The first stroke CheckDieReach refuses (the dies closing on the tube, their parting faces meeting, the ring's
 // walls meeting); kNever where there is no closed form (a profile, another lower die).
 double DieReach(const Options &o, bool squaring);

@@ -7,10 +7,11 @@
 // die off the axis moves it sideways). The couple is a moment the real tube
 // does not get; the history reports it beside the largest moment the
 // contacts' friction could carry (hold_moment, hold_friction), so a run says
-// when the real tube would turn instead.
+// when the real tube may turn instead.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "tubeform/scenes/scene.hpp"
 
@@ -19,7 +20,7 @@ namespace tf {
 class RotationHold : public ExtraUnknown {
 public:
   // Collective: the hold's nodes in the press's frame `press` (node set "hold"), on every pass's start.
-  PetscErrorCode Mark(Model &m, const SquareMap &press);
+  PetscErrorCode Mark(Model &m, const TurnMap &press);
   // The increment's constraint: both nodes along `along` (the press's x in the tube's frame) by the system's
   // extra unknown.
   PetscErrorCode Constrain(Model &m, const Vec2 &along);
@@ -32,13 +33,23 @@ public:
   // force the body needs at its nodes (`f_int`: internal force contributions, local vector, global frame), and
   // the largest moment the contacts' friction could carry about the nodes' midpoint (0 without contact).
   PetscErrorCode Moment(Model &m, Vec f_int, double &moment, double &friction) const;
+  // Collective: in a release, the moment about the tube's centre that the springback's supports (the pins, node
+  // set "axis", and the local node `pin`, -1: none here) carry: their internal force less the release's reversed
+  // loads (share x f_rev); 0 in balance: the reversed loads, the hold's forces among them, need no support.
+  PetscErrorCode SupportMoment(Model &m, Vec f_int, Vec f_rev, double share, PetscInt pin, double &moment) const;
   // Collective: the couple and the friction's largest into the history (`det`: the press's frame's determinant,
-  // the row's load and stroke already in), and a warning the first time friction could not carry it.
+  // the row's load and stroke already in), and a warning the first time friction may not carry it.
   PetscErrorCode Measure(Model &m, Vec f_int, double det, double ro, HistoryRow &row);
+  // Collective: the forces the hold puts on the body (its nodes' internal force, owned nodes, global frame) added
+  // to `f`: a release's reversed loads take them down with the contact forces.
+  PetscErrorCode AddForces(Model &m, Vec f) const;
 
 private:
-  // A couple below this fraction of the punch load times the tube's radius is the solver's round-off.
-  static constexpr double kNoise = 1e-9;
+  // A couple within this fraction of the largest punch load so far times the tube's radius is one the method
+  // does not resolve (its equilibrium tolerance, 0.5 % of the mean nodal force, over the few contact nodes at
+  // arm Ro): no warning below it (the first touches of a pass, where friction's largest is nearly 0).
+  static constexpr double kUnresolved = 1e-3;
+  double largest_load_ = 0;
   Model *m_ = nullptr;
   Vec2 along_{1, 0};
   bool warned_ = false; // the warning printed

@@ -17,7 +17,7 @@ struct PressShapeState {
   bool second_pass; // the second pass's dies are in place
   int flank, apex;  // the upper die's segments (scenes/die.hpp)
   double t;         // the wall thickness (mm)
-  SquareMap press;  // the tube's coordinates into the press's frame
+  TurnMap press;    // the tube's coordinates into the press's frame
 };
 
 // Collective: C/t and the corner radii into `row`. Loading: the largest gap between the flank and the outer

@@ -92,22 +92,26 @@ Tool BuildVDie(double ro, double r_apex, double u_close = 0, double r_edge = 0, 
 Tool BuildFlatPlate(double y0, double x0, double x1, bool floor = false);
 
 // One of the eight maps of a square onto itself: the reflection y -> -y (if `reflect`), then q quarter turns
-// counter-clockwise about the origin. Exact: it only swaps and negates coordinates.
-struct SquareMap {
+// counter-clockwise about the origin; exact: it only swaps and negates coordinates. Then, without a reflection, a
+// turn by `angle` (radians, counter-clockwise; 0 for the square's maps): a press turned by any angle.
+struct TurnMap {
   bool reflect = false;
-  int q = 0; // 0..3
+  int q = 0;          // 0..3
+  double angle = 0.0; // |angle| < pi / 2 (the quarter turns are q's)
 
-  static SquareMap Turn(int quarters) { return {false, ((quarters % 4) + 4) % 4}; }
-  bool identity() const { return !reflect && q == 0; }
+  static TurnMap Turn(int quarters) { return {false, ((quarters % 4) + 4) % 4}; }
+  // The turn by `radians`: its whole quarter turns exact, the rest by angle.
+  static TurnMap TurnBy(double radians);
+  bool identity() const { return !reflect && q == 0 && angle == 0; }
   Vec2 operator()(const Vec2 &v) const;
   // The map that undoes this one (a reflection undoes itself).
-  SquareMap Inverse() const { return reflect ? *this : Turn(-q); }
+  TurnMap Inverse() const { return reflect ? *this : TurnMap{false, ((4 - q) % 4), -angle}; }
   // Its determinant: -1 for a reflection (a moment changes sign).
   double det() const { return reflect ? -1.0 : 1.0; }
 };
 
-// A tool mapped by a SquareMap: its segments (their order kept), the body's side (the normals) and its motion.
-Tool Transform(const Tool &t, const SquareMap &map);
+// A tool mapped by a TurnMap: its segments (their order kept), the body's side (the normals) and its motion.
+Tool Transform(const Tool &t, const TurnMap &map);
 // A tool moved by d (its segments and its frame's origin).
 Tool Shifted(const Tool &t, const Vec2 &d);
 // A tool moved back along its motion by `back` units of stroke (its segments at -back x direction).
