@@ -107,10 +107,10 @@ void CheckMaps()
     const TurnMap map = TurnMap::TurnBy(a);
     const Vec2 v = {0.3, -1.7}, w = map(v), back = map.Inverse()(w);
     CHECK(std::abs(map.angle) <= M_PI / 4 + 1e-15);
-    CHECK_NEAR(w[0], std::cos(a) * v[0] - std::sin(a) * v[1], 1e-15);
-    CHECK_NEAR(w[1], std::sin(a) * v[0] + std::cos(a) * v[1], 1e-15);
-    CHECK_NEAR(back[0], v[0], 1e-15);
-    CHECK_NEAR(back[1], v[1], 1e-15);
+    CHECK_NEAR(w[0], std::cos(a) * v[0] - std::sin(a) * v[1], 1e-14);
+    CHECK_NEAR(w[1], std::sin(a) * v[0] + std::cos(a) * v[1], 1e-14);
+    CHECK_NEAR(back[0], v[0], 1e-14);
+    CHECK_NEAR(back[1], v[1], 1e-14);
   }
   CHECK(TurnMap::TurnBy(M_PI / 2).q == 1 && TurnMap::TurnBy(M_PI / 2).angle == 0);
 }

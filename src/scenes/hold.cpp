@@ -114,7 +114,6 @@ PetscErrorCode RotationHold::Measure(Model &m, Vec f_int, double det, double ro,
   PetscFunctionBeginUser;
   PetscCall(Moment(m, f_int, row.hold_moment, row.hold_friction));
   row.hold_moment *= det;
-  largest_load_ = std::max(largest_load_, std::abs(row.load));
   const bool over = std::abs(row.hold_moment) > row.hold_friction + kUnresolved * largest_load_ * ro;
   if (over && !warned_ && !m.quiet)
     PetscCall(PetscPrintf(m.comm,

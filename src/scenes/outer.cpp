@@ -22,7 +22,7 @@ PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper,
   const auto &x = m.body.position();
   for (PetscInt n : m.mesh.node_sets["outer"]) {
     const Vec2 p = press({x[2 * n], x[2 * n + 1]}), p0 = press({m.mesh.x0[2 * n], m.mesh.x0[2 * n + 1]});
-    if (m.mesh.node_owned[n] && (!upper || (p0[1] >= 0 && p0[0] >= -kAxisPin * p0[1])))
+    if (m.mesh.node_owned[n] && (!upper || (p0[1] >= -kAxisPin * std::abs(p0[0]) && p0[0] >= -kAxisPin * p0[1])))
       mine.insert(mine.end(), {p[0], p[1], m.contact ? double(m.contact->InContact(n)) : 0.0, UpperSegment(m, n),
                                double(m.mesh.node_orig[n])});
   }

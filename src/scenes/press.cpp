@@ -122,7 +122,7 @@ public:
     for (size_t k = SideDie(); opt_.side_force > 0 && k < tools.tools.size(); ++k) tools.tools[k].pad = true;
     tools.candidates = "outer";
     for (int pass = stroke2_ > 0; full_ && pass >= 0; --pass) { // (the second pass's axis checked now)
-      PetscCall(MarkAxisPins(m, PassMap(pass).Inverse()));
+      PetscCall(MarkAxisPins(m, PassMap(pass).Inverse(), "outer", "axis", PassMap(pass).angle == 0));
       if (held_[pass]) PetscCall(hold_.Mark(m, PassMap(pass).Inverse()));
     }
     tools.symmetry = Symmetry();
@@ -272,6 +272,7 @@ public:
       f = Press()({force[0], force[1]});
       row.lower_fx = -f[0], row.lower_fy = -f[1], row.lower_moment = -Press().det() * moment;
     }
+    hold_.SeeLoad(row.load); // (the warning's floor: the largest load so far)
     if (held_[pass_] && !unloading_) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
     if (held_[pass_] && unloading_) // (what the springback's pins carry; scenes/hold.hpp)
       PetscCall(hold_.SupportMoment(m, f_int, reversed_, ReleaseEnd() - lambda, pinned_ ? pin_ : -1, row.hold_moment));
@@ -298,6 +299,7 @@ public:
     ar.Group("/scene");
     PetscCall(ar.Value("unloading", unloading_));
     PetscCall(ar.Value("pass", pass_));
+    PetscCall(hold_.Persist(ar));
     PetscCall(ar.Value("floor_y", floor_y_));
     PetscCall(ar.Values("pass2_back", start_back_));
     if (ar.reading() && pass_ == 1) {
@@ -399,7 +401,7 @@ private:
     PetscFunctionBeginUser;
     PetscCall(PassTools(m, 1, floor_y_, tools));
     for (size_t k = 0; k < tools.size() && k < start_back_.size(); ++k) tools[k] = MovedBack(tools[k], start_back_[k]);
-    if (full_) PetscCall(MarkAxisPins(m, Press()));
+    if (full_) PetscCall(MarkAxisPins(m, Press(), "outer", "axis", Press().angle == 0)); // (exact: the pins)
     if (held_[1]) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)
     symmetry = Symmetry();
     PetscFunctionReturn(PETSC_SUCCESS);

@@ -10,6 +10,8 @@
 // when the real tube may turn instead.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,16 @@ public:
   // Collective: the couple and the friction's largest into the history (`det`: the press's frame's determinant,
   // the row's load and stroke already in), and a warning the first time friction may not carry it.
   PetscErrorCode Measure(Model &m, Vec f_int, double det, double ro, HistoryRow &row);
+  // Every history row's load: the warning's floor follows the largest so far.
+  void SeeLoad(double load) { largest_load_ = std::max(largest_load_, std::abs(load)); }
+  // Collective: the warning's state (a restart warns as the run it continues would).
+  PetscErrorCode Persist(Archive &ar)
+  {
+    PetscFunctionBeginUser;
+    PetscCall(ar.Value("hold_largest_load", largest_load_));
+    PetscCall(ar.Value("hold_warned", warned_));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   // Collective: the forces the hold puts on the body (its nodes' internal force, owned nodes, global frame) added
   // to `f`: a release's reversed loads take them down with the contact forces.
   PetscErrorCode AddForces(Model &m, Vec f) const;
