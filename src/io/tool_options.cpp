@@ -51,7 +51,8 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "
                "on its inner nodes there holds its rotation alone, the dies its slide; docs/dies.md), auto "
                "(rotation where the pins would hold the tube's slide against the dies: with -die_offset, and in a "
-               "quarter-turned second pass after a first pass not mirrored top to bottom; else pins)",
+               "quarter-turned second pass after a first pass not mirrored top to bottom, and in one turned by "
+               "another angle; else pins)",
                {"auto", "pins", "rotation"}, opt.full_hold));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
                       "squaring: a second pass after the springback: press again by this stroke (mm, from the dies' "

@@ -35,7 +35,9 @@ PetscErrorCode MarkAxisPins(Model &m, const TurnMap &press, const char *surface,
     int id;
   } mine[2] = {{-kNever, -1}, {-kNever, -1}}, best[2];
   PetscFunctionBeginUser;
-  // The surface's nodes on the y axis at its top and at its bottom (the largest |y| among those on it).
+  // The surface's nodes on the y axis at its top and at its bottom (the largest |y| among those on it); in a press
+  // turned by an angle no node need lie on, the nearest.
+  exact = exact && press.angle == 0;
   for (PetscInt n : m.mesh.node_sets[surface]) {
     const Vec2 p0 = press({m.mesh.x0[2 * n], m.mesh.x0[2 * n + 1]});
     const double x = p0[0], y = p0[1];

@@ -122,7 +122,7 @@ public:
     for (size_t k = SideDie(); opt_.side_force > 0 && k < tools.tools.size(); ++k) tools.tools[k].pad = true;
     tools.candidates = "outer";
     for (int pass = stroke2_ > 0; full_ && pass >= 0; --pass) { // (the second pass's axis checked now)
-      PetscCall(MarkAxisPins(m, PassMap(pass).Inverse(), "outer", "axis", PassMap(pass).angle == 0));
+      PetscCall(MarkAxisPins(m, PassMap(pass).Inverse()));
       if (held_[pass]) PetscCall(hold_.Mark(m, PassMap(pass).Inverse()));
     }
     tools.symmetry = Symmetry();
@@ -401,7 +401,7 @@ private:
     PetscFunctionBeginUser;
     PetscCall(PassTools(m, 1, floor_y_, tools));
     for (size_t k = 0; k < tools.size() && k < start_back_.size(); ++k) tools[k] = MovedBack(tools[k], start_back_[k]);
-    if (full_) PetscCall(MarkAxisPins(m, Press(), "outer", "axis", Press().angle == 0)); // (exact: the pins)
+    if (full_) PetscCall(MarkAxisPins(m, Press()));
     if (held_[1]) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)
     symmetry = Symmetry();
     PetscFunctionReturn(PETSC_SUCCESS);

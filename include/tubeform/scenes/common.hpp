@@ -60,9 +60,9 @@ constexpr double kAxisPin = 1e-9;
 // Collective: the full model's pins, node set "axis": the outer nodes on the press's y axis at the tube's top
 // and at its bottom, whose press x held (HoldAlong along press.Inverse() of (1, 0)) holds the tube's rotation
 // and its motion along the press's x (exactly, in a press symmetric about its y axis: their x stays 0); an
-// error on every rank if the mesh has none. Not `exact`: the surface's nodes nearest the axis (by angle), for a
-// press turned by an angle no node lies on. With `surface` "inner" and `set` "hold": the rotation hold's nodes
-// (scenes/hold.hpp).
+// error on every rank if the mesh has none. Not `exact`, or in a press turned by an angle that is no quarter turn
+// (press.angle), the surface's nodes nearest the axis (by angle). With `surface` "inner" and `set` "hold": the rotation
+// hold's nodes (scenes/hold.hpp).
 PetscErrorCode MarkAxisPins(Model &m, const TurnMap &press = {}, const char *surface = "outer",
                             const char *set = "axis", bool exact = true);
 // A press turned by an angle that is no quarter turn holds its supports along its own x and y (`axis`: its x in

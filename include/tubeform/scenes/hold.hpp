@@ -1,13 +1,14 @@
-// The full model's rotation hold (docs/dies.md, "The rotation hold"): in
-// place of the pins, which hold the tube's slide along the press's x as well
-// as its rotation, the two inner nodes on the press's y axis (top and bottom,
-// never in contact) move along the press's x by one unknown s of each solve,
-// s chosen so that their forces along it sum to zero. They then carry a
-// couple only: the tube's rotation is held, its slide is left to the dies (a
-// die off the axis moves it sideways). The couple is a moment the real tube
-// does not get; the history reports it beside the largest moment the
-// contacts' friction could carry (hold_moment, hold_friction), so a run says
-// when the real tube may turn instead.
+// The full model's rotation hold (docs/dies.md, "A die off the axis: the
+// rotation hold"): in place of the pins, which hold the tube's slide along
+// the press's x as well as its rotation, the two inner nodes on (in a press
+// turned by another angle, nearest) the press's y axis, top and bottom, never
+// in contact, move along the press's x by one unknown s of each solve, s
+// chosen so that their forces along it sum to zero. They then carry a couple
+// only: the tube's rotation is held, its slide is left to the dies (a die off
+// the axis moves it sideways). The couple is a moment the real tube does not
+// get; the history reports it beside the largest moment the contacts'
+// friction could carry (hold_moment, hold_friction), so a run says when the
+// real tube may turn instead.
 #pragma once
 
 #include <algorithm>
