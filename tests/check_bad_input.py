@@ -86,10 +86,22 @@ cases = [
     (["-scene", "squaring", "-full_hold", "rotation"], "-full_hold rotation: only the full model"),
     (["-scene", "squaring", "-full_hold", "roll"], "-full_hold"),
     (["-scene", "squaring", "-die_offset", "0.5", "-die_force", "100", "-lower_die_motion", "fixed"],
-     "the rotation hold (-full_hold, -die_offset): not with -die_force"),
+     "the rotation hold (-full_hold, -die_offset, -die_path): not with -die_force"),
     (["-scene", "tension", "-die_offset", "0.5"], "presses with no dies"),
     (["-scene", "flattening", "-die_offset", "0.5"], "-die_offset 0.5: the squaring scene's die"),
     (["-scene", "squaring", "-die_offset", "0.5", "-pass2_stroke", "2"], "a second pass after it"),
+    (["-scene", "squaring", "-die_path", "0,-1,0.5"], "-die_path: the squaring scene's upper die through x,y pairs"),
+    (["-scene", "flattening", "-die_path", "0,-1"], "-die_path: the squaring scene's upper die"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,0"], "other than the one before it"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,nan"], "each point must be a pair"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1,0.5,1"], "the last point's y 1"),
+    (["-scene", "squaring", "-die_path", "0,-1"], "give -lower_die_motion fixed"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1", "-stroke_path", "1,2"],
+     "-die_path: in place of -stroke"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0.5,-1", "-model", "half"],
+     "-die_path: a die off the axis"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0.5,-1", "-full_hold", "pins"],
+     "-die_path with -full_hold pins"),
     (["-scene", "flattening", "-model", "full", "-full_hold", "rotation"], "plates do not hold"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_die", out("none.profile")],
      f"-pass2_side_die {out('none.profile')}: cannot read"),
@@ -160,7 +172,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 99 and len(selected) == 5, f"{len(cases)} cases on 1 rank (99), {len(selected)} on 2 (5)")
+k.check(len(cases) == 108 and len(selected) == 5, f"{len(cases)} cases on 1 rank (108), {len(selected)} on 2 (5)")
 
 
 def attempt(np_, extra):

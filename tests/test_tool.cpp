@@ -156,6 +156,28 @@ void CheckClearance()
   std::printf("ClearanceBack: the plate and the V-die clear a circle of radius Ro + 0.3 as the closed forms say\n");
 }
 
+// A tool's path of its own (tool/path.hpp): through its points at strokes of half the distance along it, the
+// motion of the piece ahead at each point, straight on past the end; mapped with the tool.
+void CheckPath()
+{
+  const ToolPath path({{0, -2}, {0.5, -2}, {0.5, -3}}); // (lengths 2, 0.5, 1: strokes 1, 1.25, 1.75)
+  CHECK(path.end() == 1.75 && path.Turns() == std::vector<double>({1.0, 1.25}));
+  const Vec2 a = path.At(1.0), b = path.At(1.25), c = path.At(1.75), d = path.At(2.0), e = path.At(1.1);
+  CHECK(a[0] == 0 && a[1] == -2 && b[0] == 0.5 && b[1] == -2 && c[0] == 0.5 && c[1] == -3);
+  CHECK(d[0] == 0.5 && d[1] == -3.5 && std::abs(e[0] - 0.2) < 1e-15 && e[1] == -2);
+  // (at a point, and within round-off below it, a step runs on the piece after it)
+  const Vec2 m0 = path.Motion(0.5), m1 = path.Motion(1.0), m2 = path.Motion(1.25 - 1e-15), m3 = path.Motion(9);
+  CHECK(m0[0] == 0 && m0[1] == -2 && m1[0] == 2 && m1[1] == 0 && m2[0] == 0 && m2[1] == -2 && m3[1] == -2);
+  CHECK(path.Deepest() == 3 && ToolPath().empty() && ToolPath().Turns().empty());
+  Tool die = BuildVDie(17.5, 3.0);
+  die.path = path;
+  die.stroke = 1.1;
+  die.FollowPath();
+  const Tool mirrored = MirrorX(die);
+  CHECK(die.direction[0] == 2 && mirrored.Offset()[0] == -die.Offset()[0] && mirrored.Offset()[1] == die.Offset()[1]);
+  std::printf("ToolPath: points, pieces and the motion ahead as drawn; mirrored with the tool\n");
+}
+
 } // namespace
 
 int main()
@@ -171,5 +193,6 @@ int main()
   CHECK(concave == 2 && convex == 1); // both kinds of arc were sampled (the fillets and the V's apex: concave)
   CheckMaps();
   CheckClearance();
+  CheckPath();
   return ReportChecks("test_tool");
 }

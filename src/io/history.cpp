@@ -87,6 +87,8 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"hold_friction", &HistoryRow::hold_friction,
      "the rotation hold: the largest moment the contacts' friction could carry about the tube's centre (N mm/mm): "
      "a hold_moment above it is one the real tube may turn under"},
+    {"die_x", &HistoryRow::die_x,
+     "-die_path: the upper die's displacement along the press's x from where it started (mm; 0 without)"},
   };
   return cols;
 }

@@ -7,6 +7,7 @@
 #include "tubeform/material/kinematic.hpp"
 #include "tubeform/step/rmin.hpp"
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <initializer_list>
 
@@ -80,10 +81,11 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
                      opt.pass2_stroke != 0 || !opt.pass2_die_profile.empty() || !opt.pass2_lower_die.empty() ||
                      opt.pass2_turn != 0 || opt.die_force != 0 || opt.side_die != "none" ||
                      !opt.pass2_side_die.empty() || opt.side_force != 0 || opt.die_offset != 0 ||
-                     opt.full_hold != "auto";
+                     !opt.die_path.empty() || opt.full_hold != "auto";
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
-    "-lower_die, -lower_die_motion, -model, -pass2_*, -die_force, -die_offset, -side_die, -side_force, -full_hold: "
+    "-lower_die, -lower_die_motion, -model, -pass2_*, -die_force, -die_offset, -die_path, -side_die, -side_force, "
+    "-full_hold: "
     "the %s scene presses with no dies (these are the squaring and flattening scenes' options)",
     opt.scene.c_str());
   PetscCheck(opt.die_force >= 0 && std::isfinite(opt.die_force), comm, PETSC_ERR_USER_INPUT,
@@ -153,6 +155,30 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
                "-stroke_path: not with -die_force or -stroke_corner_radius");
     opt.stroke = opt.stroke_path.back();
   }
+  if (!opt.die_path.empty()) {
+    // The upper die through the points in turn, relative to a lower die that stays; one pass by the stroke.
+    PetscCheck(opt.scene == "squaring" && opt.die_path.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
+               "-die_path: the squaring scene's upper die through x,y pairs (mm, from its start), in turn");
+    Vec2 at = {0, 0};
+    for (const Vec2 &p : DiePathPoints(opt)) {
+      PetscCheck(std::isfinite(p[0]) && std::isfinite(p[1]) && p != at, comm, PETSC_ERR_USER_INPUT,
+                 "-die_path: %g,%g after %g,%g: each point must be a pair of numbers (mm), other than the one before "
+                 "it (the path starts at 0,0)",
+                 p[0], p[1], at[0], at[1]);
+      at = p;
+    }
+    PetscCheck(at[1] < 0, comm, PETSC_ERR_USER_INPUT,
+               "-die_path: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", at[1]);
+    PetscCheck(opt.lower_die_motion == "fixed", comm, PETSC_ERR_USER_INPUT,
+               "-die_path: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion "
+               "fixed");
+    PetscCheck(opt.stroke_path.empty() && opt.die_force == 0 && opt.stroke_corner_radius <= 0 &&
+                 opt.pass2_stroke == 0 && opt.side_die == "none" && opt.unload != "withdraw",
+               comm, PETSC_ERR_USER_INPUT,
+               "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, -die_force, "
+               "-stroke_corner_radius, -pass2_stroke, -side_die or -unload withdraw");
+    opt.stroke = -0.5 * at[1];
+  }
   const int quarters = Pass2Quarters(opt);
   PetscCheck(std::isfinite(opt.pass2_turn) && std::abs(opt.pass2_turn) <= 360, comm, PETSC_ERR_USER_INPUT,
              "-pass2_turn %g: the tube turns by -360 to 360 degrees", opt.pass2_turn);
@@ -174,26 +200,29 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
              "90 degrees; use -model full (or auto)",
              opt.pass2_turn);
   // The rotation hold: the full model; one extra unknown in a solve (scenes/hold.hpp).
-  PetscCheck(std::isfinite(opt.die_offset) && (opt.die_offset == 0 || FullModel(opt)), comm, PETSC_ERR_USER_INPUT,
-             "-die_offset %g: a die off the axis breaks the tube's mirror symmetry; give a number of mm with -model "
-             "full (or auto)",
+  PetscCheck(std::isfinite(opt.die_offset), comm, PETSC_ERR_USER_INPUT, "-die_offset %g: give a number of mm",
              opt.die_offset);
   PetscCheck(opt.die_offset == 0 || (opt.scene == "squaring" && opt.pass2_stroke == 0), comm, PETSC_ERR_USER_INPUT,
              "-die_offset %g: the squaring scene's die, in one pass (a plate off the axis is the same plate; a "
              "second pass after it is not available)",
              opt.die_offset);
+  char off_axis[64] = "-die_path"; // (what puts the die off the axis, named in the errors)
+  if (opt.die_offset != 0) std::snprintf(off_axis, sizeof off_axis, "-die_offset %g", opt.die_offset);
+  PetscCheck(!DieOffAxis(opt) || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
+             "%s: a die off the axis breaks the tube's mirror symmetry; use -model full (or auto)", off_axis);
   PetscCheck(opt.full_hold != "rotation" || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
              "-full_hold rotation: the %s scene's plates do not hold the tube's slide; use pins", opt.scene.c_str());
-  PetscCheck(opt.die_offset == 0 || opt.full_hold != "pins", comm, PETSC_ERR_USER_INPUT,
-             "-die_offset %g with -full_hold pins: the pins would hold the tube's slide against the die; use "
-             "-full_hold rotation (or auto)",
-             opt.die_offset);
+  PetscCheck(!DieOffAxis(opt) || opt.full_hold != "pins", comm, PETSC_ERR_USER_INPUT,
+             "%s with -full_hold pins: the pins would hold the tube's slide against the die; use -full_hold rotation "
+             "(or auto)",
+             off_axis);
   PetscCheck(opt.full_hold == "auto" || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
              "-full_hold %s: only the full model is held so (-model full)", opt.full_hold.c_str());
-  PetscCheck(!(HeldByRotation(opt, 0) || HeldByRotation(opt, 1)) || (opt.die_force == 0 && opt.side_force == 0), comm,
-             PETSC_ERR_USER_INPUT,
-             "the rotation hold (-full_hold, -die_offset): not with -die_force or -side_force (one force-controlled "
-             "unknown in an increment)");
+  PetscCheck(
+    !(HeldByRotation(opt, 0) || HeldByRotation(opt, 1)) || (opt.die_force == 0 && opt.side_force == 0), comm,
+    PETSC_ERR_USER_INPUT,
+    "the rotation hold (-full_hold, -die_offset, -die_path): not with -die_force or -side_force (one force-controlled "
+    "unknown in an increment)");
   PetscCheck(QuarterModel(opt) || opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
              "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
   PetscFunctionReturn(PETSC_SUCCESS);

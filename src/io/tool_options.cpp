@@ -46,11 +46,17 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                       "squaring: the first pass's upper die moved off the y axis by this along x (mm; one pass, the "
                       "full model, held by the rotation hold; docs/dies.md)",
                       opt.die_offset));
+  PetscCall(RealList(PetscOptionsObject, read, "-die_path",
+                     "squaring: the upper die's path: x,y points (mm, from where it starts) in turn at the punch "
+                     "speed, the lower die staying (-lower_die_motion fixed); in place of -stroke (U = -y / 2), one "
+                     "pass; a sideways motion takes the full model and the rotation hold (docs/dies.md)",
+                     2 * kMaxPathPoints, opt.die_path));
   PetscCall(
     ChooseWord(PetscOptionsObject, read, "-full_hold",
                "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "
                "on its inner nodes there holds its rotation alone, the dies its slide; docs/dies.md), auto "
-               "(rotation where the pins would hold the tube's slide against the dies: with -die_offset, and in a "
+               "(rotation where the pins would hold the tube's slide against the dies: with -die_offset or a sideways "
+               "-die_path, and in a "
                "quarter-turned second pass after a first pass not mirrored top to bottom, and in one turned by "
                "another angle; else pins)",
                {"auto", "pins", "rotation"}, opt.full_hold));

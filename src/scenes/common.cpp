@@ -82,6 +82,7 @@ double PressToolWork(TubePart part, bool lower_fixed, const HistoryRow &prev, co
   double dw = upper * 0.5 * (prev.load + row.load) * dU;
   if (two_dies && !fixed) dw -= 0.5 * (prev.lower_fy + row.lower_fy) * dU; // (moving up; the model pushes it down)
   dw += SideDiesInModel(part) * 0.5 * (prev.side_load + row.side_load) * (row.side_stroke - prev.side_stroke);
+  dw -= 0.5 * (prev.tool_fx + row.tool_fx) * (row.die_x - prev.die_x); // (-die_path's sideways motion)
   return dw;
 }
 

@@ -47,7 +47,7 @@ public:
                                            : opt.stroke;
     back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
     stroke2_ = opt.pass2_stroke;
-    path_ = StrokePath(opt.stroke_path, stroke_);
+    path_ = opt.die_path.empty() ? StrokePath(opt.stroke_path, stroke_) : StrokePath(ToolPath(DiePathPoints(opt)));
     for (int pass = 0; pass < 2; ++pass)
       side_dies_[pass] = PassOptions(opt, pass).side_die != "none", held_[pass] = HeldByRotation(opt, pass);
   }
@@ -93,7 +93,7 @@ public:
     if (opt_.die_force > 0) return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
     if (pass_ == 1) return std::min(std::max(lambda - kSecondPress, 0.0), 1.0) * stroke2_;
     if (lambda <= 1.0) return path_.Stroke(lambda);
-    return opt_.unload == "withdraw" ? stroke_ - (lambda - 1.0) * back_ : stroke_;
+    return opt_.unload == "withdraw" ? stroke_ - (lambda - 1.0) * back_ : path_.Stroke(1.0);
   }
 
   // Force control: the model's half of the punch load, rising to -die_force over the press; or the side dies'
@@ -117,6 +117,8 @@ public:
     PetscCall(PassTools(m, 0, tools.tools));
     std::vector<SurfacePoint> outer;
     PetscCall(GatherOuter(m, outer));
+    tools.tools[kUpper].path = path_.die(); // (-die_path: a path of its own, to move back along before the offset)
+    tools.tools[kUpper].FollowPath();
     if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
     tools.tools[kUpper].pad = opt_.die_force > 0;
     for (size_t k = SideDie(); opt_.side_force > 0 && k < tools.tools.size(); ++k) tools.tools[k].pad = true;
@@ -247,8 +249,10 @@ public:
   {
     double force[2], moment;
     PetscFunctionBeginUser;
-    row.stroke =
-      opt_.die_force > 0 ? m.contact->tool(kUpper).stroke : (pass_ == 1 ? stroke_ : 0.0) + ToolStroke(lambda);
+    row.stroke = opt_.die_force > 0 ? m.contact->tool(kUpper).stroke
+                 : pass_ == 1       ? stroke_ + ToolStroke(lambda)
+                                    : path_.U(ToolStroke(lambda));
+    if (pass_ == 0) row.die_x = path_.Sideways(ToolStroke(lambda)); // (-die_path)
     if (unloading_) {
       for (int k = 0; k < 2; ++k) force[k] = (ReleaseEnd() - lambda) * reversed_total_[k];
       moment = (ReleaseEnd() - lambda) * reversed_moment_;

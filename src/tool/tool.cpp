@@ -142,7 +142,7 @@ Tool Transform(const Tool &t, const TurnMap &map)
     else
       s.t0 = t0 + turn, s.t1 = s.t1 + turn;
   }
-  m.direction = map(t.direction), m.origin = map(t.origin);
+  m.direction = map(t.direction), m.origin = map(t.origin), m.path = t.path.Mapped(map);
   return m;
 }
 

@@ -103,11 +103,12 @@ public:
   // The node sets whose component along a direction the scene holds (ContactSpec::symmetry), in place of the
   // set's (a pass that turns the tube turns the full model's pins).
   void SetSymmetry(const std::vector<std::pair<std::string, Vec2>> &symmetry);
-  // The stroke of the tools that follow the scene's (a force-controlled one keeps its own).
+  // The stroke of the tools that follow the scene's (a force-controlled one keeps its own), and the motion of a
+  // tool on a path of its own along the piece ahead (a step never crosses a turn of it: LoadPath::kinks).
   void SetStroke(double stroke)
   {
     for (Tool &t : tools_)
-      if (!t.pad) t.stroke = stroke;
+      if (!t.pad) t.stroke = stroke, t.FollowPath();
   }
   bool has_pad() const
   {

@@ -77,6 +77,7 @@ struct Options {
   std::string model = "auto";              // quarter, half, full, or auto: the quarter where it is exact
   double die_force = 0;           // > 0: the upper die is force-controlled, its punch load rising to this (N/mm)
   double die_offset = 0;          // the first pass's upper die off the y axis along the press's x (mm; full model)
+  std::vector<double> die_path;   // squaring: the upper die's displacements (x, y pairs, mm) in turn from its start
   std::string full_hold = "auto"; // the full model's support: pins, rotation (the rotation hold), auto
   // A second pass after the springback: its stroke (0: none), its dies ("": the first pass's).
   double pass2_stroke = 0;
@@ -168,12 +169,28 @@ inline void ChooseElement(Options &opt)
 // The most strokes -stroke_path takes (a press's path, not a cycle test: a few dozen).
 constexpr PetscInt kMaxPathPoints = 32;
 
-// The die's travel over the press (mm): along -stroke_path, or -stroke (-output_stroke counts it).
+// -die_path's points in turn.
+inline std::vector<Vec2> DiePathPoints(const Options &opt)
+{
+  std::vector<Vec2> p;
+  for (size_t k = 0; k + 1 < opt.die_path.size(); k += 2) p.push_back({opt.die_path[k], opt.die_path[k + 1]});
+  return p;
+}
+// The die's travel over the press in units of the stroke U (mm; -output_stroke counts it): along -stroke_path,
+// half -die_path's length (ToolPath: a fixed lower die's U is half the upper one's travel), or -stroke.
 inline double Travel(const Options &opt)
 {
+  if (!opt.die_path.empty()) return ToolPath(DiePathPoints(opt)).end();
   double travel = opt.stroke_path.empty() ? opt.stroke : 0, at = 0;
   for (double u : opt.stroke_path) travel += std::abs(u - at), at = u;
   return travel;
+}
+// The first pass's upper die leaves the press's y axis: -die_offset, or a -die_path with a sideways motion.
+inline bool DieOffAxis(const Options &opt)
+{
+  bool sideways = false;
+  for (const Vec2 &p : DiePathPoints(opt)) sideways = sideways || p[0] != 0;
+  return opt.die_offset != 0 || sideways;
 }
 
 // The second pass's turn of the tube in quarter turns (-pass2_turn / 90, rounded), and whether it is whole.
@@ -186,14 +203,14 @@ inline bool QuarterModel(const Options &opt)
 {
   const bool mirror = opt.lower_die == "mirror" && (opt.pass2_lower_die.empty() || opt.pass2_lower_die == "mirror");
   return opt.model == "quarter" ||
-         (opt.model == "auto" && mirror && opt.lower_die_motion == "mirror" && opt.die_offset == 0 && QuarterTurn(opt));
+         (opt.model == "auto" && mirror && opt.lower_die_motion == "mirror" && !DieOffAxis(opt) && QuarterTurn(opt));
 }
 // The whole tube (-model full), or auto where neither the quarter nor the half is exact: the half's plane x = 0
 // is not a symmetry plane of a press turned by an odd number of quarter turns, or by another angle.
 inline bool FullModel(const Options &opt)
 {
   return opt.model == "full" || (opt.model == "auto" && !QuarterModel(opt) &&
-                                 (Pass2Quarters(opt) % 2 != 0 || !QuarterTurn(opt) || opt.die_offset != 0));
+                                 (Pass2Quarters(opt) % 2 != 0 || !QuarterTurn(opt) || DieOffAxis(opt)));
 }
 // A pass (0, 1) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked, or
 // (auto) where the pins would hold the tube's slide against the dies: the first pass with a die off the axis; a
@@ -203,7 +220,7 @@ inline bool HeldByRotation(const Options &opt, int pass)
 {
   const bool first_mirrored = opt.lower_die == "mirror" && opt.lower_die_motion == "mirror";
   const bool off_axis =
-    pass == 0 ? opt.die_offset != 0 : !QuarterTurn(opt) || (Pass2Quarters(opt) % 2 != 0 && !first_mirrored);
+    pass == 0 ? DieOffAxis(opt) : !QuarterTurn(opt) || (Pass2Quarters(opt) % 2 != 0 && !first_mirrored);
   return FullModel(opt) && (opt.full_hold == "rotation" || (opt.full_hold == "auto" && off_axis));
 }
 } // namespace tf

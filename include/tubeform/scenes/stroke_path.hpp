@@ -1,11 +1,15 @@
 // A press's die path (-stroke_path): strokes in turn from 0, taken at the
 // punch speed, so the load factor lambda in [0, 1] is the share of the travel
-// done; the turns are kinks of the load path (an increment ends there).
+// done; the turns are kinks of the load path (an increment ends there). Or the
+// upper die's path of its own (-die_path, tool/path.hpp): the stroke is then
+// its parameter, and the press's U half its depth.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
+
+#include "tubeform/tool/path.hpp"
 
 namespace tf {
 
@@ -20,9 +24,21 @@ public:
     if (at_.size() == 1) at_.push_back(stroke);
     for (size_t k = 1; k < at_.size(); ++k) travel_ += std::abs(at_[k] - at_[k - 1]);
   }
+  // The upper die's own path (its parameter runs over half its length: ToolPath), a lower die staying.
+  explicit StrokePath(const ToolPath &die) : die_(die)
+  {
+    at_ = {0.0, die.end()};
+    travel_ = die.end();
+  }
+  const ToolPath &die() const { return die_; }
+  // The press's U at stroke s (the die's own path: half its depth, -y / 2) and the die's sideways displacement.
+  double U(double s) const { return die_.empty() ? s : -0.5 * die_.At(s)[1]; }
+  double Sideways(double s) const { return die_.empty() ? 0.0 : die_.At(s)[0]; }
   double travel() const { return travel_; } // mm
+  // The deepest U.
   double deepest() const
   {
+    if (!die_.empty()) return 0.5 * die_.Deepest();
     double d = 0;
     for (double u : at_) d = std::max(d, u);
     return d;
@@ -43,6 +59,7 @@ public:
   std::vector<double> Kinks() const
   {
     std::vector<double> k;
+    for (double s : die_.Turns()) k.push_back(s / travel_);
     double done = 0;
     for (size_t i = 1; i + 1 < at_.size(); ++i) k.push_back((done += std::abs(at_[i] - at_[i - 1])) / travel_);
     return k;
@@ -51,6 +68,7 @@ public:
 private:
   std::vector<double> at_ = {0.0, 0.0};
   double travel_ = 0;
+  ToolPath die_;
 };
 
 } // namespace tf

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/tool/path.hpp"
 
 namespace tf {
 
@@ -46,8 +47,15 @@ public:
   double stroke = 0;             // current stroke
   bool pad = false;              // force-controlled: its stroke is an unknown of each increment (ContactSet)
   Vec2 origin{};                 // the frame's origin at stroke 0: the tube's centre, or moved with the die (MovedBack)
+  ToolPath path;                 // a path of its own (-die_path), or none: the stroke along `direction`
 
-  Vec2 Offset() const { return {stroke * direction[0], stroke * direction[1]}; }
+  // Where the stroke has moved the tool from its drawing.
+  Vec2 Offset() const { return path.empty() ? Vec2{stroke * direction[0], stroke * direction[1]} : path.At(stroke); }
+  // A tool on a path of its own moves along the piece ahead of its stroke (`direction`, per unit stroke).
+  void FollowPath()
+  {
+    if (!path.empty()) direction = path.Motion(stroke);
+  }
   // Closest point of the surface at the current stroke. Points whose
   // projection falls outside every segment get segment -1.
   Projection Project(const Vec2 &x) const;
