@@ -117,8 +117,7 @@ public:
     PetscCall(PassTools(m, 0, tools.tools));
     std::vector<SurfacePoint> outer;
     PetscCall(GatherOuter(m, outer));
-    tools.tools[kUpper].path = path_.die(); // (-die_path: a path of its own, to move back along before the offset)
-    tools.tools[kUpper].FollowPath();
+    path_.Guide(tools.tools[kUpper]); // (-die_path: a path of its own, to move back along before the offset)
     if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
     tools.tools[kUpper].pad = opt_.die_force > 0;
     for (size_t k = SideDie(); opt_.side_force > 0 && k < tools.tools.size(); ++k) tools.tools[k].pad = true;
@@ -249,10 +248,9 @@ public:
   {
     double force[2], moment;
     PetscFunctionBeginUser;
-    row.stroke = opt_.die_force > 0 ? m.contact->tool(kUpper).stroke
-                 : pass_ == 1       ? stroke_ + ToolStroke(lambda)
-                                    : path_.U(ToolStroke(lambda));
-    if (pass_ == 0) row.die_x = path_.Sideways(ToolStroke(lambda)); // (-die_path)
+    const double s = ToolStroke(lambda);
+    row.stroke = opt_.die_force > 0 ? m.contact->tool(kUpper).stroke : pass_ == 1 ? stroke_ + s : path_.U(s);
+    row.die_x = pass_ == 0 ? path_.Sideways(s) : 0.0; // (-die_path)
     if (unloading_) {
       for (int k = 0; k < 2; ++k) force[k] = (ReleaseEnd() - lambda) * reversed_total_[k];
       moment = (ReleaseEnd() - lambda) * reversed_moment_;
@@ -289,10 +287,8 @@ public:
   std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const override
   {
     std::vector<std::pair<std::string, double>> m = PassMetrics(h);
-    if (opt_.die_force > 0)
-      m.push_back({"final_force_target", opt_.die_force});
-    else
-      m.push_back({"final_stroke_target", stroke_});
+    const bool forced = opt_.die_force > 0;
+    m.push_back({forced ? "final_force_target" : "final_stroke_target", forced ? opt_.die_force : stroke_});
     if (stroke2_ > 0) m.push_back({"pass2_stroke_target", stroke2_});
     return m;
   }

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <vector>
 
-#include "tubeform/tool/path.hpp"
+#include "tubeform/tool/tool.hpp"
 
 namespace tf {
 
@@ -30,7 +30,12 @@ public:
     at_ = {0.0, die.end()};
     travel_ = die.end();
   }
-  const ToolPath &die() const { return die_; }
+  // The die that follows it (the upper one) takes the path, moving along its first piece.
+  void Guide(Tool &die) const
+  {
+    die.path = die_;
+    die.FollowPath();
+  }
   // The press's U at stroke s (the die's own path: half its depth, -y / 2) and the die's sideways displacement.
   double U(double s) const { return die_.empty() ? s : -0.5 * die_.At(s)[1]; }
   double Sideways(double s) const { return die_.empty() ? 0.0 : die_.At(s)[0]; }
