@@ -146,4 +146,20 @@ PetscErrorCode ContactSet::NormalForceMismatch(Vec f_net, double &mismatch) cons
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode ContactSet::NormalSpread(double &spread) const
+{
+  double a[3] = {0, 0, 0}, g[3];
+  PetscFunctionBeginUser;
+  for (PetscInt node : candidates_) {
+    if (!contact_[node] || !mesh_->node_owned[node]) continue;
+    // (from the node's tool where it is now: the set's frames are those of the last commit, none before the first)
+    const Vec2 n = tools_[tool_of_[node]].Project(Position(node)).n;
+    a[0] += n[0] * n[0], a[1] += n[0] * n[1], a[2] += n[1] * n[1];
+  }
+  PetscCall(MPIU_Allreduce(a, g, 3, MPIU_REAL, MPIU_SUM, comm()));
+  const double trace = g[0] + g[2], root = std::sqrt(std::max(0.0, 0.25 * (g[0] - g[2]) * (g[0] - g[2]) + g[1] * g[1]));
+  spread = trace > 0 ? std::max(0.0, 0.5 * trace - root) / (0.5 * trace + root) : 0.0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace tf

@@ -202,10 +202,8 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
   // The rotation hold: the full model; one extra unknown in a solve (scenes/hold.hpp).
   PetscCheck(std::isfinite(opt.die_offset), comm, PETSC_ERR_USER_INPUT, "-die_offset %g: give a number of mm",
              opt.die_offset);
-  PetscCheck(opt.die_offset == 0 || (opt.scene == "squaring" && opt.pass2_stroke == 0), comm, PETSC_ERR_USER_INPUT,
-             "-die_offset %g: the squaring scene's die, in one pass (a plate off the axis is the same plate; a "
-             "second pass after it is not available)",
-             opt.die_offset);
+  PetscCheck(opt.die_offset == 0 || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
+             "-die_offset %g: the squaring scene's die (a plate off the axis is the same plate)", opt.die_offset);
   char off_axis[64] = "-die_path"; // (what puts the die off the axis, named in the errors)
   if (opt.die_offset != 0) std::snprintf(off_axis, sizeof off_axis, "-die_offset %g", opt.die_offset);
   PetscCheck(!DieOffAxis(opt) || FullModel(opt), comm, PETSC_ERR_USER_INPUT,

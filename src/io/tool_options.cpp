@@ -43,8 +43,8 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                       "(N/mm) over the press, its stroke an unknown of each increment (0: the stroke -stroke)",
                       opt.die_force));
   PetscCall(read.Real(PetscOptionsObject, "-die_offset",
-                      "squaring: the first pass's upper die moved off the y axis by this along x (mm; one pass, the "
-                      "full model, held by the rotation hold; docs/dies.md)",
+                      "squaring: the first pass's upper die moved off the y axis by this along x (mm; the full model, "
+                      "held by the rotation hold, a second pass after it too; docs/dies.md)",
                       opt.die_offset));
   PetscCall(RealList(PetscOptionsObject, read, "-die_path",
                      "squaring: the upper die's path: x,y points (mm, from where it starts) in turn at the punch "
@@ -56,7 +56,7 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "
                "on its inner nodes there holds its rotation alone, the dies its slide; docs/dies.md), auto "
                "(rotation where the pins would hold the tube's slide against the dies: with -die_offset or a sideways "
-               "-die_path, and in a "
+               "-die_path and a second pass after it, and in a "
                "quarter-turned second pass after a first pass not mirrored top to bottom, and in one turned by "
                "another angle; else pins)",
                {"auto", "pins", "rotation"}, opt.full_hold));

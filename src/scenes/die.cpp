@@ -256,4 +256,25 @@ PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, dou
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode WarnUntouched(MPI_Comm comm, const ContactSet &contact, const char *pass, double stroke)
+{
+  PetscInt touching;
+  PetscFunctionBeginUser;
+  PetscCall(contact.Count(touching));
+  if (touching == 0)
+    PetscCall(PetscPrintf(comm,
+                          "tubeform: warning: the %s pass's dies never touched the tube (their stroke %g mm is "
+                          "shorter than the way to it): its shape is the last springback's\n",
+                          pass, stroke));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode NoteCornerRadius(MPI_Comm comm, double stroke, double corner_radius)
+{
+  return PetscPrintf(comm,
+                     "tubeform: stroke %.4f mm gives an outer corner radius of %.4g mm (perimeter-conserving rounded "
+                     "square)\n",
+                     stroke, corner_radius);
+}
+
 } // namespace tf

@@ -49,6 +49,26 @@ PetscErrorCode RotationHold::Missing(double &missing)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode RotationHold::FreeSlide(Model &m, double stroke)
+{
+  double spread;
+  PetscFunctionBeginUser;
+  if (!pins_) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(m.contact->NormalSpread(spread));
+  if (spread <= kSlideHeld) {
+    ++pinned_steps_;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  pins_ = false;
+  m.contact->SetSymmetry({}); // (the pins' nodes slide with the tube)
+  if (pinned_steps_ > 0 && !m.quiet)
+    PetscCall(PetscPrintf(m.comm,
+                          "tubeform: the dies hold the tube's slide from U = %.4g mm: the rotation hold takes over "
+                          "from the pins\n",
+                          stroke));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 std::string RotationHold::Stalled(double slope) const
 {
   if (slope != 0) return ""; // (negative: the tube's sway is unstable; the equilibrium is still the answer)

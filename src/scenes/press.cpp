@@ -9,16 +9,11 @@
 //   reverse  (the paper): every point elastic, the contact forces at the end
 //            of loading applied reversed as nodal loads, tools removed;
 //   withdraw: the tool moves back and releases the nodes one by one (r5).
-// With -pass2_stroke, a second pass after the paper's unloading: lambda in
-// [2, 3] presses the second pass's dies (-pass2_die_profile, -pass2_lower_die)
-// from their start, lambda in [3, 4] springs back again; -pass2_turn turns the
-// tube by quarter turns before it (its dies drawn turned the other way, its
-// metrics and tool forces in its press's frame: die.hpp, PassTurn).
-// With -die_force the upper die is force-controlled: its punch load rises
-// from 0 to the force over the press, and its stroke is the outcome.
-// -side_die adds dies at the tube's sides (-pass2_side_die: the second
-// pass's), moving by the stroke or, with -side_force, pressing with a force
-// their travel follows from (die.hpp, AddSideDies).
+// With -pass2_stroke, a second pass after the paper's unloading: lambda in [2, 3] presses its dies from their
+// start, [3, 4] springs back; -pass2_turn turns the tube before it (its dies drawn turned the other way, its
+// metrics and forces in its press's frame: die.hpp, PassTurn). -die_force presses by a force (the stroke its
+// outcome), -side_die adds dies at the sides, -die_offset and -die_path move the die off the axis (the full
+// model under the rotation hold, hold.hpp); docs/dies.md.
 // History: stroke = tool stroke U (mm; half the dies' closing; over two passes
 // the sum, the second pass's die at stroke - U1), load = punch load on the
 // full tube (N/mm), the upper die's vertical force on the model: twice it in
@@ -126,6 +121,7 @@ public:
       PetscCall(MarkAxisPins(m, PassMap(pass).Inverse()));
       if (held_[pass]) PetscCall(hold_.Mark(m, PassMap(pass).Inverse()));
     }
+    hold_.PinSlide(held_[0]);
     tools.symmetry = Symmetry();
     // Default VCRI: 2 % of the mean distance between the outer surface's nodes
     // (of the mesh actually used: generated or read from a file).
@@ -138,10 +134,7 @@ public:
     spec_ = tools; // the second pass's set: the same nodes, supports and law
     spec_.tools.clear();
     if (opt_.stroke_corner_radius > 0 && !m.quiet)
-      PetscCall(PetscPrintf(m.comm,
-                            "tubeform: stroke %.4f mm gives an outer corner radius of %.4g mm (perimeter-conserving "
-                            "rounded square)\n",
-                            stroke_, opt_.stroke_corner_radius));
+      PetscCall(NoteCornerRadius(m.comm, stroke_, opt_.stroke_corner_radius));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
@@ -164,6 +157,7 @@ public:
       m.body.SetPlasticAgain();
       pass_ = 1;
       ContactSpec spec = spec_;
+      hold_.PinSlide(held_[1]);
       PetscCall(SecondPass(m, spec.tools, spec.symmetry));
       if (pinned_) PetscCall(ChoosePin(m));
       m.contact->Setup(m.mesh, m.system, m.body.position(), spec);
@@ -171,19 +165,13 @@ public:
       PetscCall(m.contact->Initialize());
       PetscFunctionReturn(PETSC_SUCCESS);
     }
-    // A press that ended without touching the tube (a stroke shorter than the way to it).
-    PetscInt touching;
-    PetscCall(m.contact->Count(touching));
-    if (touching == 0 && !m.quiet)
-      PetscCall(PetscPrintf(m.comm,
-                            "tubeform: warning: the %s pass's dies never touched the tube (their stroke %g mm is "
-                            "shorter than the way to it): its shape is the last springback's\n",
-                            pass_ == 1 ? "second" : "first", pass_ == 1 ? stroke2_ : stroke_));
+    if (!m.quiet)
+      PetscCall(WarnUntouched(m.comm, *m.contact, pass_ == 1 ? "second" : "first", pass_ == 1 ? stroke2_ : stroke_));
     // The paper's unloading: contact forces become loads, tools go, all elastic.
     if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
     PetscCall(VecZeroEntries(reversed_));
     PetscCall(m.contact->AddContactForces(reversed_));
-    if (held_[pass_]) PetscCall(hold_.AddForces(m, reversed_)); // (its couple falls with them)
+    if (held_[pass_] && !hold_.pins()) PetscCall(hold_.AddForces(m, reversed_)); // (its couple falls with them)
     PetscCall(m.contact->TotalForce(kUpper, reversed_total_, &reversed_moment_));
     m.contact->Remove();
     m.system.ClearFrames();
@@ -193,10 +181,12 @@ public:
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
-  PetscErrorCode BeginIncrement(Model &m, double) override
+  PetscErrorCode BeginIncrement(Model &m, double lambda) override
   {
-    TurnedSupportFrames(m, AxisHeld(), held_[pass_] && !unloading_, unloading_ || !held_[pass_], pinned_ ? pin_ : -1);
-    return 0;
+    PetscFunctionBeginUser;
+    if (held_[pass_] && !unloading_) PetscCall(hold_.FreeSlide(m, Stroke(m, lambda))); // (scenes/hold.hpp)
+    TurnedSupportFrames(m, AxisHeld(), Holding(), !Holding(), pinned_ ? pin_ : -1);
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
 
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
@@ -217,7 +207,7 @@ public:
     // (inside the increment: its failure writes the results so far)
     if (opt_.die_force > 0 && m.contact->active())
       PetscCall(CheckForceReach(m.comm, opt_, squaring_, m.contact->tool(kUpper).stroke));
-    if (held_[pass_] && !unloading_)
+    if (Holding())
       PetscCall(hold_.Constrain(m, AxisHeld())); // (scenes/hold.hpp; released, the pins hold the tube)
     else if (full_)
       PetscCall(HoldAlong(m, "axis", AxisHeld()[0], AxisHeld()[1])); // (the pins: scenes/pins.cpp)
@@ -248,9 +238,8 @@ public:
   {
     double force[2], moment;
     PetscFunctionBeginUser;
-    const double s = ToolStroke(lambda);
-    row.stroke = opt_.die_force > 0 ? m.contact->tool(kUpper).stroke : pass_ == 1 ? stroke_ + s : path_.U(s);
-    row.die_x = pass_ == 0 ? path_.Sideways(s) : 0.0; // (-die_path)
+    row.stroke = Stroke(m, lambda);
+    row.die_x = pass_ == 0 ? path_.Sideways(ToolStroke(lambda)) : 0.0; // (-die_path)
     if (unloading_) {
       for (int k = 0; k < 2; ++k) force[k] = (ReleaseEnd() - lambda) * reversed_total_[k];
       moment = (ReleaseEnd() - lambda) * reversed_moment_;
@@ -275,7 +264,7 @@ public:
       row.lower_fx = -f[0], row.lower_fy = -f[1], row.lower_moment = -Press().det() * moment;
     }
     hold_.SeeLoad(row.load); // (the warning's floor: the largest load so far)
-    if (held_[pass_] && !unloading_) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
+    if (Holding()) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
     if (held_[pass_] && unloading_) // (what the springback's pins carry; scenes/hold.hpp)
       PetscCall(hold_.SupportMoment(m, f_int, reversed_, ReleaseEnd() - lambda, pinned_ ? pin_ : -1, row.hold_moment));
     PetscCall(OuterExtents(m, row, Part(), Press()));
@@ -408,6 +397,14 @@ private:
   }
 
   TurnMap PassMap(int pass) const { return PassTurn(opt_, pass, half_, full_); }
+  // The history's U at lambda: the force-controlled die's own, the second pass's after the first's, -die_path's.
+  double Stroke(Model &m, double lambda) const
+  {
+    const double s = ToolStroke(lambda);
+    return opt_.die_force > 0 ? m.contact->tool(kUpper).stroke : pass_ == 1 ? stroke_ + s : path_.U(s);
+  }
+  // The rotation hold holds the pass in place (its pins the slide until the dies do; scenes/hold.hpp).
+  bool Holding() const { return held_[pass_] && !unloading_ && !hold_.pins(); }
   // The tube's coordinates into the frame of the press in place (its die moving along -y).
   TurnMap Press() const { return PassMap(pass_).Inverse(); }
   // The full model's pins hold the tube along the press's x.
@@ -416,7 +413,7 @@ private:
   // between both dies is mirrored about the y axis only), the full model's pins (the rotation hold's: inner nodes).
   std::vector<std::pair<std::string, Vec2>> Symmetry() const
   {
-    if (full_ && held_[pass_]) return {};
+    if (full_ && held_[pass_] && !hold_.pins()) return {};
     if (full_) return {{"axis", AxisHeld()}};
     if (half_) return {{"x0", {1, 0}}};
     return {{"x0", {1, 0}}, {"y0", {0, 1}}};

@@ -195,6 +195,10 @@ public:
   // Collective: the largest moment about c the contact nodes' friction could put on the body, each sliding along
   // its tool with mu |f_n| (N mm/mm; the rotation hold's yardstick, scenes/hold.hpp).
   PetscErrorCode FrictionMoment(const Vec2 &c, double &capacity) const;
+  // Collective: how far the contact nodes' normals spread over the plane: the smallest over the largest
+  // eigenvalue of the sum of n n^T over them, tan^2 of half the angle between two normals; 0 when all are
+  // parallel (or none touches): the body then slides along them against friction alone.
+  PetscErrorCode NormalSpread(double &spread) const;
   // Collective: sum over contact nodes of the normal force f_n.
   PetscErrorCode NormalForceSum(double &sum) const;
   // Collective: largest penetration (>= 0) of a candidate node into the tool (mm)

@@ -214,13 +214,14 @@ inline bool FullModel(const Options &opt)
 }
 // A pass (0, 1) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked, or
 // (auto) where the pins would hold the tube's slide against the dies: the first pass with a die off the axis; a
-// second pass turned by a quarter turn after a first one not symmetric about the press's x axis (a lower die
-// that does not mirror the upper one), or by an angle that is no quarter turn.
+// second pass after it, turned by a quarter turn after a first one not symmetric about the press's x axis (a
+// lower die that does not mirror the upper one), or by an angle that is no quarter turn.
 inline bool HeldByRotation(const Options &opt, int pass)
 {
   const bool first_mirrored = opt.lower_die == "mirror" && opt.lower_die_motion == "mirror";
-  const bool off_axis =
-    pass == 0 ? DieOffAxis(opt) : !QuarterTurn(opt) || (Pass2Quarters(opt) % 2 != 0 && !first_mirrored);
+  const bool off_axis = pass == 0
+                          ? DieOffAxis(opt)
+                          : !QuarterTurn(opt) || DieOffAxis(opt) || (Pass2Quarters(opt) % 2 != 0 && !first_mirrored);
   return FullModel(opt) && (opt.full_hold == "rotation" || (opt.full_hold == "auto" && off_axis));
 }
 } // namespace tf

@@ -73,6 +73,11 @@ PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, dou
 // Collective: CheckDieReach for a press's passes: the first pass's deepest stroke (-stroke, or -stroke_path's; not
 // with -die_force, whose stroke is its outcome) and the second's.
 PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring, double deepest);
+// Collective: a warning if the `pass` ("first", "second") pass's dies, at its end (stroke mm), touch nothing: its
+// stroke was shorter than the way to the tube.
+PetscErrorCode WarnUntouched(MPI_Comm comm, const ContactSet &contact, const char *pass, double stroke);
+// Collective: the note of the paper's stroke rule (-stroke_corner_radius): the stroke a corner radius gives.
+PetscErrorCode NoteCornerRadius(MPI_Comm comm, double stroke, double corner_radius);
 // The first stroke CheckDieReach refuses (the dies closing on the tube, their parting faces meeting, the ring's
 // walls meeting); kNever where there is no closed form (a profile, another lower die).
 double DieReach(const Options &o, bool squaring);
