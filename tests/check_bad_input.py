@@ -97,6 +97,8 @@ cases = [
     (["-scene", "squaring", "-die_path", "0,-1"], "give -lower_die_motion fixed"),
     (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1", "-stroke_path", "1,2"],
      "-die_path: in place of -stroke"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1", "-die_offset", "0.5"],
+     "a path sideways is its own offset"),
     (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0.5,-1", "-model", "half"],
      "-die_path: a die off the axis"),
     (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0.5,-1", "-full_hold", "pins"],
@@ -171,7 +173,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 107 and len(selected) == 5, f"{len(cases)} cases on 1 rank (107), {len(selected)} on 2 (5)")
+k.check(len(cases) == 108 and len(selected) == 5, f"{len(cases)} cases on 1 rank (108), {len(selected)} on 2 (5)")
 
 
 def attempt(np_, extra):

@@ -173,10 +173,11 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
                "-die_path: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion "
                "fixed");
     PetscCheck(opt.stroke_path.empty() && opt.die_force == 0 && opt.stroke_corner_radius <= 0 &&
-                 opt.pass2_stroke == 0 && opt.side_die == "none" && opt.unload != "withdraw",
+                 opt.pass2_stroke == 0 && opt.side_die == "none" && opt.unload != "withdraw" && opt.die_offset == 0,
                comm, PETSC_ERR_USER_INPUT,
                "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, -die_force, "
-               "-stroke_corner_radius, -pass2_stroke, -side_die or -unload withdraw");
+               "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways "
+               "is its own offset)");
     opt.stroke = -0.5 * at[1];
   }
   const int quarters = Pass2Quarters(opt);

@@ -47,9 +47,10 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                       "held by the rotation hold, a second pass after it too; docs/dies.md)",
                       opt.die_offset));
   PetscCall(RealList(PetscOptionsObject, read, "-die_path",
-                     "squaring: the upper die's path: x,y points (mm, from where it starts) in turn at the punch "
-                     "speed, the lower die staying (-lower_die_motion fixed); in place of -stroke (U = -y / 2), one "
-                     "pass; a sideways motion takes the full model and the rotation hold (docs/dies.md)",
+                     "squaring: the upper die's path: x,y points (mm, from where it starts) in turn, at twice the "
+                     "punch speed along it, the lower die staying (-lower_die_motion fixed); in place of -stroke "
+                     "(U = -y / 2), one pass; a sideways motion takes the full model and the rotation hold "
+                     "(docs/dies.md)",
                      2 * kMaxPathPoints, opt.die_path));
   PetscCall(
     ChooseWord(PetscOptionsObject, read, "-full_hold",

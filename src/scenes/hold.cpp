@@ -22,10 +22,11 @@ PetscErrorCode RotationHold::Constrain(Model &m, const Vec2 &along)
 {
   PetscFunctionBeginUser;
   m_ = &m, along_ = along;
+  // (fixed while they hold the slide too: no unknown, the nodes carry a force with the couple)
   for (PetscInt n : m.mesh.node_sets["hold"])
-    PetscCheck(m.system.PrescribeAlong(n, along[0], along[1], 0.0, 1.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    PetscCheck(m.system.PrescribeAlong(n, along[0], along[1], 0.0, pins_ ? 0.0 : 1.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "the rotation hold's node is not along a node frame axis");
-  m.system.SetExtraUnknown(this);
+  if (!pins_) m.system.SetExtraUnknown(this);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -60,12 +61,9 @@ PetscErrorCode RotationHold::FreeSlide(Model &m, double stroke)
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   pins_ = false;
-  m.contact->SetSymmetry({}); // (the pins' nodes slide with the tube)
   if (pinned_steps_ > 0 && !m.quiet)
-    PetscCall(PetscPrintf(m.comm,
-                          "tubeform: the dies hold the tube's slide from U = %.4g mm: the rotation hold takes over "
-                          "from the pins\n",
-                          stroke));
+    PetscCall(PetscPrintf(
+      m.comm, "tubeform: the dies hold the tube's slide from U = %.4g mm: the rotation hold lets it go\n", stroke));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

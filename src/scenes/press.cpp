@@ -171,7 +171,7 @@ public:
     if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
     PetscCall(VecZeroEntries(reversed_));
     PetscCall(m.contact->AddContactForces(reversed_));
-    if (held_[pass_] && !hold_.pins()) PetscCall(hold_.AddForces(m, reversed_)); // (its couple falls with them)
+    if (held_[pass_]) PetscCall(hold_.AddForces(m, reversed_)); // (its couple falls with them)
     PetscCall(m.contact->TotalForce(kUpper, reversed_total_, &reversed_moment_));
     m.contact->Remove();
     m.system.ClearFrames();
@@ -264,7 +264,7 @@ public:
       row.lower_fx = -f[0], row.lower_fy = -f[1], row.lower_moment = -Press().det() * moment;
     }
     hold_.SeeLoad(row.load); // (the warning's floor: the largest load so far)
-    if (Holding()) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
+    if (Holding() && !hold_.pins()) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
     if (held_[pass_] && unloading_) // (what the springback's pins carry; scenes/hold.hpp)
       PetscCall(hold_.SupportMoment(m, f_int, reversed_, ReleaseEnd() - lambda, pinned_ ? pin_ : -1, row.hold_moment));
     PetscCall(OuterExtents(m, row, Part(), Press()));
@@ -403,8 +403,8 @@ private:
     const double s = ToolStroke(lambda);
     return opt_.die_force > 0 ? m.contact->tool(kUpper).stroke : pass_ == 1 ? stroke_ + s : path_.U(s);
   }
-  // The rotation hold holds the pass in place (its pins the slide until the dies do; scenes/hold.hpp).
-  bool Holding() const { return held_[pass_] && !unloading_ && !hold_.pins(); }
+  // The rotation hold holds the pass in place (its nodes fixed, holding the slide too, until the dies hold it).
+  bool Holding() const { return held_[pass_] && !unloading_; }
   // The tube's coordinates into the frame of the press in place (its die moving along -y).
   TurnMap Press() const { return PassMap(pass_).Inverse(); }
   // The full model's pins hold the tube along the press's x.
@@ -413,7 +413,7 @@ private:
   // between both dies is mirrored about the y axis only), the full model's pins (the rotation hold's: inner nodes).
   std::vector<std::pair<std::string, Vec2>> Symmetry() const
   {
-    if (full_ && held_[pass_] && !hold_.pins()) return {};
+    if (full_ && held_[pass_]) return {};
     if (full_) return {{"axis", AxisHeld()}};
     if (half_) return {{"x0", {1, 0}}};
     return {{"x0", {1, 0}}, {"y0", {0, 1}}};

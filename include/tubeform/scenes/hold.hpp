@@ -43,17 +43,18 @@ public:
   // Collective: the couple and the friction's largest into the history (`det`: the press's frame's determinant,
   // the row's load and stroke already in), and a warning the first time friction may not carry it.
   PetscErrorCode Measure(Model &m, Vec f_int, double det, double ro, HistoryRow &row);
-  // The tube's slide at a pass's start: the pins hold it with the rotation (`pinned`: a pass the hold holds)
-  // until FreeSlide finds the dies holding it, and the hold takes over. Before, contacts whose normals are
-  // parallel (a flank of each die facing the other's, on a tube the last pass left off its axis) leave the slide
-  // along them to friction alone, whose stiffness mu f_n / vcri vanishes with the first touches' forces: r6 then
-  // cuts the steps to a crawl (3,342 stick-limited increments at 1e-6 mm of the stroke each, in the second pass
-  // after an off-axis one) while round-off sways the tube back and forth.
+  // The tube's slide at a pass's start: the hold's nodes are fixed along the press's x (`pinned`: a pass the
+  // hold holds), holding the slide with the rotation, until FreeSlide finds the dies holding it; then they move
+  // by the unknown. Before, contacts whose normals are parallel (a flank of each die facing the other's, on a tube
+  // the last pass left off its axis) leave the slide along them to friction alone, whose stiffness mu f_n / vcri
+  // vanishes with the first touches' forces: r6 then cuts the steps to a crawl (3,342 stick-limited increments
+  // at 1e-6 mm of the stroke each, in the second pass after an off-axis one) while round-off sways the tube back
+  // and forth. The hold's nodes are inner ones, never in contact, with frames along the press (any turn).
   void PinSlide(bool pinned) { pins_ = pinned, pinned_steps_ = 0; }
   bool pins() const { return pins_; }
   // Collective, before an increment: the dies hold the slide once their contacts' normals spread over the plane
-  // (ContactSet::NormalSpread above kSlideHeld); then the pins go (the contact set keeps no held direction) and,
-  // after a pinned increment, a line says from which stroke U.
+  // (ContactSet::NormalSpread above kSlideHeld); then the nodes go free along x and, after a pinned increment, a
+  // line says from which stroke U.
   PetscErrorCode FreeSlide(Model &m, double stroke);
   // Every history row's load: the warning's floor follows the largest so far.
   void SeeLoad(double load) { largest_load_ = std::max(largest_load_, std::abs(load)); }
@@ -79,8 +80,8 @@ private:
   // Normals this far apart hold a slide by their forces: tan^2 of half of 11.4 degrees (NormalSpread), well clear
   // of the round-off spread of parallel flanks and far below a V-die's two flanks (1 at 90 degrees).
   static constexpr double kSlideHeld = 1e-2;
-  bool pins_ = false;         // the pins hold the slide (PinSlide)
-  PetscInt pinned_steps_ = 0; // increments of the pass so far with the pins holding the slide
+  bool pins_ = false;         // the nodes hold the slide too (PinSlide)
+  PetscInt pinned_steps_ = 0; // increments of the pass so far with the nodes holding the slide
   double largest_load_ = 0;
   Model *m_ = nullptr;
   Vec2 along_{1, 0};
