@@ -58,14 +58,11 @@ PetscErrorCode MarkAxisPins(Model &m, const TurnMap &press, const char *surface,
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-void TurnedSupportFrames(Model &m, const Vec2 &axis, bool hold, bool pins, PetscInt pin)
+void TurnedSupportFrames(Model &m, const Vec2 &axis, bool hold, PetscInt pin)
 {
   if (axis[0] == 0 || axis[1] == 0) return;
   const double angle = std::atan2(axis[1], axis[0]);
-  for (PetscInt n : m.mesh.node_sets["hold"])
-    if (hold) m.system.SetFrame(n, angle);
-  for (PetscInt n : m.mesh.node_sets["axis"])
-    if (pins) m.system.SetFrame(n, angle);
+  for (PetscInt n : m.mesh.node_sets[hold ? "hold" : "axis"]) m.system.SetFrame(n, angle);
   if (pin >= 0) m.system.SetFrame(pin, angle);
 }
 

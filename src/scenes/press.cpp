@@ -184,8 +184,8 @@ public:
   PetscErrorCode BeginIncrement(Model &m, double lambda) override
   {
     PetscFunctionBeginUser;
-    if (held_[pass_] && !unloading_) PetscCall(hold_.FreeSlide(m, Stroke(m, lambda))); // (scenes/hold.hpp)
-    TurnedSupportFrames(m, AxisHeld(), Holding(), !Holding(), pinned_ ? pin_ : -1);
+    if (Holding() && hold_.pins()) PetscCall(hold_.FreeSlide(m, Stroke(m, lambda))); // (scenes/hold.hpp)
+    TurnedSupportFrames(m, AxisHeld(), Holding(), pinned_ ? pin_ : -1);
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 

@@ -5,6 +5,7 @@
 // increment ends (Scene's LoadPath::kinks). Pure geometry.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
