@@ -50,6 +50,14 @@
         that also ended the increment before, at most 0.01 of its r_min (a
         touch the step before left just past its end, docs/accuracy.md,
         "Where the time went").
+
+    /usr/bin/python3 scripts/history_stats.py die F.h5 [F.h5 ...]
+        A -die_path press (docs/dies.md): U, load, die_x and die_turn at the
+        path's points (the loading's rows where the die's motion turns), the
+        largest sideways force, die moment (about its pivot) and hold couple,
+        the die's sideways work and its turn's work (tool_fx over die_x,
+        tool_moment over die_turn) and their shares of the work put in, and
+        the largest |energy_error| from U = 0.1 mm.
 """
 import sys
 
@@ -172,6 +180,25 @@ def limiters(paths):
               f"{H['friction_iters'][1:].mean():.1f} solves per increment; {follow} touch follow-ups")
 
 
+def die(paths):
+    for path in paths:
+        H = loading(path)
+        U, x, t, load = H["stroke"], H["die_x"], H["die_turn"], H["load"]
+        motion = np.stack([np.diff(U), np.diff(x), np.diff(t)], axis=1)
+        unit = motion / np.maximum(np.linalg.norm(motion, axis=1), 1e-300)[:, None]
+        turns = [i for i in range(1, len(unit)) if np.abs(unit[i] - unit[i - 1]).max() > 1e-6] + [len(U) - 1]
+        print(f"{path}: at the path's points (U, load, die_x, die_turn): " +
+              "; ".join(f"{U[i]:.4g} mm, {load[i]:.2f} N/mm, {x[i]:.4g} mm, {t[i]:.4g} deg" for i in turns))
+        side = -np.sum(0.5 * (H["tool_fx"][1:] + H["tool_fx"][:-1]) * np.diff(x))
+        turn = -np.sum(0.5 * (H["tool_moment"][1:] + H["tool_moment"][:-1]) * np.radians(np.diff(t)))
+        put = H["w_ext"][-1]
+        late = U >= 0.1
+        print(f"  largest |tool_fx| {np.abs(H['tool_fx']).max():.2f} N/mm, |tool_moment| "
+              f"{np.abs(H['tool_moment']).max():.1f} N mm/mm, |hold_moment| {np.abs(H['hold_moment']).max():.1f} "
+              f"N mm/mm; sideways work {side:.3g} ({side / put:.1%}), the turn's {turn:.3g} ({turn / put:.1%}) of "
+              f"{put:.4g} N mm/mm put in; energy balance within {np.abs(H['energy_error'][late]).max():.1e}")
+
+
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "compare":
         compare(sys.argv[2], sys.argv[3])
@@ -187,5 +214,7 @@ if __name__ == "__main__":
         metrics(sys.argv[2:])
     elif len(sys.argv) >= 3 and sys.argv[1] == "limiters":
         limiters(sys.argv[2:])
+    elif len(sys.argv) >= 3 and sys.argv[1] == "die":
+        die(sys.argv[2:])
     else:
         raise SystemExit(__doc__)

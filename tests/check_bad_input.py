@@ -103,6 +103,17 @@ cases = [
      "-die_path: a die off the axis"),
     (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0.5,-1", "-full_hold", "pins"],
      "-die_path with -full_hold pins"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1,0,-2", "-die_path_turn", "5"],
+     "-die_path_turn: 1 angles for 2 -die_path points"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1", "-die_path_turn", "100"],
+     "each turn must be a number of degrees within"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1,0,-1", "-die_path_turn", "2,2"],
+     "or turned otherwise (-die_path_turn)"),
+    (["-scene", "squaring", "-die_pivot", "0,20"], "-die_path_turn and -die_pivot: the turns along a -die_path"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1", "-die_pivot", "1"],
+     "-die_pivot: one point x,y"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1", "-die_path_turn", "3", "-model",
+      "half"], "-die_path: a die off the axis"),
     (["-scene", "flattening", "-model", "full", "-full_hold", "rotation"], "plates do not hold"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_die", out("none.profile")],
      f"-pass2_side_die {out('none.profile')}: cannot read"),
@@ -173,7 +184,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 108 and len(selected) == 5, f"{len(cases)} cases on 1 rank (108), {len(selected)} on 2 (5)")
+k.check(len(cases) == 114 and len(selected) == 5, f"{len(cases)} cases on 1 rank (114), {len(selected)} on 2 (5)")
 
 
 def attempt(np_, extra):

@@ -36,6 +36,7 @@ F. A checkpoint inside the sideways piece, continued: the history within 1e-12 (
 import h5py
 import numpy as np
 
+from die_press import at_rows, balance
 from tfcheck import Checks, args, out, run, run_all
 
 tf, mpirun, src = args()
@@ -103,20 +104,10 @@ k.check(err <= 5e-3 and share > 5e-3, f"C. energy balance from U = 0.1 mm within
 
 
 # D. Equilibrium.
-def balance(t, label):
-    p, U = t["stage"] == 0, t["stroke"]
-    bound = (t["n_contact"] * (t["residual"] + t["fn_mismatch"]))[p]
-    force = np.abs(t["tool_fx"] + t["lower_fx"])[p]
-    dies = t["tool_moment"] + t["die_x"] * t["tool_fy"] + 2 * U * t["tool_fx"] + t["lower_moment"]
-    moment = np.abs(dies - t["hold_moment"])[p]
-    f, mo = np.max(force / np.maximum(bound, 1e-300)), np.max(moment / np.maximum(RO * bound, 1e-300))
+for t, label in ((r, "1 rank"), (h["right_np2"], "2 ranks")):
+    f, mo, hold = balance(t, RO)
     k.check(f <= 1 and mo <= 1, f"D. {label}: no net force on the hold ({f:.2g} of its bound) and the dies' moment "
-            f"about the centre the hold's couple (largest {np.abs(t['hold_moment'][p]).max():.0f} N mm/mm; "
-            f"{mo:.2g} of its bound)")
-
-
-balance(r, "1 rank")
-balance(h["right_np2"], "2 ranks")
+            f"about the centre the hold's couple (largest {hold:.0f} N mm/mm; {mo:.2g} of its bound)")
 
 
 # E. Mirror and ranks, at the path's turns, its end and the springback's.
@@ -127,17 +118,8 @@ def marks(t):
     return [first, side, np.where(p)[0][-1], len(p) - 1]
 
 
-def at_marks(a, b, sign):
-    load = np.abs(a["load"]).max()
-    scales = {"load": (1, load), "x_max": (1, RO), "y_max": (1, RO), "w_int": (1, np.abs(a["w_int"]).max()),
-              "tool_fx": (sign, load), "lower_fx": (sign, load), "hold_moment": (sign, load * RO)}
-    d = {c: max(abs(a[c][i] - s * b[c][j]) / v for i, j in zip(marks(a), marks(b))) for c, (s, v) in scales.items()}
-    c = max(d, key=d.get)
-    return d[c], c
-
-
 for name, sign, label in (("left", -1, "the path mirrored is the mirror image"), ("right_np2", 1, "2 ranks")):
-    w, c = at_marks(r, h[name], sign)
+    w, c = at_rows(r, h[name], marks(r), marks(h[name]), sign, RO)
     k.check(w <= 1e-3, f"E. {label}: within {w:.1e} ({c}; 1e-3)")
 
 # F. A restart inside the sideways piece.

@@ -15,7 +15,10 @@
 //    released them, 2P in all over five nodes, so the largest is at least
 //    2P/5 and the squaring test's check (tension <= 1e-6 of the load) fails
 //    on it. Before issue 9 the tension column was measured after the
-//    releases and read 0 on such a state.
+//    releases and read 0 on such a state;
+//  - a turning floor (spin 1 rad per unit stroke) cuts a step of 0.1 to its
+//    turn bound turn_max = 1e-2 rad: r = 0.1 exactly, by the tool's r3
+//    (Limiter::Rotation, no node: -1); the press itself sets no limit.
 #include <petscsys.h>
 
 #include <memory>
@@ -40,7 +43,7 @@ struct Block {
   ~Block() { (void)VecDestroy(&du); }
 };
 
-PetscErrorCode Build(MPI_Comm comm, std::unique_ptr<Block> &b)
+PetscErrorCode Build(MPI_Comm comm, std::unique_ptr<Block> &b, double spin = 0)
 {
   PetscMPIInt rank;
   SerialMesh serial;
@@ -56,6 +59,7 @@ PetscErrorCode Build(MPI_Comm comm, std::unique_ptr<Block> &b)
   PetscCall(b->body.Setup(b->mesh, prm));
   ContactSpec spec;
   spec.tools = {BuildFlatPlate(0.0, -10.0, 10.0, true)};
+  spec.tools[0].spin = spin;
   spec.candidates = "bottom";
   b->contact.Setup(b->mesh, b->system, b->body.position(), spec);
   PetscCall(b->contact.Initialize());
@@ -141,6 +145,19 @@ int main(int argc, char **argv)
   CHECK(pulled.tension <= 2 * kP);                  // and no more than all of it: the squaring test's check fails here
   PetscCall(PetscPrintf(comm, "pull committed whole: tension before the release %.4f N/mm (2P = %g in all)\n",
                         pulled.tension, 2 * kP));
+  // A turning tool's step: its turn bounded by turn_max (ContactParams' default 1e-2 rad).
+  {
+    std::unique_ptr<Block> b;
+    StepLimit press, turn;
+    PetscCall(Build(comm, b, 1.0));
+    PetscCall(Solve(*b, -kP, press));
+    CHECK(press.r == kNever);
+    PetscCall(b->contact.LimitStep(b->du, 0.1, turn));
+    CHECK(turn.who == Limiter::Rotation && turn.where == -1);
+    CHECK_NEAR(turn.r, ContactParams{}.turn_max / 0.1, 1e-15);
+    PetscCall(
+      PetscPrintf(comm, "a floor turning 0.1 rad in a step: r = %.15g (%s)\n", turn.r, LimiterName((int)turn.who)));
+  }
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   const int rc = rank == 0 ? ReportChecks("test_contact") : 0;

@@ -18,57 +18,67 @@ using namespace tf;
 int main()
 {
   const double mu = 0.3, vcri = 0.01, fn0 = 50, x0 = 0.002, dU_l = -0.004, kappa = 1.0 / 3;
-  // The force increment the body receives in the l row, as the row sees it:
-  // G(du_l, dfn) = (f_l1 - f_l0) - fn1 kappa dx, with dx = du_l - dU_l, fn1 = fn0 + dfn.
-  const auto g = [&](double du_l, double dfn) {
-    const double dx = du_l - dU_l, fn1 = fn0 + dfn;
-    return -mu * fn1 * friction::Phi(x0 + dx, vcri) + mu * fn0 * friction::Phi(x0, vcri) - fn1 * kappa * dx;
-  };
-  for (double dxk : {0.0, 0.003, -0.02}) {
-    const double dfnk = 7.0, fnk = fn0 + dfnk, du_lk = dxk + dU_l;
-    // The row sees the reaction R_n; the normal force changes by R_n - kappa f_lk dx
-    // (f_lk: the iterate's friction force, fixed within the solve).
-    const double f_lk = -mu * fnk * friction::Phi(x0 + dxk, vcri);
-    const auto g_of_r = [&](double du_l, double r_n) { return g(du_l, r_n - kappa * f_lk * (du_l - dU_l)); };
-    const double rk = dfnk + kappa * f_lk * dxk; // the reaction that gives the normal force change dfnk
-    const friction::RowTerms t = friction::Linearize(mu, vcri, fn0, fnk, x0, dxk, dU_l, kappa);
-    // Row: (K du)_l + coeff R_n + diag du_l = dF_l + rhs, i.e. the linear model of G is
-    // G_lin(du_l, R_n) = rhs - coeff R_n - diag du_l (up to the second-order kappa dfn dx term).
-    const double h = 1e-7;
-    const double dg_du = (g_of_r(du_lk + h, rk) - g_of_r(du_lk - h, rk)) / (2 * h);
-    const double dg_dr = (g_of_r(du_lk, rk + h) - g_of_r(du_lk, rk - h)) / (2 * h);
-    // The dropped second-order term kappa dfn dx contributes kappa dxk (kappa f_lk) to d/du and kappa dxk to d/dR.
-    CHECK_NEAR(-t.diag, dg_du - kappa * dxk * kappa * f_lk, 1e-6 * (1 + std::abs(dg_du)));
-    CHECK_NEAR(-t.row_n_coeff, dg_dr + kappa * dxk, 1e-6);
-    // The linear model matches G at the linearization point.
-    const double glin = t.rhs - t.row_n_coeff * rk - t.diag * du_lk;
-    CHECK_NEAR(glin, g_of_r(du_lk, rk), 1e-9 * fn0);
+  // w: the tool's own turn in the step (a die turning along its path), which turns the frame with kappa dx.
+  for (double w : {0.0, 0.002}) {
+    // The force increment the body receives in the l row, as the row sees it:
+    // G(du_l, dfn) = (f_l1 - f_l0) - fn1 (kappa dx + w), with dx = du_l - dU_l, fn1 = fn0 + dfn.
+    const auto g = [&](double du_l, double dfn) {
+      const double dx = du_l - dU_l, fn1 = fn0 + dfn;
+      return -mu * fn1 * friction::Phi(x0 + dx, vcri) + mu * fn0 * friction::Phi(x0, vcri) - fn1 * (kappa * dx + w);
+    };
+    for (double dxk : {0.0, 0.003, -0.02}) {
+      const double dfnk = 7.0, fnk = fn0 + dfnk, du_lk = dxk + dU_l;
+      // The row sees the reaction R_n; the normal force changes by R_n - f_lk (kappa dx + w)
+      // (f_lk: the iterate's friction force, fixed within the solve).
+      const double f_lk = -mu * fnk * friction::Phi(x0 + dxk, vcri);
+      const auto g_of_r = [&](double du_l, double r_n) { return g(du_l, r_n - f_lk * (kappa * (du_l - dU_l) + w)); };
+      const double rk = dfnk + f_lk * (kappa * dxk + w); // the reaction that gives the normal force change dfnk
+      const friction::RowTerms t = friction::Linearize(mu, vcri, fn0, fnk, x0, dxk, dU_l, kappa, w);
+      // Row: (K du)_l + coeff R_n + diag du_l = dF_l + rhs, i.e. the linear model of G is
+      // G_lin(du_l, R_n) = rhs - coeff R_n - diag du_l (up to the second-order dfn (kappa dx + w) term).
+      const double h = 1e-7;
+      const double dg_du = (g_of_r(du_lk + h, rk) - g_of_r(du_lk - h, rk)) / (2 * h);
+      const double dg_dr = (g_of_r(du_lk, rk + h) - g_of_r(du_lk, rk - h)) / (2 * h);
+      // The dropped second-order term dfn (kappa dx + w) contributes (kappa dxk + w) (kappa f_lk) to d/du and
+      // kappa dxk + w to d/dR.
+      CHECK_NEAR(-t.diag, dg_du - (kappa * dxk + w) * kappa * f_lk, 1e-6 * (1 + std::abs(dg_du)));
+      CHECK_NEAR(-t.row_n_coeff, dg_dr + kappa * dxk + w, 1e-6);
+      // The linear model matches G at the linearization point.
+      const double glin = t.rhs - t.row_n_coeff * rk - t.diag * du_lk;
+      CHECK_NEAR(glin, g_of_r(du_lk, rk), 1e-9 * fn0);
+    }
   }
   // The n-row term's sign from geometry: a contact force f_n n + f_l l carried
   // along an arc of radius rho by a slip s, with f_n and f_l changing linearly
-  // in s. Its change along the start normal is the reaction R_n; NormalIncrement
-  // must return the change of f_n to O(s^2) (without the term: an error kappa f_l s).
-  for (const bool concave : {true, false}) {
-    const double rho = 3.0, th0 = 0.7, fn_0 = 40, fl_0 = -6, a = 900, b = -150, s = 1e-4;
-    const double k = (concave ? 1.0 : -1.0) / rho;
-    const auto frame = [&](double slip, double n[2], double l[2]) {
-      // Concave: n = -e_r, l = e_theta (slip turns theta forward); convex: n = e_r, l = -e_theta.
-      const double th = th0 + (concave ? 1 : -1) * slip / rho, er[2] = {std::cos(th), std::sin(th)};
-      const double et[2] = {-std::sin(th), std::cos(th)}, sn = concave ? -1 : 1;
-      n[0] = sn * er[0], n[1] = sn * er[1], l[0] = -sn * et[0], l[1] = -sn * et[1]; // l = n turned by -90 degrees
-    };
-    double n0[2], l0[2], n1[2], l1[2];
-    frame(0, n0, l0);
-    frame(s, n1, l1);
-    const double fn_s = fn_0 + a * s, fl_s = fl_0 + b * s;
-    const double r_n = (fn_s * n1[0] + fl_s * l1[0] - fn_0 * n0[0] - fl_0 * l0[0]) * n0[0] +
-                       (fn_s * n1[1] + fl_s * l1[1] - fn_0 * n0[1] - fl_0 * l0[1]) * n0[1];
-    // The second-order remainder: the change of f_l times the turn (b s k s) and
-    // the turn's own curvature on both forces ((|f_n| + |f_l|) k^2 s^2 / 2), doubled.
-    const double second = 2 * (std::abs(b * k) + (std::abs(fn_0) + std::abs(fl_0)) * k * k) * s * s;
-    CHECK_NEAR(friction::NormalIncrement(r_n, k, fl_0, s), a * s, second);
-    CHECK(std::abs(r_n - a * s) > 100 * std::abs(friction::NormalIncrement(r_n, k, fl_0, s) - a * s));
-  }
+  // in s, the tool turning by w as well. Its change along the start normal is the reaction R_n; NormalIncrement
+  // must return the change of f_n to O(s^2, w^2) (without the term: an error f_l (kappa s + w)).
+  for (const double w : {0.0, 1e-4})
+    for (const bool concave : {true, false}) {
+      const double rho = 3.0, th0 = 0.7, fn_0 = 40, fl_0 = -6, a = 900, b = -150, s = 1e-4;
+      const double k = (concave ? 1.0 : -1.0) / rho;
+      const auto frame = [&](double slip, double turn, double n[2], double l[2]) {
+        // Concave: n = -e_r, l = e_theta (slip turns theta forward); convex: n = e_r, l = -e_theta; the tool's
+        // turn turns both counter-clockwise.
+        const double th = th0 + (concave ? 1 : -1) * slip / rho + turn, er[2] = {std::cos(th), std::sin(th)};
+        const double et[2] = {-std::sin(th), std::cos(th)}, sn = concave ? -1 : 1;
+        n[0] = sn * er[0], n[1] = sn * er[1], l[0] = -sn * et[0], l[1] = -sn * et[1]; // l = n turned by -90 degrees
+      };
+      double n0[2], l0[2], n1[2], l1[2];
+      frame(0, 0, n0, l0);
+      frame(s, w, n1, l1);
+      const double fn_s = fn_0 + a * s, fl_s = fl_0 + b * s;
+      const double r_n = (fn_s * n1[0] + fl_s * l1[0] - fn_0 * n0[0] - fl_0 * l0[0]) * n0[0] +
+                         (fn_s * n1[1] + fl_s * l1[1] - fn_0 * n0[1] - fl_0 * l0[1]) * n0[1];
+      // The second-order remainder: the change of f_l times the turn (b s (|k| s + |w|)) and the turn's own
+      // curvature on both forces ((|f_n| + |f_l|) (|k| s + |w|)^2 / 2), doubled.
+      const double turn = std::abs(k) * s + std::abs(w);
+      const double second = 2 * (std::abs(b) * s * turn + (std::abs(fn_0) + std::abs(fl_0)) * turn * turn);
+      const double dfn = friction::NormalIncrement(r_n, k, fl_0, s, w);
+      CHECK_NEAR(dfn, a * s, second);
+      CHECK(std::abs(r_n - a * s) > 100 * std::abs(dfn - a * s));
+      // The tool's turn is not the slip's: leaving it out errs by f_l w.
+      if (w != 0) CHECK(std::abs(friction::NormalIncrement(r_n, k, fl_0, s) - a * s) > 100 * std::abs(dfn - a * s));
+    }
   // r6, slide to stick: from sliding (phi ~ 1) a reversal of 4 VCRI is cut where
   // phi has fallen by dphi_max; stick to slide and small falls are not limited.
   for (const double dphi : {0.5, 0.25, 1.0}) {

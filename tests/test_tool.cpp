@@ -178,6 +178,41 @@ void CheckPath()
   std::printf("ToolPath: points, pieces and the motion ahead as drawn; mirrored with the tool\n");
 }
 
+// A path that turns the tool (-die_path_turn): down 2 turning by 0.1 rad, then turning back to 0 in place (a
+// piece of length reach x 0.1 = 1, at reach 10). A plate y = 1 (body below) turned about its frame's origin (0, 1).
+void CheckTurningPath()
+{
+  const ToolPath path({{0, -2}, {0, -2}}, {0.1, 0.0}, 10.0);
+  const double first = 0.5 * std::hypot(2.0, 1.0); // (the first piece: 2 down and 10 x 0.1 of turn)
+  CHECK(path.turns() && std::abs(path.end() - (first + 0.5)) < 1e-15 && path.Turns().size() == 1);
+  CHECK(std::abs(path.Turn(first) - 0.1) < 1e-15 && std::abs(path.Turn(first + 0.25) - 0.05) < 1e-15);
+  CHECK(std::abs(path.Spin(0) - 0.1 / first) < 1e-15 && std::abs(path.Spin(first) + 0.2) < 1e-15);
+  Tool plate = BuildFlatPlate(1.0, -5.0, 5.0);
+  plate.origin = {0, 1};
+  plate.path = path;
+  plate.stroke = first;
+  plate.FollowPath();
+  // At the turn: the origin moved to (0, -1), the plate turned by 0.1 about it.
+  const double c = std::cos(0.1), s = std::sin(0.1);
+  const Vec2 q = plate.Placed({3, 1}), v = plate.Velocity({0, -1});
+  CHECK(std::abs(q[0] - 3 * c) < 1e-14 && std::abs(q[1] - (-1 + 3 * s)) < 1e-14);
+  CHECK(v[0] == 0 && v[1] == 0 && plate.spin == -0.2); // (the second piece only turns, about the centre)
+  const Vec2 w = plate.Velocity({0, 2});               // (3 above the centre: turning clockwise moves it along x)
+  CHECK(std::abs(w[0] - 0.6) < 1e-15 && w[1] == 0);
+  // A point below the turned plate: its gap along the turned normal, its projection on the turned line.
+  const Projection pr = plate.Project({0, -3});
+  CHECK(std::abs(pr.gap - 2 * c) < 1e-14 && std::abs(pr.n[0] - s) < 1e-15 && std::abs(pr.n[1] + c) < 1e-15);
+  // r4 of a point 2 below the centre as the plate turns back by 0.05: moving with the plate's point there
+  // (0.25 x (-0.4, 0)) and across the gap 2 cos(0.1) along the normal, it meets the plate at the step's end.
+  CHECK(std::abs(plate.FirstContact({0, -3}, {-0.1 - 2 * c * s, 2 * c * c}, 0.25) - 1.0) < 1e-12);
+  // Mirrored (x -> -x): the turns and the spin change sign.
+  const Tool mirrored = MirrorX(plate);
+  CHECK(mirrored.Turn() == -plate.Turn() && mirrored.spin == -plate.spin);
+  const Vec2 mq = mirrored.Placed({-3, 1});
+  CHECK(std::abs(mq[0] + q[0]) < 1e-14 && std::abs(mq[1] - q[1]) < 1e-14);
+  std::printf("ToolPath with turns: the turn and spin along it; a turned plate placed, projected on, met; mirrored\n");
+}
+
 } // namespace
 
 int main()
@@ -194,5 +229,6 @@ int main()
   CheckMaps();
   CheckClearance();
   CheckPath();
+  CheckTurningPath();
   return ReportChecks("test_tool");
 }

@@ -125,7 +125,7 @@ PetscErrorCode ContactSet::Constrain(double dU)
     system_->Prescribe(node, 1, dn, unit);
     if (!friction() || !SlipFree(node) || !mesh_->node_owned[node]) continue;
     const friction::RowTerms t = friction::Linearize(prm_.mu, prm_.vcri, fn_[node], fnk_[node], x_[node], dxk_[node],
-                                                     Dot(Motion(node, dU), l_[node]), kappa_[node]);
+                                                     Dot(Motion(node, dU), l_[node]), kappa_[node], TurnIn(node, dU));
     system_->AddRowCoupling(node, t.row_n_coeff);
     PetscCall(system_->AddFrameStiffness(node, t.diag));
     system_->AddFrameForce(node, t.rhs, 0.0);
@@ -133,10 +133,10 @@ PetscErrorCode ContactSet::Constrain(double dU)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-double ContactSet::NormalIncrement(PetscInt node, double reaction_n, double s) const
+double ContactSet::NormalIncrement(PetscInt node, double reaction_n, double s, double dU) const
 {
   const double f_lk = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fnk_[node], x_[node] + dxk_[node]) : 0.0;
-  return friction::NormalIncrement(reaction_n, kappa_[node], f_lk, s);
+  return friction::NormalIncrement(reaction_n, kappa_[node], f_lk, s, TurnIn(node, dU));
 }
 
 double ContactSet::NormalReaction(PetscInt node, const PetscScalar *react) const
@@ -162,7 +162,7 @@ PetscErrorCode ContactSet::UpdateIterates(Vec du, double dU, bool &converged)
   for (PetscInt node : candidates_) {
     if (!SlipFree(node)) continue;
     const double dx = Slip(node, Increment(d, node), dU);
-    const double fn = fn_[node] + NormalIncrement(node, NormalReaction(node, react), dx);
+    const double fn = fn_[node] + NormalIncrement(node, NormalReaction(node, react), dx, dU);
     const double before = friction::Force(prm_.mu, prm_.vcri, fnk_[node], x_[node] + dxk_[node]);
     const double after = friction::Force(prm_.mu, prm_.vcri, fn, x_[node] + dx);
     if (std::abs(after - before) > prm_.mu * prm_.tol * std::max(std::abs(fn), kFloorOfSmallForces * f_small_))
@@ -207,7 +207,7 @@ PetscErrorCode ContactSet::ReleasePulled(Vec du, double dU, double release_fract
     }
     // Only a clear pull counts: a grazing node (force ~ 0 either way) stays.
     // The node's state (force, slip) is kept until the increment is committed.
-    const double dfn = NormalIncrement(node, NormalReaction(node, react), Slip(node, Increment(d, node), dU));
+    const double dfn = NormalIncrement(node, NormalReaction(node, react), Slip(node, Increment(d, node), dU), dU);
     // A node whose force is zero to the resolution of the forces (equilibrium
     // iterations balance them to -equilibrium_tol) is released rather than
     // cutting the step at its force's zero.
@@ -248,7 +248,7 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
       continue;
     }
     // r5: the normal force reaches zero.
-    const double dfn = NormalIncrement(node, NormalReaction(node, react), Slip(node, u, dU));
+    const double dfn = NormalIncrement(node, NormalReaction(node, react), Slip(node, u, dU), dU);
     if (dfn < -std::max(f_small_, resolution_) && !frozen_[node])
       r5_[node] = std::max(fn_[node], 0.0) / -dfn; // a grazing node held for this step does not limit
     leave.Offer(r5_[node], Limiter::Separation, id);
@@ -266,6 +266,9 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
     PetscCall(ReduceStepLimit(comm(), *l));
     limit.Offer(l->r, l->who, l->where);
   }
+  // r3 for a turning tool (the same on every rank): its turn is taken linear in the step, as the body's rotations.
+  for (int k = 0; k < (int)tools_.size(); ++k)
+    limit.Offer(RotationFactor(tools_[k].spin * Step(k, dU), prm_.turn_max), Limiter::Rotation, -1);
   PetscCall(PetscLogEventEnd(Log::contact, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -307,7 +310,7 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
     if (contact_[node]) {
       const double fl_old = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
       const double dx = Slip(node, Increment(d, node), dU);
-      fn_[node] += NormalIncrement(node, r * NormalReaction(node, react), dx);
+      fn_[node] += NormalIncrement(node, r * NormalReaction(node, react), dx, dU);
       if (SlipFree(node)) {
         x_[node] = friction::Cap(x_[node] + dx, prm_.vcri);
         last_dx_[node] = dx;

@@ -40,7 +40,7 @@ PetscErrorCode ContactSet::Missing(double &missing)
   PetscCall(VecGetArrayRead(system_->reactions_local(), &react));
   for (PetscInt node : candidates_) {
     if (!contact_[node] || !mesh_->node_owned[node] || !tools_[tool_of_[node]].pad) continue;
-    const double fn = fn_[node] + NormalIncrement(node, NormalReaction(node, react), dxk_[node]);
+    const double fn = fn_[node] + NormalIncrement(node, NormalReaction(node, react), dxk_[node], pad_step_);
     const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fnk_[node], x_[node] + dxk_[node]) : 0.0;
     local += ForceAlong(node, fn, fl);
   }

@@ -89,6 +89,8 @@ const std::vector<HistoryColumn> &HistoryColumns()
      "a hold_moment above it is one the real tube may turn under"},
     {"die_x", &HistoryRow::die_x,
      "-die_path: the upper die's displacement along the press's x from where it started (mm; 0 without)"},
+    {"die_turn", &HistoryRow::die_turn,
+     "-die_path_turn: the upper die's turn about -die_pivot (degrees, counter-clockwise; 0 without)"},
   };
   return cols;
 }

@@ -18,6 +18,9 @@ namespace {
 // -die_angle's range (degrees): the V-dies tests/check_die_angle.py presses (the flank's reach of 1.3 ro is
 // beyond the squared side over it).
 constexpr double kDieAngleMin = 60, kDieAngleMax = 150;
+// -die_path_turn's range (degrees): a die turned by more than a quarter turn no longer presses along the press's
+// y, along which its punch load is read.
+constexpr double kMaxDieTurn = 90;
 // Plastic strains the isotropic part of -hardening chaboche is checked up to (tube squaring stays far below).
 constexpr double kKinematicCheckStrain = 2.0;
 constexpr int kKinematicCheckPoints = 2000;
@@ -155,17 +158,31 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
                "-stroke_path: not with -die_force or -stroke_corner_radius");
     opt.stroke = opt.stroke_path.back();
   }
+  PetscCheck((opt.die_path_turn.empty() && opt.die_pivot.empty()) || !opt.die_path.empty(), comm, PETSC_ERR_USER_INPUT,
+             "-die_path_turn and -die_pivot: the turns along a -die_path; give -die_path");
+  PetscCheck(opt.die_pivot.empty() ||
+               (opt.die_pivot.size() == 2 && std::isfinite(opt.die_pivot[0]) && std::isfinite(opt.die_pivot[1])),
+             comm, PETSC_ERR_USER_INPUT, "-die_pivot: one point x,y (mm, where the die starts)");
   if (!opt.die_path.empty()) {
     // The upper die through the points in turn, relative to a lower die that stays; one pass by the stroke.
     PetscCheck(opt.scene == "squaring" && opt.die_path.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
                "-die_path: the squaring scene's upper die through x,y pairs (mm, from its start), in turn");
+    const std::vector<Vec2> points = DiePathPoints(opt);
+    PetscCheck(opt.die_path_turn.empty() || opt.die_path_turn.size() == points.size(), comm, PETSC_ERR_USER_INPUT,
+               "-die_path_turn: %d angles for %d -die_path points: give one (degrees) for each point",
+               (int)opt.die_path_turn.size(), (int)points.size());
     Vec2 at = {0, 0};
-    for (const Vec2 &p : DiePathPoints(opt)) {
-      PetscCheck(std::isfinite(p[0]) && std::isfinite(p[1]) && p != at, comm, PETSC_ERR_USER_INPUT,
+    double turned = 0;
+    for (size_t k = 0; k < points.size(); ++k) {
+      const Vec2 &p = points[k];
+      const double turn = opt.die_path_turn.empty() ? 0.0 : opt.die_path_turn[k];
+      PetscCheck(std::isfinite(p[0]) && std::isfinite(p[1]) && (p != at || turn != turned), comm, PETSC_ERR_USER_INPUT,
                  "-die_path: %g,%g after %g,%g: each point must be a pair of numbers (mm), other than the one before "
-                 "it (the path starts at 0,0)",
+                 "it (the path starts at 0,0) or turned otherwise (-die_path_turn)",
                  p[0], p[1], at[0], at[1]);
-      at = p;
+      PetscCheck(std::isfinite(turn) && std::abs(turn) <= kMaxDieTurn, comm, PETSC_ERR_USER_INPUT,
+                 "-die_path_turn %g: each turn must be a number of degrees within +-%g", turn, kMaxDieTurn);
+      at = p, turned = turn;
     }
     PetscCheck(at[1] < 0, comm, PETSC_ERR_USER_INPUT,
                "-die_path: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", at[1]);

@@ -52,6 +52,15 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                      "(U = -y / 2), one pass; a sideways motion takes the full model and the rotation hold "
                      "(docs/dies.md)",
                      2 * kMaxPathPoints, opt.die_path));
+  PetscCall(RealList(PetscOptionsObject, read, "-die_path_turn",
+                     "squaring: the upper die's turn at each -die_path point (degrees, counter-clockwise, about "
+                     "-die_pivot; linear between the points; a turn counts in the path's length as the arc of a point "
+                     "at the tube's outer radius)",
+                     kMaxPathPoints, opt.die_path_turn));
+  PetscCall(RealList(PetscOptionsObject, read, "-die_pivot",
+                     "squaring: the point x,y (mm, where the die starts; default 0,0: the tube's centre) the upper "
+                     "die turns about under -die_path_turn, moving with it; its tool_moment is about it",
+                     2, opt.die_pivot));
   PetscCall(
     ChooseWord(PetscOptionsObject, read, "-full_hold",
                "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "

@@ -83,6 +83,7 @@ double PressToolWork(TubePart part, bool lower_fixed, const HistoryRow &prev, co
   if (two_dies && !fixed) dw -= 0.5 * (prev.lower_fy + row.lower_fy) * dU; // (moving up; the model pushes it down)
   dw += SideDiesInModel(part) * 0.5 * (prev.side_load + row.side_load) * (row.side_stroke - prev.side_stroke);
   dw -= 0.5 * (prev.tool_fx + row.tool_fx) * (row.die_x - prev.die_x); // (-die_path's sideways motion)
+  dw -= 0.5 * (prev.tool_moment + row.tool_moment) * (row.die_turn - prev.die_turn) * (M_PI / 180); // (its turn)
   return dw;
 }
 

@@ -42,7 +42,7 @@ public:
                                            : opt.stroke;
     back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
     stroke2_ = opt.pass2_stroke;
-    path_ = opt.die_path.empty() ? StrokePath(opt.stroke_path, stroke_) : StrokePath(ToolPath(DiePathPoints(opt)));
+    path_ = opt.die_path.empty() ? StrokePath(opt.stroke_path, stroke_) : StrokePath(DiePath(opt));
     for (int pass = 0; pass < 2; ++pass)
       side_dies_[pass] = PassOptions(opt, pass).side_die != "none", held_[pass] = HeldByRotation(opt, pass);
   }
@@ -113,6 +113,7 @@ public:
     std::vector<SurfacePoint> outer;
     PetscCall(GatherOuter(m, outer));
     path_.Guide(tools.tools[kUpper]); // (-die_path: a path of its own, to move back along before the offset)
+    if (!opt_.die_path_turn.empty() || !opt_.die_pivot.empty()) tools.tools[kUpper].origin = DiePivot(opt_);
     if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
     tools.tools[kUpper].pad = opt_.die_force > 0;
     for (size_t k = SideDie(); opt_.side_force > 0 && k < tools.tools.size(); ++k) tools.tools[k].pad = true;
@@ -240,6 +241,7 @@ public:
     PetscFunctionBeginUser;
     row.stroke = Stroke(m, lambda);
     row.die_x = pass_ == 0 ? path_.Sideways(ToolStroke(lambda)) : 0.0; // (-die_path)
+    row.die_turn = pass_ == 0 ? path_.Turn(ToolStroke(lambda)) : 0.0;
     if (unloading_) {
       for (int k = 0; k < 2; ++k) force[k] = (ReleaseEnd() - lambda) * reversed_total_[k];
       moment = (ReleaseEnd() - lambda) * reversed_moment_;

@@ -22,7 +22,7 @@ PetscErrorCode PressShape(Model &m, const PressShapeState &s, long side_ends[2],
   for (const auto &o : all) row.n_contact_apex += o.contact && s.apex >= 0 && o.segment == s.apex;
   const Tool &tool = m.contact->tool(0);
   const Segment &fl = tool.segments[s.flank];
-  const Vec2 off = tool.Offset(), a = s.press({fl.a[0] + off[0], fl.a[1] + off[1]}), n = s.press(fl.n_line);
+  const Vec2 a = s.press(tool.Placed(fl.a)), n = s.press(tool.Oriented(fl.n_line));
   const Line flank{a, n, {n[1], -n[0]}};
   // The line starts at the flank's apex end (s = 0), where the fillet ends.
   const SideSpan side = s.unloading ? SideSpan{} : SideOnFlank(all, flank, s.flank, s.apex, 0.0);

@@ -24,12 +24,49 @@ double AngleFrom(const Vec2 &v, double t0)
   while (t >= t0 + 2 * M_PI) t -= 2 * M_PI;
   return t;
 }
+
+// v turned counter-clockwise by the angle of cosine c and sine s.
+Vec2 Rotated(const Vec2 &v, double c, double s) { return {c * v[0] - s * v[1], s * v[0] + c * v[1]}; }
 } // namespace
+
+Vec2 Tool::Placed(const Vec2 &p) const
+{
+  const Vec2 off = Offset();
+  const double t = Turn();
+  if (t == 0) return Add(p, off);
+  return Add(Add(origin, Rotated(Sub(p, origin), std::cos(t), std::sin(t))), off);
+}
+
+Vec2 Tool::Oriented(const Vec2 &v) const
+{
+  const double t = Turn();
+  return t == 0 ? v : Rotated(v, std::cos(t), std::sin(t));
+}
+
+Vec2 Tool::Velocity(const Vec2 &x) const
+{
+  if (spin == 0) return direction;
+  const Vec2 centre = Add(origin, Offset());
+  return {direction[0] - spin * (x[1] - centre[1]), direction[1] + spin * (x[0] - centre[0])};
+}
 
 Projection Tool::Project(const Vec2 &x) const
 {
+  const double t = Turn();
+  if (t == 0) return ProjectDrawn(x, Offset());
+  // In the drawing: x turned back about the frame's origin where it now is; the projection turned forward.
+  const double c = std::cos(t), s = std::sin(t);
+  const Vec2 centre = Add(origin, Offset());
+  Projection p = ProjectDrawn(Add(origin, Rotated(Sub(x, centre), c, -s)), {0, 0});
+  if (p.segment < 0) return p;
+  p.point = Add(centre, Rotated(Sub(p.point, origin), c, s));
+  p.n = Rotated(p.n, c, s), p.l = Rotated(p.l, c, s);
+  return p;
+}
+
+Projection Tool::ProjectDrawn(const Vec2 &x, const Vec2 &off) const
+{
   Projection best;
-  const Vec2 off = Offset();
   for (size_t k = 0; k < segments.size(); ++k) {
     const Segment &s = segments[k];
     Projection p;
@@ -61,8 +98,17 @@ Projection Tool::Project(const Vec2 &x) const
 
 double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
 {
+  const double t = Turn();
   // Relative motion in the tool's frame: y(r) = x - off + r (dx - dU direction).
-  const Vec2 off = Offset(), y0 = Sub(x, off), dy = Sub(dx, Scale(direction, dU));
+  if (t == 0 && spin == 0) return FirstContactDrawn(Sub(x, Offset()), Sub(dx, Scale(direction, dU)));
+  // Turning: the same in the drawing, x's motion relative to the tool's point there (Velocity) turned back.
+  const double c = std::cos(t), s = std::sin(-t);
+  const Vec2 centre = Add(origin, Offset());
+  return FirstContactDrawn(Add(origin, Rotated(Sub(x, centre), c, s)), Rotated(Sub(dx, Scale(Velocity(x), dU)), c, s));
+}
+
+double Tool::FirstContactDrawn(const Vec2 &y0, const Vec2 &dy) const
+{
   double rmin = kNever;
   for (const Segment &s : segments) {
     if (s.kind == Segment::Line) {
@@ -143,6 +189,7 @@ Tool Transform(const Tool &t, const TurnMap &map)
       s.t0 = t0 + turn, s.t1 = s.t1 + turn;
   }
   m.direction = map(t.direction), m.origin = map(t.origin), m.path = t.path.Mapped(map);
+  m.spin = map.det() * t.spin;
   return m;
 }
 
@@ -193,17 +240,16 @@ Tool BothSides(const Tool &t)
 Outline ToolOutline(const Tool &t)
 {
   Outline o;
-  const Vec2 off = t.Offset();
   for (const Segment &s : t.segments) {
     const int first = (int)o.points.size();
     if (s.kind == Segment::Line) {
-      o.points.push_back(Add(s.a, off));
-      o.points.push_back(Add(s.b, off));
+      o.points.push_back(t.Placed(s.a));
+      o.points.push_back(t.Placed(s.b));
     } else {
       const int n = std::max(1, (int)std::ceil((s.t1 - s.t0) / kOutlineStep));
       for (int k = 0; k <= n; ++k) {
         const double a = s.t0 + (s.t1 - s.t0) * k / n;
-        o.points.push_back(Add(s.c, Add(off, {s.radius * std::cos(a), s.radius * std::sin(a)})));
+        o.points.push_back(t.Placed(Add(s.c, {s.radius * std::cos(a), s.radius * std::sin(a)})));
       }
     }
     for (int k = first; k + 1 < (int)o.points.size(); ++k) o.lines.push_back({k, k + 1});

@@ -63,6 +63,7 @@ struct ContactParams {
   double tol = 1e-4;       // friction iterations: change of f_l / (mu f_n) between iterates
   double group_tol = 1e-6; // contact/separation events within (1 + tol) r_min go together
   double gap_tol = 1e-7;   // a free node this close to the surface (mm) is in contact
+  double turn_max = 1e-2;  // a turning tool's largest turn in an increment (rad; r3's -rmin_domega)
 };
 
 // What a commit did, for the history (docs/output.md): the friction work and
@@ -287,18 +288,24 @@ private:
   double ForceAlong(PetscInt node, double fn, double fl) const;
   // Tool k's stroke increment in a step of the scene's stroke dU (a force-controlled tool: its own).
   double Step(int k, double dU) const { return tools_[k].pad ? pad_step_ : dU; }
-  // The motion of the tool a node touches in that step.
+  // The motion in that step of the tool's point where a node touches it (Tool::Velocity: a turning tool's point
+  // moves about its centre too; taken linear in the step, as the body's rotations are).
   Vec2 Motion(PetscInt node, double dU) const
   {
     const double s = Step(tool_of_[node], dU);
-    return {s * Direction(node)[0], s * Direction(node)[1]};
+    const Tool &t = tools_[tool_of_[node]];
+    if (t.spin == 0) return {s * Direction(node)[0], s * Direction(node)[1]};
+    const Vec2 v = t.Velocity(Position(node));
+    return {s * v[0], s * v[1]};
   }
+  // How far the tool a node touches turns in that step (radians): its frame turns with it.
+  double TurnIn(PetscInt node, double dU) const { return tools_[tool_of_[node]].spin * Step(tool_of_[node], dU); }
   Vec2 Increment(const PetscScalar *d, PetscInt node) const;
   double NormalReaction(PetscInt node, const PetscScalar *react) const;
   // The normal force increment of a solution with normal reaction reaction_n
-  // and slip s: the reaction less the turning of the friction force on arcs
+  // and slip s in a step dU: the reaction less the turning of the friction force on arcs and with a turning tool
   // (friction::NormalIncrement, with the friction force of the iterate).
-  double NormalIncrement(PetscInt node, double reaction_n, double s) const;
+  double NormalIncrement(PetscInt node, double reaction_n, double s, double dU) const;
   double Slip(PetscInt node, const Vec2 &u, double dU) const;
 };
 

@@ -32,11 +32,13 @@ inline double DPhi(double x, double vcri)
 // so the contact force F = f_n n + f_l l changes in the frame of the step's
 // start by
 //   dF.n = df_n + kappa f_l s,   dF.l = df_l - kappa f_n s   (eq. 15).
+// A tool that turns by w in the step (counter-clockwise) turns the frame by w
+// more: kappa s becomes kappa s + w in both.
 // The system's n row gives dF.n as the reaction R_n; the normal force itself
 // changes by
-inline double NormalIncrement(double reaction_n, double kappa, double f_l, double s)
+inline double NormalIncrement(double reaction_n, double kappa, double f_l, double s, double w = 0)
 {
-  return reaction_n - kappa * f_l * s;
+  return reaction_n - kappa * f_l * s - f_l * w;
 }
 
 // Terms of the linearized l-row of a contact node for friction iterate k
@@ -47,7 +49,9 @@ inline double NormalIncrement(double reaction_n, double kappa, double f_l, doubl
 //       = dF_l + mu f_n0 (phi(x0) - t) + mu f_nk t' (dx_k + dU_l) + f_nk kappa dU_l.
 // R_n = (K du)_n - dF_n is row n of the system, so row_l += (mu t) row_n (the
 // unsymmetric correction row) and the curvature part of df_n,
-// mu t kappa mu f_nk t dx, joins the diagonal and load.
+// mu t kappa mu f_nk t dx, joins the diagonal and load. The tool's turn w in
+// the step (kappa dx + w for kappa dx) moves (f_nk + mu t mu f_nk t) w to the
+// load's side with the opposite sign.
 struct RowTerms {
   double row_n_coeff = 0; // multiplier of row n (and its load) added to row l
   double diag = 0;        // added to K_ll
@@ -96,14 +100,15 @@ inline double Force(double mu, double vcri, double fn, double x) { return -mu * 
 // iterations diverge. Only the iteration matrix changes, not the converged
 // solution: the same factor multiplies du_l and its right-hand-side partner.
 inline RowTerms Linearize(double mu, double vcri, double fn0, double fnk, double x0, double dxk, double dU_l,
-                          double kappa)
+                          double kappa, double w = 0)
 {
   RowTerms t;
   const double tk = Phi(x0 + dxk, vcri), dtk = DPhi(x0 + dxk, vcri) * (fnk > 0 ? 1.0 : 0.0);
   t.row_n_coeff = mu * tk;
   const double turn = mu * tk * kappa * mu * fnk * tk; // n-row curvature term through the coupling row
   t.diag = mu * fnk * dtk + fnk * kappa + turn;
-  t.rhs = mu * fn0 * (Phi(x0, vcri) - tk) + mu * fnk * dtk * (dxk + dU_l) + (fnk * kappa + turn) * dU_l;
+  t.rhs = mu * fn0 * (Phi(x0, vcri) - tk) + mu * fnk * dtk * (dxk + dU_l) + (fnk * kappa + turn) * dU_l -
+          (fnk + mu * tk * mu * fnk * tk) * w;
   return t;
 }
 

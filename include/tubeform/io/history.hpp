@@ -26,6 +26,7 @@ struct HistoryRow {
   double side_stroke = 0; // the side dies' travel (mm): the stroke, or their own under -side_force (0: no side dies)
   double hold_moment = 0, hold_friction = 0; // the rotation hold's couple, and friction's largest (N mm/mm)
   double die_x = 0;                          // -die_path: the upper die's sideways displacement (mm)
+  double die_turn = 0;                       // -die_path_turn: the upper die's turn (degrees, counter-clockwise)
   double w_kinetic = 0, w_inertia = 0, inertia = 0, w_damped = 0, w_tool = 0, internal_error = 0;
   double slip = 0, fn_sum = 0, det_sign = 0;
 };

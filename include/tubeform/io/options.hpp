@@ -75,10 +75,12 @@ struct Options {
   std::string lower_die = "mirror"; // mirror, flat or a profile file drawn as an upper die
   std::string lower_die_motion = "mirror"; // mirror (up by the stroke) or fixed
   std::string model = "auto";              // quarter, half, full, or auto: the quarter where it is exact
-  double die_force = 0;           // > 0: the upper die is force-controlled, its punch load rising to this (N/mm)
-  double die_offset = 0;          // the first pass's upper die off the y axis along the press's x (mm; full model)
-  std::vector<double> die_path;   // squaring: the upper die's displacements (x, y pairs, mm) in turn from its start
-  std::string full_hold = "auto"; // the full model's support: pins, rotation (the rotation hold), auto
+  double die_force = 0;              // > 0: the upper die is force-controlled, its punch load rising to this (N/mm)
+  double die_offset = 0;             // the first pass's upper die off the y axis along the press's x (mm; full model)
+  std::vector<double> die_path;      // squaring: the upper die's displacements (x, y pairs, mm) in turn from its start
+  std::vector<double> die_path_turn; // and its turns there (degrees, counter-clockwise), one a point
+  std::vector<double> die_pivot;     // the point it turns about (x, y, mm, where it starts; none: the tube's centre)
+  std::string full_hold = "auto";    // the full model's support: pins, rotation (the rotation hold), auto
   // A second pass after the springback: its stroke (0: none), its dies ("": the first pass's).
   double pass2_stroke = 0;
   std::string pass2_die_profile, pass2_lower_die;
@@ -176,20 +178,35 @@ inline std::vector<Vec2> DiePathPoints(const Options &opt)
   for (size_t k = 0; k + 1 < opt.die_path.size(); k += 2) p.push_back({opt.die_path[k], opt.die_path[k + 1]});
   return p;
 }
+// -die_path with its turns (-die_path_turn, radians in the path), a turn's length counted at the tube's outer
+// radius.
+inline ToolPath DiePath(const Options &opt)
+{
+  std::vector<double> turns;
+  for (double a : opt.die_path_turn) turns.push_back(a * (M_PI / 180));
+  return ToolPath(DiePathPoints(opt), turns, opt.tube_ro);
+}
+// The point the upper die turns about (-die_pivot; the tube's centre), where it starts.
+inline Vec2 DiePivot(const Options &opt)
+{
+  return opt.die_pivot.size() == 2 ? Vec2{opt.die_pivot[0], opt.die_pivot[1]} : Vec2{0.0, 0.0};
+}
 // The die's travel over the press in units of the stroke U (mm; -output_stroke counts it): along -stroke_path,
 // half -die_path's length (ToolPath: a fixed lower die's U is half the upper one's travel), or -stroke.
 inline double Travel(const Options &opt)
 {
-  if (!opt.die_path.empty()) return ToolPath(DiePathPoints(opt)).end();
+  if (!opt.die_path.empty()) return DiePath(opt).end();
   double travel = opt.stroke_path.empty() ? opt.stroke : 0, at = 0;
   for (double u : opt.stroke_path) travel += std::abs(u - at), at = u;
   return travel;
 }
-// The first pass's upper die leaves the press's y axis: -die_offset, or a -die_path with a sideways motion.
+// The first pass's upper die leaves the press's y axis: -die_offset, or a -die_path with a sideways motion or a
+// turn.
 inline bool DieOffAxis(const Options &opt)
 {
   bool sideways = false;
   for (const Vec2 &p : DiePathPoints(opt)) sideways = sideways || p[0] != 0;
+  for (double a : opt.die_path_turn) sideways = sideways || a != 0;
   return opt.die_offset != 0 || sideways;
 }
 

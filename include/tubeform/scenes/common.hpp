@@ -33,7 +33,8 @@ inline double SideDiesInModel(TubePart part)
 // plane stands in for a mirrored lower die; with `lower_fixed` the upper die travels 2 U); in the half and full
 // models a moving lower die's own force (a floor carries less than the die above it when side dies take some
 // of the vertical force by friction); the side dies' force over their travel (`side_stroke`); the upper die's
-// force along x over its sideways travel (`die_x`, -die_path).
+// force along x over its sideways travel (`die_x`, -die_path), and its moment about its pivot over its turn
+// (`die_turn`, -die_path_turn).
 double PressToolWork(TubePart part, bool lower_fixed, const HistoryRow &prev, const HistoryRow &row);
 // C1 = x_max, C2 = y_max of the outer surface (the half model's C2 half its height, the full model's C1 half
 // its width) and their ratio. A pass that turned the tube measures in its press's frame: `press` maps the

@@ -39,6 +39,8 @@ public:
   // The press's U at stroke s (the die's own path: half its depth, -y / 2) and the die's sideways displacement.
   double U(double s) const { return die_.empty() ? s : -0.5 * die_.At(s)[1]; }
   double Sideways(double s) const { return die_.empty() ? 0.0 : die_.At(s)[0]; }
+  // And its turn (degrees, counter-clockwise).
+  double Turn(double s) const { return die_.empty() ? 0.0 : die_.Turn(s) * (180 / M_PI); }
   double travel() const { return travel_; } // mm
   // The deepest U.
   double deepest() const

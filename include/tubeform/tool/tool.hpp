@@ -48,21 +48,35 @@ public:
   bool pad = false;              // force-controlled: its stroke is an unknown of each increment (ContactSet)
   Vec2 origin{};                 // the frame's origin at stroke 0: the tube's centre, or moved with the die (MovedBack)
   ToolPath path;                 // a path of its own (-die_path), or none: the stroke along `direction`
+  double spin = 0;               // its turn about the frame's origin per unit stroke (a path that turns it)
 
   // Where the stroke has moved the tool from its drawing.
   Vec2 Offset() const { return path.empty() ? Vec2{stroke * direction[0], stroke * direction[1]} : path.At(stroke); }
-  // A tool on a path of its own moves along the piece ahead of its stroke (`direction`, per unit stroke).
+  // How far the stroke has turned it about its frame's origin (radians, counter-clockwise; 0 off a turning path).
+  double Turn() const { return path.empty() ? 0.0 : path.Turn(stroke); }
+  // A point of the drawing where the tool now is: turned about the frame's origin, then moved by the offset.
+  Vec2 Placed(const Vec2 &p) const;
+  // A direction of the drawing where the tool now is (turned).
+  Vec2 Oriented(const Vec2 &v) const;
+  // The motion per unit stroke of the tool's point now at x: along `direction`, and about the frame's origin.
+  Vec2 Velocity(const Vec2 &x) const;
+  // A tool on a path of its own moves and turns along the piece ahead of its stroke (per unit stroke).
   void FollowPath()
   {
-    if (!path.empty()) direction = path.Motion(stroke);
+    if (!path.empty()) direction = path.Motion(stroke), spin = path.Spin(stroke);
   }
   // Closest point of the surface at the current stroke. Points whose
   // projection falls outside every segment get segment -1.
   Projection Project(const Vec2 &x) const;
   // r4 of METHOD.md sec. 4: the smallest r in (0, 1] at which the point
   // x + r dx meets the surface moved by r dU (lines: linear, arcs: quadratic,
-  // exact); 1e300 if none.
+  // exact); 1e300 if none. A turning tool's turn is taken linear in r, as the
+  // body's rotations are (its step's turn is bounded by r3's rmin_domega).
   double FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const;
+
+private:
+  Projection ProjectDrawn(const Vec2 &x, const Vec2 &off) const;
+  double FirstContactDrawn(const Vec2 &y0, const Vec2 &dy) const;
 };
 
 // A tool's working surface as lines for the results (ParaView): the points of

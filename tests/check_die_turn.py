@@ -1,0 +1,165 @@
+"""The upper die turning along its own path (-die_path_turn about -die_pivot; issue 23, item 2: "a prescribed path
+in time (translation and rotation, piecewise linear)"; docs/dies.md, "A die that turns").
+
+The paper's tube (options/squaring.opts, fast preset), the lower V-die staying, the upper one down to U = 1 mm,
+then 0.3 mm to the right while turning 3 degrees counter-clockwise about its apex (the pivot 0,24.75: ro sqrt 2
+above the centre), then down again while turning back to -1 degree: `-die_path 0,-2,0.3,-2.4,0.3,-2.8
+-die_path_turn 0,3,-1 -die_pivot 0,24.75`, in the full model under the rotation hold.
+A. Turns of 0 change nothing: the sideways path with `-die_path_turn 0,0,0` and a pivot is the history without
+   them to 1e-12 of each column's largest value but tool_moment (the pivot is the point it is taken about; it is
+   checked against the other's moved there, within 1e-9 of the load times ro: the shift's round-off).
+B. The die where the path puts it: its outline in the results (/tools/V-die/displacement) at the output steps at
+   the path's points is the drawing turned about the pivot by the point's angle and moved by its x, y, within
+   1e-12 mm; the history's die_turn, die_x and U there are the point's (1e-12).
+C. The energy balance (self-check (a): the upper die's work from its reported forces along its motions and its
+   moment about the pivot over its turn, tool_moment over die_turn) within 5e-3 at every increment from U = 0.1 mm
+   (tests/check_hold.py D's bound); the turn's work is more than that share of the work put in, so a balance
+   without it fails.
+D. Equilibrium of the tube at every loading increment, as tests/check_die_path.py D, the upper die's moment taken
+   about the centre from its pivot (at (die_x, 24.75 - 2 U)): no net force on the hold, the dies' moment the hold's
+   couple, within n_contact (residual + fn_mismatch) (times ro for the moment); on 1 and 2 ranks.
+E. The mirrored press (x -> -x and the turns' signs flipped) is the mirror image, and 2 ranks the same press, at
+   the path's points and the springback's end: load, extents, internal work the same, the sideways force, the
+   die's moment and the hold's couple of opposite sign in the mirror, within 1e-3 of the load (of the load times
+   ro for the moments, of ro for the extents): tests/check_die_path.py E's bound, derived there (ten times what a
+   perturbation of 1.3e-13 in E moves the full model under the hold).
+F. A checkpoint inside the turning piece, continued: the history within 1e-12 (tests/check_restart.py's bound):
+   the turn follows from the stroke, not from a state.
+G. Each increment turns the die by at most -rmin_domega (the tool's turn is linear in a step, as the body's
+   rotations are): with -rmin_domega 1e-3, below the 2.4e-3 rad the press's other events leave, die_turn's steps
+   within it (1e-9 of it: the step's round-off). Here the tube's elements under the die turn faster than it, so
+   the body's r3 binds first (the tool's own bound is checked in tests/test_contact.cpp). The penetration the linear
+   turn leaves (a second-order chord) below the gap a turn of 1e-2 rad leaves over the die's reach,
+   0.5 (1e-2)^2 x 2 ro.
+"""
+import h5py
+import numpy as np
+
+from die_press import at_rows, balance
+from tfcheck import Checks, args, out, run, run_all
+
+tf, mpirun, src = args()
+k = Checks("die_turn")
+RO = 17.5
+PIVOT = (0.0, 24.75)
+DOMEGA = 1e-2  # -rmin_domega's default (rad)
+FINE = 1e-3  # a bound the press's other events do not keep the die's turn within (its steps reach 2.4e-3 rad)
+BASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src}/options/preset-fast.opts",
+        "-progress", 0, "-error_estimate", 0, "-unload", "reverse", "-lower_die_motion", "fixed"]
+SIDE = [0.0, -2.0, 0.3, -2.4, 0.3, -2.8]
+TURNS = [0.0, 3.0, -1.0]
+
+
+def csv(v):
+    return ",".join(map(str, v))
+
+
+MIRROR = [-v if i % 2 == 0 else v for i, v in enumerate(SIDE)]
+RUNS = {"turn": ["-die_path", csv(SIDE), "-die_path_turn", csv(TURNS), "-die_pivot", csv(PIVOT)],
+        "mirror": ["-die_path", csv(MIRROR), "-die_path_turn", csv(-t for t in TURNS), "-die_pivot", csv(PIVOT)],
+        "still": ["-die_path", csv(SIDE)],
+        "still0": ["-die_path", csv(SIDE), "-die_path_turn", "0,0,0", "-die_pivot", csv(PIVOT)]}
+RUNS["fine"] = RUNS["turn"] + ["-rmin_domega", FINE]
+
+
+def history(name):
+    with h5py.File(out(name), "r") as h:
+        return {c: h["/history"][c][:] for c in h["/history"]}
+
+
+run_all(tf, mpirun, [BASE + RUNS[n] + ["-output", out(f"{n}.h5")] for n in RUNS], timeout=600)
+run(tf, mpirun, 2, BASE + RUNS["turn"] + ["-output", out("turn_np2.h5")], timeout=600)
+h = {n: history(f"{n}.h5") for n in list(RUNS) + ["turn_np2"]}
+r = h["turn"]
+press = r["stage"] == 0
+load = np.abs(r["load"]).max()
+
+
+def worst(a, b, columns):
+    if a["stroke"].shape != b["stroke"].shape:
+        return 1.0, f"rows {a['stroke'].shape[0]} and {b['stroke'].shape[0]}"
+    rel = {c: np.abs(a[c] - b[c]).max() / max(np.abs(a[c]).max(), 1e-300) for c in columns}
+    c = max(rel, key=rel.get)
+    return rel[c], c
+
+
+# A. Turns of 0.
+a, b = h["still"], h["still0"]
+w, c = worst(a, b, [c for c in a if c != "tool_moment"])
+moved = a["tool_moment"] + PIVOT[1] * a["tool_fx"]  # (about the pivot: minus its y times the force along x)
+wm = np.abs(moved - b["tool_moment"]).max() / (load * RO) if a["stroke"].shape == b["stroke"].shape else 1.0
+k.check(w <= 1e-12 and wm <= 1e-9, f"A. -die_path_turn 0,0,0 changes nothing: within {w:.1e} ({c}; 1e-12), the "
+        f"die's moment about the pivot {wm:.1e} (1e-9)")
+
+# B. The die where the path puts it.
+points = [(0.0, 0.0, 0.0)] + [(SIDE[i], SIDE[i + 1], TURNS[i // 2]) for i in range(0, len(SIDE), 2)]
+with h5py.File(out("turn.h5"), "r") as f:
+    lam, disp, drawn = f["/time"][:, 0], f["/tools/V-die/displacement"][:], f["/tools/V-die/vertices"][:]
+pieces = [np.hypot(np.hypot(q[0] - p[0], q[1] - p[1]), RO * np.radians(q[2] - p[2]))
+          for p, q in zip(points, points[1:])]
+at = np.cumsum(pieces) / sum(pieces)  # (the load factor at each point: a turn counts as its arc at ro)
+off, found = [], []
+for lk, p in zip(at, points[1:]):
+    rows = np.where(press & (np.abs(r["die_x"] - p[0]) <= 1e-12) & (np.abs(r["stroke"] + 0.5 * p[1]) <= 1e-12) &
+                    (np.abs(r["die_turn"] - p[2]) <= 1e-12))[0]
+    found.append(len(rows))
+    t = np.radians(p[2])
+    rot = np.array([[np.cos(t), -np.sin(t)], [np.sin(t), np.cos(t)]])
+    placed = (drawn - PIVOT) @ rot.T + PIVOT + p[:2]
+    step = np.where(np.abs(lam - lk) <= 1e-12)[0]
+    off.append(np.abs(disp[step[0]] - (placed - drawn)).max() if len(step) else 1.0)
+k.check(max(off) <= 1e-12, f"B. the die's outline in the results is the drawing turned about the pivot and moved "
+        f"to the path's points at their output steps: off by {max(off):.1e} mm (1e-12)")
+k.check(all(found), "B. the history's die_x, U and die_turn reach each point's x, -y / 2 and turn (" +
+        ", ".join(f"{p[0]},{-0.5 * p[1]},{p[2]}: {n} row(s)" for p, n in zip(points[1:], found)) + ")")
+
+# C. Energy.
+late = r["stroke"] >= 0.1
+err = np.abs(r["energy_error"][late]).max()
+m, th = r["tool_moment"], np.radians(r["die_turn"])
+share = abs(np.sum(0.5 * (m[1:] + m[:-1]) * np.diff(th))) / abs(r["w_ext"][press][-1])
+k.check(err <= 5e-3 and share > 5e-3, f"C. energy balance from U = 0.1 mm within {err:.1e} (5e-3), the turn's "
+        f"work {share:.1%} of the work put in")
+
+
+# D. Equilibrium.
+for t, label in ((r, "1 rank"), (h["turn_np2"], "2 ranks")):
+    f, mo, hold = balance(t, RO, PIVOT)
+    k.check(f <= 1 and mo <= 1, f"D. {label}: no net force on the hold ({f:.2g} of its bound) and the dies' moment "
+            f"about the centre the hold's couple (largest {hold:.0f} N mm/mm; {mo:.2g} of its bound)")
+
+
+# E. Mirror and ranks, at the path's points and the springback's end.
+def marks(t):
+    p = t["stage"] == 0
+    at = [p & (np.abs(np.abs(t["die_x"]) - abs(q[0])) <= 1e-12) & (np.abs(t["stroke"] + 0.5 * q[1]) <= 1e-12)
+          for q in points[1:]]
+    rows = [np.where(a)[0][0] for a in at]
+    return rows + [len(p) - 1]
+
+
+for name, sign, label in (("mirror", -1, "the press mirrored is the mirror image"), ("turn_np2", 1, "2 ranks")):
+    w, c = at_rows(r, h[name], marks(r), marks(h[name]), sign, RO,
+                   ("tool_fx", "lower_fx", "tool_moment", "hold_moment"))
+    k.check(w <= 1e-3, f"E. {label}: within {w:.1e} ({c}; 1e-3)")
+
+# F. A restart inside the turning piece.
+ck = out("turn_ck.h5")
+opts = BASE + RUNS["turn"] + ["-output", out("turn_part.h5")]
+inside = int(np.where(press & (r["die_turn"] > 0.5) & (r["die_turn"] < 2.5))[0][0])
+run(tf, mpirun, 1, opts + ["-checkpoint", ck, "-checkpoint_every", inside], timeout=600)
+run(tf, mpirun, 1, opts + ["-restart", ck], timeout=600)
+w, c = worst(r, history("turn_part.h5"), list(r))
+k.check(w <= 1e-12, f"F. continued from a checkpoint inside the turning piece (row {inside}): the history within "
+        f"{w:.1e} ({c}; 1e-12)")
+
+# G. The step's turn and what its chord leaves.
+fine = h["fine"]
+steps = np.abs(np.diff(np.radians(fine["die_turn"])))
+r3 = (fine["limiter"] == 4).sum()
+pen = r["penetration"][press].max()
+chord = 0.5 * DOMEGA ** 2 * 2 * RO
+k.check(steps.max() <= FINE * (1 + 1e-9), f"G. -rmin_domega {FINE:g}: the die turns by at most {steps.max():.3e} rad "
+        f"an increment ({r3} increments cut by r3)")
+k.check(pen <= chord, f"G. penetration {pen:.1e} mm (below {chord:.1e}: a turn of {DOMEGA:g} rad's chord over 2 ro)")
+k.done()
