@@ -113,7 +113,9 @@ cases = [
     (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1", "-die_pivot", "1"],
      "-die_pivot: one point x,y"),
     (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1", "-die_path_turn", "3", "-model",
-      "half"], "-die_path: a die off the axis"),
+      "half"], "-die_path_turn: a die off the axis"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1", "-die_pivot", "0,20"],
+     "-die_pivot: the point the die turns about; give its turns"),
     (["-scene", "flattening", "-model", "full", "-full_hold", "rotation"], "plates do not hold"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_die", out("none.profile")],
      f"-pass2_side_die {out('none.profile')}: cannot read"),
@@ -184,7 +186,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 114 and len(selected) == 5, f"{len(cases)} cases on 1 rank (114), {len(selected)} on 2 (5)")
+k.check(len(cases) == 115 and len(selected) == 5, f"{len(cases)} cases on 1 rank (115), {len(selected)} on 2 (5)")
 
 
 def attempt(np_, extra):

@@ -31,6 +31,14 @@ G. Each increment turns the die by at most -rmin_domega (the tool's turn is line
    the body's r3 binds first (the tool's own bound is checked in tests/test_contact.cpp). The penetration the linear
    turn leaves (a second-order chord) below the gap a turn of 1e-2 rad leaves over the die's reach,
    0.5 (1e-2)^2 x 2 ro.
+H. A frictionless roller (an arc of radius 5 mm about 0,22.5 under a rising line) pressed to U = 1 mm, then turned
+   in place about its centre by 10 degrees, both ways (10 trial increments: a trial step would turn it by 2.9e-2
+   rad): its surface does not move, so the tool's own r3 cuts the turn's increments at 1e-2 rad (1e-9 of it; the
+   tube's elements do not turn, so nothing else can); the two ways give the same press (load, extents, works,
+   C/t within 1e-12 of each column's largest value: nothing may depend on the way a frictionless roller turns;
+   measured 1e-13); over the turn the load moves by no more than the equilibrium iterations may still settle
+   (-equilibrium_tol 0.005 of q_avg at each contact node; measured 2.7e-6 N/mm against 0.17) and the die does no
+   work (1e-12 of the work: the normal forces pass through the centre). A centre taken wrong pushes the tube.
 """
 import h5py
 import numpy as np
@@ -60,6 +68,14 @@ RUNS = {"turn": ["-die_path", csv(SIDE), "-die_path_turn", csv(TURNS), "-die_piv
         "still": ["-die_path", csv(SIDE)],
         "still0": ["-die_path", csv(SIDE), "-die_path_turn", "0,0,0", "-die_pivot", csv(PIVOT)]}
 RUNS["fine"] = RUNS["turn"] + ["-rmin_domega", FINE]
+# H: a roller (a convex arc of radius 5 under a rising 45-degree line) down to U = 1, then turning in place about its
+# centre, frictionless, both ways; 10 trial increments, so that a trial step would turn it by 2.9e-2 rad.
+ROLLER = ["-die_profile", out("roller.profile"), "-friction_mu", 0, "-increments", 10, "-die_pivot", "0,22.5",
+          "-die_path", "0,-2,0,-2"]
+RUNS["roller+"] = ROLLER + ["-die_path_turn", "0,10"]
+RUNS["roller-"] = ROLLER + ["-die_path_turn", "0,-10"]
+with open(out("roller.profile"), "w") as f:
+    f.write("arc 0 22.5 5 270 315\nline 3.5355339059327378 18.964466094067262 20 35.42893218813452\n")
 
 
 def history(name):
@@ -162,4 +178,21 @@ chord = 0.5 * DOMEGA ** 2 * 2 * RO
 k.check(steps.max() <= FINE * (1 + 1e-9), f"G. -rmin_domega {FINE:g}: the die turns by at most {steps.max():.3e} rad "
         f"an increment ({r3} increments cut by r3)")
 k.check(pen <= chord, f"G. penetration {pen:.1e} mm (below {chord:.1e}: a turn of {DOMEGA:g} rad's chord over 2 ro)")
+
+# H. A frictionless roller turning in place about its centre.
+a, b = h["roller+"], h["roller-"]
+t = np.radians(a["die_turn"])
+turning = np.where(np.diff(t) > 0)[0] + 1  # (the turn's rows)
+cut = (a["limiter"][turning] == 4) & (a["limiter_where"][turning] == -1)
+at_bound = np.abs(np.diff(t)[turning - 1] - DOMEGA) <= 1e-9 * DOMEGA
+k.check(cut.sum() >= len(turning) - 1 and (cut == at_bound).all(), f"H. the roller's turn: {cut.sum()} of its "
+        f"{len(turning)} increments cut by its own r3 at {DOMEGA:g} rad (the rest the piece's end)")
+w, c = worst(a, b, ["load", "x_max", "y_max", "w_int", "w_ext", "lower_fy", "c_over_t"])
+k.check(w <= 1e-12, f"H. turning it the other way changes nothing: within {w:.1e} ({c}; 1e-12)")
+s, e = turning[0] - 1, turning[-1]
+settle = a["n_contact"][s] * 0.005 * a["q_avg"][s]  # (-equilibrium_tol 0.005 of q at each contact node)
+dload, dwork = abs(a["load"][e] - a["load"][s]), abs(a["w_ext"][e] - a["w_ext"][s]) / a["w_ext"][s]
+k.check(dload <= settle and dwork <= 1e-12, f"H. over the turn the load moves by {dload:.1e} N/mm (at most what the "
+        f"equilibrium iterations may still settle, {settle:.2g}) and the die does no work ({dwork:.0e} of the work; "
+        f"1e-12)")
 k.done()

@@ -73,6 +73,13 @@ int main()
       // curvature on both forces ((|f_n| + |f_l|) (|k| s + |w|)^2 / 2), doubled.
       const double turn = std::abs(k) * s + std::abs(w);
       const double second = 2 * (std::abs(b) * s * turn + (std::abs(fn_0) + std::abs(fl_0)) * turn * turn);
+      // The l row's share, as friction::Linearize takes it (its model G above): dF.l = df_l - f_n (kappa s + w).
+      const double r_l = (fn_s * n1[0] + fl_s * l1[0] - fn_0 * n0[0] - fl_0 * l0[0]) * l0[0] +
+                         (fn_s * n1[1] + fl_s * l1[1] - fn_0 * n0[1] - fl_0 * l0[1]) * l0[1];
+      // (its remainder: the change of f_n times the turn, a s (|k| s + |w|), with the same curvature part)
+      const double second_l = 2 * (std::abs(a) * s * turn + (std::abs(fn_0) + std::abs(fl_0)) * turn * turn);
+      CHECK_NEAR(r_l, b * s - fn_0 * (k * s + w), second_l);
+      if (w != 0) CHECK(std::abs(r_l - (b * s - fn_0 * k * s)) > 100 * std::abs(r_l - (b * s - fn_0 * (k * s + w))));
       const double dfn = friction::NormalIncrement(r_n, k, fl_0, s, w);
       CHECK_NEAR(dfn, a * s, second);
       CHECK(std::abs(r_n - a * s) > 100 * std::abs(dfn - a * s));

@@ -20,9 +20,9 @@ Vec2 ContactSet::Increment(const PetscScalar *d, PetscInt node) const
 
 // Slip of a contact node relative to the tool in an increment: its motion
 // along l minus the tool's.
-double ContactSet::Slip(PetscInt node, const Vec2 &u, double dU) const
+double ContactSet::SlipFrom(PetscInt node, const Vec2 &u, double dU, const Vec2 &x) const
 {
-  return Dot(u, l_[node]) - Dot(Motion(node, dU), l_[node]);
+  return Dot(u, l_[node]) - Dot(MotionAt(node, dU, x), l_[node]);
 }
 
 void ContactSet::Remove()
@@ -309,7 +309,9 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
     for (int k = 0; k < 2; ++k) pending_[node][k] *= 1 - r;
     if (contact_[node]) {
       const double fl_old = friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]);
-      const double dx = Slip(node, Increment(d, node), dU);
+      // (the body has moved: the tool's point where the node touched it at the step's start, as the solve took it)
+      const Vec2 u = Increment(d, node), p = Position(node);
+      const double dx = SlipFrom(node, u, dU, {p[0] - u[0], p[1] - u[1]});
       fn_[node] += NormalIncrement(node, r * NormalReaction(node, react), dx, dU);
       if (SlipFree(node)) {
         x_[node] = friction::Cap(x_[node] + dx, prm_.vcri);

@@ -59,7 +59,7 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                      kMaxPathPoints, opt.die_path_turn));
   PetscCall(RealList(PetscOptionsObject, read, "-die_pivot",
                      "squaring: the point x,y (mm, where the die starts; default 0,0: the tube's centre) the upper "
-                     "die turns about under -die_path_turn, moving with it; its tool_moment is about it",
+                     "die turns about under -die_path_turn (needs it), moving with it; its tool_moment is about it",
                      2, opt.die_pivot));
   PetscCall(
     ChooseWord(PetscOptionsObject, read, "-full_hold",

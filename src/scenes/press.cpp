@@ -113,7 +113,7 @@ public:
     std::vector<SurfacePoint> outer;
     PetscCall(GatherOuter(m, outer));
     path_.Guide(tools.tools[kUpper]); // (-die_path: a path of its own, to move back along before the offset)
-    if (!opt_.die_path_turn.empty() || !opt_.die_pivot.empty()) tools.tools[kUpper].origin = DiePivot(opt_);
+    if (!opt_.die_path_turn.empty()) tools.tools[kUpper].origin = DiePivot(opt_);
     if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
     tools.tools[kUpper].pad = opt_.die_force > 0;
     for (size_t k = SideDie(); opt_.side_force > 0 && k < tools.tools.size(); ++k) tools.tools[k].pad = true;

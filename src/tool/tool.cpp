@@ -249,7 +249,9 @@ Outline ToolOutline(const Tool &t)
       const int n = std::max(1, (int)std::ceil((s.t1 - s.t0) / kOutlineStep));
       for (int k = 0; k <= n; ++k) {
         const double a = s.t0 + (s.t1 - s.t0) * k / n;
-        o.points.push_back(t.Placed(Add(s.c, {s.radius * std::cos(a), s.radius * std::sin(a)})));
+        const Vec2 e = {s.radius * std::cos(a), s.radius * std::sin(a)};
+        // (a die that does not turn: the sums in their order before turns, so its outline keeps its last bits)
+        o.points.push_back(t.Turn() == 0 ? Add(s.c, Add(t.Offset(), e)) : t.Placed(Add(s.c, e)));
       }
     }
     for (int k = first; k + 1 < (int)o.points.size(); ++k) o.lines.push_back({k, k + 1});

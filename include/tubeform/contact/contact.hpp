@@ -288,16 +288,18 @@ private:
   double ForceAlong(PetscInt node, double fn, double fl) const;
   // Tool k's stroke increment in a step of the scene's stroke dU (a force-controlled tool: its own).
   double Step(int k, double dU) const { return tools_[k].pad ? pad_step_ : dU; }
-  // The motion in that step of the tool's point where a node touches it (Tool::Velocity: a turning tool's point
-  // moves about its centre too; taken linear in the step, as the body's rotations are).
-  Vec2 Motion(PetscInt node, double dU) const
+  // The motion in that step of the tool's point where a node at x touches it (Tool::Velocity: a turning tool's
+  // point moves about its centre too; taken linear in the step, as the body's rotations are).
+  Vec2 MotionAt(PetscInt node, double dU, const Vec2 &x) const
   {
     const double s = Step(tool_of_[node], dU);
     const Tool &t = tools_[tool_of_[node]];
     if (t.spin == 0) return {s * Direction(node)[0], s * Direction(node)[1]};
-    const Vec2 v = t.Velocity(Position(node));
+    const Vec2 v = t.Velocity(x);
     return {s * v[0], s * v[1]};
   }
+  // The same for the node where it is (the step's start, before the body's commit).
+  Vec2 Motion(PetscInt node, double dU) const { return MotionAt(node, dU, Position(node)); }
   // How far the tool a node touches turns in that step (radians): its frame turns with it.
   double TurnIn(PetscInt node, double dU) const { return tools_[tool_of_[node]].spin * Step(tool_of_[node], dU); }
   Vec2 Increment(const PetscScalar *d, PetscInt node) const;
@@ -306,7 +308,10 @@ private:
   // and slip s in a step dU: the reaction less the turning of the friction force on arcs and with a turning tool
   // (friction::NormalIncrement, with the friction force of the iterate).
   double NormalIncrement(PetscInt node, double reaction_n, double s, double dU) const;
-  double Slip(PetscInt node, const Vec2 &u, double dU) const;
+  // The slip of a node that moves by u in a step dU from x (the step's start; Position(node) before the body's
+  // commit), relative to the tool's point there.
+  double SlipFrom(PetscInt node, const Vec2 &u, double dU, const Vec2 &x) const;
+  double Slip(PetscInt node, const Vec2 &u, double dU) const { return SlipFrom(node, u, dU, Position(node)); }
 };
 
 } // namespace tf

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "tubeform/core/core.hpp"
@@ -19,9 +20,11 @@ class ToolPath {
 public:
   ToolPath() = default;
   // Through `points` in turn after the start (0, 0), turned there by `turns` (radians, counter-clockwise; none:
-  // no turn) after the start's 0; consecutive points distinct in place or turn (the options' check).
+  // no turn) after the start's 0, a turn counted at `reach` (> 0 with turns); consecutive points distinct in place
+  // or turn (the options' check).
   explicit ToolPath(const std::vector<Vec2> &points, const std::vector<double> &turns = {}, double reach = 0)
   {
+    if (!turns.empty() && !(reach > 0)) throw std::invalid_argument("ToolPath: turns need a reach > 0");
     to_ = {{0.0, 0.0}};
     to_.insert(to_.end(), points.begin(), points.end());
     turn_.assign(to_.size(), 0.0);
