@@ -20,9 +20,11 @@ D. Equilibrium of the tube at every loading increment, as tests/check_die_path.p
    couple, within n_contact (residual + fn_mismatch) (times ro for the moment); on 1 and 2 ranks.
 E. The mirrored press (x -> -x and the turns' signs flipped) is the mirror image, and 2 ranks the same press, at
    the path's points and the springback's end: load, extents, internal work the same, the sideways force, the
-   die's moment and the hold's couple of opposite sign in the mirror, within 1e-3 of the load (of the load times
-   ro for the moments, of ro for the extents): tests/check_die_path.py E's bound, derived there (ten times what a
-   perturbation of 1.3e-13 in E moves the full model under the hold).
+   die's moment and the hold's couple of opposite sign in the mirror, within 7e-3 of the load (of the load times
+   ro for the moments, of ro for the extents): ten times what a perturbation of 1.3e-13 in E moves this press
+   (-material_e 75000.00000000975 and 74999.99999999025: 9.9e-5 and 6.4e-4, the hold's couple; the full model
+   under the hold sways by round-off, as in tests/check_die_path.py E, more here where the die turns). Measured:
+   the mirror 4.6e-4, 2 ranks 3.7e-4 (1.1e-3 on another OpenBLAS kernel).
 F. A checkpoint inside the turning piece, continued: the history within 1e-12 (tests/check_restart.py's bound):
    the turn follows from the stroke, not from a state.
 G. Each increment turns the die by at most -rmin_domega (the tool's turn is linear in a step, as the body's
@@ -35,8 +37,9 @@ H. A frictionless roller (an arc of radius 5 mm about 0,22.5 under a rising line
    in place about its centre by 10 degrees, both ways (10 trial increments: a trial step would turn it by 2.9e-2
    rad): its surface does not move, so the tool's own r3 cuts the turn's increments at 1e-2 rad (1e-9 of it; the
    tube's elements do not turn, so nothing else can); the two ways give the same press (load, extents, works,
-   C/t within 1e-12 of each column's largest value: nothing may depend on the way a frictionless roller turns;
-   measured 1e-13); over the turn the load moves by no more than the equilibrium iterations may still settle
+   C/t within 5e-11 of each column's largest value: nothing may depend on the way a frictionless roller turns but
+   round-off, bounded by ten times the press's response to a 1.3e-13 perturbation of E, 4.6e-12; measured
+   1.4e-13, 5.5e-12 with OPENBLAS_CORETYPE=Haswell); over the turn the load moves by no more than the equilibrium iterations may still settle
    (-equilibrium_tol 0.005 of q_avg at each contact node; measured 2.7e-6 N/mm against 0.17) and the die does no
    work (1e-12 of the work: the normal forces pass through the centre). A centre taken wrong pushes the tube.
 """
@@ -52,6 +55,11 @@ RO = 17.5
 PIVOT = (0.0, 24.75)
 DOMEGA = 1e-2  # -rmin_domega's default (rad)
 FINE = 1e-3  # a bound the press's other events do not keep the die's turn within (its steps reach 2.4e-3 rad)
+# H's two ways of turning differ by the round-off of the turned geometry (cos and sin of +-theta): ten times what a
+# perturbation of 1.3e-13 in E moves the roller's press (-material_e 75000.00000000975 and 74999.99999999025: the
+# load, works and lower_fy by up to 4.6e-12 of their largest values).
+ROUND_OFF = 5e-11
+SWAY = 7e-3  # E: ten times this press's response to that perturbation of E (6.4e-4 of the load x ro, hold_moment)
 BASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src}/options/preset-fast.opts",
         "-progress", 0, "-error_estimate", 0, "-unload", "reverse", "-lower_die_motion", "fixed"]
 SIDE = [0.0, -2.0, 0.3, -2.4, 0.3, -2.8]
@@ -157,7 +165,7 @@ def marks(t):
 for name, sign, label in (("mirror", -1, "the press mirrored is the mirror image"), ("turn_np2", 1, "2 ranks")):
     w, c = at_rows(r, h[name], marks(r), marks(h[name]), sign, RO,
                    ("tool_fx", "lower_fx", "tool_moment", "hold_moment"))
-    k.check(w <= 1e-3, f"E. {label}: within {w:.1e} ({c}; 1e-3)")
+    k.check(w <= SWAY, f"E. {label}: within {w:.1e} ({c}; {SWAY:g})")
 
 # F. A restart inside the turning piece.
 ck = out("turn_ck.h5")
@@ -188,7 +196,7 @@ at_bound = np.abs(np.diff(t)[turning - 1] - DOMEGA) <= 1e-9 * DOMEGA
 k.check(cut.sum() >= len(turning) - 1 and (cut == at_bound).all(), f"H. the roller's turn: {cut.sum()} of its "
         f"{len(turning)} increments cut by its own r3 at {DOMEGA:g} rad (the rest the piece's end)")
 w, c = worst(a, b, ["load", "x_max", "y_max", "w_int", "w_ext", "lower_fy", "c_over_t"])
-k.check(w <= 1e-12, f"H. turning it the other way changes nothing: within {w:.1e} ({c}; 1e-12)")
+k.check(w <= ROUND_OFF, f"H. turning it the other way changes nothing: within {w:.1e} ({c}; {ROUND_OFF:g})")
 s, e = turning[0] - 1, turning[-1]
 settle = a["n_contact"][s] * 0.005 * a["q_avg"][s]  # (-equilibrium_tol 0.005 of q at each contact node)
 dload, dwork = abs(a["load"][e] - a["load"][s]), abs(a["w_ext"][e] - a["w_ext"][s]) / a["w_ext"][s]
