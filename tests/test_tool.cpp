@@ -184,7 +184,7 @@ void CheckTurningPath()
 {
   const ToolPath path({{0, -2}, {0, -2}}, {0.1, 0.0}, 10.0);
   const double first = 0.5 * std::hypot(2.0, 1.0); // (the first piece: 2 down and 10 x 0.1 of turn)
-  CHECK(path.turns() && std::abs(path.end() - (first + 0.5)) < 1e-15 && path.Turns().size() == 1);
+  CHECK(std::abs(path.end() - (first + 0.5)) < 1e-15 && path.Turns().size() == 1);
   CHECK(std::abs(path.Turn(first) - 0.1) < 1e-15 && std::abs(path.Turn(first + 0.25) - 0.05) < 1e-15);
   CHECK(std::abs(path.Spin(0) - 0.1 / first) < 1e-15 && std::abs(path.Spin(first) + 0.2) < 1e-15);
   Tool plate = BuildFlatPlate(1.0, -5.0, 5.0);

@@ -226,9 +226,7 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
              "-die_offset %g: the squaring scene's die (a plate off the axis is the same plate)", opt.die_offset);
   char off_axis[64] = "-die_path"; // (what puts the die off the axis, named in the errors)
   if (opt.die_offset != 0) std::snprintf(off_axis, sizeof off_axis, "-die_offset %g", opt.die_offset);
-  bool sideways = false;
-  for (const Vec2 &p : DiePathPoints(opt)) sideways = sideways || p[0] != 0;
-  if (opt.die_offset == 0 && !sideways) std::snprintf(off_axis, sizeof off_axis, "-die_path_turn");
+  if (opt.die_offset == 0 && !DiePathSideways(opt)) std::snprintf(off_axis, sizeof off_axis, "-die_path_turn");
   PetscCheck(!DieOffAxis(opt) || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
              "%s: a die off the axis breaks the tube's mirror symmetry; use -model full (or auto)", off_axis);
   PetscCheck(opt.full_hold != "rotation" || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,

@@ -43,6 +43,11 @@ Vec2 Tool::Oriented(const Vec2 &v) const
   return t == 0 ? v : Rotated(v, std::cos(t), std::sin(t));
 }
 
+Vec2 Tool::Drawn(const Vec2 &x, double c, double s) const
+{
+  return Add(origin, Rotated(Sub(x, Add(origin, Offset())), c, -s));
+}
+
 Vec2 Tool::Velocity(const Vec2 &x) const
 {
   if (spin == 0) return direction;
@@ -56,10 +61,9 @@ Projection Tool::Project(const Vec2 &x) const
   if (t == 0) return ProjectDrawn(x, Offset());
   // In the drawing: x turned back about the frame's origin where it now is; the projection turned forward.
   const double c = std::cos(t), s = std::sin(t);
-  const Vec2 centre = Add(origin, Offset());
-  Projection p = ProjectDrawn(Add(origin, Rotated(Sub(x, centre), c, -s)), {0, 0});
+  Projection p = ProjectDrawn(Drawn(x, c, s), {0, 0});
   if (p.segment < 0) return p;
-  p.point = Add(centre, Rotated(Sub(p.point, origin), c, s));
+  p.point = Add(Add(origin, Offset()), Rotated(Sub(p.point, origin), c, s));
   p.n = Rotated(p.n, c, s), p.l = Rotated(p.l, c, s);
   return p;
 }
@@ -102,9 +106,8 @@ double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
   // Relative motion in the tool's frame: y(r) = x - off + r (dx - dU direction).
   if (t == 0 && spin == 0) return FirstContactDrawn(Sub(x, Offset()), Sub(dx, Scale(direction, dU)));
   // Turning: the same in the drawing, x's motion relative to the tool's point there (Velocity) turned back.
-  const double c = std::cos(t), s = std::sin(-t);
-  const Vec2 centre = Add(origin, Offset());
-  return FirstContactDrawn(Add(origin, Rotated(Sub(x, centre), c, s)), Rotated(Sub(dx, Scale(Velocity(x), dU)), c, s));
+  const double c = std::cos(t), s = std::sin(t);
+  return FirstContactDrawn(Drawn(x, c, s), Rotated(Sub(dx, Scale(Velocity(x), dU)), c, -s));
 }
 
 double Tool::FirstContactDrawn(const Vec2 &y0, const Vec2 &dy) const

@@ -293,9 +293,7 @@ private:
   Vec2 MotionAt(PetscInt node, double dU, const Vec2 &x) const
   {
     const double s = Step(tool_of_[node], dU);
-    const Tool &t = tools_[tool_of_[node]];
-    if (t.spin == 0) return {s * Direction(node)[0], s * Direction(node)[1]};
-    const Vec2 v = t.Velocity(x);
+    const Vec2 v = tools_[tool_of_[node]].Velocity(x);
     return {s * v[0], s * v[1]};
   }
   // The same for the node where it is (the step's start, before the body's commit).

@@ -200,14 +200,20 @@ inline double Travel(const Options &opt)
   for (double u : opt.stroke_path) travel += std::abs(u - at), at = u;
   return travel;
 }
+// -die_path moves the die sideways somewhere.
+inline bool DiePathSideways(const Options &opt)
+{
+  for (const Vec2 &p : DiePathPoints(opt))
+    if (p[0] != 0) return true;
+  return false;
+}
 // The first pass's upper die leaves the press's y axis: -die_offset, or a -die_path with a sideways motion or a
 // turn.
 inline bool DieOffAxis(const Options &opt)
 {
-  bool sideways = false;
-  for (const Vec2 &p : DiePathPoints(opt)) sideways = sideways || p[0] != 0;
-  for (double a : opt.die_path_turn) sideways = sideways || a != 0;
-  return opt.die_offset != 0 || sideways;
+  bool turned = false;
+  for (double a : opt.die_path_turn) turned = turned || a != 0;
+  return opt.die_offset != 0 || DiePathSideways(opt) || turned;
 }
 
 // The second pass's turn of the tube in quarter turns (-pass2_turn / 90, rounded), and whether it is whole.

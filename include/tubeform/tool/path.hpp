@@ -51,20 +51,9 @@ public:
   double Turn(double s) const
   {
     const size_t k = Piece(s);
-    return turn_[k] + (s - at_[k]) * Spin(s);
+    return turn_[k] + (s - at_[k]) * TurnSlope(k);
   }
-  double Spin(double s) const
-  {
-    const size_t k = Piece(s);
-    return (turn_[k + 1] - turn_[k]) / (at_[k + 1] - at_[k]);
-  }
-  // Whether the path turns the tool anywhere.
-  bool turns() const
-  {
-    for (double t : turn_)
-      if (t != 0) return true;
-    return false;
-  }
+  double Spin(double s) const { return TurnSlope(Piece(s)); }
   // The strokes of the inner points (where the motion turns).
   std::vector<double> Turns() const
   {
@@ -102,6 +91,7 @@ private:
     while (k + 2 < at_.size() && s >= at_[k + 1] - kAtPoint * at_.back()) ++k;
     return k;
   }
+  double TurnSlope(size_t k) const { return (turn_[k + 1] - turn_[k]) / (at_[k + 1] - at_[k]); }
   Vec2 Slope(size_t k) const
   {
     const double ds = at_[k + 1] - at_[k];

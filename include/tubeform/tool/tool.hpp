@@ -75,6 +75,8 @@ public:
   double FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const;
 
 private:
+  // The point of the drawing now at x, for a tool turned by the angle of cosine c and sine s (Placed's inverse).
+  Vec2 Drawn(const Vec2 &x, double c, double s) const;
   Projection ProjectDrawn(const Vec2 &x, const Vec2 &off) const;
   double FirstContactDrawn(const Vec2 &y0, const Vec2 &dy) const;
 };
