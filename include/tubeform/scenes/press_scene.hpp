@@ -1,0 +1,132 @@
+// The press scene (squaring and flattening): the class its two files share (src/scenes/press.cpp: the load
+// path, stages, dies and loads; press_results.cpp: what it measures and keeps for a restart).
+#pragma once
+
+#include <cmath>
+
+#include "tubeform/scenes/common.hpp"
+#include "tubeform/scenes/die.hpp"
+#include "tubeform/scenes/hold.hpp"
+#include "tubeform/scenes/scene.hpp"
+#include "tubeform/scenes/stroke_path.hpp"
+
+namespace tf {
+
+class PressScene : public Scene {
+public:
+  PressScene(const Options &opt, bool squaring);
+
+  std::vector<std::string> BoundarySets() const override
+  {
+    if (full_) return {"inner", "outer"};
+    if (half_) return {"inner", "outer", "x0"};
+    return {"inner", "outer", "x0", "y0"};
+  }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh, Part()); }
+  std::string MeshLayout(const Options &opt) const override
+  {
+    return Scene::MeshLayout(opt) + (full_   ? " (the full model: four times that around)"
+                                     : half_ ? " (the half model: twice that around)"
+                                             : "");
+  }
+  LoadPath Path(const Options &opt) const override;
+  // Stages by the lambda an increment starts at: 0 press, 1 release, 2 press (the second pass), 3 release.
+  static int StageAt(double lambda) { return (int)std::floor(lambda + kLambdaTol); }
+  bool Unloading(double lambda) const override { return StageAt(lambda) % 2 == 1; }
+  // The quarter model carries half the punch load of the full tube (the
+  // other half pushes the left quarter), moving by U; the half model carries
+  // half of it on each die, closing by 2 U; the full model all of it on each
+  // die. The reversed loads of the paper's unloading do no work along the stroke.
+  double LoadWorkShare(double lambda) const override
+  {
+    return Unloading(lambda) && opt_.unload == "reverse" ? 0.0 : full_ ? 2.0 : half_ ? 1.0 : 0.5;
+  }
+  // Each die's force over its own travel (scenes/common.cpp).
+  double ToolWork(const HistoryRow &prev, const HistoryRow &row, double) const override;
+  // The stroke of the dies in place: the first pass's, then (once its dies are set up) the second's.
+  double ToolStroke(double lambda) const override;
+
+  // Force control: the model's half of the punch load, rising to -die_force over the press; or the side dies'
+  // force in the model (-side_force).
+  double ToolForce(double lambda) const override;
+  PetscErrorCode Initialize(Model &m, ContactSpec &tools) override;
+  PetscErrorCode BeginStage(Model &m, double lambda) override;
+  PetscErrorCode BeginIncrement(Model &m, double lambda) override;
+  PetscErrorCode Load(Model &m, double lambda, double dlambda) override;
+  PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) override;
+  PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override;
+  std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const override;
+  PetscErrorCode Persist(Model &m, Archive &ar) override;
+  ~PressScene() override { (void)VecDestroy(&reversed_); }
+
+private:
+  // VCRI as a fraction of the outer nodes' spacing: a micro-slip far below an
+  // element, so that sticking nodes hold (docs/theory.md, "The law").
+  static constexpr double kVcriOfSpacing = 0.02;
+  // Where the load path's releases begin (lambda): each pass takes one unit of it to press and one to release.
+  static constexpr double kFirstRelease = 1.0, kSecondPress = 2.0, kSecondRelease = 3.0;
+  // The tools' places in the contact set.
+  static constexpr int kUpper = 0, kLower = 1;
+  // The right side die's place (-side_die): after the lower die of the half and full models.
+  int SideDie() const { return half_ ? kLower + 1 : kLower; }
+  Options opt_;
+  bool squaring_;
+  bool half_;                      // the half model x >= 0 with both dies (or the full model)
+  bool full_;                      // the full model: the whole tube, both dies across the y axis
+  bool side_dies_[2];              // each pass has side dies (-side_die, -pass2_side_die)
+  double stroke2_ = 0;             // the second pass's stroke (0: one pass)
+  PetscInt pass_ = 0;              // the pass whose dies are in place
+  double floor_y_ = 0;             // where the floor of the pass in place is
+  std::vector<double> start_back_; // how far back along its motion each second-pass die starts (StartOnTube)
+  ContactSpec spec_;               // the contact set's nodes, supports and law (for the second pass's dies)
+  PetscInt pin_ = -1;              // the half model's springback: the local node whose press y is held (-1: none here)
+  bool pinned_ = false;            // the pin holds (every rank alike)
+  bool held_[2];                   // the full model's pass held by the rotation hold (not its pins) while pressing
+  RotationHold hold_;
+  double stroke_ = 0, back_ = 0;
+  StrokePath path_;           // the first press's (-stroke_path, or straight to the stroke)
+  int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
+  bool unloading_ = false;
+  Vec reversed_ = nullptr;
+  double reversed_total_[2] = {0, 0};
+  double reversed_moment_ = 0;   // of the reversed forces about the tool frame's origin (TotalForce)
+  long side_ends_[2] = {-1, -1}; // input node numbers of the side's ends (latest loading state)
+
+  // The end of the release stage under way (the load path: press 0-1, release 1-2, press 2-3, release 3-4):
+  // the reversed loads fall to zero there.
+  double ReleaseEnd() const { return pass_ == 1 ? kSecondRelease + 1 : kFirstRelease + 1; }
+
+  // Collective: the dies of a pass; the floor under the tube's lowest point (kept for a restart).
+  PetscErrorCode PassTools(Model &m, int pass, std::vector<Tool> &tools);
+  // (the floor's y in the pass's press frame; the dies drawn there, then turned with the tube: PassMap)
+  PetscErrorCode PassTools(Model &m, int pass, double floor_y, std::vector<Tool> &tools);
+
+  // The second pass's dies where they start (drawn on floor_y_, moved back by start_back_) and, in the full
+  // model, its pins on the press's axis, and the held directions the contact set keeps (`symmetry`): the pass's
+  // start (BeginStage) and a restart inside it (Persist) alike.
+  PetscErrorCode SecondPass(Model &m, std::vector<Tool> &tools, std::vector<std::pair<std::string, Vec2>> &symmetry);
+
+  TurnMap PassMap(int pass) const { return PassTurn(opt_, pass, half_, full_); }
+  // The history's U at lambda: the force-controlled die's own, the second pass's after the first's, -die_path's.
+  double Stroke(Model &m, double lambda) const;
+  // The rotation hold holds the pass in place (its nodes fixed, holding the slide too, until the dies hold it).
+  bool Holding() const { return held_[pass_] && !unloading_; }
+  // The tube's coordinates into the frame of the press in place (its die moving along -y).
+  TurnMap Press() const { return PassMap(pass_).Inverse(); }
+  // The full model's pins hold the tube along the press's x.
+  Vec2 AxisHeld() const { return PassMap(pass_)({1, 0}); }
+  // The nodes whose direction the contact set keeps: the quarter's and the half's symmetry planes (the half tube
+  // between both dies is mirrored about the y axis only), the full model's pins (the rotation hold's: inner nodes).
+  std::vector<std::pair<std::string, Vec2>> Symmetry() const;
+
+  // The half and full models' springback: one node holds the tube's rigid motion along the press's y
+  // (scenes/pins.cpp).
+  PetscErrorCode ChoosePin(Model &m);
+  // The punch load per vertical force of the model on the upper die: the quarter and the half model carry half.
+  double LoadPerModelForce() const { return full_ ? 1.0 : 2.0; }
+  TubePart Part() const { return full_ ? TubePart::Full : half_ ? TubePart::Half : TubePart::Quarter; }
+
+  PetscErrorCode Shape(Model &m, double, HistoryRow &row);
+};
+
+} // namespace tf

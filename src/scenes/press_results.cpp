@@ -1,0 +1,113 @@
+// What the press scene measures (include/tubeform/scenes/press_scene.hpp): its history row, its final metrics,
+// its state for a checkpoint.
+#include "tubeform/scenes/press_scene.hpp"
+
+#include "tubeform/scenes/press_shape.hpp"
+
+namespace tf {
+
+double PressScene::ToolWork(const HistoryRow &prev, const HistoryRow &row, double) const
+{
+  return PressToolWork(Part(), opt_.lower_die_motion == "fixed", prev, row);
+}
+
+PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRow &row)
+{
+  double force[2], moment;
+  PetscFunctionBeginUser;
+  row.stroke = Stroke(m, lambda);
+  row.die_x = pass_ == 0 ? path_.Sideways(ToolStroke(lambda)) : 0.0; // (-die_path)
+  row.die_turn = pass_ == 0 ? path_.Turn(ToolStroke(lambda)) : 0.0;
+  if (unloading_) {
+    for (int k = 0; k < 2; ++k) force[k] = (ReleaseEnd() - lambda) * reversed_total_[k];
+    moment = (ReleaseEnd() - lambda) * reversed_moment_;
+  } else
+    PetscCall(m.contact->TotalForce(kUpper, force, &moment));
+  // (in the press's frame: a turned pass's die presses along its -y)
+  Vec2 f = Press()({force[0], force[1]});
+  row.load = -LoadPerModelForce() * f[1]; // (the punch load on the whole tube)
+  row.tool_fx = -f[0], row.tool_fy = -f[1], row.tool_moment = -Press().det() * moment;
+  // (the side dies' travel: the stroke, through the springbacks too, or their own under -side_force)
+  if (side_dies_[0] || side_dies_[1])
+    row.side_stroke = opt_.side_force > 0 ? m.contact->tool(SideDie()).stroke : row.stroke;
+  if (side_dies_[pass_] && !unloading_) {
+    // (the right side die: whole in the half and full models, its upper half in the quarter)
+    // (its force along the press's x: a turned pass's side die presses along the press's -x)
+    PetscCall(m.contact->TotalForce(SideDie(), force, nullptr));
+    row.side_load = -(half_ ? 1.0 : 2.0) * Press()({force[0], force[1]})[0];
+  }
+  if (half_ && !unloading_) {
+    PetscCall(m.contact->TotalForce(kLower, force, &moment));
+    f = Press()({force[0], force[1]});
+    row.lower_fx = -f[0], row.lower_fy = -f[1], row.lower_moment = -Press().det() * moment;
+  }
+  hold_.SeeLoad(row.load); // (the warning's floor: the largest load so far)
+  if (Holding() && !hold_.pins()) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
+  if (held_[pass_] && unloading_) // (what the springback's pins carry; scenes/hold.hpp)
+    PetscCall(hold_.SupportMoment(m, f_int, reversed_, ReleaseEnd() - lambda, pinned_ ? pin_ : -1, row.hold_moment));
+  PetscCall(OuterExtents(m, row, Part(), Press()));
+  PetscCall(Shape(m, lambda, row));
+  row.stage = StageOf(lambda);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+std::vector<std::pair<std::string, double>> PressScene::FinalMetrics(const History &h) const
+{
+  std::vector<std::pair<std::string, double>> m = PassMetrics(h);
+  const bool forced = opt_.die_force > 0;
+  m.push_back({forced ? "final_force_target" : "final_stroke_target", forced ? opt_.die_force : stroke_});
+  if (stroke2_ > 0) m.push_back({"pass2_stroke_target", stroke2_});
+  return m;
+}
+
+PetscErrorCode PressScene::Persist(Model &m, Archive &ar)
+{
+  PetscFunctionBeginUser;
+  ar.Group("/scene");
+  PetscCall(ar.Value("unloading", unloading_));
+  PetscCall(ar.Value("pass", pass_));
+  PetscCall(hold_.Persist(ar));
+  PetscCall(ar.Value("floor_y", floor_y_));
+  PetscCall(ar.Values("pass2_back", start_back_));
+  if (ar.reading() && pass_ == 1) {
+    // A restart in the second pass: its dies' shapes for the contact set (its state, strokes included, read),
+    // a turned tube's pins.
+    std::vector<Tool> tools;
+    std::vector<std::pair<std::string, Vec2>> symmetry;
+    PetscCall(SecondPass(m, tools, symmetry));
+    m.contact->ReplaceTools(std::move(tools));
+    if (!symmetry.empty()) m.contact->SetSymmetry(symmetry);
+  }
+  // The springback's total force and moment and the side C is measured on (from the loading).
+  std::vector<double> pairs = {reversed_total_[0], reversed_total_[1], (double)side_ends_[0], (double)side_ends_[1],
+                               reversed_moment_};
+  PetscCall(ar.Values("reversed_total_side_ends_moment", pairs));
+  PetscCheck(pairs.size() == 5, m.comm, PETSC_ERR_USER_INPUT,
+             "%s: /scene/reversed_total_side_ends_moment is not 5 numbers", ar.path().c_str());
+  reversed_total_[0] = pairs[0], reversed_total_[1] = pairs[1];
+  side_ends_[0] = (long)pairs[2], side_ends_[1] = (long)pairs[3];
+  reversed_moment_ = pairs[4];
+  PetscCall(ar.Value("pinned", pinned_));
+  if (pinned_ && ar.reading()) PetscCall(ChoosePin(m));
+  if (!unloading_) PetscFunctionReturn(PETSC_SUCCESS);
+  // The reversed contact forces: contributions of the owned nodes.
+  if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
+  std::vector<double> f(2 * m.mesh.num_nodes);
+  PetscScalar *a;
+  PetscCall(VecGetArray(reversed_, &a));
+  for (PetscInt n = 0; n < m.mesh.num_nodes && !ar.reading(); ++n)
+    for (int k = 0; k < 2; ++k) f[2 * n + k] = PetscRealPart(a[m.mesh.node_dof[n] + k]);
+  PetscCall(ar.NodeData("reversed", f, 2, true));
+  for (PetscInt n = 0; n < m.mesh.num_nodes && ar.reading(); ++n)
+    for (int k = 0; k < 2; ++k) a[m.mesh.node_dof[n] + k] = f[2 * n + k];
+  PetscCall(VecRestoreArray(reversed_, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode PressScene::Shape(Model &m, double, HistoryRow &row)
+{
+  const PressShapeState state{squaring_, half_, unloading_, pass_ == 1, flank_, apex_, opt_.tube_t, Press()};
+  return PressShape(m, state, side_ends_, row);
+}
+
+} // namespace tf
