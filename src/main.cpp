@@ -78,9 +78,11 @@ static PetscErrorCode Companion(const tf::Options &opt, std::vector<tf::HistoryR
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(failed);
+  const std::string mesh = opt.mesh_file.empty() ? tf::Formatted("%d x %d cells", (int)c.mesh_nt, (int)c.mesh_ntheta)
+                                                 : "the mesh file's cells";
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,
-                        "tubeform: companion run for the error estimate: %d x %d cells, %d trial increments (%.1f s)\n",
-                        (int)c.mesh_nt, (int)c.mesh_ntheta, (int)c.increments, MPI_Wtime() - t0));
+                        "tubeform: companion run for the error estimate: %s, %d trial increments (%.1f s)\n",
+                        mesh.c_str(), (int)c.increments, MPI_Wtime() - t0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -41,7 +41,8 @@ F. A second pass turned by a quarter turn after a first one over a flat floor (`
    D-shaped tube is pressed off its centre by dies touching it at a few nodes): the run warns that the real
    tube may turn, at the first row where the history's hold_moment exceeds hold_friction by more than the
    couple the method resolves (1e-3 of the largest load so far times Ro: its equilibrium tolerance).
-G. A second pass turned by 45 degrees (`-pass2_turn 45`, U = 2 mm then 1.5 mm, on a mesh of 67 elements a quarter
+G. A second pass turned by 45 degrees (`-pass2_turn 45`, U = 2 mm, then the dies from where they touch the turned
+   tube, 1.57 mm back, to U = 0.1 mm, on a mesh of 67 elements a quarter
    around so that no node lies on the turned axes: the hold's nodes and the springback's pins are those nearest
    them, with node frames along the turned press): the first pass's V-dies leave the tube symmetric about its x
    and y axes, not its diagonals, so the second presses it off its press's axis. B's balance in that pass (both
@@ -78,7 +79,8 @@ BASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src
         "-progress", 0, "-error_estimate", 0, "-stroke", 1.5, "-unload", "reverse"]
 TWO = BASE[:-4] + ["-stroke", 2, "-pass2_stroke", 2]
 # (67 elements a quarter around: a node every 90/67 degrees, none on the 45-degree axis)
-ODD = TWO[:-1] + [1.5, "-mesh_ntheta", 67]
+# (the second pass's dies start 1.57 mm back, where the turned square's corners reach; they press 1.67 mm to U = 0.1)
+ODD = TWO[:-1] + [0.1, "-mesh_ntheta", 67]
 RUNS = {"right": BASE + ["-die_offset", E], "left": BASE + ["-die_offset", -E],
         "short": BASE[:-4] + ["-stroke", 0.33, "-die_offset", E],
         "turned": TWO + ["-lower_die", "flat", "-pass2_turn", 90],
@@ -177,11 +179,12 @@ k.check(same and worst <= 1e-12 and 0.2 < lam < 1.0,
 # F. A turned second pass off its press's axis.
 def second_pass_balance(name, label):
     """B's balance in the second pass of RUNS[name] (U1 = 2 mm), the dies' frame origins on the press's y axis:
-    each moved back to the tube as the run printed (0 if not), then along its motion by the pass's stroke."""
+    each moved back to the tube as the run printed (0 if not), then along its motion by the pass's travel."""
     t, text = history(f"{name}.h5"), procs[name].stdout
-    back = [re.search(rf"pass2-{d} starts ([0-9.e+-]+) mm back", text) for d in ("V-die", "lower-V-die")]
+    back = [re.search(rf"pass2-{d} starts at U = [0-9.e+-]+ mm, ([0-9.e+-]+) mm back", text) for d in ("V-die", "lower-V-die")]
     b_up, b_low = (float(m.group(1)) if m else 0.0 for m in back)
-    U2 = t["stroke"] - 2.0
+    # (the dies' travel; the history's stroke is the upper die's position)
+    U2 = t["stroke"] + b_up
     # (the rows the hold holds: before the dies hold the slide the pins do, and the hold reports nothing)
     pinned = (t["stage"] == 2) & (t["hold_moment"] == 0) & (t["hold_friction"] == 0)
     second = (t["stage"] == 2) & ~pinned

@@ -172,8 +172,8 @@ def stage_end(h, stage, col):
 
 
 twice = press("models_twice.h5")
-k.check(sorted(set(twice["stage"].astype(int))) == [0, 1, 2, 3] and abs(twice["stroke"][-1] - 2 * U) < 1e-12,
-        "two passes: stages 0-3 in the history, the stroke summed over the passes")
+k.check(sorted(set(twice["stage"].astype(int))) == [0, 1, 2, 3] and abs(twice["stroke"][-1] - U) < 1e-12,
+        "two passes: stages 0-3 in the history, the second pass's stroke the die's position, ending at -pass2_stroke")
 dl = abs(stage_end(twice, 2, "load") / stage_end(twice, 0, "load") - 1)
 dc = abs(stage_end(twice, 2, "c_over_t") - stage_end(twice, 0, "c_over_t"))
 dx = max(abs(stage_end(twice, 2, c) - stage_end(twice, 0, c)) for c in ("x_max", "y_max"))

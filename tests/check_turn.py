@@ -38,7 +38,7 @@ E. An oval pre-form, then the square die (options/oval_then_square.opts on the f
    (C's bound; measured 2.9e-9 mm, the contact set's start tolerance; ClearanceBack's closed forms:
    tests/test_tool.cpp), touching the tube in the second press's first increment; a checkpoint inside that
    press continued as D's; the V-dies square the oval, the process's purpose: C1/C2 after springback at least
-   half-way nearer 1 than the oval's (measured 0.770 -> 0.992).
+   half-way nearer 1 than the oval's (measured 1.2996 -> 0.9903: C1/C2 = x_max / y_max in the press's frame).
 F. A quarter turn, then the V-die over a floor (-pass2_lower_die flat): -model auto takes the full model (the
    half's plane x = 0 is no symmetry plane of the turned press), and the displacement after the second
    springback is mirror-symmetric about the turned press's axis, the tube's x axis, within 1e-8 of its largest
@@ -141,7 +141,7 @@ apex_h = RO * np.sqrt(2)
 surface = np.where(xs >= R_APEX / np.sqrt(2), apex_h - xs,
                    apex_h - R_APEX * np.sqrt(2) + np.sqrt(np.maximum(R_APEX**2 - xs**2, 0)))
 s2 = full["stage"] == 2
-first = full["stroke"][s2][np.argmax(full["n_contact"][s2] > 0)] - U
+first = full["stroke"][s2][np.argmax(full["n_contact"][s2] > 0)]  # (the die's position)
 miss = abs(first - (surface - ys).min())
 k.check(miss < 1e-6,
         f"the turned die first touches the tube at stroke {first:.6f} mm, where its surface reaches the first "

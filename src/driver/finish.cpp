@@ -38,6 +38,10 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
   const auto scene_metrics = scene_->FinalMetrics(history_);
   Answer answer = Summarize(history_.rows(), !scene_metrics.empty(), companion.empty() ? nullptr : &companion);
   answer.stroke_name = scene_->StrokeName(), answer.load_unit = scene_->LoadUnit();
+  for (const auto &[name, value] : scene_metrics) // (the second pass's start: the scene's, before its first row)
+    if (name == "pass2_start_stroke" && answer.passes.size() > 1) answer.passes[1].start = value;
+  answer.mesh_covered = opt_.mesh_file.empty();
+  answer.release = opt_.unload == "withdraw" ? "the dies withdrawn" : "the contact forces reversed, the dies removed";
   std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke},
                                                          {"final_load", last.load},
                                                          {"x_max", last.x_max},

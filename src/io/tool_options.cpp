@@ -71,8 +71,9 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                "another angle; else pins)",
                {"auto", "pins", "rotation"}, opt.full_hold));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
-                      "squaring: a second pass after the springback: press again by this stroke (mm, from the dies' "
-                      "start, where they touch the tube at the latest; 0: one pass), then spring back",
+                      "squaring: a second pass after the springback: press again until the upper die is at this "
+                      "stroke (mm, from the same zero as -stroke: the die touching the round tube; it starts where it "
+                      "touches the tube; 0: one pass), then spring back",
                       opt.pass2_stroke));
   PetscCall(read.String(PetscOptionsObject, "-pass2_die_profile",
                         "squaring: the second pass's upper die from a profile file (default: the first pass's die)",

@@ -103,8 +103,7 @@ PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part, const Turn
   PetscCall(MPIU_Allreduce(ext, g, 4, MPIU_REAL, MPIU_MAX, m.comm));
   row.x_max = part == TubePart::Full ? 0.5 * (g[0] + g[3]) : g[0];
   row.y_max = part != TubePart::Quarter ? 0.5 * (g[1] + g[2]) : g[1];
-  const double c1 = row.x_max, c2 = row.y_max;
-  row.deviation_ratio = std::max(c1, c2) > 0 ? std::min(c1, c2) / std::max(c1, c2) : 1.0;
+  row.deviation_ratio = row.y_max > 0 ? row.x_max / row.y_max : 1.0; // C1 / C2
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

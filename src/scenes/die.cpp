@@ -169,9 +169,10 @@ PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoi
     tools[k] = MovedBack(tools[k], b);
     if (say)
       PetscCall(PetscPrintf(comm,
-                            "tubeform: the %s starts %.4g mm back along its motion, where it touches the tube (where "
-                            "the first pass's dies started it would be inside it)\n",
-                            tools[k].name.c_str(), b * std::hypot(tools[k].direction[0], tools[k].direction[1])));
+                            "tubeform: the %s starts at U = %.4g mm, %.4g mm back along its motion from where it "
+                            "would touch the round tube, where it touches the tube as the first pass left it\n",
+                            tools[k].name.c_str(), -b * std::hypot(tools[k].direction[0], tools[k].direction[1]),
+                            b * std::hypot(tools[k].direction[0], tools[k].direction[1])));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -263,8 +264,8 @@ PetscErrorCode WarnUntouched(MPI_Comm comm, const ContactSet &contact, const cha
   PetscCall(contact.Count(touching));
   if (touching == 0)
     PetscCall(PetscPrintf(comm,
-                          "tubeform: warning: the %s pass's dies never touched the tube (their stroke %g mm is "
-                          "shorter than the way to it): its shape is the last springback's\n",
+                          "tubeform: warning: the %s pass's dies never touched the tube (at U = %g mm they are not "
+                          "yet down to it): its shape is the last springback's\n",
                           pass, stroke));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

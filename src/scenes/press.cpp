@@ -14,8 +14,9 @@
 // metrics and forces in its press's frame: die.hpp, PassTurn). -die_force presses by a force (the stroke its
 // outcome), -side_die adds dies at the sides, -die_offset and -die_path move the die off the axis (the full
 // model under the rotation hold, hold.hpp); docs/dies.md.
-// History: stroke = tool stroke U (mm; half the dies' closing; over two passes
-// the sum, the second pass's die at stroke - U1), load = punch load on the
+// History: stroke = tool stroke U (mm; half the dies' closing; in the second
+// pass its upper die's position from the same zero: the die touching the round
+// tube; -pass2_stroke is where it ends), load = punch load on the
 // full tube (N/mm), the upper die's vertical force on the model: twice it in
 // the quarter and the half model, which carry half of it.
 #include "tubeform/scenes/press_scene.hpp"
@@ -48,7 +49,7 @@ LoadPath PressScene::Path(const Options &opt) const
 double PressScene::ToolStroke(double lambda) const
 {
   if (opt_.die_force > 0) return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
-  if (pass_ == 1) return std::min(std::max(lambda - kSecondPress, 0.0), 1.0) * stroke2_;
+  if (pass_ == 1) return std::min(std::max(lambda - kSecondPress, 0.0), 1.0) * (stroke2_ + StartBack());
   if (lambda <= 1.0) return path_.Stroke(lambda);
   return opt_.unload == "withdraw" ? stroke_ - (lambda - 1.0) * back_ : path_.Stroke(1.0);
 }
@@ -119,6 +120,12 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
     ContactSpec spec = spec_;
     hold_.PinSlide(held_[1]);
     PetscCall(SecondPass(m, spec.tools, spec.symmetry));
+    if (!m.quiet)
+      PetscCall(PetscPrintf(m.comm,
+                            "tubeform: second pass: the dies travel %s mm together until the one furthest along is "
+                            "at U = %s mm (-pass2_stroke); the upper die from U = %s to %s mm\n",
+                            Formatted("%.4g", stroke2_ + StartBack()).c_str(), Formatted("%g", stroke2_).c_str(),
+                            Formatted("%.4g", Pass2Start()).c_str(), Formatted("%.4g", Pass2End()).c_str()));
     if (pinned_) PetscCall(ChoosePin(m));
     m.contact->Setup(m.mesh, m.system, m.body.position(), spec);
     m.contact->SetStroke(0.0);
@@ -215,7 +222,12 @@ PetscErrorCode PressScene::SecondPass(Model &m, std::vector<Tool> &tools,
 {
   PetscFunctionBeginUser;
   PetscCall(PassTools(m, 1, floor_y_, tools));
-  for (size_t k = 0; k < tools.size() && k < start_back_.size(); ++k) tools[k] = MovedBack(tools[k], start_back_[k]);
+  pass2_back_ = kNever;
+  for (size_t k = 0; k < tools.size() && k < start_back_.size(); ++k) {
+    tools[k] = MovedBack(tools[k], start_back_[k]);
+    if (tools[k].direction[0] != 0 || tools[k].direction[1] != 0) pass2_back_ = std::min(pass2_back_, start_back_[k]);
+  }
+  if (pass2_back_ == kNever) pass2_back_ = 0; // (no die moves)
   if (full_) PetscCall(MarkAxisPins(m, Press()));
   if (held_[1]) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)
   symmetry = Symmetry();
@@ -225,7 +237,7 @@ PetscErrorCode PressScene::SecondPass(Model &m, std::vector<Tool> &tools,
 double PressScene::Stroke(Model &m, double lambda) const
 {
   const double s = ToolStroke(lambda);
-  return opt_.die_force > 0 ? m.contact->tool(kUpper).stroke : pass_ == 1 ? stroke_ + s : path_.U(s);
+  return opt_.die_force > 0 ? m.contact->tool(kUpper).stroke : pass_ == 1 ? s - UpperBack() : path_.U(s);
 }
 
 std::vector<std::pair<std::string, Vec2>> PressScene::Symmetry() const

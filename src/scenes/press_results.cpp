@@ -8,7 +8,9 @@ namespace tf {
 
 double PressScene::ToolWork(const HistoryRow &prev, const HistoryRow &row, double) const
 {
-  return PressToolWork(Part(), opt_.lower_die_motion == "fixed", prev, row);
+  HistoryRow from = prev; // (the second pass's dies from where they start)
+  if (row.stage == kSecondPress && prev.stage < row.stage) from.stroke = -UpperBack();
+  return PressToolWork(Part(), opt_.lower_die_motion == "fixed", from, row);
 }
 
 PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRow &row)
@@ -29,7 +31,9 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   row.tool_fx = -f[0], row.tool_fy = -f[1], row.tool_moment = -Press().det() * moment;
   // (the side dies' travel: the stroke, through the springbacks too, or their own under -side_force)
   if (side_dies_[0] || side_dies_[1])
-    row.side_stroke = opt_.side_force > 0 ? m.contact->tool(SideDie()).stroke : row.stroke;
+    row.side_stroke = opt_.side_force > 0 ? m.contact->tool(SideDie()).stroke
+                      : pass_ == 1        ? stroke_ + ToolStroke(lambda)
+                                          : row.stroke;
   if (side_dies_[pass_] && !unloading_) {
     // (the right side die: whole in the half and full models, its upper half in the quarter)
     // (its force along the press's x: a turned pass's side die presses along the press's -x)
@@ -57,6 +61,7 @@ std::vector<std::pair<std::string, double>> PressScene::FinalMetrics(const Histo
   const bool forced = opt_.die_force > 0;
   m.push_back({forced ? "final_force_target" : "final_stroke_target", forced ? opt_.die_force : stroke_});
   if (stroke2_ > 0) m.push_back({"pass2_stroke_target", stroke2_});
+  if (pass_ == 1) m.push_back({"pass2_start_stroke", Pass2Start()}); // (where its upper die started)
   return m;
 }
 
@@ -104,9 +109,10 @@ PetscErrorCode PressScene::Persist(Model &m, Archive &ar)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode PressScene::Shape(Model &m, double, HistoryRow &row)
+PetscErrorCode PressScene::Shape(Model &m, double lambda, HistoryRow &row)
 {
-  const PressShapeState state{squaring_, half_, unloading_, pass_ == 1, flank_, apex_, opt_.tube_t, Press()};
+  const bool release = (int)StageOf(lambda) % 2 == 1; // (whatever releases the tube: reversed loads, a withdrawal)
+  const PressShapeState state{squaring_, half_, release, pass_ == 1, flank_, apex_, opt_.tube_t, Press()};
   return PressShape(m, state, side_ends_, row);
 }
 

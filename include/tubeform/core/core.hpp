@@ -6,6 +6,8 @@
 #include <petscsys.h>
 
 #include <array>
+#include <cstdio>
+#include <string>
 
 #ifndef PETSC_SUCCESS
 #define PETSC_SUCCESS 0 // PETSc 3.18 predates the named constant.
@@ -31,5 +33,14 @@ constexpr double kTiny = 1e-300;
 
 // A point or direction in the plane.
 using Vec2 = std::array<double, 2>;
+
+// printf into a string: numbers for a message by the C library's rules (PetscPrintf writes %g's integers as "3.").
+template <class... T>
+std::string Formatted(const char *fmt, T... v)
+{
+  char buf[256];
+  std::snprintf(buf, sizeof(buf), fmt, v...);
+  return buf;
+}
 
 } // namespace tf

@@ -1,10 +1,11 @@
-// The answer of a run, as a forming engineer reads it at its end: the load at
+// The answer of a run, as a forming engineer reads it at its end, pass by pass
+// (a press's pass is its loading stage 2p and its release 2p + 1): the load at
 // the end of loading and the largest, the load and C/t at the reported
-// strokes, C/t and C1/C2 loaded and after springback, the springback of C1
-// and C2; and the run's estimate of its own error in them, from a coarser
-// companion run of the same case (a two-level Richardson estimate: the
-// difference of the two levels bounds the finer one's error once both are
-// in the asymptotic range; docs/accuracy.md, "The error estimate").
+// strokes, C/t and the half-extents C1 (across the press) and C2 (along it)
+// loaded and after springback; and the run's estimate of its own error in
+// them, from a coarser companion run of the same case (a two-level Richardson
+// estimate: the difference of the two levels bounds the finer one's error once
+// both are in the asymptotic range; docs/accuracy.md, "The error estimate").
 #pragma once
 
 #include <petscsys.h>
@@ -36,32 +37,45 @@ constexpr double kEstimateSafety = 3.0;
 // punch load 2-5 x the curve's (docs/results.md, "The largest load").
 constexpr double kQuasiStaticKinetic = 1e-5;
 
-struct Answer {
-  bool tool = false;                                 // a tool scene: C/t, C1/C2 and springback mean something
-  bool springback = false;                           // the run went on past the end of loading
-  std::string stroke_name = "U", load_unit = "N/mm"; // the scene's, for the printed summary
-  double stroke = 0;                                 // at the end of loading
+// The tube's shape in one state: C/t and the outer half-extents in the press's frame, C1 = x_max across the
+// press and C2 = y_max along it (the deviation ratio is C1 / C2).
+struct ShapeAt {
+  double c_over_t = 0, c1 = 0, c2 = 0;
+  double Ratio() const { return c2 > 0 ? c1 / c2 : 1.0; }
+};
+
+// One pass: its loading's end, curve and shapes, and their estimated errors.
+struct PassAnswer {
+  bool springback = false; // the run went on past the pass's end of loading
+  double start = 0;        // the stroke (die position) the pass's loading starts from
+  double stroke = 0;       // at the end of loading
   double load = 0;
   // The largest load of the quasi-static rows, and the largest of the dynamic
   // transients' rows where it is above that (else 0) and its stroke.
   double load_max = 0, transient_max = 0, transient_stroke = 0;
   std::vector<double> strokes, loads, c_over_t; // the reported strokes (with the end of loading last)
-  double ct_loaded = 0, dr_loaded = 1, x_loaded = 0, y_loaded = 0;
-  double ct_unloaded = 0, dr_unloaded = 1, x_unloaded = 0, y_unloaded = 0;
-  // A second pass (history stages 2 and 3): its end of loading and its springback.
-  bool pass2 = false;
-  double stroke2 = 0, load2 = 0, ct_loaded2 = 0, dr_loaded2 = 1, ct_unloaded2 = 0, dr_unloaded2 = 1;
-  // The estimate (estimated = false without a companion): relative load
-  // error and absolute C/t error at each reported stroke, after springback,
-  // and their largest.
+  ShapeAt loaded, unloaded;
+  // The estimate (estimated = false without a companion's pass): relative load error and absolute C/t error at
+  // each reported stroke, C/t's after springback.
   bool estimated = false;
   std::vector<double> load_error, ct_error;
-  double ct_unloaded_error = 0, worst_load_error = 0, worst_ct_error = 0;
+  double ct_unloaded_error = 0;
+};
+
+struct Answer {
+  bool tool = false;                                 // a tool scene: C/t, C1/C2 and springback mean something
+  std::string stroke_name = "U", load_unit = "N/mm"; // the scene's, for the printed summary
+  std::string release;                               // what released the tube (a tool scene's springback)
+  std::vector<PassAnswer> passes;                    // one, or a press's two
+  // The largest estimated errors over the passes (estimated: any pass has an estimate). With a mesh file the
+  // companion keeps the mesh: the estimate then covers the increments alone (mesh_covered false).
+  bool estimated = false, mesh_covered = true;
+  double worst_load_error = 0, worst_ct_error = 0;
 };
 
 // The answer of a history (companion: the coarser run's, or null).
 Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const std::vector<HistoryRow> *companion);
-// As HDF5 attributes of /history.
+// As HDF5 attributes of /history (the second pass's prefixed pass2_).
 std::vector<std::pair<std::string, double>> AnswerAttributes(const Answer &a);
 // Collective: the answer's lines on rank 0; `targets` the preset's accuracy
 // targets (load relative, C/t absolute; 0: none), whose excess is a warning.

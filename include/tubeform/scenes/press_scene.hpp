@@ -2,6 +2,7 @@
 // path, stages, dies and loads; press_results.cpp: what it measures and keeps for a restart).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "tubeform/scenes/common.hpp"
@@ -41,7 +42,7 @@ public:
   {
     return Unloading(lambda) && opt_.unload == "reverse" ? 0.0 : full_ ? 2.0 : half_ ? 1.0 : 0.5;
   }
-  // Each die's force over its own travel (scenes/common.cpp).
+  // Each die's force over its own travel (scenes/common.cpp); the second pass's dies from where they start.
   double ToolWork(const HistoryRow &prev, const HistoryRow &row, double) const override;
   // The stroke of the dies in place: the first pass's, then (once its dies are set up) the second's.
   double ToolStroke(double lambda) const override;
@@ -78,6 +79,7 @@ private:
   PetscInt pass_ = 0;              // the pass whose dies are in place
   double floor_y_ = 0;             // where the floor of the pass in place is
   std::vector<double> start_back_; // how far back along its motion each second-pass die starts (StartOnTube)
+  double pass2_back_ = 0;          // StartBack(), derived from start_back_ and the dies' motions (SecondPass)
   ContactSpec spec_;               // the contact set's nodes, supports and law (for the second pass's dies)
   PetscInt pin_ = -1;              // the half model's springback: the local node whose press y is held (-1: none here)
   bool pinned_ = false;            // the pin holds (every rank alike)
@@ -107,8 +109,18 @@ private:
   PetscErrorCode SecondPass(Model &m, std::vector<Tool> &tools, std::vector<std::pair<std::string, Vec2>> &symmetry);
 
   TurnMap PassMap(int pass) const { return PassTurn(opt_, pass, half_, full_); }
-  // The history's U at lambda: the force-controlled die's own, the second pass's after the first's, -die_path's.
+  // The history's U at lambda: the force-controlled die's own, -die_path's, the second pass's upper die's position
+  // (from the same zero as the first pass's, the die touching the round tube; it starts UpperBack() before it).
   double Stroke(Model &m, double lambda) const;
+  // How far back the second pass's dies start to touch the tube where the first pass left it (SecondPass; 0 before
+  // they are set up): the least any die that moves is moved back (they travel together until the one furthest
+  // along is at -pass2_stroke: no die passes it, and in a press symmetric top to bottom every die ends there), and
+  // the upper die's.
+  double StartBack() const { return pass2_back_; }
+  double UpperBack() const { return start_back_.empty() ? 0.0 : start_back_[kUpper]; }
+  // The second pass's stroke (the upper die's position) where it starts and ends.
+  double Pass2Start() const { return UpperBack() > 0 ? -UpperBack() : 0.0; }
+  double Pass2End() const { return stroke2_ + StartBack() - UpperBack(); }
   // The rotation hold holds the pass in place (its nodes fixed, holding the slide too, until the dies hold it).
   bool Holding() const { return held_[pass_] && !unloading_; }
   // The tube's coordinates into the frame of the press in place (its die moving along -y).

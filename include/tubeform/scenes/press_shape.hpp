@@ -13,7 +13,8 @@ namespace tf {
 struct PressShapeState {
   bool squaring;    // C/t against the die's flank (the flattening scene: the corner radii only)
   bool half;        // the half or full model: the upper right quarter of the whole surface
-  bool unloading;   // the springback: C/t is the chord's gap of the side the loading left
+  bool unloading;   // a release (reversed loads or the die withdrawn): C/t is the chord's gap of the side the
+                    // loading left
   bool second_pass; // the second pass's dies are in place
   int flank, apex;  // the upper die's segments (scenes/die.hpp)
   double t;         // the wall thickness (mm)
