@@ -18,6 +18,7 @@
 #include "tubeform/driver/problem.hpp"
 #include "tubeform/io/options.hpp"
 #include "tubeform/io/options_files.hpp"
+#include "tubeform/io/options_left.hpp"
 #include "tubeform/scenes/registry.hpp"
 
 static const char help[] =
@@ -98,6 +99,8 @@ static PetscErrorCode Run(bool &collective)
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
   tf::Problem problem;
   PetscCall(problem.Setup(PETSC_COMM_WORLD, opt));
+  // Before anything is written:
+  PetscCall(tf::CheckOptionsLeft(PETSC_COMM_WORLD, opt, problem.system().ndofs(), problem.system().redundant()));
   if (opt.error_estimate && (opt.scene == "squaring" || opt.scene == "flattening"))
     problem.SetCompanion([&opt](std::vector<tf::HistoryRow> &rows) { return Companion(opt, rows); });
   PetscCall(problem.Run());

@@ -3,12 +3,20 @@ collective error: not a crash, which Python reports as a negative code,
 mpirun as 128 + N or PETSc's signal handler as exit 59 with "Caught signal",
 nor a rank-local abort), no hang (timeout) and no core dump where tubeform
 runs (the source directory), on 1 and 2 ranks; and an earlier result
-file is left untouched by the failed run. Misspelled options and values
-that are not numbers are such errors too (-allow_unused lets a run go on
-with an unknown option: checked once). Also the stall watch
+file is left untouched by the failed run. Misspelled options, options
+nothing reads (the option likely meant named where there is one; a solver
+option of the factorization the run does not use), values that are not
+numbers and material constants not in MPa (E against the law's initial
+yield stress, however the material is given) are such errors too
+(-allow_unused lets a run go on with an unknown option: checked twice, with
+the warning); options PETSc reads only after the check, the E / sigma_y0
+bounds themselves and the docs' solver options pass, with PETSc's own
+-options_left ("There are no unused options.") as the reference that each
+was read. Also the stall watch
 (-rmin_stall_increments): error, non-zero exit, results written and flagged."""
 import hashlib
 import os
+import re
 import shutil
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -16,6 +24,14 @@ from concurrent.futures import ThreadPoolExecutor
 import h5py
 
 from tfcheck import Checks, allow_core_dumps, args, core_dumps, crashed, out, run
+
+
+def OptionsReadLater(src):
+    """The names of OptionsReadLater, read from src/io/options_left.cpp."""
+    text = open(os.path.join(src, "src", "io", "options_left.cpp")).read()
+    body = text[text.index("OptionsReadLater()\n{"):]
+    body = body[:body.index("return names;")]
+    return re.findall(r'"(-[a-z0-9_]+)"', body)
 
 tf, mpirun, src = args()
 k = Checks("bad_input")
@@ -168,7 +184,45 @@ cases = [
     # Hill's yield: r-values that are not positive, both forms at once.
     (["-material_r", "1.5,1,-1"], "r-values must be positive"),
     (["-material_r", "1.5,1,0.7", "-material_hill", "0.5,0.5,0.5,1.5"], "-material_r and -material_hill"),
+    # Options nothing reads, judged once the mesh and the solver are set up (a stand-in factored, so that MUMPS
+    # has read its options), before anything is written: the likely option named where there is one; a solver
+    # option of the factorization the run does not use names the one it does.
+    (["-wall_thickness", "1.65"],
+     "-wall_thickness 1.65: no scene, tool or PETSc object of this run reads it; did you mean -tube_t?"),
+    (["-ksp_veiw"], "-ksp_veiw: no scene, tool or PETSc object of this run reads it; did you mean -ksp_view?"),
+    (["-foo_bar", "2"], "-foo_bar 2: no scene, tool or PETSc object of this run reads it (build/tubeform -help"),
+    (["-redundant_mat_mumps_icntl_999", "1"], "-redundant_mat_mumps_icntl_999 1: no scene, tool or PETSc object"),
+    (["-ksp_view_pre"], "-ksp_view_pre: no scene, tool or PETSc object"),  # PETSc 3.18's KSPSetUp reads it not
+    (["-mat_mumps_icntl_14", "50"], "-mat_mumps_icntl_14 50: acts only on the distributed factorization"),
+    (["-pc_factor_mat_solver_type", "petsc"], "give -redundant_pc_factor_mat_solver_type"),
+    # Material constants not in MPa (t/mm^3), however given: the options, a file, the library, a table, Hill,
+    # backstresses. E against the law's initial yield stress: 50 to 5000 (the bounds themselves pass: below).
+    (["-material_e", "68.9e9"], "-material_e 6.89e+10: stiffer than any solid"),  # Pa, elastic law
+    (["-material_law", "ludwik", "-material_e", "68.9e9"],
+     "-material_e 6.89e+10 against the initial yield stress 165.3 MPa (-material_sy, -material aluminum): E / "
+     "sigma_y0 = 4.168e+08 lies outside 50 to 5000"),  # Pa, the paper's aluminum
+    (["-material_law", "ludwik", "-material_e", "69"],
+     "-material_e 69 against the initial yield stress 165.3 MPa (-material_sy, -material aluminum)"),  # GPa
+    (["-material_law", "ludwik", "-material_sy", "165.3e6"], "E / sigma_y0 = 0.0004537 lies outside 50 to 5000"),
+    (["-material_law", "ludwik", "-material_sy", "1501"], "E / sigma_y0 = 49.97 lies outside 50 to 5000"),
+    (["-material_law", "ludwik", "-material_sy", "14.99"], "E / sigma_y0 = 5003 lies outside 50 to 5000"),
+    (["-material", "dc04", "-material_law", "swift", "-material_e", "210"], "(-material_sy, -material dc04)"),
+    (["-material_law", "table", "-material_table", "0,200e6,0.1,300e6"], "(the first stress of -material_table"),
+    (["-material", "s355_cyclic", "-material_law", "table", "-hardening", "chaboche", "-material_e", "197.41"],
+     "the initial yield stress 338.8 MPa (the first stress of -material_table, -material s355_cyclic)"),
+    (["-material_law", "ludwik", "-material_hill", "500,500,500,1500"],
+     "(-material_sy, -material_hill, -material aluminum, in tension along the tube)"),
+    (["-material_law", "ludwik", "-material_k", "673.5e6"], "-material_k 6.735e+08: the flow stress at a plastic"),
+    (["-material_density", "2700"], "-material_density 2700: outside 1e-10 to 2e-07 t/mm^3"),
+    (["-material", out("pa.opts"), "-material_law", "swift"], "-material_e 6.89e+10: stiffer than any solid"),
+    (["-material", out("sy_pa.opts"), "-material_law", "swift"], f"-material {out('sy_pa.opts')})"),
 ]
+with open(out("pa.opts"), "w") as fh:  # a material file in Pa throughout
+    fh.write("-material_law swift -material_e 68.9e9 -material_nu 0.33 -material_sy 276e6 -material_k 407.9e6\n"
+             "-material_n 0.08 -material_density 2.70e-9\n")
+with open(out("sy_pa.opts"), "w") as fh:  # E in MPa, the stresses in Pa
+    fh.write("-material_law swift -material_e 68900 -material_nu 0.33 -material_sy 276e6 -material_k 407.9e6\n"
+             "-material_n 0.08 -material_density 2.70e-9\n")
 with open(out("stray.opts"), "w") as fh:
     fh.write("-material_law ludwik -material_e 1000 -material_nu 0.3 -material_sy 10 -material_k 5 -material_n 0.5\n"
              "-material_density 1e-9\n-tube_t 3\n")
@@ -184,9 +238,10 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
       f"       core dumps cannot appear on this machine ({why_none}): the crash check stands for them")
 # On 2 ranks one of each kind: option value, option choice, mesh file, output path, material file.
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
-         ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
+         ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")], ["-wall_thickness", "1.65"],
+         ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 115 and len(selected) == 5, f"{len(cases)} cases on 1 rank (115), {len(selected)} on 2 (5)")
+k.check(len(cases) == 136 and len(selected) == 8, f"{len(cases)} cases on 1 rank (136), {len(selected)} on 2 (8)")
 
 
 def attempt(np_, extra):
@@ -236,6 +291,38 @@ k.check(p.returncode == 1 and not crashed(p) and typo[1] in p.stderr + p.stdout,
         f"np=2 -tube_r 17: the same error on 2 ranks (exit {p.returncode}) {crashed(p)}")
 p = run(tf, mpirun, 1, base + ["-output", out("allow.h5"), "-allow_unused"] + typo[0], check=False, timeout=60)
 k.check(p.returncode == 0 and os.path.exists("allow.h5"), f"-allow_unused: the run goes on (exit {p.returncode})")
+p = run(tf, mpirun, 1, base + ["-output", out("allow2.h5"), "-allow_unused", "-wall_thickness", "1.65"], check=False,
+        timeout=60)
+warned = [l for l in p.stdout.splitlines() if l.startswith("tubeform: warning: -wall_thickness 1.65: no scene")]
+k.check(p.returncode == 0 and os.path.exists("allow2.h5") and len(warned) == 1,
+        f"-allow_unused -wall_thickness 1.65: the run goes on (exit {p.returncode}), warning: {warned}")
+
+# Options that are read must pass: the E / sigma_y0 bounds themselves (scripts/extremes.py's two ends); the
+# options PETSc reads only after the check (OptionsReadLater in src/io/options_left.cpp: at a solve, when the
+# result file opens, at the end), in two runs (the viewer options and the rest do not combine); the solver
+# options of the docs and the README on the path each acts on. PETSc's own -options_left, at the end of each
+# run, is the reference that every option given was read ("There are no unused options.").
+later = ["-ksp_converged_reason", "-redundant_ksp_converged_reason", "-vec_view", "ascii:/dev/null", "-vec_view_stash",
+         "-build_twosided", "allreduce", "-options_view", "-log", out("petsc_log"), "-citations", out("citations.txt"),
+         "-get_total_flops"]
+viewer = ["-viewer_type", "hdf5", "-viewer_view", "ascii:/dev/null", "-viewer_hdf5_base_dimension2", 0,
+          "-viewer_hdf5_collective", 0, "-viewer_hdf5_default_timestepping", 0, "-viewer_hdf5_sp_output", 0,
+          "-dm_plex_view_hdf5_storage_version", "1.0.0"]
+solver = ["-redundant_mat_mumps_icntl_14", 50, "-redundant_mat_mumps_icntl_33", 1, "-redundant_mat_mumps_icntl_4", 1,
+          "-redundant_pc_factor_mat_solver_type", "mumps", "-log_view", ":" + out("log_view.txt"), "-malloc_debug",
+          "-malloc_dump", "-memory_view", "-ksp_view", "ascii:/dev/null"]
+lu = ["-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps", "-mat_mumps_icntl_14", 50, "-mat_mumps_icntl_33", 1]
+accepted = [(1, ["-material_law", "ludwik", "-material_sy", 1500]), (1, ["-material_law", "ludwik", "-material_sy", 15]),
+            (1, later), (1, viewer), (1, solver), (1, lu), (2, later), (2, solver)]
+for np_, extra in accepted:
+    p = run(tf, mpirun, np_, base + ["-output", out("accepted.h5"), "-options_left"] + extra, check=False, timeout=60)
+    ok = p.returncode == 0 and "There are no unused options." in p.stdout
+    lines = (p.stderr + p.stdout).splitlines()
+    errors = [l for l in lines if "error" in l.lower()] + [l for l in lines if "Option left" in l]
+    k.check(ok, f"np={np_} {' '.join(map(str, extra))}: accepted and every option read by the end (exit "
+                f"{p.returncode}{', ' + errors[0] if errors else ''})")
+k.check(set(OptionsReadLater(src)) == {o for o in later + viewer if str(o).startswith("-")} | {"-options_left"},
+        "the runs above give every option of OptionsReadLater")
 
 # A run that cannot advance (every increment cut to nothing, here by an
 # absurd strain limit) stops at the stall watch: a one-line error naming the

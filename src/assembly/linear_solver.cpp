@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/core/log.hpp"
 
 namespace tf {
 
@@ -52,19 +53,15 @@ PetscErrorCode Describe(KSP ksp, std::string &solver, bool &redundant)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-} // namespace
-
-PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what)
+// The redundant factorization (every rank factors the whole matrix) or the
+// distributed one, then the options; `defaults`: kMumpsDefaults where the user
+// gave no value.
+PetscErrorCode Configure(KSP ksp, bool distributed, bool defaults)
 {
-  MPI_Comm comm;
-  PetscMPIInt size;
   PC pc;
   PetscBool user_pc;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscObjectGetComm((PetscObject)ksp, &comm));
-  PetscCallMPI(MPI_Comm_size(comm, &size));
-  const bool distributed = size > 1 && ndofs > kDistributedDofs;
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PetscOptionsHasName(nullptr, nullptr, "-pc_type", &user_pc));
@@ -80,7 +77,7 @@ PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what)
     PetscCall(KSPGetPC(inner, &inner_pc));
     PetscCall(PCSetType(inner_pc, PCLU));
     PetscCall(PCFactorSetMatSolverType(inner_pc, MATSOLVERMUMPS));
-    if (!user_pc)
+    if (!user_pc && defaults)
       for (const auto &d : kMumpsDefaults) {
         PetscBool set;
         PetscCall(PetscOptionsHasName(nullptr, nullptr, d.option, &set));
@@ -90,7 +87,7 @@ PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what)
   PetscCall(KSPSetFromOptions(ksp));
   {
     // The inner solver of a redundant PC reads its options (-redundant_*) only
-    // at set-up; read them now so that the line below says what will run.
+    // at set-up; read them now so that the run can say what will run.
     PetscBool still_redundant;
     PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCREDUNDANT, &still_redundant));
     if (still_redundant) {
@@ -99,9 +96,24 @@ PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what)
       PetscCall(KSPSetFromOptions(inner));
     }
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+bool Distributed(PetscMPIInt size, PetscInt ndofs) { return size > 1 && ndofs > kDistributedDofs; }
+
+} // namespace
+
+PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what, bool &redundant)
+{
+  MPI_Comm comm;
+  PetscMPIInt size;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetComm((PetscObject)ksp, &comm));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCall(Configure(ksp, Distributed(size, ndofs), true));
 
   std::string solver;
-  bool redundant = false;
   PetscCall(Describe(ksp, solver, redundant));
   char line[256];
   if (size == 1)
@@ -117,6 +129,34 @@ PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what)
                             "%s distributed over %d ranks (%d dofs; its last digits may differ from run to run)",
                             solver.c_str(), size, (int)ndofs));
   what = line;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ReadFactorizationOptions(MPI_Comm comm, PetscInt ndofs, bool other_path)
+{
+  PetscMPIInt size, rank;
+  Mat a = nullptr;
+  KSP ksp = nullptr;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCall(Log::Register());
+  PetscCall(PetscLogStagePush(Log::unlogged_stage));
+  // The identity, one row per rank: every factorization takes it, and it costs nothing.
+  PetscCall(MatCreateAIJ(comm, 1, 1, PETSC_DETERMINE, PETSC_DETERMINE, 1, nullptr, 0, nullptr, &a));
+  PetscCall(MatSetValue(a, rank, rank, 1.0, INSERT_VALUES));
+  PetscCall(MatAssemblyBegin(a, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(a, MAT_FINAL_ASSEMBLY));
+  PetscCall(KSPCreate(comm, &ksp));
+  PetscErrorCode ierr = Configure(ksp, Distributed(size, ndofs) != other_path, !other_path);
+  if (!ierr) ierr = KSPSetOperators(ksp, a, a);
+  if (!ierr) ierr = KSPSetUp(ksp);
+  if (!ierr) ierr = KSPSetUpOnBlocks(ksp); // a redundant PC's inner solver factors here
+  PetscCall(KSPDestroy(&ksp));
+  PetscCall(MatDestroy(&a));
+  PetscCall(PetscLogStagePop());
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -53,10 +53,9 @@ PetscErrorCode System::Setup(const Mesh &mesh)
   PetscCall(PetscObjectSetName((PetscObject)sol_, "displacement"));
 
   // MUMPS LU, redundant or distributed by the size of the system; options may override.
-  PetscInt ndofs;
-  PetscCall(VecGetSize(rhs_, &ndofs));
+  PetscCall(VecGetSize(rhs_, &ndofs_));
   PetscCall(KSPCreate(mesh.comm, &ksp_));
-  PetscCall(SetupLinearSolver(ksp_, ndofs, solver_));
+  PetscCall(SetupLinearSolver(ksp_, ndofs_, solver_, redundant_));
 
   has_frame_.assign(mesh.num_nodes, 0);
   cos_.assign(mesh.num_nodes, 1.0);

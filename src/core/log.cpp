@@ -6,7 +6,7 @@ namespace tf {
 
 PetscLogEvent Log::mesh = 0, Log::assemble = 0, Log::apply_bc = 0, Log::solve = 0, Log::scan = 0, Log::contact = 0,
               Log::commit = 0, Log::trial = 0, Log::measure = 0, Log::output = 0, Log::yield = 0, Log::friction = 0;
-PetscLogStage Log::setup_stage = 0, Log::load_stage = 0, Log::output_stage = 0;
+PetscLogStage Log::setup_stage = 0, Log::load_stage = 0, Log::output_stage = 0, Log::unlogged_stage = 0;
 
 PetscErrorCode Log::Register()
 {
@@ -31,6 +31,9 @@ PetscErrorCode Log::Register()
   PetscCall(PetscLogStageRegister("TfSetup", &setup_stage));
   PetscCall(PetscLogStageRegister("TfLoading", &load_stage));
   PetscCall(PetscLogStageRegister("TfOutput", &output_stage));
+  PetscCall(PetscLogStageRegister("TfUnlogged", &unlogged_stage));
+  PetscCall(PetscLogStageSetActive(unlogged_stage, PETSC_FALSE));
+  PetscCall(PetscLogStageSetVisible(unlogged_stage, PETSC_FALSE));
   done = true;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -1,6 +1,7 @@
 #include "tubeform/io/option_reader.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 
 #include "tubeform/core/core.hpp"
@@ -9,12 +10,61 @@ namespace tf {
 
 namespace {
 
-std::string FirstWord(const std::string &name) { return name.substr(0, name.find('_')); }
+// The lower-case word before the first underscore (PETSc's option names ignore case).
+std::string FirstWord(const std::string &name)
+{
+  std::string w = name.substr(0, name.find('_'));
+  for (char &c : w) c = (char)std::tolower((unsigned char)c);
+  return w;
+}
 
 // A misspelling is at most this many edits from the option meant (-tube_r, -frction_mu).
 constexpr size_t kTypoEdits = 2;
+// Words shorter than this say nothing of what an option means (-die_r_apex's "r").
+constexpr size_t kMinWord = 3;
+
+// The lower-case words of a text (letters only; a plural's s dropped).
+std::vector<std::string> Words(const std::string &text)
+{
+  std::vector<std::string> words;
+  std::string w;
+  for (size_t i = 0; i <= text.size(); ++i) {
+    const char c = i < text.size() ? (char)std::tolower((unsigned char)text[i]) : ' ';
+    if (c >= 'a' && c <= 'z') {
+      w += c;
+      continue;
+    }
+    if (w.size() > kMinWord && w.back() == 's') w.pop_back();
+    if (w.size() >= kMinWord) words.push_back(w);
+    w.clear();
+  }
+  return words;
+}
 
 } // namespace
+
+std::string OptionHint(const std::string &given, const std::vector<KnownOption> &known)
+{
+  std::string name = given; // (PETSc's option names ignore case)
+  for (char &c : name) c = (char)std::tolower((unsigned char)c);
+  size_t best = kTypoEdits + 1;
+  std::string hint;
+  for (const auto &k : known) {
+    const size_t d = EditDistance(name, k.name);
+    if (d > 0 && d < best) best = d, hint = k.name; // (itself: no hint)
+  }
+  if (!hint.empty()) return hint;
+  const std::vector<std::string> asked = Words(name);
+  if (asked.empty()) return "";
+  for (const auto &k : known) {
+    if (k.name == name) continue;
+    const std::vector<std::string> has = Words(k.name + " " + k.help);
+    if (std::all_of(asked.begin(), asked.end(),
+                    [&](const std::string &w) { return std::find(has.begin(), has.end(), w) != has.end(); }))
+      return k.name;
+  }
+  return "";
+}
 
 size_t EditDistance(const std::string &a, const std::string &b)
 {
@@ -56,7 +106,7 @@ PetscErrorCode OptionReader::String(PetscOptionItems *PetscOptionsObject, const 
   PetscBool set;
 
   PetscFunctionBeginUser;
-  Note(name);
+  Note(name, help);
   PetscCall(PetscStrncpy(buf, value.c_str(), sizeof(buf)));
   PetscCall(PetscOptionsString(name, help, "tubeform", buf, buf, sizeof(buf), &set));
   if (set) value = buf;
@@ -67,7 +117,7 @@ PetscErrorCode OptionReader::Real(PetscOptionItems *PetscOptionsObject, const ch
                                   double &value)
 {
   PetscFunctionBeginUser;
-  Note(name);
+  Note(name, help);
   PetscCall(CheckNumber(PetscOptionsObject->comm, name, false));
   PetscCall(PetscOptionsReal(name, help, "tubeform", value, &value, nullptr));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -77,7 +127,7 @@ PetscErrorCode OptionReader::Int(PetscOptionItems *PetscOptionsObject, const cha
                                  PetscInt &value)
 {
   PetscFunctionBeginUser;
-  Note(name);
+  Note(name, help);
   PetscCall(CheckNumber(PetscOptionsObject->comm, name, true));
   PetscCall(PetscOptionsInt(name, help, "tubeform", value, &value, nullptr));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -87,7 +137,7 @@ PetscErrorCode OptionReader::Bool(PetscOptionItems *PetscOptionsObject, const ch
                                   PetscBool &value)
 {
   PetscFunctionBeginUser;
-  Note(name);
+  Note(name, help);
   PetscCall(PetscOptionsBool(name, help, "tubeform", value, &value, nullptr));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -101,14 +151,19 @@ PetscErrorCode OptionReader::CheckUnknown(MPI_Comm comm) const
   std::string bad, near;
   for (PetscInt k = 0; k < n && bad.empty(); ++k) {
     const std::string name = std::string("-") + left[k];
-    size_t best = ~size_t(0);
-    for (const auto &known : names_) {
-      const size_t d = EditDistance(name, known);
-      if (d < best) best = d, near = known;
+    std::string lower = name;
+    for (char &c : lower) c = (char)std::tolower((unsigned char)c);
+    const bool same_word = std::any_of(names_.begin(), names_.end(),
+                                       [&](const KnownOption &s) { return FirstWord(s.name) == FirstWord(name); });
+    near = OptionHint(name, names_);
+    if (same_word && near.empty()) {
+      size_t best = ~size_t(0);
+      for (const auto &known : names_) {
+        const size_t d = EditDistance(lower, known.name);
+        if (d < best) best = d, near = known.name;
+      }
     }
-    const bool same_word =
-      std::any_of(names_.begin(), names_.end(), [&](const std::string &s) { return FirstWord(s) == FirstWord(name); });
-    if (best <= kTypoEdits || same_word) bad = name;
+    if (same_word || (!near.empty() && EditDistance(lower, near) <= kTypoEdits)) bad = name;
   }
   PetscCall(PetscOptionsLeftRestore(nullptr, &n, &left, &values));
   PetscCheck(bad.empty(), comm, PETSC_ERR_USER_INPUT,
@@ -125,7 +180,7 @@ PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &re
   PetscInt choice = 0;
 
   PetscFunctionBeginUser;
-  read.Note(name);
+  read.Note(name, help);
   for (PetscInt k = 0; k < n; ++k)
     if (value == list[k]) choice = k;
   PetscCall(PetscOptionsEList(name, help, "tubeform", list, n, list[choice], &choice, nullptr));
@@ -142,7 +197,7 @@ PetscErrorCode RealList(PetscOptionItems *PetscOptionsObject, OptionReader &read
   PetscBool set;
 
   PetscFunctionBeginUser;
-  read.Note(name);
+  read.Note(name, help);
   PetscCall(PetscOptionsRealArray(name, help, "tubeform", buf.data(), &n, &set));
   if (set) value.assign(buf.begin(), buf.begin() + n);
   PetscFunctionReturn(0);

@@ -39,7 +39,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
     choice = 0;
     for (size_t k = 0; k < scenes.size(); ++k)
       if (scenes[k] == opt.scene) choice = (PetscInt)k;
-    read.Note("-scene");
+    read.Note("-scene", "Scene to run");
     PetscCall(PetscOptionsEList("-scene", "Scene to run", "tubeform", names.data(), (PetscInt)names.size(),
                                 names[choice], &choice, &set));
     opt.scene = scenes[choice];
@@ -350,10 +350,11 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       opt.progress));
   PetscCall(read.Bool(PetscOptionsObject, "-monitor", "Print one line per increment on rank 0", opt.monitor));
   PetscCall(read.Bool(PetscOptionsObject, "-allow_unused",
-                      "Run even when an option close to one of tubeform's is not one (a misspelling is an error)",
+                      "Run even when an option given is read by nothing (a warning names it; without this, an error)",
                       opt.allow_unused));
   TF_OPTIONS_END();
 
+  opt.known = read.known();
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
   if (!opt.allow_unused) PetscCall(read.CheckUnknown(comm));
 

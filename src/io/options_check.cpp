@@ -3,8 +3,6 @@
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/option_reader.hpp"
 #include "tubeform/io/options.hpp"
-#include "tubeform/material/factory.hpp"
-#include "tubeform/material/kinematic.hpp"
 #include "tubeform/step/rmin.hpp"
 #include <cmath>
 #include <cstdio>
@@ -21,59 +19,6 @@ constexpr double kDieAngleMin = 60, kDieAngleMax = 150;
 // -die_path_turn's range (degrees): a die turned by more than a quarter turn no longer presses along the press's
 // y, along which its punch load is read.
 constexpr double kMaxDieTurn = 90;
-// Plastic strains the isotropic part of -hardening chaboche is checked up to (tube squaring stays far below).
-constexpr double kKinematicCheckStrain = 2.0;
-constexpr int kKinematicCheckPoints = 2000;
-
-// -hardening chaboche: pairs of non-negative constants whose monotonic share
-// stays below the flow curve (R(p) > 0), on a plastic law.
-PetscErrorCode CheckKinematic(MPI_Comm comm, const MaterialParams &m)
-{
-  PetscFunctionBeginUser;
-  if (m.hardening != "chaboche") PetscFunctionReturn(PETSC_SUCCESS);
-  const auto &k = m.kinematic;
-  PetscCheck(m.law != "elastic", comm, PETSC_ERR_USER_INPUT,
-             "-hardening chaboche: needs a plastic -material_law (ludwik, swift, table), not elastic");
-  PetscCheck(!k.empty() && k.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
-             "-hardening chaboche needs -material_kinematic C1,gamma1[,C2,gamma2[,C3,gamma3]] (pairs; got %d numbers)",
-             (int)k.size());
-  for (size_t i = 0; i < k.size(); i += 2)
-    PetscCheck(k[i] > 0 && k[i + 1] >= 0 && std::isfinite(k[i]) && std::isfinite(k[i + 1]), comm, PETSC_ERR_USER_INPUT,
-               "-material_kinematic: C %g, gamma %g: need C > 0 and gamma >= 0", k[i], k[i + 1]);
-  const RemainderHardening rest(MakeHardening(m), Backstresses(k));
-  for (int i = 0; i <= kKinematicCheckPoints; ++i) {
-    const double p = kKinematicCheckStrain * i / kKinematicCheckPoints, r = rest.YieldStress(p);
-    PetscCheck(r > 0, comm, PETSC_ERR_USER_INPUT,
-               "-material_kinematic: the backstresses outgrow the flow curve at plastic strain %g (its isotropic "
-               "part would be %g MPa): lower C or raise gamma",
-               p, r);
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// Hill 1948: positive r-values or F, G, H, L whose quadratic form is positive on deviators; with isotropic hardening.
-PetscErrorCode CheckHill(MPI_Comm comm, const MaterialParams &m)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(m.lankford.empty() || m.hill.empty(), comm, PETSC_ERR_USER_INPUT,
-             "-material_r and -material_hill: give one of the two");
-  PetscCheck(m.lankford.empty() || m.lankford.size() == 3, comm, PETSC_ERR_USER_INPUT,
-             "-material_r: give r0,r45,r90 (got %d numbers)", (int)m.lankford.size());
-  for (double r : m.lankford)
-    PetscCheck(r > 0 && std::isfinite(r), comm, PETSC_ERR_USER_INPUT, "-material_r: %g: r-values must be positive", r);
-  PetscCheck(m.hill.empty() || m.hill.size() == 4, comm, PETSC_ERR_USER_INPUT,
-             "-material_hill: give F,G,H,L (got %d numbers)", (int)m.hill.size());
-  if (m.hill.size() == 4) {
-    const double f = m.hill[0], g = m.hill[1], h = m.hill[2], l = m.hill[3];
-    PetscCheck(f * g + g * h + h * f > 0 && f + g > 0 && g + h > 0 && h + f > 0 && l > 0, comm, PETSC_ERR_USER_INPUT,
-               "-material_hill %g,%g,%g,%g: need FG + GH + HF > 0, F + G, G + H, H + F > 0 and L > 0 (a closed yield "
-               "surface)",
-               f, g, h, l);
-  }
-  PetscCheck(!HillCoefficients(m) || m.hardening == "isotropic", comm, PETSC_ERR_USER_INPUT,
-             "-hardening chaboche with Hill's yield (-material_r, -material_hill): not available; use one of the two");
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
 
 // The lower die, the model and the second pass (the tool scenes').
 PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
@@ -252,7 +197,6 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
 PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
-  const auto &m = opt.material;
   PetscCheck(opt.tube_ro > 0 && std::isfinite(opt.tube_ro), comm, PETSC_ERR_USER_INPUT,
              "-tube_ro %g: the outer radius must be a positive number of mm", opt.tube_ro);
   PetscCheck(opt.tube_t > 0 && opt.tube_t < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,
@@ -277,16 +221,6 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
              "-mesh_ntheta 0 needs -mesh_density in (0, 1000] (elements per bending length sqrt(Ro t); got %g)",
              opt.mesh_density);
   if (opt.mesh_ntheta == 0) opt.mesh_ntheta = ElementsAround(opt.tube_ro, opt.tube_t, opt.mesh_density);
-  PetscCheck(m.E > 0, comm, PETSC_ERR_USER_INPUT, "-material_e %g: Young's modulus must be positive (MPa)", m.E);
-  PetscCheck(m.nu > -1 && m.nu < 0.5, comm, PETSC_ERR_USER_INPUT,
-             "-material_nu %g: Poisson's ratio must lie in (-1, 0.5)", m.nu);
-  PetscCheck(m.sy > 0, comm, PETSC_ERR_USER_INPUT, "-material_sy %g: the yield stress must be positive (MPa)", m.sy);
-  PetscCheck(m.K >= 0, comm, PETSC_ERR_USER_INPUT,
-             "-material_k %g: the hardening coefficient must be non-negative (MPa)", m.K);
-  PetscCheck(m.n > 0 && m.n <= 1, comm, PETSC_ERR_USER_INPUT,
-             "-material_n %g: the hardening exponent must lie in (0, 1]", m.n);
-  PetscCheck(m.density > 0 && std::isfinite(m.density), comm, PETSC_ERR_USER_INPUT,
-             "-material_density %g: the mass density must be positive (t/mm^3; aluminum 2.70e-9)", m.density);
   PetscCheck(opt.dynamics_time > 0 && std::isfinite(opt.dynamics_time), comm, PETSC_ERR_USER_INPUT,
              "-dynamics_time %g: the duration of the load path must be positive (s)", opt.dynamics_time);
   PetscCheck(opt.punch_speed > 0 && std::isfinite(opt.punch_speed), comm, PETSC_ERR_USER_INPUT,
@@ -311,25 +245,7 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
              "-rmin_stall_increments %d: must be at least 10", (int)opt.rmin_stall_increments);
   PetscCheck(opt.rmin_max_redo >= 0, comm, PETSC_ERR_USER_INPUT, "-rmin_max_redo %d: must be non-negative",
              (int)opt.rmin_max_redo);
-  if (m.law == "swift")
-    PetscCheck(m.K > 0, comm, PETSC_ERR_USER_INPUT, "-material_k %g: the Swift law needs K > 0", m.K);
-  if (m.law == "table") {
-    const auto &t = opt.material.table;
-    PetscCheck(t.size() >= 2 && t.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
-               "-material_table: give pairs ep,sigma_y (at least one pair) for -material_law table");
-    PetscCheck(t[0] == 0, comm, PETSC_ERR_USER_INPUT, "-material_table: the first plastic strain must be 0 (got %g)",
-               t[0]);
-    for (size_t i = 2; i < t.size(); i += 2) {
-      PetscCheck(t[i] > t[i - 2], comm, PETSC_ERR_USER_INPUT,
-                 "-material_table: plastic strains must increase (%g after %g)", t[i], t[i - 2]);
-      PetscCheck(t[i + 1] >= t[i - 1], comm, PETSC_ERR_USER_INPUT,
-                 "-material_table: the flow stress must not decrease (%g after %g)", t[i + 1], t[i - 1]);
-    }
-    PetscCheck(t[1] > 0, comm, PETSC_ERR_USER_INPUT,
-               "-material_table: the initial yield stress must be positive (got %g)", t[1]);
-  }
-  PetscCall(CheckKinematic(comm, m));
-  PetscCall(CheckHill(comm, m));
+  PetscCall(CheckMaterial(comm, opt.material));
   PetscCheck(opt.die_profile.empty() || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
              opt.stroke_corner_radius);

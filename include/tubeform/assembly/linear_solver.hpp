@@ -26,8 +26,17 @@ constexpr PetscInt kDistributedDofs = 20000;
 
 // Collective: KSP preonly with MUMPS LU for a system of `ndofs` global dofs on
 // the KSP's communicator, then KSPSetFromOptions. `what` receives one line
-// saying which factorization was chosen and why.
-PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what);
+// saying which factorization was chosen and why; `redundant` whether every
+// rank factors the whole matrix (PCREDUNDANT, the options prefix redundant_).
+PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what, bool &redundant);
+
+// Collective: sets up and factors a solver as SetupLinearSolver does for a
+// system of `ndofs` dofs (`other_path`: the factorization it does not choose
+// there, redundant or distributed, without kMumpsDefaults), on a stand-in (the
+// identity, one row per rank), and destroys it. PETSc's objects read some
+// options only at their first factorization (MUMPS's -[redundant_]mat_mumps_*):
+// after this they are marked read, before the run's own solver factors.
+PetscErrorCode ReadFactorizationOptions(MPI_Comm comm, PetscInt ndofs, bool other_path);
 
 // The factored matrix of a direct solve (through PCREDUNDANT to its inner
 // KSP), or nullptr when the preconditioner factors nothing (an iterative

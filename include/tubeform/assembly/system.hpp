@@ -150,6 +150,8 @@ public:
   PetscErrorCode FreeNorms(Vec f_local, double &norm2, double &norm_max);
 
   PetscInt factorizations() const { return nsolves_; }
+  PetscInt ndofs() const { return ndofs_; }     // global
+  bool redundant() const { return redundant_; } // every rank factors the whole matrix (PCREDUNDANT)
   // Which factorization the solver uses and why (one line).
   const std::string &solver() const { return solver_; }
   // Collective: writes or reads what carries between increments: the node
@@ -181,6 +183,8 @@ private:
   Mat target_ = nullptr;  // where AddBlock puts values: k_, or kb_ between BeginBody and EndBody
   Vec rhs_ = nullptr, sol_ = nullptr, fixed_ = nullptr, f_local_ = nullptr, diag_ = nullptr;
   KSP ksp_ = nullptr;
+  PetscInt ndofs_ = 0;
+  bool redundant_ = true;
   ISLocalToGlobalMapping ltog_ = nullptr;
   std::vector<char> has_frame_;
   std::vector<double> cos_, sin_;

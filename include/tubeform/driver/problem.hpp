@@ -48,6 +48,7 @@ public:
   MPI_Comm comm() const { return comm_; }
   Mesh &mesh() { return mesh_; }
   const Body &body() const { return body_; }
+  const System &system() const { return system_; }
   const History &history() const { return history_; }
 
 private:

@@ -11,10 +11,17 @@
 #include <string>
 #include <vector>
 
+#include "tubeform/io/options.hpp"
+
 namespace tf {
 
 // Edits (insertions, deletions, substitutions) between two words.
 size_t EditDistance(const std::string &a, const std::string &b);
+
+// The option among `known` that `name` (with the dash) most likely means, or
+// "": one within 2 edits (-tube_r: -tube_ro), else the first whose name and
+// help hold every word of `name` (-wall_thickness: -tube_t, "Wall thickness").
+std::string OptionHint(const std::string &name, const std::vector<KnownOption> &known);
 
 class OptionReader {
 public:
@@ -24,16 +31,17 @@ public:
   // A file name or word (kept as it was when the option is not given).
   PetscErrorCode String(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, std::string &value);
   // An option read some other way (a word from a list, a file name).
-  void Note(const char *name) { names_.emplace_back(name); }
+  void Note(const char *name, const char *help = "") { names_.push_back({name, help}); }
   // Collective, after every tubeform option is read: an option given but not
   // read that is close to one of tubeform's (within 2 edits, or sharing its
   // first word: -tube_*, -rmin_*, ...) is an error naming the nearest (the
-  // caller skips it with -allow_unused). Other unread options are PETSc's (its
-  // solvers read theirs later; PETSc's -options_left lists any never read).
+  // caller skips it with -allow_unused). The other unread options are judged
+  // once the run's PETSc objects have read theirs (io/options_left.hpp).
   PetscErrorCode CheckUnknown(MPI_Comm comm) const;
+  const std::vector<KnownOption> &known() const { return names_; }
 
 private:
-  std::vector<std::string> names_; // with the dash
+  std::vector<KnownOption> names_; // with the dash
   PetscErrorCode CheckNumber(MPI_Comm comm, const char *name, bool integer) const;
 };
 

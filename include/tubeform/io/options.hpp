@@ -20,6 +20,11 @@ namespace tf {
 // iterations do not settle in quasi-static steps (docs/theory.md, "Inertia").
 enum class Dynamics { Quasistatic, Implicit, Auto };
 
+// An option tubeform reads: its name (with the dash) and its -help text.
+struct KnownOption {
+  std::string name, help;
+};
+
 struct Options {
   std::string scene = "pressure"; // a name of the scene registry (scenes/registry.hpp)
   // Geometry and mesh
@@ -123,8 +128,9 @@ struct Options {
   double time_limit = 0; // > 0: stop (results written, non-zero exit) after this many seconds of loading
   double progress = 10;  // s between progress lines on rank 0 (0: none); quiet on shorter runs
   PetscBool monitor = PETSC_FALSE;
-  PetscBool allow_unused = PETSC_FALSE; // an unknown option close to a known one is no error
+  PetscBool allow_unused = PETSC_FALSE; // an option nothing reads is a warning, not an error
   PetscBool help = PETSC_FALSE;
+  std::vector<KnownOption> known; // every option ReadOptions read (the hints for options nothing reads)
 };
 
 // Collective: reads and validates the options; `scenes` are the names -scene
@@ -133,6 +139,8 @@ struct Options {
 PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes, Options &opt);
 // Collective: refuses values out of range (called by ReadOptions).
 PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt);
+// Collective: refuses material constants out of range or not in MPa (called by CheckOptions).
+PetscErrorCode CheckMaterial(MPI_Comm comm, const MaterialParams &m);
 
 // Elements around the quarter tube for `density` elements per bending length
 // sqrt(Ro t): the wall between the die's contacts bends over that length (the
