@@ -9,7 +9,13 @@ A. The default increments (equilibrium iterations, R_max <= 0.005 q), on 1
     + friction dissipation (contact slips) + inertia work (kinetic energy +
     the energy backward Euler damps, from the accelerations), within 0.5 % at
     every increment (measured 0.15 %; friction alone is 4.9 % of the work, so
-    a lost term would fail);
+    a lost term would fail). (a) and (b) are recomputed here from the load,
+    stroke and w_* columns (tfcheck.self_checks; in the paper's unloading the
+    work of the reversed loads at the nodes is w_ext - w_tool), not read from
+    the run's energy_error and internal_error; those columns and w_tool must
+    equal the recomputation within 1e-10 (tfcheck.COLUMN_TOL: the same sums
+    in another order; measured 2e-16), so a wrong column cannot hide a
+    balance, nor a right balance a wrong column;
   - (b) internal work against plastic dissipation + stored elastic energy
     within 0.5 % (measured 0.40 % at 300 trial increments: first order in the
     step, 0.61 % at 150 and 0.20 % at 600; the midpoint update takes the work
@@ -56,7 +62,7 @@ C. mu = 0: the problem is symmetric about the 45-degree line while no node
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, out, run
+from tfcheck import COLUMN_TOL, Checks, args, column_gap, out, run, self_checks
 
 tf, mpirun, src = args()
 k = Checks("squaring")
@@ -72,11 +78,16 @@ def history(n, name, extra):
 
 def energy_checks(h, label, b_tol):
     w = np.maximum(np.abs(h["w_ext"]), 1e-300)
-    e = np.abs(h["energy_error"]).max()
-    k.check(e < 5e-3, f"{label}: (a) press work from the reported load = internal + friction + inertia work within "
-            f"{e:.2e} (5e-3)")
-    i = np.abs(h["internal_error"]).max()
-    k.check(i < b_tol, f"{label}: (b) internal work = plastic + elastic energy within {i:.2e} ({b_tol:g})")
+    a, b, tool = self_checks(h)
+    e, at = np.abs(a).max(), np.abs(a).argmax()
+    k.check(e < 5e-3, f"{label}: (a) press work from the reported load and stroke = internal + friction + inertia "
+            f"work within {e:.2e} (5e-3), recomputed from the history (worst at U = {h['stroke'][at]:.3f})")
+    i = np.abs(b).max()
+    k.check(i < b_tol, f"{label}: (b) internal work = plastic + elastic energy within {i:.2e} ({b_tol:g}), "
+            f"recomputed")
+    gap, col = column_gap(h, a, b, tool)
+    k.check(gap <= COLUMN_TOL, f"{label}: the run's energy_error, internal_error and w_tool columns equal the "
+            f"recomputed (a), (b) and press work within {gap:.1e} ({col}) ({COLUMN_TOL:g})")
     damped, kinetic = abs(h["w_damped"][-1]) / w[-1], (h["w_kinetic"] / w).max()
     k.check(damped < 1e-6 and kinetic < 1e-6,
             f"{label}: (c) damped energy {damped:.1e} of the work, kinetic at most {kinetic:.1e} (1e-6)")
@@ -141,7 +152,7 @@ for n in (300, 1000):
                   / np.abs(hi[c]).max() for c in ("load", "c_over_t"))
         k.check(rel < 2.7e-7, f"-rmin_yield inside, 1 vs 2 ranks: load and C/t within {rel:.1e} (2.7e-7)")
     if n == 1000:
-        ea, eb = np.abs(hi["energy_error"]).max(), np.abs(hi["internal_error"]).max()
+        ea, eb = (np.abs(c).max() for c in self_checks(hi)[:2])
         k.check(dp < 5e-3 and dc < 0.01 and ea < 5e-3 and eb < 3e-3,
                 f"consistency: -rmin_yield inside, {n} increments ({len(hi['stroke']) - 1} taken): load within "
                 f"{dp:.1e} (5e-3), C/t within {dc:.3f} (0.01) of the onset run; self-checks (a) {ea:.1e}, (b) {eb:.1e}")

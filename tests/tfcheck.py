@@ -143,6 +143,40 @@ def history_and_tools(path):
     return r
 
 
+def self_checks(H, share=0.5):
+    """A press's self-checks recomputed from its history (docs/theory.md, "Self-checks"; docs/output.md's
+    columns), not read from its energy_error and internal_error columns. Returns (a, b, tool) by row:
+      tool: the press's work from the reported load and stroke, share x the trapezoidal integral of load dU
+            (the quarter model carries half the punch load: share 0.5);
+      a:    (work put in - w_int - w_friction - w_kinetic - w_damped) / work put in, the work put in being tool
+            plus what the loads at the nodes did (w_ext - w_tool: the paper's unloading, pending release forces);
+      b:    (w_int - w_plastic - w_elastic) / w_int.
+    Row 0 (no work yet) gives 0."""
+    U, P = H["stroke"], H["load"]
+    tool = np.concatenate([[0.0], np.cumsum(share * 0.5 * (P[1:] + P[:-1]) * np.diff(U))])
+    w_in = tool + H["w_ext"] - H["w_tool"]
+    a = (w_in - H["w_int"] - H["w_friction"] - H["w_kinetic"] - H["w_damped"]) / np.maximum(np.abs(w_in), 1e-300)
+    b = (H["w_int"] - H["w_plastic"] - H["w_elastic"]) / np.maximum(np.abs(H["w_int"]), 1e-300)
+    return a, b, tool
+
+
+# How far the run's own self-check columns may differ from self_checks(): both are the same sums of the same
+# numbers in another order, round-off of at most ~1e4 additions (8,200 increments) of 1.1e-16 of the largest work,
+# 1e-12, times 100. A column that left out any term (the damped energy, the smallest, is 2e-9 of the work) or read
+# another quantity misses by more.
+COLUMN_TOL = 1e-10
+
+
+def column_gap(H, a, b, tool):
+    """The largest difference between the run's columns (energy_error, internal_error, w_tool relative to the
+    largest tool work) and their recomputation by self_checks(), and which column it is in."""
+    gaps = {"energy_error": np.abs(H["energy_error"] - a).max(),
+            "internal_error": np.abs(H["internal_error"] - b).max(),
+            "w_tool": np.abs(H["w_tool"] - tool).max() / max(np.abs(tool).max(), 1e-300)}
+    which = max(gaps, key=gaps.get)
+    return gaps[which], which
+
+
 class Checks:
     """Collects pass/fail lines; exit code 1 if any failed, or if none was made
     (a test whose checks were all skipped verifies nothing)."""
