@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 
-from tfruns import option  # noqa: E402,F401  (scripts import it from here too)
+from tfruns import deviation, option  # noqa: E402,F401  (scripts import them from here too)
 
 
 # Sweep statuses of a case that ran to its end: "inaccurate" only says its own
@@ -71,6 +71,11 @@ class Result:
     def column(self, name):
         """A history column over the loading, with the stroke."""
         return self.hist["stroke"][self.loading], self.hist[name][self.loading]
+
+    def deviation(self):
+        """The paper's deviation ratio min(C1, C2) / max(C1, C2) over the loading, with the stroke, from x_max (C1)
+        and y_max (C2): not the history's deviation_ratio, which is C1 / C2 itself."""
+        return self.hist["stroke"][self.loading], deviation(self.hist["x_max"], self.hist["y_max"])[self.loading]
 
 
 def outline_edges(C):

@@ -91,10 +91,10 @@ def die_table(rows, path):
     lines = [f"Apex radius of the die (`scripts/figures`, grid `die`: aluminum Ro 17.5 mm, mu 0.05, stroke to corner "
              f"radius {CORNER_OVER_T} t)", "",
              "| R/t | apex radius (mm) | largest load (N/mm) | C/t end of loading | C/t after springback | "
-             "smallest C1/C2 | status |", "|---|---|---|---|---|---|---|"]
+             "smallest min(C1, C2)/max(C1, C2) | status |", "|---|---|---|---|---|---|---|"]
     for r in sorted(rows, key=lambda r: (_num(r["rt"]), _num(r["die_r_apex"]))):
         lines.append(f"| {r['rt']} | {r['die_r_apex']} | {_num(r['P_max']):.1f} | {_num(r['C_over_t_loaded']):.3f} | "
-                     f"{_num(r['C_over_t_unloaded']):.3f} | {_num(r['C1_over_C2_min']):.3f} | {r['status']} |")
+                     f"{_num(r['C_over_t_unloaded']):.3f} | {_num(r['deviation_min']):.3f} | {r['status']} |")
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
     return path

@@ -14,8 +14,9 @@ kinematic; the flow curve sigma_y0 + K p^n stays the monotonic curve, docs/theor
 0.6 sigma_y0 reached within p ~ 0.02 (C = 0.6 sigma_y0 gamma, gamma = 200: the
 shape tests/check_kinematic.py verifies), a strong Bauschinger effect whose
 reverse yield comes near zero stress. Each case on the preset; the table gives the load at
-the end of loading, C/t and C1/C2 loaded and after springback, and the
-springback of the half-extents x_max (C1) and y_max (C2), and
+the end of loading, C/t and C1/C2 = x_max / y_max loaded and after
+springback, and the springback of the half-extents x_max (C1, across the
+press) and y_max (C2, along it), and
 docs/figures/hardening_springback.png draws C/t over the stroke of each run
 with its value after springback. Runs are kept under results/hardening/
 (delete one to run it again); the table goes to results/hardening/table.md.
@@ -55,8 +56,10 @@ def row(name, preset, m):
         print(f"  {os.path.basename(h5)}: {wall:.1f} s, {inc} increments", flush=True)
     with h5py.File(h5, "r") as f:
         a = f["/history"].attrs
+        # (C1/C2 from the half-extents: a file's deviation_ratio was min/max before it was C1/C2)
+        ratio = {w: a[f"{w}_x_max"] / a[f"{w}_y_max"] for w in ("loaded", "unloaded")}
         return (f"| {name} | {m} | {a['loaded_load']:.2f} | {a['loaded_c_over_t']:.4f} | "
-                f"{a['loaded_deviation_ratio']:.4f} | {a['unloaded_c_over_t']:.4f} | {a['unloaded_deviation_ratio']:.4f} | "
+                f"{ratio['loaded']:.4f} | {a['unloaded_c_over_t']:.4f} | {ratio['unloaded']:.4f} | "
                 f"{a['unloaded_x_max'] - a['loaded_x_max']:+.4f} | {a['unloaded_y_max'] - a['loaded_y_max']:+.4f} |")
 
 

@@ -83,7 +83,7 @@ def parse(log):
         "cells": num(r"mesh (\d+ cells \([^)]*\), \w+)"), "increments": num(r"done, (\d+) increments"),
         "factorizations": num(r"increments, (\d+) factorizations"),
         "load": num(r"load at the end of loading \(U = [^)]*\) (\S+) N/mm"),
-        "ct": num(r"C/t (\S+), C1/C2 \S+ loaded"), "ct_back": num(r"after springback C/t (\S+),"),
+        "ct": num(r"tubeform: loaded: C/t (\S+),"), "ct_back": num(r"tubeform: after springback \([^)]*\): C/t (\S+),"),
         "est_load": num(r"estimated error.*?: load (\S+) %"), "est_ct": num(r"estimated error.*C/t (\S+) \(targets"),
         "warns": "yes" if "estimated error passes" in log else "no",
         "energy": num(r"energy balance within (\S+) %"), "internal": num(r"internal work within (\S+) %"),

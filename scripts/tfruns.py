@@ -84,7 +84,15 @@ def run(case, extra, out, np_=1, exe=EXE, log_view=False):
     return wall, int(m.group(1)), int(m.group(2)), p.stdout
 
 
-COLUMNS = ("stroke", "load", "c_over_t", "deviation_ratio", "stage", "energy_error", "internal_error", "friction_iters")
+COLUMNS = ("stroke", "load", "c_over_t", "x_max", "y_max", "stage", "energy_error", "internal_error", "friction_iters")
+
+
+def deviation(x_max, y_max):
+    """The paper's deviation ratio min(C1, C2) / max(C1, C2) (<= 1: how far from symmetric, whichever half-extent
+    is the larger) from C1 = x_max and C2 = y_max. The history's deviation_ratio is C1 / C2 itself (docs/theory.md,
+    "Metrics"): above 1 where the tube is wider across the press than along it."""
+    x, y = np.asarray(x_max, dtype=float), np.asarray(y_max, dtype=float)
+    return np.minimum(x, y) / np.maximum(x, y)
 
 
 def history(path):
@@ -104,9 +112,10 @@ def at(H, col, U):
 
 
 def metrics(H):
-    """The compared numbers: P at LOAD_AT, C/t at CT_AT, C1/C2 at the end, C/t after springback."""
+    """The compared numbers: P at LOAD_AT, C/t at CT_AT, C1/C2 = x_max / y_max at the end of loading, C/t after
+    springback."""
     return ([at(H, "load", u) for u in LOAD_AT], [at(H, "c_over_t", u) for u in CT_AT],
-            float(H["deviation_ratio"][-1]), H["spring"])
+            float(H["x_max"][-1] / H["y_max"][-1]), H["spring"])
 
 
 def staircase(H, window=0.2, step=0.02, start=0.0):

@@ -183,10 +183,11 @@ def table(case, study):
             sprung = []  # the withdrawal did not finish
         fin = [r for r in rows if r['stage'] == 0][-1]
         sp = f'{sprung[-1]["c_over_t"]:.4f}' if sprung else '-'
-        spd = f'{sprung[-1]["deviation_ratio"]:.4f}' if sprung else '-'
+        # C1/C2 from the half-extents: a CSV's deviation_ratio column was min/max before run.py wrote C1/C2
+        spd = f'{sprung[-1]["x_max"] / sprung[-1]["y_max"]:.4f}' if sprung else '-'
         out.append(f'| {name}{"" if ok else " (INCOMPLETE)"} | ' + ' | '.join(cells) +
                    f' | {run.at_stroke(rows, 2.0, "c_over_t"):.4f} | {run.at_stroke(rows, 3.0, "c_over_t"):.4f}'
-                   f' | {fin["c_over_t"]:.4f} | {sp} | {fin["deviation_ratio"]:.4f} | {spd} | {len(rows)}'
+                   f' | {fin["c_over_t"]:.4f} | {sp} | {fin["x_max"] / fin["y_max"]:.4f} | {spd} | {len(rows)}'
                    f' | {s.get("wall_s") or 0:.0f} |')
         if prev is not None:
             pr, pname = prev
@@ -207,7 +208,7 @@ def save(case, name, note=None):
     src = os.path.join(ROOT, 'results', 'ccx', name, name + '.csv')
     dst_dir = os.path.join(ROOT, 'tests', 'reference', 'calculix')
     os.makedirs(dst_dir, exist_ok=True)
-    lines = open(src).read().splitlines(True)
+    lines = run.c1_over_c2_lines(open(src).read().splitlines(True))
     head = [k for k, line in enumerate(lines) if line.startswith('#')]
     if note:
         lines.insert(head[-1] + 1, f'# note: {note}\n')

@@ -6,7 +6,8 @@
 
 Writes under --dir (default results/ccx/NAME/): NAME.inp (deck.py), the ccx
 output (NAME.dat, NAME.log, ...), NAME.csv (one row per converged increment:
-stroke, load, c_over_t, x_max, y_max, deviation_ratio, stage, ...) and
+stroke, load, c_over_t, x_max, y_max, deviation_ratio (C1/C2 = x_max / y_max,
+as tubeform's history), stage, ...) and
 NAME.json (the summary: loads at the step-end strokes, C/t, springback, wall
 time). ccx runs on one core (OMP_NUM_THREADS=1 and ccx's CCX_NPROC_*) under
 `nice -n 5`.
@@ -150,6 +151,25 @@ def summary(rows, args, wall):
         if args.unload != 'none':
             s['unloaded_' + k] = final.get(k)
     return s
+
+
+def c1_over_c2_lines(lines):
+    """The lines of a CSV of COLUMNS (comments, header, rows) with deviation_ratio recomputed from the row's own
+    x_max and y_max as C1/C2 = x_max / y_max: a CSV written before this script wrote C1/C2 held the paper's
+    min(C1, C2) / max(C1, C2) there (converge.py --save passes a run's CSV through this)."""
+    out, keys = [], None
+    for line in lines:
+        if line.startswith('#') or not line.strip():
+            out.append(line)
+            continue
+        v = line.rstrip('\n').split(',')
+        if keys is None:
+            keys = v
+        else:
+            x, y = float(v[keys.index('x_max')]), float(v[keys.index('y_max')])
+            v[keys.index('deviation_ratio')] = f'{x / y:.8g}'
+        out.append(','.join(v) + '\n')
+    return out
 
 
 def write_csv(path, rows, header_lines):

@@ -5,8 +5,9 @@ A transcription of tubeform's rules (src/scenes/press.cpp PressScene::Shape,
 src/metrics/shape.cpp, src/tool/tool.cpp Tool::Project, BuildVDie), written
 again in Python so the CalculiX reference can be measured the same way:
 
-- x_max, y_max: largest x and y of the outer-surface nodes (C1, C2);
-  deviation ratio min / max.
+- x_max, y_max: largest x and y of the outer-surface nodes (C1 across the
+  press, C2 along it); deviation ratio C1 / C2 = x_max / y_max (the history's
+  deviation_ratio; the paper's, min(C1, C2) / max(C1, C2), follows from the two).
 - C/t while loading: the outer nodes sorted by angle; a node touches the die
   when its gap to the die is <= ctol (tubeform: its contact flag); its segment
   is the die segment nearest to it (smallest |gap|; the apex fillet is segment
@@ -98,9 +99,10 @@ def sort_by_angle(points):
 
 
 def extents(points):
+    """x_max (C1), y_max (C2) and the deviation ratio C1 / C2 (tubeform's OuterExtents: 1 for a point at the centre)."""
     xm = max(p[0] for p in points)
     ym = max(p[1] for p in points)
-    return xm, ym, (min(xm, ym) / max(xm, ym) if max(xm, ym) > 0 else 1.0)
+    return xm, ym, (xm / ym if ym > 0 else 1.0)
 
 
 def loaded_gap(points, die, stroke, contact=None, ctol=0.0):
@@ -158,7 +160,7 @@ def chord_gap(points, end_ids):
 
 
 def validate(path, tol=1e-9, ctol=None):
-    """Recompute C/t, x_max, y_max of a tubeform result at its output steps from the HDF5 fields and compare.
+    """Recompute C/t, x_max, y_max, C1/C2 of a tubeform result at its output steps from the HDF5 fields and compare.
 
     ctol None: tubeform's contact flags; a number: contact taken as gap <= ctol (the rule used on CalculiX)."""
     import h5py
@@ -173,7 +175,7 @@ def validate(path, tol=1e-9, ctol=None):
         u = f['/vertex_fields/displacement_u'][:]
         cs = f['/vertex_fields/contact_state'][:]
         lam = f['/time'][:].ravel()
-        hist = {k: f['/history/' + k][:] for k in ('stroke', 'stage', 'c_over_t', 'x_max', 'y_max')}
+        hist = {k: f['/history/' + k][:] for k in ('stroke', 'stage', 'c_over_t', 'x_max', 'y_max', 'deviation_ratio')}
     outer = np.where(np.abs(np.hypot(x0[:, 0], x0[:, 1]) - ro) < 1e-6 * ro)[0]
     die = VDie(ro, r_apex)
     worst, ends, rows = 0.0, None, []
@@ -200,8 +202,9 @@ def validate(path, tol=1e-9, ctol=None):
             c, ends, _, _ = loaded_gap(pts, die, U, contact=None if ctol is not None else contact, ctol=ctol or 0.0)
         else:
             c = chord_gap(pts, ends)
-        xm, ym, _ = extents(pts)
-        d = max(abs(c / t - hist['c_over_t'][j]), abs(xm - hist['x_max'][j]), abs(ym - hist['y_max'][j]))
+        xm, ym, dev = extents(pts)
+        d = max(abs(c / t - hist['c_over_t'][j]), abs(xm - hist['x_max'][j]), abs(ym - hist['y_max'][j]),
+                abs(dev - hist['deviation_ratio'][j]))
         worst = max(worst, d)
         rows.append((lam[k], U, stage, c / t, hist['c_over_t'][j], xm, hist['x_max'][j], d))
     print(f'{"lambda":>8} {"stroke":>8} st {"C/t py":>10} {"C/t tf":>10} {"x_max py":>10} {"x_max tf":>10} {"diff":>9}')
