@@ -1,0 +1,149 @@
+#!/usr/bin/python3
+"""How a squaring run's error splits into the mesh's and the steps', tube by tube: the study behind the error
+estimate's design (docs/accuracy.md, "The error estimate").
+
+Each tube of scripts/validate's set (and the paper's nine) is run at resolutions (nt cells through the wall,
+D cells around per bending length sqrt(Ro t), step level s: -increments 100 s, -rmin_deps 0.002 / s,
+-rmin_domega 0.01 / s) with one element for all (the preset run's) and one friction regularization (VCRI a length
+of the tube, 8.3e-4 sqrt(Ro t): 2 % of the default preset's node spacing), so that only what a level names
+changes. Runs are cached under results/levels/<tube>/ (delete a file to run it again).
+
+    /usr/bin/python3 studies/estimate_levels.py run  --tubes al_11.7_mu0.05,... [--plan grid|estimate|reference] [-j 2]
+    /usr/bin/python3 studies/estimate_levels.py show --tubes ...            # values at the reported strokes
+
+Plans: `estimate` runs what the estimate's candidates read (the preset levels (2, 12, 1) and (4, 24, 1) with
+their step and mesh companions); `reference` the tube's converged answer (mesh levels (4, 24), (8, 48), (12, 68)
+at s 1, the step ladder s 1, 2, 4 at (4, 24)); `grid` nt x D at s 1.
+"""
+import argparse
+import concurrent.futures
+import importlib.machinery
+import importlib.util
+import json
+import math
+import os
+import sys
+
+import h5py
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import tfruns  # noqa: E402
+
+_loader = importlib.machinery.SourceFileLoader("validate", os.path.join(ROOT, "scripts", "validate"))
+_spec = importlib.util.spec_from_loader("validate", _loader)
+validate = importlib.util.module_from_spec(_spec)
+_loader.exec_module(validate)
+
+OUT = os.path.join(ROOT, "results", "levels")
+PAPER = {f"paper_{tube}_mu{mu}": f"options/squaring_{tube}_mu{mu}.opts" for tube in ("al_11.67", "al_37", "cu_29")
+         for mu in ("0.05", "0.20", "0.35")}
+# The friction regularization as a length of the tube: 2 % of the default preset's node spacing sqrt(Ro t) / 24.
+VCRI_OF_BENDING_LENGTH = 0.02 / 24
+
+
+def tube(name):
+    """(options of the tube's scene, Ro, t, final stroke)."""
+    if name in PAPER:
+        opts = ["-options_file", PAPER[name], "-progress", 0, "-output_every", 100000, "-output_stroke", 0]
+        text = open(os.path.join(ROOT, "options", "squaring.opts")).read() + open(os.path.join(ROOT, PAPER[name])).read()
+        ro, t = float(tfruns.option(text, "-tube_ro")), float(tfruns.option(text, "-tube_t"))
+        return [str(o) for o in opts], ro, t, float(tfruns.option(text, "-stroke", 4.2))
+    _, ro, t, _, stroke = validate.CASES[name]
+    return validate.case_options(name), ro, t, stroke
+
+
+def label(nt, d, s, element):
+    return f"n{nt}_d{d:g}_s{s:g}_{element}"
+
+
+def run(name, nt, d, s, element):
+    """One run (cached): its meta (wall, increments, factorizations, status)."""
+    folder = os.path.join(OUT, name)
+    os.makedirs(folder, exist_ok=True)
+    h5 = os.path.join(folder, label(nt, d, s, element) + ".h5")
+    meta = h5[:-3] + ".json"
+    if not os.path.exists(meta):
+        opts, ro, t, _ = tube(name)
+        extra = ["-mesh_nt", nt, "-mesh_ntheta", 0, "-mesh_density", d, "-element", element, "-increments",
+                 round(100 * s), "-rmin_deps", 0.002 / s, "-rmin_domega", 0.01 / s, "-rmin_yield", "inside",
+                 "-friction_vcri", VCRI_OF_BENDING_LENGTH * math.sqrt(ro * t), "-unload_increments", 10,
+                 "-error_estimate", 0, "-rmin_deps_yield", 2 / s]
+        try:
+            wall, incs, facts, _ = tfruns.run(opts[1], opts[2:] + [str(o) for o in extra], h5)
+            status = "done"
+        except tfruns.RunFailed as e:
+            wall, incs, facts, status = float("nan"), 0, 0, "failed: " + str(e).splitlines()[-1][:300]
+        with open(meta, "w") as f:
+            json.dump({"wall": wall, "increments": incs, "factorizations": facts, "status": status}, f)
+    with open(meta) as f:
+        return json.load(f), h5
+
+
+def values(h5, strokes):
+    """Load and C/t at the strokes, C/t after springback; and the loading curve."""
+    with h5py.File(h5, "r") as h:
+        H = h["/history"]
+        load = H["stage"][:] == 0
+        U, P, C = H["stroke"][:][load], H["load"][:][load], H["c_over_t"][:][load]
+        spring = float(H["c_over_t"][-1])
+    return [float(np.interp(u, U, P)) for u in strokes], [float(np.interp(u, U, C)) for u in strokes], spring, (U, P, C)
+
+
+def preset_nt(name, strain, least):
+    _, ro, t, _ = tube(name)
+    return max(least, math.ceil(t / (ro * strain) - 1e-9))
+
+
+def plan(name, which):
+    """The runs (nt, D, s, element) of a plan for a tube."""
+    fast_nt, default_nt = preset_nt(name, 0.044, 2), preset_nt(name, 0.022, 4)
+    element = "qm6bar" if default_nt >= 5 else "qm6"
+    if which == "grid":
+        return [(n, d, 1, element) for n in (2, 4, 8) for d in (12, 24, 48)]
+    if which == "estimate":
+        runs = []
+        for nt, d in ((fast_nt, 12), (default_nt, 24)):
+            el = "qm6bar" if nt >= 5 else "qm6"
+            runs += [(nt, d, 1, el), (nt, d, 0.5, el), (max(2, nt // 2), d / 2, 1, el), (max(2, nt // 2), d / 2, 0.5, el)]
+        return runs
+    if which == "reference":
+        nt = max(4, default_nt)
+        return [(nt, 24, 1, element), (2 * nt, 48, 1, element), (3 * nt, 68, 1, element), (nt, 24, 2, element),
+                (nt, 24, 4, element)]
+    raise SystemExit(f"estimate_levels.py: unknown plan {which} (grid, estimate, reference)")
+
+
+def strokes(name):
+    final = tube(name)[3]
+    return [u for u in tfruns.LOAD_AT if u < final - 1e-9] + [final]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("what", choices=("run", "show"))
+    ap.add_argument("--tubes", required=True)
+    ap.add_argument("--plan", default="estimate,reference")
+    ap.add_argument("-j", type=int, default=1)
+    a = ap.parse_args()
+    tubes = a.tubes.split(",")
+    jobs = [(t, *r) for t in tubes for p in a.plan.split(",") for r in plan(t, p)]
+    if a.what == "run":
+        with concurrent.futures.ThreadPoolExecutor(a.j) as ex:
+            for (t, *r), (m, _) in zip(jobs, ex.map(lambda j: run(*j), jobs)):
+                print(f"{t:22s} {label(*r):24s} {m['status']:8s} {m['wall']:7.1f} s {m['increments']:6d} incr "
+                      f"{m['factorizations']:7d} fact", flush=True)
+        return
+    for t, *r in jobs:
+        m, h5 = run(t, *r) if os.path.exists(os.path.join(OUT, t, label(*r) + ".json")) else ({"status": "-"}, None)
+        if m["status"] != "done":
+            print(f"{t:22s} {label(*r):24s} {m['status']}")
+            continue
+        P, C, S, _ = values(h5, strokes(t))
+        print(f"{t:22s} {label(*r):24s} P " + " ".join(f"{p:9.3f}" for p in P) + "  C/t " +
+              " ".join(f"{c:.4f}" for c in C) + f"  sprung {S:.4f}")
+
+
+if __name__ == "__main__":
+    main()
