@@ -1,23 +1,21 @@
-// The tool scenes of METHOD.md section 1: `squaring` (quarter tube, upper
-// V-die) and `flattening` (quarter ring, flat plate), with unloading.
-// With a lower die that does not mirror the upper one (-lower_die,
-// -lower_die_motion) or -model half, the half tube x >= 0 between both dies;
-// -model full: the whole tube, both dies across the y axis.
+// The tool scenes of METHOD.md section 1: `squaring` (quarter tube, upper V-die) and `flattening` (quarter ring,
+// flat plate), with unloading. With a lower die that does not mirror the upper one (-lower_die,
+// -lower_die_motion) or -model half, the half tube x >= 0 between both dies; -model full: the whole tube, both
+// dies across the y axis.
 //
-// Load path: lambda in [0, 1] presses the tool to the final stroke; with
-// -unload reverse or withdraw, lambda in [1, 2] unloads:
-//   reverse  (the paper): every point elastic, the contact forces at the end
-//            of loading applied reversed as nodal loads, tools removed;
-//   withdraw: the tool moves back and releases the nodes one by one (r5).
+// Load path: lambda in [0, 1] presses the tool to the final stroke; with -unload reverse or withdraw, lambda in
+// [1, 2] unloads:
+//   reverse  (the paper): the contact forces at the end of loading applied reversed as nodal loads, tools removed;
+//   withdraw: the tool moves back and releases the nodes one by one (r5);
+// either with every point elastic (-springback elastic, the paper's) or the material's law.
 // With -pass2_stroke, a second pass after the paper's unloading: lambda in [2, 3] presses its dies from their
 // start, [3, 4] springs back; -pass2_turn turns the tube before it (its dies drawn turned the other way, its
 // metrics and forces in its press's frame: die.hpp, PassTurn). -die_force presses by a force (the stroke its
 // outcome), -side_die adds dies at the sides, -die_offset and -die_path move the die off the axis (the full
 // model under the rotation hold, hold.hpp); docs/dies.md.
-// History: stroke = tool stroke U (mm; half the dies' closing; over two passes
-// the sum, the second pass's die at stroke - U1), load = punch load on the
-// full tube (N/mm), the upper die's vertical force on the model: twice it in
-// the quarter and the half model, which carry half of it.
+// History: stroke = tool stroke U (mm; half the dies' closing; over two passes the sum, the second pass's die at
+// stroke - U1), load = punch load on the full tube (N/mm), the upper die's vertical force on the model: twice it
+// in the quarter and the half model, which carry half of it.
 #include <algorithm>
 #include <cmath>
 
@@ -142,6 +140,8 @@ public:
   PetscErrorCode BeginStage(Model &m, double lambda) override
   {
     PetscFunctionBeginUser;
+    const bool elastic = opt_.springback == "elastic"; // (the release's law: either -unload)
+    if (opt_.unload == "withdraw") m.body.BeginRelease(elastic, false);
     if (opt_.unload != "reverse") PetscFunctionReturn(PETSC_SUCCESS);
     if (!Unloading(lambda)) {
       // The second pass: the springback's loads are all applied; its dies from their start, the material's law.
@@ -155,7 +155,7 @@ public:
       unloading_ = false;
       // (the pin stays until the second pass's dies hold the half model's tube: Load)
       reversed_total_[0] = reversed_total_[1] = reversed_moment_ = 0;
-      m.body.SetPlasticAgain();
+      m.body.EndRelease();
       pass_ = 1;
       ContactSpec spec = spec_;
       hold_.PinSlide(held_[1]);
@@ -168,7 +168,7 @@ public:
     }
     if (!m.quiet)
       PetscCall(WarnUntouched(m.comm, *m.contact, pass_ == 1 ? "second" : "first", pass_ == 1 ? stroke2_ : stroke_));
-    // The paper's unloading: contact forces become loads, tools go, all elastic.
+    // The paper's unloading: contact forces become loads, tools go (all elastic: -springback elastic).
     if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
     PetscCall(VecZeroEntries(reversed_));
     PetscCall(m.contact->AddContactForces(reversed_));
@@ -176,7 +176,7 @@ public:
     PetscCall(m.contact->TotalForce(kUpper, reversed_total_, &reversed_moment_));
     m.contact->Remove();
     m.system.ClearFrames();
-    m.body.SetElasticOnly();
+    m.body.BeginRelease(elastic, true);
     unloading_ = true;
     if (half_) PetscCall(ChoosePin(m));
     PetscFunctionReturn(PETSC_SUCCESS);
