@@ -135,7 +135,10 @@ for law, h in runs.items():
     de = EM - h["stroke"][rel]
     # 4. The onset of reverse yield.
     onset = RHO * S0 * HALF / (EP * Y_OUT)
-    first = rel[np.flatnonzero(h["release_yielded"][rel] > 0)[0]]
+    yielded = np.flatnonzero(h["release_yielded"][rel] > 0)
+    if not k.check(len(yielded) > 0, f"{law}: points reach the yield surface in the release"):
+        continue
+    first = rel[yielded[0]]
     k.check(EM - h["stroke"][first - 1] < 1.03 * onset and EM - h["stroke"][first] >= 0.97 * onset,
             f"{law}: reverse yield begins between the release's strain changes {EM - h['stroke'][first - 1]:.5f} and "
             f"{EM - h['stroke'][first]:.5f}, closed form {onset:.5f} (3 %)")

@@ -50,7 +50,7 @@ PetscErrorCode Body::Persist(Archive &ar)
   PetscCall(ar.Value("elastic_only", elastic_only));
   // A release under way: where each point's yield ratio and plastic strain stood at its start.
   PetscCall(ar.Value("releasing", releasing));
-  std::vector<double> start = release_start_;
+  std::vector<double> start = ar.reading() ? std::vector<double>(kReleaseStart * state_.size()) : release_start_;
   if (releasing) PetscCall(ar.CellData("release_start", start, kReleaseStart * fe::kGauss));
   if (!ar.reading()) PetscFunctionReturn(PETSC_SUCCESS);
   releasing_ = releasing, release_start_ = releasing ? start : std::vector<double>{};
