@@ -336,8 +336,8 @@ PetscErrorCode Body::MeasureRelease(ReleaseYield &y) const
   PetscFunctionBeginUser;
   y = ReleaseYield{};
   if (!releasing_) PetscFunctionReturn(PETSC_SUCCESS);
-  y.releasing = true;
   const bool elastic = law_ != nullptr;
+  y.releasing = true, y.elastic = elastic;
   for (size_t i = 0; i < state_.size(); ++i) {
     const double *start = &release_start_[kReleaseStart * i];
     if (elastic) {

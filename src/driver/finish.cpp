@@ -64,7 +64,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n",
                           opt_.scene.c_str(), (int)at_.inc, (int)system_.factorizations(), opt_.output.c_str()));
     PetscCall(PrintAnswer(comm_, answer, opt_.target_load, opt_.target_c_over_t));
-    PetscCall(PrintReleases(comm_, releases, opt_.springback == "elastic", all_points));
+    PetscCall(PrintReleases(comm_, releases, all_points));
     PetscCall(PetscPrintf(comm_,
                           "tubeform: self-checks: energy balance within %.2g %%, internal work within %.2g %%; "
                           "compromises: %d steps past an event, %d unsettled, %d with inconsistent loading states\n",

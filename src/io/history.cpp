@@ -92,8 +92,8 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"die_turn", &HistoryRow::die_turn,
      "-die_path_turn: the upper die's turn about -die_pivot (degrees, counter-clockwise; 0 without)"},
     {"release", &HistoryRow::release,
-     "1 in a springback (the release whose law -springback sets: the unloading of a tool scene, the bending "
-     "scene's first reversal up to where its moment passes zero), 0 elsewhere"},
+     "a springback (the release whose law -springback sets: the unloading of a tool scene, the bending scene's "
+     "first reversal up to where its moment passes zero): 1 by the material's law, 2 elastic; 0 elsewhere"},
     {"release_yielded", &HistoryRow::release_yielded,
      "a springback: Gauss points that reached the yield surface since it began: that flowed in it "
      "(-springback material), or that it carried past the surface (-springback elastic); 0 outside one"},

@@ -7,7 +7,7 @@
 // [1, 2] unloads:
 //   reverse  (the paper): the contact forces at the end of loading applied reversed as nodal loads, tools removed;
 //   withdraw: the tool moves back and releases the nodes one by one (r5);
-// either with every point elastic (-springback elastic, the paper's) or the material's law.
+// either with every point elastic (the paper's) or by the material's law: -springback, ElasticRelease.
 // With -pass2_stroke, a second pass after the paper's unloading: lambda in [2, 3] presses its dies from their
 // start, [3, 4] springs back; -pass2_turn turns the tube before it (its dies drawn turned the other way, its
 // metrics and forces in its press's frame: die.hpp, PassTurn). -die_force presses by a force (the stroke its
@@ -140,7 +140,7 @@ public:
   PetscErrorCode BeginStage(Model &m, double lambda) override
   {
     PetscFunctionBeginUser;
-    const bool elastic = opt_.springback == "elastic"; // (the release's law: either -unload)
+    const bool elastic = ElasticRelease(opt_);
     if (opt_.unload == "withdraw") m.body.BeginRelease(elastic, false);
     if (opt_.unload != "reverse") PetscFunctionReturn(PETSC_SUCCESS);
     if (!Unloading(lambda)) {

@@ -110,10 +110,11 @@ public:
   // What the release under way did at the yield surface since it began (zeros outside one).
   struct ReleaseYield {
     bool releasing = false; // a release is under way
+    bool elastic = false;   // ... with every point elastic
     // The points that reached the yield surface: those that flowed (the material's law), or that the release
     // carried past it by more than kOnSurface (elastic).
     PetscInt reached = 0;
-    double excess = 0; // elastic: the largest sigma_eq / sigma_y - 1 beyond the point's own at the release's start
+    double excess = 0; // elastic: the largest sigma_eq / sigma_y - max(1, the point's own at the release's start)
     double dep = 0;    // the material's law: the largest plastic strain taken in the release
   };
   // Collective: that measure of the current state.
