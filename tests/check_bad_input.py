@@ -58,6 +58,7 @@ cases = [
     (["-scene", "squaring", "-lower_die", "flat", "-unload", "withdraw"], "-unload withdraw"),
     (["-scene", "squaring", "-lower_die", "no/such/die.profile"], "-lower_die no/such/die.profile"),
     (["-lower_die_motion", "up"], "-lower_die_motion"),
+    (["-springback", "plastic"], "-springback"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-unload", "withdraw"], "-pass2_stroke"),
     (["-scene", "squaring", "-pass2_lower_die", "flat"], "give -pass2_stroke"),
     (["-lower_die", "flat"], "presses with no dies"),  # the base case is the pressure scene
@@ -186,7 +187,7 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 115 and len(selected) == 5, f"{len(cases)} cases on 1 rank (115), {len(selected)} on 2 (5)")
+k.check(len(cases) == 116 and len(selected) == 5, f"{len(cases)} cases on 1 rank (116), {len(selected)} on 2 (5)")
 
 
 def attempt(np_, extra):
