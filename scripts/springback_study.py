@@ -8,8 +8,9 @@ Armstrong-Frederick backstress (AF: 0.6 sigma_y0 reached within p ~ 0.02, as scr
 Each case on the preset, -error_estimate 0. The table gives the load and C/t at the end of loading, C/t and
 C1/C2 after springback and the springback of the half-extents x_max (C1) and y_max (C2), the Gauss points that
 reach the yield surface in the release (material: those that flow in it; elastic: those it carries past the
-surface), and how far: the largest plastic strain taken in it (material) or the largest excess
-sigma_eq / sigma_y - 1 (elastic). Runs are kept under results/springback/ (delete one to run it again); the
+surface), how far: the largest plastic strain taken in it (material) or the largest excess
+sigma_eq / sigma_y - 1 (elastic), and its plastic work over the elastic energy stored where it began (above 1:
+a collapse under the loads, docs/theory.md "Unloading"). Runs are kept under results/springback/ (delete one to run it again); the
 table goes to results/springback/table.md.
 """
 import argparse
@@ -48,10 +49,13 @@ def row(name, preset, unload, hardening, law, exe):
         release = h["stage"][:] == 1
         reached = int(h["release_yielded"][:][release].max())
         how = h["release_dep"][:][release].max() if law == "material" else h["release_excess"][:][release].max()
+        # (its plastic work over the elastic energy stored where it began: above 1 a collapse under the loads)
+        start = np.flatnonzero(release)[0] - 1
+        work = (h["w_plastic"][:][release][-1] - h["w_plastic"][start]) / h["w_elastic"][start]
         return (f"| {name} | {hardening} | {law} | {a['loaded_load']:.2f} | {a['loaded_c_over_t']:.4f} | "
                 f"{a['unloaded_c_over_t']:.4f} | {a['unloaded_deviation_ratio']:.4f} | "
                 f"{a['unloaded_x_max'] - a['loaded_x_max']:+.4f} | {a['unloaded_y_max'] - a['loaded_y_max']:+.4f} | "
-                f"{reached} | {how:.3g} | {int(np.count_nonzero(release))} |")
+                f"{reached} | {how:.3g} | {work:.3g} | {int(np.count_nonzero(release))} |")
 
 
 def main():
@@ -65,7 +69,7 @@ def main():
     os.makedirs(OUT, exist_ok=True)
     lines = ["| case | hardening | springback | load loaded (N/mm) | C/t loaded | C/t sprung back | C1/C2 sprung back | "
              "springback of C1 (mm) | of C2 (mm) | points at the yield surface | how far (dep, or excess) | "
-             "release increments |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "plastic work / stored | release increments |", "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for name in a.cases.split(","):
         for hardening in a.hardening.split(","):
             for law in ("elastic", "material"):

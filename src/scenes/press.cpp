@@ -168,7 +168,7 @@ public:
     }
     if (!m.quiet)
       PetscCall(WarnUntouched(m.comm, *m.contact, pass_ == 1 ? "second" : "first", pass_ == 1 ? stroke2_ : stroke_));
-    // The paper's unloading: contact forces become loads, tools go (all elastic: -springback elastic).
+    // The paper's unloading: contact forces become loads, tools go (every point elastic by default: ElasticRelease).
     if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
     PetscCall(VecZeroEntries(reversed_));
     PetscCall(m.contact->AddContactForces(reversed_));
