@@ -30,7 +30,8 @@ constexpr double kLength = 0.25;
 class BendingScene : public Scene {
 public:
   explicit BendingScene(const Options &opt)
-      : strain_(opt.bending_strain, opt.bending_cycle), elastic_release_(opt.springback == "elastic")
+      : strain_(opt.bending_strain, opt.bending_cycle), elastic_release_(opt.springback == "elastic"),
+        reversal_(!opt.bending_cycle.empty() && (opt.bending_cycle[0] - opt.bending_strain) * opt.bending_strain < 0)
   {}
   std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
@@ -60,11 +61,11 @@ public:
     return 0;
   }
   PetscErrorCode ExternalForce(Model &, double, Vec f) override { return VecZeroEntries(f); }
-  // The first reversal (from lambda 1) is the strip's release up to where the moment passes zero, its
-  // springback (-springback elastic: elastic); past it the strip is bent back, by the material's law.
+  // A second stage that turns the strip back (from lambda 1) is its release up to where the moment passes zero,
+  // its springback (-springback elastic: elastic); past it the strip is bent back, by the material's law.
   PetscErrorCode BeginStage(Model &m, double lambda) override
   {
-    if (lambda < 1.5)
+    if (lambda < 1.5 && reversal_)
       m.body.BeginRelease(elastic_release_, false), release_moment_ = moment_;
     else
       m.body.EndRelease();
@@ -106,6 +107,7 @@ private:
   static constexpr double kOnAxis = 1e-9; // mm: a node this close to y = 0 is the middle of its end
   StrainPath strain_;
   bool elastic_release_;      // -springback elastic
+  bool reversal_;             // the second stage turns the strip back (a release first)
   double moment_ = 0;         // the moment of the last row measured
   double release_moment_ = 0; // the moment where the release began
 };
