@@ -24,7 +24,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import tfruns  # noqa: E402
 
 OUT = os.path.join(tfruns.root, "results", "springback")
-AL, CU = 165.3, 445.0  # the Ludwik sigma_y0 of the paper's aluminum and copper (METHOD.md Table 1)
+AL, CU = 165.3, 445.0  # the Ludwik sigma_y0 of the paper's aluminum and copper (its Table 1)
 CASES = {}  # (the default tube, options/squaring.opts, is al_11.67_mu0.05)
 for tube, sy0 in (("al_11.67", AL), ("al_37", AL), ("cu_29", CU)):
     for mu in ("0.05", "0.20", "0.35"):
