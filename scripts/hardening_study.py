@@ -16,7 +16,8 @@ shape tests/check_kinematic.py verifies), a strong Bauschinger effect whose
 reverse yield comes near zero stress. Each case on the preset; the table gives the load at
 the end of loading, C/t and C1/C2 = x_max / y_max loaded and after
 springback, and the springback of the half-extents x_max (C1, across the
-press) and y_max (C2, along it), and
+press) and y_max (C2, along it) (the paper's elastic springback:
+scripts/springback_study.py has what the material's own law changes), and
 docs/figures/hardening_springback.png draws C/t over the stroke of each run
 with its value after springback. Runs are kept under results/hardening/
 (delete one to run it again); the table goes to results/hardening/table.md.
@@ -46,7 +47,7 @@ def row(name, preset, m):
     """One run: m the isotropic share (Hodge's M) with a linear backstress, or "AF" the saturating one."""
     case, sy0, k = CASES[name]
     h5 = os.path.join(OUT, f"{name}_{preset}_M{m}.h5")
-    extra = ["-options_file", f"options/preset-{preset}.opts", "-error_estimate", "0"]
+    extra = ["-options_file", f"options/preset-{preset}.opts", "-error_estimate", "0", "-springback", "elastic"]
     if m == "AF":
         extra += ["-hardening", "chaboche", "-material_kinematic", f"{AF_SHARE * sy0 * AF_GAMMA:g},{AF_GAMMA:g}"]
     elif m < 1:

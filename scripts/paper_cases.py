@@ -10,6 +10,8 @@ ran out) and wall time; writes the table to results/paper_cases.md. The
 deviation ratio is the smaller of x_max (C1, across the press) and y_max
 (C2, along it) over the larger, as the paper's stays at most 1; the
 history's deviation_ratio is C1/C2 itself (docs/theory.md, "Metrics").
+springback is the paper's, elastic (`-- -springback material` for the
+material's own law).
 
     /usr/bin/python3 scripts/paper_cases.py [JOBS]    run the cases (JOBS at a time, default 2)
     /usr/bin/python3 scripts/paper_cases.py --table   tabulate the last runs again (no runs)
@@ -63,7 +65,8 @@ def run(path):
     out = os.path.join(results, f"squaring_{name}{tag}.h5")
     t0 = time.time()
     try:
-        p = subprocess.run([f"{root}/build/tubeform", "-options_file", os.path.relpath(path, root), "-output", out, "-output_every", "50"] + extra,
+        p = subprocess.run([f"{root}/build/tubeform", "-options_file", os.path.relpath(path, root), "-output", out, "-output_every", "50",
+                            "-springback", "elastic"] + extra,
                            cwd=root, env=env, capture_output=True, text=True, timeout=timeout)
         m = re.search(r"done, \d+ increments, (\d+) factorizations", p.stdout)
         if p.returncode == 0:

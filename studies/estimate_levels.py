@@ -12,8 +12,8 @@ changes. Runs are cached under results/levels/<tube>/ (delete a file to run it a
     /usr/bin/python3 studies/estimate_levels.py show --tubes ...            # values at the reported strokes
 
 Plans: `estimate` runs what the estimate's candidates read (the preset levels (2, 12, 1) and (4, 24, 1) with
-their step and mesh companions); `reference` the tube's converged answer (mesh levels (4, 24), (8, 48), (12, 68)
-at s 1, the step ladder s 1, 2, 4 at (4, 24)); `grid` nt x D at s 1.
+their step and mesh companions); `reference` the tube's converged answer (the step ladder s 1, 2, 4 on the mesh
+(2 nt, 48) and the mesh (3 nt, 68) at s 1, nt the default preset's); `grid` nt x D at s 1.
 """
 import argparse
 import concurrent.futures
@@ -110,8 +110,8 @@ def plan(name, which):
         return runs
     if which == "reference":
         nt = max(4, default_nt)
-        return [(nt, 24, 1, element), (2 * nt, 48, 1, element), (3 * nt, 68, 1, element), (nt, 24, 2, element),
-                (nt, 24, 4, element)]
+        return [(2 * nt, 48, 1, element), (2 * nt, 48, 2, element), (2 * nt, 48, 4, element),
+                (3 * nt, 68, 1, element)]
     raise SystemExit(f"estimate_levels.py: unknown plan {which} (grid, estimate, reference)")
 
 
@@ -120,14 +120,94 @@ def strokes(name):
     return [u for u in tfruns.LOAD_AT if u < final - 1e-9] + [final]
 
 
+def reference(name):
+    """The tube's converged answer: the step ladder on the mesh (2 nt, 48) extrapolated as a first-order method's
+    limit (2 f(4) - f(2)), with the mesh's remaining error from (3 nt, 68) at s 1 against (2 nt, 48) at s 1; its
+    uncertainty the larger of the two corrections (per value). None until its runs exist."""
+    nt = max(4, preset_nt(name, 0.022, 4))
+    element = "qm6bar" if preset_nt(name, 0.022, 4) >= 5 else "qm6"
+    want = [(2 * nt, 48, 1), (2 * nt, 48, 2), (2 * nt, 48, 4), (3 * nt, 68, 1)]
+    got = []
+    for n, d, s in want:
+        path = os.path.join(OUT, name, label(n, d, s, element))
+        if not os.path.exists(path + ".json") or json.load(open(path + ".json"))["status"] != "done":
+            return None
+        P, C, S, _ = values(path + ".h5", strokes(name))
+        got.append(np.array(P + C + [S]))
+    f1, f2, f4, fine = got
+    step = 2 * f4 - f2 - f1          # the step's correction at s 1 on the mesh (2 nt, 48)
+    mesh = fine - f1                 # the mesh's correction from 48 to 68 around (and 3/2 through the wall)
+    return {"value": f1 + step + mesh, "unc": np.maximum(np.abs(f4 - f2), np.abs(mesh))}
+
+
+def estimates(name, nt, d, element):
+    """The run (nt, d, 1) and its companions' values (None if missing)."""
+    runs = {}
+    for key, (n, dd, s) in {"run": (nt, d, 1), "S": (nt, d, 0.5), "M": (max(2, nt // 2), d / 2, 1),
+                            "MS": (max(2, nt // 2), d / 2, 0.5)}.items():
+        path = os.path.join(OUT, name, label(n, dd, s, element))
+        if not os.path.exists(path + ".json") or json.load(open(path + ".json"))["status"] != "done":
+            return None
+        P, C, S, _ = values(path + ".h5", strokes(name))
+        runs[key] = np.array(P + C + [S])
+    return runs
+
+
+CANDIDATES = {
+    "old: 3 |MS - run|": lambda r: 3 * np.abs(r["MS"] - r["run"]),
+    "1 |MS - run|": lambda r: np.abs(r["MS"] - r["run"]),
+    "|S - run| + |M - run| / 3": lambda r: np.abs(r["S"] - r["run"]) + np.abs(r["M"] - r["run"]) / 3,
+    "|S - run| + |M - run|": lambda r: np.abs(r["S"] - r["run"]) + np.abs(r["M"] - r["run"]),
+    "|S - run + (M - run) / 3|": lambda r: np.abs(r["S"] - r["run"] + (r["M"] - r["run"]) / 3),
+}
+
+
+def evaluate(tubes):
+    """Each candidate's effectivity (estimate / true error) over the cells: load (relative) and C/t at the reported
+    strokes, C/t after springback; a cell is bounded when the estimate reaches the error less the reference's
+    uncertainty."""
+    cells = {c: [] for c in CANDIDATES}
+    for t in tubes:
+        ref = reference(t)
+        if ref is None:
+            print(f"{t}: no reference yet")
+            continue
+        fast_nt, default_nt = preset_nt(t, 0.044, 2), preset_nt(t, 0.022, 4)
+        for preset, nt, d in (("fast", fast_nt, 12), ("default", default_nt, 24)):
+            r = estimates(t, nt, d, "qm6bar" if nt >= 5 else "qm6")
+            if r is None:
+                print(f"{t} {preset}: no runs yet")
+                continue
+            n = len(strokes(t))
+            scale = np.array([abs(v) for v in ref["value"][:n]] + [1.0] * (n + 1))  # load relative, C/t absolute
+            err, unc = (r["run"] - ref["value"]) / scale, ref["unc"] / scale
+            for c, f in CANDIDATES.items():
+                est = f(r) / scale
+                for k in range(2 * n + 1):
+                    what = "load" if k < n else "C/t"
+                    cells[c].append((t, preset, what, k, err[k], unc[k], est[k]))
+    for c, rows in cells.items():
+        if not rows:
+            continue
+        e = np.array([abs(x[4]) for x in rows]); u = np.array([x[5] for x in rows]); s = np.array([x[6] for x in rows])
+        bounded = s >= e - u
+        eff = s / np.maximum(e, 1e-12)
+        print(f"{c:32s} cells {len(rows):3d}  bounded {bounded.mean():5.1%}  median effectivity {np.median(eff):6.2f}"
+              f"  within 3x {np.mean(bounded & (eff <= 3)):5.1%}")
+    return cells
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=("run", "show"))
+    ap.add_argument("what", choices=("run", "show", "eval"))
     ap.add_argument("--tubes", required=True)
     ap.add_argument("--plan", default="estimate,reference")
     ap.add_argument("-j", type=int, default=1)
     a = ap.parse_args()
     tubes = a.tubes.split(",")
+    if a.what == "eval":
+        evaluate(tubes)
+        return
     jobs = [(t, *r) for t in tubes for p in a.plan.split(",") for r in plan(t, p)]
     if a.what == "run":
         with concurrent.futures.ThreadPoolExecutor(a.j) as ex:

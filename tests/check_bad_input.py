@@ -74,6 +74,7 @@ cases = [
     (["-scene", "squaring", "-lower_die", "flat", "-unload", "withdraw"], "-unload withdraw"),
     (["-scene", "squaring", "-lower_die", "no/such/die.profile"], "-lower_die no/such/die.profile"),
     (["-lower_die_motion", "up"], "-lower_die_motion"),
+    (["-springback", "plastic"], "-springback"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-unload", "withdraw"], "-pass2_stroke"),
     (["-scene", "squaring", "-pass2_lower_die", "flat"], "give -pass2_stroke"),
     (["-lower_die", "flat"], "presses with no dies"),  # the base case is the pressure scene
@@ -241,7 +242,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")], ["-wall_thickness", "1.65"],
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 136 and len(selected) == 8, f"{len(cases)} cases on 1 rank (136), {len(selected)} on 2 (8)")
+k.check(len(cases) == 137 and len(selected) == 8, f"{len(cases)} cases on 1 rank (137), {len(selected)} on 2 (8)")
 
 
 def attempt(np_, extra):

@@ -7,9 +7,10 @@ do not come from the solver:
 2. Springback after bending in closed form: the unloading is elastic (the stress falls by less than the 2 sigma_y
    of the elastic range, kinematic or not), so the moment vanishes at e_max - M_max t / (2 E' I); the run's zero
    crossing must be there within 1e-3 of the springback (measured 3e-4: finite-strain terms over the unloading).
-3. The whole cycle (bend to 1 %, straighten, bend back to 0.4 %) against the plane-sections solution: each fibre
-   in plane-strain uniaxial stress (sigma_yy = 0) at its log strain ln(1 + kappa y), J2 with linear kinematic or
-   isotropic hardening integrated here by a radial return (exact per substep for linear hardening; 4 substeps
+3. The whole cycle (bend to 1 %, straighten, bend back to 0.4 %) against the plane-sections solution
+   (tests/plane_sections.py): each fibre in plane-strain uniaxial stress (sigma_yy = 0) at its log strain
+   ln(1 + kappa y), J2 with linear kinematic or isotropic hardening integrated by a radial return (exact per
+   substep for linear hardening; 4 substeps
    between the solver's rows, within 1e-6 of 8), the moment summed over 4000 fibres on the current thickness (the
    fibres' thickness stretch). Bounds 1.3 x measured at 16 cells x 100 increments per stage; at 32 cells x 400 the
    error must fall at least 2-fold (measured 2.5: through-thickness quadrature of the elastic-plastic kink, first
@@ -28,55 +29,22 @@ import math
 import h5py
 import numpy as np
 
+from plane_sections import Strip
 from tfcheck import Checks, args, out, run
 
 tf, mpirun, src = args()
 k = Checks("bending")
 E, NU, SY0, H = 75000.0, 0.34, 165.3, 673.5  # aluminum's E, nu, sigma_y0 and K, with Ludwik's n = 1: linear
-G, LAM = E / (2 * (1 + NU)), E * NU / ((1 + NU) * (1 - 2 * NU))
-D = np.array([[LAM + 2 * G, LAM, LAM], [LAM, LAM + 2 * G, LAM], [LAM, LAM, LAM + 2 * G]])
+STRIP = Strip(E, NU, SY0)
 EI = E / (1 - NU ** 2) / 12  # plane-strain bending stiffness of the 1 mm strip (N mm per mm width)
 PATH = [0.01, 0, 0.004]
 SUB = 4  # reference substeps between the solver's rows (8: within 1e-6 of the largest moment)
 FIBRES = 4000  # reference fibres through the thickness (8000: within 1e-6)
 
 
-def fibre_update(state, dxx, dyy, c, h):
-    """Backward-Euler radial return of every fibre (Kirchhoff term -sigma tr(de) as in tests/check_kinematic.py)."""
-    s, a, p = state
-    de = np.stack([dxx, dyy, np.zeros_like(dxx)], 1)
-    trial = s + de @ D.T - s * (dxx + dyy)[:, None]
-    mean = trial.mean(1, keepdims=True)
-    xi = trial - mean - a
-    q = np.sqrt(1.5 * (xi * xi).sum(1))
-    dp = np.where(q > SY0 + h * p, (q - SY0 - h * p) / (3 * G + c + h), 0.0)
-    n = xi / np.maximum(q, 1e-300)[:, None]
-    return trial - 3 * G * dp[:, None] * n, a + c * dp[:, None] * n, p + dp
-
-
 def reference(strokes, c, h, sub=SUB, nf=FIBRES):
     """The moment at the outer-fibre strains `strokes` (c: Prager modulus, h: isotropic slope, MPa)."""
-    y0 = (np.arange(nf) + 0.5) / nf - 0.5
-    state, eyy, moments = (np.zeros((nf, 3)), np.zeros((nf, 3)), np.zeros(nf)), np.zeros(nf), [0.0]
-    for a, b in zip(strokes[:-1], strokes[1:]):
-        for e0, e1 in zip(np.linspace(a, b, sub + 1)[:-1], np.linspace(a, b, sub + 1)[1:]):
-            dxx = np.log1p(2 * e1 * y0) - np.log1p(2 * e0 * y0)
-            ya, yb = -0.5 * dxx, -0.4 * dxx  # secant on d_yy for sigma_yy = 0, fibre by fibre
-            fa, fb = fibre_update(state, dxx, ya, c, h)[0][:, 1], fibre_update(state, dxx, yb, c, h)[0][:, 1]
-            for _ in range(40):
-                move = (np.abs(fb) > 1e-11) & (fb != fa)
-                if not move.any():
-                    break
-                ya, fa, yb = yb, fb, np.where(move, yb - fb * (yb - ya) / np.where(move, fb - fa, 1), yb)
-                fb = fibre_update(state, dxx, yb, c, h)[0][:, 1]
-            state, eyy = fibre_update(state, dxx, yb, c, h), eyy + yb
-        # the current thickness: each fibre's share stretched by exp(e_yy), lever arms from the middle
-        dy = np.exp(eyy) / nf
-        half = nf // 2
-        y = np.concatenate([-(np.cumsum(dy[:half][::-1]) - 0.5 * dy[:half][::-1])[::-1],
-                            np.cumsum(dy[half:]) - 0.5 * dy[half:]])
-        moments.append(float((state[0][:, 0] * y * dy).sum()))
-    return np.array(moments)
+    return STRIP.moments(strokes, c, h, sub, nf)
 
 
 def bend(extra, np_=1, cells=16, n=100, name="bending.h5"):

@@ -149,8 +149,9 @@ PointState Body::AdvancePoint(size_t i, const Voigt &deps, double omega, double 
   // Strang splitting: half the rotation, the constitutive increment in the
   // mid-rotated frame, the other half (forward scheme: all at once, first order).
   const StressRotation turn(prm_.kinematics, omega, midpoint ? 0.5 : 1.0);
-  const int nback = material_->backstresses();
-  const bool axes = material_->anisotropic();
+  // (the material's own backstresses and axes turn with the spin in an elastic release too)
+  const int nback = material().backstresses();
+  const bool axes = material().anisotropic();
   turn.Apply(ps.sigma);
   for (int k = 0; k < nback; ++k) turn.Apply(ps.back[k]);
   if (axes) ps.frame += turn.Angle();

@@ -296,19 +296,65 @@ PetscErrorCode Body::Commit(Vec du_local, double r, CommitInfo &info)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-void Body::SetElasticOnly()
+void Body::ActElastic(bool elastic)
 {
-  elastic_only_ = true;
-  material_ = std::make_unique<Elastic>(prm_.material.E, prm_.material.nu);
-  for (auto &ps : state_) ps.plastic = false;
+  if (elastic == (law_ != nullptr)) return;
+  if (elastic) {
+    law_ = std::move(material_);
+    material_ = std::make_unique<Elastic>(prm_.material.E, prm_.material.nu);
+    for (auto &ps : state_) ps.plastic = false;
+  } else {
+    material_ = std::move(law_);
+  }
   StaleAll();
 }
 
-void Body::SetPlasticAgain()
+void Body::BeginRelease(bool elastic, bool by_loads)
 {
-  elastic_only_ = false;
-  material_ = MakeMaterial(prm_.material, prm_.rmin_deps, prm_.drift_correction);
+  releasing_ = true;
+  release_start_.resize(kReleaseStart * state_.size());
+  for (size_t i = 0; i < state_.size(); ++i) {
+    release_start_[kReleaseStart * i] = material().YieldRatio(state_[i]);
+    release_start_[kReleaseStart * i + 1] = state_[i].ep;
+    if (by_loads) state_[i].plastic = false;
+  }
   StaleAll();
+  ActElastic(elastic);
+}
+
+void Body::EndRelease()
+{
+  releasing_ = false;
+  release_start_.clear();
+  ActElastic(false);
+}
+
+PetscErrorCode Body::MeasureRelease(ReleaseYield &y) const
+{
+  double local[2] = {0, 0}, global[2];
+  PetscInt reached = 0;
+  PetscFunctionBeginUser;
+  y = ReleaseYield{};
+  if (!releasing_) PetscFunctionReturn(PETSC_SUCCESS);
+  const bool elastic = law_ != nullptr;
+  y.releasing = true, y.elastic = elastic;
+  for (size_t i = 0; i < state_.size(); ++i) {
+    const double *start = &release_start_[kReleaseStart * i];
+    if (elastic) {
+      // (a point past the surface at the start, by the drift of its last plastic step, from there)
+      const double excess = material().YieldRatio(state_[i]) - std::max(start[0], 1.0);
+      local[0] = std::max(local[0], excess);
+      reached += excess > kOnSurface;
+    } else {
+      const double dep = state_[i].ep - start[1];
+      local[1] = std::max(local[1], dep);
+      reached += dep > 0;
+    }
+  }
+  PetscCall(MPIU_Allreduce(local, global, 2, MPIU_REAL, MPIU_MAX, comm()));
+  PetscCall(MPIU_Allreduce(&reached, &y.reached, 1, MPIU_INT, MPI_SUM, comm()));
+  y.excess = global[0], y.dep = global[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode Body::InternalForce(Vec f_local, double *magnitude, double *count) const

@@ -8,10 +8,11 @@ namespace tf {
 
 PetscErrorCode Body::Persist(Archive &ar)
 {
-  // Per point: stress (4), ep, hslope, plastic (and the backstresses below).
+  // Per point: stress (4), ep, hslope, plastic (and the backstresses below; an elastic release's law: the
+  // material's own).
   constexpr int kPerPoint = kNumStress + 3;
   std::vector<double> points(kPerPoint * state_.size());
-  bool elastic_only = elastic_only_;
+  bool elastic_only = law_ != nullptr, releasing = releasing_;
 
   PetscFunctionBeginUser;
   ar.Group("/body");
@@ -23,14 +24,14 @@ PetscErrorCode Body::Persist(Archive &ar)
   }
   PetscCall(ar.CellData("points", points, kPerPoint * fe::kGauss));
   // Kinematic hardening: each point's backstresses (4 components each).
-  const int nback = material_->backstresses(), kPerBack = kNumStress * nback;
+  const int nback = material().backstresses(), kPerBack = kNumStress * nback;
   std::vector<double> back(kPerBack * state_.size());
   for (size_t i = 0; i < state_.size() && !ar.reading(); ++i)
     for (int b = 0; b < nback; ++b)
       std::copy(state_[i].back[b].begin(), state_[i].back[b].end(), &back[kPerBack * i + kNumStress * b]);
   if (nback > 0) PetscCall(ar.CellData("backstresses", back, kPerBack * fe::kGauss));
   // Anisotropic yield: each point's material axes.
-  std::vector<double> frames(material_->anisotropic() ? state_.size() : 0);
+  std::vector<double> frames(material().anisotropic() ? state_.size() : 0);
   for (size_t i = 0; i < frames.size() && !ar.reading(); ++i) frames[i] = state_[i].frame;
   if (!frames.empty()) PetscCall(ar.CellData("frames", frames, fe::kGauss));
   // qm6: the incompatible modes' condensation of each cell's last tangent.
@@ -47,8 +48,13 @@ PetscErrorCode Body::Persist(Archive &ar)
   PetscCall(ar.NodeData("x", x_, 2));
   PetscCall(ar.NodeData("u", u_, 2));
   PetscCall(ar.Value("elastic_only", elastic_only));
+  // A release under way: where each point's yield ratio and plastic strain stood at its start.
+  PetscCall(ar.Value("releasing", releasing));
+  std::vector<double> start = ar.reading() ? std::vector<double>(kReleaseStart * state_.size()) : release_start_;
+  if (releasing) PetscCall(ar.CellData("release_start", start, kReleaseStart * fe::kGauss));
   if (!ar.reading()) PetscFunctionReturn(PETSC_SUCCESS);
-  if (elastic_only) SetElasticOnly();
+  releasing_ = releasing, release_start_ = releasing ? start : std::vector<double>{};
+  ActElastic(elastic_only);
   for (size_t i = 0; i < state_.size(); ++i) {
     PointState &p = state_[i];
     const double *d = &points[kPerPoint * i];

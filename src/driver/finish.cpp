@@ -8,6 +8,7 @@
 #include "tubeform/core/signals.hpp"
 #include "tubeform/driver/answer.hpp"
 #include "tubeform/driver/problem.hpp"
+#include "tubeform/driver/release_report.hpp"
 
 namespace tf {
 
@@ -53,6 +54,10 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
                                                          {"target_c_over_t", opt_.target_c_over_t}};
   for (const auto &m : scene_metrics) metrics.push_back(m);
   for (const auto &m : AnswerAttributes(answer)) metrics.push_back(m);
+  const auto releases = SummarizeReleases(history_.rows());
+  for (const auto &m : ReleaseAttributes(releases)) metrics.push_back(m);
+  double points = fe::kGauss * mesh_.num_cells, all_points;
+  PetscCallMPI(MPI_Allreduce(&points, &all_points, 1, MPI_DOUBLE, MPI_SUM, comm_));
   PetscCall(writer.Close(history_, metrics));
   int ok = history_.FinishCsv(); // rank 0 holds the file; every rank learns the outcome
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
@@ -63,6 +68,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n",
                           opt_.scene.c_str(), (int)at_.inc, (int)system_.factorizations(), opt_.output.c_str()));
     PetscCall(PrintAnswer(comm_, answer, opt_.target_load, opt_.target_c_over_t));
+    PetscCall(PrintReleases(comm_, releases, all_points));
     PetscCall(PetscPrintf(comm_,
                           "tubeform: self-checks: energy balance within %.2g %%, internal work within %.2g %%; "
                           "compromises: %d steps past an event, %d unsettled, %d with inconsistent loading states\n",

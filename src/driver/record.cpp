@@ -126,6 +126,10 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
   row.events_inside = events_inside_;
   row.inconsistent = inconsistent_;
   row.inertia = inertia ? 1 : 0;
+  Body::ReleaseYield release;
+  PetscCall(body_.MeasureRelease(release));
+  row.release = release.releasing ? (release.elastic ? 2 : 1) : 0, row.release_yielded = release.reached,
+  row.release_excess = release.excess, row.release_dep = release.dep;
   PetscCall(ContactColumns(&done.contact, row));
   PetscCall(scene_->Measure(*model_, lambda, forces_.f_int, row));
 

@@ -91,6 +91,18 @@ const std::vector<HistoryColumn> &HistoryColumns()
      "-die_path: the upper die's displacement along the press's x from where it started (mm; 0 without)"},
     {"die_turn", &HistoryRow::die_turn,
      "-die_path_turn: the upper die's turn about -die_pivot (degrees, counter-clockwise; 0 without)"},
+    {"release", &HistoryRow::release,
+     "a springback (the release whose law -springback sets: the unloading of a tool scene, the bending scene's "
+     "first reversal up to where its moment passes zero): 1 by the material's law, 2 elastic; 0 elsewhere"},
+    {"release_yielded", &HistoryRow::release_yielded,
+     "a springback: Gauss points that reached the yield surface since it began: that flowed in it "
+     "(-springback material), or that it carried past the surface (-springback elastic); 0 outside one"},
+    {"release_excess", &HistoryRow::release_excess,
+     "-springback elastic: the largest sigma_eq / sigma_y - max(1, the point's own at the springback's start) over "
+     "the Gauss points: how far past the yield surface the elastic springback carries a point (> 0: the material "
+     "would have yielded there)"},
+    {"release_dep", &HistoryRow::release_dep,
+     "-springback material: the largest plastic strain a Gauss point took since the springback began"},
   };
   return cols;
 }

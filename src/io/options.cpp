@@ -267,10 +267,17 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(read.Real(PetscOptionsObject, "-rmin_dphi_rise",
                       "r6, stick to slide: largest rise of |f_l / (mu f_n)| in an increment (1: no bound)",
                       opt.rmin_dphi_rise));
-  PetscCall(ChooseWord(
-    PetscOptionsObject, read, "-unload",
-    "Springback: reverse (paper: elastic, contact forces reversed, tools removed), withdraw (tools move back), none",
-    {"reverse", "withdraw", "none"}, opt.unload));
+  PetscCall(
+    ChooseWord(PetscOptionsObject, read, "-unload",
+               "Springback: reverse (paper: contact forces reversed, tools removed), withdraw (tools move back), none",
+               {"reverse", "withdraw", "none"}, opt.unload));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-springback",
+                       "The springback's law: material (the material's own, backstresses and all, as in loading), "
+                       "elastic (the paper's: every point elastic; how far that carries points past the yield surface "
+                       "is measured and reported), or auto: elastic for -unload reverse (its reversed contact forces "
+                       "are dead loads, which can drive a thin wall into a collapse by the material's law), material "
+                       "for -unload withdraw and the bending scene",
+                       {"auto", "material", "elastic"}, opt.springback));
   PetscCall(read.Real(PetscOptionsObject, "-shear_gamma", "shear scene: final shear strain gamma", opt.shear_gamma));
   PetscCall(
     read.Real(PetscOptionsObject, "-slide_n", "slide scene: normal force pressing the block (N/mm)", opt.slide_n));

@@ -51,6 +51,8 @@ bool KinematicJ2::OnSurface(const PointState &s) const
   return Equivalent(Relative(s)) >= (1 - kOnSurface) * h_->YieldStress(s.ep);
 }
 
+double KinematicJ2::YieldRatio(const PointState &s) const { return Equivalent(Relative(s)) / h_->YieldStress(s.ep); }
+
 Mat4 KinematicJ2::Tangent(const PointState &s) const
 {
   Mat4 d = elastic_.matrix();

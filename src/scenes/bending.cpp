@@ -8,7 +8,9 @@
 // u_y is free on both ends and the edges y = +-kThickness/2 are free: each
 // fibre is in plane-strain uniaxial stress, the state of pure bending.
 // History: stroke = the outer fibre's nominal strain, load = the bending
-// moment on the end about its middle (N mm per mm of width).
+// moment on the end about its middle (N mm per mm of width). The first
+// reversal is the release up to where the moment passes zero (-springback:
+// elastic, or the material's law).
 #include <cmath>
 
 #include "tubeform/mesh/generator.hpp"
@@ -27,7 +29,10 @@ constexpr double kLength = 0.25;
 
 class BendingScene : public Scene {
 public:
-  explicit BendingScene(const Options &opt) : strain_(opt.bending_strain, opt.bending_cycle) {}
+  explicit BendingScene(const Options &opt)
+      : strain_(opt.bending_strain, opt.bending_cycle), elastic_release_(opt.springback == "elastic"),
+        reversal_(!opt.bending_cycle.empty() && (opt.bending_cycle[0] - opt.bending_strain) * opt.bending_strain < 0)
+  {}
   std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
   {
@@ -56,6 +61,29 @@ public:
     return 0;
   }
   PetscErrorCode ExternalForce(Model &, double, Vec f) override { return VecZeroEntries(f); }
+  // A second stage that turns the strip back (from lambda 1) is its release up to where the moment passes zero,
+  // its springback (-springback elastic: elastic); past it the strip is bent back, by the material's law.
+  PetscErrorCode BeginStage(Model &m, double lambda) override
+  {
+    if (lambda < 1.5 && reversal_)
+      m.body.BeginRelease(elastic_release_, false), release_moment_ = moment_;
+    else
+      m.body.EndRelease();
+    return 0;
+  }
+  PetscErrorCode BeginIncrement(Model &m, double) override
+  {
+    if (m.body.releasing() && moment_ * release_moment_ <= 0) m.body.EndRelease();
+    return 0;
+  }
+  PetscErrorCode Persist(Model &, Archive &ar) override
+  {
+    PetscFunctionBeginUser;
+    ar.Group("/scene");
+    PetscCall(ar.Value("moment", moment_));
+    PetscCall(ar.Value("release_moment", release_moment_));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   const char *StrokeName() const override { return "outer-fibre strain"; }
   const char *LoadUnit() const override { return "N mm/mm (moment)"; }
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
@@ -71,12 +99,17 @@ public:
     PetscCall(MPIU_Allreduce(&mid_local, &mid, 1, MPIU_REAL, MPIU_MAX, m.comm));
     PetscCall(SetForce(
       m, "right", f_int, [&](PetscInt n, double d[2]) { d[0] = x[2 * n + 1] - mid, d[1] = 0; }, row.load));
+    moment_ = row.load;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
 private:
   static constexpr double kOnAxis = 1e-9; // mm: a node this close to y = 0 is the middle of its end
   StrainPath strain_;
+  bool elastic_release_;      // -springback elastic
+  bool reversal_;             // the second stage turns the strip back (a release first)
+  double moment_ = 0;         // the moment of the last row measured
+  double release_moment_ = 0; // the moment where the release began
 };
 
 } // namespace

@@ -6,9 +6,11 @@
 //
 // Load path: lambda in [0, 1] presses the tool to the final stroke; with
 // -unload reverse or withdraw, lambda in [1, 2] unloads:
-//   reverse  (the paper): every point elastic, the contact forces at the end
-//            of loading applied reversed as nodal loads, tools removed;
-//   withdraw: the tool moves back and releases the nodes one by one (r5).
+//   reverse  (the paper): the contact forces at the end of loading applied
+//            reversed as nodal loads, tools removed;
+//   withdraw: the tool moves back and releases the nodes one by one (r5);
+// either with every point elastic (the paper's) or by the material's law:
+// -springback, ElasticRelease.
 // With -pass2_stroke, a second pass after the paper's unloading: lambda in [2, 3] presses its dies from their
 // start, [3, 4] springs back; -pass2_turn turns the tube before it (its dies drawn turned the other way, its
 // metrics and forces in its press's frame: die.hpp, PassTurn). -die_force presses by a force (the stroke its
@@ -98,6 +100,8 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
 PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
 {
   PetscFunctionBeginUser;
+  const bool elastic = ElasticRelease(opt_);
+  if (opt_.unload == "withdraw") m.body.BeginRelease(elastic, false);
   if (opt_.unload != "reverse") PetscFunctionReturn(PETSC_SUCCESS);
   if (!Unloading(lambda)) {
     // The second pass: the springback's loads are all applied; its dies from their start, the material's law.
@@ -111,7 +115,7 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
     unloading_ = false;
     // (the pin stays until the second pass's dies hold the half model's tube: Load)
     reversed_total_[0] = reversed_total_[1] = reversed_moment_ = 0;
-    m.body.SetPlasticAgain();
+    m.body.EndRelease();
     pass_ = 1;
     ContactSpec spec = spec_;
     hold_.PinSlide(held_[1]);
@@ -130,7 +134,7 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
   }
   if (!m.quiet)
     PetscCall(WarnUntouched(m.comm, *m.contact, pass_ == 1 ? "second" : "first", pass_ == 1 ? stroke2_ : stroke_));
-  // The paper's unloading: contact forces become loads, tools go, all elastic.
+  // The paper's unloading: contact forces become loads, tools go (every point elastic by default: ElasticRelease).
   if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
   PetscCall(VecZeroEntries(reversed_));
   PetscCall(m.contact->AddContactForces(reversed_));
@@ -138,7 +142,7 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
   PetscCall(m.contact->TotalForce(kUpper, reversed_total_, &reversed_moment_));
   m.contact->Remove();
   m.system.ClearFrames();
-  m.body.SetElasticOnly();
+  m.body.BeginRelease(elastic, true);
   unloading_ = true;
   if (half_) PetscCall(ChoosePin(m));
   PetscFunctionReturn(PETSC_SUCCESS);

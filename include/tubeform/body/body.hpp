@@ -97,13 +97,31 @@ public:
   // Collective: the lowest input number of a cell whose stresses, plastic
   // strains or corners are not finite (NaN, Inf), -1 if none.
   PetscErrorCode NonFiniteCell(PetscInt &cell) const;
-  // From now on every point is elastic (the paper's unloading).
-  void SetElasticOnly();
-  // The material's law again (a press after the paper's unloading): every point starts elastic, its stress
-  // and hardening as the unloading left them.
-  void SetPlasticAgain();
+  // A release (the springback) begins: with `elastic` every point is elastic while it lasts (the paper's
+  // unloading), else the material's law acts in it as in loading. Either way what the release does at the
+  // yield surface is measured from this state on (MeasureRelease). `by_loads`: a release by loads from a state
+  // at its limit load (the paper's reversed contact forces): every point starts it elastic, unloading; the
+  // plastic tangents' step under the falling load would follow the collapse branch, which is consistent too
+  // (docs/theory.md, "Unloading"). A release by motion unloads its points by the loading switches.
+  void BeginRelease(bool elastic, bool by_loads);
+  // The release is over (a press after it): the material's law again; the points of an elastic release start
+  // elastic, their stress and hardening as it left them.
+  void EndRelease();
+  // What the release under way did at the yield surface since it began (zeros outside one).
+  struct ReleaseYield {
+    bool releasing = false; // a release is under way
+    bool elastic = false;   // ... with every point elastic
+    // The points that reached the yield surface: those that flowed (the material's law), or that the release
+    // carried past it by more than kOnSurface (elastic).
+    PetscInt reached = 0;
+    double excess = 0; // elastic: the largest sigma_eq / sigma_y - max(1, the point's own at the release's start)
+    double dep = 0;    // the material's law: the largest plastic strain taken in the release
+  };
+  // Collective: that measure of the current state.
+  PetscErrorCode MeasureRelease(ReleaseYield &y) const;
+  bool releasing() const { return releasing_; }
   // Collective: writes or reads what carries from one increment to the next
-  // (point states, coordinates, displacements, elastic-only).
+  // (point states, coordinates, displacements, the release under way).
   PetscErrorCode Persist(Archive &ar);
 
   // Current cell corner coordinates.
@@ -111,16 +129,23 @@ public:
   const Mesh &mesh() const { return *mesh_; }
   MPI_Comm comm() const { return mesh_->comm; }
   const std::vector<PointState> &state() const { return state_; } // kGauss per local cell
-  const Material &material() const { return *material_; }
+  // The material's own law (an elastic release does not change it).
+  const Material &material() const { return law_ ? *law_ : *material_; }
   const std::vector<double> &position() const { return x_; }     // current coordinates, 2 per local node
   const std::vector<double> &displacement() const { return u_; } // total displacement, 2 per local node
 
 private:
   const Mesh *mesh_ = nullptr;
   BodyParams prm_;
-  double deps_limit_ = 0; // r2's bound: rmin_deps, or rmin_deps_yield yield strains if smaller
-  std::unique_ptr<Material> material_;
-  bool elastic_only_ = false; // SetElasticOnly was called
+  double deps_limit_ = 0;              // r2's bound: rmin_deps, or rmin_deps_yield yield strains if smaller
+  std::unique_ptr<Material> material_; // the law the points follow
+  std::unique_ptr<Material> law_;      // the material's own while an elastic release replaces it (else null)
+  bool releasing_ = false;             // a release is under way (BeginRelease)
+  // Per point where the release began: its yield ratio (Material::YieldRatio) and plastic strain.
+  std::vector<double> release_start_;
+  static constexpr int kReleaseStart = 2; // (numbers per point in release_start_)
+  // The points follow the elastic law (true) or the material's own.
+  void ActElastic(bool elastic);
   fe::CellFormulation cells_;
   std::vector<PointState> state_;
   std::vector<double> yield_factor_; // r1 of each Gauss point from the last ScanTrial

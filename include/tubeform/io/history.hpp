@@ -29,6 +29,10 @@ struct HistoryRow {
   double die_turn = 0;                       // -die_path_turn: the upper die's turn (degrees, counter-clockwise)
   double w_kinetic = 0, w_inertia = 0, inertia = 0, w_damped = 0, w_tool = 0, internal_error = 0;
   double slip = 0, fn_sum = 0, det_sign = 0;
+  // A springback (release 1 by the material's law, 2 elastic): the points that reached the yield surface in it, how far
+  // past it an elastic one carried a point (sigma_eq / sigma_y - 1), the largest plastic strain taken in one with the
+  // material's law.
+  double release = 0, release_yielded = 0, release_excess = 0, release_dep = 0;
 };
 
 struct HistoryColumn {

@@ -98,6 +98,7 @@ struct Options {
   double rmin_dphi = ContactParams{}.dphi_max;       // r6: largest fall of f_l / (mu f_n) towards stick in an increment
   double rmin_dphi_rise = ContactParams{}.dphi_rise; // r6: largest rise of |f_l / (mu f_n)| (stick to slide)
   std::string unload = "reverse";
+  std::string springback = "auto"; // the release's law: material, elastic (the paper's), auto (ElasticRelease)
   double shear_gamma = 1.0;
   double slide_n = 100.0, slide_push = 0.2; // slide scene: normal force (N/mm, arc: pressure MPa), push (mm)
   double slide_back = 0;                    // slide scene (flat): push back by this much in a third stage (mm)

@@ -83,6 +83,9 @@ public:
   virtual bool plastic_law() const { return false; }
   // Whether the point's stress is on its yield surface (within kOnSurface).
   virtual bool OnSurface(const PointState &) const { return false; }
+  // The point's equivalent stress (about the yield surface's centre) over its yield stress: 1 on the surface,
+  // more past it (an elastic release's excess: Body::MeasureRelease); 0 for a law without one.
+  virtual double YieldRatio(const PointState &) const { return 0; }
   // How many backstresses the law evolves (0: none to turn with the stress).
   virtual int backstresses() const { return 0; }
   // Whether the law reads the point's material axes (PointState::frame).

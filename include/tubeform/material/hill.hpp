@@ -32,6 +32,7 @@ public:
   double YieldOnset(const PointState &s, const Voigt &deps, double omega) const override;
   bool Loading(const PointState &s, const Voigt &deps) const override;
   bool OnSurface(const PointState &s) const override;
+  double YieldRatio(const PointState &s) const override { return Equivalent(s.sigma, s.frame) / h_->YieldStress(s.ep); }
   bool anisotropic() const override { return true; }
 
   // sigma_eq^2 of a stress in global Voigt form at material axes `frame`, and n (global, tensor components).

@@ -48,6 +48,7 @@ public:
   {
     return VonMises(s.sigma) >= (1 - kOnSurface) * h_->YieldStress(s.ep);
   }
+  double YieldRatio(const PointState &s) const override { return VonMises(s.sigma) / h_->YieldStress(s.ep); }
 
   // Solves 3G dep + sigma_y(ep + dep) - sigma_y(ep) [+ kin->Value(dep)] = 3G a / sbar
   // for dep >= 0: the plastic strain step whose secant modulus is the H' of the

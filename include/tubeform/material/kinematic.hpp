@@ -56,6 +56,7 @@ public:
   double YieldOnset(const PointState &s, const Voigt &deps, double omega) const override;
   bool Loading(const PointState &s, const Voigt &deps) const override;
   bool OnSurface(const PointState &s) const override;
+  double YieldRatio(const PointState &s) const override;
   int backstresses() const override { return (int)back_.size(); }
 
 private:

@@ -36,6 +36,12 @@ inline double SideDiesInModel(TubePart part)
 // force along x over its sideways travel (`die_x`, -die_path), and its moment about its pivot over its turn
 // (`die_turn`, -die_path_turn).
 double PressToolWork(TubePart part, bool lower_fixed, const HistoryRow &prev, const HistoryRow &row);
+// Whether a press's springback is elastic: -springback elastic, or auto under -unload reverse (the paper's: its
+// dead loads can drive a thin wall into a collapse by the material's law; docs/theory.md, "Unloading").
+inline bool ElasticRelease(const Options &opt)
+{
+  return opt.springback == "elastic" || (opt.springback == "auto" && opt.unload == "reverse");
+}
 // C1 = x_max, C2 = y_max of the outer surface (the half model's C2 half its height, the full model's C1 half
 // its width) and their ratio. A pass that turned the tube measures in its press's frame: `press` maps the
 // tube's coordinates there (the inverse of the map that drew its dies).
