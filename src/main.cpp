@@ -4,6 +4,7 @@
 // Sample runs:
 //   mpirun -n 2 build/tubeform -options_file options/pressure.opts -monitor
 //   build/tubeform -help
+#include <hdf5.h>
 #include <petscsys.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/core/job_end.hpp"
 #include "tubeform/core/signals.hpp"
 #include "tubeform/driver/problem.hpp"
 #include "tubeform/io/options.hpp"
@@ -28,12 +30,39 @@ static const char help[] =
 // The error estimate's companion (driver/answer.hpp): the same case at half
 // the resolution (half the cells through the wall and around, half the trial
 // increments; a mesh file is kept, so the estimate then covers the steps
-// only), run quietly once the main run has reached its end; its history is what the answer
-// compares with. Its result file is removed.
+// only), run quietly once the main run's results are final, writing no file;
+// its history is what the answer compares with. How it ended is the driver's
+// to judge (Problem::Estimate): an error means no estimate.
 // The companion keeps at least 2 cells through the wall: with one, a bending
 // wall's answer is off by an order more than the run's (the fast preset's 2 x 64
 // case: a load estimate of 11 % for a 4 % error, 0.27 in C/t for 0.01).
 constexpr PetscInt kCompanionMinNt = 2;
+
+// One run of `opt` (quiet: a companion's; rows: its history, when it ends). Its
+// error comes back with the message it raised, taken before the run's clean-up
+// (a result file closed on a full disk) can raise errors of its own whose
+// messages would replace it.
+static PetscErrorCode RunProblem(const tf::Options &opt, bool quiet, const tf::Problem::CompanionRun &companion,
+                                 std::vector<tf::HistoryRow> *rows)
+{
+  std::string why;
+  PetscErrorCode failed;
+  PetscFunctionBeginUser;
+  {
+    tf::Problem problem;
+    if (quiet) problem.SetQuiet();
+    failed = problem.Setup(PETSC_COMM_WORLD, opt);
+    // (the run's options nothing reads: an error before anything is written)
+    if (!failed && !quiet)
+      failed = tf::CheckOptionsLeft(PETSC_COMM_WORLD, opt, problem.system().ndofs(), problem.system().redundant());
+    if (!failed && companion) problem.SetCompanion(companion);
+    if (!failed) failed = problem.Run();
+    if (failed) why = tf::ErrorText(failed);
+    if (!failed && rows) *rows = problem.history().rows();
+  }
+  PetscCheck(!failed, PETSC_COMM_SELF, failed, "%s", why.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 static PetscErrorCode Companion(const tf::Options &opt, std::vector<tf::HistoryRow> &rows)
 {
@@ -44,41 +73,14 @@ static PetscErrorCode Companion(const tf::Options &opt, std::vector<tf::HistoryR
   c.mesh_ntheta = std::max<PetscInt>(4, 2 * (opt.mesh_ntheta / 4));
   c.increments = std::max<PetscInt>(1, opt.increments / 2);
   if (opt.unload_increments > 0) c.unload_increments = std::max<PetscInt>(1, opt.unload_increments / 2);
-  c.output = opt.output + ".companion.h5";
-  c.history_csv.clear();
+  c.output.clear(), c.history_csv.clear(); // no files: nothing of it is left behind, whatever ends it
   c.checkpoint.clear(), c.restart.clear();
   c.checkpoint_every = 0;
   c.progress = 0, c.monitor = PETSC_FALSE;
   c.output_every = std::numeric_limits<int>::max(), c.output_stroke = 0;
   c.error_estimate = PETSC_FALSE;
   const double t0 = MPI_Wtime();
-  PetscErrorCode failed;
-  {
-    tf::Problem problem;
-    problem.SetQuiet();
-    PetscCall(problem.Setup(PETSC_COMM_WORLD, c));
-    failed = problem.Run();
-    rows = problem.history().rows();
-  }
-  PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
-  if (rank == 0) {
-    std::remove(c.output.c_str());
-    std::remove((c.output.substr(0, c.output.size() - 3) + ".xmf").c_str()); // its ParaView index
-  }
-  // A stop signal stops the job (Run's caller reports it); a companion that
-  // could not finish leaves the run without an estimate, not without a result.
-  if (failed == PETSC_ERR_NOT_CONVERGED) {
-    const char *why = nullptr;
-    (void)PetscErrorMessage(failed, nullptr, (char **)&why);
-    std::string text = why ? why : "?";
-    text = text.substr(0, text.find("; results up to there")); // its file is not kept
-    PetscCall(
-      PetscPrintf(PETSC_COMM_WORLD, "tubeform: no error estimate: its companion run stopped (%s)\n", text.c_str()));
-    rows.clear();
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  PetscCall(failed);
+  PetscCall(RunProblem(c, true, nullptr, &rows));
   const std::string mesh = opt.mesh_file.empty() ? tf::Formatted("%d x %d cells", (int)c.mesh_nt, (int)c.mesh_ntheta)
                                                  : "the mesh file's cells";
   PetscCall(PetscPrintf(PETSC_COMM_WORLD,
@@ -87,29 +89,21 @@ static PetscErrorCode Companion(const tf::Options &opt, std::vector<tf::HistoryR
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// `collective` tells main whether an error seen so far was found by every
-// rank at once (option parsing is: each rank reads the same options).
-static PetscErrorCode Run(bool &collective)
+static PetscErrorCode Run()
 {
   tf::Options opt;
   PetscFunctionBeginUser;
-  collective = true;
   PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneNames(), opt));
-  collective = false;
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
-  tf::Problem problem;
-  PetscCall(problem.Setup(PETSC_COMM_WORLD, opt));
-  // Before anything is written:
-  PetscCall(tf::CheckOptionsLeft(PETSC_COMM_WORLD, opt, problem.system().ndofs(), problem.system().redundant()));
+  tf::Problem::CompanionRun companion;
   if (opt.error_estimate && (opt.scene == "squaring" || opt.scene == "flattening"))
-    problem.SetCompanion([&opt](std::vector<tf::HistoryRow> &rows) { return Companion(opt, rows); });
-  PetscCall(problem.Run());
+    companion = [&opt](std::vector<tf::HistoryRow> &rows) { return Companion(opt, rows); };
+  PetscCall(RunProblem(opt, false, companion, nullptr));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 int main(int argc, char **argv)
 {
-  PetscMPIInt rank;
   // A missing options file, before PETSc reads them (it would stop with a
   // 30-line error): every process finds the same, the first one says it.
   const std::string bad_file = tf::CheckOptionsFiles(argc, argv);
@@ -121,30 +115,17 @@ int main(int argc, char **argv)
   }
   PetscErrorCode ierr = PetscInitialize(&argc, &argv, nullptr, help);
   if (ierr) return 1;
-  // Errors come back as codes; main prints one line and every rank exits.
+  // Errors come back as codes; the ranks agree on how the job ends (core/job_end.hpp),
+  // on a communicator of their own.
   (void)PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+  (void)H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // HDF5's error stacks: a failed call is one line of ours
   tf::InstallStopSignals();
-  (void)MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  bool collective = false;
-  ierr = Run(collective);
+  MPI_Comm agree;
+  (void)MPI_Comm_dup(PETSC_COMM_WORLD, &agree);
+  ierr = Run();
   (void)PetscPopErrorHandler();
-  if (ierr) {
-    const char *text = nullptr;
-    char *specific = nullptr;
-    (void)PetscErrorMessage(ierr, &text, &specific);
-    const char *msg = specific && specific[0] ? specific : (text ? text : "unknown error");
-    if (collective || ierr == PETSC_ERR_USER_INPUT || ierr == PETSC_ERR_FILE_WRITE || ierr == PETSC_ERR_NOT_CONVERGED ||
-        ierr == PETSC_ERR_SIG) {
-      // Collective errors: every rank found the same problem; rank 0 reports it.
-      if (rank == 0) fprintf(stderr, "tubeform: error: %s\n", msg);
-      (void)PetscFinalize();
-      return 1;
-    }
-    // Anything else may have struck one rank only: report it and abort the job
-    // so that no rank waits forever in a collective call.
-    fprintf(stderr, "tubeform: error on rank %d: %s\n", rank, msg);
-    MPI_Abort(MPI_COMM_WORLD, 2);
-  }
+  const int code = tf::EndJob(agree, ierr);
+  (void)MPI_Comm_free(&agree);
   ierr = PetscFinalize();
-  return ierr ? 1 : 0;
+  return code ? code : (ierr ? 1 : 0);
 }

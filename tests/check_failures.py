@@ -1,9 +1,15 @@
 """Failing runs (issue 12): a factorization that fails is reported in words a
 user can act on, with MUMPS's own code, instead of KSP's DIVERGED_PC_FAILED.
-MUMPS is given 1 MB of working memory (-mat_mumps_icntl_23 1) for a 3,500-dof
-system that needs about 100 times that: INFOG(1) = -19. On 1 and 2 ranks the
-run must stop with one line naming ICNTL(23) and the code, a non-zero exit,
-and the results so far written and flagged.
+MUMPS is given 1 MB of working memory (ICNTL(23) = 1) for a system that needs
+about 100 times that: INFOG(1) = -19. The run must stop with one line naming
+the code and the very option that set it, a non-zero exit, and the results so
+far written and flagged. The option's prefix depends on the solver's path:
+below 20,000 dofs every rank factors the whole matrix (PCREDUNDANT, whose
+inner solver reads -redundant_mat_mumps_*: the 1,666-dof case on 1 and 2
+ranks), above it on 2 ranks MUMPS factors it distributed (-mat_mumps_*: the
+24,682-dof case); the other prefix is read by no one (-options_left lists it),
+so advice naming it would do nothing. The option the message names is the one
+that made the run fail, so it demonstrably acts on that path.
 
 Numbers that overflow: a press speed of 1e300 mm/s (the stroke in 4e-300 s:
 the inertia term M / dt^2 of the first increment overflows; a modulus of
@@ -27,13 +33,15 @@ from tfcheck import Checks, args, out, run
 
 tf, mpirun, src = args()
 k = Checks("failures")
-for np_ in (1, 2):
-    f = out(f"mumps_np{np_}.h5")
-    p = run(tf, mpirun, np_, ["-options_file", f"{src}/options/pressure.opts", "-mesh_nt", 16, "-mesh_ntheta", 48,
-                              "-redundant_mat_mumps_icntl_23", 1, "-output", f], check=False, timeout=120)
+for np_, mesh, option in [(1, (16, 48), "-redundant_mat_mumps_icntl_23"), (2, (16, 48), "-redundant_mat_mumps_icntl_23"),
+                          (2, (40, 300), "-mat_mumps_icntl_23")]:
+    f = out(f"mumps_np{np_}_{mesh[0]}.h5")
+    p = run(tf, mpirun, np_, ["-options_file", f"{src}/options/pressure.opts", "-mesh_nt", mesh[0], "-mesh_ntheta",
+                              mesh[1], "-increments", 2, option, 1, "-output", f], check=False, timeout=120)
     lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
-    k.check(p.returncode != 0 and len(lines) == 1 and "icntl_23" in lines[0] and "INFOG(1) = -19" in lines[0],
-            f"np={np_}: exit {p.returncode}, {lines}")
+    named = [w.strip(",:;()") for w in lines[0].split() if "mumps_icntl" in w] if lines else []
+    k.check(p.returncode != 0 and len(lines) == 1 and named == [option] and "INFOG(1) = -19" in lines[0],
+            f"np={np_} {mesh[0]} x {mesh[1]} with {option} 1: exit {p.returncode}, it names {named}: {lines}")
     ok = os.path.exists(f)
     if ok:
         with h5py.File(f, "r") as h:

@@ -13,9 +13,22 @@ with one line, exit code 1 and no hang, on 2 ranks (and 1):
     results stay in place. (Before: rank 0 returned with the error, the other
     waited in MPI_Bcast for ever.)
 Each run gets TIMEOUT seconds: a hang is killed with its ranks and fails.
+
+Whether an error is every rank's is decided by the ranks agreeing, not by its
+error code (core/job_end.hpp; tests/test_agree.cpp, with a wait of AGREE
+seconds): an input error that every rank raises is one line from rank 0, exit
+1; the same error code raised by rank 1 alone while rank 0 waits in a
+collective call (a rank-local PetscCheck(..., PETSC_ERR_USER_INPUT, ...)) is
+one line from rank 1 naming itself and the job aborted after AGREE seconds,
+not a hang (decided by the code, rank 1 would have left quietly, taken it for
+every rank's, and rank 0 would wait for ever); raised by rank 1 after the
+last collective call, it is one line from rank 1 and exit 1 on every rank,
+without an abort.
 """
 import os
 import shutil
+import sys
+import time
 
 from tfcheck import Checks, args, crashed, out, run
 
@@ -53,4 +66,23 @@ for np_ in (2, 1):
     refused(np_, SMALL + ["-output", h5], [h5, ".xmf", "cannot be written"], "the .xmf cannot be written")
     k.check(os.path.isfile(h5) and not os.path.exists(h5 + ".partial"),
             f"np={np_} .xmf failed: the results are in place ({os.path.basename(h5)}), no .partial left")
+AGREE = 3  # s a rank with an error waits for the others (tubeform waits 10: kAgreeSeconds)
+agree = sys.argv[4]
+for mode, code, line, aborts in [("every", 1, "tubeform: error: -test_value 3: must be below 2", False),
+                                 ("alone", 2, "tubeform: error on rank 1: -test_file x: only rank 1 read it and "
+                                              "refused it (the other ranks did not stop with it within 3 s", True),
+                                 ("late", 1, "tubeform: error on rank 1: -test_file x: only rank 1 read it and "
+                                             "refused it", False),
+                                 ("none", 0, None, False)]:
+    t0 = time.time()
+    p = run(agree, mpirun, 2, [mode, AGREE], check=False, timeout=TIMEOUT, report_hang=True)
+    took = time.time() - t0
+    lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
+    aborted = "MPI_ABORT" in p.stdout + p.stderr
+    ok = (not p.timed_out and p.returncode == code and aborted == aborts and
+          (lines == [] if line is None else len(lines) == 1 and lines[0].startswith(line)))
+    if aborts:
+        ok = ok and took >= AGREE  # it waited for the others before it gave up
+    k.check(ok, f"agreement, {mode}: exit {p.returncode}{' (a hang: killed)' if p.timed_out else ''}, "
+            f"{'aborted, ' if aborted else ''}{took:.1f} s, {len(lines)} error line(s): {lines[:1]}")
 k.done()

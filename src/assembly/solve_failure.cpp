@@ -9,8 +9,10 @@ namespace tf {
 
 namespace {
 
-// MUMPS's INFOG(1) < 0 (MUMPS 5 users' guide, "Error diagnostics"), the ones a run can meet.
-std::string MumpsError(PetscInt info1, PetscInt info2)
+// MUMPS's INFOG(1) < 0 (MUMPS 5 users' guide, "Error diagnostics"), the ones a run can meet. `option` is the
+// prefix of the options that reach this factorization: "-redundant_mat_mumps_" where every rank factors the
+// whole matrix, "-mat_mumps_" where the factorization is distributed (each other prefix is read by no one).
+std::string MumpsError(PetscInt info1, PetscInt info2, const std::string &option)
 {
   const std::string code =
     " (MUMPS INFOG(1) = " + std::to_string(info1) + ", INFOG(2) = " + std::to_string(info2) + ")";
@@ -23,11 +25,11 @@ std::string MumpsError(PetscInt info1, PetscInt info2)
   case -9:
   case -14:
   case -15:
-    return "MUMPS's workspace is too small" + code + ": raise -redundant_mat_mumps_icntl_14 (percent extra, e.g. 50)";
+    return "MUMPS's workspace is too small" + code + ": raise " + option + "icntl_14 (percent extra, e.g. 50)";
   case -13:
     return "out of memory" + code + ": a smaller mesh, more ranks with the distributed factorization, or more memory";
   case -19:
-    return "the memory -mat_mumps_icntl_23 allows (MB per rank) is too small" + code;
+    return "the memory " + option + "icntl_23 allows (MB per rank) is too small" + code + ": raise it, or leave it out";
   default:
     return "MUMPS failed" + code + ": see its users' guide, \"Error diagnostics\"";
   }
@@ -47,7 +49,11 @@ PetscErrorCode DescribeSolveFailure(KSP ksp, std::string &why)
     PetscInt info1, info2;
     PetscCall(MatMumpsGetInfog(factor, 1, &info1));
     PetscCall(MatMumpsGetInfog(factor, 2, &info2));
-    if (info1 < 0) why = MumpsError(info1, info2);
+    // The factor's options prefix is the one MUMPS read its options with (the redundant PC's inner solver's
+    // "redundant_", or none).
+    const char *prefix = nullptr;
+    PetscCall(MatGetOptionsPrefix(factor, &prefix));
+    if (info1 < 0) why = MumpsError(info1, info2, std::string("-") + (prefix ? prefix : "") + "mat_mumps_");
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   MatFactorError error;

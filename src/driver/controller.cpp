@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "tubeform/core/signals.hpp"
+
 namespace tf {
 
 Controller::Controller(Model &model, Scene &scene, Inertia *inertia, const Options &opt, double duration)
@@ -38,6 +40,16 @@ PetscErrorCode Controller::Solve(double lambda, double dl, Vec du, double &dU, I
   std::vector<double> reactions;
 
   PetscFunctionBeginUser;
+  // A stop signal, agreed on by the ranks (one may see it before another),
+  // drops the increment at its next solve: a batch system's SIGKILL follows
+  // its SIGTERM within a second or two (mpirun's), and the rest of an
+  // increment of many solves may take longer. With -checkpoint the increment
+  // ends first (Problem::StopBefore), so that the checkpoint holds a whole state.
+  if (opt_.checkpoint.empty()) {
+    int mine = StopSignal(), any;
+    PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, m_.comm));
+    PetscCheck(!any, m_.comm, PETSC_ERR_SIG, "interrupted by %s", SignalName(any));
+  }
   const double dt = InertiaActive() ? dl * duration_ : 0.0;
   // K of the state at the start of the increment (+ M / dt^2), then the loads:
   // the tools' prescribed motion and friction rows first, the scene's supports

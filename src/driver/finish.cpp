@@ -1,48 +1,58 @@
-// Step 7 of a run: its answer (driver/answer.hpp) with the error estimate
-// from the companion run, the self-checks, the result file renamed into
-// place, and the stop that ended the run early, reported last.
+// Step 7 of a run: its answer, its results made final (written, closed and
+// renamed into place) before anything else, then the error estimate from the
+// companion run added to them, the self-checks, and the stop that ended the
+// run early, reported last.
+#include <algorithm>
+#include <cstring>
 #include <string>
 #include <vector>
 
 #include "tubeform/core/log.hpp"
-#include "tubeform/core/signals.hpp"
 #include "tubeform/driver/answer.hpp"
 #include "tubeform/driver/problem.hpp"
 #include "tubeform/driver/release_report.hpp"
 
 namespace tf {
 
+PetscErrorCode Problem::PlaceResults(ResultWriter &writer, const std::vector<std::pair<std::string, double>> &metrics,
+                                     const std::string &stop_reason)
+{
+  PetscFunctionBeginUser;
+  if (opt_.output.empty()) PetscFunctionReturn(PETSC_SUCCESS); // (a companion run: no files)
+  // Everything is written and checked first (the CSV: rank 0 holds it, every
+  // rank learns how it went; the HDF5 file and its index); only then is
+  // anything renamed, so a failed write leaves the earlier results whole.
+  int csv = history_.CloseCsv();
+  if (csv) history_.DropCsv();
+  PetscCallMPI(MPI_Bcast(&csv, 1, MPI_INT, 0, comm_));
+  PetscCheck(!csv, comm_, PETSC_ERR_FILE_WRITE,
+             "-history_csv %s: writing %s.partial failed (%s); it is removed, nothing is renamed into place (the "
+             "results stay in %s.partial)",
+             opt_.history_csv.c_str(), opt_.history_csv.c_str(), std::strerror(csv), opt_.output.c_str());
+  PetscCall(writer.Close(history_, metrics, stop_reason));
+  PetscCall(writer.Place(opt_.history_csv));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
 {
   Stop stop = ended;
   std::vector<HistoryRow> companion; // its history (none: no estimate)
   PetscFunctionBeginUser;
-  if (companion_run_ && stop.why.empty()) {
-    // A stop signal during the companion: this run's results are complete and
-    // written as such, without an estimate; the job still ends as asked.
-    const PetscErrorCode c = companion_run_(companion);
-    if (c == PETSC_ERR_SIG) {
-      int mine = StopSignal(), any;
-      PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm_));
-      companion.clear();
-      stop.signal = any, stop.code = PETSC_ERR_SIG;
-      stop.why = std::string("interrupted by ") + SignalName(any) +
-                 " during the companion run of the error estimate (the run itself had reached its end: complete, "
-                 "without an estimate)";
-    } else {
-      PetscCall(c);
-    }
-  }
   PetscCall(PetscLogStagePush(Log::output_stage));
   const HistoryRow &last = history_.rows().back();
   // Shape metrics (C/t, C1/C2, springback) are the press scenes': those with final metrics of their own.
   const auto scene_metrics = scene_->FinalMetrics(history_);
-  Answer answer = Summarize(history_.rows(), !scene_metrics.empty(), companion.empty() ? nullptr : &companion);
-  answer.stroke_name = scene_->StrokeName(), answer.load_unit = scene_->LoadUnit();
-  for (const auto &[name, value] : scene_metrics) // (the second pass's start: the scene's, before its first row)
-    if (name == "pass2_start_stroke" && answer.passes.size() > 1) answer.passes[1].start = value;
-  answer.mesh_covered = opt_.mesh_file.empty();
-  answer.release = opt_.unload == "withdraw" ? "the dies withdrawn" : "the contact forces reversed, the dies removed";
+  const auto summarize = [&](const std::vector<HistoryRow> *estimate) {
+    Answer a = Summarize(history_.rows(), !scene_metrics.empty(), estimate);
+    a.stroke_name = scene_->StrokeName(), a.load_unit = scene_->LoadUnit();
+    for (const auto &[name, value] : scene_metrics) // (the second pass's start: the scene's, before its first row)
+      if (name == "pass2_start_stroke" && a.passes.size() > 1) a.passes[1].start = value;
+    a.mesh_covered = opt_.mesh_file.empty();
+    a.release = opt_.unload == "withdraw" ? "the dies withdrawn" : "the contact forces reversed, the dies removed";
+    return a;
+  };
+  Answer answer = summarize(nullptr);
   std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke},
                                                          {"final_load", last.load},
                                                          {"x_max", last.x_max},
@@ -58,12 +68,27 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
   for (const auto &m : ReleaseAttributes(releases)) metrics.push_back(m);
   double points = fe::kGauss * mesh_.num_cells, all_points;
   PetscCallMPI(MPI_Allreduce(&points, &all_points, 1, MPI_DOUBLE, MPI_SUM, comm_));
-  PetscCall(writer.Close(history_, metrics));
-  int ok = history_.FinishCsv(); // rank 0 holds the file; every rank learns the outcome
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
-  PetscCheck(ok, comm_, PETSC_ERR_FILE_WRITE, "-history_csv %s: cannot rename the finished file into place",
-             opt_.history_csv.c_str());
+  // 1. The results final: nothing the estimate does can touch them.
+  PetscCall(PlaceResults(writer, metrics, stop.why));
   PetscCall(PetscLogStagePop());
+  // 2. The estimate, added to them: the attributes the answer with it adds or changes.
+  if (companion_run_ && stop.why.empty()) {
+    PetscCall(Estimate(companion, stop));
+    if (!companion.empty()) {
+      answer = summarize(&companion);
+      std::vector<std::pair<std::string, double>> extra;
+      for (const auto &a : AnswerAttributes(answer)) {
+        auto was = std::find_if(metrics.begin(), metrics.end(), [&](const auto &m) { return m.first == a.first; });
+        if (was == metrics.end() || was->second != a.second) extra.push_back(a);
+      }
+      std::string why;
+      if (!opt_.output.empty()) PetscCall(AddResultAttributes(comm_, opt_.output, extra, why));
+      if (!why.empty())
+        PetscCall(PetscPrintf(comm_,
+                              "tubeform: the error estimate is not in %s (%s): it holds the results without it\n",
+                              opt_.output.c_str(), why.c_str()));
+    }
+  }
   if (stop.why.empty() && !quiet_) {
     PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n",
                           opt_.scene.c_str(), (int)at_.inc, (int)system_.factorizations(), opt_.output.c_str()));
@@ -76,8 +101,8 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
                           (int)inconsistent_));
   }
   // An early stop is a failure of the run, reported after its results are written.
-  PetscCheck(stop.why.empty(), comm_, stop.code, "%s; results up to there are in %s", stop.why.c_str(),
-             opt_.output.c_str());
+  const std::string where = stop.after_end || opt_.output.empty() ? "" : "; results up to there are in " + opt_.output;
+  PetscCheck(stop.why.empty(), comm_, stop.code, "%s%s", stop.why.c_str(), where.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

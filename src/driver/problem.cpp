@@ -134,7 +134,7 @@ PetscErrorCode Problem::Open(ResultWriter &writer)
   // tools the scene asks for are set up (and refused if they start inside the
   // body) before the result file is opened, so such a start leaves no file.
   if (!opt_.history_csv.empty()) PetscCall(CheckWritable(comm_, opt_.history_csv, "-history_csv"));
-  PetscCall(CheckWritable(comm_, opt_.output, "-output"));
+  if (!opt_.output.empty()) PetscCall(CheckWritable(comm_, opt_.output, "-output")); // (none: a companion run)
   if (!opt_.checkpoint.empty()) PetscCall(CheckWritable(comm_, opt_.checkpoint, "-checkpoint"));
   ContactSpec tools;
   PetscCall(scene_->Initialize(*model_, tools));
@@ -145,7 +145,7 @@ PetscErrorCode Problem::Open(ResultWriter &writer)
     PetscCall(contact_->Initialize());
     model_->contact = contact_.get();
   }
-  if (opt_.restart.empty()) PetscCall(writer.Open(mesh_, opt_.output));
+  if (opt_.restart.empty() && !opt_.output.empty()) PetscCall(writer.Open(mesh_, opt_.output));
   writer.SetTimeScale(path_.duration); // the .xmf's time: seconds of the load path (a tool's stroke at 1 mm/s)
   int ok = history_.OpenCsv(opt_.history_csv, rank_);
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
@@ -175,6 +175,15 @@ PetscErrorCode Problem::Run()
   ResultWriter writer;
 
   PetscFunctionBeginUser;
+  {
+    // A stop signal during the set-up (the mesh, its partition, the system)
+    // ends the run before it writes anything: at once, as a batch system's
+    // kill a second or two later asks.
+    int mine = StopSignal(), any;
+    PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm_));
+    PetscCheck(!any, comm_, PETSC_ERR_SIG, "interrupted by %s before the first increment: no results written%s%s",
+               SignalName(any), opt_.output.empty() ? "" : ", the earlier ones unchanged in ", opt_.output.c_str());
+  }
   PetscCall(Open(writer));
   const double end = path_.end;
   std::vector<double> breaks = path_.breakpoints;
@@ -281,7 +290,7 @@ PetscErrorCode Problem::Run()
   PetscCall(VecDestroy(&du));
   PetscCall(DestroyForces());
 
-  // 7. The answer, the self-checks and the result file (renamed into place only now).
+  // 7. The answer, the result files (renamed into place only now), the estimate added to them, the self-checks.
   PetscCall(Finish(writer, stop));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

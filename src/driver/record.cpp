@@ -214,6 +214,7 @@ PetscErrorCode Problem::WriteFields(ResultWriter &writer, PetscInt step, double 
   std::vector<CellField> cells = {{"sigma_xx", {}},  {"sigma_yy", {}}, {"sigma_zz", {}}, {"sigma_xy", {}},
                                   {"von_mises", {}}, {"eps_p", {}},    {"plastic", {}}};
   PetscFunctionBeginUser;
+  if (opt_.output.empty()) PetscFunctionReturn(PETSC_SUCCESS); // (a companion run: no files)
   for (auto &c : cells) c.values.assign(mesh_.num_cells, 0.0);
   // Cell values are Gauss-point averages.
   for (PetscInt e = 0; e < mesh_.num_cells; ++e)

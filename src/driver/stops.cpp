@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <cstring>
 
 #include "tubeform/core/signals.hpp"
 #include "tubeform/driver/problem.hpp"
@@ -76,8 +77,18 @@ PetscErrorCode Problem::StopBefore(ResultWriter &writer, const OutputSchedule &o
   // ... and the clock (-time_limit) and stop signals (rank 0 may be the only
   // one to see either: clocks differ, a signal may reach one process); both
   // leave a checkpoint to continue from.
-  int mine[2] = {opt_.time_limit > 0 && MPI_Wtime() - t_start > opt_.time_limit, StopSignal()}, any[2];
-  PetscCallMPI(MPI_Allreduce(mine, any, 2, MPI_INT, MPI_MAX, comm_));
+  // A write of the history CSV that failed (rank 0's) ends the run at once:
+  // nothing is renamed into place (a full disk: the HDF5 file cannot be
+  // finished either), the earlier results stay whole.
+  int mine[3] = {opt_.time_limit > 0 && MPI_Wtime() - t_start > opt_.time_limit, StopSignal(), history_.CsvError()},
+      any[3];
+  PetscCallMPI(MPI_Allreduce(mine, any, 3, MPI_INT, MPI_MAX, comm_));
+  if (any[2] && rank_ == 0) history_.DropCsv();
+  PetscCheck(!any[2], comm_, PETSC_ERR_FILE_WRITE,
+             "-history_csv %s: writing %s.partial failed (%s; %s); it is removed, nothing is renamed into place "
+             "(the results so far stay in %s.partial)",
+             opt_.history_csv.c_str(), opt_.history_csv.c_str(), std::strerror(any[2]), Where().c_str(),
+             opt_.output.c_str());
   if (any[1]) {
     stop.signal = any[1], stop.code = PETSC_ERR_SIG;
     stop.why = Format("interrupted by %s (%s)", SignalName(any[1]), Where().c_str());
@@ -97,6 +108,15 @@ PetscErrorCode Problem::StopBefore(ResultWriter &writer, const OutputSchedule &o
 PetscErrorCode Problem::StopOnFailure(PetscErrorCode failed, Stop &stop)
 {
   PetscFunctionBeginUser;
+  if (failed == PETSC_ERR_SIG) {
+    // A stop signal the ranks agreed on inside the increment (Controller::Solve): it is dropped.
+    int mine = StopSignal(), any;
+    PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm_));
+    --at_.inc;
+    stop.signal = any, stop.code = failed;
+    stop.why = Format("interrupted by %s (%s; the increment in progress dropped)", SignalName(any), Where().c_str());
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   if (failed == PETSC_ERR_USER_INPUT || failed == PETSC_ERR_NOT_CONVERGED) {
     const char *specific = nullptr;
     PetscCall(PetscErrorMessage(failed, nullptr, (char **)&specific));

@@ -1,5 +1,6 @@
 #include "tubeform/io/history.hpp"
 
+#include <cerrno>
 #include <cstdio>
 
 #include "tubeform/step/rmin.hpp"
@@ -121,24 +122,33 @@ bool History::OpenCsv(const std::string &path, int rank)
   const auto &cols = HistoryColumns();
   for (size_t c = 0; c < cols.size(); ++c) std::fprintf(csv_, "%s%s", c ? "," : "", cols[c].name);
   std::fprintf(csv_, "\n");
+  Checked(std::fflush(csv_) == 0);
   return true;
+}
+
+void History::Checked(bool ok)
+{
+  if (!ok && !csv_errno_) csv_errno_ = errno ? errno : EIO; // the first failure's reason
 }
 
 void History::Append(const HistoryRow &row)
 {
   rows_.push_back(row);
-  if (!csv_) return;
+  if (!csv_ || csv_errno_) return; // (a file that failed is not written further: the run stops)
   const auto &cols = HistoryColumns();
+  bool ok = true;
   for (size_t c = 0; c < cols.size(); ++c) {
     const double v = row.*(cols[c].field);
-    if (c) std::fputc(',', csv_);
+    if (c) ok = ok && std::fputc(',', csv_) != EOF;
     if (cols[c].field == &HistoryRow::limiter)
-      std::fprintf(csv_, "%s", LimiterName(static_cast<int>(v)));
+      ok = ok && std::fprintf(csv_, "%s", LimiterName(static_cast<int>(v))) >= 0;
     else
-      std::fprintf(csv_, "%.12g", v);
+      ok = ok && std::fprintf(csv_, "%.12g", v) >= 0;
   }
-  std::fputc('\n', csv_);
-  std::fflush(csv_); // a long run can be watched (tail -f) while it goes
+  ok = ok && std::fputc('\n', csv_) != EOF;
+  // Flushed row by row: a long run can be watched (tail -f) while it goes, and
+  // a full disk is seen at the row it cuts.
+  Checked(ok && std::fflush(csv_) == 0);
 }
 
 PetscErrorCode History::Persist(Archive &ar, MPI_Comm comm)
@@ -166,12 +176,19 @@ PetscErrorCode History::Persist(Archive &ar, MPI_Comm comm)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-bool History::FinishCsv()
+void History::DropCsv()
 {
-  if (!csv_) return true;
-  std::fclose(csv_);
+  if (csv_) std::fclose(csv_);
   csv_ = nullptr;
-  return std::rename((csv_path_ + ".partial").c_str(), csv_path_.c_str()) == 0;
+  if (!csv_path_.empty()) std::remove((csv_path_ + ".partial").c_str());
+}
+
+int History::CloseCsv()
+{
+  if (!csv_) return csv_errno_;
+  Checked(std::fclose(csv_) == 0);
+  csv_ = nullptr;
+  return csv_errno_;
 }
 
 } // namespace tf

@@ -42,6 +42,8 @@ PetscErrorCode CheckWritable(MPI_Comm comm, const std::string &path, const char 
 
 ResultWriter::~ResultWriter()
 {
+  // (an error ended the run: the reserve makes room for closing the file, whatever filled the disk)
+  FreeReserve();
   if (viewer_) (void)PetscViewerDestroy(&viewer_);
 }
 
@@ -51,6 +53,10 @@ PetscErrorCode ResultWriter::Open(const Mesh &mesh, const std::string &path)
   mesh_ = &mesh;
   path_ = path;
   PetscCall(CheckWritable(mesh.comm, path, "-output"));
+  PetscCall(CheckRoom(mesh.comm, path, "-output",
+                      kBytesPerValue * (2.0 * mesh.num_global_nodes + 4.0 * mesh.num_global_cells) + kRoomMargin,
+                      "the mesh"));
+  PetscCall(Reserve());
   PetscCall(PetscViewerHDF5Open(mesh.comm, (path + ".partial").c_str(), FILE_MODE_WRITE, &viewer_));
   PetscCall(PetscViewerPushFormat(viewer_, PETSC_VIEWER_HDF5_XDMF));
   PetscCall(DMView(mesh.dm, viewer_));
@@ -90,6 +96,7 @@ PetscErrorCode ResultWriter::Reopen(const Mesh &mesh, const std::string &path, c
              "-restart: the results of the interrupted run are not in -output %s (nor %s): give the -output of the "
              "run that wrote the checkpoint",
              path.c_str(), partial.c_str());
+  PetscCall(Reserve());
   PetscCall(PetscViewerHDF5Open(mesh.comm, partial.c_str(), FILE_MODE_APPEND, &viewer_));
   PetscCall(PetscViewerPushFormat(viewer_, PETSC_VIEWER_HDF5_XDMF));
   PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
@@ -203,6 +210,14 @@ PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::ve
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::output, 0, 0, 0, 0));
   PetscCallMPI(MPI_Comm_rank(mesh_->comm, &rank));
+  {
+    // Room first: HDF5 does not recover from a write that finds the disk full.
+    double values = 1;
+    for (const auto &f : nodes) values += (double)f.components * mesh_->num_global_nodes;
+    values += (double)cells.size() * mesh_->num_global_cells;
+    for (const auto &t : tools) values += (double)t.xy.size();
+    PetscCall(CheckRoom(mesh_->comm, path_, "-output", kBytesPerValue * values, "the next field step"));
+  }
   PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
   times_.push_back(time);
   PetscCall(WriteSeriesValue(file, "/time", time, step, rank == 0));
@@ -258,7 +273,8 @@ PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::ve
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std::pair<std::string, double>> &metrics)
+PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std::pair<std::string, double>> &metrics,
+                                   const std::string &stop_reason)
 {
   hid_t file, group;
   PetscMPIInt rank;
@@ -267,6 +283,12 @@ PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::output, 0, 0, 0, 0));
   PetscCallMPI(MPI_Comm_rank(mesh_->comm, &rank));
+  {
+    const double index = (double)times_.size() * (node_names_.size() + cell_names_.size() + tools_.size() + 4);
+    PetscCall(CheckRoom(mesh_->comm, path_, "-output",
+                        kBytesPerValue * HistoryColumns().size() * history.rows().size() + kXdmfBytesPerEntry * index,
+                        "the history and the ParaView index"));
+  }
   // /history: one 1-D dataset per column. Dataset creation is collective;
   // every rank holds the same history, rank 0 writes the values.
   PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
@@ -294,29 +316,25 @@ PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std
   PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/history", "limiter_names", PETSC_STRING, names.c_str()));
   for (const auto &m : metrics)
     PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/history", m.first.c_str(), PETSC_DOUBLE, &m.second));
+  if (!stop_reason.empty())
+    PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/history", "stop_reason", PETSC_STRING, stop_reason.c_str()));
   PetscCall(PetscOptionsGetAll(nullptr, &all_options));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/", "options", PETSC_STRING, all_options));
   PetscCall(PetscFree(all_options));
   PetscCall(PetscViewerPopFormat(viewer_));
+  FreeReserve(); // (its room for the metadata the file's close writes)
   PetscCall(PetscViewerDestroy(&viewer_));
 
-  // Rank 0 renames the file and writes the .xmf; every rank learns how that went
-  // before any raises it (one rank returning alone would leave the others waiting).
-  PetscCallMPI(MPI_Barrier(mesh_->comm));
-  enum { kWritten, kNotRenamed, kNoXdmf };
-  int status = kWritten;
-  if (rank == 0) {
-    if (std::rename((path_ + ".partial").c_str(), path_.c_str()) != 0)
-      status = kNotRenamed;
-    else if (!WriteXdmf())
-      status = kNoXdmf;
-  }
-  PetscCallMPI(MPI_Bcast(&status, 1, MPI_INT, 0, mesh_->comm));
-  PetscCheck(status != kNotRenamed, mesh_->comm, PETSC_ERR_FILE_WRITE,
-             "-output %s: cannot rename the finished file into place", path_.c_str());
-  PetscCheck(status != kNoXdmf, mesh_->comm, PETSC_ERR_FILE_WRITE,
-             "-output %s: the results are written, but their ParaView index %s cannot be written", path_.c_str(),
-             XdmfPath().c_str());
+  // The ParaView index beside it, written by rank 0 as <name>.xmf.partial;
+  // every rank learns how that went before any raises it (one rank returning
+  // alone would leave the others waiting).
+  int xdmf = rank == 0 ? WriteXdmf() : 1;
+  if (!xdmf) std::remove((XdmfPath() + ".partial").c_str());
+  PetscCallMPI(MPI_Bcast(&xdmf, 1, MPI_INT, 0, mesh_->comm));
+  PetscCheck(xdmf, mesh_->comm, PETSC_ERR_FILE_WRITE,
+             "-output %s: its ParaView index %s.partial cannot be written (a full disk?); nothing is renamed into "
+             "place (the results stay in %s.partial)",
+             path_.c_str(), XdmfPath().c_str(), path_.c_str());
   PetscCall(PetscLogEventEnd(Log::output, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -3,7 +3,8 @@
 // coordinates and the fields: "Warp By Vector" with displacement_u shows the
 // deformed shape) and, in a tool scene, one grid per tool: its outline as
 // lines at the start, with its motion as displacement_u, so that the same
-// warp moves it. A step's time is lambda x the time scale.
+// warp moves it. A step's time is lambda x the time scale. It is written as
+// <name>.xmf.partial and renamed with the results (ResultWriter::Place).
 #include <fstream>
 
 #include "tubeform/io/output.hpp"
@@ -15,7 +16,7 @@ bool ResultWriter::WriteXdmf() const
   std::string h5 = path_;
   const auto slash = h5.rfind('/');
   if (slash != std::string::npos) h5 = h5.substr(slash + 1);
-  std::ofstream x(XdmfPath());
+  std::ofstream x(XdmfPath() + ".partial");
   const PetscInt nv = mesh_->num_global_nodes, nc = mesh_->num_global_cells, nt = (PetscInt)times_.size();
   x << "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n<Domain>\n";
   x << "<Grid Name=\"tubeform\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";

@@ -3,6 +3,7 @@
 #include <metis.h>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/core/signals.hpp"
 
 namespace tf {
 
@@ -29,6 +30,11 @@ PetscErrorCode PartitionCells(const SerialMesh &mesh, int nparts, std::vector<in
   const int err = METIS_PartMeshDual(&ne, &nn, eptr.data(), eind.data(), nullptr, nullptr, &ncommon, &np, nullptr,
                                      options, &objval, epart.data(), npart.data());
   PetscStackPop;
+  // METIS (its GKlib) catches SIGTERM while it runs and gives the handler back
+  // through signal() with System V semantics: good for one signal only, the
+  // next would end this rank at once (mpirun forwards a batch system's SIGTERM
+  // a second later). The stop signals are installed again.
+  RearmStopSignals();
   PetscCheck(err == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "METIS_PartMeshDual failed with code %d", err);
   for (idx_t c = 0; c < ne; ++c) part[c] = static_cast<int>(epart[c]);
   PetscFunctionReturn(PETSC_SUCCESS);

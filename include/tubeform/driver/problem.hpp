@@ -39,10 +39,12 @@ public:
   PetscErrorCode Run();
   // A companion run of the same case at half the resolution, whose history's
   // difference from this run's is its error estimate (driver/answer.hpp):
-  // called once the run has reached its end (not on a stop), before the answer.
+  // called once the run has reached its end (not on a stop) and its results
+  // are final (complete, closed and in place). Whatever error it returns means
+  // no estimate (one line why); a stop signal also ends the job.
   using CompanionRun = std::function<PetscErrorCode(std::vector<HistoryRow> &)>;
   void SetCompanion(CompanionRun run) { companion_run_ = std::move(run); }
-  // No lines on the standard output (a companion run).
+  // No lines on the standard output (a companion run, which also writes no files: its -output is empty).
   void SetQuiet() { quiet_ = true; }
 
   MPI_Comm comm() const { return comm_; }
@@ -118,6 +120,7 @@ private:
     bool stalled = false;      // the stall watch ended it
     int signal = 0;            // the stop signal that ended it
     bool checkpointed = false; // the last checkpoint asked for was written
+    bool after_end = false;    // it came after the run's end (its results are complete)
   };
   // Before an increment: the stall watch, the increment budget, the clock and
   // stop signals (with a checkpoint to continue from).
@@ -130,7 +133,16 @@ private:
   PetscErrorCode StopAfter(Stop &stop, bool &wrote_last);
   // A checkpoint; one that cannot be written stops the run (stop.why).
   PetscErrorCode Checkpoint(ResultWriter &writer, const OutputSchedule &output, Stop &stop);
+  // Step 7 (src/driver/finish.cpp): the answer; the results final (written,
+  // closed, renamed into place: PlaceResults), then the estimate added to them
+  // (Estimate, src/driver/estimate.cpp); the stop reported last.
   PetscErrorCode Finish(ResultWriter &writer, const Stop &ended);
+  PetscErrorCode PlaceResults(ResultWriter &writer, const std::vector<std::pair<std::string, double>> &metrics,
+                              const std::string &stop_reason);
+  // The companion run, its ranks agreeing on how it ended: its history in
+  // `companion` (empty: no estimate, one line why); a stop signal during it
+  // goes into `stop`.
+  PetscErrorCode Estimate(std::vector<HistoryRow> &companion, Stop &stop);
   std::string Where() const; // where the run stands, for a stop's message
   // The forces at the end of an increment (or of a restored state) at lambda:
   // applied, external (with friction), internal (with inertia), out-of-balance.

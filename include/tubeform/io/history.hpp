@@ -46,11 +46,21 @@ const std::vector<HistoryColumn> &HistoryColumns();
 class History {
 public:
   ~History();
-  // Opens `<path>.partial` on rank 0 (renamed to `path` by FinishCsv); false
-  // when rank 0 cannot create it. The caller broadcasts the outcome.
+  // Opens `<path>.partial` on rank 0 (renamed to `path` once the results are
+  // complete: PlaceResults); false when rank 0 cannot create it. The caller
+  // broadcasts the outcome.
   bool OpenCsv(const std::string &path, int rank);
+  // A row into the history (every rank) and the CSV file (rank 0): every write
+  // is checked; the first that fails is remembered (CsvError) and ends the
+  // file's writing.
   void Append(const HistoryRow &row);
-  bool FinishCsv(); // rename on success
+  // Rank 0: the errno of the first failed write of the CSV file (0: none, or no file here).
+  int CsvError() const { return csv_errno_; }
+  // Rank 0: closes the file (its last write checked); returns CsvError().
+  int CloseCsv();
+  // Rank 0: closes and removes the file of a failed write (a truncated history; on a full disk, its room lets the
+  // HDF5 file close).
+  void DropCsv();
   // Collective: writes or reads the rows (read: they replace these, and go to
   // the CSV file when one is open).
   PetscErrorCode Persist(Archive &ar, MPI_Comm comm);
@@ -60,6 +70,8 @@ private:
   std::vector<HistoryRow> rows_;
   std::FILE *csv_ = nullptr;
   std::string csv_path_;
+  int csv_errno_ = 0;
+  void Checked(bool ok); // remembers the first failure's errno
 };
 
 } // namespace tf

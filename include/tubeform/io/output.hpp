@@ -15,6 +15,21 @@
 
 namespace tf {
 
+// Room kept free on the results' file system beyond what a write needs
+// (CheckRoom): HDF5's own metadata (a field step adds chunk indices and object
+// headers of tens of kB; closing the file flushes its metadata cache) and the
+// history CSV's rows written meanwhile (about 1 kB each), many times over.
+// Parallel HDF5 does not recover from a write that finds the disk full (a
+// 2-rank job then waits in its collective calls for ever; one rank fails
+// again in MPI_Finalize), so a write is refused before it starts instead; and
+// as much again is held in <output>.partial.room while the file is open, given
+// back before it closes, so that even a disk another job filled lets it close.
+constexpr double kRoomMargin = 1e6;
+// Bytes a double takes in the file.
+constexpr double kBytesPerValue = 8;
+// The .xmf's lines for one field (or grid) of one step: about 300 bytes.
+constexpr double kXdmfBytesPerEntry = 512;
+
 struct CellField {
   std::string name;
   std::vector<double> values; // one per local cell
@@ -56,8 +71,17 @@ public:
   // The .xmf shows a field step written at load parameter lambda at the time lambda x scale: the load path's
   // seconds (a tool scene's duration is its stroke over the punch speed).
   void SetTimeScale(double scale) { time_scale_ = scale; }
-  // Collective: history, attributes, the rename, then the .xmf (a failure of either is every rank's).
-  PetscErrorCode Close(const History &history, const std::vector<std::pair<std::string, double>> &metrics);
+  // Collective: history and attributes into <path>.partial, closed, and the
+  // .xmf beside it as <name>.xmf.partial (a failure of either is every rank's);
+  // nothing is renamed yet. A run that stopped early keeps why in the string
+  // attribute stop_reason of /history (the line it printed, which may not
+  // reach anyone: a job whose mpirun has left).
+  PetscErrorCode Close(const History &history, const std::vector<std::pair<std::string, double>> &metrics,
+                       const std::string &stop_reason);
+  // Collective, after Close: the results renamed into place (rank 0), the
+  // HDF5 file, the CSV at `csv` (none: empty) and then the .xmf; each replaces
+  // an earlier file of its name whole.
+  PetscErrorCode Place(const std::string &csv);
 
 private:
   const Mesh *mesh_ = nullptr;
@@ -76,7 +100,11 @@ private:
   // At a restart: the tools the file holds, up to the checkpoint's steps.
   PetscErrorCode ReadTools();
   double time_scale_ = 1;
-  // The .xmf beside the .h5 (rank 0 alone; false when it could not be written).
+  // The room kept for closing the file (kRoomMargin bytes in <path>.partial.room, rank 0).
+  PetscErrorCode Reserve();
+  void FreeReserve();
+  std::string ReservePath() const { return path_ + ".partial.room"; }
+  // The .xmf beside the .h5, as <name>.xmf.partial (rank 0 alone; false when it could not be written).
   bool WriteXdmf() const;
   std::string XdmfPath() const;
 };
@@ -84,5 +112,15 @@ private:
 // Collective: an error on every rank unless a file can be created at `path`
 // (tested on rank 0 with a scratch file, after creating missing parent directories).
 PetscErrorCode CheckWritable(MPI_Comm comm, const std::string &path, const char *option);
+// Collective: an error (PETSC_ERR_FILE_WRITE) on every rank unless the file
+// system of `path` has room for `bytes` (`what`, for the message) and
+// kRoomMargin beside (asked on rank 0).
+PetscErrorCode CheckRoom(MPI_Comm comm, const std::string &path, const char *option, double bytes, const char *what);
+// Collective: `attributes` of /history added to the finished result file at
+// `path` in a way that cannot lose it: rank 0 copies it to
+// <path>.estimate.partial, adds them there and renames the copy over it. When
+// that fails, `why` says so (every rank) and the file is as it was.
+PetscErrorCode AddResultAttributes(MPI_Comm comm, const std::string &path,
+                                   const std::vector<std::pair<std::string, double>> &attributes, std::string &why);
 
 } // namespace tf
