@@ -249,10 +249,9 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(ReadToolOptions(PetscOptionsObject, read, opt)); // (tool_options.cpp)
   PetscCall(read.Real(PetscOptionsObject, "-friction_mu",
                       "Coulomb friction coefficient (0: frictionless, no friction work at all)", opt.friction_mu));
-  PetscCall(read.Real(
-    PetscOptionsObject, "-friction_vcri",
-    "Quasi-stick slip VCRI (mm) of the tanh law; 0: sqrt(Ro t) / 1200 (2% of the default preset's node spacing)",
-    opt.friction_vcri));
+  PetscCall(read.Real(PetscOptionsObject, "-friction_vcri",
+                      "Quasi-stick slip VCRI (mm) of the tanh law; 0: 2% of the circumferential element size",
+                      opt.friction_vcri));
   PetscCall(read.Real(PetscOptionsObject, "-friction_tol",
                       "Friction iterations: largest change of f_l / (mu f_n) between iterates", opt.friction_tol));
   PetscCall(read.Int(PetscOptionsObject, "-friction_max_iters", "Friction iterations per increment before giving up",

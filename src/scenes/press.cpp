@@ -87,9 +87,13 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   }
   hold_.PinSlide(held_[0]);
   tools.symmetry = Symmetry();
-  // Default VCRI: a length of the tube, the same on every mesh (so that a coarser or finer mesh of the error
-  // estimate runs the same friction law).
-  tools.params = MakeContactParams(opt_, kVcriOfBendingLength * std::sqrt(opt_.tube_ro * opt_.tube_t));
+  // Default VCRI: 2 % of the mean distance between the outer surface's nodes
+  // (of the mesh actually used: generated or read from a file).
+  double length = 0;
+  for (size_t k = 1; k < outer.size(); ++k)
+    length += std::hypot(outer[k].x - outer[k - 1].x, outer[k].y - outer[k - 1].y);
+  const double spacing = outer.size() > 1 ? length / (outer.size() - 1) : opt_.tube_ro * 0.5 * M_PI / opt_.mesh_ntheta;
+  tools.params = MakeContactParams(opt_, kVcriOfSpacing * spacing);
   spec_ = tools; // the second pass's set: the same nodes, supports and law
   spec_.tools.clear();
   if (opt_.stroke_corner_radius > 0 && !m.quiet)

@@ -93,7 +93,7 @@ struct Options {
   std::string pass2_side_die;    // the second pass's side dies (empty: the first pass's -side_die)
   double side_force = 0;         // side dies pressing with this force (N/mm, each), their travel unknown (0: stroke)
   double pass2_turn = 0;         // the tube turned counter-clockwise before the second pass (degrees, quarter turns)
-  double friction_mu = 0.05, friction_vcri = 0; // vcri 0: a length of the tube (the press scene: sqrt(Ro t) / 1200)
+  double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
   double friction_tol = ContactParams{}.tol;
   double rmin_dphi = ContactParams{}.dphi_max;       // r6: largest fall of f_l / (mu f_n) towards stick in an increment
   double rmin_dphi_rise = ContactParams{}.dphi_rise; // r6: largest rise of |f_l / (mu f_n)| (stick to slide)

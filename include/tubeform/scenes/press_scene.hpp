@@ -61,10 +61,9 @@ public:
   ~PressScene() override { (void)VecDestroy(&reversed_); }
 
 private:
-  // VCRI as a fraction of the bending length sqrt(Ro t): a micro-slip far below an element, so that sticking
-  // nodes hold (docs/theory.md, "The law"): 2 % of the default preset's node spacing (24 cells per bending length),
-  // 4 % of the accurate preset's; the loads move by at most 0.35 % when it halves or doubles (mu 0.35, fast preset).
-  static constexpr double kVcriOfBendingLength = 0.02 / 24;
+  // VCRI as a fraction of the outer nodes' spacing: a micro-slip far below an
+  // element, so that sticking nodes hold (docs/theory.md, "The law").
+  static constexpr double kVcriOfSpacing = 0.02;
   // Where the load path's releases begin (lambda): each pass takes one unit of it to press and one to release.
   static constexpr double kFirstRelease = 1.0, kSecondPress = 2.0, kSecondRelease = 3.0;
   // The tools' places in the contact set.
