@@ -1,4 +1,4 @@
-"""Numerical stability at the extremes (issue 10): the default squaring case on
+"""Numerical stability at the extremes: the default squaring case on
 the default preset with one parameter pushed to the end of its range, on 2
 ranks, whole runs. Each run must finish within its time limit with finite
 results and its self-checks within tolerance, or stop early with one line

@@ -3,7 +3,7 @@
 leaves the die's flank node by node, each contact force passing zero. An
 increment must end at its events (r_min), not past them, and in balance.
 
-Before the fix (issue 22) the corrections of the equilibrium iterations could
+Before the fix the corrections of the equilibrium iterations could
 turn a node's accepted contact force into a pull that the release check had
 not seen: every following step then found that node's separation at r5 = 0,
 was cut to inertia's shortest step and taken past the event, 8510 times in

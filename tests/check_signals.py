@@ -1,4 +1,4 @@
-"""Interrupted runs (issue 12): SIGINT, SIGTERM and a scheduler's warning
+"""Interrupted runs: SIGINT, SIGTERM and a scheduler's warning
 SIGUSR1 end a run at the end of the current increment with its results
 written and flagged, one line naming the signal, and a non-zero exit on
 every rank. One rank without mpirun gets SIGINT itself (Ctrl-C); on 2 ranks
