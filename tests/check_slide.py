@@ -2,7 +2,7 @@
 pressed on a floor by N = 100 N/mm, then its top pushed sideways.
 References (Coulomb): the tangential force T stays below mu N while the block
 sticks and slides at T = mu N; friction dissipation = mu N x slip.
-  - slide at mu N within 1.2e-3 (the issue asked 1 %; measured -1.2e-5, the
+  - slide at mu N within 1.2e-3 (1 % required; measured -1.2e-5, the
     regularized law's residual, on every OpenBLAS kernel tried: 100 times
     that), at 20 and at 200 increments (the law accumulates slip, so the
     increment size must not matter: equal within 2e-5, measured 1.9e-7);
