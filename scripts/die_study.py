@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Which die would make the paper's collapse claims hold (issue 23, item 6): "R/t 37 fits the die without
+"""Which die would make the paper's collapse claims hold: "R/t 37 fits the die without
 collapse" (its Fig. 4b, at U = 4.2 mm) and "no collapse above R/t 22.75" (Figs. 10 and 12, pressed by its
 rule to an outer corner radius of 4 t). Aluminum tubes of Ro 17.5 mm at mu 0.05, R/t 11.67 to 50, pressed
 4.2 mm by V-dies of 80, 90 (the paper's) and 100 degrees and by a flat-bottomed die

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """How well a run's error estimate bounds its true error, for candidate estimators, on the tubes of
-scripts/validate (issue 22, docs/accuracy.md "The error estimate").
+scripts/validate (docs/accuracy.md, "The error estimate").
 
     /usr/bin/python3 scripts/estimate_study.py [--cases a,b] [--presets fast,default] [-j N]
 

@@ -1,4 +1,4 @@
-"""Numerical stability at the extremes (issue 10): the default squaring case on
+"""Numerical stability at the extremes: the default squaring case on
 the default preset with one parameter pushed to the end of its range, on 2
 ranks, whole runs. Each run must finish within its time limit with finite
 results and its self-checks within tolerance, or stop early with one line
@@ -42,7 +42,7 @@ CASES = [
     ("deps 0.05", ["-rmin_deps", "0.05"]),
 ]
 SELF_CHECK_TOL = 0.05
-TIME_LIMIT = 300  # s of the incremental loop: the issue's "within 5 minutes"
+TIME_LIMIT = 300  # s of the incremental loop: each case must end "within 5 minutes"
 
 
 def slug(name):
@@ -92,7 +92,8 @@ def run_case(name, extra, outdir, np_=2, exe=tfruns.EXE, mpirun="mpirun", time_l
 
 
 def acceptable(r):
-    """The issue's criterion for one case, and why not."""
+    """The criterion for one case (finished with finite results and self-checks within 5 %, or stopped
+    with one line), and why not."""
     if r["status"] == "failed" or r["rc"] is None:
         return False, "hang or crash"
     if not r["finite"]:

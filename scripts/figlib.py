@@ -98,7 +98,7 @@ def draw_outline(ax, xy, edges, **kw):
 def draw_die(ax, opts, stroke, **kw):
     """The upper V-die of the squaring scene at tool stroke U: a 90-degree V
     whose apex fillet (radius -die_r_apex) touches the round tube at the
-    start (METHOD.md section 1)."""
+    start (docs/dies.md)."""
     ro, ra = float(option(opts, "-tube_ro", 17.5)), float(option(opts, "-die_r_apex", 3))
     h0 = ro * math.sqrt(2) - stroke
     cy = ro * math.sqrt(2) - ra * math.sqrt(2) - stroke

@@ -1,4 +1,4 @@
-"""The figures past the paper (issue 11): a collapse map over R/t and mu, the
+"""The figures past the paper: a collapse map over R/t and mu, the
 press force against R/t, the critical R/t and the die's apex radius, from
 scripts/sweep summaries (run with /usr/bin/python3; scripts/figures calls it)."""
 import os

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""What the hardening model moves (issue 24): the paper's squaring with its
+"""What the hardening model moves: the paper's squaring with its
 springback, isotropic against mixed and kinematic hardening of the same
 monotonic flow curve.
 
@@ -32,7 +32,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import tfruns  # noqa: E402
 
 OUT = os.path.join(tfruns.root, "results", "hardening")
-# case name -> (options file, Ludwik sigma_y0 and K of its material: METHOD.md Table 1)
+# case name -> (options file, Ludwik sigma_y0 and K of its material: the paper's Table 1, docs/scenes.md)
 AL, CU = (165.3, 673.5), (445.0, 3628.6)
 CASES = {}  # (the default case, options/squaring.opts, is al_11.67_mu0.05)
 for tube, material in (("al_11.67", AL), ("al_37", AL), ("cu_29", CU)):

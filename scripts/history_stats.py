@@ -48,8 +48,8 @@
         (history column `limiter`), and solves (friction_iters) per increment;
         and the touch follow-ups: increments ended by the touch of the node
         that also ended the increment before, at most 0.01 of its r_min (a
-        touch the step before left just past its end, docs/accuracy.md,
-        "Where the time went").
+        touch the step before left just past its end,
+        docs/notes/where-the-time-went.md).
 
     /usr/bin/python3 scripts/history_stats.py die F.h5 [F.h5 ...]
         A -die_path press (docs/dies.md): U, load, die_x and die_turn at the

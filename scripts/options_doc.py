@@ -48,8 +48,9 @@ def markdown(sections):
     out = ["# Options reference", "",
            "Generated from `build/tubeform -help` by `/usr/bin/python3 scripts/options_doc.py`",
            "(do not edit; the test `docs_options` fails when it is out of date). Defaults are the built-in",
-           "ones: scene files and presets under `options/` set many of them. docs/options.md explains",
-           "the options by task; PETSc's own options (solver, `-log_view`, ...) are listed by `-help` too.", ""]
+           "ones: scene files and presets under `options/` set many of them. docs/options.md guides",
+           "through the groups and names the doc that explains each; PETSc's own options (solver,",
+           "`-log_view`, ...) are listed by `-help` too.", ""]
     for title, opts in sections:
         out += [f"## {title[0].upper() + title[1:]}", "", "| option | default | meaning |", "|---|---|---|"]
         for name, default, text, choices in opts:

@@ -8,9 +8,9 @@ answer, estimate, warnings and self-checks in one table.
 
 Each random tube is drawn uniformly in R/t 5-60 (Ro 12-25 mm), E 70-210 GPa,
 nu 0.28-0.36, E/sigma_y 150-1500, Ludwik K 0.5-4 sigma_y, n 0.1-1, mu 0-0.4
-and a stroke from 2 mm to 0.3 Ro. The fixed ones: the mild steel of issue 22
-(20/2, mu 0.1 and 0.4), a thin aluminum-like tube (25/0.45, mu 0.2) and a
-thick, strongly hardening wall (15/2.8, mu 0.35). Runs are cached in
+and a stroke from 2 mm to 0.3 Ro. The fixed ones: the mild steel of the validation
+set (20/2, mu 0.1 and 0.4), a thin aluminum-like tube (25/0.45, mu 0.2) and
+a thick, strongly hardening wall (15/2.8, mu 0.35). Runs are cached in
 results/sample/<preset>/ (delete a case's .log to run it again); the table is
 written to results/sample/<preset>/table.md and printed. Wall times are of a
 shared machine: compare increments and factorizations.
@@ -42,8 +42,8 @@ FIXED = {  # name: E, nu, sigma_y, K, n, Ro, t, mu, stroke
 KEYS = ("E", "nu", "sy", "K", "n", "ro", "t", "mu", "stroke")
 
 
-# Ranges of the random tubes: (R/t, mu, shortest stroke mm, longest stroke / Ro); --wide takes issue 22's own
-# sample's (R/t from 4, mu to 0.5, strokes from 1 mm to 0.35 Ro, 1 or 2 ranks).
+# Ranges of the random tubes: (R/t, mu, shortest stroke mm, longest stroke / Ro); --wide takes the wider
+# ranges (R/t from 4, mu to 0.5, strokes from 1 mm to 0.35 Ro, 1 or 2 ranks).
 RANGES = {False: ((5, 60), (0, 0.4), 2, 0.3), True: ((4, 60), (0, 0.5), 1, 0.35)}
 
 
@@ -101,7 +101,7 @@ def main():
     ap.add_argument("--time-limit", type=float, default=240, help="each run's -time_limit (s)")
     ap.add_argument("--cases", default="", help="only these (comma-separated names: r01, ..., a, b, c, d)")
     ap.add_argument("--table", action="store_true", help="tabulate what is cached, run nothing")
-    ap.add_argument("--wide", action="store_true", help="issue 22's own sample ranges (R/t 4-60, mu 0-0.5, strokes "
+    ap.add_argument("--wide", action="store_true", help="the wider ranges (R/t 4-60, mu 0-0.5, strokes "
                     "1 mm-0.35 Ro, 1 or 2 ranks), cached apart (results/sample/<preset>_wide_<seed>/)")
     ap.add_argument("--against", choices=("fast", "default", "accurate"),
                     help="compare the cached runs with a finer preset's cached runs (run nothing)")

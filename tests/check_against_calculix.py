@@ -9,7 +9,7 @@ it too): the subset of docs/accuracy.md's validation that scripts/test runs.
   4.2 mm, included in the margins the measured errors leave: 0.29 %, 0.022);
   and the run's own error estimate at least its true load error (the
   estimate must bound it: never report 1 % when it is 5 %);
-- the issue's mild steel tube (20/2, mu 0.1, 5 mm): the load within 1.5 % up
+- the mild steel tube (20/2, mu 0.1, 5 mm): the load within 1.5 % up
   to U = 3 mm; at 4.2 and 5 mm within 1.5 % + 1 %: the reference's contact
   penalty (1e6 MPa/mm) makes its end-of-stroke load soft, by 0.9 % at 4.2 mm
   and 2.4 % at 5 mm against a penalty of 3e7 on its 4 x 90 mesh

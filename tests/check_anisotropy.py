@@ -42,7 +42,7 @@ from tfcheck import Checks, args, out, run
 
 tf, mpirun, src = args()
 k = Checks("anisotropy")
-NU, SY0 = 0.34, 165.3  # -material aluminum (METHOD.md Table 1)
+NU, SY0 = 0.34, 165.3  # -material aluminum (the paper's Table 1, docs/scenes.md)
 R0, R90 = 2.0, 0.5
 F, G, H, L = R0 / (R90 * (1 + R0)), 1 / (1 + R0), R0 / (1 + R0), 1.5
 

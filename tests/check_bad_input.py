@@ -160,7 +160,7 @@ cases = [
     (["-unload_increments", "-1"], "-unload_increments"),
     (["-time_limit", "-1"], "-time_limit"),
     (["-progress", "-1"], "-progress"),
-    # Misspelled options name the nearest known one (issue 12); numbers that
+    # Misspelled options name the nearest known one; numbers that
     # are not numbers name the option.
     (["-tube_r", "17"], "-tube_r: unknown option; did you mean -tube_ro?"),
     (["-frction_mu", "0.3"], "did you mean -friction_mu?"),

@@ -3,7 +3,7 @@ ends, qm6, 2 elements through the thickness): the axial load levels off at
 the Euler load P_cr = pi^2 E' I / L^2 (E' = E/(1 - nu^2), I = t^3/12), which
 checks the initial-stress stiffness. Elastica post-buckling raises the load
 by (pi^2/8)(w/L)^2 ~ 0.8 % at the deflection reached and the bow lowers it by
-~e0/w; 2 % (the issue's tolerance) covers both. Checked with the paper's
+~e0/w; 2 % (the required tolerance) covers both. Checked with the paper's
 incremental method at 800 increments (energy balance within 0.5 % of the
 external work at every increment; its largest error sits at the onset of
 buckling and halves with the increment size) and with equilibrium

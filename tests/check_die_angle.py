@@ -1,4 +1,4 @@
-"""The V-die's angle (-die_angle, issue 23): the die of any angle between 60 and 150 degrees against its closed
+"""The V-die's angle (-die_angle): the die of any angle between 60 and 150 degrees against its closed
 form, and the runs on it (options/squaring.opts, fast preset, 2 ranks).
 
 1. The outline written to the result (/tools/V-die/vertices) at 60, 75, 120 and 150 degrees: the flank's

@@ -1,4 +1,4 @@
-"""Failing runs (issue 12): a factorization that fails is reported in words a
+"""Failing runs: a factorization that fails is reported in words a
 user can act on, with MUMPS's own code, instead of KSP's DIVERGED_PC_FAILED.
 MUMPS is given 1 MB of working memory (ICNTL(23) = 1) for a system that needs
 about 100 times that: INFOG(1) = -19. The run must stop with one line naming

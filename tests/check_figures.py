@@ -1,4 +1,4 @@
-"""scripts/figures --quick (issue 11) from nothing: runs the fast preset's cases of its
+"""scripts/figures --quick from nothing: runs the fast preset's cases of its
 quick grid into the test directory (22 real runs, about a minute on 2 cores)
 and draws every figure as PNG and PDF. Checks that each of the 16 figures
 exists in both formats and is not empty, that every case finished, that the

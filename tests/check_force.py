@@ -1,4 +1,4 @@
-"""A force-controlled die (-die_force; issue 23, items 2 and 7): its stroke an unknown of every increment.
+"""A force-controlled die (-die_force): its stroke an unknown of every increment.
 
 Force control and stroke control press the same model along the same quasi-static path while the tube's
 resistance rises, so the load-stroke curve of a run driven by its force is checked against a run driven by

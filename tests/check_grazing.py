@@ -3,7 +3,7 @@
 leaves the die's flank node by node, each contact force passing zero. An
 increment must end at its events (r_min), not past them, and in balance.
 
-Before the fix (issue 22) the corrections of the equilibrium iterations could
+Before the fix the corrections of the equilibrium iterations could
 turn a node's accepted contact force into a pull that the release check had
 not seen: every following step then found that node's separation at r5 = 0,
 was cut to inertia's shortest step and taken past the event, 8510 times in
@@ -12,8 +12,7 @@ this run (104 s instead of 18 s); a finer run of the default tube stalled.
 Its cost depends on the CPU: on OpenBLAS's Haswell kernel 1,098 increments
 (10 s), on Prescott 15,944 (74 s alone, 230 s beside other tests): the
 springback approaches a fold of the paper's load-controlled unloading and
-the rotation limit creeps towards it (docs/accuracy.md, "Presets"; issue
-22). Both pass the checks; the time allowed is 540 s for that reason.
+the rotation limit creeps towards it (docs/notes/fast-preset-history.md). Both pass the checks; the time allowed is 540 s for that reason.
 
 Checks, each against the method's own definition (no stored numbers):
 - the run ends (exit 0) with no step taken past an event and none unsettled

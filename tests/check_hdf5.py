@@ -102,7 +102,7 @@ k.check(dF <= 1e-13, f"2 x sum of nodal contact forces {2 * abs(F[:, 1].sum()):.
 loaded = np.hypot(F[:, 0], F[:, 1]) > 1e-9 * load
 k.check(loaded.any() and (S[loaded] == 1).all(), f"{loaded.sum()} nodes carry force, all flagged in contact")
 
-# The tool in the results (issue 23): its outline at the start against the V-die of METHOD.md (apex fillet of
+# The tool in the results: its outline at the start against the V-die of docs/dies.md (apex fillet of
 # -die_r_apex on the flanks x + y = Ro sqrt2, read from the options here), its displacement at every field step
 # the stroke of that step (lambda x U while pressing, U after: the paper's unloading leaves it in place), and the
 # moment on it in the history against the one the written contact forces give about the tool's origin (a

@@ -9,7 +9,7 @@ Hill's solution is exact), k = sy / sqrt(3), inner radius driven outwards
                 (the cylinder has grown; the small-strain value is reported).
 The paper's forward increments (-equilibrium_tol 0), where r1 ends an
 increment on the first yield, and the default equilibrium increments (no r1:
-points yield inside a step), each checked. Checks (1 %, the issue's
+points yield inside a step), each checked. Checks (1 %, the required
 tolerance): the pressure of the increment that r1 ended on the first yield
 (paper's increments only); p(c) for the plastic radius c measured from the
 plastic Gauss-point area, c in [0.55 b, 0.85 b] (where dp/dc is not small);

@@ -45,7 +45,7 @@ from tfcheck import Checks, args, out, run
 
 tf, mpirun, src = args()
 k = Checks("kinematic")
-E, NU, SY0, KL, NL = 75000.0, 0.34, 165.3, 673.5, 0.927  # -material aluminum (METHOD.md Table 1)
+E, NU, SY0, KL, NL = 75000.0, 0.34, 165.3, 673.5, 0.927  # -material aluminum (the paper's Table 1, docs/scenes.md)
 G = E / (2 * (1 + NU))
 LAM = E * NU / ((1 + NU) * (1 - 2 * NU))
 D = np.array([[LAM + 2 * G, LAM, LAM], [LAM, LAM + 2 * G, LAM], [LAM, LAM, LAM + 2 * G]])

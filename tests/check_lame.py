@@ -6,7 +6,7 @@ Reference (Timoshenko & Goodier): for inner radius a, outer b, pressure p,
 Checks, with the B-bar element (the default):
   - on the moderate 8 x 24 mesh, max nodal |u_r error| and max cell |sigma_t
     error| (cell average vs the exact value at the centroid) are below 0.5 %
-    of their maxima (the issue's tolerance);
+    of their maxima (the required tolerance);
   - under refinement h -> h/2 the displacement error falls at order >= 1.8
     (bilinear elements: 2) and the centroid hoop stress at order >= 1.5
     (superconvergent centroids approach 2; 1.8 is measured at 8 -> 16).

@@ -16,7 +16,7 @@ fits in one line.
    by n ln(ep0) / ep0, at most 50 here) or in closed form (Ludwik); data off
    in their 6th digit move K or n by 1e-6 or more, and fail. `--swift RP RM N`
    (the material files' command, printing K to 0.1 MPa) gives K within 0.05
-   MPa. The laws: the library's Swift files (dc04, aa6061_t6), the issue's
+   MPa. The laws: the library's Swift files (dc04, aa6061_t6),
    --swift 145 186 0.3 (a traceback before), the library's brass (Ludwik n =
    1/2), s355 (Ludwik n = 1) and one more of each.
 2. Refusals: swapped strengths, a uniform elongation not positive or given in

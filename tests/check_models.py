@@ -1,4 +1,4 @@
-"""The half model and the lower die (-model, -lower_die, -lower_die_motion; issue 23, items 2, 3 and 7).
+"""The half model and the lower die (-model, -lower_die, -lower_die_motion).
 
 The paper's tube (options/squaring.opts, the fast preset, U = 4.2 mm and the paper's springback):
 

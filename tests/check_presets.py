@@ -1,7 +1,7 @@
 """The numerical presets (options/preset-*.opts) on the default squaring case,
 whole runs (loading + springback), checked against what they promise and
 what holds for any discretization; their accuracy against the converged
-reference is a benchmark (scripts/tradeoff, docs/accuracy.md), not a test.
+reference is a benchmark (scripts/validate, scripts/against_ccx; docs/accuracy.md), not a test.
 
 - default preset on 1 and 2 ranks: load within 3.4e-9, x_max within 2.2e-11
   and C/t within 1e-9 of the largest value (the factorization is redundant,

@@ -1,6 +1,6 @@
-"""A die of one's own from a profile file (-die_profile, src/tool/profile.cpp, issue 23):
+"""A die of one's own from a profile file (-die_profile, src/tool/profile.cpp):
 
-1. The paper's V-die written as a profile (its numbers from METHOD.md's geometry, computed here) presses the
+1. The paper's V-die written as a profile (its numbers from the V-die's geometry of docs/dies.md, computed here) presses the
    tube exactly as the built-in V-die: the same history, bit for bit (both go through one construction).
 2. A flat-bottomed die (a flat face over the tube, a concave fillet, a 45-degree flank) pressed frictionless
    to U = 1 mm: the contact forces the file holds on nodes on the flat face are vertical (within 1e-9 of
@@ -49,7 +49,7 @@ h, cy = RO * s2, RO * s2 - RA * s2
 mine = f"arc 0 {cy!r} {RA!r} 90 45\nline {RA / s2!r} {cy + RA / s2!r} {1.3 * RO!r} {h - 1.3 * RO!r}\n"
 v90 = f"{src}/options/dies/v90_r3.profile"
 shipped = "".join(l for l in open(v90) if not l.startswith("#"))
-k.check(shipped == mine, "options/dies/v90_r3.profile holds the V-die's numbers computed here from METHOD.md")
+k.check(shipped == mine, "options/dies/v90_r3.profile holds the V-die's numbers computed here from its geometry")
 run(tf, mpirun, 1, BASE + ["-output", out("builtin.h5")])
 run(tf, mpirun, 1, BASE + ["-die_profile", v90, "-output", out("v90.h5")])
 a, b = history("builtin.h5"), history("v90.h5")

@@ -1,4 +1,4 @@
-"""The -progress line (issue 11): a long run says where it is without
+"""The -progress line: a long run says where it is without
 -monitor's line per increment. The fast preset's squaring run (about 1.5 s
 on 2 ranks) with a line every 0.05 s must print several lines, once each (rank
 0 only), with the loading's percent and stroke rising and every percent in

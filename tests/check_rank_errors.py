@@ -1,4 +1,4 @@
-"""Errors that one rank sees alone (issue 21 item 4) end the run on every rank
+"""Errors that one rank sees alone end the run on every rank
 with one line, exit code 1 and no hang, on 2 ranks (and 1):
   - a Gmsh mesh whose physical curve holds a segment that is no side of a cell
     (tests/fuzz/regressions/gmsh/boundary_segment_not_a_cell_side.msh: the

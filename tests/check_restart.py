@@ -1,4 +1,4 @@
-"""Checkpoint and restart (issue 12): a run continued from a checkpoint gives
+"""Checkpoint and restart: a run continued from a checkpoint gives
 the history and fields of the run that was never stopped, and computes only
 what came after the checkpoint.
 

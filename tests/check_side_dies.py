@@ -1,4 +1,4 @@
-"""Side dies (-side_die; issue 23, item 2: more tools than the two of a press).
+"""Side dies (-side_die: more tools than the two of a press).
 
 A. Four plates: the ring of options/flattening.opts (Rm/t = 20, elastic-perfectly plastic, frictionless) crushed by
    the top plate and a side plate (`-side_die flat`, the quarter model: four plates around the ring) to U = 3 mm.
@@ -52,8 +52,8 @@ D. Side dies in a second pass (-pass2_side_die): the paper's tube pressed 2 mm b
 E. Force-controlled side dies (-side_force F: each side plate presses with a force rising from 0 to F over the
    press, its travel an unknown of each increment), beside the V-dies (the paper's tube, fast preset, U = 3 mm):
    - with the paper's exact linear steps (-equilibrium_tol 0), F = 20 N/mm: each side plate's force at the end
-     of every loading increment is lambda F within 1e-6 N/mm (issue 23's bound for a pad in equilibrium with its
-     force; measured 2e-11), and the plate rides the tube: the half-width C1 is at the plate, Ro minus its travel,
+     of every loading increment is lambda F within 1e-6 N/mm (the bound for a pad in equilibrium with its force;
+     measured 2e-11), and the plate rides the tube: the half-width C1 is at the plate, Ro minus its travel,
      within 1e-4 mm at every increment (C's bound; measured 4e-15);
    - the energy balance with the plates' work from their reported force and their own travel (`side_stroke`)
      within 5e-3 at every increment (as C; the default equilibrium steps; the plates' work counted with the

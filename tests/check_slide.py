@@ -2,7 +2,7 @@
 pressed on a floor by N = 100 N/mm, then its top pushed sideways.
 References (Coulomb): the tangential force T stays below mu N while the block
 sticks and slides at T = mu N; friction dissipation = mu N x slip.
-  - slide at mu N within 1.2e-3 (the issue asked 1 %; measured -1.2e-5, the
+  - slide at mu N within 1.2e-3 (1 % required; measured -1.2e-5, the
     regularized law's residual, on every OpenBLAS kernel tried: 100 times
     that), at 20 and at 200 increments (the law accumulates slip, so the
     increment size must not matter: equal within 2e-5, measured 1.9e-7);
@@ -17,7 +17,7 @@ sticks and slides at T = mu N; friction dissipation = mu N x slip.
     it is first order: it must fall at least 5-fold from 20 to 200 increments
     (10-fold expected; measured 8.8e-3 -> 8.0e-4);
   - contact: no penetration beyond 1e-6 mm, no tensile contact force;
-  - r6 (slide to stick, METHOD.md sec. 4): the top pushed back (-slide_back)
+  - r6 (slide to stick, docs/theory.md section 5): the top pushed back (-slide_back)
     reverses the slip; with -rmin_dphi 0.5 each increment may lower a node's
     mobilization f_l / (mu f_n) by at most 0.5, so while T is still positive
     it falls by at most 0.5 mu N per increment (2 %: the normal forces shift

@@ -1,4 +1,4 @@
-"""A die's path (-stroke_path; issue 23, item 2: a prescribed path in time, here along the die's motion).
+"""A die's path (-stroke_path: a prescribed path in time, here along the die's motion).
 
 The die goes to each stroke of -stroke_path in turn at the punch speed; the turns are kinks of the load path, so an
 increment ends on each.

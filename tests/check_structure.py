@@ -7,7 +7,13 @@ source tree:
   - no source or header file over 450 lines (one concern per file; the
     project aims at about 400);
   - the code is formatted by .clang-format (clang-format --dry-run --Werror),
-    which also bounds lines at 120 columns.
+    which also bounds lines at 120 columns;
+  - the project stands alone: no file of the project's own folders (src,
+    include, tests, scripts, studies, tools, options, docs, .ci) and no
+    README.md or CMakeLists.txt cites the method specification kept outside
+    the repository (the theory the code cites is in docs/theory.md and the
+    docs beside it), and none names a tracker's "issue N": a doc or comment
+    says what a thing is, not which issue brought it.
 Usage: check_structure.py <unused> <unused> <source dir>
 """
 import os
@@ -67,4 +73,31 @@ p = subprocess.run(["clang-format", "--dry-run", "--Werror", f"--style=file:{src
                    capture_output=True, text=True)
 bad = sorted({line.split(":")[0] for line in p.stderr.splitlines() if "error:" in line})
 k.check(p.returncode == 0, "formatted by .clang-format" + "".join("\n         " + os.path.relpath(b, src) for b in bad))
+
+# Stands alone. The outside specification's file name is spelled in two pieces so that this file does not cite it.
+outside = re.compile(re.escape("METHOD" + ".md"))
+issue = re.compile(r"\bissues? #?[0-9]+", re.I)
+roots = ["src", "include", "tests", "scripts", "studies", "tools", "options", "docs", ".ci"]
+texts = [os.path.join(src, n) for n in ("README.md", "CMakeLists.txt") if os.path.exists(os.path.join(src, n))]
+for top in roots:
+    for root, dirs, names in os.walk(os.path.join(src, top)):
+        dirs[:] = [d for d in dirs if d not in ("__pycache__", "build")]
+        texts += [os.path.join(root, n) for n in names]
+cites, issues = [], []
+for f in texts:
+    try:
+        lines = open(f, encoding="utf-8").read().splitlines()
+    except (UnicodeDecodeError, OSError):
+        continue  # figures, HDF5 references: not text
+    rel = os.path.relpath(f, src)
+    cites += [f"{rel}:{i}" for i, line in enumerate(lines, 1) if outside.search(line)]
+    for i, line in enumerate(lines):
+        # A reference wrapped after "issue" continues on the next line, past its comment marker.
+        nxt = re.sub(r"^\s*(#|//|\*)?\s*", "", lines[i + 1]) if i + 1 < len(lines) else ""
+        m = issue.search(line + " " + nxt)
+        if m and m.start() < len(line):
+            issues.append(f"{rel}:{i + 1}: {m.group(0)}")
+k.check(not cites, f"no file cites the outside specification ({len(texts)} files)"
+        + "".join("\n         " + c for c in cites))
+k.check(not issues, "no file names an issue by number" + "".join("\n         " + c for c in issues))
 k.done()

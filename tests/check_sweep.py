@@ -1,4 +1,4 @@
-"""scripts/sweep (issue 11): a grid of three cases on a coarse mesh, one of
+"""scripts/sweep: a grid of three cases on a coarse mesh, one of
 them with a friction coefficient tubeform refuses. The sweep must run the two
 good cases, report the bad one with tubeform's own error line and go on, exit
 non-zero, and write summary.csv with one row per case whose numbers are those

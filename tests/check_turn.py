@@ -1,4 +1,4 @@
-"""Turning the tube between passes (-pass2_turn; issue 23, item 4).
+"""Turning the tube between passes (-pass2_turn).
 
 The paper's tube (options/squaring.opts, the fast preset): the V-dies press it to U = 3 mm, it springs back (the
 paper's unloading), is turned by a quarter turn and pressed again by 3 mm with the same dies, then springs back.

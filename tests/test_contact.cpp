@@ -14,8 +14,8 @@
 //    be seen: the commit reports the tension the nodes reached before it
 //    released them, 2P in all over five nodes, so the largest is at least
 //    2P/5 and the squaring test's check (tension <= 1e-6 of the load) fails
-//    on it. Before issue 9 the tension column was measured after the
-//    releases and read 0 on such a state;
+//    on it. A tension column measured after the releases
+//    would read 0 on such a state;
 //  - a turning floor (spin 1 rad per unit stroke) cuts a step of 0.1 to its
 //    turn bound turn_max = 1e-2 rad: r = 0.1 exactly, by the tool's r3
 //    (Limiter::Rotation, no node: -1); the press itself sets no limit.

@@ -1,4 +1,4 @@
-// Unit tests of the friction law and its linearization (METHOD.md sec. 3):
+// Unit tests of the friction law and its linearization (docs/theory.md, section 6):
 // the l-row terms of friction::Linearize against finite differences of the
 // friction force f_l = -mu f_n phi(x0 + dx) (plus the curvature terms, the
 // normal force increment being the n-row reaction less kappa f_l dx); the
@@ -147,7 +147,7 @@ int main()
     CHECK_NEAR(4 * std::sqrt(2.0) * d, 2 * M_PI * 10.0, 1e-12);
   }
   // The V-die closed by a parting face y = u_close through a convex edge fillet
-  // (METHOD.md sec. 1). References from the construction: the chain apex arc ->
+  // (docs/dies.md). References from the construction: the chain apex arc ->
   // flank -> edge fillet -> face is continuous with one normal at every joint
   // (C1), a point at distance delta from any piece projects back onto it with
   // gap delta, and first contact on the face and on the fillet is found where

@@ -1,14 +1,14 @@
-// Shape metrics of METHOD.md section 6 on constructed outer surfaces, against
+// Shape metrics of docs/theory.md ("Metrics") on constructed outer surfaces, against
 // their geometric definitions (no mesh, no MPI):
 //  - C after unloading (chord): a straight side gives 0 however it is tilted
 //    or shifted (a rigid motion of the side counts nothing: the defect of the
-//    old measure against the fixed 45-degree flank line, issue 9); a side
+//    old measure against the fixed 45-degree flank line); a side
 //    bowed inwards by a circular sag s gives s, bowed outwards 0, and
 //    rotating the bowed side rigidly keeps s;
 //  - C while loaded (flank line): a straight side on the flank gives 0, a
 //    sag s between the outermost contacts gives s; a side that touches the
 //    flank only near the corner but the apex fillet too spans to the
-//    fillet's end, so its sag is found (it read 0 before: issue 11);
+//    fillet's end, so its sag is found (a flank-only side read 0);
 //  - the corner radius of a circle through the axis node is the circle's.
 // Tolerance 1e-12 mm: exact geometry up to round-off of coordinates ~20 mm.
 #include <cmath>

@@ -11,7 +11,7 @@
 // its elastic fraction from the modes of the last pass's condensation, which
 // three passes settle to 1.7e-9 here (1 and 2 ranks, OpenBLAS Haswell and
 // Prescott); 1e-7 is some 60 times that. When the modes took the assembled
-// condensation (until issue 22's sixth session) the second evaluation
+// condensation (before each cell took its own) the second evaluation
 // differed by 1.1e-3 of the largest force: the check fails on that by four
 // orders of magnitude.
 #include <petscsys.h>

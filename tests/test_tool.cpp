@@ -1,5 +1,5 @@
 // Unit tests of the tools' geometry on concave and convex arcs of both
-// orientations (issue 23, item 7): an upper die (the body below it) and its
+// orientations: an upper die (the body below it) and its
 // images under the eight maps of a square onto itself (TurnMap: the mirror
 // image below the body, MirrorY, is the half model's lower die; the quarter
 // turns are the dies of a pass that turns the tube) and turns by other angles.

@@ -42,7 +42,7 @@ CASES = {
 
 
 def validation_cases():
-    """The tubes of scripts/validate (issue 22's validation set) as cases named val_<tube>: three meshes of
+    """The tubes of scripts/validate (the validation set of docs/accuracy.md) as cases named val_<tube>: three meshes of
     CPE8R, the middle one with 18 elements per bending length sqrt(Ro t) around the quarter (the default
     case's 4 x 90 has 17.5) and at least 90; penalty 1e6 MPa/mm, 1e5 for walls thinner than 1 mm (the
     thin case's stall at 1e6)."""

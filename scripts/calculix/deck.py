@@ -11,7 +11,7 @@ isotropic J2 large-strain plasticity of ccx (*PLASTIC, NLGEOM) with the
 Ludwik flow curve sigma_y = sy + K ep^n tabulated. Step time = stroke (mm)
 while loading, so increments are in mm of stroke.
 
-Die (METHOD.md sec. 1; tubeform src/tool/tool.cpp BuildVDie): flank
+Die (docs/dies.md; tubeform src/tool/tool.cpp BuildVDie): flank
 x + y = Ro sqrt(2) from the apex fillet's end to x = reach Ro; the apex
 fillet, radius r_apex, centre (0, Ro sqrt(2) - r_apex sqrt(2)), from 45 to
 90 degrees (continued a little past x = 0 so the tube's node on the

@@ -127,7 +127,7 @@ void StrainMatrix(const QuadGeometry &geo, int g, Formulation f, double b[kVoigt
 
 Mat4 StressCorrection(const Voigt &s)
 {
-  // delta d : (sigma d + d sigma) in Voigt form (METHOD.md sec. 2), zz row included.
+  // delta d : (sigma d + d sigma) in Voigt form (docs/theory.md (T4)), zz row included.
   Mat4 q{};
   q[0][0] = 2 * s[0];
   q[0][3] = s[3];

@@ -1,6 +1,6 @@
 // A strip of thickness t (x) and length L (y) with a sine bow of amplitude e0,
 // pinned at the centre nodes of both ends and shortened by -stroke: buckling
-// at the Euler load (METHOD.md section 7).
+// at the Euler load (docs/verification.md, "Scenes against closed forms").
 // History: stroke = end shortening (mm), load = axial force (N/mm).
 #include <cmath>
 

@@ -1,5 +1,5 @@
 // Thick cylinder under internal pressure (quarter, plane strain): Lame's and
-// Hill's solutions (METHOD.md section 7).
+// Hill's solutions (docs/verification.md, "Scenes against closed forms").
 // -pressure_control load: the pressure is ramped to -pressure_p; history
 //   stroke = mean radial displacement of the inner surface (mm), load = pressure (MPa).
 // -pressure_control displacement: the inner radial displacement is ramped to

@@ -1,6 +1,6 @@
 // A block stretched in x (uniaxial strain -rotation_strain, lambda in [0, 0.1])
 // then turned rigidly about the origin by -rotation_angle (lambda in [0.1, 1]):
-// objectivity (METHOD.md section 7).
+// objectivity (docs/verification.md, "Scenes against closed forms").
 // History: stroke = rotation angle so far (degrees), load = mean von Mises stress.
 #include <cmath>
 

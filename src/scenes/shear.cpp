@@ -1,4 +1,4 @@
-// Simple shear x = X + gamma Y to -shear_gamma (METHOD.md section 7).
+// Simple shear x = X + gamma Y to -shear_gamma (docs/verification.md, "Scenes against closed forms").
 // History: stroke = gamma, load = mean sigma_xy (MPa). Hypoelastic Jaumann
 // reference: sigma_xy = G sin(gamma), sigma_xx = -sigma_yy = G (1 - cos(gamma)).
 #include "tubeform/scenes/block.hpp"

@@ -1,4 +1,4 @@
-// A block on a rigid floor (friction check, METHOD.md section 7): lambda in
+// A block on a rigid floor (friction check; docs/verification.md, "Contact and friction"): lambda in
 // [0, 1] presses its top edge down with a total force -slide_n (top held in
 // x); lambda in [1, 2] pushes the top edge sideways by -slide_push; with
 // -slide_back, lambda in [2, 3] pushes it back by that much (the slip

@@ -103,7 +103,7 @@ public:
   PetscErrorCode AddFreeForce(Vec f);
   // Owned nodes only: after assembly, row l of the node's frame gets
   // coeff x (row n, with its load): the unsymmetric friction correction row
-  // (METHOD.md sec. 3). Rows l and n of a node share their pattern.
+  // (docs/theory.md, section 6). Rows l and n of a node share their pattern.
   void AddRowCoupling(PetscInt node, double coeff) { couplings_.push_back({node, 0, coeff}); }
   void Prescribe(PetscInt node, int comp, double value, double unit = 0.0)
   {

@@ -1,7 +1,7 @@
 // The deformable body: its current coordinates and displacements, the state
 // of every Gauss point, the material law and the element formulation, and
-// the loops over the cells that the incremental method needs (METHOD.md
-// sections 2 and 4): the tangent K into the global system, the scan of a
+// the loops over the cells that the incremental method needs (docs/theory.md,
+// sections 1-5): the tangent K into the global system, the scan of a
 // trial increment for r1-r3 and loading switches, the commit of an
 // increment, the internal force and the stored elastic energy.
 #pragma once

@@ -1,5 +1,5 @@
-// Node-to-rigid-surface contact with the regularized Coulomb law (METHOD.md
-// sections 3 and 4: r4, r5, r6). Each contact node carries the tool's local
+// Node-to-rigid-surface contact with the regularized Coulomb law (docs/theory.md
+// section 6; r4, r5, r6 of section 5). Each contact node carries the tool's local
 // frame (l, n); its normal displacement is prescribed to follow the tool,
 // its normal force is the reaction, and friction enters as an unsymmetric
 // correction of its l row. State lives on every rank for its local nodes

@@ -1,4 +1,4 @@
-// The regularized Coulomb law of METHOD.md section 3 (paper eqs. 9-14), as a
+// The regularized Coulomb law of docs/theory.md section 6 (paper eqs. 9-14), as a
 // pure kernel. The friction force on the body, along the contact frame's l, is
 //   f_l = -mu f_n phi(x),  phi(x) = tanh(x / (VCRI / 3)),
 // where x is the node's slip relative to the tool, accumulated increment by
@@ -65,7 +65,7 @@ inline double FractionReaching(double x0, double dx, double vcri, double target)
   return (vcri / 3.0 * std::atanh(target) - Cap(x0, vcri)) / dx;
 }
 
-// r6 of METHOD.md sec. 4, slide to stick: the fraction r of the slip increment
+// r6 of docs/theory.md section 5, slide to stick: the fraction r of the slip increment
 // dx (from state x0) at which the mobilization phi = tanh(3x/VCRI) has fallen
 // by dphi_max from phi(x0), towards stick or through it into a reversal;
 // exact on the law (x0 + r dx lands where phi = phi(x0) - sign(phi(x0)) dphi_max).

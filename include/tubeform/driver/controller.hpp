@@ -1,4 +1,4 @@
-// The increment controller of METHOD.md section 4: solves a trial step,
+// The increment controller of docs/theory.md, sections 5 and 5a: solves a trial step,
 // iterates friction and loading switches inside it, halves it when the
 // iterations do not settle, and cuts it by r_min (paper eq. 16) — by scaling
 // the linear solution, or, where the step is not linear in r (friction,

@@ -1,4 +1,4 @@
-// A run (METHOD.md section 4): the distributed mesh, the body, the global
+// A run (docs/theory.md, section 5): the distributed mesh, the body, the global
 // system, the contact set and inertia when the scene needs them, and the
 // incremental loop that drives them along the scene's load path.
 #pragma once

@@ -1,5 +1,5 @@
-// The element formulation of a body behind one interface (METHOD.md section 2,
-// "Element"): q4, bbar or qm6. QM6's condensation of each cell's internal
+// The element formulation of a body behind one interface (docs/theory.md,
+// section 3): q4, bbar or qm6. QM6's condensation of each cell's internal
 // modes, cond = -Kii^-1 Kic, is computed by the stiffness and used by the
 // kinematics and internal force of the same increment, so this object owns it.
 // Pure (no PETSc).

@@ -17,7 +17,7 @@
 // locking but its pressure varies inside the cell, which stiffens it in
 // near-isochoric plastic flow on coarse meshes; measured on the squaring,
 // qm6bar is as close to the converged end-of-stroke load as bbar or closer
-// (docs/accuracy.md, "Converging to CalculiX").
+// (docs/notes/converging-to-calculix.md).
 #pragma once
 
 #include <array>

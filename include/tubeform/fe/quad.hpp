@@ -1,6 +1,6 @@
 // Pure kernels of the 4-node quadrilateral (no PETSc): shape functions,
 // gradients in the current configuration, the (B-bar) strain-displacement
-// matrix and the updated-Lagrangian tangent of METHOD.md section 2.
+// matrix and the updated-Lagrangian tangent of docs/theory.md, section 4.
 //
 // Voigt order {xx, yy, zz, xy}; strains carry gamma_xy. Element dofs are
 // ordered (u_x, u_y) node by node, nodes counter-clockwise.
@@ -52,7 +52,7 @@ bool ComputeGeometry(const double xe[2 * kNodes], QuadGeometry &geo);
 // Strain-displacement matrix at Gauss point g (4 Voigt rows x 8 dofs).
 void StrainMatrix(const QuadGeometry &geo, int g, Formulation f, double b[kVoigt][kDofs]);
 
-// Stress-correction matrix Q of METHOD.md sec. 2 (from -2 sigma.D : dD), 4x4 form.
+// Stress-correction matrix Q of docs/theory.md (T4) (from -2 sigma.D : dD), 4x4 form.
 Mat4 StressCorrection(const Voigt &sigma);
 
 // The material part of the updated-Lagrangian tangent at a Gauss point:

@@ -1,4 +1,4 @@
-// The per-increment history of a run (METHOD.md section 6): kept on every
+// The per-increment history of a run (docs/output.md, "History columns"): kept on every
 // rank (values are global sums/maxima), written to /history and to CSV.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Everything a run is told on the command line / options file, read once and
-// validated up front (METHOD.md section 9 names).
+// validated up front (the names of docs/options-reference.md, which users and scripts rely on).
 #pragma once
 
 #include <petscsys.h>
@@ -40,7 +40,7 @@ struct Options {
   PetscInt element_bar_nt = 5; // -element auto: qm6bar from this many cells through the wall on
   // Material
   MaterialParams material;
-  // Incremental driver (METHOD.md sec. 4)
+  // Incremental driver (docs/theory.md, section 5)
   PetscInt increments = 10;                              // trial increments over the load path
   PetscInt unload_increments = 0;                        // > 0: trial increments per unit of the path past lambda 1
   double rmin_deps = BodyParams{}.rmin_deps;             // r2: largest principal strain increment
@@ -65,7 +65,7 @@ struct Options {
   Dynamics dynamics = Dynamics::Quasistatic;             // implicit/auto: lumped mass, backward Euler
   double dynamics_time = 1.0;                            // s for lambda 0 -> 1 (scenes without tools)
   double punch_speed = 1.0;                              // mm/s (tool scenes: duration = stroke / speed)
-  ObjectiveScheme kinematics = ObjectiveScheme::Forward; // METHOD.md sec. 2 as written
+  ObjectiveScheme kinematics = ObjectiveScheme::Forward; // docs/theory.md, section 2
   // Scene parameters
   double pressure_p = 50.0;
   std::string pressure_control = "load";
@@ -73,7 +73,7 @@ struct Options {
   double stroke = 4.2;             // final tool stroke / prescribed end displacement (mm)
   double stroke_corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
   std::vector<double> stroke_path; // tool scenes: the die's strokes in turn (empty: 0 to -stroke)
-  // Tools, contact, friction (METHOD.md sec. 1, 3)
+  // Tools, contact, friction (docs/dies.md; docs/theory.md, section 6)
   double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
   std::string die_profile;          // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
   double die_angle = 90;            // degrees between the V-die's flanks

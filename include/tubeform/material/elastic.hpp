@@ -22,7 +22,7 @@ struct PointState {
   Voigt sigma{};        // Cauchy stress {xx, yy, zz, xy}
   double ep = 0;        // equivalent plastic strain (accumulated: p of kinematic hardening)
   double hslope = 0;    // hardening modulus H' of the last plastic update (0: not yet plastic)
-  bool plastic = false; // alpha of METHOD.md sec. 2: on the yield surface and loading
+  bool plastic = false; // alpha of docs/theory.md (1): on the yield surface and loading
   // Deviatoric backstresses of kinematic hardening (zero without it), turned
   // with the stress by the spin; the yield surface is centred on their sum.
   std::array<Voigt, kMaxBackstresses> back{};
@@ -37,7 +37,7 @@ struct UpdateInfo {
   double drift = 0; // sbar / sigma_y - 1 after the tangent update (before any correction)
 };
 
-// Material constants: the paper's aluminum (METHOD.md Table 1) until a
+// Material constants: the paper's aluminum (its Table 1, docs/scenes.md) until a
 // material file (options/materials/, io/material_library.hpp) or options set them.
 struct MaterialParams {
   std::string name = "aluminum";
@@ -72,7 +72,7 @@ public:
   virtual UpdateInfo Update(PointState &s, const Voigt &deps) const = 0;
   // Elastic strain energy density of a stress state.
   virtual double ElasticEnergy(const Voigt &sigma) const = 0;
-  // r1 of METHOD.md sec. 4: the fraction of the trial increment (deps, omega)
+  // r1 of docs/theory.md section 5: the fraction of the trial increment (deps, omega)
   // at which an elastic point reaches the yield surface; infinity if never.
   virtual double YieldOnset(const PointState &, const Voigt &, double) const { return kNever; }
   // alpha for the coming increment given the trial strain increment: a plastic
@@ -110,7 +110,7 @@ private:
 // Isotropic elastic matrix in Voigt form {xx, yy, zz, gamma_xy}.
 Mat4 IsotropicElasticMatrix(double e, double nu);
 
-// Objective update of METHOD.md sec. 2: the Jaumann rate of Kirchhoff stress
+// Objective update of docs/theory.md (T3): the Jaumann rate of Kirchhoff stress
 // is dtau (from the law); the Cauchy stress then changes by
 //   dsigma = dtau - sigma tr(deps) + W sigma - sigma W,  W = [[0, w], [-w, 0]].
 void JaumannUpdate(const Voigt &dtau, double trace_deps, double omega, Voigt &sigma);

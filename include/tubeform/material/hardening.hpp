@@ -1,5 +1,5 @@
 // Isotropic hardening laws: the flow stress sigma_y as a function of the
-// equivalent plastic strain ep (METHOD.md section 1, Materials).
+// equivalent plastic strain ep (docs/theory.md, section 1).
 #pragma once
 
 #include <array>

@@ -1,5 +1,5 @@
 // J2 (Prandtl-Reuss) elasto-plasticity in plane strain with sigma_zz tracked,
-// isotropic hardening, rate form (METHOD.md section 2, paper eq. 1):
+// isotropic hardening, rate form (docs/theory.md, section 1; paper eq. 1):
 //   C_ep = C_e - alpha 9 G^2 / (sbar^2 (3G + H')) s (x) s,
 //   dep  = 3G (s : de) / (sbar (3G + H')).
 #pragma once

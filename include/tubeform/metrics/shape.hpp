@@ -1,4 +1,4 @@
-// Shape metrics of a pressed tube (METHOD.md section 6): the collapse gap C
+// Shape metrics of a pressed tube (docs/theory.md, "Metrics"): the collapse gap C
 // of a side against a straight line, the outer corner radii. Pure geometry
 // on the outer-surface points (no PETSc), so unit tests need no mesh.
 #pragma once
@@ -33,7 +33,7 @@ struct GapRange {
 };
 GapRange GapsTo(const std::vector<SurfacePoint> &points, const Line &line, double smin, double smax);
 
-// The side of the tube along a die's flank (METHOD.md sec. 6): between the
+// The side of the tube along a die's flank (docs/theory.md, "Metrics"): between the
 // outermost points touching the flank segment, and, when a point touches the
 // apex segment, reaching the flank's apex end at s_apex_end (the side of a
 // tube that lost its flank contacts near the apex has folded in between the
@@ -48,7 +48,7 @@ struct SideSpan {
 SideSpan SideOnFlank(const std::vector<SurfacePoint> &points, const Line &flank, int flank_segment, int apex_segment,
                      double s_apex_end);
 
-// C of a side without a tool (METHOD.md sec. 6, after unloading): the largest
+// C of a side without a tool (after unloading; docs/theory.md, "Metrics"): the largest
 // gap between the chord through points[first] and points[last] and the points
 // between them, measured towards the origin (the tube's centre): the side
 // bowing inwards. 0 for a straight or outward-bowing side, whatever its tilt

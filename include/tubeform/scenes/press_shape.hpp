@@ -1,4 +1,4 @@
-// The squaring and flattening scenes' shape measures (METHOD.md sec. 6): C/t
+// The squaring and flattening scenes' shape measures (docs/theory.md, "Metrics"): C/t
 // against the upper die's flank and the corner radii on the axes, in the frame
 // of the press in place (a pass that turned the tube: its own).
 #pragma once

@@ -1,4 +1,4 @@
-// What a scene decides (METHOD.md section 1): its mesh, its load path, its
+// What a scene decides (docs/scenes.md): its mesh, its load path, its
 // tools, its supports and loads per increment, and what `stroke` and `load`
 // mean in its history. The driver owns everything else: the body, the
 // global system, the increments, and the contact set the scene asks for.

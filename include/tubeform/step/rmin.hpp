@@ -1,4 +1,4 @@
-// The r factors of the r_min controller (METHOD.md section 4; Yamada et al.
+// The r factors of the r_min controller (docs/theory.md section 5; Yamada et al.
 // 1968; paper eq. 16): every increment is a linear solution for a trial step,
 // scaled by r_min = min(1, r1, ..., r6) so that nothing that would make it
 // non-linear happens inside it. The Gauss-point factors (r1-r3) are computed

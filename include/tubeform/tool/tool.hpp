@@ -1,5 +1,5 @@
 // Rigid tools: chains of straight segments and circular arcs moving rigidly
-// (METHOD.md section 1). Pure geometry, no PETSc.
+// (docs/dies.md). Pure geometry, no PETSc.
 #pragma once
 
 #include <array>
@@ -68,7 +68,7 @@ public:
   // Closest point of the surface at the current stroke. Points whose
   // projection falls outside every segment get segment -1.
   Projection Project(const Vec2 &x) const;
-  // r4 of METHOD.md sec. 4: the smallest r in (0, 1] at which the point
+  // r4 of docs/theory.md section 5: the smallest r in (0, 1] at which the point
   // x + r dx meets the surface moved by r dU (lines: linear, arcs: quadratic,
   // exact); 1e300 if none. A turning tool's turn is taken linear in r, as the
   // body's rotations are (its step's turn is bounded by r3's rmin_domega).
@@ -99,7 +99,7 @@ struct VAngle {
   double half, qs, qc;
 };
 
-// The upper V-die of the quarter model (METHOD.md sec. 1), of `angle` degrees
+// The upper V-die of the quarter model (docs/dies.md), of `angle` degrees
 // between its flanks (the paper's 90 by default): the flanks touch the tube's
 // outer circle, meeting on the y axis at (0, h), h = ro / sin(angle / 2),
 // rounded there by an arc of radius r_apex centred at (0, h - r_apex / sin);
