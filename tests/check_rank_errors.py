@@ -79,7 +79,9 @@ for mode, code, line, aborts in [("every", 1, "tubeform: error: -test_value 3: m
     took = time.time() - t0
     lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
     aborted = "MPI_ABORT" in p.stdout + p.stderr
-    ok = (not p.timed_out and p.returncode == code and aborted == aborts and
+    # Exit code 2 comes only from EndJob's MPI_Abort (it returns 0 or 1 otherwise): it shows the abort.
+    # Open MPI's own "MPI_ABORT was invoked" notice is not required: mpirun may end before it forwards it.
+    ok = (not p.timed_out and p.returncode == code and (aborts or not aborted) and
           (lines == [] if line is None else len(lines) == 1 and lines[0].startswith(line)))
     if aborts:
         ok = ok and took >= AGREE  # it waited for the others before it gave up
