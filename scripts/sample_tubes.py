@@ -84,7 +84,7 @@ def parse(log):
         "factorizations": num(r"increments, (\d+) factorizations"),
         "load": num(r"load at the end of loading \(U = [^)]*\) (\S+) N/mm"),
         "ct": num(r"tubeform: loaded: C/t (\S+),"), "ct_back": num(r"tubeform: after springback \([^)]*\): C/t (\S+),"),
-        "est_load": num(r"estimated error.*?: load (\S+) %"), "est_ct": num(r"estimated error.*C/t (\S+) \(targets"),
+        "est_load": num(r"estimated error.*?: load (\S+) %"), "est_ct": num(r"estimated error.*?, C/t (\S+)"),
         "warns": "yes" if "estimated error passes" in log else "no",
         "energy": num(r"energy balance within (\S+) %"), "internal": num(r"internal work within (\S+) %"),
         "past": num(r"compromises: (\d+) steps past"), "unsettled": num(r"(\d+) unsettled"),

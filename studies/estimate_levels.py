@@ -10,8 +10,12 @@ changes. Runs are cached under results/levels/<tube>/ (delete a file to run it a
 
     /usr/bin/python3 studies/estimate_levels.py run  --tubes al_11.7_mu0.05,... [--plan grid|estimate|reference] [-j 2]
     /usr/bin/python3 studies/estimate_levels.py show --tubes ...            # values at the reported strokes
+    /usr/bin/python3 studies/estimate_levels.py eval --tubes ...            # candidates' effectivity
+    /usr/bin/python3 studies/estimate_levels.py shipped --tubes ...         # the runs' own estimate (plan preset)
+    /usr/bin/python3 studies/estimate_levels.py demand --tubes ... [--target 0.005]   # accuracy on demand
 
-Plans: `estimate` runs what the estimate's candidates read (the preset levels (2, 12, 1) and (4, 24, 1) with
+Plans: `preset` runs the tube with options/preset-fast.opts and preset-default.opts as a user would, its estimate
+on (what `shipped` judges); `estimate` runs what the estimate's candidates read (the preset levels (2, 12, 1) and (4, 24, 1) with
 their step and mesh companions); `reference` the tube's converged answer (the step ladder s 1, 2, 4 on the mesh
 (2 nt, 48) and the mesh (3 nt, 68) at s 1, nt the default preset's); `grid` nt x D at s 1.
 """
@@ -117,6 +121,31 @@ def preset_nt(name, strain, least):
     return max(least, math.ceil(t / (ro * strain) - 1e-9))
 
 
+PRESETS = {"fast": (0.05, 0.05), "default": (0.015, 0.03)}  # their targets (load relative, C/t), as the files set
+
+
+def run_preset(name, preset):
+    """The tube's run with a preset, its error estimate on (cached): its meta and file."""
+    folder = os.path.join(OUT, name)
+    os.makedirs(folder, exist_ok=True)
+    h5 = os.path.join(folder, f"preset_{preset}.h5")
+    meta = h5[:-3] + ".json"
+    if not os.path.exists(meta):
+        opts, _, _, _ = tube(name)
+        try:
+            wall, incs, facts, out = tfruns.run(opts[1], opts[2:] + ["-options_file", f"options/preset-{preset}.opts"],
+                                                h5)
+            status = "done"
+            said = [line for line in out.splitlines() if "companion runs" in line]
+        except tfruns.RunFailed as e:
+            wall, incs, facts, status, said = float("nan"), 0, 0, "failed: " + str(e).splitlines()[-1][:300], []
+        with open(meta, "w") as f:
+            json.dump({"wall": wall, "increments": incs, "factorizations": facts, "status": status,
+                       "companions": said}, f)
+    with open(meta) as f:
+        return json.load(f), h5
+
+
 def plan(name, which):
     """The runs (nt, D, s, element) of a plan for a tube."""
     fast_nt, default_nt = preset_nt(name, 0.044, 2), preset_nt(name, 0.022, 4)
@@ -129,6 +158,8 @@ def plan(name, which):
             el = "qm6bar" if nt >= 5 else "qm6"
             runs += [(nt, d, 1, el), (nt, d, 0.5, el), (max(2, nt // 2), d / 2, 1, el), (max(2, nt // 2), d / 2, 0.5, el)]
         return runs
+    if which == "preset":
+        return [("preset", p) for p in PRESETS]
     if which == "reference":
         nt = max(4, default_nt)
         return [(2 * nt, 48, 1, element), (2 * nt, 48, 2, element), (2 * nt, 48, 4, element),
@@ -236,9 +267,101 @@ def evaluate(tubes):
     return cells
 
 
+def shipped(tubes):
+    """The runs' own estimate (plan preset) against the reference, cell by cell (the cells of `evaluate`), and
+    run by run: a false alarm warns (its estimate passes the preset's target) where the true error is within half
+    the target, a missed alarm does not warn where the true error passes it."""
+    cells, alarms, rows = [], {"false": [], "missed": [], "runs": 0}, []
+    for t in tubes:
+        ref = reference(t)
+        if ref is None:
+            print(f"{t}: no reference yet")
+            continue
+        n = len(strokes(t))
+        for preset, (tp, tc) in PRESETS.items():
+            m, h5 = run_preset(t, preset)
+            if m["status"] != "done":
+                print(f"{t} {preset}: {m['status']}")
+                continue
+            P, C, S, _ = values(h5, strokes(t), raw=True)
+            with h5py.File(h5, "r") as h:
+                a = dict(h["/history"].attrs)
+            us = [f"{u:g}" for u in strokes(t)[:-1]]
+            est = ([a[f"error_load_at_{u}"] for u in us] + [a["error_loaded_load"]] +
+                   [a[f"error_c_over_t_at_{u}"] for u in us] + [a["error_loaded_c_over_t"], a["error_unloaded_c_over_t"]])
+            scale = np.array([abs(v) for v in ref["value"][:n]] + [1.0] * (n + 1))
+            err, unc = (np.array(P + C + [S]) - ref["value"]) / scale, ref["unc"] / scale
+            for k in range(2 * n + 1):
+                if n <= k < 2 * n and strokes(t)[k - n] < 2 - 1e-9:
+                    continue  # (C/t below U = 2 mm, as in evaluate)
+                cells.append((t, preset, "load" if k < n else "C/t", k, err[k], unc[k], est[k]))
+            worst_p, worst_c = np.abs(err[:n]).max(), np.abs(err[n:]).max()
+            warns = a["error_load"] > tp or a["error_c_over_t"] > tc
+            alarms["runs"] += 1
+            if warns and worst_p < tp / 2 and worst_c < tc / 2:
+                alarms["false"].append(f"{t} {preset}")
+            if not warns and (worst_p > tp or worst_c > tc):
+                alarms["missed"].append(f"{t} {preset}")
+            rows.append(f"| {t} | {preset} | {100 * worst_p:.2f} % | {100 * a['error_load']:.2f} % | {worst_c:.4f} | "
+                        f"{a['error_c_over_t']:.4f} | {'warns' if warns else ''} |")
+    if not cells:
+        return
+    if os.environ.get("CELLS"):
+        for x in cells:
+            print(f"  {x[0]:18s} {x[1]:8s} {x[2]:5s} {x[3]} error {x[4]:+.5f} unc {x[5]:.5f} estimate {x[6]:.5f}"
+                  f"  {x[6] / max(abs(x[4]), 1e-12):6.2f}")
+    print("| tube | preset | load: largest error | estimate | C/t: largest error | estimate | |")
+    print("|---|---|---|---|---|---|---|")
+    print("\n".join(rows) + "\n")
+    e = np.array([abs(x[4]) for x in cells]); u = np.array([x[5] for x in cells]); s = np.array([x[6] for x in cells])
+    bounded, eff = s >= e - u, s / np.maximum(e, 1e-12)
+    print(f"shipped: cells {len(cells)}  bounded {bounded.mean():5.1%}  median effectivity {np.median(eff):.2f}  "
+          f"within 3x {np.mean(bounded & (eff <= 3)):5.1%};  runs {alarms['runs']}, false alarms "
+          f"{len(alarms['false'])} {alarms['false']}, missed alarms {len(alarms['missed'])} {alarms['missed']}")
+
+
+def demand(tubes, target):
+    """Accuracy on demand: the tube with the default preset and -target_load `target` (cached as
+    demand_<target>.h5): its levels, wall time, and its largest true load error against the reference."""
+    print(f"| tube | -target_load | levels | wall (s) | final mesh | largest load error | its estimate | C/t error |")
+    print("|---|---|---|---|---|---|---|---|")
+    for t in tubes:
+        ref = reference(t)
+        folder = os.path.join(OUT, t)
+        os.makedirs(folder, exist_ok=True)
+        h5 = os.path.join(folder, f"demand_{target:g}.h5")
+        meta = h5[:-3] + ".json"
+        if not os.path.exists(meta):
+            opts, _, _, _ = tube(t)
+            try:
+                wall, _, _, out = tfruns.run(opts[1], opts[2:] + ["-options_file", "options/preset-default.opts",
+                                                                  "-target_load", str(target)], h5)
+                m = {"wall": wall, "status": "done", "lines": [l for l in out.splitlines() if "level" in l or
+                                                              "estimated error" in l or "mesh " in l[:16]]}
+            except tfruns.RunFailed as e:
+                m = {"wall": float("nan"), "status": "failed: " + str(e).splitlines()[-1][:300], "lines": []}
+            with open(meta, "w") as f:
+                json.dump(m, f)
+        m = json.load(open(meta))
+        if m["status"] != "done" or ref is None:
+            print(f"| {t} | {target:g} | {m['status']} | | | | | |")
+            continue
+        n = len(strokes(t))
+        P, C, S, _ = values(h5, strokes(t), raw=True)
+        with h5py.File(h5, "r") as h:
+            a = dict(h["/history"].attrs)
+        err = (np.array(P + C + [S]) - ref["value"])
+        ep = np.abs(err[:n] / ref["value"][:n]).max()
+        meshes = [l.split("(")[1].split(")")[0] for l in m["lines"] if l.startswith("tubeform: mesh ")]
+        mesh = meshes[-1] if meshes else "?"
+        print(f"| {t} | {target:g} | {int(a['accuracy_level'])} | {m['wall']:.0f} | {mesh} | {100 * ep:.2f} % | "
+              f"{100 * a['error_load']:.2f} % | {np.abs(err[n:]).max():.4f} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=("run", "show", "eval"))
+    ap.add_argument("what", choices=("run", "show", "eval", "shipped", "demand"))
+    ap.add_argument("--target", type=float, default=0.005, help="demand: the -target_load")
     ap.add_argument("--tubes", required=True)
     ap.add_argument("--plan", default="estimate,reference")
     ap.add_argument("-j", type=int, default=1)
@@ -247,14 +370,22 @@ def main():
     if a.what == "eval":
         evaluate(tubes)
         return
+    if a.what == "shipped":
+        shipped(tubes)
+        return
+    if a.what == "demand":
+        demand(tubes, a.target)
+        return
     jobs = [(t, *r) for t in tubes for p in a.plan.split(",") for r in plan(t, p)]
     if a.what == "run":
+        one = lambda j: run_preset(j[0], j[2]) if j[1] == "preset" else run(*j)  # noqa: E731
         with concurrent.futures.ThreadPoolExecutor(a.j) as ex:
-            for (t, *r), (m, _) in zip(jobs, ex.map(lambda j: run(*j), jobs)):
-                print(f"{t:22s} {label(*r):24s} {m['status']:8s} {m['wall']:7.1f} s {m['increments']:6d} incr "
+            for (t, *r), (m, _) in zip(jobs, ex.map(one, jobs)):
+                tag = f"preset_{r[1]}" if r[0] == "preset" else label(*r)
+                print(f"{t:22s} {tag:24s} {m['status']:8s} {m['wall']:7.1f} s {m['increments']:6d} incr "
                       f"{m['factorizations']:7d} fact", flush=True)
         return
-    for t, *r in jobs:
+    for t, *r in [j for j in jobs if j[1] != "preset"]:
         m, h5 = run(t, *r) if os.path.exists(os.path.join(OUT, t, label(*r) + ".json")) else ({"status": "-"}, None)
         if m["status"] != "done":
             print(f"{t:22s} {label(*r):24s} {m['status']}")

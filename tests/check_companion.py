@@ -90,12 +90,25 @@ for np_ in (1, 2):
         attempt(np_, "alone")
     hist, attrs = attempt(np_, "rows")
     if hist and failed[0]:
-        same = all(np.array_equal(hist[c], failed[0][c], equal_nan=True) for c in hist) and hist.keys() == failed[0].keys()
-        others = {a: v for a, v in attrs.items() if not a.startswith("error_")}
+        columns = {c for c in hist if c.startswith("error_")}
+        same = all(np.array_equal(hist[c], failed[0][c], equal_nan=True) for c in hist if c not in columns) and \
+            hist.keys() - columns == failed[0].keys()
+        by_estimate = lambda a: a.startswith("error_") or a == "target_met"  # noqa: E731 (what the estimate adds)
+        others = {a: v for a, v in attrs.items() if not by_estimate(a)}
         same_attrs = others.keys() == failed[1].keys() and all(
             np.array_equal(others[a], failed[1][a]) for a in others if a != "stop_reason")
-        added = sorted(a for a in attrs if a.startswith("error_"))
-        k.check(same and same_attrs and added,
-                f"np={np_}: the estimate added {len(added)} attributes ({', '.join(added[:3])}, ...) and changed "
-                f"nothing else ({len(hist)} history columns, {len(others)} other attributes as without it)")
+        added = sorted(a for a in attrs if by_estimate(a))
+        k.check(same and same_attrs and added and columns == {"error_load", "error_c_over_t"},
+                f"np={np_}: the estimate added {len(added)} attributes ({', '.join(added[:3])}, ...) and the columns "
+                f"{sorted(columns)}, and changed nothing else ({len(hist) - len(columns)} history columns, "
+                f"{len(others)} other attributes as without it)")
+        # Row by row: the steps' companion 1 % above the mesh's, which is the run: every loading row's estimate
+        # is 1 % of its load (kStepShare 1; the first row, unloaded, 0), a release's rows none.
+        if "error_load" in hist:
+            stage = hist["stage"] % 2 == 0
+            load = stage & (hist["load"] != 0)
+            e = hist["error_load"]
+            k.check(np.allclose(e[load], 0.01, rtol=1e-9) and np.isnan(e[~stage]).all() and (~stage).any(),
+                    f"np={np_}: error_load is 1 % on each of {load.sum()} loading rows, NaN on {(~stage).sum()} "
+                    f"release rows (range {np.nanmin(e):.6g}-{np.nanmax(e):.6g})")
 k.done()

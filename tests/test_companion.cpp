@@ -7,7 +7,7 @@
 //   lib     every rank raises PETSC_ERR_LIB (a failed HDF5 or MUMPS call)
 //   alone   rank 1 alone raises PETSC_ERR_LIB while rank 0 goes on into a collective call it will never join
 //   signal  every rank returns PETSC_ERR_SIG (a stop signal during the companion)
-//   rows    the companion gives the run's own history with every load 1 % higher: an estimate
+//   rows    the companions give the run's own history, the steps' with every load 1 % higher: an estimate
 //   fill    as rows, after filling the file system of -output (rank 0: a file `filler` beside it) to 100 kB free
 // The job ends as tubeform's main ends it (core/job_end.hpp).
 #include <petscsys.h>
@@ -23,7 +23,7 @@
 #include "tubeform/scenes/registry.hpp"
 
 static PetscErrorCode Companion(const std::string &mode, const std::string &output, const tf::Problem &run,
-                                std::vector<tf::HistoryRow> &rows)
+                                tf::Companions &out)
 {
   PetscMPIInt rank;
   PetscFunctionBeginUser;
@@ -43,8 +43,8 @@ static PetscErrorCode Companion(const std::string &mode, const std::string &outp
     while (std::filesystem::space(dir, ec).available > 100000 && filler.write(block.data(), (long)block.size()))
       filler.flush();
   }
-  rows = run.history().rows();
-  for (auto &r : rows) r.load *= 1.01;
+  out.mesh = out.steps = run.history().rows();
+  for (auto &r : out.steps) r.load *= 1.01;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -55,7 +55,8 @@ static PetscErrorCode Run(const std::string &mode)
   PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneNames(), opt));
   tf::Problem problem;
   PetscCall(problem.Setup(PETSC_COMM_WORLD, opt));
-  problem.SetCompanion([&](std::vector<tf::HistoryRow> &rows) { return Companion(mode, opt.output, problem, rows); });
+  problem.SetCompanion(
+    [&](const tf::Options &, tf::Companions &out) { return Companion(mode, opt.output, problem, out); });
   PetscCall(problem.Run());
   PetscFunctionReturn(PETSC_SUCCESS);
 }

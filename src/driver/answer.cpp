@@ -78,28 +78,44 @@ PassAnswer SummarizePass(const std::vector<HistoryRow> &rows, bool tool, int p)
   return a;
 }
 
-// The pass's estimate from the companion's same pass (none when the companion did not reach it).
-void EstimatePass(PassAnswer &a, const std::vector<HistoryRow> &companion, bool tool, int p)
+// Strokes this close (mm) are one: the companions end where the run ends, up to round-off.
+constexpr double kStrokeMatch = 1e-9;
+
+// The estimate of a value from the run's and the companions' (kStepShare; `share` the mesh's), its parts apart;
+// relative to `scale`.
+ErrorParts Estimate(double share, double run, double mesh, double steps, double scale = 1)
 {
-  const auto coarse = Stage(companion, 2 * p);
-  if (coarse.empty() || a.strokes.empty()) return;
+  return {share * std::abs(mesh - run) / scale, kStepShare * std::abs(steps - mesh) / scale};
+}
+
+// The pass's estimate from the companions' same pass (none when a companion did not reach it).
+void EstimatePass(PassAnswer &a, const std::vector<HistoryRow> &rows, const Companions &c, bool tool, int p)
+{
+  const std::vector<HistoryRow> &mesh = c.mesh.empty() ? rows : c.mesh;
+  const auto coarse = Stage(mesh, 2 * p), stepped = Stage(c.steps, 2 * p);
+  if (coarse.empty() || stepped.empty() || a.strokes.empty()) return;
   a.estimated = true;
   for (size_t k = 0; k < a.strokes.size(); ++k) {
     const double u = a.strokes[k], load = a.loads[k];
-    const double dp = std::abs(load - At(coarse, &HistoryRow::load, u)) / std::max(std::abs(load), kTiny);
-    const double dc = std::abs(a.c_over_t[k] - At(coarse, &HistoryRow::c_over_t, u));
-    a.load_error.push_back(kEstimateSafety * dp);
-    a.ct_error.push_back(kEstimateSafety * dc);
+    a.load_parts.push_back(Estimate(c.mesh_share, load, At(coarse, &HistoryRow::load, u),
+                                    At(stepped, &HistoryRow::load, u), std::max(std::abs(load), kTiny)));
+    a.ct_parts.push_back(Estimate(c.mesh_share, a.c_over_t[k], At(coarse, &HistoryRow::c_over_t, u),
+                                  At(stepped, &HistoryRow::c_over_t, u)));
+    a.load_error.push_back(a.load_parts.back().Total());
+    a.ct_error.push_back(a.ct_parts.back().Total());
   }
-  if (a.springback)
-    a.ct_unloaded_error =
-      kEstimateSafety *
-      std::abs(a.unloaded.c_over_t - (tool ? LastUpTo(companion, 2 * p + 1) : companion.back()).c_over_t);
+  const auto end = [&](const std::vector<HistoryRow> &h) {
+    return (tool ? LastUpTo(h, 2 * p + 1) : h.back()).c_over_t;
+  };
+  if (a.springback) {
+    a.ct_unloaded_parts = Estimate(c.mesh_share, a.unloaded.c_over_t, end(mesh), end(c.steps));
+    a.ct_unloaded_error = a.ct_unloaded_parts.Total();
+  }
 }
 
 } // namespace
 
-Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const std::vector<HistoryRow> *companion)
+Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const Companions *companions)
 {
   Answer a;
   a.tool = tool;
@@ -108,14 +124,16 @@ Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const std::vect
   for (int p = 0; p < (second ? 2 : 1); ++p) {
     a.passes.push_back(SummarizePass(rows, tool, p));
     PassAnswer &pass = a.passes.back();
-    if (companion && !companion->empty()) EstimatePass(pass, *companion, tool, p);
+    if (companions && companions->Ran()) EstimatePass(pass, rows, *companions, tool, p);
     if (!pass.estimated) continue;
     a.estimated = true;
     for (size_t k = 0; k < pass.strokes.size(); ++k) {
-      a.worst_load_error = std::max(a.worst_load_error, pass.load_error[k]);
-      a.worst_ct_error = std::max(a.worst_ct_error, pass.ct_error[k]);
+      if (pass.load_error[k] > a.worst_load_error)
+        a.worst_load_error = pass.load_error[k], a.worst_load = pass.load_parts[k];
+      if (pass.ct_error[k] > a.worst_ct_error) a.worst_ct_error = pass.ct_error[k], a.worst_ct = pass.ct_parts[k];
     }
-    a.worst_ct_error = std::max(a.worst_ct_error, pass.ct_unloaded_error);
+    if (pass.ct_unloaded_error > a.worst_ct_error)
+      a.worst_ct_error = pass.ct_unloaded_error, a.worst_ct = pass.ct_unloaded_parts;
   }
   return a;
 }
@@ -152,12 +170,36 @@ std::vector<std::pair<std::string, double>> AnswerAttributes(const Answer &a)
     out.push_back({pre + "error_loaded_c_over_t", s.ct_error.back()});
     if (s.springback) out.push_back({pre + "error_unloaded_c_over_t", s.ct_unloaded_error});
   }
+  if (a.estimated && a.mesh_covered && (a.target_load > 0 || a.target_ct > 0))
+    out.push_back({"target_met", a.Over() ? 0.0 : 1.0});
   if (a.estimated) {
     out.push_back({"error_load", a.worst_load_error});
     out.push_back({"error_c_over_t", a.worst_ct_error});
     out.push_back({"error_covers_mesh", a.mesh_covered ? 1.0 : 0.0});
   }
   return out;
+}
+
+std::vector<std::pair<std::string, std::vector<double>>> ErrorColumns(const std::vector<HistoryRow> &rows,
+                                                                      const Companions &c)
+{
+  const std::vector<HistoryRow> &mesh = c.mesh.empty() ? rows : c.mesh;
+  std::vector<double> load(rows.size(), std::nan("")), ct(rows.size(), std::nan(""));
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const HistoryRow &r = rows[k];
+    if (std::fmod(r.stage, 2.0) != 0) continue; // (a release)
+    const auto coarse = Stage(mesh, r.stage), stepped = Stage(c.steps, r.stage);
+    if (coarse.empty() || stepped.empty() ||
+        r.stroke > std::min(coarse.back()->stroke, stepped.back()->stroke) + kStrokeMatch)
+      continue; // (past where a companion reached)
+    load[k] = Estimate(c.mesh_share, r.load, At(coarse, &HistoryRow::load, r.stroke),
+                       At(stepped, &HistoryRow::load, r.stroke), std::max(std::abs(r.load), kTiny))
+                .Total();
+    ct[k] = Estimate(c.mesh_share, r.c_over_t, At(coarse, &HistoryRow::c_over_t, r.stroke),
+                     At(stepped, &HistoryRow::c_over_t, r.stroke))
+              .Total();
+  }
+  return {{"error_load", load}, {"error_c_over_t", ct}};
 }
 
 } // namespace tf

@@ -35,13 +35,20 @@ std::string LoadLine(const Answer &a, const PassAnswer &s)
   return out + "; at " + u + " = " + where + ": " + at;
 }
 
-// The estimate of a pass: "load 12 %, C/t 0.04".
+// The pass's largest estimated errors, each with its mesh's part and its increments'.
 std::string Errors(const Answer &a, const PassAnswer &s)
 {
-  double load = 0, ct = s.ct_unloaded_error;
-  for (size_t k = 0; k < s.strokes.size(); ++k)
-    load = std::max(load, s.load_error[k]), ct = std::max(ct, s.ct_error[k]);
-  return Formatted("load %.2g %%", 100 * load) + (a.tool ? Formatted(", C/t %.2g", ct) : "");
+  ErrorParts load, ct = s.ct_unloaded_parts;
+  for (size_t k = 0; k < s.strokes.size(); ++k) {
+    if (s.load_parts[k].Total() > load.Total()) load = s.load_parts[k];
+    if (s.ct_parts[k].Total() > ct.Total()) ct = s.ct_parts[k];
+  }
+  const auto parts = [&](const ErrorParts &e, double unit, const char *sign) {
+    return a.mesh_covered ? Formatted(" (mesh %.2g%s, increments %.2g%s)", unit * e.mesh, sign, unit * e.steps, sign)
+                          : std::string();
+  };
+  return Formatted("load %.2g %%", 100 * load.Total()) + parts(load, 100, " %") +
+         (a.tool ? Formatted(", C/t %.2g", ct.Total()) + parts(ct, 1, "") : "");
 }
 
 PetscErrorCode PrintPass(MPI_Comm comm, const Answer &a, size_t p)
@@ -68,34 +75,36 @@ PetscErrorCode PrintPass(MPI_Comm comm, const Answer &a, size_t p)
 
 } // namespace
 
-PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, double target_load, double target_ct)
+PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, bool finer_follows, const std::string &why)
 {
   PetscFunctionBeginUser;
   for (size_t p = 0; p < a.passes.size(); ++p) PetscCall(PrintPass(comm, a, p));
   if (!a.estimated) PetscFunctionReturn(PETSC_SUCCESS);
-  std::string line =
-    a.mesh_covered
-      ? Formatted("estimated error (an upper bound: %g x the difference from a run at half the resolution): ",
-                  kEstimateSafety)
-      : Formatted("estimated error of the increments alone (%g x the difference from a run with half as many; "
-                  "the mesh is -mesh_file's, whose error this run does not estimate): ",
-                  kEstimateSafety);
+  std::string line = a.mesh_covered ? "estimated error (the mesh's part and the increments' from two companion runs): "
+                                    : "estimated error of the increments alone (the mesh is -mesh_file's, whose "
+                                      "error this run does not estimate): ";
   for (size_t p = 0; p < a.passes.size(); ++p) {
     const PassAnswer &s = a.passes[p];
     line += p == 0 ? "" : "; second pass: ";
-    line += s.estimated ? Errors(a, s) : "none (the companion run did not reach it)";
+    line += s.estimated ? Errors(a, s) : "none (a companion run did not reach it)";
   }
-  if (target_load > 0)
-    line += Formatted(a.mesh_covered ? " (targets %.3g %%, %.3g)" : " (the targets %.3g %%, %.3g unchecked)",
-                      100 * target_load, target_ct);
+  if (a.target_load > 0 || a.target_ct > 0)
+    line += Formatted(a.mesh_covered ? " (%s %.3g %%, %.3g)" : " (the %s %.3g %%, %.3g unchecked)",
+                      a.demanded ? "targets" : "the preset expects", 100 * a.target_load, a.target_ct);
   PetscCall(PetscPrintf(comm, "tubeform: %s\n", line.c_str()));
-  if (!a.mesh_covered) PetscFunctionReturn(PETSC_SUCCESS); // (no bound to hold against the targets)
-  const bool over =
-    (target_load > 0 && a.worst_load_error > target_load) || (a.tool && target_ct > 0 && a.worst_ct_error > target_ct);
-  if (over)
-    PetscCall(PetscPrintf(comm, "tubeform: warning: the estimated error passes the accuracy target, which this "
-                                "run therefore cannot confirm: refine (-mesh_density, -mesh_nt, -increments) or "
-                                "take a more accurate preset (docs/accuracy.md)\n"));
+  if (!a.Over()) PetscFunctionReturn(PETSC_SUCCESS);
+  if (finer_follows)
+    PetscCall(PetscPrintf(comm, "tubeform: the estimate passes the target: %s (accuracy on demand)\n", why.c_str()));
+  else if (a.demanded)
+    PetscCall(PetscPrintf(comm,
+                          "tubeform: warning: the estimated error passes the target, which this run therefore cannot "
+                          "confirm (%s): allow more levels or time (-target_levels, -target_time; docs/accuracy.md)\n",
+                          why.c_str()));
+  else
+    PetscCall(PetscPrintf(comm, "tubeform: warning: the estimated error passes what the preset expects, which this "
+                                "run therefore cannot confirm: name the accuracy you need (-target_load, "
+                                "-target_c_over_t: finer levels follow until the estimate meets it) or refine "
+                                "(-mesh_density, -mesh_nt, -increments; docs/accuracy.md)\n"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,4 +1,4 @@
-// The error estimate's companion run, once the run's results are final: its
+// The error estimate's companion runs, once the run's results are final: its
 // ranks agree on how it ended (a rank-local error the others did not meet
 // aborts the job, the results being in place already); an error means no
 // estimate and one line why; a stop signal ends the job as asked.
@@ -11,13 +11,17 @@
 
 namespace tf {
 
-PetscErrorCode Problem::Estimate(std::vector<HistoryRow> &companion, Stop &stop)
+PetscErrorCode Problem::Estimate(Companions &companions, Stop &stop)
 {
   MPI_Comm agree; // (a communicator of its own: a rank that failed alone cannot meet the others' calls)
   char text[PETSC_MAX_PATH_LEN] = "";
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_dup(comm_, &agree));
-  const PetscErrorCode failed = companion_run_(companion);
+  // The companions keep what this run chose for itself: its element and its friction regularization.
+  Options ran = opt_;
+  ran.element_auto = false;
+  if (contact_) ran.friction_vcri = contact_->params().vcri;
+  const PetscErrorCode failed = companion_run_(ran, companions);
   const ErrorVerdict v = AgreeOnError(agree, failed, kAgreeSeconds);
   if (!v.all_answered) {
     std::fprintf(stderr,
@@ -32,7 +36,7 @@ PetscErrorCode Problem::Estimate(std::vector<HistoryRow> &companion, Stop &stop)
   if (v.failed) PetscCallMPI(MPI_Bcast(text, sizeof(text), MPI_CHAR, v.first, agree));
   PetscCallMPI(MPI_Comm_free(&agree));
   if (!v.failed) PetscFunctionReturn(PETSC_SUCCESS);
-  companion.clear();
+  companions = Companions{};
   if (v.code == PETSC_ERR_SIG) {
     int mine = StopSignal(), any;
     PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm_));

@@ -10,6 +10,7 @@
 #include "tubeform/core/log.hpp"
 #include "tubeform/driver/answer.hpp"
 #include "tubeform/driver/problem.hpp"
+#include "tubeform/driver/refine.hpp"
 #include "tubeform/driver/release_report.hpp"
 
 namespace tf {
@@ -37,18 +38,22 @@ PetscErrorCode Problem::PlaceResults(ResultWriter &writer, const std::vector<std
 PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
 {
   Stop stop = ended;
-  std::vector<HistoryRow> companion; // its history (none: no estimate)
+  Companions companions; // their histories (none: no estimate)
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(Log::output_stage));
   const HistoryRow &last = history_.rows().back();
   // Shape metrics (C/t, C1/C2, springback) are the press scenes': those with final metrics of their own.
   const auto scene_metrics = scene_->FinalMetrics(history_);
-  const auto summarize = [&](const std::vector<HistoryRow> *estimate) {
+  const auto summarize = [&](const Companions *estimate) {
     Answer a = Summarize(history_.rows(), !scene_metrics.empty(), estimate);
     a.stroke_name = scene_->StrokeName(), a.load_unit = scene_->LoadUnit();
     for (const auto &[name, value] : scene_metrics) // (the second pass's start: the scene's, before its first row)
       if (name == "pass2_start_stroke" && a.passes.size() > 1) a.passes[1].start = value;
     a.mesh_covered = opt_.mesh_file.empty();
+    // (the accuracy held to: the one demanded, else the preset's expectation)
+    a.target_load = opt_.target_load > 0 ? opt_.target_load : opt_.expect_load;
+    a.target_ct = opt_.target_c_over_t > 0 ? opt_.target_c_over_t : opt_.expect_c_over_t;
+    a.demanded = opt_.target_load > 0 || opt_.target_c_over_t > 0;
     a.release = opt_.unload == "withdraw" ? "the dies withdrawn" : "the contact forces reversed, the dies removed";
     return a;
   };
@@ -60,8 +65,9 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
                                                          {"stalled", stop.stalled ? 1.0 : 0.0},
                                                          {"stopped", stop.why.empty() ? 0.0 : 1.0},
                                                          {"interrupted", double(stop.signal)},
-                                                         {"target_load", opt_.target_load},
-                                                         {"target_c_over_t", opt_.target_c_over_t}};
+                                                         {"target_load", answer.target_load},
+                                                         {"target_c_over_t", answer.target_ct},
+                                                         {"accuracy_level", double(opt_.level)}};
   for (const auto &m : scene_metrics) metrics.push_back(m);
   for (const auto &m : AnswerAttributes(answer)) metrics.push_back(m);
   const auto releases = SummarizeReleases(history_.rows());
@@ -73,16 +79,17 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
   PetscCall(PetscLogStagePop());
   // 2. The estimate, added to them: the attributes the answer with it adds or changes.
   if (companion_run_ && stop.why.empty()) {
-    PetscCall(Estimate(companion, stop));
-    if (!companion.empty()) {
-      answer = summarize(&companion);
+    PetscCall(Estimate(companions, stop));
+    if (companions.Ran()) {
+      answer = summarize(&companions);
       std::vector<std::pair<std::string, double>> extra;
       for (const auto &a : AnswerAttributes(answer)) {
         auto was = std::find_if(metrics.begin(), metrics.end(), [&](const auto &m) { return m.first == a.first; });
         if (was == metrics.end() || was->second != a.second) extra.push_back(a);
       }
       std::string why;
-      if (!opt_.output.empty()) PetscCall(AddResultAttributes(comm_, opt_.output, extra, why));
+      if (!opt_.output.empty())
+        PetscCall(AddResultEstimate(comm_, opt_.output, extra, ErrorColumns(history_.rows(), companions), why));
       if (!why.empty())
         PetscCall(PetscPrintf(comm_,
                               "tubeform: the error estimate is not in %s (%s): it holds the results without it\n",
@@ -92,7 +99,10 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
   if (stop.why.empty() && !quiet_) {
     PetscCall(PetscPrintf(comm_, "tubeform: %s done, %d increments, %d factorizations; results in %s\n",
                           opt_.scene.c_str(), (int)at_.inc, (int)system_.factorizations(), opt_.output.c_str()));
-    PetscCall(PrintAnswer(comm_, answer, opt_.target_load, opt_.target_c_over_t));
+    double seconds[2] = {MPI_Wtime() - started_, MPI_Wtime() - opt_.job_started}; // (rank 0's: one decision)
+    PetscCallMPI(MPI_Bcast(seconds, 2, MPI_DOUBLE, 0, comm_));
+    refinement_ = NextLevel(opt_, answer, seconds[0], seconds[1]);
+    PetscCall(PrintAnswer(comm_, answer, refinement_.follows, refinement_.why));
     PetscCall(PrintReleases(comm_, releases, all_points));
     PetscCall(PetscPrintf(comm_,
                           "tubeform: self-checks: energy balance within %.2g %%, internal work within %.2g %%; "

@@ -57,6 +57,7 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
   char why[PETSC_MAX_PATH_LEN] = "";
 
   PetscFunctionBeginUser;
+  started_ = MPI_Wtime();
   comm_ = comm;
   opt_ = opt;
   scene_ = std::move(scene);

@@ -334,15 +334,31 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                       "fraction of the stage) and at every stage end; 0: every -output_every increments",
                       opt.output_stroke));
   PetscCall(read.Bool(PetscOptionsObject, "-error_estimate",
-                      "Estimate the error of the load and C/t (tool scenes) from a companion run at half the "
-                      "resolution, run after the main run (docs/accuracy.md, \"The error estimate\")",
+                      "Estimate the error of the load and C/t (tool scenes), the mesh's part and the increments', "
+                      "from two companion runs after the main run (docs/accuracy.md, \"The error estimate\")",
                       opt.error_estimate));
   PetscCall(read.Real(PetscOptionsObject, "-target_load",
-                      "Accuracy target of the load (relative; 0: none): an estimate above it is a warning at the "
-                      "end of the run",
+                      "Accuracy demanded of the load (relative; 0: none): where the estimate passes it, the run "
+                      "goes on at a finer level (docs/accuracy.md, \"Accuracy on demand\")",
                       opt.target_load));
-  PetscCall(read.Real(PetscOptionsObject, "-target_c_over_t", "Accuracy target of C/t (absolute; 0: none)",
+  PetscCall(read.Real(PetscOptionsObject, "-target_c_over_t",
+                      "Accuracy demanded of C/t (absolute; 0: none), as "
+                      "-target_load",
                       opt.target_c_over_t));
+  PetscCall(read.Real(PetscOptionsObject, "-expect_load",
+                      "The load's accuracy the discretization is expected to give (relative; the presets set it; "
+                      "0: none): an estimate above it is a warning (a -target_load replaces it)",
+                      opt.expect_load));
+  PetscCall(
+    read.Real(PetscOptionsObject, "-expect_c_over_t", "As -expect_load, for C/t (absolute)", opt.expect_c_over_t));
+  PetscCall(read.Int(PetscOptionsObject, "-target_levels",
+                     "Most levels a -target_load or -target_c_over_t runs "
+                     "(the first included)",
+                     opt.target_levels));
+  PetscCall(read.Real(PetscOptionsObject, "-target_time",
+                      "No finer level whose predicted time would bring the job past this many seconds (0: no "
+                      "limit): the run ends with its best level, warned",
+                      opt.target_time));
   PetscCall(read.Real(PetscOptionsObject, "-max_energy_error",
                       "Stop (results so far written, non-zero exit) when the energy balance error (self-check "
                       "(a)) passes this fraction",

@@ -223,6 +223,7 @@ public:
   int num_tools() const { return (int)tools_.size(); }
   const Tool &tool(int k) const { return tools_[k]; }
   bool friction() const { return prm_.mu > 0; }
+  const ContactParams &params() const { return prm_; }
   // Equilibrium iterations balance every step: the force of a node leaving the
   // tool is balanced by the next step's iterations, not kept as a pending load.
   void SetBalanced(bool balanced) { balanced_ = balanced; }

@@ -3,9 +3,8 @@
 // the end of loading and the largest, the load and C/t at the reported
 // strokes, C/t and the half-extents C1 (across the press) and C2 (along it)
 // loaded and after springback; and the run's estimate of its own error in
-// them, from a coarser companion run of the same case (a two-level Richardson
-// estimate: the difference of the two levels bounds the finer one's error once
-// both are in the asymptotic range; docs/accuracy.md, "The error estimate").
+// them, its mesh's part and its increments' apart, from two companion runs of
+// the same case (docs/accuracy.md, "The error estimate").
 #pragma once
 
 #include <petscsys.h>
@@ -20,16 +19,23 @@ namespace tf {
 
 // The strokes the answer reports besides the end of loading (mm): the paper's.
 constexpr double kReportedStrokes[] = {1.0, 2.0, 3.0, 4.2};
-// The estimate is this many times the difference between the run and its
-// companion of half the resolution: Roache's safety factor for a grid
-// convergence index from two grids (with an order p >= 1 the finer run's
-// error is at most the difference, 1 / (2^p - 1), once both runs are in the
-// asymptotic range; the companion at half the preset's resolution often is
-// not). Measured on the fast and default presets of fourteen validation tubes
-// (against CalculiX where it ran, our extrapolated references elsewhere):
-// with 1 it bounded 20 of 28 load errors and 22 of 28 C/t errors, with 3
-// all 56 (scripts/estimate_study.py; docs/accuracy.md, "The error estimate").
-constexpr double kEstimateSafety = 3.0;
+// The error estimate, from two companion runs that keep the run's element and
+// friction law and change one thing each: `mesh` has half the cells through
+// the wall and around at the run's increments, `steps` has the cells of
+// `mesh` at twice the run's increment limits. Each difference is taken as
+// Richardson's with refinement 2, at the order its part converges with: the
+// increments at first order (their error is proportional to -rmin_deps: the
+// difference is the run's error), the mesh at its element's order through the
+// wall, where a bending wall's error is: qm6 is stiff there by about 1/n
+// (first order: the difference), qm6bar soft by about 1/n^2 (second order: a
+// third of it; docs/accuracy.md, "The element through the wall"). With a mesh
+// file, which cannot be coarsened, `mesh` is the run itself and the estimate
+// covers the increments alone. Measured on the presets of the study tubes
+// against converged references (studies/estimate_levels.py; docs/accuracy.md,
+// "The error estimate").
+constexpr double kStepShare = 1.0;             // of |steps - mesh|: the increments' error at the run's limits
+constexpr double kMeshShareQM6 = 1.0;          // of |mesh - run| with qm6: the mesh's error at the run's cells
+constexpr double kMeshShareQM6Bar = 1.0 / 3.0; // with qm6bar (2^2 - 1)
 // A loading row whose kinetic energy exceeds this fraction of the external
 // work is a dynamic transient, not a point of the quasi-static curve: the
 // median row of the validation runs carries 1e-8 to 1e-7 of the work, the rows
@@ -42,6 +48,12 @@ constexpr double kQuasiStaticKinetic = 1e-5;
 struct ShapeAt {
   double c_over_t = 0, c1 = 0, c2 = 0;
   double Ratio() const { return c2 > 0 ? c1 / c2 : 1.0; }
+};
+
+// An estimated error, its mesh's part and its increments' apart.
+struct ErrorParts {
+  double mesh = 0, steps = 0;
+  double Total() const { return mesh + steps; }
 };
 
 // One pass: its loading's end, curve and shapes, and their estimated errors.
@@ -59,7 +71,9 @@ struct PassAnswer {
   // each reported stroke, C/t's after springback.
   bool estimated = false;
   std::vector<double> load_error, ct_error;
+  std::vector<ErrorParts> load_parts, ct_parts;
   double ct_unloaded_error = 0;
+  ErrorParts ct_unloaded_parts;
 };
 
 struct Answer {
@@ -71,14 +85,36 @@ struct Answer {
   // companion keeps the mesh: the estimate then covers the increments alone (mesh_covered false).
   bool estimated = false, mesh_covered = true;
   double worst_load_error = 0, worst_ct_error = 0;
+  ErrorParts worst_load, worst_ct;       // the largest's parts
+  double target_load = 0, target_ct = 0; // the accuracy held to (0: none)
+  bool demanded = false;                 // by -target_load or -target_c_over_t, not the preset's expectation
+  // The estimate passes a target (with a mesh file, whose error it does not cover, it is held to none).
+  bool Over() const
+  {
+    return estimated && mesh_covered &&
+           ((target_load > 0 && worst_load_error > target_load) ||
+            (tool && target_ct > 0 && worst_ct_error > target_ct));
+  }
 };
 
-// The answer of a history (companion: the coarser run's, or null).
-Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const std::vector<HistoryRow> *companion);
+// The estimate's two companions' histories (see kStepShare); `mesh` empty when the run's mesh is kept (a mesh file).
+struct Companions {
+  std::vector<HistoryRow> mesh, steps;
+  double mesh_share = kMeshShareQM6; // the run's element's (kMeshShareQM6, kMeshShareQM6Bar)
+  bool Ran() const { return !steps.empty(); }
+};
+
+// The answer of a history (companions: the estimate's, or null).
+Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const Companions *companions);
+// The estimate row by row (loading rows; a release's rows NaN, its end is the pass's error_unloaded_c_over_t): the
+// relative load error and the C/t error, as /history columns error_load and error_c_over_t.
+std::vector<std::pair<std::string, std::vector<double>>> ErrorColumns(const std::vector<HistoryRow> &rows,
+                                                                      const Companions &companions);
 // As HDF5 attributes of /history (the second pass's prefixed pass2_).
 std::vector<std::pair<std::string, double>> AnswerAttributes(const Answer &a);
-// Collective: the answer's lines on rank 0; `targets` the preset's accuracy
-// targets (load relative, C/t absolute; 0: none), whose excess is a warning.
-PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, double target_load, double target_ct);
+// Collective: the answer's lines on rank 0. An estimate over its targets is
+// a warning, unless a finer level follows (driver/refine.hpp); `why` says
+// which level follows, or why none does.
+PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, bool finer_follows, const std::string &why);
 
 } // namespace tf

@@ -12,8 +12,10 @@
 #include "tubeform/body/body.hpp"
 #include "tubeform/body/inertia.hpp"
 #include "tubeform/contact/contact.hpp"
+#include "tubeform/driver/answer.hpp"
 #include "tubeform/driver/controller.hpp"
 #include "tubeform/driver/output_schedule.hpp"
+#include "tubeform/driver/refine.hpp"
 #include "tubeform/io/history.hpp"
 #include "tubeform/io/options.hpp"
 #include "tubeform/io/output.hpp"
@@ -37,12 +39,13 @@ public:
   PetscErrorCode Setup(MPI_Comm comm, const Options &opt, std::unique_ptr<Scene> scene);
   // Collective: the load path from lambda = 0 to its end; results written.
   PetscErrorCode Run();
-  // A companion run of the same case at half the resolution, whose history's
-  // difference from this run's is its error estimate (driver/answer.hpp):
-  // called once the run has reached its end (not on a stop) and its results
-  // are final (complete, closed and in place). Whatever error it returns means
-  // no estimate (one line why); a stop signal also ends the job.
-  using CompanionRun = std::function<PetscErrorCode(std::vector<HistoryRow> &)>;
+  // The error estimate's companion runs of the same case (driver/answer.hpp,
+  // Companions), given the options as this run ran them (its element and
+  // friction regularization fixed: the companions keep them): called once the
+  // run has reached its end (not on a stop) and its results are final
+  // (complete, closed and in place). Whatever error it returns means no
+  // estimate (one line why); a stop signal also ends the job.
+  using CompanionRun = std::function<PetscErrorCode(const Options &ran, Companions &)>;
   void SetCompanion(CompanionRun run) { companion_run_ = std::move(run); }
   // No lines on the standard output (a companion run, which also writes no files: its -output is empty).
   void SetQuiet() { quiet_ = true; }
@@ -52,6 +55,8 @@ public:
   const Body &body() const { return body_; }
   const System &system() const { return system_; }
   const History &history() const { return history_; }
+  // After Run: whether a finer level follows this one (accuracy on demand), and its options.
+  const Refinement &refinement() const { return refinement_; }
 
 private:
   MPI_Comm comm_ = MPI_COMM_NULL;
@@ -67,6 +72,8 @@ private:
   std::unique_ptr<Model> model_;        // what the scene sees
   History history_;
   CompanionRun companion_run_; // none: no estimate
+  Refinement refinement_;
+  double started_ = 0; // MPI_Wtime when Run began
   bool quiet_ = false;
 
   // Where the loop stands on the load path (a checkpoint keeps it).
@@ -139,10 +146,10 @@ private:
   PetscErrorCode Finish(ResultWriter &writer, const Stop &ended);
   PetscErrorCode PlaceResults(ResultWriter &writer, const std::vector<std::pair<std::string, double>> &metrics,
                               const std::string &stop_reason);
-  // The companion run, its ranks agreeing on how it ended: its history in
-  // `companion` (empty: no estimate, one line why); a stop signal during it
+  // The companion runs, their ranks agreeing on how they ended: their histories
+  // in `companions` (empty: no estimate, one line why); a stop signal during them
   // goes into `stop`.
-  PetscErrorCode Estimate(std::vector<HistoryRow> &companion, Stop &stop);
+  PetscErrorCode Estimate(Companions &companions, Stop &stop);
   std::string Where() const; // where the run stands, for a stop's message
   // The forces at the end of an increment (or of a restored state) at lambda:
   // applied, external (with friction), internal (with inertia), out-of-balance.

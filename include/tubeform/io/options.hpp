@@ -121,11 +121,16 @@ struct Options {
   // Stop (results written) when the energy balance error passes this: a quarter of the work
   // unaccounted for means the load-stroke curve is no longer a solution.
   double max_energy_error = 0.25;
-  // The run's estimate of its own error (tool scenes): a companion run at half
-  // the resolution first; the accuracy targets its estimate is held to (the
-  // presets set them; 0: none).
+  // The run's estimate of its own error (tool scenes, driver/answer.hpp), and
+  // the accuracy it is held to: a target demanded (a finer level where the
+  // estimate passes it), else the preset's expectation (a warning).
   PetscBool error_estimate = PETSC_TRUE;
-  double target_load = 0, target_c_over_t = 0;
+  double target_load = 0, target_c_over_t = 0; // accuracy on demand (driver/refine.hpp; 0: none)
+  double expect_load = 0, expect_c_over_t = 0; // what the preset's discretization is expected to give (0: none)
+  PetscInt target_levels = 3;                  // at most this many levels, the first included
+  double target_time = 0;                      // no level predicted to bring the job past this (s; 0: no limit)
+  PetscInt level = 1;                          // (not an option: the level this run is, 1 the first)
+  double job_started = 0;                      // (not an option: MPI_Wtime when the job began)
   double time_limit = 0; // > 0: stop (results written, non-zero exit) after this many seconds of loading
   double progress = 10;  // s between progress lines on rank 0 (0: none); quiet on shorter runs
   PetscBool monitor = PETSC_FALSE;
@@ -176,6 +181,10 @@ inline void ChooseElement(Options &opt)
   opt.element = bar ? fe::Formulation::QM6Bar : fe::Formulation::QM6;
   opt.element_name = bar ? "qm6bar" : "qm6";
 }
+
+// The most levels -target_levels allows: each finer level costs up to 27 x the last (kMaxRatio cubed), so a
+// sixth is beyond any machine's patience.
+constexpr PetscInt kMaxTargetLevels = 5;
 
 // The most strokes -stroke_path takes (a press's path, not a cycle test: a few dozen).
 constexpr PetscInt kMaxPathPoints = 32;

@@ -116,11 +116,17 @@ PetscErrorCode CheckWritable(MPI_Comm comm, const std::string &path, const char 
 // system of `path` has room for `bytes` (`what`, for the message) and
 // kRoomMargin beside (asked on rank 0).
 PetscErrorCode CheckRoom(MPI_Comm comm, const std::string &path, const char *option, double bytes, const char *what);
-// Collective: `attributes` of /history added to the finished result file at
-// `path` in a way that cannot lose it: rank 0 copies it to
-// <path>.estimate.partial, adds them there and renames the copy over it. When
-// that fails, `why` says so (every rank) and the file is as it was.
-PetscErrorCode AddResultAttributes(MPI_Comm comm, const std::string &path,
-                                   const std::vector<std::pair<std::string, double>> &attributes, std::string &why);
+// Collective: `attributes` and `columns` (one value a row) of /history added
+// to the finished result file at `path` in a way that cannot lose it: rank 0
+// copies it to <path>.estimate.partial, adds them there and renames the copy
+// over it. When that fails, `why` says so (every rank) and the file is as it was.
+PetscErrorCode AddResultEstimate(MPI_Comm comm, const std::string &path,
+                                 const std::vector<std::pair<std::string, double>> &attributes,
+                                 const std::vector<std::pair<std::string, std::vector<double>>> &columns,
+                                 std::string &why);
+// Collective: the finished result file at `path` copied to `copy` (rank 0), so
+// that a finer level may run into `path`; `why` says what failed (every rank;
+// no copy is left then).
+PetscErrorCode KeepResultCopy(MPI_Comm comm, const std::string &path, const std::string &copy, std::string &why);
 
 } // namespace tf

@@ -1,0 +1,39 @@
+// Accuracy on demand (docs/accuracy.md, "Accuracy on demand"): a run whose
+// estimated error passes its targets (-target_load, -target_c_over_t) runs
+// again at a finer level, chosen from the estimate's parts: each falls with
+// the order the estimate takes it at (the increments' first, the mesh's its
+// element's, driver/answer.hpp), so each is refined by the ratio that brings
+// it within its share of the target. A level at most kMaxRatio finer than the last, at most
+// -target_levels levels, none that would pass -target_time.
+#pragma once
+
+#include <string>
+
+#include "tubeform/driver/answer.hpp"
+#include "tubeform/io/options.hpp"
+
+namespace tf {
+
+// The next level aims at this fraction of the target: the next estimate has its own scatter (the validation's
+// effectivities spread by about 1.5 x around their median), and a level that lands just above the target costs a
+// whole further level.
+constexpr double kTargetAim = 0.7;
+// At most this ratio of cell size and of increment limits from one level to the next: the estimate bounds the
+// error at a median of about 2.7 x (docs/accuracy.md), so a larger jump would overshoot the level that meets
+// the target by about as much, at the ratio cubed in cost; at 2 the next level's own companion is this level's
+// mesh, and each level costs about 8 x the last.
+constexpr double kMaxRatio = 2.0;
+
+struct Refinement {
+  bool follows = false;  // a finer level runs next
+  std::string why;       // what decided (a line for the user)
+  double mesh_ratio = 1; // the cell size's divisor (through the wall and around)
+  double step_ratio = 1; // the increment limits' divisor
+  Options next;          // the next level's options (follows)
+};
+
+// What comes after a level that ended with `a` (its estimate, targets and parts), which took `level_seconds`,
+// `job_seconds` since the job started.
+Refinement NextLevel(const Options &level, const Answer &a, double level_seconds, double job_seconds);
+
+} // namespace tf

@@ -1,0 +1,79 @@
+#include "tubeform/driver/refine.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tubeform/core/core.hpp"
+
+namespace tf {
+
+namespace {
+
+// The ratios that bring the parts of an error `e` within the target `target` (0: none), the mesh's part falling
+// with the cell size to the power `order`: the target shared between
+// the mesh and the increments, half each (the cheapest split when the cost grows as the cells times the
+// increments), or the whole of it to one part where the other is within its half already.
+void Ratios(const ErrorParts &e, double target, double order, double &mesh, double &steps)
+{
+  if (target <= 0) return;
+  const double aim = kTargetAim * target;
+  double m_share = aim / 2, s_share = aim / 2;
+  if (e.mesh < m_share) s_share = aim - e.mesh;
+  if (e.steps < s_share && e.steps < aim / 2) m_share = aim - e.steps;
+  if (e.mesh > m_share) mesh = std::max(mesh, std::pow(e.mesh / m_share, 1 / order));
+  if (e.steps > s_share) steps = std::max(steps, e.steps / s_share); // (first order)
+}
+
+// n scaled by r and rounded up to a multiple of `multiple`.
+PetscInt Scaled(PetscInt n, double r, PetscInt multiple)
+{
+  const PetscInt m = (PetscInt)std::ceil(n * r - 1e-9);
+  return (m + multiple - 1) / multiple * multiple;
+}
+
+} // namespace
+
+Refinement NextLevel(const Options &level, const Answer &a, double level_seconds, double job_seconds)
+{
+  Refinement r;
+  const double load = level.target_load, ct = a.tool ? level.target_c_over_t : 0; // (demanded: 0 none)
+  if (!a.estimated || !a.mesh_covered ||
+      !((load > 0 && a.worst_load_error > load) || (ct > 0 && a.worst_ct_error > ct)))
+    return r;
+  if (level.level >= level.target_levels) {
+    r.why = Formatted("this was level %d of -target_levels %d", (int)level.level, (int)level.target_levels);
+    return r;
+  }
+  const double order = level.element == fe::Formulation::QM6Bar ? 2 : 1; // (the estimate's: driver/answer.hpp)
+  Ratios(a.worst_load, load, order, r.mesh_ratio, r.step_ratio);
+  Ratios(a.worst_ct, ct, order, r.mesh_ratio, r.step_ratio);
+  if (!level.mesh_file.empty()) r.mesh_ratio = 1; // (a mesh file is as it is)
+  r.mesh_ratio = std::min(r.mesh_ratio, kMaxRatio), r.step_ratio = std::min(r.step_ratio, kMaxRatio);
+  // The cost of a level: its cells times its increments, the factorization's growing faster than the cells
+  // (a 2D direct solve: about n^1.5, so the ratio cubed).
+  const double predicted = level_seconds * std::pow(r.mesh_ratio, 3) * r.step_ratio;
+  if (level.target_time > 0 && job_seconds + predicted > level.target_time) {
+    r.why = Formatted("the next level (about %.0f s) would pass -target_time %g s", predicted, level.target_time);
+    return r;
+  }
+  Options &n = r.next;
+  n = level;
+  n.level = level.level + 1;
+  if (r.mesh_ratio > 1) {
+    // (through the wall a multiple of 4, so that the estimate's companion has an even count: odd ones converge
+    // unevenly, docs/accuracy.md, "The element through the wall"; around, a multiple of 4 likewise)
+    n.mesh_nt = Scaled(level.mesh_nt, r.mesh_ratio, 4);
+    n.mesh_ntheta = Scaled(level.mesh_ntheta, r.mesh_ratio, 4);
+    ChooseElement(n);
+  }
+  if (r.step_ratio > 1) {
+    n.increments = Scaled(level.increments, r.step_ratio, 1);
+    n.rmin_deps /= r.step_ratio, n.rmin_deps_yield /= r.step_ratio, n.rmin_domega /= r.step_ratio;
+  }
+  r.follows = true;
+  r.why = Formatted("level %d follows: %d x %d cells, %d trial increments, increment limits / %.2g (about %.0f s)",
+                    (int)n.level, (int)n.mesh_nt, (int)n.mesh_ntheta, (int)n.increments, r.step_ratio, predicted);
+  return r;
+}
+
+} // namespace tf
