@@ -12,8 +12,8 @@ the paper's springback (dies gone) nodes still touch them, which only the walls 
 finishes (exit 0).
 The half model of the same tube has no wall at y = 0 (the lower die is its own): its upper and lower walls meet
 there, which the solver does not model; on 2 ranks the run stops with one line naming where the wall meets itself
-and the stroke, a non-zero exit, no hang, and the history up to the stop written: its last stroke is the one the
-line names (to the line's 6 digits).
+and the stroke, a non-zero exit, no hang, and the history up to the stop written and flagged `stopped`: its last
+stroke is the one the line names (to the line's 6 digits).
 """
 import re
 
@@ -54,7 +54,8 @@ k.check(m is not None and abs(float(m.group(2))) < 0.1,
         f"half model: it meets itself at the plane y = 0, where the upper and lower walls meet ({lines[:1]})")
 if m:
     with h5py.File(f, "r") as h:
-        U = h["/history"]["stroke"][:]
-    k.check(abs(U[-1] - float(m.group(3))) <= 1e-5 * U[-1],
-            f"half model: the history is written to the stop (last stroke {U[-1]:.6g}, the line's {m.group(3)})")
+        U, stopped = h["/history"]["stroke"][:], h["/history"].attrs["stopped"]
+    k.check(abs(U[-1] - float(m.group(3))) <= 1e-5 * U[-1] and stopped == 1,
+            f"half model: the history is written to the stop (last stroke {U[-1]:.6g}, the line's {m.group(3)}), "
+            f"flagged stopped ({stopped:g})")
 k.done()
