@@ -61,7 +61,7 @@ PetscErrorCode Build(MPI_Comm comm, std::unique_ptr<Block> &b, double spin = 0)
   spec.tools = {BuildFlatPlate(0.0, -10.0, 10.0, true)};
   spec.tools[0].spin = spin;
   spec.candidates = "bottom";
-  b->contact.Setup(b->mesh, b->system, b->body.position(), spec);
+  PetscCall(b->contact.Setup(b->mesh, b->system, b->body.position(), spec));
   PetscCall(b->contact.Initialize());
   b->du = b->system.CreateLocalVector();
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -9,12 +9,18 @@
 //    sag s between the outermost contacts gives s; a side that touches the
 //    flank only near the corner but the apex fillet too spans to the
 //    fillet's end, so its sag is found (a flank-only side read 0);
-//  - the corner radius of a circle through the axis node is the circle's.
+//  - the corner radius of a circle through the axis node is the circle's;
+//  - the surface crossing itself (metrics/crossing.hpp): a closed ring of edges crosses nowhere; pulled in at one
+//    node until it passes the opposite side, its crossing is found where the two straight edges meet (solved
+//    by hand below), whatever order the edges come in; a node pulled only onto the opposite edge (touching, not
+//    crossing) or two edges on one line count nothing.
 // Tolerance 1e-12 mm: exact geometry up to round-off of coordinates ~20 mm.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "check.hpp"
+#include "tubeform/metrics/crossing.hpp"
 #include "tubeform/metrics/shape.hpp"
 
 using namespace tf;
@@ -46,6 +52,56 @@ std::vector<SurfacePoint> Moved(std::vector<SurfacePoint> p, double a, double cx
     q.x = cx + c * x - s * y + dx, q.y = cy + s * x + c * y + dy;
   }
   return p;
+}
+
+// The closed ring of n edges through n points on a circle of radius r, node k at angle 2 pi k / n.
+std::vector<SurfaceEdge> Ring(double r, int n)
+{
+  std::vector<SurfaceEdge> e;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * M_PI * k / n, b = 2 * M_PI * (k + 1) / n;
+    e.push_back({{r * std::cos(a), r * std::sin(a)}, {r * std::cos(b), r * std::sin(b)}, k, (k + 1) % n});
+  }
+  return e;
+}
+
+// The ring with node 0 moved to p (both edges it ends).
+std::vector<SurfaceEdge> Pulled(std::vector<SurfaceEdge> e, const Vec2 &p)
+{
+  for (auto &f : e) {
+    if (f.na == 0) f.a = p;
+    if (f.nb == 0) f.b = p;
+  }
+  return e;
+}
+
+void CheckSelfCrossing()
+{
+  const double r = 10, tol = 1e-12;
+  const int n = 8; // node 4 at (-r, 0); edges 3-4 and 4-5 its neighbours
+  CHECK(!FindSelfCrossing(Ring(r, n)).found);
+  // Node 0 pulled along y = 0 to x = -1.5 r: its edge 0-7 crosses 4-5 and, mirrored in y = 0, its edge 0-1 crosses
+  // 3-4; the pair of the lowest nodes is 0-1 with 3-4. Edge 0-7 runs from (X, 0) to (r c, -r c), c = cos 45, 4-5
+  // from (-r, 0) to (-r c, -r c): their lines, y = -r c (x - X) / (r c - X) and y = -(x + r) c / (1 - c), solved
+  // by hand; the crossing found is that point mirrored, (x, -y).
+  const double c = std::cos(M_PI / 4), X = -1.5 * r;
+  const SelfCrossing hit = FindSelfCrossing(Pulled(Ring(r, n), {X, 0}));
+  CHECK(hit.found);
+  const double x = (X * (r - r * c) + r * (r * c - X)) / ((r - r * c) - (r * c - X));
+  const double y = -(x + r) * c / (1 - c);
+  CHECK_NEAR(hit.at[0], x, tol);
+  CHECK_NEAR(hit.at[1], -y, tol);
+  CHECK(hit.nodes[0] == 0 && hit.nodes[1] == 1 && hit.nodes[2] == 3 && hit.nodes[3] == 4);
+  // The same answer whatever order the edges come in (the ranks gather them in theirs).
+  auto reversed = Pulled(Ring(r, n), {X, 0});
+  std::reverse(reversed.begin(), reversed.end());
+  const SelfCrossing again = FindSelfCrossing(reversed);
+  CHECK(again.found && again.at[0] == hit.at[0] && again.at[1] == hit.at[1]);
+  for (int k = 0; k < 4; ++k) CHECK(again.nodes[k] == hit.nodes[k]);
+  // Node 0 pulled exactly onto node 4's place: edges touch at a point, none crosses another's interior.
+  CHECK(!FindSelfCrossing(Pulled(Ring(r, n), Ring(r, n)[4].a)).found);
+  // Two edges on one line, overlapping: no crossing (their ends lie on each other's line).
+  CHECK(!FindSelfCrossing({{{0, 0}, {2, 0}, 0, 1}, {{1, 0}, {3, 0}, 2, 3}}).found);
 }
 
 } // namespace
@@ -116,5 +172,6 @@ int main()
   // Corner radius: nodes on a circle of radius R centred on the x axis at c.
   const double R = 4.0, c = 13.5, t = 0.15;
   CHECK_NEAR(AxisCornerRadius(c + R, c + R * std::cos(t), R * std::sin(t)), R, 1e-10);
+  CheckSelfCrossing();
   return ReportChecks("test_metrics");
 }

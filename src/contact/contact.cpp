@@ -25,15 +25,21 @@ double ContactSet::SlipFrom(PetscInt node, const Vec2 &u, double dU, const Vec2 
   return Dot(u, l_[node]) - Dot(MotionAt(node, dU, x), l_[node]);
 }
 
-void ContactSet::Remove()
+PetscErrorCode ContactSet::Remove()
 {
-  std::fill(contact_.begin(), contact_.end(), 0);
+  int mine = 0, walls;
+  PetscFunctionBeginUser;
+  for (PetscInt node : candidates_) mine |= contact_[node] && tool_of_[node] >= num_dies_;
+  PetscCallMPI(MPI_Allreduce(&mine, &walls, 1, MPI_INT, MPI_MAX, comm()));
+  // (the nodes on a symmetry wall keep their state: the wall stays)
+  for (PetscInt node : candidates_)
+    if (!walls || tool_of_[node] < num_dies_) contact_[node] = 0, fn_[node] = x_[node] = 0;
   std::fill(released_.begin(), released_.end(), 0);
   std::fill(frozen_.begin(), frozen_.end(), 0);
-  std::fill(fn_.begin(), fn_.end(), 0.0);
-  std::fill(x_.begin(), x_.end(), 0.0);
   std::fill(pending_.begin(), pending_.end(), Vec2{0, 0}); // the scene has taken them over with the contact forces
-  removed_ = true;
+  removed_ = !walls;
+  dies_removed_ = true;
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode ContactSet::BeginIncrement()
@@ -240,9 +246,12 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
       // r4: exact first touch along the increment. A node released in this
       // trial starts on the surface: where it ends is checked by ReleasePulled.
       if (released_[node]) continue;
+      bool first = true;
       for (int k = 0; k < (int)tools_.size(); ++k) {
+        if (!MayTouch(node, k)) continue;
         const double r = tools_[k].FirstContact(Position(node), u, Step(k, dU));
-        if (k == 0 || r < r4_[node]) r4_[node] = r, touch_[node] = k;
+        if (first || r < r4_[node]) r4_[node] = r, touch_[node] = k;
+        first = false;
       }
       touch.Offer(r4_[node], Limiter::Contact, id);
       continue;
@@ -359,7 +368,7 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
   double worst[2] = {0, 0}, global_worst[2]; // gap of a contact node, penetration
   for (PetscInt node : candidates_) {
     int k = tool_of_[node];
-    const Projection pr = contact_[node] ? tools_[k].Project(Position(node)) : ProjectNearest(Position(node), k);
+    const Projection pr = contact_[node] ? tools_[k].Project(Position(node)) : ProjectNearest(node, k);
     if (pr.segment < 0) continue;
     if (!contact_[node] && pr.gap <= prm_.gap_tol) {
       contact_[node] = 1;

@@ -47,10 +47,18 @@ PetscErrorCode ContactSet::AddNodeForces(Vec f) const
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::AddContactForces(Vec f) const
+PetscErrorCode ContactSet::AddContactForces(Vec f, bool dies_only) const
 {
+  PetscScalar *a;
   PetscFunctionBeginUser;
-  PetscCall(AddNodeForces(f));
+  if (!dies_only) PetscCall(AddNodeForces(f));
+  PetscCall(VecGetArray(f, &a));
+  for (PetscInt node : candidates_) {
+    if (!dies_only || !contact_[node] || !mesh_->node_owned[node] || tool_of_[node] >= num_dies_) continue;
+    const Vec2 fc = NodeForce(node, true);
+    for (int k = 0; k < 2; ++k) a[mesh_->node_dof[node] + k] += fc[k];
+  }
+  PetscCall(VecRestoreArray(f, &a));
   PetscCall(AddPendingForces(f));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -96,12 +104,45 @@ PetscErrorCode ContactSet::FrictionMoment(const Vec2 &c, double &capacity) const
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContactSet::Count(PetscInt &n) const
+PetscErrorCode ContactSet::Count(PetscInt &n, bool walls) const
 {
   PetscInt local = 0;
   PetscFunctionBeginUser;
-  for (PetscInt node : candidates_) local += contact_[node] && mesh_->node_owned[node];
+  for (PetscInt node : candidates_)
+    local += contact_[node] && mesh_->node_owned[node] && (walls || tool_of_[node] < num_dies_);
   PetscCall(MPIU_Allreduce(&local, &n, 1, MPIU_INT, MPI_SUM, comm()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::Crossing(PlaneCrossing &c) const
+{
+  const int ntools = (int)tools_.size();
+  struct {
+    double depth;
+    int where; // input number x tools + tool
+  } mine = {0.0, -1}, deepest;
+  PetscFunctionBeginUser;
+  c = PlaneCrossing{};
+  c.tol = kCrossingTol * size_;
+  for (PetscInt node : candidates_)
+    for (int k = 0; k < ntools && mesh_->node_owned[node]; ++k) {
+      if (!MayTouch(node, k) || (contact_[node] && tool_of_[node] == k)) continue;
+      const Projection pr = tools_[k].Project(Position(node));
+      if (pr.segment >= 0 && -pr.gap > mine.depth) mine = {-pr.gap, (int)mesh_->node_orig[node] * ntools + k};
+    }
+  PetscCallMPI(MPI_Allreduce(&mine, &deepest, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm()));
+  if (deepest.where < 0) PetscFunctionReturn(PETSC_SUCCESS);
+  c.depth = deepest.depth;
+  c.tool = deepest.where % ntools;
+  c.node = deepest.where / ntools;
+  // Where it is and what it touches, from the rank that owns it.
+  double at[3] = {0, 0, 0}, global[3];
+  for (PetscInt node : candidates_)
+    if (mesh_->node_owned[node] && mesh_->node_orig[node] == c.node)
+      at[0] = Position(node)[0], at[1] = Position(node)[1], at[2] = contact_[node] ? tool_of_[node] : -1;
+  PetscCallMPI(MPI_Allreduce(at, global, 3, MPI_DOUBLE, MPI_SUM, comm()));
+  c.x = {global[0], global[1]};
+  c.held = (int)global[2];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -119,12 +160,12 @@ PetscErrorCode ContactSet::Penetration(double &penetration) const
 {
   double local = 0;
   PetscFunctionBeginUser;
-  for (PetscInt node : candidates_) {
-    for (const Tool &t : tools_) {
-      const Projection pr = t.Project(Position(node));
+  for (PetscInt node : candidates_)
+    for (int k = 0; k < (int)tools_.size(); ++k) {
+      if (!MayTouch(node, k)) continue;
+      const Projection pr = tools_[k].Project(Position(node));
       if (pr.segment >= 0) local = std::max(local, -pr.gap);
     }
-  }
   PetscCallMPI(MPI_Allreduce(&local, &penetration, 1, MPI_DOUBLE, MPI_MAX, comm()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

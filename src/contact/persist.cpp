@@ -9,6 +9,7 @@ PetscErrorCode ContactSet::Persist(Archive &ar)
   PetscFunctionBeginUser;
   ar.Group("/contact");
   PetscCall(ar.Value("removed", removed_));
+  PetscCall(ar.Value("dies_removed", dies_removed_));
   PetscCall(ar.Value("predict", predict_));
   PetscCall(ar.Value("settled", settled_));
   PetscCall(ar.Value("f_small", f_small_));

@@ -7,27 +7,32 @@
 
 namespace tf {
 
-Projection ContactSet::ProjectNearest(const Vec2 &x, int &k) const
+Projection ContactSet::ProjectNearest(PetscInt node, int &k) const
 {
   Projection best;
   k = -1;
   for (int t = 0; t < (int)tools_.size(); ++t) {
-    const Projection pr = tools_[t].Project(x);
+    if (!MayTouch(node, t)) continue;
+    const Projection pr = tools_[t].Project(Position(node));
     if (pr.segment >= 0 && (k < 0 || pr.gap < best.gap)) best = pr, k = t;
   }
   return best;
 }
 
-void ContactSet::Setup(Mesh &mesh, System &system, const std::vector<double> &x, ContactSpec spec)
+PetscErrorCode ContactSet::Setup(Mesh &mesh, System &system, const std::vector<double> &x, ContactSpec spec)
 {
+  PetscFunctionBeginUser;
   mesh_ = &mesh;
   system_ = &system;
   x_body_ = &x;
   tools_ = std::move(spec.tools);
+  num_dies_ = (int)tools_.size();
   prm_ = spec.params;
-  removed_ = false;
+  removed_ = dies_removed_ = false;
   const PetscInt n = mesh.num_nodes;
   candidates_ = mesh.node_sets[spec.candidates];
+  die_node_.assign(n, 0);
+  for (PetscInt node : candidates_) die_node_[node] = 1;
   contact_.assign(n, 0);
   released_.assign(n, 0);
   frozen_.assign(n, 0);
@@ -43,6 +48,38 @@ void ContactSet::Setup(Mesh &mesh, System &system, const std::vector<double> &x,
   pending_.assign(n, Vec2{0, 0});
   l_.assign(n, Vec2{-1, 0});
   SetSymmetry(spec.symmetry);
+  PetscCall(SetupWalls(spec));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::SetupWalls(const ContactSpec &spec)
+{
+  PetscFunctionBeginUser;
+  const PetscInt n = mesh_->num_nodes;
+  surfaces_ = spec.surfaces;
+  surface_node_.assign(n, 0);
+  held_on_.clear();
+  double size = 0;
+  for (double c : mesh_->x0) size = std::max(size, std::abs(c));
+  PetscCallMPI(MPI_Allreduce(&size, &size_, 1, MPI_DOUBLE, MPI_MAX, comm()));
+  if (spec.walls.empty()) PetscFunctionReturn(PETSC_SUCCESS);
+  // The surfaces' nodes join the candidates (after the scene's, in their order).
+  for (const std::string &set : spec.surfaces)
+    for (PetscInt node : mesh_->node_sets[set]) {
+      if (!die_node_[node] && !surface_node_[node]) candidates_.push_back(node);
+      surface_node_[node] = 1;
+    }
+  for (const std::string &set : spec.walls) {
+    const auto held =
+      std::find_if(spec.symmetry.begin(), spec.symmetry.end(), [&](const auto &s) { return s.first == set; });
+    PetscCheck(held != spec.symmetry.end(), comm(), PETSC_ERR_PLIB, "the symmetry wall %s is no symmetry plane",
+               set.c_str());
+    // (a line far past the body either way: a node beyond the other plane still finds it)
+    tools_.push_back(SymmetryWall(held->second, kWallReach * (1 + size_), "symmetry-" + set));
+    held_on_.emplace_back(n, 0);
+    for (PetscInt node : mesh_->node_sets[set]) held_on_.back()[node] = 1;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 void ContactSet::SetSymmetry(const std::vector<std::pair<std::string, Vec2>> &symmetry)
@@ -68,6 +105,7 @@ PetscErrorCode ContactSet::Initialize()
   } inside = {0.0, -1}, deepest;
   for (PetscInt node : candidates_)
     for (int k = 0; k < (int)tools_.size(); ++k) {
+      if (!MayTouch(node, k)) continue;
       const Projection pr = tools_[k].Project(Position(node));
       if (pr.segment >= 0 && std::abs(pr.gap) <= tol && !contact_[node]) contact_[node] = 1, tool_of_[node] = k;
       if (pr.segment >= 0 && -pr.gap > std::max(tol, inside.depth))

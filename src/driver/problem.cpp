@@ -141,7 +141,7 @@ PetscErrorCode Problem::Open(ResultWriter &writer)
   PetscCall(scene_->Initialize(*model_, tools));
   if (!tools.candidates.empty()) {
     contact_ = std::make_unique<ContactSet>();
-    contact_->Setup(mesh_, system_, body_.position(), std::move(tools));
+    PetscCall(contact_->Setup(mesh_, system_, body_.position(), std::move(tools)));
     contact_->SetBalanced(opt_.equilibrium_tol > 0);
     PetscCall(contact_->Initialize());
     model_->contact = contact_.get();

@@ -12,6 +12,7 @@
 
 #include "tubeform/core/signals.hpp"
 #include "tubeform/driver/problem.hpp"
+#include "tubeform/metrics/crossing.hpp"
 
 namespace tf {
 
@@ -155,6 +156,47 @@ PetscErrorCode Problem::StopAfter(Stop &stop, bool &wrote_last)
                       balance ? "equilibrium" : "friction", (int)unsettled_run_, kMaxCuts,
                       balance ? "-equilibrium_tol" : "-friction_tol", Where().c_str());
   }
+  if (stop.why.empty() && contact_) {
+    PetscCall(StopOnCrossing(stop));
+    if (!stop.why.empty()) wrote_last = false; // (the state that crossed is written)
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::StopOnCrossing(Stop &stop)
+{
+  PetscFunctionBeginUser;
+  PlaneCrossing p;
+  PetscCall(contact_->Crossing(p));
+  if (p.depth > p.tol) {
+    // A symmetry wall by its plane, a tool by its name.
+    const auto name = [&](int k) {
+      if (k < contact_->num_tools()) return "the " + contact_->tool(k).name;
+      const Vec2 n = contact_->tool(k).segments[0].n_line;
+      return std::string(std::abs(n[0]) > std::abs(n[1]) ? "its symmetry plane x = 0" : "its symmetry plane y = 0");
+    };
+    stop.code = PETSC_ERR_NOT_CONVERGED;
+    const std::string at =
+      Format("the tube's wall lies %.3g mm beyond %s at (%.4g, %.4g)", p.depth, name(p.tool).c_str(), p.x[0], p.x[1]);
+    if (p.held >= 0)
+      stop.why = Format("%s, where it touches %s: a node touches one tool or symmetry plane at a time, and the wall is "
+                        "pinched between them there (%s)",
+                        at.c_str(), name(p.held).c_str(), Where().c_str());
+    else if (!contact_->active())
+      stop.why = Format("%s: the springback (-unload reverse) took the symmetry planes' support with the dies, as "
+                        "the wall did not touch them at the end of the loading (%s)",
+                        at.c_str(), Where().c_str());
+    else
+      stop.why = Format("%s, which it does not touch (%s)", at.c_str(), Where().c_str());
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  SelfCrossing c;
+  PetscCall(SurfaceSelfCrossing(mesh_, body_.position(), contact_->surfaces(), c));
+  if (!c.found) PetscFunctionReturn(PETSC_SUCCESS);
+  stop.code = PETSC_ERR_NOT_CONVERGED;
+  stop.why = Format("the tube's wall meets itself at (%.4g, %.4g) (its surface between nodes %ld and %ld crosses "
+                    "that between %ld and %ld), which the solver does not model as contact (%s)",
+                    c.at[0], c.at[1], c.nodes[0], c.nodes[1], c.nodes[2], c.nodes[3], Where().c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

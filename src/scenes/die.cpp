@@ -261,7 +261,7 @@ PetscErrorCode WarnUntouched(MPI_Comm comm, const ContactSet &contact, const cha
 {
   PetscInt touching;
   PetscFunctionBeginUser;
-  PetscCall(contact.Count(touching));
+  PetscCall(contact.Count(touching, false));
   if (touching == 0)
     PetscCall(PetscPrintf(comm,
                           "tubeform: warning: the %s pass's dies never touched the tube (at U = %g mm they are not "

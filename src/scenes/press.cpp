@@ -87,6 +87,10 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   }
   hold_.PinSlide(held_[0]);
   tools.symmetry = Symmetry();
+  // The wall meets its mirror image on the quarter's and the half model's symmetry planes: frictionless walls.
+  tools.surfaces = {"outer", "inner"};
+  if (!full_)
+    for (const auto &s : tools.symmetry) tools.walls.push_back(s.first);
   // Default VCRI: 2 % of the mean distance between the outer surface's nodes
   // (of the mesh actually used: generated or read from a file).
   double length = 0;
@@ -131,7 +135,7 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
                             Formatted("%.4g", stroke2_ + StartBack()).c_str(), Formatted("%g", stroke2_).c_str(),
                             Formatted("%.4g", Pass2Start()).c_str(), Formatted("%.4g", Pass2End()).c_str()));
     if (pinned_) PetscCall(ChoosePin(m));
-    m.contact->Setup(m.mesh, m.system, m.body.position(), spec);
+    PetscCall(m.contact->Setup(m.mesh, m.system, m.body.position(), spec));
     m.contact->SetStroke(0.0);
     PetscCall(m.contact->Initialize());
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -141,10 +145,10 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
   // The paper's unloading: contact forces become loads, tools go (every point elastic by default: ElasticRelease).
   if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
   PetscCall(VecZeroEntries(reversed_));
-  PetscCall(m.contact->AddContactForces(reversed_));
+  PetscCall(m.contact->AddContactForces(reversed_, true));    // (a symmetry wall's force stays: it is the tube's own)
   if (held_[pass_]) PetscCall(hold_.AddForces(m, reversed_)); // (its couple falls with them)
   PetscCall(m.contact->TotalForce(kUpper, reversed_total_, &reversed_moment_));
-  m.contact->Remove();
+  PetscCall(m.contact->Remove());
   m.system.ClearFrames();
   m.body.BeginRelease(elastic, true);
   unloading_ = true;
@@ -187,7 +191,7 @@ PetscErrorCode PressScene::Load(Model &m, double lambda, double dlambda)
   if (pinned_ && !unloading_) {
     // The second pass of the half model: the pin holds the tube until its dies do.
     PetscInt touching;
-    PetscCall(m.contact->Count(touching));
+    PetscCall(m.contact->Count(touching, false));
     pinned_ = touching == 0;
   }
   const Vec2 pin_dir = PassMap(pass_)({0, 1}); // (the press's y)

@@ -320,6 +320,20 @@ Tool BuildFlatPlate(double y0, double x0, double x1, bool floor)
   return t;
 }
 
+Tool SymmetryWall(const Vec2 &normal, double reach, const std::string &name)
+{
+  Tool t;
+  t.name = name;
+  t.direction = {0, 0};
+  Segment s;
+  const Vec2 along = TangentOf(normal); // (its points have no component along the normal: gaps are exact)
+  s.a = Scale(along, -reach);
+  s.b = Scale(along, reach);
+  s.n_line = normal;
+  t.segments.push_back(s);
+  return t;
+}
+
 double StrokeForCornerRadius(double ro, double rc, double angle)
 {
   // The cavity is a rhombus of vertical half-diagonal D = h - U and sides D / cos(half); rounding each corner

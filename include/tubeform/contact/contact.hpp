@@ -54,6 +54,9 @@ constexpr double kRelax = 0.5;
 // quasi-static step is released in the trial rather than cutting the step
 // (round-off; with inertia the controller passes its shortest step instead).
 constexpr double kReleaseWithin = 1e-9;
+// A symmetry wall reaches this many times the body's size either way along its plane (a folded wall stays far
+// inside it).
+constexpr double kWallReach = 4;
 
 struct ContactParams {
   double mu = 0;           // Coulomb coefficient
@@ -85,22 +88,52 @@ struct ContactSpec {
   std::string candidates; // the node set that may touch the tools (e.g. "outer")
   // Node sets whose component along a global axis is held (e.g. x0 -> (1, 0)).
   std::vector<std::pair<std::string, Vec2>> symmetry;
+  // The body's surfaces (node and edge sets, e.g. outer and inner): their nodes touch the symmetry walls, and
+  // their edges must not cross each other (the driver's watch of the wall meeting itself).
+  std::vector<std::string> surfaces;
+  // The sets of `symmetry` held on a plane through the origin that the body may not cross (the quarter's and the
+  // half model's, where the tube meets its mirror image): each plane is a fixed frictionless wall after the tools,
+  // touched by the nodes of `surfaces` not held on it.
+  std::vector<std::string> walls;
   ContactParams params;
 };
 
+// Where the body lies beyond a tool or wall it does not touch (ContactSet::Crossing): a node touches one at a time,
+// so one held on a symmetry wall passes through a die that reaches it, one on a die through the wall; and the
+// springback that took the walls with the dies (none touched at the end of the loading) lets a node past them.
+struct PlaneCrossing {
+  double depth = 0; // how far the deepest node lies beyond it (mm; 0: none)
+  int tool = -1;    // the tool's index (ContactSet::tool; a symmetry wall from num_tools() on; -1: none)
+  int held = -1;    // the tool the node touches (-1: none)
+  long node = -1;   // its input number
+  Vec2 x{0, 0};     // where it is
+  double tol = 0;   // the depth the set counts as a crossing: kCrossingTol of the body's size
+};
+// A node beyond a wall by more than this fraction of the body's size (its largest coordinate) has crossed it:
+// 100 times the deepest penetration of a die seen with steps re-solved to their events (7e-7), below a hundredth
+// of the thinnest wall the presets take (t / Ro >= 1 / 100).
+constexpr double kCrossingTol = 1e-4;
+
 class ContactSet : public ExtraUnknown {
 public:
-  // `x`: the body's current coordinates (2 per local node), read at each call.
-  void Setup(Mesh &mesh, System &system, const std::vector<double> &x, ContactSpec spec);
+  // Collective. `x`: the body's current coordinates (2 per local node), read at each call.
+  PetscErrorCode Setup(Mesh &mesh, System &system, const std::vector<double> &x, ContactSpec spec);
   PetscErrorCode Initialize(); // nodes touching the tool at stroke 0
 
-  // The tools are removed (the paper's unloading): every node is released and
-  // the set takes no further part in the increments.
-  void Remove();
+  // Collective. The tools are removed (the paper's unloading): every node is released and the set takes no further
+  // part in the increments; but where the body touches a symmetry wall at that moment (the wall pressed on its
+  // mirror image), only the scene's tools go: the walls and their contact nodes stay through the springback.
+  PetscErrorCode Remove();
   bool active() const { return !removed_; }
   // The tools of a restart inside a stage whose tools are not the first ones (called before Persist reads the
   // set's state, their strokes included: their number may differ from the first stage's).
-  void ReplaceTools(std::vector<Tool> tools) { tools_ = std::move(tools); }
+  // The symmetry walls stay after them.
+  void ReplaceTools(std::vector<Tool> tools)
+  {
+    tools.insert(tools.end(), tools_.begin() + num_dies_, tools_.end());
+    num_dies_ = (int)(tools.size() - (tools_.size() - num_dies_));
+    tools_ = std::move(tools);
+  }
   // The node sets whose component along a direction the scene holds (ContactSpec::symmetry), in place of the
   // set's (a pass that turns the tube turns the full model's pins).
   void SetSymmetry(const std::vector<std::pair<std::string, Vec2>> &symmetry);
@@ -113,8 +146,8 @@ public:
   }
   bool has_pad() const
   {
-    for (const Tool &t : tools_)
-      if (t.pad) return true;
+    for (int k = 0; k < num_dies_ && !dies_removed_; ++k)
+      if (tools_[k].pad) return true;
     return false;
   }
   // The force-controlled tool's force along its direction at the end of a step, from the scene's target at its
@@ -183,8 +216,9 @@ public:
   // The forces of the contact nodes (normal and friction), owned nodes, global frame, added to f.
   PetscErrorCode AddNodeForces(Vec f) const;
   // Every force the tool still puts on the body (contact nodes and the pending
-  // forces of released ones), owned nodes, global frame, added to f.
-  PetscErrorCode AddContactForces(Vec f) const;
+  // forces of released ones), owned nodes, global frame, added to f; with `dies_only`, not the symmetry walls'
+  // (the springback's loads: Remove keeps the walls).
+  PetscErrorCode AddContactForces(Vec f, bool dies_only = false) const;
   // The pending forces of released nodes (owned nodes, global frame) added to
   // f: applied loads until the following increments have removed them.
   PetscErrorCode AddPendingForces(Vec f) const;
@@ -192,7 +226,8 @@ public:
   // asked, its moment about the tool frame's origin (Tool::origin) at the current stroke (counter-clockwise positive, N
   // mm/mm).
   PetscErrorCode TotalForce(int k, double force[2], double *moment = nullptr) const;
-  PetscErrorCode Count(PetscInt &n) const;
+  // Collective: the nodes in contact (with `walls`, those on the symmetry walls too).
+  PetscErrorCode Count(PetscInt &n, bool walls = true) const;
   // Collective: the largest moment about c the contact nodes' friction could put on the body, each sliding along
   // its tool with mu |f_n| (N mm/mm; the rotation hold's yardstick, scenes/hold.hpp).
   PetscErrorCode FrictionMoment(const Vec2 &c, double &capacity) const;
@@ -205,6 +240,8 @@ public:
   // Collective: largest penetration (>= 0) of a candidate node into the tool (mm)
   // (Commit reports it for every increment; this is for the initial state).
   PetscErrorCode Penetration(double &penetration) const;
+  // Collective: the node deepest beyond a tool or symmetry wall it may touch and does not (PlaneCrossing).
+  PetscErrorCode Crossing(PlaneCrossing &c) const;
   // Collective: the largest difference between a contact node's stored normal
   // force and the normal component (in its frame after the last commit) of
   // the force the body needs there (f_net = f_int - f_applied, ghost-summed local vector),
@@ -220,7 +257,10 @@ public:
   // The tool a node touches (or, free, the one it is nearest to) and the segment of it.
   int ToolOf(PetscInt node) const { return tool_of_[node]; }
   int Segment(PetscInt node) const { return segment_[node]; }
-  int num_tools() const { return (int)tools_.size(); }
+  // The scene's tools (tool(k), k < num_tools()), then the symmetry walls (num_walls()).
+  int num_tools() const { return num_dies_; }
+  int num_walls() const { return (int)tools_.size() - num_dies_; }
+  const std::vector<std::string> &surfaces() const { return surfaces_; }
   const Tool &tool(int k) const { return tools_[k]; }
   bool friction() const { return prm_.mu > 0; }
   const ContactParams &params() const { return prm_; }
@@ -235,9 +275,15 @@ private:
   Mesh *mesh_ = nullptr;
   System *system_ = nullptr;
   const std::vector<double> *x_body_ = nullptr;
-  std::vector<Tool> tools_;
+  std::vector<Tool> tools_; // the scene's (num_dies_), then the symmetry walls
+  int num_dies_ = 0;
   ContactParams prm_;
+  std::vector<std::string> surfaces_;
+  std::vector<char> die_node_, surface_node_; // a candidate of the scene's tools; a node of the surfaces
+  std::vector<std::vector<char>> held_on_;    // per wall: the node is held on its plane (it touches it not)
+  double size_ = 0;                           // the body's largest coordinate at the start (mm)
   bool removed_ = false;
+  bool dies_removed_ = false; // the scene's tools are gone, the symmetry walls stay (Remove)
   bool balanced_ = false;
   double resolution_ = 0;
   std::vector<PetscInt> candidates_;
@@ -263,10 +309,16 @@ private:
   std::vector<Vec2> pending_;
 
   MPI_Comm comm() const { return mesh_->comm; }
-  // Friction acts along l: not on a node whose both components are held.
+  // Friction acts along l: not on a node whose both components are held, nor on a symmetry wall.
   bool Frictional(PetscInt node) const
   {
-    return !global_frame_[node] && sym_dir_[node][0] == 0 && sym_dir_[node][1] == 0;
+    return !global_frame_[node] && sym_dir_[node][0] == 0 && sym_dir_[node][1] == 0 && tool_of_[node] < num_dies_;
+  }
+  // Whether a node may touch tool k: the scene's candidates its tools, the surfaces' nodes not held on a wall's
+  // plane that wall.
+  bool MayTouch(PetscInt node, int k) const
+  {
+    return k < num_dies_ ? die_node_[node] && !dies_removed_ : surface_node_[node] && !held_on_[k - num_dies_][node];
   }
   bool SlipFree(PetscInt node) const { return contact_[node] && Frictional(node); }
   Vec2 Position(PetscInt node) const { return {(*x_body_)[2 * node], (*x_body_)[2 * node + 1]}; }
@@ -280,9 +332,11 @@ private:
   static int HeldComponent(const Vec2 &s) { return std::abs(s[0]) > std::abs(s[1]) ? 0 : 1; }
   // Frame, gap and curvature of a contact node from its projection on tool k.
   void TakeFrame(PetscInt node, int k, const Projection &pr);
-  // A point's projection on the nearest tool (the smallest gap among the
+  // A node's projection on the nearest tool it may touch (the smallest gap among the
   // tools it projects on; segment -1 and k = -1 if none).
-  Projection ProjectNearest(const Vec2 &x, int &k) const;
+  Projection ProjectNearest(PetscInt node, int &k) const;
+  // The symmetry walls of spec (after the tools) and the nodes that touch them.
+  PetscErrorCode SetupWalls(const ContactSpec &spec);
   // The motion per unit stroke of the tool a node touches (or was released from).
   const Vec2 &Direction(PetscInt node) const { return tools_[tool_of_[node]].direction; }
   // The component along its tool's direction of a contact force f_n n + f_l l on a node.

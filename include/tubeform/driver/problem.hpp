@@ -138,6 +138,9 @@ private:
   // diverged, friction that does not settle (wrote_last: whether the last
   // fields written stand for the last state).
   PetscErrorCode StopAfter(Stop &stop, bool &wrote_last);
+  // ... and the tube's wall where the model cannot hold it: past a symmetry plane (ContactSet::Crossing), or
+  // crossing itself (metrics/crossing.hpp).
+  PetscErrorCode StopOnCrossing(Stop &stop);
   // A checkpoint; one that cannot be written stops the run (stop.why).
   PetscErrorCode Checkpoint(ResultWriter &writer, const OutputSchedule &output, Stop &stop);
   // Step 7 (src/driver/finish.cpp): the answer; the results final (written,

@@ -156,6 +156,10 @@ Tool MirrorX(const Tool &t);
 // indices stay): the whole tool a full model presses with.
 Tool BothSides(const Tool &t);
 
+// A symmetry plane through the origin as a wall that does not move (direction 0): the line of the points x with
+// x . normal = 0, from -reach to reach along it, the body on the side `normal` (a unit vector) points to.
+Tool SymmetryWall(const Vec2 &normal, double reach, const std::string &name);
+
 // The paper's stroke rule: the stroke at which a rounded rhombus (a square at
 // 90 degrees) of corner radius rc, its sides on the closed dies' flanks, has
 // the perimeter of the tube's outer circle 2 pi ro.
