@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots a tubeform result: load vs stroke (left) and the shapes (right): the
+"""Plots a tubeform result: load vs stroke (left; with the error estimate, its band) and the shapes (right): the
 initial mesh (grey), the loaded shape coloured by von Mises stress, and, when
 the run unloads, the shape after springback (red outline). A tool scene's
 tools are drawn where they were at the loaded state (from the result file's
@@ -54,7 +54,13 @@ def main(path, png):
         # From the row before, so that a few long unloading steps still start at the peak.
         rows = np.concatenate(([rows[0] - 1], rows)) if rows[0] > 0 and st > 0 else rows
         ax1.plot(hist["stroke"][rows], hist["load"][rows], style, color=color, label=label)
-    if (stage > 0).any():
+        if "error_load" in hist and st % 2 == 0:
+            # The run's estimate of its error, row by row (docs/accuracy.md, "The error estimate").
+            e = np.nan_to_num(hist["error_load"][rows])
+            u, p = hist["stroke"][rows], hist["load"][rows]
+            ax1.fill_between(u, p * (1 - e), p * (1 + e), color=color, alpha=0.2, lw=0,
+                             label="estimated error" if st == 0 else None)
+    if (stage > 0).any() or "error_load" in hist:
         ax1.legend()
     xlabel, ylabel = "stroke U (mm)", "punch load, full tube (N/mm)"
     if scene == "pressure":

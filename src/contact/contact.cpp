@@ -27,11 +27,10 @@ double ContactSet::SlipFrom(PetscInt node, const Vec2 &u, double dU, const Vec2 
 
 PetscErrorCode ContactSet::Remove()
 {
-  int mine = 0, walls;
   PetscFunctionBeginUser;
-  for (PetscInt node : candidates_) mine |= contact_[node] && tool_of_[node] >= num_dies_;
-  PetscCallMPI(MPI_Allreduce(&mine, &walls, 1, MPI_INT, MPI_MAX, comm()));
-  // (the nodes on a symmetry wall keep their state: the wall stays)
+  // The symmetry walls stay, and the nodes on them keep their state: they are the tube's own mirror image, which
+  // the springback does not release (a wall no node touches at the end of loading may be met in the springback).
+  const bool walls = num_walls() > 0;
   for (PetscInt node : candidates_)
     if (!walls || tool_of_[node] < num_dies_) contact_[node] = 0, fn_[node] = x_[node] = 0;
   std::fill(released_.begin(), released_.end(), 0);

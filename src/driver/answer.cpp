@@ -181,13 +181,20 @@ std::vector<std::pair<std::string, double>> AnswerAttributes(const Answer &a)
 }
 
 std::vector<std::pair<std::string, std::vector<double>>> ErrorColumns(const std::vector<HistoryRow> &rows,
-                                                                      const Companions &c)
+                                                                      const Companions &c, const Answer &a)
 {
   const std::vector<HistoryRow> &mesh = c.mesh.empty() ? rows : c.mesh;
-  std::vector<double> load(rows.size(), std::nan("")), ct(rows.size(), std::nan(""));
+  std::vector<double> load(rows.size(), kNoEstimate), ct(rows.size(), kNoEstimate);
   for (size_t k = 0; k < rows.size(); ++k) {
     const HistoryRow &r = rows[k];
-    if (std::fmod(r.stage, 2.0) != 0) continue; // (a release)
+    const size_t p = (size_t)(r.stage / 2);
+    if (std::fmod(r.stage, 2.0) != 0) { // a release: the estimate of the loaded state it releases
+      if (p < a.passes.size() && a.passes[p].estimated) {
+        const PassAnswer &s = a.passes[p];
+        load[k] = s.load_error.back(), ct[k] = std::max(s.ct_error.back(), s.ct_unloaded_error);
+      }
+      continue;
+    }
     const auto coarse = Stage(mesh, r.stage), stepped = Stage(c.steps, r.stage);
     if (coarse.empty() || stepped.empty() ||
         r.stroke > std::min(coarse.back()->stroke, stepped.back()->stroke) + kStrokeMatch)

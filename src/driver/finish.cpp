@@ -89,7 +89,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
       }
       std::string why;
       if (!opt_.output.empty())
-        PetscCall(AddResultEstimate(comm_, opt_.output, extra, ErrorColumns(history_.rows(), companions), why));
+        PetscCall(AddResultEstimate(comm_, opt_.output, extra, ErrorColumns(history_.rows(), companions, answer), why));
       if (!why.empty())
         PetscCall(PetscPrintf(comm_,
                               "tubeform: the error estimate is not in %s (%s): it holds the results without it\n",

@@ -182,10 +182,6 @@ PetscErrorCode Problem::StopOnCrossing(Stop &stop)
       stop.why = Format("%s, where it touches %s: a node touches one tool or symmetry plane at a time, and the wall is "
                         "pinched between them there (%s)",
                         at.c_str(), name(p.held).c_str(), Where().c_str());
-    else if (!contact_->active())
-      stop.why = Format("%s: the springback (-unload reverse) took the symmetry planes' support with the dies, as "
-                        "the wall did not touch them at the end of the loading (%s)",
-                        at.c_str(), Where().c_str());
     else
       stop.why = Format("%s, which it does not touch (%s)", at.c_str(), Where().c_str());
     PetscFunctionReturn(PETSC_SUCCESS);

@@ -106,10 +106,12 @@ struct Companions {
 
 // The answer of a history (companions: the estimate's, or null).
 Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const Companions *companions);
-// The estimate row by row (loading rows; a release's rows NaN, its end is the pass's error_unloaded_c_over_t): the
-// relative load error and the C/t error, as /history columns error_load and error_c_over_t.
+// The estimate row by row, as /history columns error_load (relative) and error_c_over_t: a loading row's from the
+// companions at its stroke; a release's rows the estimate of the loaded state they release (its load's, and the
+// larger of its C/t's and the sprung-back C/t's); kNoEstimate where a companion did not reach.
+constexpr double kNoEstimate = -1; // (no error is negative: the value says "none" without a NaN in the results)
 std::vector<std::pair<std::string, std::vector<double>>> ErrorColumns(const std::vector<HistoryRow> &rows,
-                                                                      const Companions &companions);
+                                                                      const Companions &companions, const Answer &a);
 // As HDF5 attributes of /history (the second pass's prefixed pass2_).
 std::vector<std::pair<std::string, double>> AnswerAttributes(const Answer &a);
 // Collective: the answer's lines on rank 0. An estimate over its targets is

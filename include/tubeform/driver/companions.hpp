@@ -1,0 +1,30 @@
+// One run of a case, as tubeform's main runs it, and the error estimate's
+// companion runs (driver/answer.hpp, Companions): on 2 ranks or more the two
+// companions run side by side, each on its half of the ranks.
+#pragma once
+
+#include <petscsys.h>
+
+#include <vector>
+
+#include "tubeform/driver/answer.hpp"
+#include "tubeform/driver/problem.hpp"
+#include "tubeform/driver/refine.hpp"
+#include "tubeform/io/options.hpp"
+
+namespace tf {
+
+// Collective on comm: one run of `opt` (quiet: a companion's, whose options nothing reads are not checked); rows:
+// its history, refinement: what follows it (accuracy on demand), when it ends. Its error comes back with the
+// message it raised, taken before the run's clean-up (a result file closed on a full disk) can raise errors of
+// its own whose messages would replace it.
+PetscErrorCode RunOnce(MPI_Comm comm, const Options &opt, bool quiet, const Problem::CompanionRun &companion,
+                       std::vector<HistoryRow> *rows, Refinement *refinement = nullptr);
+
+// Collective on comm: the estimate's two companions of the run that ran with `ran` (its element and friction
+// regularization fixed), once its results are final: `mesh` on half the cells through the wall and around at the
+// run's increment limits (a mesh file is kept: it would be the run itself, and is not run), `steps` on the cells
+// of `mesh` at twice those limits. Their histories in `out` on every rank.
+PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out);
+
+} // namespace tf

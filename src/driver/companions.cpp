@@ -1,0 +1,142 @@
+#include "tubeform/driver/companions.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+#include <type_traits>
+
+#include "tubeform/core/core.hpp"
+#include "tubeform/core/job_end.hpp"
+#include "tubeform/io/options_left.hpp"
+
+namespace tf {
+
+namespace {
+
+// The companions keep at least 2 cells through the wall: with one, a bending wall's answer is off by an order more
+// than the run's (the fast preset's 2 x 64 case: a load difference of 4 % for a 4 % error, 0.09 in C/t for 0.01).
+constexpr PetscInt kCompanionMinNt = 2;
+
+// A companion's options: `ran`'s, writing no file, quiet, estimating nothing.
+Options Quiet(const Options &ran)
+{
+  Options c = ran;
+  c.output.clear(), c.history_csv.clear(); // no files: nothing of it is left behind, whatever ends it
+  c.checkpoint.clear(), c.restart.clear();
+  c.checkpoint_every = 0;
+  c.progress = 0, c.monitor = PETSC_FALSE;
+  c.output_every = std::numeric_limits<int>::max(), c.output_stroke = 0;
+  c.error_estimate = PETSC_FALSE;
+  c.target_load = c.target_c_over_t = 0;
+  return c;
+}
+
+// One companion run on comm: its history in `rows`, its wall time in `seconds`.
+PetscErrorCode RunCompanion(MPI_Comm comm, const Options &c, std::vector<HistoryRow> &rows, double &seconds)
+{
+  PetscFunctionBeginUser;
+  const double t0 = MPI_Wtime();
+  PetscCall(RunOnce(comm, c, true, nullptr, &rows));
+  seconds = MPI_Wtime() - t0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Collective on comm: `rows` and `seconds` of rank `root` on every rank.
+PetscErrorCode Share(MPI_Comm comm, int root, std::vector<HistoryRow> &rows, double &seconds)
+{
+  static_assert(std::is_trivially_copyable_v<HistoryRow> && sizeof(HistoryRow) % sizeof(double) == 0,
+                "a history row travels as doubles");
+  double head[2] = {(double)rows.size(), seconds};
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Bcast(head, 2, MPI_DOUBLE, root, comm));
+  rows.resize((size_t)head[0]), seconds = head[1];
+  const int n = (int)(rows.size() * sizeof(HistoryRow) / sizeof(double));
+  if (n > 0) PetscCallMPI(MPI_Bcast(reinterpret_cast<double *>(rows.data()), n, MPI_DOUBLE, root, comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Collective on comm (2 ranks or more): the two companions side by side, `mesh` on the first half of the ranks,
+// `steps` on the second; each half's error comes back on its own ranks, the others' histories then being empty.
+PetscErrorCode SideBySide(MPI_Comm comm, const Options &mesh, const Options &steps, Companions &out, double *seconds)
+{
+  PetscMPIInt rank, size;
+  MPI_Comm half;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  const int color = rank < size / 2 ? 0 : 1, second_root = size / 2;
+  PetscCallMPI(MPI_Comm_split(comm, color, rank, &half));
+  const PetscErrorCode failed =
+    color == 0 ? RunCompanion(half, mesh, out.mesh, seconds[0]) : RunCompanion(half, steps, out.steps, seconds[1]);
+  const std::string why = failed ? ErrorText(failed) : "";
+  PetscCallMPI(MPI_Comm_free(&half));
+  int ok = !failed, all = 0;
+  PetscCallMPI(MPI_Allreduce(&ok, &all, 1, MPI_INT, MPI_MIN, comm));
+  PetscCheck(!failed, PETSC_COMM_SELF, failed, "%s", why.c_str());
+  if (!all) { // (the other half's error: it says it; these ranks' histories go unused)
+    out = Companions{};
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(Share(comm, 0, out.mesh, seconds[0]));
+  PetscCall(Share(comm, second_root, out.steps, seconds[1]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace
+
+PetscErrorCode RunOnce(MPI_Comm comm, const Options &opt, bool quiet, const Problem::CompanionRun &companion,
+                       std::vector<HistoryRow> *rows, Refinement *refinement)
+{
+  std::string why;
+  PetscErrorCode failed;
+  PetscFunctionBeginUser;
+  {
+    Problem problem;
+    if (quiet) problem.SetQuiet();
+    failed = problem.Setup(comm, opt);
+    // (the run's options nothing reads: an error before anything is written)
+    if (!failed && !quiet) failed = CheckOptionsLeft(comm, opt, problem.system().ndofs(), problem.system().redundant());
+    if (!failed && companion) problem.SetCompanion(companion);
+    if (!failed) failed = problem.Run();
+    if (failed) why = ErrorText(failed);
+    if (!failed && rows) *rows = problem.history().rows();
+    if (!failed && refinement) *refinement = problem.refinement();
+  }
+  PetscCheck(!failed, PETSC_COMM_SELF, failed, "%s", why.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out)
+{
+  Options mesh = Quiet(ran);
+  double seconds[2] = {0, 0};
+  PetscMPIInt size;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  const bool coarsen = ran.mesh_file.empty();
+  out.mesh_share = ran.element == fe::Formulation::QM6Bar ? kMeshShareQM6Bar : kMeshShareQM6;
+  if (coarsen) {
+    mesh.mesh_nt = std::max<PetscInt>(kCompanionMinNt, ran.mesh_nt / 2);
+    mesh.mesh_ntheta = std::max<PetscInt>(4, 2 * (ran.mesh_ntheta / 4));
+  }
+  Options steps = mesh;
+  steps.increments = std::max<PetscInt>(1, ran.increments / 2);
+  steps.rmin_deps = 2 * ran.rmin_deps, steps.rmin_deps_yield = 2 * ran.rmin_deps_yield;
+  steps.rmin_domega = 2 * ran.rmin_domega;
+  if (coarsen && size >= 2) {
+    PetscCall(SideBySide(comm, mesh, steps, out, seconds));
+    if (!out.Ran()) PetscFunctionReturn(PETSC_SUCCESS);
+  } else {
+    if (coarsen) PetscCall(RunCompanion(comm, mesh, out.mesh, seconds[0]));
+    PetscCall(RunCompanion(comm, steps, out.steps, seconds[1]));
+  }
+  const std::string cells =
+    coarsen ? Formatted("%d x %d cells at the run's increments (%.1f s), and there at twice their limits",
+                        (int)mesh.mesh_nt, (int)mesh.mesh_ntheta, seconds[0])
+            : std::string("the mesh file's cells at twice the run's increment limits");
+  PetscCall(PetscPrintf(comm, "tubeform: companion runs for the error estimate: %s (%.1f s)%s\n", cells.c_str(),
+                        seconds[1], coarsen && size >= 2 ? ", side by side" : ""));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
