@@ -81,11 +81,10 @@ PassAnswer SummarizePass(const std::vector<HistoryRow> &rows, bool tool, int p)
 // Strokes this close (mm) are one: the companions end where the run ends, up to round-off.
 constexpr double kStrokeMatch = 1e-9;
 
-// The estimate of a value from the run's and the companions' (kStepShare; `share` the mesh's), its parts apart;
-// relative to `scale`.
-ErrorParts Estimate(double share, double run, double mesh, double steps, double scale = 1)
+// The estimate of a value from the run's and the companions' (kStepShare), its parts apart; relative to `scale`.
+ErrorParts Estimate(double run, double mesh, double steps, double scale = 1)
 {
-  return {share * std::abs(mesh - run) / scale, kStepShare * std::abs(steps - mesh) / scale};
+  return {kMeshShare * std::abs(mesh - run) / scale, kStepShare * std::abs(steps - mesh) / scale};
 }
 
 // The pass's estimate from the companions' same pass (none when a companion did not reach it).
@@ -97,10 +96,10 @@ void EstimatePass(PassAnswer &a, const std::vector<HistoryRow> &rows, const Comp
   a.estimated = true;
   for (size_t k = 0; k < a.strokes.size(); ++k) {
     const double u = a.strokes[k], load = a.loads[k];
-    a.load_parts.push_back(Estimate(c.mesh_share, load, At(coarse, &HistoryRow::load, u),
-                                    At(stepped, &HistoryRow::load, u), std::max(std::abs(load), kTiny)));
-    a.ct_parts.push_back(Estimate(c.mesh_share, a.c_over_t[k], At(coarse, &HistoryRow::c_over_t, u),
-                                  At(stepped, &HistoryRow::c_over_t, u)));
+    a.load_parts.push_back(Estimate(load, At(coarse, &HistoryRow::load, u), At(stepped, &HistoryRow::load, u),
+                                    std::max(std::abs(load), kTiny)));
+    a.ct_parts.push_back(
+      Estimate(a.c_over_t[k], At(coarse, &HistoryRow::c_over_t, u), At(stepped, &HistoryRow::c_over_t, u)));
     a.load_error.push_back(a.load_parts.back().Total());
     a.ct_error.push_back(a.ct_parts.back().Total());
   }
@@ -108,7 +107,7 @@ void EstimatePass(PassAnswer &a, const std::vector<HistoryRow> &rows, const Comp
     return (tool ? LastUpTo(h, 2 * p + 1) : h.back()).c_over_t;
   };
   if (a.springback) {
-    a.ct_unloaded_parts = Estimate(c.mesh_share, a.unloaded.c_over_t, end(mesh), end(c.steps));
+    a.ct_unloaded_parts = Estimate(a.unloaded.c_over_t, end(mesh), end(c.steps));
     a.ct_unloaded_error = a.ct_unloaded_parts.Total();
   }
 }
@@ -199,12 +198,12 @@ std::vector<std::pair<std::string, std::vector<double>>> ErrorColumns(const std:
     if (coarse.empty() || stepped.empty() ||
         r.stroke > std::min(coarse.back()->stroke, stepped.back()->stroke) + kStrokeMatch)
       continue; // (past where a companion reached)
-    load[k] = Estimate(c.mesh_share, r.load, At(coarse, &HistoryRow::load, r.stroke),
-                       At(stepped, &HistoryRow::load, r.stroke), std::max(std::abs(r.load), kTiny))
+    load[k] = Estimate(r.load, At(coarse, &HistoryRow::load, r.stroke), At(stepped, &HistoryRow::load, r.stroke),
+                       std::max(std::abs(r.load), kTiny))
                 .Total();
-    ct[k] = Estimate(c.mesh_share, r.c_over_t, At(coarse, &HistoryRow::c_over_t, r.stroke),
-                     At(stepped, &HistoryRow::c_over_t, r.stroke))
-              .Total();
+    ct[k] =
+      Estimate(r.c_over_t, At(coarse, &HistoryRow::c_over_t, r.stroke), At(stepped, &HistoryRow::c_over_t, r.stroke))
+        .Total();
   }
   return {{"error_load", load}, {"error_c_over_t", ct}};
 }

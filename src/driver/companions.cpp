@@ -114,7 +114,6 @@ PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out)
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
   const bool coarsen = ran.mesh_file.empty();
-  out.mesh_share = ran.element == fe::Formulation::QM6Bar ? kMeshShareQM6Bar : kMeshShareQM6;
   if (coarsen) {
     mesh.mesh_nt = std::max<PetscInt>(kCompanionMinNt, ran.mesh_nt / 2);
     mesh.mesh_ntheta = std::max<PetscInt>(4, 2 * (ran.mesh_ntheta / 4));

@@ -9,18 +9,18 @@ namespace tf {
 
 namespace {
 
-// The ratios that bring the parts of an error `e` within the target `target` (0: none), the mesh's part falling
-// with the cell size to the power `order`: the target shared between
+// The ratios that bring the parts of an error `e` within the target `target` (0: none), each part falling in
+// proportion (driver/answer.hpp, kMeshShare): the target shared between
 // the mesh and the increments, half each (the cheapest split when the cost grows as the cells times the
 // increments), or the whole of it to one part where the other is within its half already.
-void Ratios(const ErrorParts &e, double target, double order, double &mesh, double &steps)
+void Ratios(const ErrorParts &e, double target, double &mesh, double &steps)
 {
   if (target <= 0) return;
   const double aim = kTargetAim * target;
   double m_share = aim / 2, s_share = aim / 2;
   if (e.mesh < m_share) s_share = aim - e.mesh;
   if (e.steps < s_share && e.steps < aim / 2) m_share = aim - e.steps;
-  if (e.mesh > m_share) mesh = std::max(mesh, std::pow(e.mesh / m_share, 1 / order));
+  if (e.mesh > m_share) mesh = std::max(mesh, e.mesh / m_share);
   if (e.steps > s_share) steps = std::max(steps, e.steps / s_share); // (first order)
 }
 
@@ -44,9 +44,8 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
     r.why = Formatted("this was level %d of -target_levels %d", (int)level.level, (int)level.target_levels);
     return r;
   }
-  const double order = level.element == fe::Formulation::QM6Bar ? 2 : 1; // (the estimate's: driver/answer.hpp)
-  Ratios(a.worst_load, load, order, r.mesh_ratio, r.step_ratio);
-  Ratios(a.worst_ct, ct, order, r.mesh_ratio, r.step_ratio);
+  Ratios(a.worst_load, load, r.mesh_ratio, r.step_ratio);
+  Ratios(a.worst_ct, ct, r.mesh_ratio, r.step_ratio);
   if (!level.mesh_file.empty()) r.mesh_ratio = 1; // (a mesh file is as it is)
   r.mesh_ratio = std::min(r.mesh_ratio, kMaxRatio), r.step_ratio = std::min(r.step_ratio, kMaxRatio);
   // The cost of a level: its cells times its increments, the factorization's growing faster than the cells

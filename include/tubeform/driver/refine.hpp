@@ -1,9 +1,9 @@
 // Accuracy on demand (docs/accuracy.md, "Accuracy on demand"): a run whose
 // estimated error passes its targets (-target_load, -target_c_over_t) runs
-// again at a finer level, chosen from the estimate's parts: each falls with
-// the order the estimate takes it at (the increments' first, the mesh's its
-// element's, driver/answer.hpp), so each is refined by the ratio that brings
-// it within its share of the target. A level at most kMaxRatio finer than the last, at most
+// again at a finer level, chosen from the estimate's parts: each falls in
+// proportion to its cells' size or increment limits (the estimate's first
+// order, driver/answer.hpp), so each is refined by the ratio that brings it
+// within its share of the target. A level at most kMaxRatio finer than the last, at most
 // -target_levels levels, none that would pass -target_time.
 #pragma once
 
