@@ -20,18 +20,13 @@ constexpr PetscInt kMaxTensionCycle = 16;
 // Flow-curve points -material_table takes at most (ep, sigma pairs).
 constexpr PetscInt kMaxTable = 200;
 
-} // namespace
-
-PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes, Options &opt)
+// The scene, the tube and its mesh and element.
+PetscErrorCode ReadScene(MPI_Comm comm, const std::vector<std::string> &scenes, OptionReader &read, Options &opt)
 {
   PetscInt choice;
   PetscBool set;
 
-  OptionReader read; // every option's name, for the check of unknown ones
-
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsHasHelp(nullptr, &opt.help));
-
   TF_OPTIONS_BEGIN(comm, "tubeform: scene and geometry");
   {
     std::vector<const char *> names;
@@ -95,7 +90,15 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
              "\"The element through the wall\")",
              opt.element_bar_nt));
   TF_OPTIONS_END();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
+// The material: named or its constants, its law and hardening.
+PetscErrorCode ReadMaterial(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  PetscInt choice;
+
+  PetscFunctionBeginUser;
   TF_OPTIONS_BEGIN(comm, "tubeform: material");
   {
     std::string dir, name = opt.material.name;
@@ -153,7 +156,15 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
                        "-material_kinematic move it; the same monotonic flow curve)",
                        {"isotropic", "chaboche"}, opt.material.hardening));
   TF_OPTIONS_END();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
+// The incremental driver: increments, r_min, dynamics, equilibrium, kinematics.
+PetscErrorCode ReadDriver(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  PetscInt choice;
+
+  PetscFunctionBeginUser;
   TF_OPTIONS_BEGIN(comm, "tubeform: incremental driver (r_min method)");
   PetscCall(read.Int(PetscOptionsObject, "-increments", "Trial increments over the load path (r_min may cut each)",
                      opt.increments));
@@ -232,8 +243,13 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
     opt.kinematics = choice == 0 ? ObjectiveScheme::Forward : ObjectiveScheme::Midpoint;
   }
   TF_OPTIONS_END();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
-  TF_OPTIONS_BEGIN(comm, "tubeform: loading and output");
+// Inside the loading block: the loads, the tools' friction, the release, the other scenes' sizes.
+PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
   PetscCall(read.Real(PetscOptionsObject, "-pressure_p",
                       "pressure scene: final internal pressure (MPa), -pressure_control load", opt.pressure_p));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-pressure_control",
@@ -312,6 +328,13 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(read.Real(PetscOptionsObject, "-column_t", "column scene: thickness (mm)", opt.column_t));
   PetscCall(read.Real(PetscOptionsObject, "-column_imperfection",
                       "column scene: amplitude of the initial sine-shaped bow (mm)", opt.column_imperfection));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Inside the loading block: the output, the error estimate and accuracy, the stops and what is printed.
+PetscErrorCode ReadOutput(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
   PetscCall(read.String(PetscOptionsObject, "-output", "HDF5 result file (an .xmf for ParaView is written beside it)",
                         opt.output));
   PetscCall(
@@ -375,7 +398,32 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(read.Bool(PetscOptionsObject, "-allow_unused",
                       "Run even when an option given is read by nothing (a warning names it; without this, an error)",
                       opt.allow_unused));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The loading and output block (one group in -help).
+PetscErrorCode ReadLoading(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  TF_OPTIONS_BEGIN(comm, "tubeform: loading and output");
+  PetscCall(ReadLoads(PetscOptionsObject, read, opt));
+  PetscCall(ReadOutput(PetscOptionsObject, read, opt));
   TF_OPTIONS_END();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace
+
+PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes, Options &opt)
+{
+  OptionReader read; // every option's name, for the check of unknown ones
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasHelp(nullptr, &opt.help));
+  PetscCall(ReadScene(comm, scenes, read, opt));
+  PetscCall(ReadMaterial(comm, read, opt));
+  PetscCall(ReadDriver(comm, read, opt));
+  PetscCall(ReadLoading(comm, read, opt));
 
   opt.known = read.known();
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
