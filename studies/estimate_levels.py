@@ -63,26 +63,13 @@ def label(nt, d, s, element):
 
 
 def run(name, nt, d, s, element):
-    """One run (cached): its meta (wall, increments, factorizations, status)."""
-    folder = os.path.join(OUT, name)
-    os.makedirs(folder, exist_ok=True)
-    h5 = os.path.join(folder, label(nt, d, s, element) + ".h5")
-    meta = h5[:-3] + ".json"
-    if not os.path.exists(meta):
-        opts, ro, t, _ = tube(name)
-        extra = ["-mesh_nt", nt, "-mesh_ntheta", 0, "-mesh_density", d, "-element", element, "-increments",
-                 round(100 * s), "-rmin_deps", 0.002 / s, "-rmin_domega", 0.01 / s, "-rmin_yield", "inside",
-                 "-friction_vcri", VCRI_OF_BENDING_LENGTH * math.sqrt(ro * t), "-unload_increments", 10,
-                 "-error_estimate", 0, "-rmin_deps_yield", 2 / s]
-        try:
-            wall, incs, facts, _ = tfruns.run(opts[1], opts[2:] + [str(o) for o in extra], h5)
-            status = "done"
-        except tfruns.RunFailed as e:
-            wall, incs, facts, status = float("nan"), 0, 0, "failed: " + str(e).splitlines()[-1][:300]
-        with open(meta, "w") as f:
-            json.dump({"wall": wall, "increments": incs, "factorizations": facts, "status": status}, f)
-    with open(meta) as f:
-        return json.load(f), h5
+    """One run (cached): its meta (wall, increments, factorizations, status) and file."""
+    _, ro, t, _ = tube(name)
+    extra = ["-mesh_nt", nt, "-mesh_ntheta", 0, "-mesh_density", d, "-element", element, "-increments",
+             round(100 * s), "-rmin_deps", 0.002 / s, "-rmin_domega", 0.01 / s, "-rmin_yield", "inside",
+             "-friction_vcri", VCRI_OF_BENDING_LENGTH * math.sqrt(ro * t), "-unload_increments", 10,
+             "-error_estimate", 0, "-rmin_deps_yield", 2 / s]
+    return cached_run(name, label(nt, d, s, element), [str(o) for o in extra], lambda line: False)
 
 
 # SMOOTH > 0: values read off a local quadratic fit over +-SMOOTH mm of stroke (one-sided at the end), the contact
@@ -124,26 +111,30 @@ def preset_nt(name, strain, least):
 PRESETS = {"fast": (0.05, 0.05), "default": (0.015, 0.03)}  # their targets (load relative, C/t), as the files set
 
 
-def run_preset(name, preset):
-    """The tube's run with a preset, its error estimate on (cached): its meta and file."""
+def cached_run(name, tag, extra, keep):
+    """The tube's run with `extra` options after its own, cached as <tag>.h5 beside a .json of its wall time,
+    counts, status and the lines of its output that `keep` picks: (meta, file)."""
     folder = os.path.join(OUT, name)
     os.makedirs(folder, exist_ok=True)
-    h5 = os.path.join(folder, f"preset_{preset}.h5")
+    h5 = os.path.join(folder, tag + ".h5")
     meta = h5[:-3] + ".json"
     if not os.path.exists(meta):
         opts, _, _, _ = tube(name)
         try:
-            wall, incs, facts, out = tfruns.run(opts[1], opts[2:] + ["-options_file", f"options/preset-{preset}.opts"],
-                                                h5)
-            status = "done"
-            said = [line for line in out.splitlines() if "companion runs" in line]
+            wall, incs, facts, out = tfruns.run(opts[1], opts[2:] + extra, h5)
+            status, lines = "done", [line for line in out.splitlines() if keep(line)]
         except tfruns.RunFailed as e:
-            wall, incs, facts, status, said = float("nan"), 0, 0, "failed: " + str(e).splitlines()[-1][:300], []
+            wall, incs, facts, status, lines = float("nan"), 0, 0, "failed: " + str(e).splitlines()[-1][:300], []
         with open(meta, "w") as f:
-            json.dump({"wall": wall, "increments": incs, "factorizations": facts, "status": status,
-                       "companions": said}, f)
+            json.dump({"wall": wall, "increments": incs, "factorizations": facts, "status": status, "lines": lines}, f)
     with open(meta) as f:
         return json.load(f), h5
+
+
+def run_preset(name, preset):
+    """The tube's run with a preset, its error estimate on (cached): its meta and file."""
+    return cached_run(name, f"preset_{preset}", ["-options_file", f"options/preset-{preset}.opts"],
+                      lambda line: "companion runs" in line)
 
 
 def plan(name, which):
@@ -327,22 +318,9 @@ def demand(tubes, target):
     print("|---|---|---|---|---|---|---|---|")
     for t in tubes:
         ref = reference(t)
-        folder = os.path.join(OUT, t)
-        os.makedirs(folder, exist_ok=True)
-        h5 = os.path.join(folder, f"demand_{target:g}.h5")
-        meta = h5[:-3] + ".json"
-        if not os.path.exists(meta):
-            opts, _, _, _ = tube(t)
-            try:
-                wall, _, _, out = tfruns.run(opts[1], opts[2:] + ["-options_file", "options/preset-default.opts",
-                                                                  "-target_load", str(target)], h5)
-                m = {"wall": wall, "status": "done", "lines": [l for l in out.splitlines() if "level" in l or
-                                                              "estimated error" in l or "mesh " in l[:16]]}
-            except tfruns.RunFailed as e:
-                m = {"wall": float("nan"), "status": "failed: " + str(e).splitlines()[-1][:300], "lines": []}
-            with open(meta, "w") as f:
-                json.dump(m, f)
-        m = json.load(open(meta))
+        m, h5 = cached_run(t, f"demand_{target:g}", ["-options_file", "options/preset-default.opts", "-target_load",
+                                                     str(target)],
+                           lambda l: "level" in l or "estimated error" in l or "mesh " in l[:16])
         if m["status"] != "done" or ref is None:
             print(f"| {t} | {target:g} | {m['status']} | | | | | |")
             continue
