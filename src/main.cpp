@@ -36,10 +36,7 @@ static PetscErrorCode RunFinerLevel(const tf::Options &level, const tf::Problem:
   std::string kept, why;
   PetscFunctionBeginUser;
   if (!level.output.empty()) {
-    const std::string stem = level.output.size() > 3 && level.output.substr(level.output.size() - 3) == ".h5"
-                               ? level.output.substr(0, level.output.size() - 3)
-                               : level.output;
-    kept = tf::Formatted("%s.level%d.h5", stem.c_str(), (int)level.level - 1);
+    kept = tf::Formatted("%s.level%d.h5", tf::ResultStem(level.output).c_str(), (int)level.level - 1);
     PetscCall(tf::KeepResultCopy(PETSC_COMM_WORLD, level.output, kept, why));
     if (!why.empty()) {
       PetscCall(PetscPrintf(PETSC_COMM_WORLD,

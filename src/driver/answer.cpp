@@ -184,6 +184,8 @@ std::vector<std::pair<std::string, std::vector<double>>> ErrorColumns(const std:
 {
   const std::vector<HistoryRow> &mesh = c.mesh.empty() ? rows : c.mesh;
   std::vector<double> load(rows.size(), kNoEstimate), ct(rows.size(), kNoEstimate);
+  double stage = -1; // the companions' rows of the stage of the rows at hand
+  std::vector<const HistoryRow *> coarse, stepped;
   for (size_t k = 0; k < rows.size(); ++k) {
     const HistoryRow &r = rows[k];
     const size_t p = (size_t)(r.stage / 2);
@@ -194,7 +196,7 @@ std::vector<std::pair<std::string, std::vector<double>>> ErrorColumns(const std:
       }
       continue;
     }
-    const auto coarse = Stage(mesh, r.stage), stepped = Stage(c.steps, r.stage);
+    if (r.stage != stage) stage = r.stage, coarse = Stage(mesh, stage), stepped = Stage(c.steps, stage);
     if (coarse.empty() || stepped.empty() ||
         r.stroke > std::min(coarse.back()->stroke, stepped.back()->stroke) + kStrokeMatch)
       continue; // (past where a companion reached)

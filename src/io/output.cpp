@@ -339,11 +339,11 @@ PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-std::string ResultWriter::XdmfPath() const
+std::string ResultStem(const std::string &path)
 {
-  std::string base = path_;
-  if (base.size() > 3 && base.substr(base.size() - 3) == ".h5") base.resize(base.size() - 3);
-  return base + ".xmf";
+  return path.size() > 3 && path.substr(path.size() - 3) == ".h5" ? path.substr(0, path.size() - 3) : path;
 }
+
+std::string ResultWriter::XdmfPath() const { return ResultStem(path_) + ".xmf"; }
 
 } // namespace tf

@@ -124,6 +124,8 @@ PetscErrorCode AddResultEstimate(MPI_Comm comm, const std::string &path,
                                  const std::vector<std::pair<std::string, double>> &attributes,
                                  const std::vector<std::pair<std::string, std::vector<double>>> &columns,
                                  std::string &why);
+// A result file's path without its .h5 (the name its companions take: <stem>.xmf, <stem>.level<k>.h5).
+std::string ResultStem(const std::string &path);
 // Collective: the finished result file at `path` copied to `copy` (rank 0), so
 // that a finer level may run into `path`; `why` says what failed (every rank;
 // no copy is left then).
