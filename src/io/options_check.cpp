@@ -192,9 +192,8 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-} // namespace
-
-PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
+// The tube, its mesh and element (the counts a preset leaves at 0 derived here).
+PetscErrorCode CheckTubeAndMesh(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCheck(opt.tube_ro > 0 && std::isfinite(opt.tube_ro), comm, PETSC_ERR_USER_INPUT,
@@ -221,6 +220,13 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
              "-mesh_ntheta 0 needs -mesh_density in (0, 1000] (elements per bending length sqrt(Ro t); got %g)",
              opt.mesh_density);
   if (opt.mesh_ntheta == 0) opt.mesh_ntheta = ElementsAround(opt.tube_ro, opt.tube_t, opt.mesh_density);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The driver, the material, the tools and passes, the loads.
+PetscErrorCode CheckDriverAndLoads(MPI_Comm comm, Options &opt)
+{
+  PetscFunctionBeginUser;
   PetscCheck(opt.dynamics_time > 0 && std::isfinite(opt.dynamics_time), comm, PETSC_ERR_USER_INPUT,
              "-dynamics_time %g: the duration of the load path must be positive (s)", opt.dynamics_time);
   PetscCheck(opt.punch_speed > 0 && std::isfinite(opt.punch_speed), comm, PETSC_ERR_USER_INPUT,
@@ -295,6 +301,13 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
              "-pressure_p %g: must be a finite pressure (MPa)", opt.pressure_p);
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The accuracy, the stops, the output and the mesh file.
+PetscErrorCode CheckOutputAndStops(MPI_Comm comm, Options &opt)
+{
+  PetscFunctionBeginUser;
   PetscCheck(opt.target_load >= 0 && opt.target_load < 1 && opt.target_c_over_t >= 0, comm, PETSC_ERR_USER_INPUT,
              "-target_load %g, -target_c_over_t %g: must be a fraction in [0, 1) and a non-negative C/t",
              opt.target_load, opt.target_c_over_t);
@@ -332,6 +345,17 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
     PetscCheck(readable, comm, PETSC_ERR_USER_INPUT, "-mesh_file %s: cannot open the file (missing or unreadable)",
                opt.mesh_file.c_str());
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace
+
+PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckTubeAndMesh(comm, opt));
+  PetscCall(CheckDriverAndLoads(comm, opt));
+  PetscCall(CheckOutputAndStops(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
