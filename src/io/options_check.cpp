@@ -20,8 +20,8 @@ constexpr double kDieAngleMin = 60, kDieAngleMax = 150;
 // y, along which its punch load is read.
 constexpr double kMaxDieTurn = 90;
 
-// The lower die, the model and the second pass (the tool scenes').
-PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
+// The dies and the model: which dies, forces and side dies go together, and what the model allows.
+PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
@@ -86,6 +86,14 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
              "-side_force %g: force-controlled side dies need -side_die (mirror, flat or a file) and one pass (not "
              "with -pass2_stroke)",
              opt.side_force);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// -stroke_path and -die_path: their points, and the stroke they end at.
+PetscErrorCode CheckDiePaths(MPI_Comm comm, Options &opt)
+{
+  PetscFunctionBeginUser;
+  const bool press = opt.scene == "squaring" || opt.scene == "flattening";
   if (!opt.stroke_path.empty()) {
     // The die goes to each stroke in turn at the punch speed; the last is the press's final stroke.
     PetscCheck(press, comm, PETSC_ERR_USER_INPUT, "-stroke_path: the %s scene presses with no dies", opt.scene.c_str());
@@ -144,6 +152,13 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
                "is its own offset)");
     opt.stroke = -0.5 * at[1];
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The second pass's turn, a die off the axis, the rotation hold and the release.
+PetscErrorCode CheckPassesAndHolds(MPI_Comm comm, Options &opt)
+{
+  PetscFunctionBeginUser;
   const int quarters = Pass2Quarters(opt);
   PetscCheck(std::isfinite(opt.pass2_turn) && std::abs(opt.pass2_turn) <= 360, comm, PETSC_ERR_USER_INPUT,
              "-pass2_turn %g: the tube turns by -360 to 360 degrees", opt.pass2_turn);
@@ -189,6 +204,16 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
     "unknown in an increment)");
   PetscCheck(QuarterModel(opt) || opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
              "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The lower die, the model and the second pass (the tool scenes').
+PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckDies(comm, opt));
+  PetscCall(CheckDiePaths(comm, opt));
+  PetscCall(CheckPassesAndHolds(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
