@@ -182,6 +182,13 @@ private:
   // Step 6 of Run: the increment's forces, energies and the scene's measurements into the history.
   PetscErrorCode Record(PetscInt inc, double lambda0, double lambda, const Increment &step, const Committed &done,
                         Vec du);
+  // Its pieces: the forces on the new geometry and the step's own columns (r_min, residuals, counters, the
+  // release); the energy accounts and their self-checks; after the row is kept, the worst self-checks so far,
+  // the energy warning (once) and the divergence verdict.
+  PetscErrorCode StepColumns(PetscInt inc, double lambda, const Increment &step, const Committed &done,
+                             HistoryRow &row);
+  PetscErrorCode EnergyColumns(double lambda0, double lambda, const Committed &done, Vec du, HistoryRow &row);
+  PetscErrorCode WatchEnergy(PetscInt inc, double lambda, const HistoryRow &row);
   // The contact set's columns of a history row from a commit's report (none
   // without tools; report null: the initial state).
   PetscErrorCode ContactColumns(const ContactCommit *report, HistoryRow &row);
