@@ -71,26 +71,16 @@ PetscErrorCode System::AddCouplings()
 PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
 {
   std::vector<PetscInt> rows;
-  std::vector<PetscScalar> vals, b_rows, x_rows;
-  KSPConvergedReason reason;
-  PetscInt lo;
+  std::vector<PetscScalar> vals, b_rows;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::apply_bc, 0, 0, 0, 0));
   PetscCall(MatAssemblyBegin(k_, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(k_, MAT_FINAL_ASSEMBLY));
-  PetscCall(VecGetOwnershipRange(rhs_, &lo, nullptr));
 
   // Loads into the node frames, summed over ranks.
   PetscCall(LocalToNodeFrames(f_local_, rhs_, ADD_VALUES));
-  // Prescribed dofs owned here, as global rows.
-  for (const auto &p : prescribed_) {
-    if (!mesh_->node_owned[p.node]) continue;
-    PetscInt local = mesh_->node_dof[p.node] + p.comp, global;
-    PetscCall(ISLocalToGlobalMappingApply(ltog_, 1, &local, &global));
-    rows.push_back(global);
-    vals.push_back(p.value);
-  }
+  PetscCall(PrescribedRows(rows, vals));
 
   // An iterate x (node frames): its body forces are in the loads as
   // f_ext - f_int(x) (Controller), so K_body x is added back and the loads
@@ -106,49 +96,10 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
   PetscCall(AddCouplings());
   bool extra = false;
   PetscCall(PrepareUnitMotion(extra));
-
-  // Keep the unconstrained rows for the reactions: R = K(rows, :). The
-  // submatrix is rebuilt only when some rank's prescribed set changed.
-  {
-    IS isrow, iscol;
-    PetscInt hi;
-    int changed = rows != last_rows_, any_changed;
-    PetscCallMPI(MPI_Allreduce(&changed, &any_changed, 1, MPI_INT, MPI_LOR, mesh_->comm));
-    if (any_changed) PetscCall(MatDestroy(&reaction_rows_));
-    PetscCall(MatGetOwnershipRange(k_, &lo, &hi));
-    PetscCall(ISCreateGeneral(mesh_->comm, (PetscInt)rows.size(), rows.data(), PETSC_COPY_VALUES, &isrow));
-    PetscCall(ISCreateStride(mesh_->comm, hi - lo, lo, 1, &iscol));
-    PetscCall(
-      MatCreateSubMatrix(k_, isrow, iscol, reaction_rows_ ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &reaction_rows_));
-    PetscCall(ISDestroy(&isrow));
-    PetscCall(ISDestroy(&iscol));
-  }
-  last_rows_ = rows;
+  PetscCall(KeepReactionRows(rows));
   b_rows.resize(rows.size());
   if (!rows.empty()) PetscCall(VecGetValues(rhs_, (PetscInt)rows.size(), rows.data(), b_rows.data()));
-
-  if (iterate_) {
-    PetscCall(MatMult(k_, x_, work_));
-    PetscCall(VecAYPX(work_, -1.0, rhs_)); // b - K x
-    const PetscScalar *r;
-    PetscCall(VecGetArrayRead(work_, &r));
-    PetscInt n;
-    PetscCall(VecGetLocalSize(work_, &n));
-    std::vector<char> fixed(n, 0);
-    for (PetscInt row : rows) fixed[row - lo] = 1;
-    double local = 0;
-    for (PetscInt i = 0; i < n; ++i)
-      if (!fixed[i]) local = std::max(local, std::abs(PetscRealPart(r[i])));
-    PetscCall(VecRestoreArrayRead(work_, &r));
-    PetscCallMPI(MPI_Allreduce(&local, &iterate_residual_, 1, MPI_DOUBLE, MPI_MAX, mesh_->comm));
-    if (extra) {
-      // The extra unknown's condition at the iterate (its reactions: the forces the body needs there).
-      double missing;
-      PetscCall(Reactions(x_, rows, b_rows, reactions));
-      PetscCall(extra_->Missing(missing));
-      iterate_residual_ = std::max(iterate_residual_, std::abs(missing));
-    }
-  }
+  if (iterate_) PetscCall(IterateResidual(rows, b_rows, extra, reactions));
 
   if (iterate_ && (iterate_residual_ <= accept_below_ || iterate_residual_ > reject_above_)) {
     // In balance (or rejected): the iterate is the solution, no factorization.
@@ -156,36 +107,8 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
     accepted_ = iterate_residual_ <= accept_below_;
     PetscCall(VecCopy(x_, sol_));
     PetscCall(PetscLogEventEnd(Log::apply_bc, 0, 0, 0, 0));
-  } else {
-    if (iterate_) {
-      // The correction d of the iterate: K d = b - K x (coupled rows as K),
-      // its prescribed values what the iterate still lacks.
-      x_rows.resize(rows.size());
-      if (!rows.empty()) PetscCall(VecGetValues(x_, (PetscInt)rows.size(), rows.data(), x_rows.data()));
-      for (size_t k = 0; k < rows.size(); ++k) vals[k] -= x_rows[k];
-      PetscCall(VecCopy(work_, rhs_));
-    }
-    PetscCall(VecZeroEntries(fixed_));
-    if (!rows.empty()) PetscCall(VecSetValues(fixed_, (PetscInt)rows.size(), rows.data(), vals.data(), INSERT_VALUES));
-    PetscCall(VecAssemblyBegin(fixed_));
-    PetscCall(VecAssemblyEnd(fixed_));
-    PetscCall(MatZeroRowsColumns(k_, (PetscInt)rows.size(), rows.data(), 1.0, fixed_, rhs_));
-    PetscCall(PetscLogEventEnd(Log::apply_bc, 0, 0, 0, 0));
-
-    PetscCall(PetscLogEventBegin(Log::solve, 0, 0, 0, 0));
-    PetscCall(KSPSetOperators(ksp_, k_, k_));
-    PetscCall(KSPSolve(ksp_, rhs_, sol_));
-    PetscCall(KSPGetConvergedReason(ksp_, &reason));
-    if (reason < 0) {
-      std::string why;
-      PetscCall(DescribeSolveFailure(ksp_, why));
-      SETERRQ(mesh_->comm, PETSC_ERR_NOT_CONVERGED, "%s (KSP: %s)", why.c_str(), KSPConvergedReasons[reason]);
-    }
-    if (iterate_) PetscCall(VecAXPY(sol_, 1.0, x_));
-    if (extra) PetscCall(CombineUnitMotion(rows, b_rows, reactions));
-    ++nsolves_;
-    PetscCall(PetscLogEventEnd(Log::solve, 0, 0, 0, 0));
-  }
+  } else
+    PetscCall(FactorAndSolve(rows, vals, b_rows, extra, reactions));
 
   // Reactions r = K(rows, :) du - f(rows), in the node frames.
   PetscCall(Reactions(sol_, rows, b_rows, reactions));
@@ -197,6 +120,106 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
   for (PetscInt n = 0; n < mesh_->num_nodes; ++n)
     if (has_frame_[n]) Rotate(n, d[mesh_->node_dof[n]], d[mesh_->node_dof[n] + 1], false);
   PetscCall(VecRestoreArray(du, &d));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode System::PrescribedRows(std::vector<PetscInt> &rows, std::vector<PetscScalar> &vals)
+{
+  PetscFunctionBeginUser;
+  for (const auto &p : prescribed_) {
+    if (!mesh_->node_owned[p.node]) continue;
+    PetscInt local = mesh_->node_dof[p.node] + p.comp, global;
+    PetscCall(ISLocalToGlobalMappingApply(ltog_, 1, &local, &global));
+    rows.push_back(global);
+    vals.push_back(p.value);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode System::KeepReactionRows(const std::vector<PetscInt> &rows)
+{
+  IS isrow, iscol;
+  PetscInt lo, hi;
+
+  PetscFunctionBeginUser;
+  int changed = rows != last_rows_, any_changed;
+  PetscCallMPI(MPI_Allreduce(&changed, &any_changed, 1, MPI_INT, MPI_LOR, mesh_->comm));
+  if (any_changed) PetscCall(MatDestroy(&reaction_rows_));
+  PetscCall(MatGetOwnershipRange(k_, &lo, &hi));
+  PetscCall(ISCreateGeneral(mesh_->comm, (PetscInt)rows.size(), rows.data(), PETSC_COPY_VALUES, &isrow));
+  PetscCall(ISCreateStride(mesh_->comm, hi - lo, lo, 1, &iscol));
+  PetscCall(
+    MatCreateSubMatrix(k_, isrow, iscol, reaction_rows_ ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &reaction_rows_));
+  PetscCall(ISDestroy(&isrow));
+  PetscCall(ISDestroy(&iscol));
+  last_rows_ = rows;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode System::IterateResidual(const std::vector<PetscInt> &rows, const std::vector<PetscScalar> &b_rows,
+                                       bool extra, std::vector<double> &reactions)
+{
+  const PetscScalar *r;
+  PetscInt lo, n;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatGetOwnershipRange(k_, &lo, nullptr));
+  PetscCall(MatMult(k_, x_, work_));
+  PetscCall(VecAYPX(work_, -1.0, rhs_)); // b - K x
+  PetscCall(VecGetArrayRead(work_, &r));
+  PetscCall(VecGetLocalSize(work_, &n));
+  std::vector<char> fixed(n, 0);
+  for (PetscInt row : rows) fixed[row - lo] = 1;
+  double local = 0;
+  for (PetscInt i = 0; i < n; ++i)
+    if (!fixed[i]) local = std::max(local, std::abs(PetscRealPart(r[i])));
+  PetscCall(VecRestoreArrayRead(work_, &r));
+  PetscCallMPI(MPI_Allreduce(&local, &iterate_residual_, 1, MPI_DOUBLE, MPI_MAX, mesh_->comm));
+  if (extra) {
+    // The extra unknown's condition at the iterate (its reactions: the forces the body needs there).
+    double missing;
+    PetscCall(Reactions(x_, rows, b_rows, reactions));
+    PetscCall(extra_->Missing(missing));
+    iterate_residual_ = std::max(iterate_residual_, std::abs(missing));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode System::FactorAndSolve(const std::vector<PetscInt> &rows, std::vector<PetscScalar> &vals,
+                                      const std::vector<PetscScalar> &b_rows, bool extra,
+                                      std::vector<double> &reactions)
+{
+  KSPConvergedReason reason;
+
+  PetscFunctionBeginUser;
+  if (iterate_) {
+    // The correction d of the iterate: K d = b - K x (coupled rows as K),
+    // its prescribed values what the iterate still lacks.
+    std::vector<PetscScalar> x_rows(rows.size());
+    if (!rows.empty()) PetscCall(VecGetValues(x_, (PetscInt)rows.size(), rows.data(), x_rows.data()));
+    for (size_t k = 0; k < rows.size(); ++k) vals[k] -= x_rows[k];
+    PetscCall(VecCopy(work_, rhs_));
+  }
+  PetscCall(VecZeroEntries(fixed_));
+  if (!rows.empty()) PetscCall(VecSetValues(fixed_, (PetscInt)rows.size(), rows.data(), vals.data(), INSERT_VALUES));
+  PetscCall(VecAssemblyBegin(fixed_));
+  PetscCall(VecAssemblyEnd(fixed_));
+  PetscCall(MatZeroRowsColumns(k_, (PetscInt)rows.size(), rows.data(), 1.0, fixed_, rhs_));
+  PetscCall(PetscLogEventEnd(Log::apply_bc, 0, 0, 0, 0));
+
+  PetscCall(PetscLogEventBegin(Log::solve, 0, 0, 0, 0));
+  PetscCall(KSPSetOperators(ksp_, k_, k_));
+  PetscCall(KSPSolve(ksp_, rhs_, sol_));
+  PetscCall(KSPGetConvergedReason(ksp_, &reason));
+  if (reason < 0) {
+    std::string why;
+    PetscCall(DescribeSolveFailure(ksp_, why));
+    SETERRQ(mesh_->comm, PETSC_ERR_NOT_CONVERGED, "%s (KSP: %s)", why.c_str(), KSPConvergedReasons[reason]);
+  }
+  if (iterate_) PetscCall(VecAXPY(sol_, 1.0, x_));
+  if (extra) PetscCall(CombineUnitMotion(rows, b_rows, reactions));
+  ++nsolves_;
+  PetscCall(PetscLogEventEnd(Log::solve, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -34,6 +34,41 @@ BodyParams MakeBodyParams(const Options &opt)
   b.kinematics = opt.kinematics;
   return b;
 }
+
+// A stop signal during the set-up (the mesh, its partition, the system) ends
+// the run before it writes anything: at once, as a batch system's kill a
+// second or two later asks.
+PetscErrorCode CheckNotInterrupted(MPI_Comm comm, const std::string &output)
+{
+  PetscFunctionBeginUser;
+  int mine = StopSignal(), any;
+  PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm));
+  PetscCheck(!any, comm, PETSC_ERR_SIG, "interrupted by %s before the first increment: no results written%s%s",
+             SignalName(any), output.empty() ? "" : ", the earlier ones unchanged in ", output.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Where the load path's increments end: its stages' ends (`breaks`: the breakpoints and the path's end), those
+// and the kinks inside the stages (`ends`, sorted), and the stages the progress line counts (`bounds`: 0, the
+// breakpoints before the end, the end).
+struct Stages {
+  std::vector<double> breaks, ends, bounds;
+};
+
+Stages StagesOf(const LoadPath &path)
+{
+  Stages s;
+  s.breaks = path.breakpoints;
+  s.breaks.push_back(path.end);
+  s.ends = s.breaks;
+  s.ends.insert(s.ends.end(), path.kinks.begin(), path.kinks.end());
+  std::sort(s.ends.begin(), s.ends.end());
+  s.bounds = {0.0};
+  for (double b : path.breakpoints)
+    if (b < path.end - kLambdaTol) s.bounds.push_back(b);
+  s.bounds.push_back(path.end);
+  return s;
+}
 } // namespace
 
 Problem::~Problem() { (void)DestroyForces(); }
@@ -174,31 +209,30 @@ PetscErrorCode Problem::Start(ResultWriter &writer)
 PetscErrorCode Problem::Run()
 {
   ResultWriter writer;
+  Stop stop;
 
   PetscFunctionBeginUser;
-  {
-    // A stop signal during the set-up (the mesh, its partition, the system)
-    // ends the run before it writes anything: at once, as a batch system's
-    // kill a second or two later asks.
-    int mine = StopSignal(), any;
-    PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, comm_));
-    PetscCheck(!any, comm_, PETSC_ERR_SIG, "interrupted by %s before the first increment: no results written%s%s",
-               SignalName(any), opt_.output.empty() ? "" : ", the earlier ones unchanged in ", opt_.output.c_str());
-  }
+  PetscCall(CheckNotInterrupted(comm_, opt_.output));
   PetscCall(Open(writer));
-  const double end = path_.end;
-  std::vector<double> breaks = path_.breakpoints;
-  breaks.push_back(end);
-  std::vector<double> ends = breaks; // (where an increment must end: the stages' and the kinks inside them)
-  ends.insert(ends.end(), path_.kinks.begin(), path_.kinks.end());
-  std::sort(ends.begin(), ends.end());
-  at_.started.assign(breaks.size(), 0); // a checkpoint's must have as many stages
+  at_.started.assign(path_.breakpoints.size() + 1, 0); // one per stage; a checkpoint's must have as many stages
   OutputSchedule output(opt_.output_every, opt_.output_stroke > 0 ? opt_.output_stroke / Travel(opt_) : 0);
   if (!opt_.restart.empty())
     PetscCall(ReadCheckpoint(writer, output)); // the state and the results so far
   else
     PetscCall(Start(writer)); // increment 0: the initial state
+  PetscCall(Increments(writer, output, stop));
+  PetscCall(DestroyForces());
 
+  // 7. The answer, the result files (renamed into place only now), the estimate added to them, the self-checks.
+  PetscCall(Finish(writer, stop));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::Increments(ResultWriter &writer, OutputSchedule &output, Stop &stop)
+{
+  PetscFunctionBeginUser;
+  const double end = path_.end;
+  const Stages stages = StagesOf(path_);
   double &lambda = at_.lambda;
   PetscInt &inc = at_.inc;
   const double dl_load = 1.0 / opt_.increments;
@@ -206,15 +240,10 @@ PetscErrorCode Problem::Run()
   Controller controller(*model_, *scene_, inertia_.get(), opt_, path_.duration);
   controller.SetStartForces(forces_.f_start);
   Vec du = system_.CreateLocalVector();
-  Stop stop;
   // A restart has written no field step yet: its last state is written whatever ends the run.
   bool wrote_last = opt_.restart.empty();
-  std::vector<double> bounds = {0.0};
-  for (double b : path_.breakpoints)
-    if (b < end - kLambdaTol) bounds.push_back(b);
-  bounds.push_back(end);
   Progress progress(
-    comm_, opt_.progress, bounds, [this](double lambda) { return scene_->Unloading(lambda); }, at_.lambda);
+    comm_, opt_.progress, stages.bounds, [this](double lambda) { return scene_->Unloading(lambda); }, at_.lambda);
   const double t_start = MPI_Wtime();
   PetscCall(PetscLogStagePush(Log::load_stage));
   while (lambda < end - kLambdaTol) {
@@ -224,29 +253,16 @@ PetscErrorCode Problem::Run()
     if (!stop.why.empty()) break;
     ++inc;
 
-    // 2. A stage of the load path (the paper's unloading) begins at its
-    //    breakpoint; the loads at its start are the new stage's.
-    //    A stage the scene refuses to start (a second pass's die inside the tube) ends the run as a failed
-    //    increment does, with the results so far written.
-    for (size_t b = 0; b + 1 < breaks.size() && stop.why.empty(); ++b)
-      if (!at_.started[b] && lambda >= breaks[b] - kLambdaTol) {
-        at_.started[b] = 1;
-        PetscCall(StopOnFailure(scene_->BeginStage(*model_, lambda), stop));
-        if (stop.why.empty()) PetscCall(EndForces(lambda));
-      }
+    // 2. A stage of the load path (the paper's unloading) begins at its breakpoint.
+    PetscCall(BeginStages(stages.breaks, stop));
     if (!stop.why.empty()) break;
     const double next_break =
-      *std::find_if(ends.begin(), ends.end(), [&](double b) { return b > lambda + kLambdaTol; });
+      *std::find_if(stages.ends.begin(), stages.ends.end(), [&](double b) { return b > lambda + kLambdaTol; });
     const double dl_stage = scene_->Unloading(lambda) ? dl_unload : dl_load;
     const double dl = std::min(dl_stage, next_break - lambda);
 
     // 3. Frames of the supports and contact nodes on the current geometry.
-    PetscCall(scene_->BeginIncrement(*model_, lambda));
-    if (contact_) {
-      contact_->SetStroke(scene_->ToolStroke(lambda));
-      if (q_count_ > 0) contact_->SetForceResolution(opt_.equilibrium_tol * q_sum_ / q_count_);
-      if (contact_->active()) PetscCall(contact_->BeginIncrement());
-    }
+    PetscCall(BeginIncrement(lambda));
 
     // 4. The trial step cut by r_min (paper eq. 16) and brought into balance.
     //    An increment that fails on every rank alike (an element inverted,
@@ -257,21 +273,11 @@ PetscErrorCode Problem::Run()
     PetscCall(StopOnFailure(controller.Advance(lambda, dl, end, du, taken), stop));
     if (!stop.why.empty()) break;
 
-    // 5. Commit: stresses, plastic states and geometry; inertia; contact.
+    // 5. Commit: stresses, plastic states and geometry; inertia; contact; lambda at the step's end.
     Committed done;
-    for (auto [now, start] : {std::pair{forces_.f_app, forces_.f_app0}, std::pair{forces_.f_ext, forces_.f_ext0},
-                              std::pair{forces_.f_int, forces_.f_int0}})
-      PetscCall(VecCopy(now, start));
-    PetscCall(body_.Commit(du, taken.scale, done.body));
-    if (inertia_) PetscCall(inertia_->Advance(du, taken.dl * path_.duration, done.dw_inertia));
-    if (contact_ && contact_->active()) PetscCall(contact_->Commit(du, taken.dU, taken.scale, done.contact));
     const double lambda0 = lambda;
-    const bool on_break = std::abs(lambda + taken.dl - next_break) < kSnapToBreak * dl_stage;
-    lambda = on_break ? next_break : lambda + taken.dl;
-    unsettled_ += taken.unsettled;
-    unsettled_run_ = taken.unsettled > 0 ? unsettled_run_ + 1 : 0;
-    events_inside_ += taken.event_inside;
-    inconsistent_ += taken.inconsistent > 0;
+    bool on_break;
+    PetscCall(Commit(du, taken, next_break, dl_stage, done, on_break));
 
     // 6. Forces, energies, self-checks and the scene's measurements on the
     //    new configuration; what they say may end the run.
@@ -289,10 +295,53 @@ PetscErrorCode Problem::Run()
   if (!wrote_last) PetscCall(WriteFields(writer, at_.step++, lambda)); // (a loop that ends normally wrote it)
   PetscCall(PetscLogStagePop());
   PetscCall(VecDestroy(&du));
-  PetscCall(DestroyForces());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
-  // 7. The answer, the result files (renamed into place only now), the estimate added to them, the self-checks.
-  PetscCall(Finish(writer, stop));
+PetscErrorCode Problem::BeginStages(const std::vector<double> &breaks, Stop &stop)
+{
+  PetscFunctionBeginUser;
+  // The loads at a stage's start are the new stage's. A stage the scene refuses to start (a second pass's die
+  // inside the tube) ends the run as a failed increment does, with the results so far written.
+  for (size_t b = 0; b + 1 < breaks.size() && stop.why.empty(); ++b)
+    if (!at_.started[b] && at_.lambda >= breaks[b] - kLambdaTol) {
+      at_.started[b] = 1;
+      PetscCall(StopOnFailure(scene_->BeginStage(*model_, at_.lambda), stop));
+      if (stop.why.empty()) PetscCall(EndForces(at_.lambda));
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::BeginIncrement(double lambda)
+{
+  PetscFunctionBeginUser;
+  PetscCall(scene_->BeginIncrement(*model_, lambda));
+  if (contact_) {
+    contact_->SetStroke(scene_->ToolStroke(lambda));
+    if (q_count_ > 0) contact_->SetForceResolution(opt_.equilibrium_tol * q_sum_ / q_count_);
+    if (contact_->active()) PetscCall(contact_->BeginIncrement());
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::Commit(Vec du, const Increment &taken, double next_break, double dl_stage, Committed &done,
+                               bool &on_break)
+{
+  double &lambda = at_.lambda;
+
+  PetscFunctionBeginUser;
+  for (auto [now, start] : {std::pair{forces_.f_app, forces_.f_app0}, std::pair{forces_.f_ext, forces_.f_ext0},
+                            std::pair{forces_.f_int, forces_.f_int0}})
+    PetscCall(VecCopy(now, start));
+  PetscCall(body_.Commit(du, taken.scale, done.body));
+  if (inertia_) PetscCall(inertia_->Advance(du, taken.dl * path_.duration, done.dw_inertia));
+  if (contact_ && contact_->active()) PetscCall(contact_->Commit(du, taken.dU, taken.scale, done.contact));
+  on_break = std::abs(lambda + taken.dl - next_break) < kSnapToBreak * dl_stage;
+  lambda = on_break ? next_break : lambda + taken.dl;
+  unsettled_ += taken.unsettled;
+  unsettled_run_ = taken.unsettled > 0 ? unsettled_run_ + 1 : 0;
+  events_inside_ += taken.event_inside;
+  inconsistent_ += taken.inconsistent > 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -91,11 +91,35 @@ PetscErrorCode Problem::EndForces(double lambda)
 PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, const Increment &taken,
                                const Committed &done, Vec du)
 {
-  double residual;
-  const bool inertia = inertia_ && inertia_->active();
+  HistoryRow row;
 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::measure, 0, 0, 0, 0));
+  PetscCall(StepColumns(inc, lambda, taken, done, row));
+  PetscCall(ContactColumns(&done.contact, row));
+  PetscCall(scene_->Measure(*model_, lambda, forces_.f_int, row));
+  PetscCall(EnergyColumns(lambda0, lambda, done, du, row));
+  // NaN, or Inf where it can only come from an overflow, is never written:
+  // the run stops at the increment before (Run reads nonfinite_).
+  for (const auto &col : HistoryColumns())
+    if (std::isnan(row.*(col.field)) || (std::isinf(row.*(col.field)) && !col.may_be_infinite)) {
+      nonfinite_ = col.name;
+      PetscCall(PetscLogEventEnd(Log::measure, 0, 0, 0, 0));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+  history_.Append(row);
+  PetscCall(PetscLogEventEnd(Log::measure, 0, 0, 0, 0));
+  PetscCall(WatchEnergy(inc, lambda, row));
+  if (opt_.monitor) PetscCall(PrintMonitor(inc, lambda, taken, row));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Problem::StepColumns(PetscInt inc, double lambda, const Increment &taken, const Committed &done,
+                                    HistoryRow &row)
+{
+  double residual;
+
+  PetscFunctionBeginUser;
   // Forces on the new geometry (f_int + M a: what the loads and reactions
   // balance), the mean of start and end for the trapezoidal work, the
   // out-of-balance force of the free dofs.
@@ -107,7 +131,6 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
   PetscCall(system_.FreeNorms(forces_.f_res, residual, r_max));
   q_sum_ += q_now_, q_count_ += 1;
 
-  HistoryRow row;
   row.increment = inc;
   row.rmin = taken.r;
   row.limiter = static_cast<double>(taken.who);
@@ -125,14 +148,17 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
   row.unsettled = unsettled_;
   row.events_inside = events_inside_;
   row.inconsistent = inconsistent_;
-  row.inertia = inertia ? 1 : 0;
+  row.inertia = inertia_ && inertia_->active() ? 1 : 0;
   Body::ReleaseYield release;
   PetscCall(body_.MeasureRelease(release));
   row.release = release.releasing ? (release.elastic ? 2 : 1) : 0, row.release_yielded = release.reached,
   row.release_excess = release.excess, row.release_dep = release.dep;
-  PetscCall(ContactColumns(&done.contact, row));
-  PetscCall(scene_->Measure(*model_, lambda, forces_.f_int, row));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
+PetscErrorCode Problem::EnergyColumns(double lambda0, double lambda, const Committed &done, Vec du, HistoryRow &row)
+{
+  PetscFunctionBeginUser;
   // Check (a)'s input: from the reported load and stroke (and the scene's
   // applied loads) where the scene says they are work-conjugate in this
   // stage; else the work of the loads and supports at the nodes plus what
@@ -161,36 +187,29 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
   row.w_friction = energy_.w_friction;
   row.w_inertia = energy_.w_inertia;
   PetscCall(body_.ElasticEnergy(row.w_elastic));
-  if (inertia) PetscCall(inertia_->KineticEnergy(row.w_kinetic));
+  if (inertia_ && inertia_->active()) PetscCall(inertia_->KineticEnergy(row.w_kinetic));
   row.w_damped = energy_.w_inertia - row.w_kinetic;
   row.energy_error = energy_.BalanceError();
   row.internal_error = energy_.InternalError(row.w_elastic);
-  // NaN, or Inf where it can only come from an overflow, is never written:
-  // the run stops at the increment before (Run reads nonfinite_).
-  for (const auto &col : HistoryColumns())
-    if (std::isnan(row.*(col.field)) || (std::isinf(row.*(col.field)) && !col.may_be_infinite)) {
-      nonfinite_ = col.name;
-      PetscCall(PetscLogEventEnd(Log::measure, 0, 0, 0, 0));
-      PetscFunctionReturn(PETSC_SUCCESS);
-    }
-  history_.Append(row);
-  PetscCall(PetscLogEventEnd(Log::measure, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
-  if (inc > kEnergyWarningAfter) {
-    worst_error_ = std::max(worst_error_, std::abs(row.energy_error));
-    worst_internal_ = std::max(worst_internal_, std::abs(row.internal_error));
-    if (!warned_ && std::abs(row.energy_error) > kEnergyWarning) {
-      warned_ = true;
-      PetscCall(PetscPrintf(
-        comm_,
-        "tubeform: warning: energy balance error %.1f %% at increment %d (lambda %.4f): the "
-        "solution is drifting from equilibrium; try shorter steps (more -increments, a smaller -rmin_deps), or see "
-        "docs/theory.md\n",
-        100 * row.energy_error, (int)inc, lambda));
-    }
-    diverged_ = std::abs(row.energy_error) > opt_.max_energy_error;
+PetscErrorCode Problem::WatchEnergy(PetscInt inc, double lambda, const HistoryRow &row)
+{
+  PetscFunctionBeginUser;
+  if (inc <= kEnergyWarningAfter) PetscFunctionReturn(PETSC_SUCCESS);
+  worst_error_ = std::max(worst_error_, std::abs(row.energy_error));
+  worst_internal_ = std::max(worst_internal_, std::abs(row.internal_error));
+  if (!warned_ && std::abs(row.energy_error) > kEnergyWarning) {
+    warned_ = true;
+    PetscCall(PetscPrintf(
+      comm_,
+      "tubeform: warning: energy balance error %.1f %% at increment %d (lambda %.4f): the "
+      "solution is drifting from equilibrium; try shorter steps (more -increments, a smaller -rmin_deps), or see "
+      "docs/theory.md\n",
+      100 * row.energy_error, (int)inc, lambda));
   }
-  if (opt_.monitor) PetscCall(PrintMonitor(inc, lambda, taken, row));
+  diverged_ = std::abs(row.energy_error) > opt_.max_energy_error;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

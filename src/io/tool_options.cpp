@@ -3,7 +3,9 @@
 
 namespace tf {
 
-PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+namespace {
+// The die's strokes in turn, the upper and lower dies' shapes, the lower die's motion.
+PetscErrorCode ReadDieShapes(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(RealList(PetscOptionsObject, read, "-stroke_path",
@@ -34,6 +36,13 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                        "tool scenes: the lower die moves up by the stroke U (mirror) or stays (fixed; the upper die "
                        "then travels 2 U, so U is half the dies' closing either way)",
                        {"mirror", "fixed"}, opt.lower_die_motion));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The part of the tube modelled and how the full model is held; the upper die's force, offset and path.
+PetscErrorCode ReadModelAndDieMotion(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
   PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
                        "tool scenes: the part of the tube modelled: quarter, half (x >= 0), full (held as "
                        "-full_hold says), auto (the quarter where exact, else the half or the full)",
@@ -70,6 +79,13 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                "quarter-turned second pass after a first pass not mirrored top to bottom, and in one turned by "
                "another angle; else pins)",
                {"auto", "pins", "rotation"}, opt.full_hold));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The second pass (its stroke, dies and turn) and the side dies.
+PetscErrorCode ReadSecondPassAndSideDies(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
   PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
                       "squaring: a second pass after the springback: press again until the upper die is at this "
                       "stroke (mm, from the same zero as -stroke: the die touching the round tube; it starts where it "
@@ -102,6 +118,16 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
                       "second pass: its dies press along the turned axis (not a multiple of 90: the full model, "
                       "held by the rotation hold; docs/dies.md)",
                       opt.pass2_turn));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+} // namespace
+
+PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ReadDieShapes(PetscOptionsObject, read, opt));
+  PetscCall(ReadModelAndDieMotion(PetscOptionsObject, read, opt));
+  PetscCall(ReadSecondPassAndSideDies(PetscOptionsObject, read, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

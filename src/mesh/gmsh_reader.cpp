@@ -143,89 +143,97 @@ bool ReadNodes(Reader &r, SerialMesh &mesh, std::unordered_map<long long, int> &
   return true;
 }
 
-} // namespace
-
-std::string ReadGmsh(const std::string &path, SerialMesh &mesh)
+// The $MeshFormat line: only 4.1 ASCII is accepted.
+bool ReadFormat(Reader &r)
 {
-  Reader r;
-  r.path = path;
-  r.in.open(path);
-  if (!r.in) return "mesh file '" + path + "' cannot be opened (missing or unreadable)";
-  r.in.seekg(0, std::ios::end);
-  const std::streamoff bytes = r.in.tellg();
-  r.max_count = bytes > 0 ? static_cast<size_t>(bytes) : 0;
-  r.in.seekg(0);
-
-  // Format line: only 4.1 ASCII is accepted.
-  if (!r.seek("MeshFormat")) return "mesh file '" + path + "' is not a Gmsh mesh (no $MeshFormat)";
+  if (!r.seek("MeshFormat")) {
+    r.error = "mesh file '" + r.path + "' is not a Gmsh mesh (no $MeshFormat)";
+    return false;
+  }
   double version = 0;
   int filetype = -1, datasize = 0;
-  if (!(r.in >> version >> filetype >> datasize)) return "mesh file '" + path + "': unreadable $MeshFormat line";
+  if (!(r.in >> version >> filetype >> datasize)) return r.fail("unreadable $MeshFormat line");
   if (!(version >= 4.09 && version <= 4.11) || filetype != 0)
-    return "mesh file '" + path +
-           "': only Gmsh format 4.1 ASCII is supported (re-export with 'gmsh -format msh41 -save')";
+    return r.fail("only Gmsh format 4.1 ASCII is supported (re-export with 'gmsh -format msh41 -save')");
+  return true;
+}
 
-  // Physical names of dimension 1 (curves); which physical tags each curve carries; the nodes.
-  std::unordered_map<int, std::string> curve_names;
-  std::unordered_map<int, std::vector<int>> curve_physicals;
-  std::unordered_map<long long, int> node_index;
-  if (!ReadEntities(r, curve_names, curve_physicals) || !ReadNodes(r, mesh, node_index)) return r.error;
+// What the $Elements section refers to: the node numbers (ReadNodes) and the physical curves (ReadEntities).
+struct ElementContext {
+  const std::unordered_map<long long, int> &node_index;
+  const std::unordered_map<int, std::string> &curve_names;
+  const std::unordered_map<int, std::vector<int>> &curve_physicals;
+};
 
-  // Elements: quads become cells, lines in named physical curves become edges.
-  if (!r.seek("Elements")) return "mesh file '" + path + "': no $Elements section";
-  {
-    const char *what = "$Elements";
-    size_t nblocks, nelem;
-    long long mintag, maxtag;
-    if (!r.count(r.in, nblocks, what, "blocks") || !r.count(r.in, nelem, what, "elements")) return r.error;
-    if (!(r.in >> mintag >> maxtag)) return "mesh file '" + path + "': truncated $Elements section";
-    mesh.quads.clear();
-    mesh.edge_sets.clear();
-    size_t unsupported = 0;
-    for (size_t b = 0; b < nblocks; ++b) {
-      int edim, etag, etype;
-      size_t n;
-      if (!r.integer(r.in, edim, what) || !r.integer(r.in, etag, what) || !r.integer(r.in, etype, what) ||
-          !r.count(r.in, n, what, "elements in a block"))
-        return r.error;
-      const int nper = etype == 1 ? 2 : etype == 2 ? 3 : etype == 3 ? 4 : etype == 15 ? 1 : -1;
-      if (nper < 0)
-        return "mesh file '" + path + "': element type " + std::to_string(etype) +
-               " is not supported (use 4-node quads, 'Recombine' in the .geo)";
-      for (size_t k = 0; k < n; ++k) {
-        long long tag;
-        if (!(r.in >> tag)) return "mesh file '" + path + "': truncated $Elements section";
-        int ids[4];
-        for (int q = 0; q < nper; ++q) {
-          long long nt;
-          if (!(r.in >> nt)) return "mesh file '" + path + "': truncated $Elements section";
-          auto it = node_index.find(nt);
-          if (it == node_index.end())
-            return "mesh file '" + path + "': element " + std::to_string(tag) + " refers to unknown node " +
-                   std::to_string(nt);
-          ids[q] = it->second;
-        }
-        if (etype == 3)
-          mesh.quads.insert(mesh.quads.end(), ids, ids + 4);
-        else if (etype == 2 && edim == 2)
-          ++unsupported;
-        else if (etype == 1) {
-          auto ph = curve_physicals.find(etag);
-          if (ph == curve_physicals.end()) continue;
-          for (int p : ph->second) {
-            auto nm = curve_names.find(p);
-            const std::string name = nm != curve_names.end() ? nm->second : std::to_string(p);
-            mesh.edge_sets[name].push_back({ids[0], ids[1]});
-          }
-        }
+// One block of the $Elements section: quads become cells, lines in named physical curves become edges,
+// triangles are counted into `triangles`.
+bool ReadElementBlock(Reader &r, const ElementContext &ctx, SerialMesh &mesh, size_t &triangles)
+{
+  const char *what = "$Elements";
+  int edim, etag, etype;
+  size_t n;
+  if (!r.integer(r.in, edim, what) || !r.integer(r.in, etag, what) || !r.integer(r.in, etype, what) ||
+      !r.count(r.in, n, what, "elements in a block"))
+    return false;
+  const int nper = etype == 1 ? 2 : etype == 2 ? 3 : etype == 3 ? 4 : etype == 15 ? 1 : -1;
+  if (nper < 0)
+    return r.fail("element type " + std::to_string(etype) +
+                  " is not supported (use 4-node quads, 'Recombine' in the .geo)");
+  for (size_t k = 0; k < n; ++k) {
+    long long tag;
+    if (!(r.in >> tag)) return r.fail("truncated $Elements section");
+    int ids[4];
+    for (int q = 0; q < nper; ++q) {
+      long long nt;
+      if (!(r.in >> nt)) return r.fail("truncated $Elements section");
+      auto it = ctx.node_index.find(nt);
+      if (it == ctx.node_index.end())
+        return r.fail("element " + std::to_string(tag) + " refers to unknown node " + std::to_string(nt));
+      ids[q] = it->second;
+    }
+    if (etype == 3)
+      mesh.quads.insert(mesh.quads.end(), ids, ids + 4);
+    else if (etype == 2 && edim == 2)
+      ++triangles;
+    else if (etype == 1) {
+      auto ph = ctx.curve_physicals.find(etag);
+      if (ph == ctx.curve_physicals.end()) continue;
+      for (int p : ph->second) {
+        auto nm = ctx.curve_names.find(p);
+        const std::string name = nm != ctx.curve_names.end() ? nm->second : std::to_string(p);
+        mesh.edge_sets[name].push_back({ids[0], ids[1]});
       }
     }
-    if (unsupported)
-      return "mesh file '" + path + "' has " + std::to_string(unsupported) +
-             " triangles: only quadrilateral meshes are supported (add 'Recombine Surface' to the .geo)";
   }
+  return true;
+}
 
-  // Keep only the nodes the cells use (geometry points may carry nodes of their own).
+// The $Elements section into mesh.quads and mesh.edge_sets; a mesh with triangles is refused.
+bool ReadElements(Reader &r, const ElementContext &ctx, SerialMesh &mesh)
+{
+  if (!r.seek("Elements")) return r.fail("no $Elements section");
+  const char *what = "$Elements";
+  size_t nblocks, nelem;
+  long long mintag, maxtag;
+  if (!r.count(r.in, nblocks, what, "blocks") || !r.count(r.in, nelem, what, "elements")) return false;
+  if (!(r.in >> mintag >> maxtag)) return r.fail("truncated $Elements section");
+  mesh.quads.clear();
+  mesh.edge_sets.clear();
+  size_t triangles = 0;
+  for (size_t b = 0; b < nblocks; ++b)
+    if (!ReadElementBlock(r, ctx, mesh, triangles)) return false;
+  if (triangles) {
+    r.error = "mesh file '" + r.path + "' has " + std::to_string(triangles) +
+              " triangles: only quadrilateral meshes are supported (add 'Recombine Surface' to the .geo)";
+    return false;
+  }
+  return true;
+}
+
+// Keeps only the nodes the cells use (geometry points may carry nodes of their own), renumbered in the
+// order the cells first use them.
+bool KeepCellNodes(Reader &r, SerialMesh &mesh)
+{
   std::vector<int> renum(mesh.num_nodes(), -1);
   std::vector<double> xy;
   for (int &id : mesh.quads) {
@@ -239,10 +247,34 @@ std::string ReadGmsh(const std::string &path, SerialMesh &mesh)
   for (auto &set : mesh.edge_sets)
     for (auto &e : set.second) {
       if (renum[e[0]] < 0 || renum[e[1]] < 0)
-        return "mesh file '" + path + "': boundary set '" + set.first + "' has an edge not on any quadrilateral";
+        return r.fail("boundary set '" + set.first + "' has an edge not on any quadrilateral");
       e = {renum[e[0]], renum[e[1]]};
     }
   mesh.xy.swap(xy);
+  return true;
+}
+
+} // namespace
+
+std::string ReadGmsh(const std::string &path, SerialMesh &mesh)
+{
+  Reader r;
+  r.path = path;
+  r.in.open(path);
+  if (!r.in) return "mesh file '" + path + "' cannot be opened (missing or unreadable)";
+  r.in.seekg(0, std::ios::end);
+  const std::streamoff bytes = r.in.tellg();
+  r.max_count = bytes > 0 ? static_cast<size_t>(bytes) : 0;
+  r.in.seekg(0);
+
+  // The format; physical names of dimension 1 (curves); which physical tags each curve carries; the nodes; the
+  // elements; the nodes the cells use.
+  std::unordered_map<int, std::string> curve_names;
+  std::unordered_map<int, std::vector<int>> curve_physicals;
+  std::unordered_map<long long, int> node_index;
+  if (!ReadFormat(r) || !ReadEntities(r, curve_names, curve_physicals) || !ReadNodes(r, mesh, node_index) ||
+      !ReadElements(r, {node_index, curve_names, curve_physicals}, mesh) || !KeepCellNodes(r, mesh))
+    return r.error;
 
   // Gmsh may write cells clockwise: re-order so that every area is positive.
   for (int c = 0; c < mesh.num_cells(); ++c)

@@ -31,6 +31,23 @@ PetscErrorCode SetSection(DM dm, const char *name, PetscInt from, PetscInt to, P
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// Each local point's number in the serial mesh (`orig`, indexed from pstart): each serial point's own number
+// broadcast along the migration SF (none: one rank, the identity).
+PetscErrorCode OriginalPoints(PetscSF migration, PetscInt pstart, PetscInt pend, std::vector<PetscInt> &orig)
+{
+  PetscFunctionBeginUser;
+  if (migration) {
+    PetscInt nroots;
+    PetscCall(PetscSFGetGraph(migration, &nroots, nullptr, nullptr, nullptr));
+    std::vector<PetscInt> roots(nroots);
+    for (PetscInt p = 0; p < nroots; ++p) roots[p] = p;
+    PetscCall(PetscSFBcastBegin(migration, MPIU_INT, roots.data(), orig.data(), MPI_REPLACE));
+    PetscCall(PetscSFBcastEnd(migration, MPIU_INT, roots.data(), orig.data(), MPI_REPLACE));
+  } else
+    for (PetscInt p = pstart; p < pend; ++p) orig[p - pstart] = p;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace
 
 Mesh::~Mesh()
@@ -141,9 +158,6 @@ PetscErrorCode Mesh::Create(MPI_Comm c, const SerialMesh &serial, const std::vec
 
 PetscErrorCode Mesh::BuildTables(const std::vector<std::string> &sets, PetscSF migration)
 {
-  PetscSection local, global, coord_section;
-  Vec coords;
-  const PetscScalar *xa;
   PetscInt pstart, pend, ce, ve;
 
   PetscFunctionBeginUser;
@@ -152,26 +166,28 @@ PetscErrorCode Mesh::BuildTables(const std::vector<std::string> &sets, PetscSF m
   PetscCall(DMPlexGetDepthStratum(dm, 0, &vstart_, &ve));
   num_cells = ce - cstart_;
   num_nodes = ve - vstart_;
-  PetscCall(DMGetLocalSection(dm, &local));
-  PetscCall(DMGetGlobalSection(dm, &global));
-
-  // Original point numbers: broadcast each serial point's own number along
-  // the migration SF (identity on one rank).
   std::vector<PetscInt> orig(pend - pstart);
-  if (migration) {
-    PetscInt nroots;
-    PetscCall(PetscSFGetGraph(migration, &nroots, nullptr, nullptr, nullptr));
-    std::vector<PetscInt> roots(nroots);
-    for (PetscInt p = 0; p < nroots; ++p) roots[p] = p;
-    PetscCall(PetscSFBcastBegin(migration, MPIU_INT, roots.data(), orig.data(), MPI_REPLACE));
-    PetscCall(PetscSFBcastEnd(migration, MPIU_INT, roots.data(), orig.data(), MPI_REPLACE));
-  } else
-    for (PetscInt p = pstart; p < pend; ++p) orig[p - pstart] = p;
+  PetscCall(OriginalPoints(migration, pstart, pend, orig));
   PetscCall(MPIU_Allreduce(&num_cells, &num_global_cells, 1, MPIU_INT, MPI_SUM, comm));
 
   // Serial points are numbered cells first, then vertices.
   cell_orig.resize(num_cells);
   for (PetscInt c = 0; c < num_cells; ++c) cell_orig[c] = orig[cstart_ + c - pstart];
+  PetscCall(BuildNodeTables(orig, pstart));
+  PetscCall(BuildCellNodes());
+  PetscCall(BuildSets(sets));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Mesh::BuildNodeTables(const std::vector<PetscInt> &orig, PetscInt pstart)
+{
+  PetscSection local, global, coord_section;
+  Vec coords;
+  const PetscScalar *xa;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalSection(dm, &local));
+  PetscCall(DMGetGlobalSection(dm, &global));
   node_orig.resize(num_nodes);
   node_dof.resize(num_nodes);
   node_owned.resize(num_nodes);
@@ -195,8 +211,14 @@ PetscErrorCode Mesh::BuildTables(const std::vector<std::string> &sets, PetscSF m
   }
   PetscCall(VecRestoreArrayRead(coords, &xa));
   PetscCall(MPIU_Allreduce(&owned, &num_global_nodes, 1, MPIU_INT, MPI_SUM, comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
-  // Cell -> node table from the closure (vertex order = input order).
+PetscErrorCode Mesh::BuildCellNodes()
+{
+  const PetscInt ve = vstart_ + num_nodes;
+
+  PetscFunctionBeginUser;
   cell_nodes.resize(4 * num_cells);
   for (PetscInt c = 0; c < num_cells; ++c) {
     PetscInt nclosure, *closure = nullptr, k = 0;
@@ -211,9 +233,14 @@ PetscErrorCode Mesh::BuildTables(const std::vector<std::string> &sets, PetscSF m
     PetscCall(DMPlexRestoreTransitiveClosure(dm, cstart_ + c, PETSC_TRUE, &nclosure, &closure));
     PetscCheck(k == 4, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Cell %d has %d vertices, expected 4", (int)c, (int)k);
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
-  // Boundary sets: vertices of the label become node sets; labelled edges
-  // (each bounds exactly one cell, so exactly one rank has it) become edge sets.
+PetscErrorCode Mesh::BuildSets(const std::vector<std::string> &sets)
+{
+  const PetscInt ce = cstart_ + num_cells, ve = vstart_ + num_nodes;
+
+  PetscFunctionBeginUser;
   for (const auto &name : sets) {
     DMLabel label;
     IS is;

@@ -218,6 +218,16 @@ private:
   PetscErrorCode LocalToNodeFrames(Vec v_local, Vec v_global, InsertMode mode);
   // The friction correction rows into K and the loads (after assembly).
   PetscErrorCode AddCouplings();
+  // The steps of Solve: the prescribed dofs owned here as global rows and their values; the rows
+  // K(rows, :) kept for the reactions (rebuilt only when some rank's prescribed set changed); an iterate's
+  // largest out-of-balance force on the free rows, or the extra unknown's miss if larger (iterate_residual_; its
+  // b - K x left in work_); the factorization and solve (of the correction, with an iterate).
+  PetscErrorCode PrescribedRows(std::vector<PetscInt> &rows, std::vector<PetscScalar> &vals);
+  PetscErrorCode KeepReactionRows(const std::vector<PetscInt> &rows);
+  PetscErrorCode IterateResidual(const std::vector<PetscInt> &rows, const std::vector<PetscScalar> &b_rows, bool extra,
+                                 std::vector<double> &reactions);
+  PetscErrorCode FactorAndSolve(const std::vector<PetscInt> &rows, std::vector<PetscScalar> &vals,
+                                const std::vector<PetscScalar> &b_rows, bool extra, std::vector<double> &reactions);
 };
 
 } // namespace tf

@@ -182,6 +182,13 @@ private:
   // Step 6 of Run: the increment's forces, energies and the scene's measurements into the history.
   PetscErrorCode Record(PetscInt inc, double lambda0, double lambda, const Increment &step, const Committed &done,
                         Vec du);
+  // Its pieces: the forces on the new geometry and the step's own columns (r_min, residuals, counters, the
+  // release); the energy accounts and their self-checks; after the row is kept, the worst self-checks so far,
+  // the energy warning (once) and the divergence verdict.
+  PetscErrorCode StepColumns(PetscInt inc, double lambda, const Increment &step, const Committed &done,
+                             HistoryRow &row);
+  PetscErrorCode EnergyColumns(double lambda0, double lambda, const Committed &done, Vec du, HistoryRow &row);
+  PetscErrorCode WatchEnergy(PetscInt inc, double lambda, const HistoryRow &row);
   // The contact set's columns of a history row from a commit's report (none
   // without tools; report null: the initial state).
   PetscErrorCode ContactColumns(const ContactCommit *report, HistoryRow &row);
@@ -189,6 +196,16 @@ private:
   PetscErrorCode ExternalForces(double lambda);
   PetscErrorCode PrintMonitor(PetscInt inc, double lambda, const Increment &step, const HistoryRow &row);
   PetscErrorCode WriteFields(ResultWriter &writer, PetscInt step, double t);
+  // Steps 1-6 of Run: the increments from where the run stands to the path's end or a stop (`stop`).
+  PetscErrorCode Increments(ResultWriter &writer, OutputSchedule &output, Stop &stop);
+  // Step 2: the stages whose breakpoint lambda has reached begin (`breaks`: the stages' ends).
+  PetscErrorCode BeginStages(const std::vector<double> &breaks, Stop &stop);
+  // Step 3: the frames of the supports and contact nodes on the current geometry.
+  PetscErrorCode BeginIncrement(double lambda);
+  // Step 5: the increment committed (stresses, plastic states and geometry; inertia; contact), the compromise
+  // counters, lambda moved to its end (on next_break when it ends within kSnapToBreak x dl_stage of it: on_break).
+  PetscErrorCode Commit(Vec du, const Increment &taken, double next_break, double dl_stage, Committed &done,
+                        bool &on_break);
 };
 
 } // namespace tf

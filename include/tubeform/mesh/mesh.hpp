@@ -49,7 +49,15 @@ public:
 
 private:
   PetscInt vstart_ = 0, cstart_ = 0;
+  // The per-rank tables of the distributed dm: counts, original numbers, then the pieces below.
   PetscErrorCode BuildTables(const std::vector<std::string> &sets, PetscSF migration);
+  // Each node's original number, dof offset, owner flag and initial coordinates (orig: BuildTables').
+  PetscErrorCode BuildNodeTables(const std::vector<PetscInt> &orig, PetscInt pstart);
+  // The cell -> node table from each cell's closure (vertex order = input order).
+  PetscErrorCode BuildCellNodes();
+  // Boundary sets: vertices of the label become node sets; labelled edges
+  // (each bounds exactly one cell, so exactly one rank has it) become edge sets.
+  PetscErrorCode BuildSets(const std::vector<std::string> &sets);
 };
 
 } // namespace tf
