@@ -6,18 +6,23 @@ Each tube of scripts/validate's set (and the paper's nine) is run at resolutions
 D cells around per bending length sqrt(Ro t), step level s: -increments 100 s, -rmin_deps 0.002 / s,
 -rmin_domega 0.01 / s) with one element for all (the preset run's) and one friction regularization (VCRI a length
 of the tube, 8.3e-4 sqrt(Ro t): 2 % of the default preset's node spacing), so that only what a level names
-changes. Runs are cached under results/levels/<tube>/ (delete a file to run it again).
+changes. Runs are cached under results/levels/<tube>/ (delete a file to run it again; --cache DIR or $TF_LEVELS
+reads another checkout's cache: eval, show and shipped start no run).
 
     /usr/bin/python3 studies/estimate_levels.py run  --tubes al_11.7_mu0.05,... [--plan grid|estimate|reference] [-j 2]
     /usr/bin/python3 studies/estimate_levels.py show --tubes ...            # values at the reported strokes
-    /usr/bin/python3 studies/estimate_levels.py eval --tubes ...            # candidates' effectivity
+    /usr/bin/python3 studies/estimate_levels.py eval --tubes ... [--misses] # candidates' effectivity and alarms
     /usr/bin/python3 studies/estimate_levels.py shipped --tubes ...         # the runs' own estimate (plan preset)
     /usr/bin/python3 studies/estimate_levels.py demand --tubes ... [--target 0.005]   # accuracy on demand
 
 Plans: `preset` runs the tube with options/preset-fast.opts and preset-default.opts as a user would, its estimate
-on (what `shipped` judges); `estimate` runs what the estimate's candidates read (the preset levels (2, 12, 1) and (4, 24, 1) with
-their step and mesh companions); `reference` the tube's converged answer (the step ladder s 1, 2, 4 on the mesh
-(2 nt, 48) and the mesh (3 nt, 68) at s 1, nt the default preset's); `grid` nt x D at s 1.
+on (what `shipped` judges); `estimate` runs what the estimate's candidates read (the preset levels (2, 12, 1) and
+(4, 24, 1) with their step and mesh companions); `reference` the tube's converged answer (the step ladder s 1, 2, 4 on
+the mesh (2 nt, 48) and the mesh (3 nt, 68) at s 1, nt the default preset's); `grid` nt x D at s 1.
+
+`eval` judges CANDIDATES on the preset levels (run; S its steps' companion; M the mesh companion, half the cells
+through the wall (at least 2) and around; MS both; MM half M's): (a) signed parts, (b) Richardson per part, (c) the
+contact ripple out (FIT_PERIODS) or its worst phase, (d) GCI, steps on the run's mesh; fitted factors, one tube out.
 """
 import argparse
 import concurrent.futures
@@ -26,6 +31,7 @@ import importlib.util
 import json
 import math
 import os
+import pathlib
 import sys
 
 import h5py
@@ -40,7 +46,9 @@ _spec = importlib.util.spec_from_loader("validate", _loader)
 validate = importlib.util.module_from_spec(_spec)
 _loader.exec_module(validate)
 
-OUT = os.path.join(ROOT, "results", "levels")
+# The runs' cache: --cache DIR, else $TF_LEVELS, else results/levels of this checkout (read-only use of another
+# checkout's cache: point --cache at its results/levels; eval, show and shipped start no run when the files exist).
+OUT = os.environ.get("TF_LEVELS", os.path.join(ROOT, "results", "levels"))
 PAPER = {f"paper_{tube}_mu{mu}": f"options/squaring_{tube}_mu{mu}.opts" for tube in ("al_11.67", "al_37", "cu_29")
          for mu in ("0.05", "0.20", "0.35")}
 # The friction regularization as a length of the tube: 2 % of the default preset's node spacing sqrt(Ro t) / 24.
@@ -72,35 +80,22 @@ def run(name, nt, d, s, element):
     return cached_run(name, label(nt, d, s, element), [str(o) for o in extra], lambda line: False)
 
 
-# SMOOTH > 0: values read off a local quadratic fit over +-SMOOTH mm of stroke (one-sided at the end), the contact
-# ripple taken out; the run's own departure from its fit is then added to each candidate (it is the run's error).
-SMOOTH = float(os.environ.get("SMOOTH", "0"))
-
-
-def at(U, F, u):
-    if SMOOTH <= 0:
+def at(U, F, u, w=0.0):
+    """F at stroke u: interpolated (w 0), or read off a local quadratic fit over u +- w (one-sided at the end)."""
+    if w <= 0:
         return float(np.interp(u, U, F))
-    m = (U >= u - SMOOTH) & (U <= u + SMOOTH)
-    if u + SMOOTH > U[-1] + 1e-9:
-        m = U >= U[-1] - 2 * SMOOTH
-    c = np.polyfit(U[m] - u, F[m], 2)
-    return float(c[-1])
+    m = (U >= u - w) & (U <= u + w) if u + w <= U[-1] + 1e-9 else U >= U[-1] - 2 * w
+    return float(np.polyfit(U[m] - u, F[m], 2)[-1])
 
 
-def values(h5, strokes, raw=False):
-    """Load and C/t at the strokes, C/t after springback; and the loading curve."""
-    global SMOOTH
-    keep = SMOOTH
-    if raw:
-        SMOOTH = 0
+def values(h5, strokes, w=0.0):
+    """Load and C/t at the strokes (fitted over +- w mm, `at`), C/t after springback; and the loading curve."""
     with h5py.File(h5, "r") as h:
         H = h["/history"]
         load = H["stage"][:] == 0
         U, P, C = H["stroke"][:][load], H["load"][:][load], H["c_over_t"][:][load]
         spring = float(H["c_over_t"][-1])
-    out = [at(U, P, u) for u in strokes], [at(U, C, u) for u in strokes], spring, (U, P, C)
-    SMOOTH = keep
-    return out
+    return [at(U, P, u, w) for u in strokes], [at(U, C, u, w) for u in strokes], spring, (U, P, C)
 
 
 def preset_nt(name, strain, least):
@@ -144,11 +139,8 @@ def plan(name, which):
     if which == "grid":
         return [(n, d, 1, element) for n in (2, 4, 8) for d in (12, 24, 48)]
     if which == "estimate":
-        runs = []
-        for nt, d in ((fast_nt, 12), (default_nt, 24)):
-            el = "qm6bar" if nt >= 5 else "qm6"
-            runs += [(nt, d, 1, el), (nt, d, 0.5, el), (max(2, nt // 2), d / 2, 1, el), (max(2, nt // 2), d / 2, 0.5, el)]
-        return runs
+        return [(n, d, s, "qm6bar" if nt >= 5 else "qm6") for nt, e in ((fast_nt, 12), (default_nt, 24))
+                for n, d, s in ((nt, e, 1), (nt, e, 0.5), (max(2, nt // 2), e / 2, 1), (max(2, nt // 2), e / 2, 0.5))]
     if which == "preset":
         return [("preset", p) for p in PRESETS]
     if which == "reference":
@@ -163,17 +155,21 @@ def strokes(name):
     return [u for u in tfruns.LOAD_AT if u < final - 1e-9] + [final]
 
 
+def done(path):
+    """Whether the cached run `path` (no extension) exists and finished."""
+    return os.path.exists(path + ".json") and json.loads(pathlib.Path(path + ".json").read_text())["status"] == "done"
+
+
 def reference(name):
     """The tube's converged answer: the step ladder on the mesh (2 nt, 48) extrapolated as a first-order method's
     limit (2 f(4) - f(2)), with the mesh's remaining error from (3 nt, 68) at s 1 against (2 nt, 48) at s 1; its
     uncertainty the larger of the two corrections (per value). None until its runs exist."""
     nt = max(4, preset_nt(name, 0.022, 4))
     element = "qm6bar" if preset_nt(name, 0.022, 4) >= 5 else "qm6"
-    want = [(2 * nt, 48, 1), (2 * nt, 48, 2), (2 * nt, 48, 4), (3 * nt, 68, 1)]
     got = []
-    for n, d, s in want:
+    for n, d, s in [(2 * nt, 48, 1), (2 * nt, 48, 2), (2 * nt, 48, 4), (3 * nt, 68, 1)]:
         path = os.path.join(OUT, name, label(n, d, s, element))
-        if not os.path.exists(path + ".json") or json.load(open(path + ".json"))["status"] != "done":
+        if not done(path):
             return None
         P, C, S, _ = values(path + ".h5", strokes(name))
         got.append(np.array(P + C + [S]))
@@ -183,132 +179,210 @@ def reference(name):
     return {"value": f1 + step + mesh, "unc": np.maximum(np.abs(f4 - f2), np.abs(mesh))}
 
 
-def estimates(name, nt, d, element):
-    """The run (nt, d, 1) and its companions' values (None if missing)."""
-    runs = {}
-    for key, (n, dd, s) in {"run": (nt, d, 1), "S": (nt, d, 0.5), "M": (max(2, nt // 2), d / 2, 1),
-                            "MS": (max(2, nt // 2), d / 2, 0.5)}.items():
-        path = os.path.join(OUT, name, label(n, dd, s, element))
-        if not os.path.exists(path + ".json") or json.load(open(path + ".json"))["status"] != "done":
-            return None
-        P, C, S, _ = values(path + ".h5", strokes(name))
-        runs[key] = np.array(P + C + [S])
-        if key == "run":
-            P, C, S, _ = values(path + ".h5", strokes(name), raw=True)
-            runs["raw"] = np.array(P + C + [S])
-    return runs
+# The levels of a preset's run the candidates read: divisors of its cells through the wall and around, step level.
+LEVELS = {"run": (1, 1, 1), "S": (1, 1, 0.5), "M": (2, 2, 1), "MS": (2, 2, 0.5), "MM": (4, 4, 1)}
+# The contact ripple is taken out of a curve by a local quadratic fit over +- this many of its periods.
+FIT_PERIODS = float(os.environ.get("FIT_PERIODS", "2"))
 
 
-def _a(x):
-    return np.abs(x)
+def record(name, preset):
+    """A preset's level run (nt, D, s 1) and its companions, from the cache: per level its C/t after springback and
+    loading curve (None where not cached), the element, the cells through the wall, and the contact ripple's period:
+    the mesh companion's loading stroke over the times a node of it comes into contact. None without run, M, MS."""
+    nt, d = (preset_nt(name, 0.044, 2), 12) if preset == "fast" else (preset_nt(name, 0.022, 4), 24)
+    r = {"strokes": strokes(name), "element": "qm6bar" if nt >= 5 else "qm6", "nt": nt, "curves": {}}
+    for key, (a, b, s) in LEVELS.items():
+        n = nt if a == 1 else max(2, nt // 2) if a == 2 else max(2, nt // 4)
+        path = os.path.join(OUT, name, label(n, d / b, s, r["element"]))
+        r["curves"][key] = values(path + ".h5", [])[2:] if done(path) else None
+        if key == "M" and done(path):
+            with h5py.File(path + ".h5", "r") as h:
+                gains = np.count_nonzero(np.diff(h["/history/n_contact"][:][h["/history/stage"][:] == 0]) > 0)
+            r["period"] = r["curves"]["M"][1][0][-1] / max(1, gains)
+    return r if all(r["curves"][k] is not None for k in ("run", "M", "MS")) else None
 
 
-# Candidate estimators from the run and its companions: S (the run's mesh, half the step level), M (half the mesh,
-# the run's steps), MS (both halved: the estimate before this study).
+def at_cells(r, key, w=0.0):
+    """Level `key`'s loads and C/t at the reported strokes (fitted over +- w mm), C/t after springback."""
+    spring, (U, P, C) = r["curves"][key]
+    return np.array([at(U, P, u, w) for u in r["strokes"]] + [at(U, C, u, w) for u in r["strokes"]] + [spring])
+
+
+def parts(r, periods=0.0):
+    """The steps' part MS - M, the mesh's part M - run (signed), and the run's own contact ripple |run - its fit|:
+    the curves fitted over +- `periods` contact periods (0: as they are, no ripple)."""
+    run, m, ms = (at_cells(r, k, periods * r["period"]) for k in ("run", "M", "MS"))
+    return ms - m, m - run, np.abs(at_cells(r, "run") - run)
+
+
+# Richardson's 1 / (2^p - 1) for the mesh's part at refinement 2: p = 1 for qm6 (stiff by about 1/n through the
+# wall), p = 2 for qm6bar (docs/accuracy.md, "The element through the wall").
+mesh_factor = lambda r: 1 / 3 if r["element"] == "qm6bar" else 1.0  # noqa: E731
+
+
+def ripple_free(r, worst=False, mesh=1.0, spring=False):
+    """|MS - M| + mesh |M - run| with the contact ripple out: the curves fitted over +- FIT_PERIODS periods plus the
+    run's own ripple, or (worst) the largest over u +- one period. `spring`: C/t after springback as the loaded end's
+    estimate plus that of the springback's change (a sum's error is within the sum of its terms')."""
+    s, m, q = parts(r, 0 if worst else FIT_PERIODS)
+    est, U = A(s) + mesh * A(m) + q, r["curves"]["run"][1][0]
+    for k, (col, u) in enumerate([(c, u) for c in (1, 2) for u in r["strokes"]] if worst else []):
+        us = np.linspace(max(U[0], u - r["period"]), min(U[-1], u + r["period"]), 41)
+        y = {k: np.interp(us, r["curves"][k][1][0], r["curves"][k][1][col]) for k in ("run", "M", "MS")}
+        est[k] = np.max(A(y["MS"] - y["M"]) + mesh * A(y["M"] - y["run"]))
+    if spring:
+        run, m, ms = (at_cells(r, k)[-1] - at_cells(r, k)[-2] for k in ("run", "M", "MS"))
+        est[-1] = est[-2] + A(ms - m) + mesh * A(m - run)
+    return est
+
+
+def gci(r):
+    """Roache's grid convergence index from the meshes run, M, MM (Celik et al. 2008), plus |MS - M|: where the mesh
+    converges monotonically (0 < (run - M) / (M - MM) < 1) at an observed order p in [0.5, 2] (qm6's 1 within a
+    factor 2), 1.25 |M - run| / (2^p - 1); elsewhere 3 |M - run| (p 1, the two-grid factor). qm6 runs with MM only."""
+    if r["curves"]["MM"] is None or r["element"] != "qm6":
+        return None
+    run, m, mm = (at_cells(r, k) for k in ("run", "M", "MM"))
+    R = (run - m) / np.where(m == mm, 1e-300, m - mm)
+    p = np.log(1 / np.clip(R, 1e-12, None)) / np.log(2)
+    sure = (R > 0) & (R < 1) & (p >= 0.5) & (p <= 2)
+    return A(parts(r)[0]) + np.where(sure, 1.25 / (2 ** np.clip(p, 0.5, 2) - 1), 3) * A(m - run)
+
+
+A = np.abs
+# Candidates: an estimate (the values' units) from a record, None where its levels are missing. "old" and the
+# second-order mesh are what docs/accuracy.md compares with; (a)-(d) the families the study of the estimate tried.
 CANDIDATES = {
-    "old: 3 |MS - run|": lambda r: 3 * _a(r["MS"] - r["run"]),
-    "|MS - run|": lambda r: _a(r["MS"] - r["run"]),
-    "1.25 |MS - run|": lambda r: 1.25 * _a(r["MS"] - r["run"]),
-    "|S - run| + |M - run| / 3": lambda r: _a(r["S"] - r["run"]) + _a(r["M"] - r["run"]) / 3,
-    "|S - run| + |M - run|": lambda r: _a(r["S"] - r["run"]) + _a(r["M"] - r["run"]),
-    "1.25 |S - run + (M - run) / 3|": lambda r: 1.25 * _a(r["S"] - r["run"] + (r["M"] - r["run"]) / 3),
-    "|MS - M| + |M - run| / 3": lambda r: _a(r["MS"] - r["M"]) + _a(r["M"] - r["run"]) / 3,
-    "|MS - M| + |M - run|": lambda r: _a(r["MS"] - r["M"]) + _a(r["M"] - r["run"]),
+    "old: 3 |MS - run|": lambda r: 3 * A(sum(parts(r)[:2])),
+    "shipped: |MS - M| + |M - run|": lambda r: A(parts(r)[0]) + A(parts(r)[1]),
+    "|MS - M| + |M - run| / 3": lambda r: A(parts(r)[0]) + A(parts(r)[1]) / 3,
+    "a signed: |MS - run| (p 1)": lambda r: A(sum(parts(r)[:2])),
+    "a max(signed, parts / 2)": lambda r: np.maximum(A(sum(parts(r)[:2])), (A(parts(r)[0]) + A(parts(r)[1])) / 2),
+    "a max(signed, larger part)": lambda r: np.maximum(A(sum(parts(r)[:2])), np.maximum(*map(A, parts(r)[:2]))),
+    "b |MS - M| + |M - run| / (2^p - 1)": lambda r: A(parts(r)[0]) + mesh_factor(r) * A(parts(r)[1]),
+    "c fitted + ripple, b": lambda r: ripple_free(r, mesh=mesh_factor(r)),
+    "c fitted + ripple, b, sprung from the end": lambda r: ripple_free(r, mesh=mesh_factor(r), spring=True),
+    "c max over +- 1 period, b": lambda r: ripple_free(r, worst=True, mesh=mesh_factor(r)),
+    "c max over +- 1 period, b, sprung from the end": lambda r: ripple_free(r, True, mesh_factor(r), True),
+    "d GCI run, M, MM": gci,
+    "d shipped where GCI applies": lambda r: None if gci(r) is None else A(parts(r)[0]) + A(parts(r)[1]),
+    "d |S - run| + |M - run|": lambda r: A(at_cells(r, "S") - at_cells(r, "run")) + A(parts(r)[1]),
 }
+# Bases for a fitted factor c (the least that bounds 95 % of the cells): how sharp each could be, and, leaving one
+# tube out, how far c fitted to four tubes carries to the fifth.
+FITTED = ("shipped: |MS - M| + |M - run|", "a signed: |MS - run| (p 1)", "c fitted + ripple, b, sprung from the end")
 
 
-def evaluate(tubes):
-    """Each candidate's effectivity (estimate / true error) over the cells: load (relative) and C/t at the reported
-    strokes, C/t after springback; a cell is bounded when the estimate reaches the error less the reference's
-    uncertainty."""
-    cells = {c: [] for c in CANDIDATES}
+def judge(t, preset, strokes, ref, value, est, c=None):
+    """A run's cells (tube, preset, quantity, stroke, error, reference's uncertainty, estimate: the load relative, C/t
+    from U = 2 mm on and sprung) and alarm row (tube, preset, largest errors and estimates of load and C/t); `est`
+    in the values' units times c, or (c None) relative for the load."""
+    n = len(strokes)
+    scale = np.array([abs(v) for v in ref["value"][:n]] + [1.0] * (n + 1))
+    err, unc, est = (value - ref["value"]) / scale, ref["unc"] / scale, est if c is None else c * est / scale
+    ks = [k for k in range(2 * n + 1) if k < n or k == 2 * n or strokes[k - n] >= 2 - 1e-9]
+    cells = [(t, preset, "load" if k < n else "C/t", (strokes + strokes + ["sprung"])[k], err[k], unc[k], est[k])
+             for k in ks]
+    lo, hi = [k for k in ks if k < n], [k for k in ks if k >= n]
+    return cells, (t, preset, max(A(err[lo])), max(A(err[hi])), max(est[lo]), max(est[hi]))
+
+
+def cells_of(tubes, f, c=1.0):
+    """Candidate f (times c) on the preset levels of the tubes: their cells and alarm rows (`judge`)."""
+    cells, runs = [], []
     for t in tubes:
         ref = reference(t)
-        if ref is None:
-            print(f"{t}: no reference yet")
-            continue
-        fast_nt, default_nt = preset_nt(t, 0.044, 2), preset_nt(t, 0.022, 4)
-        for preset, nt, d in (("fast", fast_nt, 12), ("default", default_nt, 24)):
-            r = estimates(t, nt, d, "qm6bar" if nt >= 5 else "qm6")
-            if r is None:
-                print(f"{t} {preset}: no runs yet")
-                continue
-            n = len(strokes(t))
-            scale = np.array([abs(v) for v in ref["value"][:n]] + [1.0] * (n + 1))  # load relative, C/t absolute
-            err, unc = (r["raw"] - ref["value"]) / scale, ref["unc"] / scale
-            ripple = np.abs(r["raw"] - r["run"])
-            for c, f in CANDIDATES.items():
-                est = (f(r) + ripple) / scale
-                for k in range(2 * n + 1):
-                    what = "load" if k < n else "C/t"
-                    if what == "C/t" and k < 2 * n and strokes(t)[k - n] < 2 - 1e-9:
-                        continue  # (C/t below U = 2 mm: the side has not folded in; 0 on most tubes)
-                    cells[c].append((t, preset, what, k, err[k], unc[k], est[k]))
-    if os.environ.get("CELLS"):
-        for x in cells[os.environ["CELLS"]]:
-            print(f"  {x[0]:20s} {x[1]:8s} {x[2]:5s} {x[3]} error {x[4]:+.5f} unc {x[5]:.5f} estimate {x[6]:.5f}")
-    for c, rows in cells.items():
-        if not rows:
-            continue
-        e = np.array([abs(x[4]) for x in rows]); u = np.array([x[5] for x in rows]); s = np.array([x[6] for x in rows])
-        bounded = s >= e - u
-        eff = s / np.maximum(e, 1e-12)
-        print(f"{c:32s} cells {len(rows):3d}  bounded {bounded.mean():5.1%}  median effectivity {np.median(eff):6.2f}"
-              f"  within 3x {np.mean(bounded & (eff <= 3)):5.1%}")
-    return cells
+        for preset, r in ((p, record(t, p)) for p in (PRESETS if ref is not None else ())):
+            est = None if r is None else f(r)
+            if est is not None:
+                got = judge(t, preset, r["strokes"], ref, at_cells(r, "run"), est, c)
+                cells, runs = cells + got[0], runs + [got[1]]
+    return cells, runs
 
 
-def shipped(tubes):
-    """The runs' own estimate (plan preset) against the reference, cell by cell (the cells of `evaluate`), and
-    run by run: a false alarm warns (its estimate passes the preset's target) where the true error is within half
-    the target, a missed alarm does not warn where the true error passes it."""
-    cells, alarms, rows = [], {"false": [], "missed": [], "runs": 0}, []
+# Whether a load error (relative) or a C/t error passes the preset's target.
+warns = lambda p, load, ct: load > PRESETS[p][0] or ct > PRESETS[p][1]  # noqa: E731
+
+
+def scores(cells, runs=()):
+    """Bounded share, median effectivity, share within 3 x (bounded and at most 3 x), that share on the cells whose
+    error the reference resolves (at least twice its uncertainty); false and missed alarms."""
+    e, u, s = (A(np.array([x[k] for x in cells])) for k in (4, 5, 6))
+    bounded, eff = s >= e - u, s / np.maximum(e, 1e-12)
+    false = [f"{t} {p}" for t, p, ep, ec, sp, sc in runs if warns(p, sp, sc) and not warns(p, 2 * ep, 2 * ec)]
+    missed = [f"{t} {p}" for t, p, ep, ec, sp, sc in runs if not warns(p, sp, sc) and warns(p, ep, ec)]
+    sharp = bounded & (eff <= 3)
+    return bounded.mean(), np.median(eff), sharp.mean(), sharp[e >= 2 * u].mean(), false, missed
+
+
+HEAD = ("| estimate | cells | bounded | median eff. | within 3x | within 3x, resolved | load: bounded, median, 3x "
+        "| C/t | false alarms | missed alarms |\n" + "|---" * 10 + "|")
+
+
+def table(name, cells, runs, misses):
+    """One row of the candidates' table (and its unbounded cells under it); none without cells."""
+    if not cells:
+        return
+    b, m, w, wr, false, missed = scores(cells, runs)
+    q = [scores([x for x in cells if x[2] == what])[:3] for what in ("load", "C/t")]
+    print(f"| {name.replace('|', '&#124;')} | {len(cells)} | {b:.1%} | {m:.2f} | {w:.1%} | {wr:.1%} | " +
+          " | ".join(f"{x[0]:.0%} {x[1]:.1f} {x[2]:.0%}" for x in q) +
+          f" | {len(false)} {' '.join(false)} | {len(missed)} {' '.join(missed)} |")
+    for x in [x for x in cells if x[6] < A(x[4]) - x[5]] if misses else []:
+        print(f"| miss: {x[0]} {x[1]} {x[2]} at {x[3]} | error {x[4]:+.4f} unc {x[5]:.4f} estimate {x[6]:.4f} |")
+
+
+def evaluate(tubes, misses=False):
+    """Each candidate on the preset levels' cells (plan estimate) against the reference: a cell is bounded when the
+    estimate reaches the error less the reference's uncertainty; a run warns when an estimate passes its preset's
+    target (PRESETS), falsely where its errors are within half of them, and misses where an error passes it."""
+    print(HEAD.replace("estimate", "candidate"))
+    for name, f in CANDIDATES.items():
+        table(name, *cells_of(tubes, f), misses)
+    print("\n| base x c | c | bounded | median eff. | within 3x | error / base at 20, 50, 95 % | leave one tube out: "
+          "c | bounded | median eff. | within 3x |\n|---|---|---|---|---|---|---|---|---|---|")
+    for name in FITTED:
+        base = cells_of(tubes, CANDIDATES[name])[0]
+        c, q = fitted(base), np.percentile([A(x[4]) / max(x[6], 1e-15) for x in base], [20, 50, 95])
+        cs = [fitted(cells_of([o for o in tubes if o != t], CANDIDATES[name])[0]) for t in tubes]
+        held = sum((cells_of([t], CANDIDATES[name], k)[0] for t, k in zip(tubes, cs)), [])
+        all_, out = scores(cells_of(tubes, CANDIDATES[name], c)[0]), scores(held)
+        print(f"| {name.replace('|', '&#124;')} | {c:.2f} | {all_[0]:.1%} | {all_[1]:.2f} | {all_[2]:.1%} | "
+              f"{q[0]:.2f} {q[1]:.2f} {q[2]:.2f} | {min(cs):.2f}-{max(cs):.2f} | {out[0]:.1%} | {out[1]:.2f} | "
+              f"{out[2]:.1%} |")
+
+
+def fitted(cells):
+    """The least factor c for which c x estimate bounds 95 % of the cells."""
+    need = np.sort([max(A(x[4]) - x[5], 0) / max(x[6], 1e-15) for x in cells])
+    return float(need[math.ceil(0.95 * len(need)) - 1]) * (1 + 1e-9)
+
+
+def shipped(tubes, misses=False):
+    """The runs' own estimate (plan preset; a run not cached is skipped, not started) against the reference, cell by
+    cell and run by run as `evaluate` judges a candidate."""
+    cells, runs = [], []
     for t in tubes:
         ref = reference(t)
-        if ref is None:
-            print(f"{t}: no reference yet")
-            continue
-        n = len(strokes(t))
-        for preset, (tp, tc) in PRESETS.items():
-            m, h5 = run_preset(t, preset)
-            if m["status"] != "done":
-                print(f"{t} {preset}: {m['status']}")
+        for preset in PRESETS:
+            h5 = os.path.join(OUT, t, f"preset_{preset}.h5")
+            if ref is None or not done(h5[:-3]):
+                print(f"{t} {preset}: no reference or no preset run cached")
                 continue
-            P, C, S, _ = values(h5, strokes(t), raw=True)
+            P, C, S, _ = values(h5, strokes(t))
             with h5py.File(h5, "r") as h:
                 a = dict(h["/history"].attrs)
             us = [f"{u:g}" for u in strokes(t)[:-1]]
-            est = ([a[f"error_load_at_{u}"] for u in us] + [a["error_loaded_load"]] +
-                   [a[f"error_c_over_t_at_{u}"] for u in us] + [a["error_loaded_c_over_t"], a["error_unloaded_c_over_t"]])
-            scale = np.array([abs(v) for v in ref["value"][:n]] + [1.0] * (n + 1))
-            err, unc = (np.array(P + C + [S]) - ref["value"]) / scale, ref["unc"] / scale
-            for k in range(2 * n + 1):
-                if n <= k < 2 * n and strokes(t)[k - n] < 2 - 1e-9:
-                    continue  # (C/t below U = 2 mm, as in evaluate)
-                cells.append((t, preset, "load" if k < n else "C/t", k, err[k], unc[k], est[k]))
-            worst_p, worst_c = np.abs(err[:n]).max(), np.abs(err[n:]).max()
-            warns = a["error_load"] > tp or a["error_c_over_t"] > tc
-            alarms["runs"] += 1
-            if warns and worst_p < tp / 2 and worst_c < tc / 2:
-                alarms["false"].append(f"{t} {preset}")
-            if not warns and (worst_p > tp or worst_c > tc):
-                alarms["missed"].append(f"{t} {preset}")
-            rows.append(f"| {t} | {preset} | {100 * worst_p:.2f} % | {100 * a['error_load']:.2f} % | {worst_c:.4f} | "
-                        f"{a['error_c_over_t']:.4f} | {'warns' if warns else ''} |")
-    if not cells:
-        return
-    if os.environ.get("CELLS"):
-        for x in cells:
-            print(f"  {x[0]:18s} {x[1]:8s} {x[2]:5s} {x[3]} error {x[4]:+.5f} unc {x[5]:.5f} estimate {x[6]:.5f}"
-                  f"  {x[6] / max(abs(x[4]), 1e-12):6.2f}")
-    print("| tube | preset | load: largest error | estimate | C/t: largest error | estimate | |")
-    print("|---|---|---|---|---|---|---|")
-    print("\n".join(rows) + "\n")
-    e = np.array([abs(x[4]) for x in cells]); u = np.array([x[5] for x in cells]); s = np.array([x[6] for x in cells])
-    bounded, eff = s >= e - u, s / np.maximum(e, 1e-12)
-    print(f"shipped: cells {len(cells)}  bounded {bounded.mean():5.1%}  median effectivity {np.median(eff):.2f}  "
-          f"within 3x {np.mean(bounded & (eff <= 3)):5.1%};  runs {alarms['runs']}, false alarms "
-          f"{len(alarms['false'])} {alarms['false']}, missed alarms {len(alarms['missed'])} {alarms['missed']}")
+            est = ([a[f"error_load_at_{u}"] for u in us] + [a["error_loaded_load"]] + [a[f"error_c_over_t_at_{u}"]
+                   for u in us] + [a["error_loaded_c_over_t"], a["error_unloaded_c_over_t"]])
+            got = judge(t, preset, strokes(t), ref, np.array(P + C + [S]), np.array(est))
+            cells, runs = cells + got[0], runs + [got[1]]
+    print("| tube | preset | load: largest error | estimate | C/t: largest error | estimate | |\n" + "|---" * 7 + "|")
+    for t, p, ep, ec, sp, sc in runs:
+        print(f"| {t} | {p} | {100 * ep:.2f} % | {100 * sp:.2f} % | {ec:.4f} | {sc:.4f} | "
+              f"{'warns' if warns(p, sp, sc) else ''} |")
+    print("\n" + HEAD)
+    table("shipped (the preset runs' own)", cells, runs, misses)
 
 
 def demand(tubes, target):
@@ -325,7 +399,7 @@ def demand(tubes, target):
             print(f"| {t} | {target:g} | {m['status']} | | | | | |")
             continue
         n = len(strokes(t))
-        P, C, S, _ = values(h5, strokes(t), raw=True)
+        P, C, S, _ = values(h5, strokes(t))
         with h5py.File(h5, "r") as h:
             a = dict(h["/history"].attrs)
         err = (np.array(P + C + [S]) - ref["value"])
@@ -337,23 +411,22 @@ def demand(tubes, target):
 
 
 def main():
+    global OUT
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("what", choices=("run", "show", "eval", "shipped", "demand"))
     ap.add_argument("--target", type=float, default=0.005, help="demand: the -target_load")
     ap.add_argument("--tubes", required=True)
     ap.add_argument("--plan", default="estimate,reference")
     ap.add_argument("-j", type=int, default=1)
+    ap.add_argument("--misses", action="store_true", help="eval, shipped: list the unbounded cells")
+    ap.add_argument("--cache", default=OUT, help="the folder of the cached runs (default $TF_LEVELS or results/levels)")
     a = ap.parse_args()
+    OUT = a.cache
     tubes = a.tubes.split(",")
-    if a.what == "eval":
-        evaluate(tubes)
-        return
-    if a.what == "shipped":
-        shipped(tubes)
-        return
+    if a.what in ("eval", "shipped"):
+        return (evaluate if a.what == "eval" else shipped)(tubes, a.misses)
     if a.what == "demand":
-        demand(tubes, a.target)
-        return
+        return demand(tubes, a.target)
     jobs = [(t, *r) for t in tubes for p in a.plan.split(",") for r in plan(t, p)]
     if a.what == "run":
         one = lambda j: run_preset(j[0], j[2]) if j[1] == "preset" else run(*j)  # noqa: E731
