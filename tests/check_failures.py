@@ -9,7 +9,10 @@ inner solver reads -redundant_mat_mumps_*: the 1,666-dof case on 1 and 2
 ranks), above it on 2 ranks MUMPS factors it distributed (-mat_mumps_*: the
 24,682-dof case); the other prefix is read by no one (-options_left lists it),
 so advice naming it would do nothing. The option the message names is the one
-that made the run fail, so it demonstrably acts on that path.
+that made the run fail, so it demonstrably acts on that path. The same for
+MUMPS's workspace cut to half its estimate (ICNTL(14) = -50 %: INFOG(1) =
+-9) on 1 rank and distributed on 2: the line names that path's icntl_14, and
+the run given it at 50, as the line says, goes through.
 
 Numbers that overflow: a press speed of 1e300 mm/s (the stroke in 4e-300 s:
 the inertia term M / dt^2 of the first increment overflows; a modulus of
@@ -47,6 +50,19 @@ for np_, mesh, option in [(1, (16, 48), "-redundant_mat_mumps_icntl_23"), (2, (1
         with h5py.File(f, "r") as h:
             ok = h["/history"].attrs["stopped"] == 1
     k.check(ok, f"np={np_}: results written and flagged stopped")
+
+# MUMPS's workspace cut to half its own estimate (ICNTL(14) = -50 percent): INFOG(1) = -9. The line names the
+# workspace option of the path in use, and that option, raised as the line says, lets the same run through.
+for np_, mesh, option in [(1, (16, 48), "-redundant_mat_mumps_icntl_14"), (2, (40, 300), "-mat_mumps_icntl_14")]:
+    case = ["-options_file", f"{src}/options/pressure.opts", "-mesh_nt", mesh[0], "-mesh_ntheta", mesh[1],
+            "-increments", 2, "-output", out(f"workspace_np{np_}.h5")]
+    p = run(tf, mpirun, np_, case + [option, -50], check=False, timeout=120)
+    lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
+    named = [w.strip(",:;()") for w in lines[0].split() if "mumps_icntl" in w] if lines else []
+    k.check(p.returncode != 0 and len(lines) == 1 and named == [option] and "INFOG(1) = -9" in lines[0],
+            f"np={np_} {mesh[0]} x {mesh[1]} with {option} -50: exit {p.returncode}, it names {named}: {lines}")
+    p = run(tf, mpirun, np_, case + [option, 50], check=False, timeout=120)
+    k.check(p.returncode == 0, f"np={np_} with {option} 50, as the line says: exit {p.returncode}")
 
 for np_ in (1, 2):
     f = out(f"overflow_np{np_}.h5")
