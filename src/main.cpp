@@ -16,6 +16,7 @@
 #include "tubeform/core/core.hpp"
 #include "tubeform/core/job_end.hpp"
 #include "tubeform/core/signals.hpp"
+#include "tubeform/driver/beside.hpp"
 #include "tubeform/driver/companions.hpp"
 #include "tubeform/driver/problem.hpp"
 #include "tubeform/io/options.hpp"
@@ -27,19 +28,19 @@ static const char help[] =
   "tubeform: updated-Lagrangian elasto-plastic FE analysis of tube squaring (plane strain).\n"
   "Usage: mpirun -n 2 build/tubeform -options_file options/<scene>.opts [-option value ...]\n\n";
 
-// A finer level of accuracy on demand (driver/refine.hpp), its options `level`: the last level's complete
+// A finer level of accuracy on demand (driver/refine.hpp), its options `level`, on comm: the last level's complete
 // results kept as <output stem>.level<k-1>.h5 while it runs into -output (removed once it ends; a stop or failure
 // leaves them), `next` what follows it.
-static PetscErrorCode RunFinerLevel(const tf::Options &level, const tf::Problem::CompanionRun &companion,
+static PetscErrorCode RunFinerLevel(MPI_Comm comm, const tf::Options &level, const tf::Problem::CompanionRun &companion,
                                     tf::Refinement &next)
 {
   std::string kept, why;
   PetscFunctionBeginUser;
   if (!level.output.empty()) {
     kept = tf::Formatted("%s.level%d.h5", tf::ResultStem(level.output).c_str(), (int)level.level - 1);
-    PetscCall(tf::KeepResultCopy(PETSC_COMM_WORLD, level.output, kept, why));
+    PetscCall(tf::KeepResultCopy(comm, level.output, kept, why));
     if (!why.empty()) {
-      PetscCall(PetscPrintf(PETSC_COMM_WORLD,
+      PetscCall(PetscPrintf(comm,
                             "tubeform: warning: no finer level: level %d's results in %s cannot be kept while it runs "
                             "(%s); they are the run's, with their estimate over the target\n",
                             (int)level.level - 1, level.output.c_str(), why.c_str()));
@@ -50,32 +51,51 @@ static PetscErrorCode RunFinerLevel(const tf::Options &level, const tf::Problem:
   const std::string note = kept.empty() ? ""
                                         : tf::Formatted(": level %d's results are kept in %s until it ends",
                                                         (int)level.level - 1, kept.c_str());
-  PetscCall(PetscPrintf(PETSC_COMM_WORLD, "tubeform: accuracy on demand, level %d (%.0f s so far)%s\n",
-                        (int)level.level, MPI_Wtime() - level.job_started, note.c_str()));
-  PetscCall(tf::RunOnce(PETSC_COMM_WORLD, level, false, companion, nullptr, &next));
+  PetscCall(PetscPrintf(comm, "tubeform: accuracy on demand, level %d (%.0f s so far)%s\n", (int)level.level,
+                        MPI_Wtime() - level.job_started, note.c_str()));
+  PetscCall(tf::RunOnce(comm, level, false, companion, nullptr, &next));
   PetscMPIInt rank;
-  PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0 && !kept.empty()) std::remove(kept.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The run of the options, level after level while its estimate passes its targets (accuracy on demand,
-// driver/refine.hpp): each level writes the results (the last level's are the run's).
+// The run of the options on comm, level after level while its estimate passes its targets (accuracy on demand,
+// driver/refine.hpp): each level writes the results (the last level's are the run's); `after` told what follows
+// each.
+static PetscErrorCode RunLevels(MPI_Comm comm, const tf::Options &opt, const tf::Problem::CompanionRun &companion,
+                                const tf::LevelHook &after)
+{
+  tf::Refinement next;
+  PetscFunctionBeginUser;
+  PetscCall(tf::RunOnce(comm, opt, false, companion, nullptr, &next));
+  if (after) PetscCall(after(next));
+  while (next.follows) {
+    PetscCall(RunFinerLevel(comm, next.next, companion, next));
+    if (after) PetscCall(after(next));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The run of the options: its error estimate's companions beside it where that costs no wall time
+// (driver/beside.hpp), else after it.
 static PetscErrorCode Run()
 {
   tf::Options opt;
+  PetscMPIInt size;
   PetscFunctionBeginUser;
   PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneNames(), opt));
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
   opt.job_started = MPI_Wtime();
+  PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   tf::Problem::CompanionRun companion;
-  if (opt.error_estimate && (opt.scene == "squaring" || opt.scene == "flattening"))
+  if (opt.error_estimate && (opt.scene == "squaring" || opt.scene == "flattening")) {
+    if (tf::CompanionsBeside(opt, size)) PetscFunctionReturn(tf::RunBeside(PETSC_COMM_WORLD, opt, RunLevels));
     companion = [](const tf::Options &ran, tf::Companions &out) {
       return tf::RunCompanions(PETSC_COMM_WORLD, ran, out);
     };
-  tf::Refinement next;
-  PetscCall(tf::RunOnce(PETSC_COMM_WORLD, opt, false, companion, nullptr, &next));
-  while (next.follows) PetscCall(RunFinerLevel(next.next, companion, next));
+  }
+  PetscCall(RunLevels(PETSC_COMM_WORLD, opt, companion, nullptr));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

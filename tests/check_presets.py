@@ -3,7 +3,10 @@ whole runs (loading + springback), checked against what they promise and
 what holds for any discretization; their accuracy against the converged
 reference is a benchmark (scripts/validate, scripts/against_ccx; docs/accuracy.md), not a test.
 
-- default preset on 1 and 2 ranks: load within 3.4e-9, x_max within 2.2e-11
+- the fast preset with its error estimate on 2 ranks: the run on one rank, its companions on the other ("beside
+  the run", their line says), every history column (the error columns included) bitwise equal to the 1-rank
+  run's: the same computations on the same data;
+- default preset on 1 and 2 ranks (its estimate off, the run on both ranks): load within 3.4e-9, x_max within 2.2e-11
   and C/t within 1e-9 of the largest value (the factorization is redundant,
   so only the summation order of the assembly differs): 100 times the largest
   of the values measured with MUMPS and equilibrium iterations on OpenBLAS
@@ -88,8 +91,11 @@ def staircase(U, P, window=0.2, start=0.2):
 # The single-rank runs two at a time, then the 2-rank one.
 ONE = {"default_np1": ("default", []), "default_u100": ("default", ["-unload_increments", 100]), "fast": ("fast", [])}
 run_all(tf, mpirun, [case(p, e) + ["-output", out(f"preset_{name}.h5")] for name, (p, e) in ONE.items()], timeout=600)
-run(tf, mpirun, 2, case("default", []) + ["-output", out("preset_default_np2.h5")], timeout=600)
-runs = {name: read(out(f"preset_{name}.h5")) for name in list(ONE) + ["default_np2"]}
+# The default preset's run itself on 2 ranks (its estimate off: with it, the run takes one rank and the estimate's
+# companions the other); the fast preset's with its estimate, beside it.
+run(tf, mpirun, 2, case("default", ["-error_estimate", 0]) + ["-output", out("preset_default_np2.h5")], timeout=600)
+beside = run(tf, mpirun, 2, case("fast", []) + ["-output", out("preset_fast_np2.h5")], timeout=600)
+runs = {name: read(out(f"preset_{name}.h5")) for name in list(ONE) + ["default_np2", "fast_np2"]}
 
 
 
@@ -104,6 +110,16 @@ def same_on_ranks(what, A, B):
 
 A = runs["default_np1"]
 same_on_ranks("default preset", A, runs["default_np2"])
+# The companions beside the run: the run is the one-rank run and its estimate that of the one-rank companions, bit
+# for bit (every history column, the error columns included); the run says where they ran.
+F1, F2 = runs["fast"], runs["fast_np2"]
+differ = sorted(c for c in F1 if c != "spring" and (c not in F2 or F1[c].shape != F2[c].shape or
+                                                     not np.array_equal(F1[c], F2[c])))
+k.check(not differ and "error_load" in F1, f"fast preset with its estimate, 1 vs 2 ranks (the companions beside the "
+        f"run): every history column bitwise equal{'' if not differ else ', not ' + ', '.join(differ)}")
+said = [l for l in beside.stdout.splitlines() if l.startswith("tubeform: companion runs")]
+k.check(len(said) == 1 and said[0].endswith("beside the run"), f"2 ranks: the companions' line says where they ran: "
+        f"{said}")
 A_TOL, B_TOL = 0.005, 0.01  # the work of out-of-balance forces the criterion 0.005 allows; a dissipation 1 % off
 for name in ("default_np1", "fast"):
     H = runs[name]

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <limits>
 #include <string>
-#include <type_traits>
 
 #include "tubeform/core/core.hpp"
 #include "tubeform/core/job_end.hpp"
@@ -44,14 +43,9 @@ PetscErrorCode RunCompanion(MPI_Comm comm, const Options &c, std::vector<History
 // Collective on comm: `rows` and `seconds` of rank `root` on every rank.
 PetscErrorCode Share(MPI_Comm comm, int root, std::vector<HistoryRow> &rows, double &seconds)
 {
-  static_assert(std::is_trivially_copyable_v<HistoryRow> && sizeof(HistoryRow) % sizeof(double) == 0,
-                "a history row travels as doubles");
-  double head[2] = {(double)rows.size(), seconds};
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Bcast(head, 2, MPI_DOUBLE, root, comm));
-  rows.resize((size_t)head[0]), seconds = head[1];
-  const int n = (int)(rows.size() * sizeof(HistoryRow) / sizeof(double));
-  if (n > 0) PetscCallMPI(MPI_Bcast(reinterpret_cast<double *>(rows.data()), n, MPI_DOUBLE, root, comm));
+  PetscCallMPI(MPI_Bcast(&seconds, 1, MPI_DOUBLE, root, comm));
+  PetscCall(BroadcastRows(comm, root, rows));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -84,6 +78,16 @@ PetscErrorCode SideBySide(MPI_Comm comm, const Options &mesh, const Options &ste
 
 } // namespace
 
+PetscErrorCode BroadcastRows(MPI_Comm comm, int root, std::vector<HistoryRow> &rows)
+{
+  double n = (double)rows.size();
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Bcast(&n, 1, MPI_DOUBLE, root, comm));
+  rows.resize((size_t)n);
+  if (!rows.empty()) PetscCallMPI(MPI_Bcast(rows.data(), RowDoubles(rows), MPI_DOUBLE, root, comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode RunOnce(MPI_Comm comm, const Options &opt, bool quiet, const Problem::CompanionRun &companion,
                        std::vector<HistoryRow> *rows, Refinement *refinement)
 {
@@ -106,7 +110,7 @@ PetscErrorCode RunOnce(MPI_Comm comm, const Options &opt, bool quiet, const Prob
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out)
+PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out, std::string *line)
 {
   Options mesh = Quiet(ran);
   double seconds[2] = {0, 0};
@@ -133,8 +137,12 @@ PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out)
     coarsen ? Formatted("%d x %d cells at the run's increments (%.1f s), and there at twice their limits",
                         (int)mesh.mesh_nt, (int)mesh.mesh_ntheta, seconds[0])
             : std::string("the mesh file's cells at twice the run's increment limits");
-  PetscCall(PetscPrintf(comm, "tubeform: companion runs for the error estimate: %s (%.1f s)%s\n", cells.c_str(),
-                        seconds[1], coarsen && size >= 2 ? ", side by side" : ""));
+  const std::string said = Formatted("companion runs for the error estimate: %s (%.1f s)%s", cells.c_str(), seconds[1],
+                                     coarsen && size >= 2 ? ", side by side" : "");
+  if (line)
+    *line = said;
+  else
+    PetscCall(PetscPrintf(comm, "tubeform: %s\n", said.c_str()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -11,16 +11,31 @@
 
 namespace tf {
 
+PetscErrorCode Problem::CompanionOptions(Options &ran)
+{
+  PetscFunctionBeginUser;
+  // The companions keep what this run chose for itself: its element and its friction regularization (that of
+  // the tools the scene sets up, when the run has not yet).
+  ran = opt_;
+  ran.element_auto = false;
+  if (contact_)
+    ran.friction_vcri = contact_->params().vcri;
+  else {
+    ContactSpec tools;
+    PetscCall(scene_->Initialize(*model_, tools));
+    if (!tools.candidates.empty()) ran.friction_vcri = tools.params.vcri;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Problem::Estimate(Companions &companions, Stop &stop)
 {
   MPI_Comm agree; // (a communicator of its own: a rank that failed alone cannot meet the others' calls)
   char text[PETSC_MAX_PATH_LEN] = "";
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_dup(comm_, &agree));
-  // The companions keep what this run chose for itself: its element and its friction regularization.
-  Options ran = opt_;
-  ran.element_auto = false;
-  if (contact_) ran.friction_vcri = contact_->params().vcri;
+  Options ran;
+  PetscCall(CompanionOptions(ran));
   const PetscErrorCode failed = companion_run_(ran, companions);
   const ErrorVerdict v = AgreeOnError(agree, failed, kAgreeSeconds);
   if (!v.all_answered) {

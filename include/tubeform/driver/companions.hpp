@@ -5,6 +5,8 @@
 
 #include <petscsys.h>
 
+#include <string>
+#include <type_traits>
 #include <vector>
 
 #include "tubeform/driver/answer.hpp"
@@ -25,6 +27,17 @@ PetscErrorCode RunOnce(MPI_Comm comm, const Options &opt, bool quiet, const Prob
 // regularization fixed), once its results are final: `mesh` on half the cells through the wall and around at the
 // run's increment limits (a mesh file is kept: it would be the run itself, and is not run), `steps` on the cells
 // of `mesh` at twice those limits. Their histories in `out` on every rank.
-PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out);
+// Their line ("companion runs for the error estimate: ...") is printed, or with `line` returned in it.
+PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out, std::string *line = nullptr);
+
+// A history as doubles (what MPI sends of it).
+static_assert(std::is_trivially_copyable_v<HistoryRow> && sizeof(HistoryRow) % sizeof(double) == 0,
+              "a history row travels as doubles");
+inline int RowDoubles(const std::vector<HistoryRow> &rows)
+{
+  return (int)(rows.size() * sizeof(HistoryRow) / sizeof(double));
+}
+// Collective on comm: the rows of rank `root` on every rank.
+PetscErrorCode BroadcastRows(MPI_Comm comm, int root, std::vector<HistoryRow> &rows);
 
 } // namespace tf
