@@ -256,11 +256,14 @@ def summary(results):
     """The summary line of [(name, case, classify's dict)]: the runs by preset and ranks, then by what they gave."""
     def count(f):
         return sum(1 for _, c, v in results if f(c, v))
-    kinds = {k: count(lambda c, v, k=k: v["kind"] == k) for k in ("crash", "hang", "stop", "finished")}
+    def n(k, one, many):
+        x = count(lambda c, v: v["kind"] == k)
+        return f"{x} {one if x == 1 else many}"
     presets = ", ".join(f"{count(lambda c, v, p=p: c['preset'] == p)} {p}" for p in PRESET_SHARE)
-    return (f"{len(results)} runs ({presets}; {count(lambda c, v: c['np'] == 2)} on 2 ranks): {kinds['crash']} "
-            f"crashes, {kinds['hang']} hangs, {count(lambda c, v: v['nonfinite'])} with NaN in /history, "
-            f"{kinds['stop']} stops, {count(lambda c, v: v['unflagged'])} unflagged; {kinds['finished']} finished, "
+    return (f"{len(results)} runs ({presets}; {count(lambda c, v: c['np'] == 2)} on 2 ranks): "
+            f"{n('crash', 'crash', 'crashes')}, {n('hang', 'hang', 'hangs')}, {count(lambda c, v: v['nonfinite'])} "
+            f"with NaN in /history, {n('stop', 'stop', 'stops')}, {count(lambda c, v: v['unflagged'])} unflagged; "
+            f"{count(lambda c, v: v['kind'] == 'finished')} finished, "
             f"{count(lambda c, v: v['kind'] == 'finished' and v['warnings'])} of them with a warning")
 
 
