@@ -139,8 +139,10 @@ def run_case(name, c, outdir, exe=tfruns.EXE, mpirun="mpirun", src=tfruns.root, 
     for f in (out, out + ".partial", log_path):
         if os.path.exists(f):
             os.remove(f)
+
     def core_files():  # (by name and time: a new core file may have the name of an old one)
         return {f: os.path.getmtime(f) for f in glob.glob(os.path.join(src, "core*")) if os.path.isfile(f)}
+
     before, t0, limit = core_files(), time.time(), wall_limit(time_limit)
     rc, text, timed_out = execute(cmd, src, limit)
     wall = time.time() - t0
@@ -190,6 +192,15 @@ def off_target(v, estimate, expect, log):
     return off
 
 
+def crash_why(rc, cores, marks):
+    """Why a run counts as crashed: a signal (Python's negative exit code; mpirun's 128 + N), core files, a mark."""
+    if rc is not None and rc < 0:
+        return f"killed by signal {-rc}"
+    if rc is not None and rc >= 128:
+        return f"exit {rc}: signal {rc - 128}"
+    return f"{cores} core file(s)" if cores else f"'{marks[0]}' in its output"
+
+
 def classify(log, h5, expect):
     """What a run's log (run_case's) and result file say: the numbers of sample_tubes.parse and kind ('finished',
     'stop', 'crash' or 'hang') with why, the stop lines, the warnings, the /history columns not finite ('nonfinite'),
@@ -207,12 +218,11 @@ def classify(log, h5, expect):
     if tail[4] == "1":
         v.update(kind="hang", why=f"no exit within {tail[3]} s: killed")
     elif rc is None or rc < 0 or rc >= 128 or tail[5] != "0" or marks:
-        why = (f"killed by signal {-rc}" if rc is not None and rc < 0 else f"exit {rc}: signal {rc - 128}"
-               if rc is not None and rc >= 128 else f"{tail[5]} core file(s)" if tail[5] != "0" else f"'{marks[0]}'")
-        v.update(kind="crash", why=why)
+        v.update(kind="crash", why=crash_why(rc, int(tail[5]), marks))
+    elif rc != 0 and len(stops) == 1:
+        v.update(kind="stop", why=stops[0])
     elif rc != 0:
-        v.update(kind="stop", why=stops[0]) if len(stops) == 1 else v.update(
-            kind="crash", why=f"exit {rc} with {len(stops)} error lines (one expected)")
+        v.update(kind="crash", why=f"exit {rc} with {len(stops)} error lines (one expected)")
     elif stops or not v["increments"] or bad is None:
         v.update(kind="crash", why="exit 0 with an error line" if stops else "exit 0 without its 'done' line"
                  if not v["increments"] else "exit 0 without a readable result file")
