@@ -47,29 +47,41 @@ KEYS = ("E", "nu", "sy", "K", "n", "ro", "t", "mu", "stroke")
 RANGES = {False: ((5, 60), (0, 0.4), 2, 0.3), True: ((4, 60), (0, 0.5), 1, 0.35)}
 
 
+def draw_tube(rng, rt, mu, stroke, esy=(150, 1500), n=(0.1, 1)):
+    """One random tube from rng, its numbers drawn in a fixed order (R/t, Ro, E, nu, E/sy, K/sy, n, mu, stroke):
+    R/t, mu, E/sy and n uniform in their (low, high), Ro in 12-25 mm, E in 70-210 GPa, nu in 0.28-0.36, the Ludwik
+    K in 0.5-4 sigma_y, the stroke uniform from stroke[0] mm to stroke[1] x Ro. scripts/soak draws its tubes here."""
+    r, ro = rng.uniform(*rt), rng.uniform(12, 25)
+    e, nu, esy_, kf, n_, mu_ = (rng.uniform(70000, 210000), rng.uniform(0.28, 0.36), rng.uniform(*esy),
+                                rng.uniform(0.5, 4), rng.uniform(*n), rng.uniform(*mu))
+    s = rng.uniform(stroke[0], stroke[1] * ro)
+    return dict(E=e, nu=nu, sy=e / esy_, K=kf * e / esy_, n=n_, ro=ro, t=ro / r, mu=mu_, stroke=s)
+
+
 def draw(seed, count, wide=False):
-    """The random tubes, drawn in a fixed order per case (R/t, Ro, E, nu, E/sy, K/sy, n, mu, stroke; with wide, the
-    ranks), and the fixed ones (not with wide)."""
+    """The random tubes, drawn in a fixed order per case (draw_tube; with wide, then the ranks), and the fixed ones
+    (not with wide)."""
     rng = random.Random(seed)
-    (rt_lo, rt_hi), (mu_lo, mu_hi), s_lo, s_hi = RANGES[wide]
+    rt, mu, s_lo, s_hi = RANGES[wide]
     cases = {}
     for i in range(count):
-        rt, ro = rng.uniform(rt_lo, rt_hi), rng.uniform(12, 25)
-        e, nu, esy, kf, n, mu = (rng.uniform(70000, 210000), rng.uniform(0.28, 0.36), rng.uniform(150, 1500),
-                                 rng.uniform(0.5, 4), rng.uniform(0.1, 1), rng.uniform(mu_lo, mu_hi))
-        stroke = rng.uniform(s_lo, s_hi * ro)
-        cases[f"r{i + 1:02d}"] = dict(E=e, nu=nu, sy=e / esy, K=kf * e / esy, n=n, ro=ro, t=ro / rt, mu=mu,
-                                      stroke=stroke, np=rng.choice((1, 2)) if wide else 1)
+        c = draw_tube(rng, rt, mu, (s_lo, s_hi))
+        c["np"] = rng.choice((1, 2)) if wide else 1
+        cases[f"r{i + 1:02d}"] = c
     if not wide:
         cases.update({k: dict(zip(KEYS, v), np=1) for k, v in FIXED.items()})
     return cases
 
 
 def options(c, preset, out, time_limit):
-    o = ["-options_file", "options/squaring.opts", "-options_file", f"options/preset-{preset}.opts", "-material",
-         "custom", "-material_e", c["E"], "-material_nu", c["nu"], "-material_sy", c["sy"], "-material_k", c["K"],
-         "-material_n", c["n"], "-tube_ro", c["ro"], "-tube_t", c["t"], "-friction_mu", c["mu"], "-stroke",
-         c["stroke"], "-time_limit", time_limit, "-output", out]
+    """The run's options: the squaring case, the preset, the tube c (its "law", if it names one, as
+    -material_law), the time limit and the output."""
+    law = ["-material_law", c["law"]] if "law" in c else []
+    o = (["-options_file", "options/squaring.opts", "-options_file", f"options/preset-{preset}.opts", "-material",
+          "custom"] + law +
+         ["-material_e", c["E"], "-material_nu", c["nu"], "-material_sy", c["sy"], "-material_k", c["K"], "-material_n",
+          c["n"], "-tube_ro", c["ro"], "-tube_t", c["t"], "-friction_mu", c["mu"], "-stroke", c["stroke"],
+          "-time_limit", time_limit, "-output", out])
     return [f"{x:.6g}" if isinstance(x, float) else str(x) for x in o]
 
 
