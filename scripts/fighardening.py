@@ -1,5 +1,5 @@
 """The hardening model's figure of scripts/figures: the paper's three tubes at mu 0.05, isotropic hardening against
-a saturating Armstrong-Frederick backstress of the same monotonic curve (scripts/hardening_study.py's AF model:
+a saturating Armstrong-Frederick backstress of the same monotonic curve (studies/hardening_study.py's AF model:
 0.6 sigma_y0 reached within p ~ 0.02), C/t over the stroke and after springback, with the springback of C1 and C2.
 """
 import os
@@ -8,15 +8,15 @@ import figlib
 import matplotlib.pyplot as plt
 import numpy as np
 
-import hardening_study
-
 TUBES = ["al_11.67", "al_37", "cu_29"]
+# Each tube's Ludwik sigma_y0 (MPa): the paper's aluminum and copper (its Table 1, docs/scenes.md).
+SIGMA_Y0 = {"al_11.67": 165.3, "al_37": 165.3, "cu_29": 445.0}
+AF_SHARE, AF_GAMMA = 0.6, 200.0  # the saturating backstress: 0.6 sigma_y0, reached within p ~ 3 / gamma
 
 
 def kinematic_option(tube):
     """-material_kinematic of the AF model for a tube of the paper (its material's sigma_y0)."""
-    sy0 = hardening_study.CASES[f"{tube}_mu0.05"][1]
-    return f"-material_kinematic {hardening_study.AF_SHARE * sy0 * hardening_study.AF_GAMMA:g},{hardening_study.AF_GAMMA:g}"
+    return f"-material_kinematic {AF_SHARE * SIGMA_Y0[tube] * AF_GAMMA:g},{AF_GAMMA:g}"
 
 
 def draw(isotropic, kinematic, labels, out):

@@ -2,7 +2,7 @@
 elastic release is what the elastic release's excursion past the yield surface says it should change.
 
 The default tube (options/squaring.opts). With a saturating Armstrong-Frederick backstress (AF: 0.6 sigma_y0
-reached within p ~ 0.02, -material_kinematic 19836,200 as scripts/hardening_study.py; its elastic range on
+reached within p ~ 0.02, -material_kinematic 19836,200 as studies/hardening_study.py; its elastic range on
 reversal shrinks to about 0.8 sigma_y0, docs/results.md) the springback yields back; with isotropic hardening it
 hardly does. For each release, s = (how far the elastic release carries a point past the yield surface,
 release_excess) x (the share of Gauss points it carries past it): the share of the release's stress change that

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """The springback's law: the paper's elastic release (-springback elastic) against the material's own law
 (-springback material), on the paper's nine cases, with isotropic hardening and with a saturating
-Armstrong-Frederick backstress (AF: 0.6 sigma_y0 reached within p ~ 0.02, as scripts/hardening_study.py).
+Armstrong-Frederick backstress (AF: 0.6 sigma_y0 reached within p ~ 0.02, as studies/hardening_study.py).
 
-    /usr/bin/python3 scripts/springback_study.py [--cases NAME,...] [--preset default] [--unload reverse]
+    /usr/bin/python3 studies/springback_study.py [--cases NAME,...] [--preset default] [--unload reverse]
 
 Each case on the preset, -error_estimate 0. The table gives the load and C/t at the end of loading, C/t and
 C1/C2 after springback and the springback of the half-extents x_max (C1) and y_max (C2), the Gauss points that
@@ -20,7 +20,7 @@ import sys
 import h5py
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
 import tfruns  # noqa: E402
 
 OUT = os.path.join(tfruns.root, "results", "springback")

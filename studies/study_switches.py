@@ -3,7 +3,7 @@
 plastic thick cylinder (options/pressure_plastic.opts) and the column
 (options/column.opts).
 
-    /usr/bin/python3 scripts/study_switches.py
+    /usr/bin/python3 studies/study_switches.py
 
 Prints, per run: final out-of-balance force (N/mm), largest energy balance
 error over the increments, and the result (cylinder: maximum pressure vs
@@ -14,7 +14,7 @@ import os
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
 from analysis import hill_errors, read  # noqa: E402
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))

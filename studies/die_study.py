@@ -6,7 +6,7 @@ rule to an outer corner radius of 4 t). Aluminum tubes of Ro 17.5 mm at mu 0.05,
 (options/dies/flat_bottom.profile), and by the rule with the three V-dies (the rule is the V's);
 fast preset (its C/t within 0.05, docs/accuracy.md).
 
-    /usr/bin/python3 scripts/die_study.py [--preset fast] [-j JOBS]
+    /usr/bin/python3 studies/die_study.py [--preset fast] [-j JOBS]
 
 Runs go to results/sweep/die_*; the table to stdout and results/die_study.md; the figures to
 docs/figures/die_collapse.png (C/t at the end of loading against R/t, one curve per die, the paper's
@@ -22,7 +22,7 @@ import os
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
 import figlib  # noqa: E402  (first: the Agg backend)
 import figmaps  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
@@ -118,7 +118,7 @@ def main():
     curves42 = {f"V {g} deg": ct(v42, "die_angle", g) for g in ANGLES}
     curves42["flat-bottomed"] = ct(flat, None, None)
     curves_rule = {f"V {g} deg": ct(rule, "die_angle", g) for g in ANGLES}
-    lines = [f"C/t at the end of loading, aluminum Ro 17.5 mm, mu 0.05, {a.preset} preset (scripts/die_study.py)", "",
+    lines = [f"C/t at the end of loading, aluminum Ro 17.5 mm, mu 0.05, {a.preset} preset (studies/die_study.py)", "",
              "| die | stroke | " + " | ".join(f"R/t {r}" for r in RTS) + " |",
              "|---|---|" + "---|" * len(RTS)]
     for curves, stroke in ((curves42, "4.2 mm"), (curves_rule, f"rule ({figmaps.CORNER_OVER_T} t)")):

@@ -8,7 +8,7 @@ energy + what backward Euler damped) relative to the external work, the
 largest energy balance error, increments, solves and wall time. A result
 that does not move as the speed goes down is the quasi-static one.
 
-    /usr/bin/python3 scripts/study_speed.py [OPTIONS_FILE] [SPEED ...]
+    /usr/bin/python3 studies/study_speed.py [OPTIONS_FILE] [SPEED ...]
 
 Defaults: options/squaring_al_37_mu0.35.opts at 10, 1 and 0.1 mm/s, plus the
 quasi-static run (which may stall: docs/theory.md, "Stalls"). Runs two at a
@@ -24,7 +24,7 @@ from concurrent.futures import ThreadPoolExecutor
 import h5py
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
 from tfruns import deviation  # noqa: E402
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))

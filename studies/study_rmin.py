@@ -2,7 +2,7 @@
 """How -rmin_deps trades increments and time for accuracy, on the plastic
 thick cylinder (options/pressure_plastic.opts, 80 x 8 mesh) against Hill.
 
-    /usr/bin/python3 scripts/study_rmin.py
+    /usr/bin/python3 studies/study_rmin.py
 
 Five trial increments only, so that r2 (the strain limit) and r1 (yield
 onset) decide the increment sizes. Errors are relative to Hill's solution
@@ -13,7 +13,7 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
 from analysis import hill_errors  # noqa: E402
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))

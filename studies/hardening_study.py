@@ -3,7 +3,7 @@
 springback, isotropic against mixed and kinematic hardening of the same
 monotonic flow curve.
 
-    /usr/bin/python3 scripts/hardening_study.py [--cases NAME,...] [--preset default] [--figure-cases NAME,...]
+    /usr/bin/python3 studies/hardening_study.py [--cases NAME,...] [--preset default] [--figure-cases NAME,...]
 
 The paper gives no cyclic data, so this is a sensitivity study, not a
 calibration: Hodge's mixed hardening with a linear (Prager) backstress taking
@@ -17,7 +17,7 @@ reverse yield comes near zero stress. Each case on the preset; the table gives t
 the end of loading, C/t and C1/C2 = x_max / y_max loaded and after
 springback, and the springback of the half-extents x_max (C1, across the
 press) and y_max (C2, along it) (the paper's elastic springback:
-scripts/springback_study.py has what the material's own law changes), and
+studies/springback_study.py has what the material's own law changes), and
 docs/figures/hardening_springback.png draws C/t over the stroke of each run
 with its value after springback. Runs are kept under results/hardening/
 (delete one to run it again); the table goes to results/hardening/table.md.
@@ -28,7 +28,7 @@ import sys
 
 import h5py
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
 import tfruns  # noqa: E402
 
 OUT = os.path.join(tfruns.root, "results", "hardening")

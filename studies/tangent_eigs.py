@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""The lowest eigenvalues of the tangent's free block, from what the patch
-rotation_mode.patch writes to DIR (the matrix in PETSc's binary format,
+"""The lowest eigenvalues of the tangent's free block, from what the diagnostic
+patch of studies/rotation_mode writes to DIR (the matrix in PETSc's binary format,
 DIR/K_<solve>.bin; its prescribed rows, K_<solve>_rows.txt; each node's x dof
-and coordinates, K_<solve>_nodes.txt). Run by scripts/diagnostics/rotation_mode.
+and coordinates, K_<solve>_nodes.txt). Run by studies/rotation_mode.
 
 usage: tangent_eigs.py DIR SOLVE...
 A negative real eigenvalue of the unsymmetric free block is a static
