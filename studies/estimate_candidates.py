@@ -83,11 +83,12 @@ def order(coarse, mid, fine):
     return np.where(sure, p, 1.0), sure
 
 
-def directional(r, observed=False):
+def directional(r, observed=False, element=False):
     """The run's error through the wall and around, each at order 1 or (observed) at the order its direction's three
     levels show (`order`): from the coarser companion |c - run| / (2^p - 1); through the wall from the finer T+ where
     T- cannot be (2 cells) |T+ - run| 2^p / (2^p - 1). A dict of the parts (and signed: the run's error), orders and
-    where the orders are believed; None where a direction's companion is missing."""
+    where the orders are believed; None where a direction's companion is missing. `element`: through the wall at the
+    element's order (mesh_factor's: qm6 1, qm6bar 2)."""
     c, run = r["curves"], at_cells(r, "run")
     v = {k: None if c[k] is None else at_cells(r, k) for k in ("T-", "T+", "T++", "A-", "A+")}
     coarse = v["T-"] is not None
@@ -98,15 +99,16 @@ def directional(r, observed=False):
                       ("a", (v["A-"], run, v["A+"]))):
         full = observed and all(x is not None for x in ladder)
         p, sure = order(*ladder) if full else (np.ones_like(run), np.zeros(run.shape, bool))
+        p = np.full_like(run, 2.0) if element and d == "t" and r["element"] == "qm6bar" else p
         signed = (ladder[0] - run) / (2 ** p - 1) if d == "a" or coarse else (run - v["T+"]) * 2 ** p / (2 ** p - 1)
         out[d], out["signed_" + d] = A(signed), signed
         out["p_" + d], out["sure_" + d] = p, sure
     return out
 
 
-def steps_and_directions(r, observed=False, signed=False):
+def steps_and_directions(r, observed=False, signed=False, element=False):
     """|MS - M| + the run's error through the wall + around (`directional`), or (signed) + |their signed sum|."""
-    d = directional(r, observed)
+    d = directional(r, observed, element)
     return None if d is None else A(parts(r)[0]) + (A(d["signed_t"] + d["signed_a"]) if signed else d["t"] + d["a"])
 
 
@@ -129,6 +131,7 @@ CANDIDATES = {
     "d |S - run| + |M - run|": lambda r: A(at_cells(r, "S") - at_cells(r, "run")) + A(parts(r)[1]),
     "e |MS - M| + through + around (p 1)": steps_and_directions,
     "e |MS - M| + through + around (p observed)": lambda r: steps_and_directions(r, True),
+    "e |MS - M| + through (qm6bar p 2) + around (p 1)": lambda r: steps_and_directions(r, element=True),
     "e |MS - M| + |through + around| signed (p 1)": lambda r: steps_and_directions(r, signed=True),
     "e shipped where directions apply": lambda r: None if directional(r) is None else A(parts(r)[0]) + A(parts(r)[1]),
 }
