@@ -15,14 +15,19 @@ reads another checkout's cache: eval, show and shipped start no run).
     /usr/bin/python3 studies/estimate_levels.py shipped --tubes ...         # the runs' own estimate (plan preset)
     /usr/bin/python3 studies/estimate_levels.py demand --tubes ... [--target 0.005]   # accuracy on demand
 
-Plans: `preset` runs the tube with options/preset-fast.opts and preset-default.opts as a user would, its estimate
-on (what `shipped` judges); `estimate` runs what the estimate's candidates read (the preset levels (2, 12, 1) and
-(4, 24, 1) with their step and mesh companions); `reference` the tube's converged answer (the step ladder s 1, 2, 4 on
-the mesh (2 nt, 48) and the mesh (3 nt, 68) at s 1, nt the default preset's); `grid` nt x D at s 1.
+Plans: `directions` runs each preset level's directional companions at s 1 (half the cells through the wall, twice
+them where half would be under 2; half the cells around), `orders` the third level of each direction (twice the
+run's, or four times through the wall from 2 cells) for an observed order; `preset` runs the tube with
+options/preset-fast.opts and preset-default.opts as a user would, its estimate on (what `shipped` judges); `estimate`
+runs what the estimate's candidates read (the preset levels (2, 12, 1) and (4, 24, 1) with their step and mesh
+companions); `reference` the tube's converged answer (the step ladder s 1, 2, 4 on the mesh (2 nt, 48) and the mesh
+(3 nt, 68) at s 1, nt the default preset's); `grid` nt x D at s 1.
 
 `eval` judges CANDIDATES on the preset levels (run; S its steps' companion; M the mesh companion, half the cells
 through the wall (at least 2) and around; MS both; MM half M's): (a) signed parts, (b) Richardson per part, (c) the
-contact ripple out (FIT_PERIODS) or its worst phase, (d) GCI, steps on the run's mesh; fitted factors, one tube out.
+contact ripple out (FIT_PERIODS) or its worst phase, (d) GCI, steps on the run's mesh, (e) the mesh's part split
+into through the wall and around, each at order 1 or its observed order; fitted factors, one tube out; and each
+direction's part per tube and stroke. The candidates are in studies/estimate_candidates.py.
 """
 import argparse
 import concurrent.futures
@@ -40,6 +45,7 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import tfruns  # noqa: E402
+from estimate_candidates import A, CANDIDATES, FITTED, at, at_cells, directional, parts  # noqa: E402
 
 _loader = importlib.machinery.SourceFileLoader("validate", os.path.join(ROOT, "scripts", "validate"))
 _spec = importlib.util.spec_from_loader("validate", _loader)
@@ -78,14 +84,6 @@ def run(name, nt, d, s, element):
              "-friction_vcri", VCRI_OF_BENDING_LENGTH * math.sqrt(ro * t), "-unload_increments", 10,
              "-error_estimate", 0, "-rmin_deps_yield", 2 / s]
     return cached_run(name, label(nt, d, s, element), [str(o) for o in extra], lambda line: False)
-
-
-def at(U, F, u, w=0.0):
-    """F at stroke u: interpolated (w 0), or read off a local quadratic fit over u +- w (one-sided at the end)."""
-    if w <= 0:
-        return float(np.interp(u, U, F))
-    m = (U >= u - w) & (U <= u + w) if u + w <= U[-1] + 1e-9 else U >= U[-1] - 2 * w
-    return float(np.polyfit(U[m] - u, F[m], 2)[-1])
 
 
 def values(h5, strokes, w=0.0):
@@ -132,6 +130,12 @@ def run_preset(name, preset):
                       lambda line: "companion runs" in line)
 
 
+# A preset level (nt, D)'s directional companions: through (half the cells through the wall; twice where half would
+# be under 2: the run is then the coarse end) and around (half the cells around); ORDERS the third level of each.
+DIRECTIONS = lambda nt, d: [(nt // 2 if nt >= 4 else 2 * nt, d), (nt, d / 2)]  # noqa: E731
+ORDERS = lambda nt, d: [(2 * nt if nt >= 4 else 4 * nt, d), (nt, 2 * d)]  # noqa: E731
+
+
 def plan(name, which):
     """The runs (nt, D, s, element) of a plan for a tube."""
     fast_nt, default_nt = preset_nt(name, 0.044, 2), preset_nt(name, 0.022, 4)
@@ -141,13 +145,17 @@ def plan(name, which):
     if which == "estimate":
         return [(n, d, s, "qm6bar" if nt >= 5 else "qm6") for nt, e in ((fast_nt, 12), (default_nt, 24))
                 for n, d, s in ((nt, e, 1), (nt, e, 0.5), (max(2, nt // 2), e / 2, 1), (max(2, nt // 2), e / 2, 0.5))]
+    if which in ("directions", "orders"):  # each preset level's ladders through the wall and around (s 1)
+        runs = [(n, d, 1, "qm6bar" if nt >= 5 else "qm6") for nt, e in ((fast_nt, 12), (default_nt, 24))
+                for n, d in (DIRECTIONS if which == "directions" else ORDERS)(nt, e)]
+        return list(dict.fromkeys(runs))
     if which == "preset":
         return [("preset", p) for p in PRESETS]
     if which == "reference":
         nt = max(4, default_nt)
         return [(2 * nt, 48, 1, element), (2 * nt, 48, 2, element), (2 * nt, 48, 4, element),
                 (3 * nt, 68, 1, element)]
-    raise SystemExit(f"estimate_levels.py: unknown plan {which} (grid, estimate, reference)")
+    raise SystemExit(f"estimate_levels.py: unknown plan {which} (grid, estimate, reference, directions, orders)")
 
 
 def strokes(name):
@@ -181,8 +189,8 @@ def reference(name):
 
 # The levels of a preset's run the candidates read: divisors of its cells through the wall and around, step level.
 LEVELS = {"run": (1, 1, 1), "S": (1, 1, 0.5), "M": (2, 2, 1), "MS": (2, 2, 0.5), "MM": (4, 4, 1)}
-# The contact ripple is taken out of a curve by a local quadratic fit over +- this many of its periods.
-FIT_PERIODS = float(os.environ.get("FIT_PERIODS", "2"))
+# Its directional levels (s 1, plans directions and orders): factors of its cells through the wall and around.
+DIRECTIONAL = {"T-": (0.5, 1), "T+": (2, 1), "T++": (4, 1), "A-": (1, 0.5), "A+": (1, 2)}
 
 
 def record(name, preset):
@@ -199,78 +207,10 @@ def record(name, preset):
             with h5py.File(path + ".h5", "r") as h:
                 gains = np.count_nonzero(np.diff(h["/history/n_contact"][:][h["/history/stage"][:] == 0]) > 0)
             r["period"] = r["curves"]["M"][1][0][-1] / max(1, gains)
+    for key, (a, b) in DIRECTIONAL.items():
+        path = os.path.join(OUT, name, label(int(nt * a), d * b, 1, r["element"]))
+        r["curves"][key] = values(path + ".h5", [])[2:] if nt * a >= 2 and done(path) else None
     return r if all(r["curves"][k] is not None for k in ("run", "M", "MS")) else None
-
-
-def at_cells(r, key, w=0.0):
-    """Level `key`'s loads and C/t at the reported strokes (fitted over +- w mm), C/t after springback."""
-    spring, (U, P, C) = r["curves"][key]
-    return np.array([at(U, P, u, w) for u in r["strokes"]] + [at(U, C, u, w) for u in r["strokes"]] + [spring])
-
-
-def parts(r, periods=0.0):
-    """The steps' part MS - M, the mesh's part M - run (signed), and the run's own contact ripple |run - its fit|:
-    the curves fitted over +- `periods` contact periods (0: as they are, no ripple)."""
-    run, m, ms = (at_cells(r, k, periods * r["period"]) for k in ("run", "M", "MS"))
-    return ms - m, m - run, np.abs(at_cells(r, "run") - run)
-
-
-# Richardson's 1 / (2^p - 1) for the mesh's part at refinement 2: p = 1 for qm6 (stiff by about 1/n through the
-# wall), p = 2 for qm6bar (docs/accuracy.md, "The element through the wall").
-mesh_factor = lambda r: 1 / 3 if r["element"] == "qm6bar" else 1.0  # noqa: E731
-
-
-def ripple_free(r, worst=False, mesh=1.0, spring=False):
-    """|MS - M| + mesh |M - run| with the contact ripple out: the curves fitted over +- FIT_PERIODS periods plus the
-    run's own ripple, or (worst) the largest over u +- one period. `spring`: C/t after springback as the loaded end's
-    estimate plus that of the springback's change (a sum's error is within the sum of its terms')."""
-    s, m, q = parts(r, 0 if worst else FIT_PERIODS)
-    est, U = A(s) + mesh * A(m) + q, r["curves"]["run"][1][0]
-    for k, (col, u) in enumerate([(c, u) for c in (1, 2) for u in r["strokes"]] if worst else []):
-        us = np.linspace(max(U[0], u - r["period"]), min(U[-1], u + r["period"]), 41)
-        y = {k: np.interp(us, r["curves"][k][1][0], r["curves"][k][1][col]) for k in ("run", "M", "MS")}
-        est[k] = np.max(A(y["MS"] - y["M"]) + mesh * A(y["M"] - y["run"]))
-    if spring:
-        run, m, ms = (at_cells(r, k)[-1] - at_cells(r, k)[-2] for k in ("run", "M", "MS"))
-        est[-1] = est[-2] + A(ms - m) + mesh * A(m - run)
-    return est
-
-
-def gci(r):
-    """Roache's grid convergence index from the meshes run, M, MM (Celik et al. 2008), plus |MS - M|: where the mesh
-    converges monotonically (0 < (run - M) / (M - MM) < 1) at an observed order p in [0.5, 2] (qm6's 1 within a
-    factor 2), 1.25 |M - run| / (2^p - 1); elsewhere 3 |M - run| (p 1, the two-grid factor). qm6 runs with MM only."""
-    if r["curves"]["MM"] is None or r["element"] != "qm6":
-        return None
-    run, m, mm = (at_cells(r, k) for k in ("run", "M", "MM"))
-    R = (run - m) / np.where(m == mm, 1e-300, m - mm)
-    p = np.log(1 / np.clip(R, 1e-12, None)) / np.log(2)
-    sure = (R > 0) & (R < 1) & (p >= 0.5) & (p <= 2)
-    return A(parts(r)[0]) + np.where(sure, 1.25 / (2 ** np.clip(p, 0.5, 2) - 1), 3) * A(m - run)
-
-
-A = np.abs
-# Candidates: an estimate (the values' units) from a record, None where its levels are missing. "old" and the
-# second-order mesh are what docs/accuracy.md compares with; (a)-(d) the families the study of the estimate tried.
-CANDIDATES = {
-    "old: 3 |MS - run|": lambda r: 3 * A(sum(parts(r)[:2])),
-    "shipped: |MS - M| + |M - run|": lambda r: A(parts(r)[0]) + A(parts(r)[1]),
-    "|MS - M| + |M - run| / 3": lambda r: A(parts(r)[0]) + A(parts(r)[1]) / 3,
-    "a signed: |MS - run| (p 1)": lambda r: A(sum(parts(r)[:2])),
-    "a max(signed, parts / 2)": lambda r: np.maximum(A(sum(parts(r)[:2])), (A(parts(r)[0]) + A(parts(r)[1])) / 2),
-    "a max(signed, larger part)": lambda r: np.maximum(A(sum(parts(r)[:2])), np.maximum(*map(A, parts(r)[:2]))),
-    "b |MS - M| + |M - run| / (2^p - 1)": lambda r: A(parts(r)[0]) + mesh_factor(r) * A(parts(r)[1]),
-    "c fitted + ripple, b": lambda r: ripple_free(r, mesh=mesh_factor(r)),
-    "c fitted + ripple, b, sprung from the end": lambda r: ripple_free(r, mesh=mesh_factor(r), spring=True),
-    "c max over +- 1 period, b": lambda r: ripple_free(r, worst=True, mesh=mesh_factor(r)),
-    "c max over +- 1 period, b, sprung from the end": lambda r: ripple_free(r, True, mesh_factor(r), True),
-    "d GCI run, M, MM": gci,
-    "d shipped where GCI applies": lambda r: None if gci(r) is None else A(parts(r)[0]) + A(parts(r)[1]),
-    "d |S - run| + |M - run|": lambda r: A(at_cells(r, "S") - at_cells(r, "run")) + A(parts(r)[1]),
-}
-# Bases for a fitted factor c (the least that bounds 95 % of the cells): how sharp each could be, and, leaving one
-# tube out, how far c fitted to four tubes carries to the fifth.
-FITTED = ("shipped: |MS - M| + |M - run|", "a signed: |MS - run| (p 1)", "c fitted + ripple, b, sprung from the end")
 
 
 def judge(t, preset, strokes, ref, value, est, c=None):
@@ -350,6 +290,35 @@ def evaluate(tubes, misses=False):
         print(f"| {name.replace('|', '&#124;')} | {c:.2f} | {all_[0]:.1%} | {all_[1]:.2f} | {all_[2]:.1%} | "
               f"{q[0]:.2f} {q[1]:.2f} {q[2]:.2f} | {min(cs):.2f}-{max(cs):.2f} | {out[0]:.1%} | {out[1]:.2f} | "
               f"{out[2]:.1%} |")
+    direction_parts(tubes)
+
+
+def direction_parts(tubes):
+    """Per tube, preset level and quantity: the largest error against the reference and the largest steps' part
+    |MS - M|, through-the-wall and around part (p 1; load relative), the direction whose part is the larger at each
+    stroke, on how many strokes the two directions' signed errors cancel, and the median observed order through the
+    wall and around over the cells where it is believed (those cells / all)."""
+    print("\n| tube | preset | quantity | largest error | steps | through | around | larger part per stroke "
+          "| opposite signs | p through | p around |\n" + "|---" * 11 + "|")
+    for t in tubes:
+        ref = reference(t)
+        for preset, r in ((p, record(t, p)) for p in (PRESETS if ref is not None else ())):
+            d = None if r is None else directional(r, True)
+            if d is None:
+                continue
+            n, p1 = len(r["strokes"]), directional(r)
+            scale = np.array([abs(v) for v in ref["value"][:n]] + [1.0] * (n + 1))
+            err, steps = A(at_cells(r, "run") - ref["value"]) / scale, A(parts(r)[0]) / scale
+            for q, ks in (("load", range(n)), ("C/t", range(n, 2 * n + 1))):
+                ks = [k for k in ks if k < n or k == 2 * n or r["strokes"][k - n] >= 2 - 1e-9]
+                big = lambda x: f"{x[ks].max():.4f}"  # noqa: E731
+                who = " ".join("T" if p1["t"][k] >= p1["a"][k] else "A" for k in ks)
+                sure = [[k for k in ks if d["sure_" + x][k]] for x in "ta"]
+                po = [f"{np.median(d['p_' + x][k]):.2f} ({len(k)}/{len(ks)})" if k else f"- (0/{len(ks)})"
+                      for x, k in zip("ta", sure)]
+                opposite = sum(p1["signed_t"][k] * p1["signed_a"][k] < 0 for k in ks)
+                print(f"| {t} | {preset} | {q} | {big(err)} | {big(steps)} | {big(p1['t'] / scale)} | "
+                      f"{big(p1['a'] / scale)} | {who} | {opposite}/{len(ks)} | {po[0]} | {po[1]} |")
 
 
 def fitted(cells):
