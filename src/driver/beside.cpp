@@ -15,28 +15,13 @@ namespace {
 // Messages between the run's first rank and the companions' (on a communicator of their own).
 constexpr int kTagCompanions = 1, kTagLevel = 2;
 
-// What follows a level, as the companions need it: the fields NextLevel changes; or the run's error, which the
-// companions' ranks then end with too (the job's error is one, said once).
+// What follows a level, as the companions need it (plain data); or the run's error, which the companions' ranks
+// then end with too (the job's error is one, said once).
 struct LevelStep {
   int follows = 0;
-  PetscInt level = 0, mesh_nt = 0, mesh_ntheta = 0, increments = 0;
-  double rmin_deps = 0, rmin_deps_yield = 0, rmin_domega = 0;
+  LevelChange change;
   PetscErrorCode run_failed = 0;
   char why[PETSC_MAX_PATH_LEN] = "";
-
-  explicit LevelStep(const Refinement &r = Refinement{})
-  {
-    if (!r.follows) return;
-    const Options &n = r.next;
-    follows = 1, level = n.level, mesh_nt = n.mesh_nt, mesh_ntheta = n.mesh_ntheta, increments = n.increments;
-    rmin_deps = n.rmin_deps, rmin_deps_yield = n.rmin_deps_yield, rmin_domega = n.rmin_domega;
-  }
-  void Apply(Options &o) const
-  {
-    o.level = level, o.mesh_nt = mesh_nt, o.mesh_ntheta = mesh_ntheta, o.increments = increments;
-    o.rmin_deps = rmin_deps, o.rmin_deps_yield = rmin_deps_yield, o.rmin_domega = rmin_domega;
-    ChooseElement(o);
-  }
 };
 
 // How a level's companions ended (an error code, 0: they ran), its text (their line, or why they failed), their
@@ -80,11 +65,10 @@ PetscErrorCode Receive(MPI_Comm link, int from, Outcome &o)
 // of its own (the element and the friction regularization the run takes), then the two runs.
 PetscErrorCode LevelCompanions(MPI_Comm half, const Options &level, Outcome &o)
 {
-  Options ran, quiet = level;
+  Options ran;
+  const Options quiet = CompanionQuiet(level);
   std::string why;
   PetscFunctionBeginUser;
-  quiet.output.clear(), quiet.history_csv.clear(), quiet.checkpoint.clear();
-  quiet.progress = 0, quiet.monitor = PETSC_FALSE, quiet.error_estimate = PETSC_FALSE;
   {
     Problem p;
     p.SetQuiet();
@@ -114,7 +98,7 @@ PetscErrorCode Serve(MPI_Comm half, MPI_Comm link, int run_root, Options level)
     PetscCallMPI(MPI_Bcast(&step, sizeof(step), MPI_BYTE, 0, half));
     PetscCheck(!step.run_failed, half, step.run_failed, "%s", step.why);
     if (!step.follows) break;
-    step.Apply(level);
+    level = step.change.Applied(level);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -146,7 +130,8 @@ struct RunSide {
   PetscErrorCode Next(const Refinement &r, PetscErrorCode run_failed = 0)
   {
     PetscFunctionBeginUser;
-    LevelStep step(r);
+    LevelStep step;
+    step.follows = r.follows, step.change = r.change;
     if (run_failed) {
       step.run_failed = run_failed;
       PetscCall(PetscStrncpy(step.why, ErrorText(run_failed).c_str(), sizeof(step.why)));

@@ -16,20 +16,6 @@ namespace {
 // than the run's (the fast preset's 2 x 64 case: a load difference of 4 % for a 4 % error, 0.09 in C/t for 0.01).
 constexpr PetscInt kCompanionMinNt = 2;
 
-// A companion's options: `ran`'s, writing no file, quiet, estimating nothing.
-Options Quiet(const Options &ran)
-{
-  Options c = ran;
-  c.output.clear(), c.history_csv.clear(); // no files: nothing of it is left behind, whatever ends it
-  c.checkpoint.clear(), c.restart.clear();
-  c.checkpoint_every = 0;
-  c.progress = 0, c.monitor = PETSC_FALSE;
-  c.output_every = std::numeric_limits<int>::max(), c.output_stroke = 0;
-  c.error_estimate = PETSC_FALSE;
-  c.target_load = c.target_c_over_t = 0;
-  return c;
-}
-
 // One companion run on comm: its history in `rows`, its wall time in `seconds`.
 PetscErrorCode RunCompanion(MPI_Comm comm, const Options &c, std::vector<HistoryRow> &rows, double &seconds)
 {
@@ -78,6 +64,19 @@ PetscErrorCode SideBySide(MPI_Comm comm, const Options &mesh, const Options &ste
 
 } // namespace
 
+Options CompanionQuiet(const Options &ran)
+{
+  Options c = ran;
+  c.output.clear(), c.history_csv.clear(); // no files: nothing of it is left behind, whatever ends it
+  c.checkpoint.clear(), c.restart.clear();
+  c.checkpoint_every = 0;
+  c.progress = 0, c.monitor = PETSC_FALSE;
+  c.output_every = std::numeric_limits<int>::max(), c.output_stroke = 0;
+  c.error_estimate = PETSC_FALSE;
+  c.target_load = c.target_c_over_t = 0;
+  return c;
+}
+
 PetscErrorCode BroadcastRows(MPI_Comm comm, int root, std::vector<HistoryRow> &rows)
 {
   double n = (double)rows.size();
@@ -112,7 +111,7 @@ PetscErrorCode RunOnce(MPI_Comm comm, const Options &opt, bool quiet, const Prob
 
 PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out, std::string *line)
 {
-  Options mesh = Quiet(ran);
+  Options mesh = CompanionQuiet(ran);
   double seconds[2] = {0, 0};
   PetscMPIInt size;
   PetscFunctionBeginUser;

@@ -30,6 +30,9 @@ PetscErrorCode RunOnce(MPI_Comm comm, const Options &opt, bool quiet, const Prob
 // Their line ("companion runs for the error estimate: ...") is printed, or with `line` returned in it.
 PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out, std::string *line = nullptr);
 
+// A companion's options: `ran`'s, writing no file, quiet, estimating nothing.
+Options CompanionQuiet(const Options &ran);
+
 // A history as doubles (what MPI sends of it).
 static_assert(std::is_trivially_copyable_v<HistoryRow> && sizeof(HistoryRow) % sizeof(double) == 0,
               "a history row travels as doubles");

@@ -24,12 +24,22 @@ constexpr double kTargetAim = 0.7;
 // mesh, and each level costs about 8 x the last.
 constexpr double kMaxRatio = 2.0;
 
+// What a finer level changes in the options of the last (plain data: it also travels to the ranks of the
+// estimate's companions, driver/beside.hpp).
+struct LevelChange {
+  PetscInt level = 0, mesh_nt = 0, mesh_ntheta = 0, increments = 0;
+  double rmin_deps = 0, rmin_deps_yield = 0, rmin_domega = 0;
+  // The options of the level `last` with this change (its element chosen for its cells: -element auto).
+  Options Applied(const Options &last) const;
+};
+
 struct Refinement {
   bool follows = false;  // a finer level runs next
   std::string why;       // what decided (a line for the user)
   double mesh_ratio = 1; // the cell size's divisor (through the wall and around)
   double step_ratio = 1; // the increment limits' divisor
-  Options next;          // the next level's options (follows)
+  LevelChange change;    // the next level's (follows)
+  Options next;          // its options: change.Applied(the last level's)
 };
 
 // What comes after a level that ended with `a` (its estimate, targets and parts), which took `level_seconds`,
