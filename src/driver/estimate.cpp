@@ -11,20 +11,28 @@
 
 namespace tf {
 
+namespace {
+
+// The options a run's companions take: the run's, with what it chose for itself kept, its element and its
+// friction regularization (`vcri`; 0: no tools).
+Options Kept(const Options &opt, double vcri)
+{
+  Options ran = opt;
+  ran.element_auto = false;
+  if (vcri > 0) ran.friction_vcri = vcri;
+  return ran;
+}
+
+} // namespace
+
 PetscErrorCode Problem::CompanionOptions(Options &ran)
 {
+  ContactSpec tools;
   PetscFunctionBeginUser;
-  // The companions keep what this run chose for itself: its element and its friction regularization (that of
-  // the tools the scene sets up, when the run has not yet).
-  ran = opt_;
-  ran.element_auto = false;
-  if (contact_)
-    ran.friction_vcri = contact_->params().vcri;
-  else {
-    ContactSpec tools;
-    PetscCall(scene_->Initialize(*model_, tools));
-    if (!tools.candidates.empty()) ran.friction_vcri = tools.params.vcri;
-  }
+  // (after Run the contact set holds the tools; Estimate reads it)
+  PetscCheck(!contact_, comm_, PETSC_ERR_ORDER, "Problem::CompanionOptions: before Run only");
+  PetscCall(scene_->Initialize(*model_, tools));
+  ran = Kept(opt_, tools.candidates.empty() ? 0 : tools.params.vcri);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -34,8 +42,7 @@ PetscErrorCode Problem::Estimate(Companions &companions, Stop &stop)
   char text[PETSC_MAX_PATH_LEN] = "";
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_dup(comm_, &agree));
-  Options ran;
-  PetscCall(CompanionOptions(ran));
+  const Options ran = Kept(opt_, contact_ ? contact_->params().vcri : 0);
   const PetscErrorCode failed = companion_run_(ran, companions);
   const ErrorVerdict v = AgreeOnError(agree, failed, kAgreeSeconds);
   if (!v.all_answered) {

@@ -47,8 +47,8 @@ public:
   // estimate (one line why); a stop signal also ends the job.
   using CompanionRun = std::function<PetscErrorCode(const Options &ran, Companions &)>;
   void SetCompanion(CompanionRun run) { companion_run_ = std::move(run); }
-  // Collective, after Setup or Run: the options the companions of this run take (the run's, its element and
-  // friction regularization fixed).
+  // Collective, after Setup and before Run (a problem set up for this alone: its scene's tools are set up here):
+  // the options the companions of this run will take (the run's, its element and friction regularization fixed).
   PetscErrorCode CompanionOptions(Options &ran);
   // No lines on the standard output (a companion run, which also writes no files: its -output is empty).
   void SetQuiet() { quiet_ = true; }
