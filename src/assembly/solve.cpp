@@ -101,14 +101,16 @@ PetscErrorCode System::Solve(Vec du, std::vector<double> &reactions)
   if (!rows.empty()) PetscCall(VecGetValues(rhs_, (PetscInt)rows.size(), rows.data(), b_rows.data()));
   if (iterate_) PetscCall(IterateResidual(rows, b_rows, extra, reactions));
 
-  if (iterate_ && (iterate_residual_ <= accept_below_ || iterate_residual_ > reject_above_)) {
-    // In balance (or rejected): the iterate is the solution, no factorization.
+  // In balance (or rejected): the iterate is the solution, no factorization.
+  const bool taken = iterate_ && (iterate_residual_ <= accept_below_ || iterate_residual_ > reject_above_);
+  if (taken) {
     solved_ = false;
     accepted_ = iterate_residual_ <= accept_below_;
     PetscCall(VecCopy(x_, sol_));
-    PetscCall(PetscLogEventEnd(Log::apply_bc, 0, 0, 0, 0));
   } else
-    PetscCall(FactorAndSolve(rows, vals, b_rows, extra, reactions));
+    PetscCall(ApplyPrescribed(rows, vals));
+  PetscCall(PetscLogEventEnd(Log::apply_bc, 0, 0, 0, 0));
+  if (!taken) PetscCall(FactorAndSolve(rows, b_rows, extra, reactions));
 
   // Reactions r = K(rows, :) du - f(rows), in the node frames.
   PetscCall(Reactions(sol_, rows, b_rows, reactions));
@@ -185,12 +187,8 @@ PetscErrorCode System::IterateResidual(const std::vector<PetscInt> &rows, const 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode System::FactorAndSolve(const std::vector<PetscInt> &rows, std::vector<PetscScalar> &vals,
-                                      const std::vector<PetscScalar> &b_rows, bool extra,
-                                      std::vector<double> &reactions)
+PetscErrorCode System::ApplyPrescribed(const std::vector<PetscInt> &rows, std::vector<PetscScalar> &vals)
 {
-  KSPConvergedReason reason;
-
   PetscFunctionBeginUser;
   if (iterate_) {
     // The correction d of the iterate: K d = b - K x (coupled rows as K),
@@ -205,8 +203,15 @@ PetscErrorCode System::FactorAndSolve(const std::vector<PetscInt> &rows, std::ve
   PetscCall(VecAssemblyBegin(fixed_));
   PetscCall(VecAssemblyEnd(fixed_));
   PetscCall(MatZeroRowsColumns(k_, (PetscInt)rows.size(), rows.data(), 1.0, fixed_, rhs_));
-  PetscCall(PetscLogEventEnd(Log::apply_bc, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
+PetscErrorCode System::FactorAndSolve(const std::vector<PetscInt> &rows, const std::vector<PetscScalar> &b_rows,
+                                      bool extra, std::vector<double> &reactions)
+{
+  KSPConvergedReason reason;
+
+  PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::solve, 0, 0, 0, 0));
   PetscCall(KSPSetOperators(ksp_, k_, k_));
   PetscCall(KSPSolve(ksp_, rhs_, sol_));

@@ -221,13 +221,15 @@ private:
   // The steps of Solve: the prescribed dofs owned here as global rows and their values; the rows
   // K(rows, :) kept for the reactions (rebuilt only when some rank's prescribed set changed); an iterate's
   // largest out-of-balance force on the free rows, or the extra unknown's miss if larger (iterate_residual_; its
-  // b - K x left in work_); the factorization and solve (of the correction, with an iterate).
+  // b - K x left in work_); the prescribed values into K and the loads (of the correction, with an iterate); the
+  // factorization and solve.
   PetscErrorCode PrescribedRows(std::vector<PetscInt> &rows, std::vector<PetscScalar> &vals);
   PetscErrorCode KeepReactionRows(const std::vector<PetscInt> &rows);
   PetscErrorCode IterateResidual(const std::vector<PetscInt> &rows, const std::vector<PetscScalar> &b_rows, bool extra,
                                  std::vector<double> &reactions);
-  PetscErrorCode FactorAndSolve(const std::vector<PetscInt> &rows, std::vector<PetscScalar> &vals,
-                                const std::vector<PetscScalar> &b_rows, bool extra, std::vector<double> &reactions);
+  PetscErrorCode ApplyPrescribed(const std::vector<PetscInt> &rows, std::vector<PetscScalar> &vals);
+  PetscErrorCode FactorAndSolve(const std::vector<PetscInt> &rows, const std::vector<PetscScalar> &b_rows, bool extra,
+                                std::vector<double> &reactions);
 };
 
 } // namespace tf
