@@ -4,7 +4,8 @@ directional levels), None where the levels it reads are missing.
 
 Levels: run; S its steps' companion (s 1/2); M the mesh companion (half the cells through the wall, at least 2, and
 around); MS both; MM half M's; the directional ones at s 1: T- half the cells through the wall (none under 2), T+ and
-T++ two and four times them, A- half the cells around, A+ twice them.
+T++ two and four times them, A- half the cells around, A+ twice them; Q and QS (plan quarter) three quarters of
+the cells through the wall (at least 2) and around, at s 1 and 1/2.
 """
 import os
 
@@ -45,11 +46,11 @@ def parts(r, periods=0.0):
 mesh_factor = lambda r: 1 / 3 if r["element"] == "qm6bar" else 1.0  # noqa: E731
 
 
-def ripple_free(r, worst=False, mesh=1.0, spring=False):
+def ripple_free(r, worst=False, mesh=1.0, spring=False, w=None):
     """|MS - M| + mesh |M - run| with the contact ripple out: the curves fitted over +- FIT_PERIODS periods plus the
     run's own ripple, or (worst) the largest over u +- one period. `spring`: C/t after springback as the loaded end's
     estimate plus that of the springback's change (a sum's error is within the sum of its terms')."""
-    s, m, q = parts(r, 0 if worst else FIT_PERIODS)
+    s, m, q = parts(r, 0 if worst else (w or FIT_PERIODS))
     est, U = A(s) + mesh * A(m) + q, r["curves"]["run"][1][0]
     for k, (col, u) in enumerate([(c, u) for c in (1, 2) for u in r["strokes"]] if worst else []):
         us = np.linspace(max(U[0], u - r["period"]), min(U[-1], u + r["period"]), 41)
@@ -112,6 +113,19 @@ def steps_and_directions(r, observed=False, signed=False, element=False):
     return None if d is None else A(parts(r)[0]) + (A(d["signed_t"] + d["signed_a"]) if signed else d["t"] + d["a"])
 
 
+def quarter(r, p=1.0, periods=0.0, steps=1.0):
+    """|QS - Q| + |Q - run| / (r^p - 1) from the companions at three quarters of the cells (Q, r = 4/3 around, and
+    through the wall where the run has more than 2 cells) and Q at twice its increment limits (QS); the curves fitted
+    over +- `periods` contact periods plus the run's ripple (0: as they are)."""
+    c = r["curves"]
+    if c.get("Q") is None or c.get("QS") is None:
+        return None
+    w = periods * r["period"]
+    run, q, qs = (at_cells(r, k, w) for k in ("run", "Q", "QS"))
+    ripple = A(at_cells(r, "run") - run) if periods else 0.0
+    return steps * A(qs - q) + A(q - run) / (r["ratio_a"] ** p - 1) + ripple
+
+
 # Candidates: an estimate (the values' units) from a record, None where its levels are missing. "old" and the
 # second-order mesh are what docs/accuracy.md compares with; (a)-(d) the families the study of the estimate tried.
 CANDIDATES = {
@@ -124,8 +138,15 @@ CANDIDATES = {
     "b |MS - M| + |M - run| / (2^p - 1)": lambda r: A(parts(r)[0]) + mesh_factor(r) * A(parts(r)[1]),
     "c fitted + ripple, b": lambda r: ripple_free(r, mesh=mesh_factor(r)),
     "c fitted + ripple, b, sprung from the end": lambda r: ripple_free(r, mesh=mesh_factor(r), spring=True),
+    "c fitted + ripple, sprung from the end": lambda r: ripple_free(r, spring=True),
+    "c fitted + ripple, sprung from the end, 1 period": lambda r: ripple_free(r, spring=True, w=1),
+    "c fitted + ripple, sprung from the end, 3 periods": lambda r: ripple_free(r, spring=True, w=3),
     "c max over +- 1 period, b": lambda r: ripple_free(r, worst=True, mesh=mesh_factor(r)),
     "c max over +- 1 period, b, sprung from the end": lambda r: ripple_free(r, True, mesh_factor(r), True),
+    "q 3/4 companions, p 1": lambda r: quarter(r, 1.0),
+    "q 3/4 companions, p 2": lambda r: quarter(r, 2.0),
+    "q 3/4 companions, p 1.5": lambda r: quarter(r, 1.5),
+    "q 3/4 companions, p 2, ripple fitted": lambda r: quarter(r, 2.0, FIT_PERIODS),
     "d GCI run, M, MM": gci,
     "d shipped where GCI applies": lambda r: None if gci(r) is None else A(parts(r)[0]) + A(parts(r)[1]),
     "d |S - run| + |M - run|": lambda r: A(at_cells(r, "S") - at_cells(r, "run")) + A(parts(r)[1]),

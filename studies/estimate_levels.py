@@ -136,6 +136,10 @@ DIRECTIONS = lambda nt, d: [(nt // 2 if nt >= 4 else 2 * nt, d), (nt, d / 2)]  #
 ORDERS = lambda nt, d: [(2 * nt if nt >= 4 else 4 * nt, d), (nt, 2 * d)]  # noqa: E731
 
 
+# A preset level (nt, D)'s companion at three quarters of its cells through the wall (at least 2) and around.
+QUARTER = lambda nt, d: (max(2, round(0.75 * nt)), 0.75 * d)  # noqa: E731
+
+
 def plan(name, which):
     """The runs (nt, D, s, element) of a plan for a tube."""
     fast_nt, default_nt = preset_nt(name, 0.044, 2), preset_nt(name, 0.022, 4)
@@ -149,6 +153,9 @@ def plan(name, which):
         runs = [(n, d, 1, "qm6bar" if nt >= 5 else "qm6") for nt, e in ((fast_nt, 12), (default_nt, 24))
                 for n, d in (DIRECTIONS if which == "directions" else ORDERS)(nt, e)]
         return list(dict.fromkeys(runs))
+    if which == "quarter":  # the preset levels' companions at three quarters of the cells (s 1 and 0.5)
+        return [(n, d, s, "qm6bar" if nt >= 5 else "qm6") for nt, e in ((fast_nt, 12), (default_nt, 24))
+                for n, d in [QUARTER(nt, e)] for s in (1, 0.5)]
     if which == "preset":
         return [("preset", p) for p in PRESETS]
     if which == "reference":
@@ -207,6 +214,11 @@ def record(name, preset):
             with h5py.File(path + ".h5", "r") as h:
                 gains = np.count_nonzero(np.diff(h["/history/n_contact"][:][h["/history/stage"][:] == 0]) > 0)
             r["period"] = r["curves"]["M"][1][0][-1] / max(1, gains)
+    nq, dq = QUARTER(nt, d)
+    for key, s in (("Q", 1), ("QS", 0.5)):
+        path = os.path.join(OUT, name, label(nq, dq, s, r["element"]))
+        r["curves"][key] = values(path + ".h5", [])[2:] if done(path) else None
+    r["ratio_t"], r["ratio_a"] = nt / nq, d / dq
     for key, (a, b) in DIRECTIONAL.items():
         path = os.path.join(OUT, name, label(int(nt * a), d * b, 1, r["element"]))
         r["curves"][key] = values(path + ".h5", [])[2:] if nt * a >= 2 and done(path) else None
