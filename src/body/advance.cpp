@@ -54,6 +54,31 @@ void Body::SelectedTangents(PetscInt e, const Selected sel[fe::kGauss], Mat4 c[f
   }
 }
 
+void Body::SelectCondensation(PetscInt e, const double xs[2 * fe::kNodes], const fe::QuadGeometry &start,
+                              const fe::ElemVec &due, fe::Condensation &own, fe::ModeMatrix &own_kii_inv,
+                              const fe::Condensation *&cond, const fe::ModeMatrix *&kii_inv) const
+{
+  // A fixed point: the states the modes of a condensation select, then the
+  // condensation of those states, until they select themselves (from the
+  // assembled one, which ScanTrial took from the last iterate's increment).
+  Mat4 c[fe::kGauss];
+  Voigt s[fe::kGauss];
+  Selected sel[fe::kGauss], last[fe::kGauss];
+  const auto same = [](const Selected &a, const Selected &b) {
+    return a.plastic == b.plastic && std::abs(a.m - b.m) <= kSelectTol;
+  };
+  for (int g = 0; g < fe::kGauss; ++g) s[g] = state_[fe::kGauss * e + g].sigma;
+  for (int pass = 0; pass < kSelectPasses; ++pass) {
+    const bool differ = SelectStates(e, xs, start, due, *cond, sel);
+    if (pass == 0 && !differ) break;
+    if (pass > 0 && std::equal(sel, sel + fe::kGauss, last, same)) break;
+    SelectedTangents(e, sel, c);
+    if (!cells_.Condense(xs, start, c, s, own, own_kii_inv)) break;
+    cond = &own, kii_inv = &own_kii_inv;
+    std::copy(sel, sel + fe::kGauss, last);
+  }
+}
+
 bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState *to, Advanced &acc,
                        fe::Condensation *used) const
 {
@@ -85,27 +110,7 @@ bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState 
   fe::ModeMatrix own_kii_inv;
   const fe::Condensation *cond = balance ? &cells_.assembled((int)e) : nullptr;
   const fe::ModeMatrix *kii_inv = balance ? &cells_.assembled_kii_inv((int)e) : nullptr;
-  if (balance && OwnTangents()) {
-    // A fixed point: the states the modes of a condensation select, then the
-    // condensation of those states, until they select themselves (from the
-    // assembled one, which ScanTrial took from the last iterate's increment).
-    Mat4 c[fe::kGauss];
-    Voigt s[fe::kGauss];
-    Selected sel[fe::kGauss], last[fe::kGauss];
-    const auto same = [](const Selected &a, const Selected &b) {
-      return a.plastic == b.plastic && std::abs(a.m - b.m) <= kSelectTol;
-    };
-    for (int g = 0; g < fe::kGauss; ++g) s[g] = state_[fe::kGauss * e + g].sigma;
-    for (int pass = 0; pass < kSelectPasses; ++pass) {
-      const bool differ = SelectStates(e, xs, *start, due, *cond, sel);
-      if (pass == 0 && !differ) break;
-      if (pass > 0 && std::equal(sel, sel + fe::kGauss, last, same)) break;
-      SelectedTangents(e, sel, c);
-      if (!cells_.Condense(xs, *start, c, s, own, own_kii_inv)) break;
-      cond = &own, kii_inv = &own_kii_inv;
-      std::copy(sel, sel + fe::kGauss, last);
-    }
-  }
+  if (balance && OwnTangents()) SelectCondensation(e, xs, *start, due, own, own_kii_inv, cond, kii_inv);
   if (used && balance) *used = *cond;
   fe::InternalVec alpha = balance ? fe::CellFormulation::ModesOf(*cond, due) : fe::InternalVec{};
   for (int it = 0;; ++it) {

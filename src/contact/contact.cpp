@@ -302,13 +302,24 @@ void ContactSet::TakeFrame(PetscInt node, int k, const Projection &pr)
 
 PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &report)
 {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::contact, 0, 0, 0, 0));
+  pad_step_ *= r; // (the force-controlled tool's motion in the solution, scaled as du was)
+  PetscCall(CommitForces(du, dU, r, report));
+  // The tools have moved by dU with the increment (a force-controlled one by its own step).
+  for (int k = 0; k < (int)tools_.size(); ++k) tools_[k].stroke += Step(k, dU);
+  PetscCall(TakeMovedFrames(report));
+  PetscCall(PetscLogEventEnd(Log::contact, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContactSet::CommitForces(Vec du, double dU, double r, ContactCommit &report)
+{
   const PetscScalar *d, *react;
   double local[3] = {0, 0, slid_off_}, global[3]; // friction work; tension, force dropped (maxima)
   const double event = r * (1 + prm_.group_tol);
 
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(Log::contact, 0, 0, 0, 0));
-  pad_step_ *= r; // (the force-controlled tool's motion in the solution, scaled as du was)
   PetscCall(VecGetArrayRead(du, &d));
   PetscCall(VecGetArrayRead(system_->reactions_local(), &react));
   for (PetscInt node : candidates_) {
@@ -357,14 +368,14 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
   report.tension = global[1];
   report.release_force = global[2];
   slid_off_ = 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
-  // The tools have moved by dU with the increment (a force-controlled one by its own step).
-  for (int k = 0; k < (int)tools_.size(); ++k) tools_[k].stroke += Step(k, dU);
-  // The new geometry: contact nodes take the frame where they now are (the
-  // forces are reported in it) and keep their gap for the next increment to
-  // close (on arcs, sliding along the tangent leaves a second-order gap); a
-  // free node that reached the surface up to round-off is in contact.
+PetscErrorCode ContactSet::TakeMovedFrames(ContactCommit &report)
+{
   double worst[2] = {0, 0}, global_worst[2]; // gap of a contact node, penetration
+
+  PetscFunctionBeginUser;
   for (PetscInt node : candidates_) {
     int k = tool_of_[node];
     const Projection pr = contact_[node] ? tools_[k].Project(Position(node)) : ProjectNearest(node, k);
@@ -384,7 +395,6 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
   PetscCallMPI(MPI_Allreduce(worst, global_worst, 2, MPI_DOUBLE, MPI_MAX, comm()));
   report.gap = global_worst[0];
   report.penetration = global_worst[1];
-  PetscCall(PetscLogEventEnd(Log::contact, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

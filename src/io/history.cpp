@@ -7,9 +7,13 @@
 
 namespace tf {
 
-const std::vector<HistoryColumn> &HistoryColumns()
+namespace {
+
+// The columns of the first histories: the increment, its limiter and solve, the energies and self-checks, the
+// tube's shape, the compromises taken, the contacts, the tool's forces, the dynamics.
+std::vector<HistoryColumn> FirstColumns()
 {
-  static const std::vector<HistoryColumn> cols = {
+  return {
     {"increment", &HistoryRow::increment, "increment number"},
     {"stroke", &HistoryRow::stroke, "tool stroke U (mm), or the scene's load parameter (docs/scenes.md)"},
     {"load", &HistoryRow::load, "punch load, full tube (N/mm), or the scene's conjugate force (docs/scenes.md)"},
@@ -73,7 +77,14 @@ const std::vector<HistoryColumn> &HistoryColumns()
      "1 if the increment was solved with inertia (-dynamics implicit, or auto once on)"},
     {"slip", &HistoryRow::slip, "slide scene: mean slip of the contact surface along the floor (mm)"},
     {"fn_sum", &HistoryRow::fn_sum, "sum of the contact nodes' normal forces (N/mm)"},
-    // (added last: a reader of the CSV by position finds the older columns where they were)
+  };
+}
+
+// The columns of the press's further tools and models (the lower die of a half model, the side dies, the rotation
+// hold, the die's path) and of the springback; 0 where they do not act.
+std::vector<HistoryColumn> ToolAndSpringbackColumns()
+{
+  return {
     {"lower_fx", &HistoryRow::lower_fx, "half model: force of the model on the lower die, x (N/mm; 0 in a quarter)"},
     {"lower_fy", &HistoryRow::lower_fy, "half model: force of the model on the lower die, y (N/mm)"},
     {"side_load", &HistoryRow::side_load,
@@ -105,6 +116,18 @@ const std::vector<HistoryColumn> &HistoryColumns()
     {"release_dep", &HistoryRow::release_dep,
      "-springback material: the largest plastic strain a Gauss point took since the springback began"},
   };
+}
+
+} // namespace
+
+const std::vector<HistoryColumn> &HistoryColumns()
+{
+  // The later columns after the first: a reader of the CSV by position finds the first columns where they were.
+  static const std::vector<HistoryColumn> cols = [] {
+    std::vector<HistoryColumn> all = FirstColumns(), later = ToolAndSpringbackColumns();
+    all.insert(all.end(), later.begin(), later.end());
+    return all;
+  }();
   return cols;
 }
 

@@ -7,6 +7,7 @@
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/material_library.hpp"
 #include "tubeform/io/option_reader.hpp"
+#include "tubeform/io/scene_options.hpp"
 #include "tubeform/io/tool_options.hpp"
 #include "tubeform/step/rmin.hpp"
 
@@ -15,8 +16,6 @@ namespace tf {
 namespace {
 const char *const kElements[] = {"q4", "bbar", "qm6", "qm6bar", "auto"};
 const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
-// Reversals -tension_cycle and -bending_cycle take at most.
-constexpr PetscInt kMaxTensionCycle = 16;
 // Flow-curve points -material_table takes at most (ep, sigma pairs).
 constexpr PetscInt kMaxTable = 200;
 
@@ -159,13 +158,10 @@ PetscErrorCode ReadMaterial(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The incremental driver: increments, r_min, dynamics, equilibrium, kinematics.
-PetscErrorCode ReadDriver(MPI_Comm comm, OptionReader &read, Options &opt)
+// Inside the driver's block: the increments and r_min's bounds, the stops, the re-solves, the drift correction.
+PetscErrorCode ReadIncrements(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
-  PetscInt choice;
-
   PetscFunctionBeginUser;
-  TF_OPTIONS_BEGIN(comm, "tubeform: incremental driver (r_min method)");
   PetscCall(read.Int(PetscOptionsObject, "-increments", "Trial increments over the load path (r_min may cut each)",
                      opt.increments));
   PetscCall(read.Int(PetscOptionsObject, "-unload_increments",
@@ -202,17 +198,23 @@ PetscErrorCode ReadDriver(MPI_Comm comm, OptionReader &read, Options &opt)
                      "Re-solves per increment when points switch between loading and unloading", opt.rmin_max_redo));
   PetscCall(read.Bool(PetscOptionsObject, "-drift_correction",
                       "Scale plastic stresses back onto the yield surface after each update", opt.drift_correction));
-  {
-    const char *const kinds[] = {"quasistatic", "implicit", "auto"};
-    choice = static_cast<int>(opt.dynamics);
-    read.Note("-dynamics");
-    PetscCall(
-      PetscOptionsEList("-dynamics",
-                        "quasistatic (no inertia), implicit (lumped mass, backward Euler in time), auto (quasi-static "
-                        "until an increment's friction iterations do not settle, implicit from then on)",
-                        "tubeform", kinds, 3, kinds[choice], &choice, nullptr));
-    opt.dynamics = static_cast<Dynamics>(choice);
-  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Inside the driver's block: inertia, the equilibrium iterations and the kinematics they choose.
+PetscErrorCode ReadDynamics(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  const char *const kinds[] = {"quasistatic", "implicit", "auto"};
+  PetscInt choice = static_cast<int>(opt.dynamics);
+
+  PetscFunctionBeginUser;
+  read.Note("-dynamics");
+  PetscCall(PetscOptionsEList("-dynamics",
+                              "quasistatic (no inertia), implicit (lumped mass, backward Euler in time), auto "
+                              "(quasi-static until an increment's friction iterations do not settle, implicit from "
+                              "then on)",
+                              "tubeform", kinds, 3, kinds[choice], &choice, nullptr));
+  opt.dynamics = static_cast<Dynamics>(choice);
   PetscCall(read.Real(PetscOptionsObject, "-dynamics_time",
                       "Duration (s) of the load path lambda 0 -> 1 with -dynamics implicit (scenes without tools)",
                       opt.dynamics_time));
@@ -225,28 +227,36 @@ PetscErrorCode ReadDriver(MPI_Comm comm, OptionReader &read, Options &opt)
                       "time-averaged nodal force (Abaqus's R_max <= 0.005 q); 0: off, the paper's forward "
                       "increments",
                       opt.equilibrium_tol));
-  {
-    // auto: midpoint with equilibrium iterations (objective and second order;
-    // the iterations balance the pressure its strain leaves near
-    // incompressibility), forward without them (the paper's increments, which
-    // it keeps in balance best).
-    const char *const schemes[] = {"forward", "midpoint", "auto"};
-    PetscBool set;
-    choice = 2;
-    read.Note("-kinematics");
-    PetscCall(PetscOptionsEList(
-      "-kinematics",
-      "Strain/spin increments: forward (start configuration, W sigma - sigma W), midpoint (Hughes-Winget), or "
-      "auto (midpoint with equilibrium iterations, forward without)",
-      "tubeform", schemes, 3, schemes[choice], &choice, &set));
-    if (choice == 2) choice = opt.equilibrium_tol > 0 ? 1 : 0;
-    opt.kinematics = choice == 0 ? ObjectiveScheme::Forward : ObjectiveScheme::Midpoint;
-  }
+  // auto: midpoint with equilibrium iterations (objective and second order;
+  // the iterations balance the pressure its strain leaves near
+  // incompressibility), forward without them (the paper's increments, which
+  // it keeps in balance best).
+  const char *const schemes[] = {"forward", "midpoint", "auto"};
+  PetscBool set;
+  choice = 2;
+  read.Note("-kinematics");
+  PetscCall(PetscOptionsEList(
+    "-kinematics",
+    "Strain/spin increments: forward (start configuration, W sigma - sigma W), midpoint (Hughes-Winget), or "
+    "auto (midpoint with equilibrium iterations, forward without)",
+    "tubeform", schemes, 3, schemes[choice], &choice, &set));
+  if (choice == 2) choice = opt.equilibrium_tol > 0 ? 1 : 0;
+  opt.kinematics = choice == 0 ? ObjectiveScheme::Forward : ObjectiveScheme::Midpoint;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The incremental driver: increments, r_min, dynamics, equilibrium, kinematics (one group in -help).
+PetscErrorCode ReadDriver(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  TF_OPTIONS_BEGIN(comm, "tubeform: incremental driver (r_min method)");
+  PetscCall(ReadIncrements(PetscOptionsObject, read, opt));
+  PetscCall(ReadDynamics(PetscOptionsObject, read, opt));
   TF_OPTIONS_END();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Inside the loading block: the loads, the tools' friction, the release, the other scenes' sizes.
+// Inside the loading block: the loads, the tools and their friction, the release.
 PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
@@ -293,41 +303,6 @@ PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &rea
                        "are dead loads, which can drive a thin wall into a collapse by the material's law), material "
                        "for -unload withdraw and the bending scene",
                        {"auto", "material", "elastic"}, opt.springback));
-  PetscCall(read.Real(PetscOptionsObject, "-shear_gamma", "shear scene: final shear strain gamma", opt.shear_gamma));
-  PetscCall(
-    read.Real(PetscOptionsObject, "-slide_n", "slide scene: normal force pressing the block (N/mm)", opt.slide_n));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-slide_tool",
-                       "slide scene: a block on a flat floor, or a quarter ring turned inside a cylinder (arc)",
-                       {"flat", "arc"}, opt.slide_tool));
-  PetscCall(read.Real(PetscOptionsObject, "-slide_push", "slide scene: sideways displacement of the block's top (mm)",
-                      opt.slide_push));
-  PetscCall(read.Real(PetscOptionsObject, "-slide_back",
-                      "slide scene (flat): then push the top back by this much (mm; 0: no third stage), "
-                      "reversing the slip",
-                      opt.slide_back));
-  PetscCall(read.Real(PetscOptionsObject, "-tension_strain",
-                      "tension scene: final nominal strain in x (negative: compression)", opt.tension_strain));
-  PetscCall(RealList(PetscOptionsObject, read, "-tension_cycle",
-                     "tension scene: nominal strains the block is then taken to in turn, each over "
-                     "-unload_increments trial increments (a tension-compression cycle: -tension_strain 0.02 "
-                     "-tension_cycle -0.02,0.02)",
-                     kMaxTensionCycle, opt.tension_cycle));
-  PetscCall(read.Real(PetscOptionsObject, "-bending_strain",
-                      "bending scene: the outer fibre's nominal strain at the end of the first stage (y > 0; "
-                      "negative: bent the other way)",
-                      opt.bending_strain));
-  PetscCall(RealList(PetscOptionsObject, read, "-bending_cycle",
-                     "bending scene: outer-fibre strains the strip is then taken to in turn, each over "
-                     "-unload_increments trial increments (bend and unbend: -bending_strain 0.01 -bending_cycle 0)",
-                     kMaxTensionCycle, opt.bending_cycle));
-  PetscCall(read.Real(PetscOptionsObject, "-rotation_angle",
-                      "rotation scene: rigid rotation after the prestretch (degrees)", opt.rotation_angle));
-  PetscCall(read.Real(PetscOptionsObject, "-rotation_strain",
-                      "rotation scene: uniaxial prestretch strain in x before the rotation", opt.rotation_strain));
-  PetscCall(read.Real(PetscOptionsObject, "-column_l", "column scene: length between the pins (mm)", opt.column_l));
-  PetscCall(read.Real(PetscOptionsObject, "-column_t", "column scene: thickness (mm)", opt.column_t));
-  PetscCall(read.Real(PetscOptionsObject, "-column_imperfection",
-                      "column scene: amplitude of the initial sine-shaped bow (mm)", opt.column_imperfection));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -407,6 +382,7 @@ PetscErrorCode ReadLoading(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscFunctionBeginUser;
   TF_OPTIONS_BEGIN(comm, "tubeform: loading and output");
   PetscCall(ReadLoads(PetscOptionsObject, read, opt));
+  PetscCall(ReadSceneSizes(PetscOptionsObject, read, opt)); // (scene_options.cpp)
   PetscCall(ReadOutput(PetscOptionsObject, read, opt));
   TF_OPTIONS_END();
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -48,6 +48,80 @@ PetscErrorCode OriginalPoints(PetscSF migration, PetscInt pstart, PetscInt pend,
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// The boundary sets as labels on the edges of the serial mesh (and, completed, their vertices); labels travel
+// with the points when the mesh is distributed. Only rank 0 sees the segments: a segment that is no cell edge
+// (SerialMesh::validate refuses such meshes first) is agreed on by every rank before it is raised, the serial mesh
+// destroyed.
+PetscErrorCode LabelBoundarySets(MPI_Comm comm, const SerialMesh &serial, const std::vector<std::string> &sets,
+                                 DM *serial_dm)
+{
+  PetscMPIInt rank;
+  char bad[PETSC_MAX_PATH_LEN] = "";
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  for (const auto &name : sets) {
+    DMLabel label;
+    PetscCall(DMCreateLabel(*serial_dm, name.c_str()));
+    PetscCall(DMGetLabel(*serial_dm, name.c_str(), &label));
+    if (rank == 0 && serial.edge_sets.count(name)) {
+      const PetscInt nc = serial.num_cells(); // (the vertices are numbered after the cells)
+      for (const auto &e : serial.edge_sets.at(name)) {
+        const PetscInt verts[2] = {nc + e[0], nc + e[1]};
+        PetscInt njoin;
+        const PetscInt *join;
+        PetscCall(DMPlexGetJoin(*serial_dm, 2, verts, &njoin, &join));
+        if (njoin == 1)
+          PetscCall(DMLabelSetValue(label, join[0], 1));
+        else if (!bad[0])
+          PetscCall(PetscSNPrintf(bad, sizeof(bad), "boundary set '%s': nodes %d and %d are not joined by a cell edge",
+                                  name.c_str(), (int)e[0], (int)e[1]));
+        PetscCall(DMPlexRestoreJoin(*serial_dm, 2, verts, &njoin, &join));
+      }
+    }
+    PetscCall(DMPlexLabelComplete(*serial_dm, label));
+  }
+  PetscCallMPI(MPI_Bcast(bad, sizeof(bad), MPI_CHAR, 0, comm));
+  if (bad[0]) PetscCall(DMDestroy(serial_dm));
+  PetscCheck(!bad[0], comm, PETSC_ERR_USER_INPUT, "%s", bad);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The serial mesh distributed over several ranks (`dist`, `migration`): METIS decides which rank owns each cell;
+// a shell partitioner hands that to DMPlexDistribute. A rank left without cells is seen on rank 0 alone: agreed on
+// first, the serial mesh destroyed.
+PetscErrorCode Distribute(MPI_Comm comm, const SerialMesh &serial, DM *serial_dm, PetscSF *migration, DM *dist)
+{
+  PetscMPIInt rank, size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  std::vector<PetscInt> sizes(size, 0), points;
+  int empty = -1; // a rank METIS left without cells
+  if (rank == 0) {
+    std::vector<int> part;
+    PetscCall(PartitionCells(serial, size, part));
+    std::vector<std::vector<PetscInt>> byrank(size);
+    for (PetscInt cidx = 0; cidx < serial.num_cells(); ++cidx) byrank[part[cidx]].push_back(cidx);
+    for (int r = 0; r < size; ++r) {
+      if (byrank[r].empty() && empty < 0) empty = r;
+      sizes[r] = (PetscInt)byrank[r].size();
+      points.insert(points.end(), byrank[r].begin(), byrank[r].end());
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&empty, 1, MPI_INT, 0, comm));
+  if (empty >= 0) PetscCall(DMDestroy(serial_dm));
+  PetscCheck(empty < 0, comm, PETSC_ERR_USER_INPUT, "METIS left rank %d without cells: use fewer ranks or a finer mesh",
+             empty);
+  PetscPartitioner part;
+  PetscCall(DMPlexGetPartitioner(*serial_dm, &part));
+  PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERSHELL));
+  PetscCall(PetscPartitionerShellSetPartition(part, size, sizes.data(), rank == 0 ? points.data() : nullptr));
+  PetscCall(DMPlexDistribute(*serial_dm, 0, migration, dist));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace
 
 Mesh::~Mesh()
@@ -76,62 +150,11 @@ PetscErrorCode Mesh::Create(MPI_Comm c, const SerialMesh &serial, const std::vec
                                           rank == 0 ? serial.xy.data() : nullptr, &serial_dm));
   PetscCall(PetscObjectSetName((PetscObject)serial_dm, "mesh"));
 
-  // 2. Boundary sets become labels on edges (and, completed, their vertices);
-  //    labels travel with the points when the mesh is distributed. Only rank 0
-  //    sees the segments: a segment that is no cell edge (SerialMesh::validate
-  //    refuses such meshes first) is agreed on by every rank before it is raised.
-  char bad[PETSC_MAX_PATH_LEN] = "";
-  for (const auto &name : sets) {
-    DMLabel label;
-    PetscCall(DMCreateLabel(serial_dm, name.c_str()));
-    PetscCall(DMGetLabel(serial_dm, name.c_str(), &label));
-    if (rank == 0 && serial.edge_sets.count(name)) {
-      for (const auto &e : serial.edge_sets.at(name)) {
-        const PetscInt verts[2] = {nc + e[0], nc + e[1]};
-        PetscInt njoin;
-        const PetscInt *join;
-        PetscCall(DMPlexGetJoin(serial_dm, 2, verts, &njoin, &join));
-        if (njoin == 1)
-          PetscCall(DMLabelSetValue(label, join[0], 1));
-        else if (!bad[0])
-          PetscCall(PetscSNPrintf(bad, sizeof(bad), "boundary set '%s': nodes %d and %d are not joined by a cell edge",
-                                  name.c_str(), (int)e[0], (int)e[1]));
-        PetscCall(DMPlexRestoreJoin(serial_dm, 2, verts, &njoin, &join));
-      }
-    }
-    PetscCall(DMPlexLabelComplete(serial_dm, label));
-  }
-  PetscCallMPI(MPI_Bcast(bad, sizeof(bad), MPI_CHAR, 0, comm));
-  if (bad[0]) PetscCall(DMDestroy(&serial_dm));
-  PetscCheck(!bad[0], comm, PETSC_ERR_USER_INPUT, "%s", bad);
+  // 2. The boundary sets become labels, which travel with the points.
+  PetscCall(LabelBoundarySets(comm, serial, sets, &serial_dm));
 
-  // 3. METIS decides which rank owns each cell; a shell partitioner hands that
-  //    to DMPlexDistribute.
-  //    A rank left without cells is seen on rank 0 alone: agreed on first.
-  if (size > 1) {
-    std::vector<PetscInt> sizes(size, 0), points;
-    int empty = -1; // a rank METIS left without cells
-    if (rank == 0) {
-      std::vector<int> part;
-      PetscCall(PartitionCells(serial, size, part));
-      std::vector<std::vector<PetscInt>> byrank(size);
-      for (PetscInt cidx = 0; cidx < nc; ++cidx) byrank[part[cidx]].push_back(cidx);
-      for (int r = 0; r < size; ++r) {
-        if (byrank[r].empty() && empty < 0) empty = r;
-        sizes[r] = (PetscInt)byrank[r].size();
-        points.insert(points.end(), byrank[r].begin(), byrank[r].end());
-      }
-    }
-    PetscCallMPI(MPI_Bcast(&empty, 1, MPI_INT, 0, comm));
-    if (empty >= 0) PetscCall(DMDestroy(&serial_dm));
-    PetscCheck(empty < 0, comm, PETSC_ERR_USER_INPUT,
-               "METIS left rank %d without cells: use fewer ranks or a finer mesh", empty);
-    PetscPartitioner part;
-    PetscCall(DMPlexGetPartitioner(serial_dm, &part));
-    PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERSHELL));
-    PetscCall(PetscPartitionerShellSetPartition(part, size, sizes.data(), rank == 0 ? points.data() : nullptr));
-    PetscCall(DMPlexDistribute(serial_dm, 0, &migration, &dist));
-  }
+  // 3. Each cell to the rank METIS gives it.
+  if (size > 1) PetscCall(Distribute(comm, serial, &serial_dm, &migration, &dist));
   if (dist) {
     PetscCall(DMDestroy(&serial_dm));
     dm = dist;

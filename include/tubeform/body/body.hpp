@@ -206,6 +206,12 @@ private:
                     const fe::Condensation &cond, Selected sel[fe::kGauss]) const;
   // The tangents of those states.
   void SelectedTangents(PetscInt e, const Selected sel[fe::kGauss], Mat4 c[fe::kGauss]) const;
+  // With own tangents: the condensation of the tangents cell e's increment due selects itself, a fixed point from
+  // the assembled one (`cond`, `kii_inv`); once it takes one of its own (`own`, `own_kii_inv`), cond and kii_inv
+  // point to it.
+  void SelectCondensation(PetscInt e, const double xs[2 * fe::kNodes], const fe::QuadGeometry &start,
+                          const fe::ElemVec &due, fe::Condensation &own, fe::ModeMatrix &own_kii_inv,
+                          const fe::Condensation *&cond, const fe::ModeMatrix *&kii_inv) const;
   // The state point i reaches with strain and spin increments deps, omega;
   // adds its work (weight wdet) and drift into acc.
   PointState AdvancePoint(size_t i, const Voigt &deps, double omega, double r, double wdet, Advanced &acc) const;

@@ -332,6 +332,14 @@ private:
   static int HeldComponent(const Vec2 &s) { return std::abs(s[0]) > std::abs(s[1]) ? 0 : 1; }
   // Frame, gap and curvature of a contact node from its projection on tool k.
   void TakeFrame(PetscInt node, int k, const Projection &pr);
+  // Commit, its forces: each candidate's normal force, slip and state at the end of the step r of the increment du
+  // (r5 releases, r4 touches); the friction work, the tension and the force dropped by releases into report.
+  PetscErrorCode CommitForces(Vec du, double dU, double r, ContactCommit &report);
+  // Commit, its new geometry on the moved tools: contact nodes take the frame where they now are (the forces are
+  // reported in it) and keep their gap for the next increment to close (on arcs, sliding along the tangent leaves a
+  // second-order gap); a free node that reached the surface up to round-off is in contact. The largest gap and
+  // penetration into report.
+  PetscErrorCode TakeMovedFrames(ContactCommit &report);
   // A node's projection on the nearest tool it may touch (the smallest gap among the
   // tools it projects on; segment -1 and k = -1 if none).
   Projection ProjectNearest(PetscInt node, int &k) const;
