@@ -22,8 +22,11 @@ namespace tf {
 constexpr double kDivergence = 10;
 // Halvings of a correction that does not reduce the out-of-balance force.
 constexpr int kBacktracks = 3;
-// Halvings of a trial step whose iterations do not settle; the last is taken unsettled.
-constexpr int kMaxCuts = 6;
+// Halvings of a trial step whose iterations do not settle; the last is taken unsettled. With inertia a step short
+// enough is dominated by the mass (M / dt^2 grows as 1 / dt^2) and balances, as through the snap of a thin wall's
+// springback: halvings down to about 1e-6 of the trial (kMinDynamicStep, below).
+constexpr int kMaxCuts = 6, kMaxCutsInertia = 20;
+inline int MaxCuts(bool inertia) { return inertia ? kMaxCutsInertia : kMaxCuts; }
 // Re-solves of a shortened non-linear step that go to its limits' estimate; later ones at least halve it.
 constexpr int kMaxResolves = 3;
 // Inertia: a re-solved step cut by a bound on its size (r2, r3) and well
