@@ -43,8 +43,8 @@ import numpy as np
 from tfcheck import Checks, args, out, run
 
 tf, mpirun, src = args()
-sys.path.insert(0, os.path.join(src, "scripts"))
-import tfruns  # noqa: E402
+sys.path.insert(0, os.path.join(src, "python"))  # the helper package (python/README.md)
+from tubeform_py import tfruns  # noqa: E402
 k = Checks("against_calculix")
 
 

@@ -19,8 +19,8 @@ import numpy as np
 from tfcheck import Checks, args, out, run
 
 tf, mpirun, src = args()
-sys.path.insert(0, os.path.join(src, "scripts"))
-import extremes  # noqa: E402
+sys.path.insert(0, os.path.join(src, "python"))  # the helper package (python/README.md)
+from tubeform_py import extremes  # noqa: E402
 
 k = Checks("extremes")
 # Each case's -time_limit here: a guard against hangs, not the study's 5-minute target (a speed

@@ -24,8 +24,8 @@ import numpy as np
 from tfcheck import Checks, args, out, self_checks
 
 tf, mpirun, src = args()
-sys.path.insert(0, os.path.join(src, "scripts"))
-import soaklib  # noqa: E402
+sys.path.insert(0, os.path.join(src, "python"))  # the helper package (python/README.md)
+from tubeform_py import soaklib  # noqa: E402
 
 SEED, TIME_LIMIT = 1, 60
 # The run's worst self-checks leave out its first increments (their work is too small to mean much): the

@@ -21,9 +21,12 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, HERE)
+# The helper package python/tubeform_py (python/README.md); deck and run are this folder's own modules (the folder of
+# the running script is on the path; tools/validate puts it there when it imports this file).
+sys.path.insert(0, os.path.join(ROOT, "python"))
 import deck  # noqa: E402
 import run  # noqa: E402
+from tubeform_py import validation as v  # noqa: E402
 
 CASES = {
     'default': dict(args=['--material', 'aluminum', '--tube_ro', '17.5', '--tube_t', '1.5', '--friction_mu', '0.05',
@@ -46,9 +49,7 @@ def validation_cases():
     CPE8R, the middle one with 18 elements per bending length sqrt(Ro t) around the quarter (the default
     case's 4 x 90 has 17.5) and at least 90; penalty 1e6 MPa/mm, 1e5 for walls thinner than 1 mm (the
     thin case's stall at 1e6)."""
-    import importlib.machinery
     import math
-    v = importlib.machinery.SourceFileLoader('validate', os.path.join(ROOT, 'scripts', 'validate')).load_module()
     out = {}
     for name, (mat, ro, t, mu, stroke) in v.CASES.items():
         args = ['--tube_ro', f'{ro:g}', '--tube_t', f'{t:g}', '--friction_mu', f'{mu:g}', '--die_r_apex', '3',

@@ -27,9 +27,8 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import deck  # noqa: E402
-import shape  # noqa: E402
+import deck  # this folder's own modules (the folder of the running script, or put on the path by its importer)
+import shape
 
 COLUMNS = ('stroke', 'load', 'c_over_t', 'x_max', 'y_max', 'deviation_ratio', 'stage', 'time',
            'n_contact', 'n_contact_apex', 'fx')

@@ -20,7 +20,7 @@ import time
 import h5py
 import numpy as np
 
-import tfruns
+from . import tfruns
 
 # E/sy by the yield stress at aluminum's E = 75000 MPa; R/t = Ro/t by the
 # wall thickness at Ro = 17.5 mm.
