@@ -2,7 +2,7 @@
 """How a squaring run's error splits into the mesh's and the steps', tube by tube: the study behind the error
 estimate's design (docs/accuracy.md, "The error estimate").
 
-Each tube of scripts/validate's set (and the paper's nine) is run at resolutions (nt cells through the wall,
+Each tube of tools/validate's set (and the paper's nine) is run at resolutions (nt cells through the wall,
 D cells around per bending length sqrt(Ro t), step level s: -increments 100 s, -rmin_deps 0.002 / s,
 -rmin_domega 0.01 / s) with one element for all (the preset run's) and one friction regularization (VCRI a length
 of the tube, 8.3e-4 sqrt(Ro t): 2 % of the default preset's node spacing), so that only what a level names

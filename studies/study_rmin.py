@@ -7,7 +7,7 @@ thick cylinder (options/pressure_plastic.opts, 80 x 8 mesh) against Hill.
 Five trial increments only, and the paper's increments (-equilibrium_tol 0:
 with equilibrium iterations points yield inside a step, and r1 ends none), so
 that r2 (the strain limit) and r1 (yield onset) decide the increment sizes. Errors are relative to Hill's solution
-(scripts/analysis.py: first yield, pressure vs plastic radius, limit).
+(python/tubeform_py/analysis.py: first yield, pressure vs plastic radius, limit).
 """
 import os
 import subprocess

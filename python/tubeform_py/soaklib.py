@@ -1,7 +1,7 @@
-"""The soak of scripts/soak: random tubes through whole squaring runs, one at a time, each sorted into what a user
+"""The soak of tools/soak: random tubes through whole squaring runs, one at a time, each sorted into what a user
 would meet: finished (clean or with a warning), stopped with one line, crashed, hung, NaN in its history, or
 unflagged (its energy balance or its error estimate off what its preset expects, and no warning said so).
-scripts/soak is the command; tests/check_soak.py runs three short cases through the same functions."""
+tools/soak is the command; tests/check_soak.py runs three short cases through the same functions."""
 import glob
 import math
 import os

@@ -1,4 +1,4 @@
-"""Running tubeform from the study scripts (scripts/tradeoff, converge, bench)
+"""Running tubeform from the study scripts (tools/tradeoff, converge, bench)
 and reading the numbers they compare out of a result history."""
 import csv
 import os

@@ -3,7 +3,7 @@
 (a fixed seed) and four fixed ones, one rank, one run at a time, each run's
 answer, estimate, warnings and self-checks in one table.
 
-    /usr/bin/python3 scripts/sample_tubes.py [--preset default] [--seed 2026] [--count 16] [--time-limit 240]
+    /usr/bin/python3 tools/sample_tubes.py [--preset default] [--seed 2026] [--count 16] [--time-limit 240]
                                              [--cases r01,a] [--table] [--against default]
 
 Each random tube is drawn uniformly in R/t 5-60 (Ro 12-25 mm), E 70-210 GPa,
@@ -81,7 +81,7 @@ def main():
     if a.cases:
         unknown = set(a.cases.split(",")) - set(cases)
         if unknown:
-            sys.exit(f"scripts/sample_tubes.py: --cases: unknown {sorted(unknown)}; known: {', '.join(cases)}")
+            sys.exit(f"tools/sample_tubes.py: --cases: unknown {sorted(unknown)}; known: {', '.join(cases)}")
         cases = {k: v for k, v in cases.items() if k in a.cases.split(",")}
     def cache(preset):
         return os.path.join(tfruns.root, "results", "sample", preset + (f"_wide_{a.seed}" if a.wide else ""))
