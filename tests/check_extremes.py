@@ -1,5 +1,5 @@
-"""Stops that write what was computed, then a subset of the stability suite at the extremes (python/tubeform_py/extremes.py; the
-whole grid: tools/tradeoff --extremes): no friction, an incompressible
+"""Stops that write what was computed, then a subset of the stability suite at the extremes
+(python/tubeform_py/extremes.py; the whole grid: tools/tradeoff --extremes): no friction, an incompressible
 material, the coarsest mesh and the loosest strain limit, on 2 ranks with the
 default preset, and a tube that yields at a strain of 2e-4 (E/sy 5000: the
 preset's -rmin_deps_yield bounds its steps; without it the internal-work check
@@ -52,7 +52,7 @@ outdir = os.path.join(os.getcwd(), "extremes")
 os.makedirs(outdir, exist_ok=True)
 SUBSET = ("mu 0", "nu 0.499", "mesh 1x8", "deps 0.05", "E/sy 5000", "E/sy 50")
 chosen = [(name, extra) for name, extra in extremes.CASES if name in SUBSET]
-k.check(len(chosen) == len(SUBSET), f"{len(chosen)} of the {len(SUBSET)} subset cases found in python/tubeform_py/extremes.py "
+k.check(len(chosen) == len(SUBSET), f"{len(chosen)} of the {len(SUBSET)} subset cases found in tubeform_py.extremes "
         f"(missing: {sorted(set(SUBSET) - {n for n, _ in chosen})})")
 for name, extra in chosen:
     r = extremes.run_case(name, extra, outdir, exe=tf, mpirun=mpirun, time_limit=HANG_GUARD)

@@ -1,4 +1,4 @@
-"""A short soak (tools/soak's own functions, python/tubeform_py/soaklib.py): three random tubes from a fixed seed on the fast
+"""A short soak (tools/soak's own functions, tubeform_py.soaklib): three random tubes from a fixed seed on the fast
 preset, strokes of 1 mm to 0.1 Ro, the third on 2 ranks, whole runs (springback and the error estimate). Seed 1
 draws a Swift tube of R/t 17 at mu 0.47, a thick Ludwik wall of R/t 4 with n 0.08, and a thin one of R/t 55 at mu
 0.57 (2 ranks). None may

@@ -6,7 +6,8 @@ import re
 def draw_tube(rng, rt, mu, stroke, esy=(150, 1500), n=(0.1, 1)):
     """One random tube from rng, its numbers drawn in a fixed order (R/t, Ro, E, nu, E/sy, K/sy, n, mu, stroke):
     R/t, mu, E/sy and n uniform in their (low, high), Ro in 12-25 mm, E in 70-210 GPa, nu in 0.28-0.36, the Ludwik
-    K in 0.5-4 sigma_y, the stroke uniform from stroke[0] mm to stroke[1] x Ro. The soak (soaklib) draws its tubes here."""
+    K in 0.5-4 sigma_y, the stroke uniform from stroke[0] mm to stroke[1] x Ro. The soak (soaklib) draws its
+    tubes here."""
     r, ro = rng.uniform(*rt), rng.uniform(12, 25)
     e, nu, esy_, kf, n_, mu_ = (rng.uniform(70000, 210000), rng.uniform(0.28, 0.36), rng.uniform(*esy),
                                 rng.uniform(0.5, 4), rng.uniform(*n), rng.uniform(*mu))
