@@ -59,10 +59,14 @@
         tool_moment over die_turn) and their shares of the work put in, and
         the largest |energy_error| from U = 0.1 mm.
 """
+import os
 import sys
 
 import h5py
 import numpy as np
+
+# The helper package python/tubeform_py (python/README.md).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
 
 
 def loading(path):
@@ -155,7 +159,7 @@ def snaps(paths):
 
 
 def metrics(paths):
-    import tfruns
+    from tubeform_py import tfruns
 
     for path in paths:
         P, C, _, _ = tfruns.metrics(tfruns.history(path))

@@ -31,9 +31,10 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from analysis import read  # noqa: E402
-from tfruns import deviation  # noqa: E402
+# The helper package python/tubeform_py (python/README.md).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from tubeform_py.analysis import read  # noqa: E402
+from tubeform_py.tfruns import deviation  # noqa: E402
 
 import numpy as np  # noqa: E402
 

@@ -13,8 +13,9 @@ Small displacements are magnified (the factor is printed in the title).
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from figlib import draw_die, option, outline_edges  # noqa: E402  (first: it sets the Agg backend)
+# The helper package python/tubeform_py (python/README.md).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from tubeform_py.figlib import draw_die, option, outline_edges  # noqa: E402  (first: it sets the Agg backend)
 import h5py  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402

@@ -22,11 +22,10 @@ import os
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
-import figlib  # noqa: E402  (first: the Agg backend)
-import figmaps  # noqa: E402
+# The helper package python/tubeform_py (python/README.md).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from tubeform_py import figlib, figmaps, tfruns  # noqa: E402  (figlib first: the Agg backend)
 import matplotlib.pyplot as plt  # noqa: E402
-import tfruns  # noqa: E402
 
 RTS = ["11.67", "22.75", "37", "50"]
 ANGLES = ["80", "90", "100"]

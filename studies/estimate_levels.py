@@ -2,7 +2,7 @@
 """How a squaring run's error splits into the mesh's and the steps', tube by tube: the study behind the error
 estimate's design (docs/accuracy.md, "The error estimate").
 
-Each tube of scripts/validate's set (and the paper's nine) is run at resolutions (nt cells through the wall,
+Each tube of tools/validate's set (and the paper's nine) is run at resolutions (nt cells through the wall,
 D cells around per bending length sqrt(Ro t), step level s: -increments 100 s, -rmin_deps 0.002 / s,
 -rmin_domega 0.01 / s) with one element for all (the preset run's) and one friction regularization (VCRI a length
 of the tube, 8.3e-4 sqrt(Ro t): 2 % of the default preset's node spacing), so that only what a level names
@@ -31,8 +31,6 @@ direction's part per tube and stroke. The candidates are in studies/estimate_can
 """
 import argparse
 import concurrent.futures
-import importlib.machinery
-import importlib.util
 import json
 import math
 import os
@@ -43,14 +41,10 @@ import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import tfruns  # noqa: E402
+# The helper package python/tubeform_py (python/README.md).
+sys.path.insert(0, os.path.join(ROOT, "python"))
+from tubeform_py import tfruns, validation  # noqa: E402
 from estimate_candidates import A, CANDIDATES, FITTED, at, at_cells, directional, parts  # noqa: E402
-
-_loader = importlib.machinery.SourceFileLoader("validate", os.path.join(ROOT, "scripts", "validate"))
-_spec = importlib.util.spec_from_loader("validate", _loader)
-validate = importlib.util.module_from_spec(_spec)
-_loader.exec_module(validate)
 
 # The runs' cache: --cache DIR, else $TF_LEVELS, else results/levels of this checkout (read-only use of another
 # checkout's cache: point --cache at its results/levels; eval, show and shipped start no run when the files exist).
@@ -68,8 +62,8 @@ def tube(name):
         text = open(os.path.join(ROOT, "options", "squaring.opts")).read() + open(os.path.join(ROOT, PAPER[name])).read()
         ro, t = float(tfruns.option(text, "-tube_ro")), float(tfruns.option(text, "-tube_t"))
         return [str(o) for o in opts], ro, t, float(tfruns.option(text, "-stroke", 4.2))
-    _, ro, t, _, stroke = validate.CASES[name]
-    return validate.case_options(name), ro, t, stroke
+    _, ro, t, _, stroke = validation.CASES[name]
+    return validation.case_options(name), ro, t, stroke
 
 
 def label(nt, d, s, element):

@@ -28,8 +28,9 @@ import sys
 
 import h5py
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
-import tfruns  # noqa: E402
+# The helper package python/tubeform_py (python/README.md).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from tubeform_py import tfruns  # noqa: E402
 
 OUT = os.path.join(tfruns.root, "results", "hardening")
 # case name -> (options file, Ludwik sigma_y0 and K of its material: the paper's Table 1, docs/scenes.md)
@@ -66,7 +67,7 @@ def row(name, preset, m):
 
 def figure(names, preset):
     """C/t over the loading of each case and model, and after springback (the markers at the end)."""
-    import figlib  # noqa: F401  (matplotlib without a display)
+    from tubeform_py import figlib  # noqa: F401  (matplotlib without a display)
     import matplotlib.pyplot as plt
 
     fig, axes = plt.subplots(1, len(names), figsize=(4.2 * len(names), 3.6), squeeze=False)

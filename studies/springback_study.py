@@ -20,8 +20,9 @@ import sys
 import h5py
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
-import tfruns  # noqa: E402
+# The helper package python/tubeform_py (python/README.md).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from tubeform_py import tfruns  # noqa: E402
 
 OUT = os.path.join(tfruns.root, "results", "springback")
 AL, CU = 165.3, 445.0  # the Ludwik sigma_y0 of the paper's aluminum and copper (its Table 1)

@@ -7,15 +7,16 @@ thick cylinder (options/pressure_plastic.opts, 80 x 8 mesh) against Hill.
 Five trial increments only, and the paper's increments (-equilibrium_tol 0:
 with equilibrium iterations points yield inside a step, and r1 ends none), so
 that r2 (the strain limit) and r1 (yield onset) decide the increment sizes. Errors are relative to Hill's solution
-(scripts/analysis.py: first yield, pressure vs plastic radius, limit).
+(python/tubeform_py/analysis.py: first yield, pressure vs plastic radius, limit).
 """
 import os
 import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
-from analysis import hill_errors  # noqa: E402
+# The helper package python/tubeform_py (python/README.md).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from tubeform_py.analysis import hill_errors  # noqa: E402
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")

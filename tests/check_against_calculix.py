@@ -1,6 +1,6 @@
 """The default preset against the independent CalculiX references
 (tests/reference/calculix/, CPE8R converged in mesh and step as far as
-scripts/calculix/README.md shows; the die withdrawn, so these runs withdraw
+tools/calculix/README.md shows; the die withdrawn, so these runs withdraw
 it too): the subset of docs/accuracy.md's validation that scripts/test runs.
 
 - default tube (aluminum 17.5/1.5, mu 0.05): the load at U = 1, 2, 3, 4.2 mm
@@ -43,8 +43,8 @@ import numpy as np
 from tfcheck import Checks, args, out, run
 
 tf, mpirun, src = args()
-sys.path.insert(0, os.path.join(src, "scripts"))
-import tfruns  # noqa: E402
+sys.path.insert(0, os.path.join(src, "python"))  # the helper package (python/README.md)
+from tubeform_py import tfruns  # noqa: E402
 k = Checks("against_calculix")
 
 

@@ -298,7 +298,7 @@ warned = [l for l in p.stdout.splitlines() if l.startswith("tubeform: warning: -
 k.check(p.returncode == 0 and os.path.exists("allow2.h5") and len(warned) == 1,
         f"-allow_unused -wall_thickness 1.65: the run goes on (exit {p.returncode}), warning: {warned}")
 
-# Options that are read must pass: the E / sigma_y0 bounds themselves (scripts/extremes.py's two ends); the
+# Options that are read must pass: the E / sigma_y0 bounds themselves (python/tubeform_py/extremes.py's two ends); the
 # options PETSc reads only after the check (OptionsReadLater in src/io/options_left.cpp: at a solve, when the
 # result file opens, at the end), in two runs (the viewer options and the rest do not combine); the solver
 # options of the docs and the README on the path each acts on. PETSc's own -options_left, at the end of each

@@ -1,5 +1,5 @@
-"""Stops that write what was computed, then a subset of the stability suite at the extremes (scripts/extremes.py; the
-whole grid: scripts/tradeoff --extremes): no friction, an incompressible
+"""Stops that write what was computed, then a subset of the stability suite at the extremes
+(python/tubeform_py/extremes.py; the whole grid: tools/tradeoff --extremes): no friction, an incompressible
 material, the coarsest mesh and the loosest strain limit, on 2 ranks with the
 default preset, and a tube that yields at a strain of 2e-4 (E/sy 5000: the
 preset's -rmin_deps_yield bounds its steps; without it the internal-work check
@@ -7,7 +7,7 @@ read 9.5 %) and one that yields at 2e-2 (E/sy 50: almost elastic, it snaps
 in the paper's load-controlled springback; a re-solved step taken past its
 rotation bound there read 16.8 % before every re-solved step had to meet its
 limits). Each run must finish with finite results (history and fields)
-and self-checks (a), (b) within 5 % (scripts/extremes.py gives the reason),
+and self-checks (a), (b) within 5 % (python/tubeform_py/extremes.py gives the reason),
 and a stopped run must have said why in one line per rank.
 """
 import os
@@ -19,12 +19,12 @@ import numpy as np
 from tfcheck import Checks, args, out, run
 
 tf, mpirun, src = args()
-sys.path.insert(0, os.path.join(src, "scripts"))
-import extremes  # noqa: E402
+sys.path.insert(0, os.path.join(src, "python"))  # the helper package (python/README.md)
+from tubeform_py import extremes  # noqa: E402
 
 k = Checks("extremes")
 # Each case's -time_limit here: a guard against hangs, not the study's 5-minute target (a speed
-# target belongs to scripts/tradeoff --extremes, not to a test on a shared machine). nu 0.499 took
+# target belongs to tools/tradeoff --extremes, not to a test on a shared machine). nu 0.499 took
 # 180-300 s on 2 ranks beside another test, and stopped at 300 s once with a third job running.
 HANG_GUARD = 900
 
@@ -52,7 +52,7 @@ outdir = os.path.join(os.getcwd(), "extremes")
 os.makedirs(outdir, exist_ok=True)
 SUBSET = ("mu 0", "nu 0.499", "mesh 1x8", "deps 0.05", "E/sy 5000", "E/sy 50")
 chosen = [(name, extra) for name, extra in extremes.CASES if name in SUBSET]
-k.check(len(chosen) == len(SUBSET), f"{len(chosen)} of the {len(SUBSET)} subset cases found in scripts/extremes.py "
+k.check(len(chosen) == len(SUBSET), f"{len(chosen)} of the {len(SUBSET)} subset cases found in tubeform_py.extremes "
         f"(missing: {sorted(set(SUBSET) - {n for n, _ in chosen})})")
 for name, extra in chosen:
     r = extremes.run_case(name, extra, outdir, exe=tf, mpirun=mpirun, time_limit=HANG_GUARD)

@@ -28,8 +28,8 @@ import numpy as np
 
 from tfcheck import Checks, args, out, run
 
-sys.path.insert(0, os.path.join(sys.argv[3], "scripts"))
-from analysis import hill_errors  # noqa: E402
+sys.path.insert(0, os.path.join(sys.argv[3], "python"))  # the helper package (python/README.md)
+from tubeform_py.analysis import hill_errors  # noqa: E402
 
 tf, mpirun, src = args()
 k_ = Checks("hill")

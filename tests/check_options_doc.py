@@ -1,5 +1,5 @@
 """The option documents cannot drift from the code. Options are described once:
-docs/options-reference.md, which must be what scripts/options_doc.py generates
+docs/options-reference.md, which must be what tools/options_doc.py generates
 from this build's -help; docs/options.md is a guide to the option groups that
 links to it, and docs/guide.md points to it. So:
   - the reference is up to date (the generator's own --check);
@@ -20,7 +20,7 @@ from tfcheck import Checks, args
 tf, mpirun, src = args()
 k = Checks("docs_options")
 docs = os.path.join(src, "docs")
-p = subprocess.run(["/usr/bin/python3", os.path.join(src, "scripts", "options_doc.py"), "--check", tf],
+p = subprocess.run(["/usr/bin/python3", os.path.join(src, "tools", "options_doc.py"), "--check", tf],
                    capture_output=True, text=True)
 k.check(p.returncode == 0, f"docs/options-reference.md up to date: {(p.stdout + p.stderr).strip()}")
 reference = open(os.path.join(docs, "options-reference.md")).read()

@@ -1,7 +1,7 @@
 """The numerical presets (options/preset-*.opts) on the default squaring case,
 whole runs (loading + springback), checked against what they promise and
 what holds for any discretization; their accuracy against the converged
-reference is a benchmark (scripts/validate, scripts/against_ccx; docs/accuracy.md), not a test.
+reference is a benchmark (tools/validate, tools/against_ccx; docs/accuracy.md), not a test.
 
 - the fast preset with its error estimate on 2 ranks: the run on one rank, its companions on the other ("beside
   the run", their line says), every history column (the error columns included) bitwise equal to the 1-rank

@@ -1,4 +1,4 @@
-"""A short soak (scripts/soak's own functions, scripts/soaklib.py): three random tubes from a fixed seed on the fast
+"""A short soak (tools/soak's own functions, tubeform_py.soaklib): three random tubes from a fixed seed on the fast
 preset, strokes of 1 mm to 0.1 Ro, the third on 2 ranks, whole runs (springback and the error estimate). Seed 1
 draws a Swift tube of R/t 17 at mu 0.47, a thick Ludwik wall of R/t 4 with n 0.08, and a thin one of R/t 55 at mu
 0.57 (2 ranks). None may
@@ -9,7 +9,7 @@ draws a Swift tube of R/t 17 at mu 0.47, a thick Ludwik wall of R/t 4 with n 0.0
   - be unflagged: finish without a 'tubeform: warning:' line while its energy balance is above the fast preset's
     -expect_load, or its error estimate above -expect_load or -expect_c_over_t. The expectations are read from
     options/preset-fast.opts (5 %, 0.05), not from the run; they are the only tolerances. The energy balance is
-    taken twice: the run's printed self-check line (as scripts/soak reads it) and its recomputation from the
+    taken twice: the run's printed self-check line (as tools/soak reads it) and its recomputation from the
     history's load, stroke and energy columns (tfcheck.self_checks, the largest after the first 10 increments, as
     the run's line): a line that under-reports the balance does not hide it.
 A stop with one line is allowed (a user is told why); the test prints it.
@@ -24,8 +24,8 @@ import numpy as np
 from tfcheck import Checks, args, out, self_checks
 
 tf, mpirun, src = args()
-sys.path.insert(0, os.path.join(src, "scripts"))
-import soaklib  # noqa: E402
+sys.path.insert(0, os.path.join(src, "python"))  # the helper package (python/README.md)
+from tubeform_py import soaklib  # noqa: E402
 
 SEED, TIME_LIMIT = 1, 60
 # The run's worst self-checks leave out its first increments (their work is too small to mean much): the

@@ -12,7 +12,7 @@ source tree:
   - the code is formatted by .clang-format (clang-format --dry-run --Werror),
     which also bounds lines at 120 columns;
   - the project stands alone: no file of the project's own folders (src,
-    include, tests, scripts, studies, tools, options, docs, .ci) and no
+    include, tests, scripts, studies, tools, python, options, docs, .ci) and no
     README.md or CMakeLists.txt cites the method specification kept outside
     the repository (the theory the code cites is in docs/theory.md and the
     docs beside it), and none names a tracker's "issue N": a doc or comment
@@ -197,7 +197,7 @@ k.check(p.returncode == 0, "formatted by .clang-format" + "".join("\n         " 
 # Stands alone. The outside specification's file name is spelled in two pieces so that this file does not cite it.
 outside = re.compile(re.escape("METHOD" + ".md"))
 issue = re.compile(r"\bissues? #?[0-9]+", re.I)
-roots = ["src", "include", "tests", "scripts", "studies", "tools", "options", "docs", ".ci"]
+roots = ["src", "include", "tests", "scripts", "studies", "tools", "python", "options", "docs", ".ci"]
 texts = [os.path.join(src, n) for n in ("README.md", "CMakeLists.txt") if os.path.exists(os.path.join(src, n))]
 for top in roots:
     for root, dirs, names in os.walk(os.path.join(src, top)):

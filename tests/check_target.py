@@ -4,7 +4,7 @@ until its estimate meets it. The paper's default tube (aluminum 17.5 x 1.5, mu 0
 A. -target_load 0.05: the fast level's estimate passes 5 % (its mesh part), so a second level runs, finer in cells;
    it ends with its estimate within the target (target_met 1, accuracy_level >= 2) and its load within the target
    of CalculiX's converged loads for this tube at U = 1, 2, 3, 4.2 mm (104.93, 124.95, 164.03, 280.11 N/mm: the
-   8 x 180 mesh of scripts/calculix/converge.py, docs/accuracy.md "Against CalculiX"; its own uncertainty, the
+   8 x 180 mesh of tools/calculix/converge.py, docs/accuracy.md "Against CalculiX"; its own uncertainty, the
    penalty's, about 0.7 % at the end of the stroke, is added to the tolerance). The first level's copy is removed
    once the second ends. Planted: no finer level ever follows (NextLevel returns none) -> FAILED.
 B. -target_levels 1: no second level; the run warns, naming -target_levels, and writes target_met 0.

@@ -6,7 +6,7 @@
 //    strain E* = 0.9375, nu* = 0.25, shear load 1; and nearly incompressible
 //    plane strain E = 250, nu = 0.4999, load 100): the tip deflection at the
 //    corner (48, 60) and at the middle of the right edge (48, 52) against the
-//    converged values of an independent solver (scripts/reference_cook.py:
+//    converged values of an independent solver (tools/reference_cook.py:
 //    quadratic and quartic elements on graded meshes, Richardson-extrapolated,
 //    25.1894 / 23.9677 and 7.7713 / 7.4048, settled to 1e-4). The often-quoted
 //    23.96-23.97 is the mid-edge value (FinEtools, Abaqus); at the corner it is
@@ -208,7 +208,7 @@ int main(int argc, char **argv)
     }
   }
   // Cook's membrane: the converged corner and mid-edge deflections of
-  // scripts/reference_cook.py. Bilinear elements converge slowly on uniform
+  // tools/reference_cook.py. Bilinear elements converge slowly on uniform
   // meshes (the clamped corners are singular: order ~1.1), so the tolerances
   // are those of the discretization at 64 x 64. Plane stress: bounded by the
   // independent Q4 on the same mesh (0.58 % below the corner value, 0.18 %

@@ -1,6 +1,6 @@
 // libFuzzer target: the bytes as a Gmsh mesh file, read by tf::ReadGmsh and
 // then checked by SerialMesh::validate, as a run reads -mesh_file. Built with
-// clang by scripts/fuzz (TF_FUZZ=ON); the normal build links it to
+// clang by tools/fuzz (TF_FUZZ=ON); the normal build links it to
 // regression_driver.cpp, which runs tests/fuzz/regressions/gmsh/* through it.
 #include <unistd.h>
 

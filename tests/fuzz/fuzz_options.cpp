@@ -4,7 +4,7 @@
 // made and the material law is built from them (-material_table: the table
 // flow curve) and driven through a few plastic updates. A PETSc error code is
 // a clean outcome; only crashes, sanitizer reports and hangs are findings.
-// Built with clang by scripts/fuzz (TF_FUZZ=ON); the normal build links it to
+// Built with clang by tools/fuzz (TF_FUZZ=ON); the normal build links it to
 // regression_driver.cpp, which runs tests/fuzz/regressions/options/* through it.
 #include <dirent.h>
 #include <petscsys.h>

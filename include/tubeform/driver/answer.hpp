@@ -32,7 +32,7 @@ constexpr double kReportedStrokes[] = {1.0, 2.0, 3.0, 4.2};
 // mesh file, which cannot be coarsened, `mesh` is the run itself and the
 // estimate covers the increments alone. Measured on the presets of five
 // study tubes against converged references and of four against CalculiX
-// (studies/estimate_levels.py, scripts/against_ccx; docs/accuracy.md, "The
+// (studies/estimate_levels.py, tools/against_ccx; docs/accuracy.md, "The
 // error estimate"): qm6bar's mesh part at second order (a third) missed
 // three of the six qm6bar cells of the accurate preset against CalculiX.
 constexpr double kStepShare = 1.0; // of |steps - mesh|: the increments' error at the run's limits

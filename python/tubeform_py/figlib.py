@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 
-from tfruns import deviation, option  # noqa: E402,F401  (scripts import them from here too)
+from .tfruns import deviation, option  # noqa: E402,F401  (scripts import them from here too)
 
 
 # Sweep statuses of a case that ran to its end: "inaccurate" only says its own

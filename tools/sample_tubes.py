@@ -3,7 +3,7 @@
 (a fixed seed) and four fixed ones, one rank, one run at a time, each run's
 answer, estimate, warnings and self-checks in one table.
 
-    /usr/bin/python3 scripts/sample_tubes.py [--preset default] [--seed 2026] [--count 16] [--time-limit 240]
+    /usr/bin/python3 tools/sample_tubes.py [--preset default] [--seed 2026] [--count 16] [--time-limit 240]
                                              [--cases r01,a] [--table] [--against default]
 
 Each random tube is drawn uniformly in R/t 5-60 (Ro 12-25 mm), E 70-210 GPa,
@@ -30,8 +30,10 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import tfruns  # noqa: E402
+# The helper package python/tubeform_py (python/README.md).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from tubeform_py import tfruns  # noqa: E402
+from tubeform_py.tubes import draw_tube, options, parse  # noqa: E402
 
 FIXED = {  # name: E, nu, sigma_y, K, n, Ro, t, mu, stroke
     "a": (210000, 0.30, 350, 500, 0.30, 20, 2.0, 0.10, 5.0),
@@ -47,17 +49,6 @@ KEYS = ("E", "nu", "sy", "K", "n", "ro", "t", "mu", "stroke")
 RANGES = {False: ((5, 60), (0, 0.4), 2, 0.3), True: ((4, 60), (0, 0.5), 1, 0.35)}
 
 
-def draw_tube(rng, rt, mu, stroke, esy=(150, 1500), n=(0.1, 1)):
-    """One random tube from rng, its numbers drawn in a fixed order (R/t, Ro, E, nu, E/sy, K/sy, n, mu, stroke):
-    R/t, mu, E/sy and n uniform in their (low, high), Ro in 12-25 mm, E in 70-210 GPa, nu in 0.28-0.36, the Ludwik
-    K in 0.5-4 sigma_y, the stroke uniform from stroke[0] mm to stroke[1] x Ro. scripts/soak draws its tubes here."""
-    r, ro = rng.uniform(*rt), rng.uniform(12, 25)
-    e, nu, esy_, kf, n_, mu_ = (rng.uniform(70000, 210000), rng.uniform(0.28, 0.36), rng.uniform(*esy),
-                                rng.uniform(0.5, 4), rng.uniform(*n), rng.uniform(*mu))
-    s = rng.uniform(stroke[0], stroke[1] * ro)
-    return dict(E=e, nu=nu, sy=e / esy_, K=kf * e / esy_, n=n_, ro=ro, t=ro / r, mu=mu_, stroke=s)
-
-
 def draw(seed, count, wide=False):
     """The random tubes, drawn in a fixed order per case (draw_tube; with wide, then the ranks), and the fixed ones
     (not with wide)."""
@@ -71,38 +62,6 @@ def draw(seed, count, wide=False):
     if not wide:
         cases.update({k: dict(zip(KEYS, v), np=1) for k, v in FIXED.items()})
     return cases
-
-
-def options(c, preset, out, time_limit):
-    """The run's options: the squaring case, the preset, the tube c (its "law", if it names one, as
-    -material_law), the time limit and the output."""
-    law = ["-material_law", c["law"]] if "law" in c else []
-    o = (["-options_file", "options/squaring.opts", "-options_file", f"options/preset-{preset}.opts", "-material",
-          "custom"] + law +
-         ["-material_e", c["E"], "-material_nu", c["nu"], "-material_sy", c["sy"], "-material_k", c["K"], "-material_n",
-          c["n"], "-tube_ro", c["ro"], "-tube_t", c["t"], "-friction_mu", c["mu"], "-stroke", c["stroke"],
-          "-time_limit", time_limit, "-output", out])
-    return [f"{x:.6g}" if isinstance(x, float) else str(x) for x in o]
-
-
-def parse(log):
-    """What the run's last lines say (tubeform's answer, estimate, self-checks)."""
-    def num(pattern):
-        m = re.search(pattern, log)
-        return m.group(1) if m else ""
-    errors = [l for l in log.splitlines() if l.startswith("tubeform: error")]
-    return {
-        "cells": num(r"mesh (\d+ cells \([^)]*\), \w+)"), "increments": num(r"done, (\d+) increments"),
-        "factorizations": num(r"increments, (\d+) factorizations"),
-        "load": num(r"load at the end of loading \(U = [^)]*\) (\S+) N/mm"),
-        "ct": num(r"tubeform: loaded: C/t (\S+),"), "ct_back": num(r"tubeform: after springback \([^)]*\): C/t (\S+),"),
-        "est_load": num(r"estimated error.*?: load (\S+) %"), "est_ct": num(r"estimated error.*?, C/t (\S+)"),
-        "warns": "yes" if "estimated error passes" in log else "no",
-        "energy": num(r"energy balance within (\S+) %"), "internal": num(r"internal work within (\S+) %"),
-        "past": num(r"compromises: (\d+) steps past"), "unsettled": num(r"(\d+) unsettled"),
-        "inconsistent": num(r"(\d+) with inconsistent"),
-        "error": errors[0][len("tubeform: error: "):] if errors else "",
-    }
 
 
 def main():
@@ -122,7 +81,7 @@ def main():
     if a.cases:
         unknown = set(a.cases.split(",")) - set(cases)
         if unknown:
-            sys.exit(f"scripts/sample_tubes.py: --cases: unknown {sorted(unknown)}; known: {', '.join(cases)}")
+            sys.exit(f"tools/sample_tubes.py: --cases: unknown {sorted(unknown)}; known: {', '.join(cases)}")
         cases = {k: v for k, v in cases.items() if k in a.cases.split(",")}
     def cache(preset):
         return os.path.join(tfruns.root, "results", "sample", preset + (f"_wide_{a.seed}" if a.wide else ""))

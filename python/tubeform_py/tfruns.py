@@ -1,4 +1,4 @@
-"""Running tubeform from the study scripts (scripts/tradeoff, converge, bench)
+"""Running tubeform from the study scripts (tools/tradeoff, converge, bench)
 and reading the numbers they compare out of a result history."""
 import csv
 import os
@@ -9,7 +9,7 @@ import time
 import h5py
 import numpy as np
 
-root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # python/tubeform_py/..
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 EXE = os.path.join(root, "build", "tubeform")
 LOAD_AT, CT_AT = (1.0, 2.0, 3.0, 4.2), (2.0, 3.0, 4.2)

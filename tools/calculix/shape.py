@@ -20,7 +20,7 @@ again in Python so the CalculiX reference can be measured the same way:
   two end nodes (remembered at the last loading state) and the nodes between
   them, measured towards the origin (0 for a straight or outward-bowed side).
 
-    /usr/bin/python3 scripts/calculix/shape.py --validate RESULT.h5   (against tubeform's own c_over_t)
+    /usr/bin/python3 tools/calculix/shape.py --validate RESULT.h5   (against tubeform's own c_over_t)
 """
 import argparse
 import math

@@ -15,7 +15,7 @@ Constitutive options:
   'mixed'   : plane strain, volumetric part projected onto discontinuous
               P_{p-1} pressure (Q_p / P_{p-1} mixed element, statically
               condensed; for p=2 this is the Q9/P3 element) -> locking free
-Usage: /usr/bin/python3 scripts/reference_cook.py [--full]
+Usage: /usr/bin/python3 tools/reference_cook.py [--full]
   prints the vertical displacement at the corner C = (48, 60) and at the
   middle of the right edge (48, 52) on meshes graded towards the edges
   (cosine spacing), quadratic Q9 and quartic elements, with Richardson

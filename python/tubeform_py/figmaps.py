@@ -3,9 +3,9 @@ press force against R/t, the critical R/t and the die's apex radius, from
 scripts/sweep summaries (run with /usr/bin/python3; scripts/figures calls it)."""
 import os
 
-import figlib  # (first: it sets the Agg backend)
-import matplotlib.pyplot as plt
-import numpy as np
+from . import figlib  # (first: it sets the Agg backend)
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
 CORNER_OVER_T = 4  # the paper's stroke rule: press until the outer corner radius is 4 wall thicknesses
 # C/t below this is "no collapse": a gap of a tenth of the wall, twice what a tube lying on the flank

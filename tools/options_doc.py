@@ -3,7 +3,7 @@
 its default and description, by section, so the reference cannot drift from
 the code (the test docs_options checks it is up to date).
 
-    /usr/bin/python3 scripts/options_doc.py [--check] [EXE]
+    /usr/bin/python3 tools/options_doc.py [--check] [EXE]
 
 --check: compare with the file instead of writing it (exit 1 if it differs).
 """
@@ -40,13 +40,13 @@ def options(exe):
                 default = "none"
             current[1].append((m.group("name"), default or "none", text.strip(), choices.split()))
     if not sections:
-        sys.exit(f"scripts/options_doc.py: no tubeform options in the -help output of {exe}")
+        sys.exit(f"tools/options_doc.py: no tubeform options in the -help output of {exe}")
     return sections
 
 
 def markdown(sections):
     out = ["# Options reference", "",
-           "Generated from `build/tubeform -help` by `/usr/bin/python3 scripts/options_doc.py`",
+           "Generated from `build/tubeform -help` by `/usr/bin/python3 tools/options_doc.py`",
            "(do not edit; the test `docs_options` fails when it is out of date). Defaults are the built-in",
            "ones: scene files and presets under `options/` set many of them. docs/options.md guides",
            "through the groups and names the doc that explains each; PETSc's own options (solver,",
@@ -68,12 +68,12 @@ def main():
     if "--check" in sys.argv:
         old = open(OUT).read() if os.path.exists(OUT) else ""
         if old != text:
-            sys.exit(f"{OUT} is out of date: run /usr/bin/python3 scripts/options_doc.py")
+            sys.exit(f"{OUT} is out of date: run /usr/bin/python3 tools/options_doc.py")
         print(f"{OUT}: up to date ({text.count(chr(10) + '| `-')} options)")
         return
     with open(OUT, "w") as f:
         f.write(text)
-    print(f"scripts/options_doc.py: {OUT} ({text.count(chr(10) + '| `-')} options)")
+    print(f"tools/options_doc.py: {OUT} ({text.count(chr(10) + '| `-')} options)")
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Per-increment cost of the incremental loop, from PETSc's -log_view.
 
-    /usr/bin/python3 scripts/bench_increment.py [NP] [SOLVER]
+    /usr/bin/python3 tools/bench_increment.py [NP] [SOLVER]
 
 SOLVER: mumps (default, options/solver.opts) or petsc (PETSc's own sparse LU
 as the redundant factorization: -redundant_pc_factor_mat_solver_type petsc).

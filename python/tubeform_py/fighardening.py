@@ -4,9 +4,9 @@ a saturating Armstrong-Frederick backstress of the same monotonic curve (studies
 """
 import os
 
-import figlib
-import matplotlib.pyplot as plt
-import numpy as np
+from . import figlib  # (first: it sets the Agg backend)
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
 TUBES = ["al_11.67", "al_37", "cu_29"]
 # Each tube's Ludwik sigma_y0 (MPa): the paper's aluminum and copper (its Table 1, docs/scenes.md).

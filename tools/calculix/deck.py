@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Writes a CalculiX (ccx 2.20) input deck of tubeform's `squaring` scene.
 
-Independent reference model (scripts/calculix/README.md): the quarter tube
+Independent reference model (tools/calculix/README.md): the quarter tube
 (x >= 0, y >= 0, outer radius Ro, wall t, centre at the origin) in plane
 strain, symmetry u_x = 0 on x = 0 and u_y = 0 on y = 0; the upper V-die as a
 band of elements whose every node is prescribed (a rigid tool moving down by
@@ -17,7 +17,7 @@ fillet, radius r_apex, centre (0, Ro sqrt(2) - r_apex sqrt(2)), from 45 to
 90 degrees (continued a little past x = 0 so the tube's node on the
 symmetry line never reaches the face's edge).
 
-    /usr/bin/python3 scripts/calculix/deck.py --nt 4 --ntheta 90 --out case.inp
+    /usr/bin/python3 tools/calculix/deck.py --nt 4 --ntheta 90 --out case.inp
 """
 import argparse
 import math
@@ -190,7 +190,7 @@ def build(args):
         sys.exit(f'deck.py: the flow curve needs {len(table)} points for --table_tol {args.table_tol}; '
                  'ccx takes at most 200 (raise --table_tol or lower --table_epmax)')
     stick = args.stick_slope if args.stick_slope is not None else 0.1 * args.penalty
-    L = ['** tubeform squaring scene, CalculiX reference deck written by scripts/calculix/deck.py',
+    L = ['** tubeform squaring scene, CalculiX reference deck written by tools/calculix/deck.py',
          '** ' + ' '.join(sys.argv[1:]),
          f'** material E={m["e"]} nu={m["nu"]} sy={m["sy"]} K={m["k"]} n={m["n"]}; flow table {len(table)} points, '
          f'largest interpolation error {table_error(m, table):.3g} MPa',

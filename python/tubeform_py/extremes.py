@@ -5,7 +5,7 @@ results and its self-checks within tolerance, or stop early with one line
 naming the cause after writing what it computed; never hang, crash or write
 NaN.
 
-    scripts/tradeoff --extremes [--only NAME,...]      (all cases: ~30 min on 2 cores)
+    tools/tradeoff --extremes [--only NAME,...]      (all cases: ~30 min on 2 cores)
 
 Tolerances: self-checks (a) energy balance and (b) internal work within 5 %
 (docs/theory.md "Self-checks"; 5 % is where a load-stroke curve stops being
@@ -20,7 +20,7 @@ import time
 import h5py
 import numpy as np
 
-import tfruns
+from . import tfruns
 
 # E/sy by the yield stress at aluminum's E = 75000 MPa; R/t = Ro/t by the
 # wall thickness at Ro = 17.5 mm.

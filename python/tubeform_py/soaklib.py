@@ -1,7 +1,7 @@
-"""The soak of scripts/soak: random tubes through whole squaring runs, one at a time, each sorted into what a user
+"""The soak of tools/soak: random tubes through whole squaring runs, one at a time, each sorted into what a user
 would meet: finished (clean or with a warning), stopped with one line, crashed, hung, NaN in its history, or
 unflagged (its energy balance or its error estimate off what its preset expects, and no warning said so).
-scripts/soak is the command; tests/check_soak.py runs three short cases through the same functions."""
+tools/soak is the command; tests/check_soak.py runs three short cases through the same functions."""
 import glob
 import math
 import os
@@ -15,8 +15,7 @@ import time
 import h5py
 import numpy as np
 
-import sample_tubes
-import tfruns
+from . import tfruns, tubes
 
 # The soak's ranges (the extremes a user may bring): R/t, E / sigma_y, the hardening exponent n (Ludwik and Swift),
 # mu, the stroke from 1 mm to 0.35 Ro.
@@ -57,14 +56,14 @@ def swift_k(sy, n, ep0):
 
 
 def draw(seed, count, presets=None, stroke=STROKE):
-    """The soak's tubes s01, s02, ...: per case sample_tubes.draw_tube in the soak's ranges, then the ranks (1 or
+    """The soak's tubes s01, s02, ...: per case tubes.draw_tube in the soak's ranges, then the ranks (1 or
     2), the law (Ludwik or Swift), Swift's ep0 and the preset (weights `presets`, default PRESET_SHARE), in that
     order from one generator (a case's draw does not change with the options that act after it)."""
     presets = presets or PRESET_SHARE
     rng = random.Random(seed)
     cases = {}
     for i in range(count):
-        c = sample_tubes.draw_tube(rng, RT, MU, stroke, ESY, N_EXP)
+        c = tubes.draw_tube(rng, RT, MU, stroke, ESY, N_EXP)
         c["np"] = rng.choice((1, 2))
         c["law"] = rng.choice(("ludwik", "swift"))
         ep0 = math.exp(rng.uniform(*(math.log(x) for x in SWIFT_EP0)))
@@ -85,12 +84,12 @@ def expectation(preset, src=tfruns.root):
 def command(c, out, exe, mpirun, time_limit):
     """The run's command: 2 ranks under mpirun, 1 rank as an MPI singleton (no mpirun)."""
     ranks = [mpirun, "-q", "-n", "2"] if c["np"] == 2 else []
-    return ranks + [exe] + sample_tubes.options(c, c["preset"], out, time_limit)
+    return ranks + [exe] + tubes.options(c, c["preset"], out, time_limit)
 
 
 def describe(c):
     """The case as a command to repeat it by hand (without -time_limit and -output)."""
-    o = sample_tubes.options(c, c["preset"], "x.h5", 0)
+    o = tubes.options(c, c["preset"], "x.h5", 0)
     drop = ("-time_limit", "-output")
     o = [x for i, x in enumerate(o) if x not in drop and o[i - 1] not in drop]
     return " ".join((["mpirun", "-n", "2"] if c["np"] == 2 else []) + ["build/tubeform"] + o)
@@ -202,10 +201,10 @@ def crash_why(rc, cores, marks):
 
 
 def classify(log, h5, expect):
-    """What a run's log (run_case's) and result file say: the numbers of sample_tubes.parse and kind ('finished',
+    """What a run's log (run_case's) and result file say: the numbers of tubes.parse and kind ('finished',
     'stop', 'crash' or 'hang') with why, the stop lines, the warnings, the /history columns not finite ('nonfinite'),
     the checks off the expectation ('off') and of those the ones no warning flagged ('unflagged')."""
-    v = sample_tubes.parse(log)
+    v = tubes.parse(log)
     tail = re.search(r"^soak: exit (\S+) wall (\S+) limit (\S+) timed_out (\d) cores (\d+)$", log, re.M)
     rc = None if tail[1] == "None" else int(tail[1])
     lines = log.replace(tfruns.root + os.sep, "").splitlines()[1:]  # (paths as from the source tree)

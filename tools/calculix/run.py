@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """Generates, runs and post-processes one CalculiX case of the squaring scene.
 
-    /usr/bin/python3 scripts/calculix/run.py --name al_4x90 [deck.py options]
-    /usr/bin/python3 scripts/calculix/run.py --name al_4x90 --post      (parse an existing run again)
+    /usr/bin/python3 tools/calculix/run.py --name al_4x90 [deck.py options]
+    /usr/bin/python3 tools/calculix/run.py --name al_4x90 --post      (parse an existing run again)
 
 Writes under --dir (default results/ccx/NAME/): NAME.inp (deck.py), the ccx
 output (NAME.dat, NAME.log, ...), NAME.csv (one row per converged increment:
@@ -27,9 +27,8 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import deck  # noqa: E402
-import shape  # noqa: E402
+import deck  # this folder's own modules (the folder of the running script, or put on the path by its importer)
+import shape
 
 COLUMNS = ('stroke', 'load', 'c_over_t', 'x_max', 'y_max', 'deviation_ratio', 'stage', 'time',
            'n_contact', 'n_contact_apex', 'fx')
@@ -245,7 +244,7 @@ def main(argv=None):
               f'mesh {args.nt} x {args.ntheta} {args.element}; increments <= {args.dumax} mm of stroke'
               + (' (fixed)' if args.direct else ' (automatic)') + f'; penalty {args.penalty:g} MPa/mm, '
               f'stick slope {stick:g} MPa/mm; flow table tol {args.table_tol} MPa; contact gap <= {args.ctol} mm',
-              'command: /usr/bin/python3 scripts/calculix/run.py ' + ' '.join(a for a in deck_argv if a != '--post'),
+              'command: /usr/bin/python3 tools/calculix/run.py ' + ' '.join(a for a in deck_argv if a != '--post'),
               f'wall time {wall if wall is None else round(wall, 1)} s on one core; {stats}',
               'load: punch load on the full tube (N/mm); stage 0 loading, 1 withdrawing (last row: sprung back)']
     write_csv(os.path.join(d, args.name + '.csv'), rows, header)

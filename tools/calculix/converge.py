@@ -2,11 +2,11 @@
 """Convergence study of the CalculiX reference: mesh, step size, contact penalty (and the flow table, the
 equilibrium tolerance) for the three reference cases, one ccx run at a time.
 
-    /usr/bin/python3 scripts/calculix/converge.py --case default --study mesh      (runs what is missing)
-    /usr/bin/python3 scripts/calculix/converge.py --case default --study all --table   (only prints the tables)
-    /usr/bin/python3 scripts/calculix/converge.py --case default --save NAME      (NAME's CSV -> tests/reference/calculix/default.csv)
+    /usr/bin/python3 tools/calculix/converge.py --case default --study mesh      (runs what is missing)
+    /usr/bin/python3 tools/calculix/converge.py --case default --study all --table   (only prints the tables)
+    /usr/bin/python3 tools/calculix/converge.py --case default --save NAME      (NAME's CSV -> tests/reference/calculix/default.csv)
 
-Each run is scripts/calculix/run.py under results/ccx/<case>_<label>/; a run whose JSON says it completed is
+Each run is tools/calculix/run.py under results/ccx/<case>_<label>/; a run whose JSON says it completed is
 not run again. A study varies one parameter around the base (middle mesh, base step, base penalty) and
 prints, per level, the loads at the reported strokes, C/t, springback and wall time, then the change
 between successive levels: the largest relative load change over the loading curve (sampled every 0.1 mm
@@ -21,9 +21,12 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-sys.path.insert(0, HERE)
+# The helper package python/tubeform_py (python/README.md); deck and run are this folder's own modules (the folder of
+# the running script is on the path; tools/validate puts it there when it imports this file).
+sys.path.insert(0, os.path.join(ROOT, "python"))
 import deck  # noqa: E402
 import run  # noqa: E402
+from tubeform_py import validation as v  # noqa: E402
 
 CASES = {
     'default': dict(args=['--material', 'aluminum', '--tube_ro', '17.5', '--tube_t', '1.5', '--friction_mu', '0.05',
@@ -42,13 +45,11 @@ CASES = {
 
 
 def validation_cases():
-    """The tubes of scripts/validate (the validation set of docs/accuracy.md) as cases named val_<tube>: three meshes of
+    """The tubes of tools/validate (the validation set of docs/accuracy.md) as cases named val_<tube>: three meshes of
     CPE8R, the middle one with 18 elements per bending length sqrt(Ro t) around the quarter (the default
     case's 4 x 90 has 17.5) and at least 90; penalty 1e6 MPa/mm, 1e5 for walls thinner than 1 mm (the
     thin case's stall at 1e6)."""
-    import importlib.machinery
     import math
-    v = importlib.machinery.SourceFileLoader('validate', os.path.join(ROOT, 'scripts', 'validate')).load_module()
     out = {}
     for name, (mat, ro, t, mu, stroke) in v.CASES.items():
         args = ['--tube_ro', f'{ro:g}', '--tube_t', f'{t:g}', '--friction_mu', f'{mu:g}', '--die_r_apex', '3',
