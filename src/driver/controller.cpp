@@ -247,6 +247,7 @@ PetscErrorCode Controller::SettledTrial(double lambda, double &dl, Vec du, Trial
     const int max_cuts = MaxCuts(InertiaActive());
     PetscCall(SolveTrial(lambda, dl, du, cut == max_cuts, t, inc));
     inc.redo += t.redo;
+    inc.deep = t.settled && cut > kMaxCuts;
     if (t.settled) break;
     if (cut == max_cuts && inertia_ && !InertiaActive()) {
       // -dynamics auto: quasi-static steps cannot settle here; inertia from

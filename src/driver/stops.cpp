@@ -152,10 +152,12 @@ PetscErrorCode Problem::StopAfter(Stop &stop, bool &wrote_last)
     stop.code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
     const bool balance = opt_.equilibrium_tol > 0; // the equilibrium iterations carry the friction's
     const bool inertia = inertia_ && inertia_->active();
+    const std::string shorter =
+      inertia ? Format(" (and with inertia up to %d times, on ever shorter steps)", kMaxCutsInertia) : "";
     stop.why =
       Format("the %s iterations did not settle in %d increments in a row (-friction_max_unsettled), "
-             "even on steps halved %d times: raise -friction_max_iters or %s%s (%s)",
-             balance ? "equilibrium" : "friction", (int)unsettled_run_, MaxCuts(inertia),
+             "even on steps halved %d times%s: raise -friction_max_iters or %s%s (%s)",
+             balance ? "equilibrium" : "friction", (int)unsettled_run_, kMaxCuts, shorter.c_str(),
              balance ? "-equilibrium_tol" : "-friction_tol", inertia ? "" : ", or try -dynamics auto", Where().c_str());
   }
   if (stop.why.empty() && contact_) {

@@ -62,6 +62,7 @@ struct Increment {
   PetscInt solves = 0;          // factorizations, friction iterations and re-solves included
   PetscInt redo = 0;            // re-solves for loading/unloading switches
   PetscInt unsettled = 0;       // trial steps taken with unsettled iterations
+  bool deep = false;            // settled only on a trial halved more than kMaxCuts times (inertia's shorter steps)
   bool event_inside = false;    // the step taken goes past an event by more than -rmin_event_tol (a compromise)
   PetscInt inconsistent = 0;    // Gauss points whose loading state disagrees with the solution taken
   PetscInt balance = 0;         // equilibrium corrections of the step taken (solves beyond the paper's)
