@@ -82,16 +82,21 @@ for np_ in (1, 2):
 
 # Iterations that never settle (a tolerance no iterate meets): the run stops
 # after -friction_max_unsettled increments in a row, naming the option, with
-# the history up to there (every row's unsettled count rising). The paper's
-# friction iterations (-equilibrium_tol 0, -friction_tol 1e-300) and the
-# default equilibrium iterations (-equilibrium_tol 1e-12: below round-off of
-# the out-of-balance forces), each on 1 and 2 ranks.
+# the history up to there. Quasi-static (-dynamics quasistatic), each of those
+# increments is taken unsettled (every row's unsettled count rising): the
+# paper's friction iterations (-equilibrium_tol 0, -friction_tol 1e-300) and
+# the default equilibrium iterations (-equilibrium_tol 1e-12: below round-off
+# of the out-of-balance forces), each on 1 and 2 ranks. With inertia (the
+# squaring default) a trial is halved further, where the mass balances a
+# step; steps that settle only there count too, or the run would creep on at
+# 1e-6 of a step: it stops on the fourth such increment, saying so.
 for np_, case in [(n, c) for c in (["-equilibrium_tol", 0, "-friction_tol", "1e-300"], ["-equilibrium_tol", "1e-12"])
                   for n in (1, 2)]:
     f = out(f"unsettled_np{np_}_{case[-2][1:]}.h5")
     p = run(tf, mpirun, np_, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
                               f"{src}/options/preset-fast.opts", "-friction_max_iters", "2",
-                              "-friction_max_unsettled", "4", "-output", f] + case, check=False)
+                              "-friction_max_unsettled", "4", "-dynamics", "quasistatic", "-output", f] + case,
+            check=False)
     lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
     k.check(p.returncode != 0 and len(lines) == 1 and "-friction_max_unsettled" in lines[0] and case[-2] in lines[0],
             f"np={np_} unsettled {case[-2]}: exit {p.returncode}, {lines}")
@@ -101,4 +106,16 @@ for np_, case in [(n, c) for c in (["-equilibrium_tol", 0, "-friction_tol", "1e-
             u = h["/history/unsettled"][:]
             ok = h["/history"].attrs["stopped"] == 1 and len(u) >= 5 and bool(np.all(np.diff(u[-5:]) >= 1))
     k.check(ok, f"np={np_} unsettled {case[-2]}: results flagged, the last 4 increments each unsettled")
+f = out("unsettled_inertia.h5")
+p = run(tf, mpirun, 1, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
+                        f"{src}/options/preset-fast.opts", "-friction_max_iters", "2", "-friction_max_unsettled", "4",
+                        "-equilibrium_tol", "1e-12", "-output", f], check=False)
+lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
+k.check(p.returncode != 0 and len(lines) == 1 and "-friction_max_unsettled" in lines[0] and "with inertia" in lines[0],
+        f"inertia, unsettled -equilibrium_tol: exit {p.returncode}, one line naming the option and inertia's halvings "
+        f"({lines})")
+if os.path.exists(f):
+    with h5py.File(f, "r") as h:
+        stopped, rows = h["/history"].attrs["stopped"], h["/history"].attrs["rows"]
+    k.check(stopped == 1 and rows < 20, f"inertia: results flagged stopped after {rows:g} rows (a creep would go on)")
 k.done()

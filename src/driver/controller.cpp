@@ -244,10 +244,12 @@ PetscErrorCode Controller::SettledTrial(double lambda, double &dl, Vec du, Trial
 {
   PetscFunctionBeginUser;
   for (int cut = 0;;) {
-    PetscCall(SolveTrial(lambda, dl, du, cut == kMaxCuts, t, inc));
+    const int max_cuts = MaxCuts(InertiaActive());
+    PetscCall(SolveTrial(lambda, dl, du, cut == max_cuts, t, inc));
     inc.redo += t.redo;
+    inc.deep = t.settled && cut > kMaxCuts;
     if (t.settled) break;
-    if (cut == kMaxCuts && inertia_ && !InertiaActive()) {
+    if (cut == max_cuts && inertia_ && !InertiaActive()) {
       // -dynamics auto: quasi-static steps cannot settle here; inertia from
       // now on, and this (shortest) step solved again with it.
       inertia_->Activate();
@@ -257,7 +259,7 @@ PetscErrorCode Controller::SettledTrial(double lambda, double &dl, Vec du, Trial
                             lambda));
       continue;
     }
-    if (cut == kMaxCuts) break; // (SolveTrial takes the last try whatever it finds)
+    if (cut == max_cuts) break; // (SolveTrial takes the last try whatever it finds)
     dl *= 0.5;
     m_.body.ScaleTransitions(0.5);
     ++cut;

@@ -151,10 +151,14 @@ PetscErrorCode Problem::StopAfter(Stop &stop, bool &wrote_last)
   } else if (unsettled_run_ >= opt_.friction_max_unsettled) {
     stop.code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
     const bool balance = opt_.equilibrium_tol > 0; // the equilibrium iterations carry the friction's
-    stop.why = Format("the %s iterations did not settle in %d increments in a row (-friction_max_unsettled), "
-                      "even on steps halved %d times: raise -friction_max_iters or %s, or try -dynamics auto (%s)",
-                      balance ? "equilibrium" : "friction", (int)unsettled_run_, kMaxCuts,
-                      balance ? "-equilibrium_tol" : "-friction_tol", Where().c_str());
+    const bool inertia = inertia_ && inertia_->active();
+    const std::string shorter =
+      inertia ? Format(" (and with inertia up to %d times, on ever shorter steps)", kMaxCutsInertia) : "";
+    stop.why =
+      Format("the %s iterations did not settle in %d increments in a row (-friction_max_unsettled), "
+             "even on steps halved %d times%s: raise -friction_max_iters or %s%s (%s)",
+             balance ? "equilibrium" : "friction", (int)unsettled_run_, kMaxCuts, shorter.c_str(),
+             balance ? "-equilibrium_tol" : "-friction_tol", inertia ? "" : ", or try -dynamics auto", Where().c_str());
   }
   if (stop.why.empty() && contact_) {
     PetscCall(StopOnCrossing(stop));

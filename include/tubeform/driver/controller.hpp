@@ -22,8 +22,11 @@ namespace tf {
 constexpr double kDivergence = 10;
 // Halvings of a correction that does not reduce the out-of-balance force.
 constexpr int kBacktracks = 3;
-// Halvings of a trial step whose iterations do not settle; the last is taken unsettled.
-constexpr int kMaxCuts = 6;
+// Halvings of a trial step whose iterations do not settle; the last is taken unsettled. With inertia a step short
+// enough is dominated by the mass (M / dt^2 grows as 1 / dt^2) and balances, as through the snap of a thin wall's
+// springback: halvings down to about 1e-6 of the trial (kMinDynamicStep, below).
+constexpr int kMaxCuts = 6, kMaxCutsInertia = 20;
+inline int MaxCuts(bool inertia) { return inertia ? kMaxCutsInertia : kMaxCuts; }
 // Re-solves of a shortened non-linear step that go to its limits' estimate; later ones at least halve it.
 constexpr int kMaxResolves = 3;
 // Inertia: a re-solved step cut by a bound on its size (r2, r3) and well
@@ -59,6 +62,7 @@ struct Increment {
   PetscInt solves = 0;          // factorizations, friction iterations and re-solves included
   PetscInt redo = 0;            // re-solves for loading/unloading switches
   PetscInt unsettled = 0;       // trial steps taken with unsettled iterations
+  bool deep = false;            // settled only on a trial halved more than kMaxCuts times (inertia's shorter steps)
   bool event_inside = false;    // the step taken goes past an event by more than -rmin_event_tol (a compromise)
   PetscInt inconsistent = 0;    // Gauss points whose loading state disagrees with the solution taken
   PetscInt balance = 0;         // equilibrium corrections of the step taken (solves beyond the paper's)
