@@ -17,6 +17,7 @@ struct LowerMotion {
 const LowerMotion kLowerMotions[] = {
   {"mirror", "stroke", {0.0, 1.0}, {0.0, -1.0}, true}, // up by U: the mirror of the upper die's
   {"fixed", "fixed", {0.0, 0.0}, {0.0, -2.0}, true},   // it stays; the upper die travels 2 U
+  {"path", "schedule", {}, {0.0, -1.0}, false},        // through -lower_die_path's rises at its strokes
 };
 
 const LowerMotion *LowerMotionOf(const Options &o)
@@ -29,9 +30,10 @@ const LowerMotion *LowerMotionOf(const Options &o)
 // The lower die's motion spec of -lower_die_motion's word m.
 MotionSpec LowerSpec(const Options &o, const LowerMotion &m)
 {
-  (void)o; // (the kinds so far need only the word's direction)
   MotionSpec spec;
   spec.direction = m.lower;
+  for (size_t k = 0; k + 1 < o.lower_die_path.size(); k += 2)
+    spec.at.push_back(o.lower_die_path[k]), spec.to.push_back({0.0, o.lower_die_path[k + 1]});
   return spec;
 }
 } // namespace
@@ -51,7 +53,8 @@ PetscErrorCode SetLowerMotion(MPI_Comm comm, const Options &o, Tool &upper, Tool
   const LowerMotion *m = LowerMotionOf(o);
   PetscCheck(m, comm, PETSC_ERR_USER_INPUT, "-lower_die_motion %s: not a motion of the lower die",
              o.lower_die_motion.c_str());
-  PetscCall(SetMotion(comm, "-lower_die_motion", m->kind, LowerSpec(o, *m), lower));
+  PetscCall(SetMotion(comm, o.lower_die_path.empty() ? "-lower_die_motion" : "-lower_die_path", m->kind,
+                      LowerSpec(o, *m), lower));
   MotionSpec spec;
   spec.direction = m->upper;
   PetscCall(SetMotion(comm, "-lower_die_motion", "stroke", spec, upper));

@@ -26,6 +26,7 @@ const std::pair<const char *, Factory> kMotions[] = {
    [](const MotionSpec &s, MotionHandle &m) {
      return Moves(s.direction) ? (m = ForceMotion(s.direction), std::string()) : "a force along no direction";
    }},
+  {"schedule", [](const MotionSpec &s, MotionHandle &m) { return ScheduleMotion(s.at, s.to, m); }},
 };
 } // namespace
 

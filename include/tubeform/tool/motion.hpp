@@ -72,10 +72,16 @@ std::unique_ptr<Motion> PathMotion(const ToolPath &path);
 // force: along `direction`, its stroke an unknown found from the force it presses with (motion_force.cpp).
 std::unique_ptr<Motion> ForceMotion(const Vec2 &direction);
 
+// schedule: through displacements `to` at strokes `at` (rising from 0), standing after the last; "" or why not
+// (motion_schedule.cpp).
+std::string ScheduleMotion(const std::vector<double> &at, const std::vector<Vec2> &to, MotionHandle &m);
+
 // What a kind of motion is made from (each kind reads what it needs).
 struct MotionSpec {
-  Vec2 direction{0, -1}; // stroke, force: per unit stroke
-  ToolPath path;         // path: its points and turns
+  Vec2 direction{0, -1};  // stroke, force: per unit stroke
+  ToolPath path;          // path: its points and turns
+  std::vector<double> at; // schedule: the strokes
+  std::vector<Vec2> to;   // and the displacements there
 };
 // The registry: a motion of the kind named `kind` from `spec` into `m`; "" or why not (an unknown kind names the
 // known ones; a kind refuses a spec it cannot move by: a path with no points, a force along no direction).
