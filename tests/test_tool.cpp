@@ -16,13 +16,16 @@
 //     rising towards it where the closed form says.
 // ClearanceBack (how far back a second pass's die starts to clear the tube) against
 // the closed forms of a plate and the V-die over a circle larger than the tube's.
+// The motions and their registry against hand values (CheckMotions).
 // The tools: the flat-bottomed die of options/dies/flat_bottom.profile (a
 // concave fillet between face and flank) and the V-die with a parting face
 // (a concave apex fillet, the tube inside its circle, and a convex edge
 // fillet).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "check.hpp"
@@ -216,6 +219,51 @@ void CheckTurningPath()
 
 } // namespace
 
+// The motions (tool/motion.hpp) and their registry, against hand values: each kind made by its name and refusing
+// a spec it cannot move by; a copied tool's motion its own; the schedule (-lower_die_path) through its points at
+// their strokes, standing after the last, its pieces taken from a stroke at (or within round-off below) a point.
+void CheckMotions()
+{
+  CHECK((MotionKinds() == std::vector<std::string>{"fixed", "stroke", "path", "force", "schedule"}));
+  MotionSpec spec;
+  spec.direction = {0.5, -2};
+  spec.path = ToolPath({{0, -2}});
+  spec.at = {1, 2}, spec.to = {{0, 0}, {0, 1}};
+  for (const std::string &kind : MotionKinds()) {
+    MotionHandle m;
+    CHECK(MakeMotion(kind, spec, m).empty() && m->Kind() == kind && m->Unknown() == (kind == "force"));
+  }
+  MotionHandle m;
+  const std::string unknown = MakeMotion("spiral", spec, m);
+  CHECK(unknown.find("spiral") != std::string::npos && unknown.find("schedule") != std::string::npos);
+  MotionSpec none;
+  none.direction = {0, 0};
+  CHECK(!MakeMotion("stroke", none, m).empty() && !MakeMotion("force", none, m).empty());
+  CHECK(!MakeMotion("path", none, m).empty() && !MakeMotion("schedule", none, m).empty());
+  none.at = {1, 1}, none.to = {{0, 0}, {0, 1}}; // (strokes that do not rise)
+  CHECK(!MakeMotion("schedule", none, m).empty());
+  // A stroke: s x direction; fixed: nothing; a copy followed elsewhere leaves the original's piece.
+  CHECK(MakeMotion("stroke", spec, m).empty() && m->Offset(2)[0] == 1 && m->Offset(2)[1] == -4);
+  CHECK(MakeMotion("fixed", spec, m).empty() && m->Offset(3)[0] == 0 && m->Offset(3)[1] == 0);
+  Tool lower = BuildFlatPlate(-1.0, -5, 5, true);
+  CHECK(MakeMotion("schedule", spec, lower.motion).empty());
+  Tool copy = lower;
+  copy.stroke = 1.5, copy.FollowPath();
+  CHECK(lower.Direction()[1] == 0 && copy.Direction()[1] == 1);
+  // The schedule: still to U = 1, up to 1 at U = 2, then standing.
+  const Motion &s = *lower.motion;
+  CHECK(s.Offset(0.5)[1] == 0 && s.Offset(1.5)[1] == 0.5 && s.Offset(2)[1] == 1 && s.Offset(3)[1] == 1);
+  CHECK((s.Kinks() == std::vector<double>{1, 2}));
+  for (auto [at, dy] : {std::pair{0.5, 0.0}, {1.0 - 1e-15, 1.0}, {1.0, 1.0}, {1.9, 1.0}, {2.0, 0.0}, {2.5, 0.0}}) {
+    lower.stroke = at, lower.FollowPath();
+    CHECK(lower.Direction()[0] == 0 && lower.Direction()[1] == dy);
+  }
+  // Mirrored (y -> -y) with its tool: the offsets and the motion.
+  const Tool image = MirrorY(copy);
+  CHECK(image.Offset()[1] == -copy.Offset()[1] && image.Direction()[1] == -1 && image.Offset()[1] == -0.5);
+  std::printf("Motions: the registry's kinds and refusals; the schedule through its points, piece by piece\n");
+}
+
 int main()
 {
   int concave = 0, convex = 0;
@@ -231,5 +279,6 @@ int main()
   CheckClearance();
   CheckPath();
   CheckTurningPath();
+  CheckMotions();
   return ReportChecks("test_tool");
 }
