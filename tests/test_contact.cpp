@@ -43,6 +43,21 @@ struct Block {
   ~Block() { (void)VecDestroy(&du); }
 };
 
+// A tool that only turns about its frame's origin, `spin` radians per unit stroke (within a step: Turn stays 0).
+class Spinning : public Motion {
+public:
+  explicit Spinning(double spin) : spin_(spin) {}
+  std::unique_ptr<Motion> Clone() const override { return std::make_unique<Spinning>(*this); }
+  std::string Kind() const override { return "spinning"; }
+  Vec2 Offset(double s) const override { return {0 * s, -1 * s}; }
+  Vec2 Direction() const override { return {0, -1}; }
+  double Spin() const override { return spin_; }
+  void Map(const TurnMap &) override {}
+
+private:
+  double spin_;
+};
+
 PetscErrorCode Build(MPI_Comm comm, std::unique_ptr<Block> &b, double spin = 0)
 {
   PetscMPIInt rank;
@@ -59,7 +74,7 @@ PetscErrorCode Build(MPI_Comm comm, std::unique_ptr<Block> &b, double spin = 0)
   PetscCall(b->body.Setup(b->mesh, prm));
   ContactSpec spec;
   spec.tools = {BuildFlatPlate(0.0, -10.0, 10.0, true)};
-  spec.tools[0].spin = spin;
+  spec.tools[0].motion = MotionHandle(std::make_unique<Spinning>(spin));
   spec.candidates = "bottom";
   PetscCall(b->contact.Setup(b->mesh, b->system, b->body.position(), spec));
   PetscCall(b->contact.Initialize());

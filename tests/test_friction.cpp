@@ -125,7 +125,7 @@ int main()
   // Tools: first contact of a point moving onto a line and onto arcs.
   {
     Tool plate = BuildFlatPlate(1.0, -5, 5); // y = 1, body below
-    plate.direction = {0, -1};
+    plate.motion = StrokeMotion({0, -1});
     // Point at y = 0 moving up by 0.5 while the plate comes down by 1: meets at r = 1/1.5.
     CHECK_NEAR(plate.FirstContact({0.3, 0.0}, {0.0, 0.5}, 1.0), 1.0 / 1.5, 1e-14);
     CHECK(plate.FirstContact({0.3, 0.0}, {0.0, 0.1}, 0.1) > 1); // not reached

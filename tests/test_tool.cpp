@@ -16,13 +16,16 @@
 //     rising towards it where the closed form says.
 // ClearanceBack (how far back a second pass's die starts to clear the tube) against
 // the closed forms of a plate and the V-die over a circle larger than the tube's.
+// The motions and their registry against hand values (CheckMotions).
 // The tools: the flat-bottomed die of options/dies/flat_bottom.profile (a
 // concave fillet between face and flank) and the V-die with a parting face
 // (a concave apex fillet, the tube inside its circle, and a convex edge
 // fillet).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "check.hpp"
@@ -38,8 +41,8 @@ void CheckImage(const Tool &tool, const TurnMap &map, int &concave, int &convex)
 {
   const double delta = 0.05;
   const Tool image = Transform(tool, map);
-  CHECK_NEAR(image.direction[0], map(tool.direction)[0], 0.0);
-  CHECK_NEAR(image.direction[1], map(tool.direction)[1], 0.0);
+  CHECK_NEAR(image.Direction()[0], map(tool.Direction())[0], 0.0);
+  CHECK_NEAR(image.Direction()[1], map(tool.Direction())[1], 0.0);
   for (size_t k = 0; k < tool.segments.size(); ++k) {
     const Segment &s = tool.segments[k];
     if (s.kind == Segment::Arc && map.identity()) (s.concave ? concave : convex)++;
@@ -151,7 +154,7 @@ void CheckClearance()
   // Already clear: 0. A tool that does not move cannot clear points inside it: -1.
   CHECK(ClearanceBack(vdie, {{0, 0}, {ro, 0}}, tol) == 0);
   Tool fixed = plate;
-  fixed.direction = {0, 0};
+  fixed.motion = FixedMotion();
   CHECK(ClearanceBack(fixed, circle, tol) == -1);
   std::printf("ClearanceBack: the plate and the V-die clear a circle of radius Ro + 0.3 as the closed forms say\n");
 }
@@ -170,11 +173,11 @@ void CheckPath()
   CHECK(m0[0] == 0 && m0[1] == -2 && m1[0] == 2 && m1[1] == 0 && m2[0] == 0 && m2[1] == -2 && m3[1] == -2);
   CHECK(path.Deepest() == 3 && ToolPath().empty() && ToolPath().Turns().empty());
   Tool die = BuildVDie(17.5, 3.0);
-  die.path = path;
+  die.motion = PathMotion(path);
   die.stroke = 1.1;
   die.FollowPath();
   const Tool mirrored = MirrorX(die);
-  CHECK(die.direction[0] == 2 && mirrored.Offset()[0] == -die.Offset()[0] && mirrored.Offset()[1] == die.Offset()[1]);
+  CHECK(die.Direction()[0] == 2 && mirrored.Offset()[0] == -die.Offset()[0] && mirrored.Offset()[1] == die.Offset()[1]);
   std::printf("ToolPath: points, pieces and the motion ahead as drawn; mirrored with the tool\n");
 }
 
@@ -189,7 +192,7 @@ void CheckTurningPath()
   CHECK(std::abs(path.Spin(0) - 0.1 / first) < 1e-15 && std::abs(path.Spin(first) + 0.2) < 1e-15);
   Tool plate = BuildFlatPlate(1.0, -5.0, 5.0);
   plate.origin = {0, 1};
-  plate.path = path;
+  plate.motion = PathMotion(path);
   plate.stroke = first;
   plate.FollowPath();
   // At the turn: the origin moved to (0, -1), the plate turned by 0.1 about it.
@@ -197,8 +200,8 @@ void CheckTurningPath()
   const Vec2 q = plate.Placed({3, 1}), v = plate.Velocity({0, -1});
   CHECK(std::abs(q[0] - 3 * c) < 1e-14 && std::abs(q[1] - (-1 + 3 * s)) < 1e-14);
   CHECK(v[0] == 0 && v[1] == 0 &&
-        std::abs(plate.spin + 0.2) < 1e-15); // (the second piece only turns, about the centre)
-  const Vec2 w = plate.Velocity({0, 2});     // (3 above the centre: turning clockwise moves it along x)
+        std::abs(plate.Spin() + 0.2) < 1e-15); // (the second piece only turns, about the centre)
+  const Vec2 w = plate.Velocity({0, 2});       // (3 above the centre: turning clockwise moves it along x)
   CHECK(std::abs(w[0] - 0.6) < 1e-15 && w[1] == 0);
   // A point below the turned plate: its gap along the turned normal, its projection on the turned line.
   const Projection pr = plate.Project({0, -3});
@@ -208,13 +211,58 @@ void CheckTurningPath()
   CHECK(std::abs(plate.FirstContact({0, -3}, {-0.1 - 2 * c * s, 2 * c * c}, 0.25) - 1.0) < 1e-12);
   // Mirrored (x -> -x): the turns and the spin change sign.
   const Tool mirrored = MirrorX(plate);
-  CHECK(mirrored.Turn() == -plate.Turn() && mirrored.spin == -plate.spin);
+  CHECK(mirrored.Turn() == -plate.Turn() && mirrored.Spin() == -plate.Spin());
   const Vec2 mq = mirrored.Placed({-3, 1});
   CHECK(std::abs(mq[0] + q[0]) < 1e-14 && std::abs(mq[1] - q[1]) < 1e-14);
   std::printf("ToolPath with turns: the turn and spin along it; a turned plate placed, projected on, met; mirrored\n");
 }
 
 } // namespace
+
+// The motions (tool/motion.hpp) and their registry, against hand values: each kind made by its name and refusing
+// a spec it cannot move by; a copied tool's motion its own; the schedule (-lower_die_path) through its points at
+// their strokes, standing after the last, its pieces taken from a stroke at (or within round-off below) a point.
+void CheckMotions()
+{
+  CHECK((MotionKinds() == std::vector<std::string>{"fixed", "stroke", "path", "force", "schedule"}));
+  MotionSpec spec;
+  spec.direction = {0.5, -2};
+  spec.path = ToolPath({{0, -2}});
+  spec.at = {1, 2}, spec.to = {{0, 0}, {0, 1}};
+  for (const std::string &kind : MotionKinds()) {
+    MotionHandle m;
+    CHECK(MakeMotion(kind, spec, m).empty() && m->Kind() == kind && m->Unknown() == (kind == "force"));
+  }
+  MotionHandle m;
+  const std::string unknown = MakeMotion("spiral", spec, m);
+  CHECK(unknown.find("spiral") != std::string::npos && unknown.find("schedule") != std::string::npos);
+  MotionSpec none;
+  none.direction = {0, 0};
+  CHECK(!MakeMotion("stroke", none, m).empty() && !MakeMotion("force", none, m).empty());
+  CHECK(!MakeMotion("path", none, m).empty() && !MakeMotion("schedule", none, m).empty());
+  none.at = {1, 1}, none.to = {{0, 0}, {0, 1}}; // (strokes that do not rise)
+  CHECK(!MakeMotion("schedule", none, m).empty());
+  // A stroke: s x direction; fixed: nothing; a copy followed elsewhere leaves the original's piece.
+  CHECK(MakeMotion("stroke", spec, m).empty() && m->Offset(2)[0] == 1 && m->Offset(2)[1] == -4);
+  CHECK(MakeMotion("fixed", spec, m).empty() && m->Offset(3)[0] == 0 && m->Offset(3)[1] == 0);
+  Tool lower = BuildFlatPlate(-1.0, -5, 5, true);
+  CHECK(MakeMotion("schedule", spec, lower.motion).empty());
+  Tool copy = lower;
+  copy.stroke = 1.5, copy.FollowPath();
+  CHECK(lower.Direction()[1] == 0 && copy.Direction()[1] == 1);
+  // The schedule: still to U = 1, up to 1 at U = 2, then standing.
+  const Motion &s = *lower.motion;
+  CHECK(s.Offset(0.5)[1] == 0 && s.Offset(1.5)[1] == 0.5 && s.Offset(2)[1] == 1 && s.Offset(3)[1] == 1);
+  CHECK((s.Kinks() == std::vector<double>{1, 2}));
+  for (auto [at, dy] : {std::pair{0.5, 0.0}, {1.0 - 1e-15, 1.0}, {1.0, 1.0}, {1.9, 1.0}, {2.0, 0.0}, {2.5, 0.0}}) {
+    lower.stroke = at, lower.FollowPath();
+    CHECK(lower.Direction()[0] == 0 && lower.Direction()[1] == dy);
+  }
+  // Mirrored (y -> -y) with its tool: the offsets and the motion.
+  const Tool image = MirrorY(copy);
+  CHECK(image.Offset()[1] == -copy.Offset()[1] && image.Direction()[1] == -1 && image.Offset()[1] == -0.5);
+  std::printf("Motions: the registry's kinds and refusals; the schedule through its points, piece by piece\n");
+}
 
 int main()
 {
@@ -231,5 +279,6 @@ int main()
   CheckClearance();
   CheckPath();
   CheckTurningPath();
+  CheckMotions();
   return ReportChecks("test_tool");
 }

@@ -119,7 +119,7 @@ PetscErrorCode ContactSet::Constrain(double dU)
     // Follow the tool along n and close any gap left by the last increment.
     // (A force-controlled tool's nodes: per unit of its motion as well, the system's extra unknown.)
     const double dn = Dot(Motion(node, dU), n_[node]) - gap_[node];
-    const double unit = tools_[tool_of_[node]].pad ? Dot(Direction(node), n_[node]) : 0.0;
+    const double unit = tools_[tool_of_[node]].Unknown() ? Dot(Direction(node), n_[node]) : 0.0;
     if (global_frame_[node]) {
       // du . n = dn with the held component zero: the free global component follows.
       const Vec2 s = sym_dir_[node];
@@ -276,7 +276,7 @@ PetscErrorCode ContactSet::LimitStep(Vec du, double dU, StepLimit &limit)
   }
   // r3 for a turning tool (the same on every rank): its turn is taken linear in the step, as the body's rotations.
   for (int k = 0; k < (int)tools_.size(); ++k)
-    limit.Offer(RotationFactor(tools_[k].spin * Step(k, dU), prm_.turn_max), Limiter::Rotation, -1);
+    limit.Offer(RotationFactor(tools_[k].Spin() * Step(k, dU), prm_.turn_max), Limiter::Rotation, -1);
   PetscCall(PetscLogEventEnd(Log::contact, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

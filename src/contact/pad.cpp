@@ -14,7 +14,7 @@ namespace tf {
 
 double ContactSet::ForceAlong(PetscInt node, double fn, double fl) const
 {
-  const Vec2 &d = Direction(node);
+  const Vec2 d = Direction(node);
   const double len = std::hypot(d[0], d[1]);
   return (fn * (n_[node][0] * d[0] + n_[node][1] * d[1]) + fl * (l_[node][0] * d[0] + l_[node][1] * d[1])) / len;
 }
@@ -24,7 +24,7 @@ PetscErrorCode ContactSet::PadForce(double &force) const
   double local = 0;
   PetscFunctionBeginUser;
   for (PetscInt node : candidates_) {
-    if (!contact_[node] || !mesh_->node_owned[node] || !tools_[tool_of_[node]].pad) continue;
+    if (!contact_[node] || !mesh_->node_owned[node] || !tools_[tool_of_[node]].Unknown()) continue;
     const double fl = Frictional(node) ? friction::Force(prm_.mu, prm_.vcri, fn_[node], x_[node]) : 0.0;
     local += ForceAlong(node, fn_[node], fl); // (NodeForce's, along the tool's direction)
   }
@@ -39,7 +39,7 @@ PetscErrorCode ContactSet::Missing(double &missing)
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(system_->reactions_local(), &react));
   for (PetscInt node : candidates_) {
-    if (!contact_[node] || !mesh_->node_owned[node] || !tools_[tool_of_[node]].pad) continue;
+    if (!contact_[node] || !mesh_->node_owned[node] || !tools_[tool_of_[node]].Unknown()) continue;
     const double fn = fn_[node] + NormalIncrement(node, NormalReaction(node, react), dxk_[node], pad_step_);
     const double fl = SlipFree(node) ? friction::Force(prm_.mu, prm_.vcri, fnk_[node], x_[node] + dxk_[node]) : 0.0;
     local += ForceAlong(node, fn, fl);

@@ -119,7 +119,7 @@ PetscErrorCode ContactSet::Initialize()
              tools_[deepest.where % ntools].name.c_str(), deepest.where / ntools, deepest.depth);
   // A force-controlled tool moves by what its force needs: it must hold the body from the start.
   for (int k = 0; k < ntools; ++k) {
-    if (!tools_[k].pad) continue;
+    if (!tools_[k].Unknown()) continue;
     PetscInt local = 0, touching;
     for (PetscInt node : candidates_) local += contact_[node] && tool_of_[node] == k && mesh_->node_owned[node];
     PetscCall(MPIU_Allreduce(&local, &touching, 1, MPIU_INT, MPI_SUM, comm()));

@@ -33,9 +33,15 @@ PetscErrorCode ReadDieShapes(PetscOptionItems *PetscOptionsObject, OptionReader 
                 "file (*.dxf or text) drawn as an upper die, mirrored below the tube",
                 opt.lower_die));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-lower_die_motion",
-                       "tool scenes: the lower die moves up by the stroke U (mirror) or stays (fixed; the upper die "
-                       "then travels 2 U, so U is half the dies' closing either way)",
-                       {"mirror", "fixed"}, opt.lower_die_motion));
+                       "tool scenes: the lower die moves up by the stroke U (mirror), stays (fixed; the upper die "
+                       "then travels 2 U, so U is half the dies' closing either way), or follows -lower_die_path "
+                       "(path; the upper die travels U)",
+                       {"mirror", "fixed", "path"}, opt.lower_die_motion));
+  PetscCall(RealList(PetscOptionsObject, read, "-lower_die_path",
+                     "tool scenes with -lower_die_motion path: the lower die's rise (mm, up from where it starts) at "
+                     "strokes U in turn, as U,y pairs (U rising from 0), linear in U between them; it stays after "
+                     "the last",
+                     2 * kMaxPathPoints, opt.lower_die_path));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

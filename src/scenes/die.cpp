@@ -58,8 +58,7 @@ PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &upper, double floor_y, bool full,
-                             Tool &lower)
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, Tool &upper, double floor_y, bool full, Tool &lower)
 {
   PetscFunctionBeginUser;
   if (opt.lower_die == "mirror") {
@@ -75,8 +74,7 @@ PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &uppe
   }
   // Its name in errors and in the results (/tools/<name>): no spaces.
   lower.name = opt.lower_die == "flat" ? "floor" : opt.lower_die == "mirror" ? "lower-" + upper.name : "lower-die";
-  // Per unit stroke U: up by U (the mirror of the upper die's motion), or fixed (the upper die then travels 2 U).
-  lower.direction = {0.0, opt.lower_die_motion == "fixed" ? 0.0 : 1.0};
+  PetscCall(SetLowerMotion(comm, opt, upper, lower)); // (-lower_die_motion: die_motion.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -98,7 +96,9 @@ PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, 
   }
   Tool right = Transform(drawn, {true, 1}); // (x, y) -> (y, x): moving along -x by the stroke
   right.name = "side-" + std::string(plate ? "plate" : o.side_die == "mirror" ? tools[0].name : "die");
-  right.direction = {-1.0, 0.0};
+  MotionSpec in;
+  in.direction = {-1.0, 0.0};
+  PetscCall(SetMotion(comm, option, "stroke", in, right));
   tools.push_back(right);
   if (full) {
     Tool left = MirrorX(right);
@@ -136,8 +136,7 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
   tools = {upper};
   if (half) {
     Tool lower;
-    PetscCall(BuildLowerDie(comm, o, upper, floor_y, full, lower));
-    if (o.lower_die_motion == "fixed") tools[0].direction = {0.0, -2.0}; // the dies close by 2 U either way
+    PetscCall(BuildLowerDie(comm, o, tools[0], floor_y, full, lower));
     tools.push_back(lower);
   }
   if (o.side_die != "none")
@@ -171,8 +170,8 @@ PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoi
       PetscCall(PetscPrintf(comm,
                             "tubeform: the %s starts at U = %.4g mm, %.4g mm back along its motion from where it "
                             "would touch the round tube, where it touches the tube as the first pass left it\n",
-                            tools[k].name.c_str(), -b * std::hypot(tools[k].direction[0], tools[k].direction[1]),
-                            b * std::hypot(tools[k].direction[0], tools[k].direction[1])));
+                            tools[k].name.c_str(), -b * std::hypot(tools[k].Direction()[0], tools[k].Direction()[1]),
+                            b * std::hypot(tools[k].Direction()[0], tools[k].Direction()[1])));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -188,7 +187,7 @@ PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint
     PetscCall(PetscPrintf(comm,
                           "tubeform: the %s is %g mm off the axis; it starts %.4g mm back along its motion, "
                           "where it touches the tube\n",
-                          die.name.c_str(), offset, back[0] * std::hypot(die.direction[0], die.direction[1])));
+                          die.name.c_str(), offset, back[0] * std::hypot(die.Direction()[0], die.Direction()[1])));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -213,7 +212,8 @@ PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring,
 double DieReach(const Options &o, bool squaring)
 {
   const double ro = o.tube_ro, ri = ro - o.tube_t;
-  if (squaring && (!o.die_profile.empty() || o.lower_die != "mirror" || o.side_die != "none")) return kNever;
+  if (squaring && (!o.die_profile.empty() || o.lower_die != "mirror" || !LowerDieClosing(o) || o.side_die != "none"))
+    return kNever;
   if (!squaring) return ro - o.tube_t;
   const VAngle v(o.die_angle);
   const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
@@ -235,7 +235,7 @@ PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, dou
 {
   PetscFunctionBeginUser;
   const double ro = o.tube_ro, ri = ro - o.tube_t;
-  if (squaring && (!o.die_profile.empty() || o.lower_die != "mirror" || o.side_die != "none")) {
+  if (squaring && (!o.die_profile.empty() || o.lower_die != "mirror" || !LowerDieClosing(o) || o.side_die != "none")) {
     // A profile of one's own, side dies: no closed form of the cavity; a stroke that closes it fails in the run.
   } else if (squaring) {
     // The cavity is a rhombus of half-diagonals D = h - U and D tan(half): area 2 D^2 tan(half).

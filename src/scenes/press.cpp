@@ -37,15 +37,17 @@ PressScene::PressScene(const Options &opt, bool squaring)
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
   stroke2_ = opt.pass2_stroke;
   path_ = opt.die_path.empty() ? StrokePath(opt.stroke_path, stroke_) : StrokePath(DiePath(opt));
+  lower_motion_ = LowerDieMotion(opt);
   for (int pass = 0; pass < 2; ++pass)
     side_dies_[pass] = PassOptions(opt, pass).side_die != "none", held_[pass] = HeldByRotation(opt, pass);
 }
 
 LoadPath PressScene::Path(const Options &opt) const
 {
-  const double t = path_.travel() / opt.punch_speed; // (the press's duration)
-  if (stroke2_ > 0) return {kSecondRelease + 1, t, {kFirstRelease, kSecondPress, kSecondRelease}, path_.Kinks()};
-  return {opt_.unload == "none" ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, path_.Kinks()};
+  const double t = path_.travel() / opt.punch_speed;               // (the press's duration)
+  const std::vector<double> kinks = path_.Kinks(PressKinks(opt_)); // (where the dies' motions turn)
+  if (stroke2_ > 0) return {kSecondRelease + 1, t, {kFirstRelease, kSecondPress, kSecondRelease}, kinks};
+  return {opt_.unload == "none" ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
 }
 
 double PressScene::ToolStroke(double lambda) const
@@ -75,11 +77,9 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   PetscCall(PassTools(m, 0, tools.tools));
   std::vector<SurfacePoint> outer;
   PetscCall(GatherOuter(m, outer));
-  path_.Guide(tools.tools[kUpper]); // (-die_path: a path of its own, to move back along before the offset)
-  if (!opt_.die_path_turn.empty()) tools.tools[kUpper].origin = DiePivot(opt_);
+  // (-die_path: a path of its own, to move back along before the offset; -die_force, -side_force: die_motion.cpp)
+  PetscCall(SetPressMotions(m.comm, opt_, SideDie(), tools.tools));
   if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
-  tools.tools[kUpper].pad = opt_.die_force > 0;
-  for (size_t k = SideDie(); opt_.side_force > 0 && k < tools.tools.size(); ++k) tools.tools[k].pad = true;
   tools.candidates = "outer";
   for (int pass = stroke2_ > 0; full_ && pass >= 0; --pass) { // (the second pass's axis checked now)
     PetscCall(MarkAxisPins(m, PassMap(pass).Inverse()));
@@ -233,7 +233,8 @@ PetscErrorCode PressScene::SecondPass(Model &m, std::vector<Tool> &tools,
   pass2_back_ = kNever;
   for (size_t k = 0; k < tools.size() && k < start_back_.size(); ++k) {
     tools[k] = MovedBack(tools[k], start_back_[k]);
-    if (tools[k].direction[0] != 0 || tools[k].direction[1] != 0) pass2_back_ = std::min(pass2_back_, start_back_[k]);
+    const Vec2 d = tools[k].Direction();
+    if (d[0] != 0 || d[1] != 0) pass2_back_ = std::min(pass2_back_, start_back_[k]);
   }
   if (pass2_back_ == kNever) pass2_back_ = 0; // (no die moves)
   if (full_) PetscCall(MarkAxisPins(m, Press()));

@@ -10,7 +10,10 @@ double PressScene::ToolWork(const HistoryRow &prev, const HistoryRow &row, doubl
 {
   HistoryRow from = prev; // (the second pass's dies from where they start)
   if (row.stage == kSecondPress && prev.stage < row.stage) from.stroke = -UpperBack();
-  return PressToolWork(Part(), opt_.lower_die_motion == "fixed", from, row);
+  // (the lower die's rise by its motion: by U where it mirrors the upper one's, LowerDieMotion)
+  const DieTravel travel{UpperTravel(opt_), lower_motion_->Kind() != "fixed",
+                         lower_motion_->Offset(row.stroke)[1] - lower_motion_->Offset(from.stroke)[1]};
+  return PressToolWork(Part(), travel, from, row);
 }
 
 PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRow &row)

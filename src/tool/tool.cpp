@@ -50,6 +50,8 @@ Vec2 Tool::Drawn(const Vec2 &x, double c, double s) const
 
 Vec2 Tool::Velocity(const Vec2 &x) const
 {
+  const Vec2 direction = Direction();
+  const double spin = Spin();
   if (spin == 0) return direction;
   const Vec2 centre = Add(origin, Offset());
   return {direction[0] - spin * (x[1] - centre[1]), direction[1] + spin * (x[0] - centre[0])};
@@ -104,7 +106,7 @@ double Tool::FirstContact(const Vec2 &x, const Vec2 &dx, double dU) const
 {
   const double t = Turn();
   // Relative motion in the tool's frame: y(r) = x - off + r (dx - dU direction).
-  if (t == 0 && spin == 0) return FirstContactDrawn(Sub(x, Offset()), Sub(dx, Scale(direction, dU)));
+  if (t == 0 && Spin() == 0) return FirstContactDrawn(Sub(x, Offset()), Sub(dx, Scale(Direction(), dU)));
   // Turning: the same in the drawing, x's motion relative to the tool's point there (Velocity) turned back.
   const double c = std::cos(t), s = std::sin(t);
   return FirstContactDrawn(Drawn(x, c, s), Rotated(Sub(dx, Scale(Velocity(x), dU)), c, -s));
@@ -191,8 +193,8 @@ Tool Transform(const Tool &t, const TurnMap &map)
     else
       s.t0 = t0 + turn, s.t1 = s.t1 + turn;
   }
-  m.direction = map(t.direction), m.origin = map(t.origin), m.path = t.path.Mapped(map);
-  m.spin = map.det() * t.spin;
+  m.origin = map(t.origin);
+  m.motion->Map(map);
   return m;
 }
 
@@ -217,7 +219,8 @@ double ClearanceBack(const Tool &t, const std::vector<Vec2> &points, double tol)
     return false;
   };
   if (!overlaps(0)) return 0;
-  const double speed = std::hypot(t.direction[0], t.direction[1]);
+  const Vec2 d = t.Direction();
+  const double speed = std::hypot(d[0], d[1]);
   if (speed == 0 || overlaps(2 * extent / speed)) return -1;
   double lo = 0, hi = 2 * extent / speed;
   while (hi - lo > 1e-12 * extent / speed) {
@@ -324,7 +327,7 @@ Tool SymmetryWall(const Vec2 &normal, double reach, const std::string &name)
 {
   Tool t;
   t.name = name;
-  t.direction = {0, 0};
+  t.motion = FixedMotion();
   Segment s;
   const Vec2 along = TangentOf(normal); // (its points have no component along the normal: gaps are exact)
   s.a = Scale(along, -reach);

@@ -142,12 +142,12 @@ public:
   void SetStroke(double stroke)
   {
     for (Tool &t : tools_)
-      if (!t.pad) t.stroke = stroke, t.FollowPath();
+      if (!t.Unknown()) t.stroke = stroke, t.FollowPath();
   }
   bool has_pad() const
   {
     for (int k = 0; k < num_dies_ && !dies_removed_; ++k)
-      if (tools_[k].pad) return true;
+      if (tools_[k].Unknown()) return true;
     return false;
   }
   // The force-controlled tool's force along its direction at the end of a step, from the scene's target at its
@@ -172,7 +172,7 @@ public:
   {
     std::string names;
     for (const Tool &t : tools_)
-      if (t.pad) names += (names.empty() ? "" : " and ") + t.name;
+      if (t.Unknown()) names += (names.empty() ? "" : " and ") + t.name;
     return "the force-controlled " + names;
   }
   // The force-controlled tool's stroke increment in the latest solution: an iterate's own, which the caller
@@ -346,11 +346,11 @@ private:
   // The symmetry walls of spec (after the tools) and the nodes that touch them.
   PetscErrorCode SetupWalls(const ContactSpec &spec);
   // The motion per unit stroke of the tool a node touches (or was released from).
-  const Vec2 &Direction(PetscInt node) const { return tools_[tool_of_[node]].direction; }
+  Vec2 Direction(PetscInt node) const { return tools_[tool_of_[node]].Direction(); }
   // The component along its tool's direction of a contact force f_n n + f_l l on a node.
   double ForceAlong(PetscInt node, double fn, double fl) const;
   // Tool k's stroke increment in a step of the scene's stroke dU (a force-controlled tool: its own).
-  double Step(int k, double dU) const { return tools_[k].pad ? pad_step_ : dU; }
+  double Step(int k, double dU) const { return tools_[k].Unknown() ? pad_step_ : dU; }
   // The motion in that step of the tool's point where a node at x touches it (Tool::Velocity: a turning tool's
   // point moves about its centre too; taken linear in the step, as the body's rotations are).
   Vec2 MotionAt(PetscInt node, double dU, const Vec2 &x) const
@@ -362,7 +362,7 @@ private:
   // The same for the node where it is (the step's start, before the body's commit).
   Vec2 Motion(PetscInt node, double dU) const { return MotionAt(node, dU, Position(node)); }
   // How far the tool a node touches turns in that step (radians): its frame turns with it.
-  double TurnIn(PetscInt node, double dU) const { return tools_[tool_of_[node]].spin * Step(tool_of_[node], dU); }
+  double TurnIn(PetscInt node, double dU) const { return tools_[tool_of_[node]].Spin() * Step(tool_of_[node], dU); }
   Vec2 Increment(const PetscScalar *d, PetscInt node) const;
   double NormalReaction(PetscInt node, const PetscScalar *react) const;
   // The normal force increment of a solution with normal reaction reaction_n

@@ -78,7 +78,8 @@ struct Options {
   std::string die_profile;          // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
   double die_angle = 90;            // degrees between the V-die's flanks
   std::string lower_die = "mirror"; // mirror, flat or a profile file drawn as an upper die
-  std::string lower_die_motion = "mirror"; // mirror (up by the stroke) or fixed
+  std::string lower_die_motion = "mirror"; // mirror (up by the stroke), fixed, or path (-lower_die_path)
+  std::vector<double> lower_die_path;      // its path: U, y pairs (mm: its rise at the stroke U), in turn
   std::string model = "auto";              // quarter, half, full, or auto: the quarter where it is exact
   double die_force = 0;              // > 0: the upper die is force-controlled, its punch load rising to this (N/mm)
   double die_offset = 0;             // the first pass's upper die off the y axis along the press's x (mm; full model)

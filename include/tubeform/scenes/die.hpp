@@ -23,10 +23,28 @@ PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die);
 // tube squared on it widens by less than half its radius.
 constexpr double kFloorOverhang = 0.1, kFloorReach = 0.6;
 // Collective: the lower die of -lower_die (the upper die's mirror, a flat floor at y = floor_y, or a profile
-// file drawn as an upper die and mirrored below the tube) with its motion of -lower_die_motion; `full`: both
-// sides of the y axis (the full model).
-PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, const Tool &upper, double floor_y, bool full,
-                             Tool &lower);
+// file drawn as an upper die and mirrored below the tube) with its motion of -lower_die_motion, the upper die's
+// motion with it; `full`: both sides of the y axis (the full model).
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, Tool &upper, double floor_y, bool full, Tool &lower);
+
+// Collective: tool t's motion of the registry's kind `kind` made from `spec` (tool/motion.hpp), or an error on
+// every rank naming `option`.
+PetscErrorCode SetMotion(MPI_Comm comm, const char *option, const std::string &kind, const MotionSpec &spec, Tool &t);
+// Collective: the lower die's motion of -lower_die_motion, and the upper die's that goes with it (die_motion.cpp).
+PetscErrorCode SetLowerMotion(MPI_Comm comm, const Options &o, Tool &upper, Tool &lower);
+// The lower die's motion of -lower_die_motion as drawn (up: y), or the mirror's where the options make none (the
+// run refuses them: SetLowerMotion); and the upper die's travel per unit U that goes with it (2 over a fixed one).
+MotionHandle LowerDieMotion(const Options &o);
+double UpperTravel(const Options &o);
+// The lower die's motion keeps the dies closing by 2 U (mirror, fixed): the closed forms of their reach hold.
+bool LowerDieClosing(const Options &o);
+// The strokes where the first pass's dies' motions turn (Motion::Kinks: the upper die's path, the lower die's
+// motion in the half and full models): the load path's kinks (an increment ends there).
+std::vector<double> PressKinks(const Options &opt);
+// Collective: the first pass's upper die (tools[0]) on its own path (-die_path, turning about -die_pivot), and
+// the dies that press by a force: the upper one (-die_force), the side dies (tools from first_side on,
+// -side_force).
+PetscErrorCode SetPressMotions(MPI_Comm comm, const Options &opt, size_t first_side, std::vector<Tool> &tools);
 
 // The flattening scene's plate reaches past the ring on both sides (fractions of Ro): a crushed ring widens by
 // much less than half its radius.

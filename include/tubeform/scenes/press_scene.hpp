@@ -87,6 +87,7 @@ private:
   RotationHold hold_;
   double stroke_ = 0, back_ = 0;
   StrokePath path_;           // the first press's (-stroke_path, or straight to the stroke)
+  MotionHandle lower_motion_; // its lower die's motion (-lower_die_motion) at the stroke U, for the tools' work
   int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
   bool unloading_ = false;
   Vec reversed_ = nullptr;

@@ -30,12 +30,6 @@ public:
     at_ = {0.0, die.end()};
     travel_ = die.end();
   }
-  // The die that follows it (the upper one) takes the path, moving along its first piece.
-  void Guide(Tool &die) const
-  {
-    die.path = die_;
-    die.FollowPath();
-  }
   // The press's U at stroke s (the die's own path: half its depth, -y / 2) and the die's sideways displacement.
   double U(double s) const { return die_.empty() ? s : -0.5 * die_.At(s)[1]; }
   double Sideways(double s) const { return die_.empty() ? 0.0 : die_.At(s)[0]; }
@@ -62,11 +56,13 @@ public:
     }
     return at_.back();
   }
-  // The lambdas of the turns.
-  std::vector<double> Kinks() const
+  // The lambdas of the turns, and of the tools' kinks at `strokes` (Motion::Kinks, before the travel's end: on a
+  // straight path or the die's own, whose stroke runs at the share lambda of the travel).
+  std::vector<double> Kinks(const std::vector<double> &strokes) const
   {
     std::vector<double> k;
-    for (double s : die_.Turns()) k.push_back(s / travel_);
+    for (double s : strokes)
+      if (s < travel_) k.push_back(s / travel_);
     double done = 0;
     for (size_t i = 1; i + 1 < at_.size(); ++i) k.push_back((done += std::abs(at_[i] - at_[i - 1])) / travel_);
     return k;

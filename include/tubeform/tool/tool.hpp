@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/tool/motion.hpp"
 #include "tubeform/tool/path.hpp"
+#include "tubeform/tool/turn_map.hpp"
 
 namespace tf {
 
@@ -43,28 +45,27 @@ class Tool {
 public:
   std::string name;
   std::vector<Segment> segments; // in the tool's frame at stroke 0
-  Vec2 direction{0, -1};         // motion per unit stroke
   double stroke = 0;             // current stroke
-  bool pad = false;              // force-controlled: its stroke is an unknown of each increment (ContactSet)
   Vec2 origin{};                 // the frame's origin at stroke 0: the tube's centre, or moved with the die (MovedBack)
-  ToolPath path;                 // a path of its own (-die_path), or none: the stroke along `direction`
-  double spin = 0;               // its turn about the frame's origin per unit stroke (a path that turns it)
+  MotionHandle motion;           // how the stroke moves it (tool/motion.hpp; by default straight down)
 
   // Where the stroke has moved the tool from its drawing.
-  Vec2 Offset() const { return path.empty() ? Vec2{stroke * direction[0], stroke * direction[1]} : path.At(stroke); }
+  Vec2 Offset() const { return motion->Offset(stroke); }
   // How far the stroke has turned it about its frame's origin (radians, counter-clockwise; 0 off a turning path).
-  double Turn() const { return path.empty() ? 0.0 : path.Turn(stroke); }
+  double Turn() const { return motion->Turn(stroke); }
+  // Its motion per unit stroke on the piece it follows, and its turn about the frame's origin.
+  Vec2 Direction() const { return motion->Direction(); }
+  double Spin() const { return motion->Spin(); }
+  // Force-controlled: its stroke is an unknown of each increment (ContactSet).
+  bool Unknown() const { return motion->Unknown(); }
   // A point of the drawing where the tool now is: turned about the frame's origin, then moved by the offset.
   Vec2 Placed(const Vec2 &p) const;
   // A direction of the drawing where the tool now is (turned).
   Vec2 Oriented(const Vec2 &v) const;
-  // The motion per unit stroke of the tool's point now at x: along `direction`, and about the frame's origin.
+  // The motion per unit stroke of the tool's point now at x: along its direction, and about the frame's origin.
   Vec2 Velocity(const Vec2 &x) const;
   // A tool on a path of its own moves and turns along the piece ahead of its stroke (per unit stroke).
-  void FollowPath()
-  {
-    if (!path.empty()) direction = path.Motion(stroke), spin = path.Spin(stroke);
-  }
+  void FollowPath() { motion->Follow(stroke); }
   // Closest point of the surface at the current stroke. Points whose
   // projection falls outside every segment get segment -1.
   Projection Project(const Vec2 &x) const;
@@ -115,25 +116,6 @@ Tool BuildVDie(double ro, double r_apex, double u_close = 0, double r_edge = 0, 
 // `floor` a support with the body above it.
 Tool BuildFlatPlate(double y0, double x0, double x1, bool floor = false);
 
-// One of the eight maps of a square onto itself: the reflection y -> -y (if `reflect`), then q quarter turns
-// counter-clockwise about the origin; exact: it only swaps and negates coordinates. Then, without a reflection, a
-// turn by `angle` (radians, counter-clockwise; 0 for the square's maps): a press turned by any angle.
-struct TurnMap {
-  bool reflect = false;
-  int q = 0;          // 0..3
-  double angle = 0.0; // |angle| < pi / 2 (the quarter turns are q's)
-
-  static TurnMap Turn(int quarters) { return {false, ((quarters % 4) + 4) % 4}; }
-  // The turn by `radians`: its whole quarter turns exact, the rest by angle.
-  static TurnMap TurnBy(double radians);
-  bool identity() const { return !reflect && q == 0 && angle == 0; }
-  Vec2 operator()(const Vec2 &v) const;
-  // The map that undoes this one (a reflection undoes itself).
-  TurnMap Inverse() const { return reflect ? *this : TurnMap{false, ((4 - q) % 4), -angle}; }
-  // Its determinant: -1 for a reflection (a moment changes sign).
-  double det() const { return reflect ? -1.0 : 1.0; }
-};
-
 // A tool mapped by a TurnMap: its segments (their order kept), the body's side (the normals) and its motion.
 Tool Transform(const Tool &t, const TurnMap &map);
 // A tool moved by d (its segments and its frame's origin).
@@ -141,7 +123,8 @@ Tool Shifted(const Tool &t, const Vec2 &d);
 // A tool moved back along its motion by `back` units of stroke (its segments at -back x direction).
 inline Tool MovedBack(const Tool &t, double back)
 {
-  return Shifted(t, {-back * t.direction[0], -back * t.direction[1]});
+  const Vec2 d = t.Direction();
+  return Shifted(t, {-back * d[0], -back * d[1]});
 }
 // How far back along its motion (units of stroke, >= 0) a tool must start so that none of `points` lies more
 // than `tol` inside it: 0 if none does where it is; else the least such distance, to 1e-12 of the points'
@@ -156,7 +139,7 @@ Tool MirrorX(const Tool &t);
 // indices stay): the whole tool a full model presses with.
 Tool BothSides(const Tool &t);
 
-// A symmetry plane through the origin as a wall that does not move (direction 0): the line of the points x with
+// A symmetry plane through the origin as a wall that does not move (a fixed motion): the line of the points x with
 // x . normal = 0, from -reach to reach along it, the body on the side `normal` (a unit vector) points to.
 Tool SymmetryWall(const Vec2 &normal, double reach, const std::string &name);
 

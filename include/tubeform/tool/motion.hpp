@@ -1,0 +1,92 @@
+// How a rigid tool moves (docs/dies.md): where its stroke has moved it, how far it has turned it, its motion per
+// unit stroke on the piece it follows, whether its stroke is an unknown found from a force. One kind per file
+// (src/tool/motion_*.cpp), each named in the registry (motion_registry.cpp). Pure geometry, no PETSc.
+//
+// A motion's only state between increments is its tool's stroke (Tool::stroke, which the contact set persists for
+// a restart) and the piece it follows, which Follow takes again from the stroke at each increment's start
+// (ContactSet::SetStroke); the rest is its configuration, made again from the options on a restart.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tubeform/core/core.hpp"
+#include "tubeform/tool/path.hpp"
+#include "tubeform/tool/turn_map.hpp"
+
+namespace tf {
+
+class Motion {
+public:
+  virtual ~Motion() = default;
+  virtual std::unique_ptr<Motion> Clone() const = 0;
+  // Its name in the registry (fixed, stroke, path, force, ...).
+  virtual std::string Kind() const = 0;
+  // Where the stroke s has moved the tool from its drawing.
+  virtual Vec2 Offset(double s) const = 0;
+  // How far the stroke s has turned it about its frame's origin (radians, counter-clockwise).
+  virtual double Turn(double /*s*/) const { return 0.0; }
+  // Per unit stroke on the piece it follows: the motion of its frame's origin, and its turn about it.
+  virtual Vec2 Direction() const = 0;
+  virtual double Spin() const { return 0.0; }
+  // Takes the piece a step from stroke s runs on (a step never crosses a kink).
+  virtual void Follow(double /*s*/) {}
+  // The strokes where it changes piece: an increment ends there (Scene's LoadPath::kinks).
+  virtual std::vector<double> Kinks() const { return {}; }
+  // Its stroke is an unknown of each increment, found from the force it presses with (force control), not the
+  // scene's stroke.
+  virtual bool Unknown() const { return false; }
+  // The same motion for the tool drawn mapped by `map` (its directions mapped, its turns with the orientation).
+  virtual void Map(const TurnMap &map) = 0;
+};
+
+// A motion held by value: copied with its tool (the second pass's dies, mirrored and side dies are copies).
+class MotionHandle {
+public:
+  MotionHandle(); // a stroke straight down: (0, -1) per unit stroke
+  MotionHandle(std::unique_ptr<Motion> m) : m_(std::move(m)) {}
+  MotionHandle(const MotionHandle &o) : m_(o.m_->Clone()) {}
+  MotionHandle(MotionHandle &&) = default;
+  MotionHandle &operator=(const MotionHandle &o)
+  {
+    if (this != &o) m_ = o.m_->Clone();
+    return *this;
+  }
+  MotionHandle &operator=(MotionHandle &&) = default;
+  Motion *operator->() { return m_.get(); }
+  const Motion *operator->() const { return m_.get(); }
+  const Motion &operator*() const { return *m_; }
+
+private:
+  std::unique_ptr<Motion> m_;
+};
+
+// The kinds, one file each.
+// fixed: stays where it is drawn (motion_fixed.cpp).
+std::unique_ptr<Motion> FixedMotion();
+// stroke: moves by the stroke along `direction` per unit stroke (motion_stroke.cpp).
+std::unique_ptr<Motion> StrokeMotion(const Vec2 &direction);
+// path: along a path of its own, turning about its frame's origin as the path says (motion_path.cpp).
+std::unique_ptr<Motion> PathMotion(const ToolPath &path);
+// force: along `direction`, its stroke an unknown found from the force it presses with (motion_force.cpp).
+std::unique_ptr<Motion> ForceMotion(const Vec2 &direction);
+
+// schedule: through displacements `to` at strokes `at` (rising from 0), standing after the last; "" or why not
+// (motion_schedule.cpp).
+std::string ScheduleMotion(const std::vector<double> &at, const std::vector<Vec2> &to, MotionHandle &m);
+
+// What a kind of motion is made from (each kind reads what it needs).
+struct MotionSpec {
+  Vec2 direction{0, -1};  // stroke, force: per unit stroke
+  ToolPath path;          // path: its points and turns
+  std::vector<double> at; // schedule: the strokes
+  std::vector<Vec2> to;   // and the displacements there
+};
+// The registry: a motion of the kind named `kind` from `spec` into `m`; "" or why not (an unknown kind names the
+// known ones; a kind refuses a spec it cannot move by: a path with no points, a force along no direction).
+std::string MakeMotion(const std::string &kind, const MotionSpec &spec, MotionHandle &m);
+// The registered kinds, in the registry's order.
+std::vector<std::string> MotionKinds();
+
+} // namespace tf

@@ -1,0 +1,85 @@
+// A tool moved through displacements given at strokes (-lower_die_motion path, -lower_die_path): from (0, 0) at
+// stroke 0 through each point at its stroke, linear in the stroke between them; past the last stroke it stays
+// there. Each stroke is a kink: a step runs on one piece (Follow), ending at the next stroke.
+#include <cmath>
+#include <cstdio>
+
+#include "tubeform/tool/motion.hpp"
+
+namespace tf {
+
+namespace {
+std::string Number(double v)
+{
+  char s[32];
+  std::snprintf(s, sizeof s, "%g", v);
+  return s;
+}
+
+class Schedule : public Motion {
+public:
+  Schedule(const std::vector<double> &at, const std::vector<Vec2> &to) : at_{0.0}, to_{{0.0, 0.0}}
+  {
+    at_.insert(at_.end(), at.begin(), at.end());
+    to_.insert(to_.end(), to.begin(), to.end());
+    Follow(0);
+  }
+  std::unique_ptr<Motion> Clone() const override { return std::make_unique<Schedule>(*this); }
+  std::string Kind() const override { return "schedule"; }
+  Vec2 Offset(double s) const override
+  {
+    const size_t k = Piece(s);
+    if (k + 1 == at_.size()) return to_.back();
+    const Vec2 v = Slope(k);
+    return {to_[k][0] + (s - at_[k]) * v[0], to_[k][1] + (s - at_[k]) * v[1]};
+  }
+  Vec2 Direction() const override { return d_; }
+  void Follow(double s) override
+  {
+    const size_t k = Piece(s);
+    d_ = k + 1 == at_.size() ? Vec2{0.0, 0.0} : Slope(k);
+  }
+  std::vector<double> Kinks() const override { return {at_.begin() + 1, at_.end()}; }
+  void Map(const TurnMap &map) override
+  {
+    for (Vec2 &p : to_) p = map(p);
+    d_ = map(d_);
+  }
+
+private:
+  std::vector<double> at_; // the strokes, from 0
+  std::vector<Vec2> to_;   // the displacements there
+  Vec2 d_{};               // the motion per unit stroke on the piece followed
+
+  // A stroke this close to one of the strokes (relative to the last) is at it: a step from there runs on the piece
+  // after it (the stroke at a kink is the commits' sum, within round-off of the given one).
+  static constexpr double kAtStroke = 1e-12;
+  // The piece a step from s runs on: at_.size() - 1 past the last stroke (standing).
+  size_t Piece(double s) const
+  {
+    size_t k = 0;
+    while (k + 1 < at_.size() && s >= at_[k + 1] - kAtStroke * at_.back()) ++k;
+    return k;
+  }
+  Vec2 Slope(size_t k) const
+  {
+    const double ds = at_[k + 1] - at_[k];
+    return {(to_[k + 1][0] - to_[k][0]) / ds, (to_[k + 1][1] - to_[k][1]) / ds};
+  }
+};
+} // namespace
+
+std::string ScheduleMotion(const std::vector<double> &at, const std::vector<Vec2> &to, MotionHandle &m)
+{
+  if (at.empty() || at.size() != to.size()) return "give a stroke and a displacement for each point";
+  for (size_t k = 0; k < at.size(); ++k) {
+    const double before = k ? at[k - 1] : 0.0;
+    if (!(std::isfinite(at[k]) && at[k] > before && std::isfinite(to[k][0]) && std::isfinite(to[k][1])))
+      return "the strokes must rise from 0 and every number be finite (stroke " + Number(at[k]) + " after " +
+             Number(before) + ")";
+  }
+  m = MotionHandle(std::make_unique<Schedule>(at, to));
+  return "";
+}
+
+} // namespace tf
