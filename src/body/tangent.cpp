@@ -12,18 +12,6 @@
 namespace tf {
 
 namespace {
-// The largest Frobenius norm over a cell's points of the difference of two velocity gradients (b: nullptr is 0).
-double Drift(const fe::Gradient *a, const fe::Gradient *b)
-{
-  double d = 0;
-  for (int g = 0; g < fe::kGauss; ++g) {
-    double sum = 0;
-    for (int k = 0; k < 4; ++k) sum += std::pow(a[g][k] - (b ? b[g][k] : 0.0), 2);
-    d = std::max(d, std::sqrt(sum));
-  }
-  return d;
-}
-
 // a - b
 fe::ElemMat Difference(const fe::ElemMat &a, const fe::ElemMat &b)
 {
@@ -146,18 +134,9 @@ PetscErrorCode Body::AssembleIterateTangent(System &system)
   PetscFunctionBeginUser;
   PetscCheck(last_trial_.valid, comm(), PETSC_ERR_ORDER, "the iterate's tangent needs its forces first (TrialForce)");
   PetscCall(PetscLogEventBegin(Log::assemble, 0, 0, 0, 0));
-  // A cell's block stays while the velocity gradients it was taken at (the
-  // start's: 0) lie within kTangentDrift / (K/G) of the iterate's; else it
-  // takes the iterate's tangent, or the start's if that one is within.
-  const double bulk_shear = BulkToShear();
-  long changed = 0;
-  for (PetscInt e = 0; e < n; ++e) {
-    const fe::Gradient *now = &last_trial_.grad[fe::kGauss * e];
-    const fe::Gradient *at = block_[e] == kBlockIterate ? &taken_at_[fe::kGauss * e] : nullptr;
-    if (block_[e] != kBlockOutdated && bulk_shear * Drift(now, at) <= kTangentDrift) continue;
-    act[e] = bulk_shear * Drift(now, nullptr) > kTangentDrift ? kIterate : kStart;
-    ++changed;
-  }
+  // Every cell takes the iterate's tangent (IterateTangent: K/G past kNearlyIncompressible).
+  const long changed = n;
+  for (PetscInt e = 0; e < n; ++e) act[e] = kIterate;
   bool rebuild = 2 * changed > (long)n; // (as AssembleTangent)
   PetscCall(system.BeginBody(rebuild));
   for (PetscInt e = 0; e < n; ++e) {

@@ -27,15 +27,18 @@ namespace tf {
 // removes all but the step's second-order part of their force; a second
 // changed the load by less than 1e-4 on the default preset).
 constexpr int kModeCorrections = 1;
-// Midpoint kinematics: a cell's tangent in the equilibrium corrections is
-// taken at the iterate (Body::AssembleIterateTangent) when the velocity
-// gradients it was taken at (the start's: 0) differ from the iterate's by more
-// than this over K/G (Frobenius norm, largest over the cell's points): its
-// columns' volumetric strain is off by about that fraction of the deviatoric
-// one (K multiplies it, G the rest). At 0.03 the default case at nu 0.4999
-// takes as many factorizations as with the tangent taken at every iterate
-// (2,050 against 2,048; 0.1: 2,157), and at nu 0.34 none is taken (docs/theory.md, 5a).
-constexpr double kTangentDrift = 0.03;
+// Midpoint kinematics: the equilibrium corrections take the tangent at their
+// iterate (Body::AssembleIterateTangent) in every cell where the bulk modulus
+// is at least this many times the shear modulus (nu >= 0.45): the start's
+// tangent is off in the volumetric strain by the order of the strain
+// increment, which K multiplies; from K/G 10 that error is an order above the
+// deviatoric one, and at nu 0.49 (K/G 50) the start's tangent took 5.2
+// factorizations an increment against 3.8. Below it the start's tangent
+// stays (the iterate's costs 23 % more CPU on the default case at nu 0.34 for
+// 1.4 % fewer factorizations). A constant of the material, not a threshold on
+// the iterate: a choice round-off could flip cell by cell parted runs of one
+// thin tube on two OpenBLAS kernels (docs/theory.md, 5a).
+constexpr double kNearlyIncompressible = 10;
 
 struct BodyParams {
   fe::Formulation element = fe::Formulation::BBar;
@@ -73,12 +76,14 @@ public:
   // cell tangents up to date without assembling them (QM6: the condensations
   // the iterate's forces take); then, after TrialForce of the iterate,
   // AssembleIterateTangent (collective; before other terms) puts K into
-  // `system`: in the cells where the start's tangent (or the one a cell took at
-  // an earlier iterate) is off by more than kTangentDrift, the start's rows on
-  // the iterate's configuration with the derivative of its mid-increment
-  // strain in the columns (fe/midpoint.hpp; unsymmetric). With forward
+  // `system`: in every cell, the start's rows on the iterate's configuration
+  // with the derivative of its mid-increment strain in the columns
+  // (fe/midpoint.hpp; unsymmetric), where K/G reaches kNearlyIncompressible. With forward
   // kinematics the start's tangent linearizes the strain exactly: AssembleTangent.
-  bool IterateTangent() const { return prm_.kinematics == ObjectiveScheme::Midpoint; }
+  bool IterateTangent() const
+  {
+    return prm_.kinematics == ObjectiveScheme::Midpoint && BulkToShear() >= kNearlyIncompressible;
+  }
   PetscErrorCode UpdateTangents(System &system);
   PetscErrorCode AssembleIterateTangent(System &system);
   // What the trial increment du would do at the Gauss points: r1 (yield
