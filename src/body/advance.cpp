@@ -80,7 +80,7 @@ void Body::SelectCondensation(PetscInt e, const double xs[2 * fe::kNodes], const
 }
 
 bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState *to, Advanced &acc,
-                       fe::Condensation *used) const
+                       fe::Condensation *used, fe::Gradient *grad) const
 {
   fe::QuadGeometry mid, moved;
   double xe[2 * fe::kNodes], xm[2 * fe::kNodes], xs[2 * fe::kNodes];
@@ -125,6 +125,8 @@ bool Body::AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState 
       else
         cells_.Kinematics((int)e, xe, *geo, g, due, deps, omega);
       to[g] = AdvancePoint(fe::kGauss * e + g, deps, omega, r, geo->wdet[g], sink);
+      // (zz is the mean dilatation's part of xx and yy; omega = (L_xy - L_yx) / 2)
+      if (grad) grad[g] = {deps[0] - deps[2], 0.5 * deps[3] + omega, 0.5 * deps[3] - omega, deps[1] - deps[2]};
     }
     // A fixed number of corrections (not a tolerance): the forces are then a
     // smooth function of the nodal increments, which the Newton iterations of
@@ -228,13 +230,14 @@ PetscErrorCode Body::TrialForce(Vec du_local, double r, Vec f_local, double *mag
   last_trial_.r = r;
   last_trial_.states.resize(state_.size());
   if (cells_.has_modes()) last_trial_.conds.resize(mesh_->num_cells);
+  last_trial_.grad.assign(state_.size(), fe::Gradient{});
   for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
     fe::ElemVec due, fe_;
     PointState *to = &last_trial_.states[fe::kGauss * e];
     Voigt s[fe::kGauss];
     fe::Condensation cond;
     GatherCell(*mesh_, e, du, due);
-    const bool advanced = AdvanceCell(e, due, r, to, acc, &cond);
+    const bool advanced = AdvanceCell(e, due, r, to, acc, &cond, &last_trial_.grad[fe::kGauss * e]);
     if (cells_.has_modes()) last_trial_.conds[e] = cond;
     if (!advanced) { // inverted: the next assembly reports it
       for (int g = 0; g < fe::kGauss; ++g) to[g] = state_[fe::kGauss * e + g];

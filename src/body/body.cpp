@@ -45,6 +45,9 @@ PetscErrorCode Body::Setup(const Mesh &mesh, const BodyParams &prm)
   onset_.assign(state_.size(), PointState{});
   ke_.resize(mesh.num_cells);
   ke_stale_.assign(mesh.num_cells, 1);
+  block_.assign(mesh.num_cells, kBlockStart);
+  held_.resize(mesh.num_cells);
+  taken_at_.resize(state_.size());
   x_ = mesh.x0;
   u_.assign(2 * mesh.num_nodes, 0.0);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -73,77 +76,6 @@ const fe::QuadGeometry *Body::CellGeometry(PetscInt e, double xe[2 * fe::kNodes]
     geometry_.valid = true;
   }
   return geometry_.ok[e] ? &geometry_.geo[e] : nullptr;
-}
-
-PetscErrorCode Body::AssembleTangent(System &system)
-{
-  fe::ElemMat old;
-  Mat4 c[fe::kGauss];
-  Voigt s[fe::kGauss];
-  double xe[2 * fe::kNodes];
-  PetscInt bad = -1, anybad;
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(Log::assemble, 0, 0, 0, 0));
-  // Rebuilt when most cells changed (a new configuration after a commit): a
-  // kept matrix updated by differences would carry their round-off along.
-  bool rebuild = 2 * std::count(ke_stale_.begin(), ke_stale_.end(), 1) > (long)mesh_->num_cells;
-  PetscCall(system.BeginBody(rebuild));
-  for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
-    const bool stale = ke_stale_[e];
-    if (stale) {
-      old = ke_[e];
-      const fe::QuadGeometry *geo = CellGeometry(e, xe);
-      for (int g = 0; g < fe::kGauss; ++g) {
-        const size_t i = fe::kGauss * e + g;
-        c[g] = fraction_[i] < 1 ? TransitionTangent(i) : material_->Tangent(state_[i]);
-        s[g] = state_[i].sigma;
-      }
-      if (!geo || !cells_.Stiffness((int)e, xe, *geo, c, s, ke_[e])) {
-        bad = mesh_->cell_orig[e];
-        ke_[e] = old; // still stale
-        continue;
-      }
-      ke_stale_[e] = 0;
-    }
-    if (rebuild) {
-      PetscCall(system.AddElement(e, ke_[e]));
-    } else if (stale) {
-      for (int r = 0; r < 2 * fe::kNodes; ++r)
-        for (int k = 0; k < 2 * fe::kNodes; ++k) old[r][k] = ke_[e][r][k] - old[r][k];
-      PetscCall(system.AddElement(e, old));
-    }
-  }
-  PetscCall(system.EndBody());
-  PetscCall(MPIU_Allreduce(&bad, &anybad, 1, MPIU_INT, MPI_MAX, comm()));
-  if (anybad >= 0) system.InvalidateBody(); // it lacks the inverted cell's block
-  PetscCheck(
-    anybad < 0, comm(), PETSC_ERR_USER_INPUT,
-    "element %d is inverted (det J <= 0): the increment is too large (lower -rmin_deps) or the mesh is tangled",
-    (int)anybad);
-  PetscCall(PetscLogEventEnd(Log::assemble, 0, 0, 0, 0));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PointState Body::OnsetState(const PointState &elastic, const Voigt &deps, double omega, double m) const
-{
-  PointState on = elastic;
-  const StressRotation turn(ObjectiveScheme::Forward, m * omega);
-  turn.Apply(on.sigma);
-  for (int k = 0; k < material_->backstresses(); ++k) turn.Apply(on.back[k]);
-  if (material_->anisotropic()) on.frame += turn.Angle();
-  material_->Update(on, Scaled(deps, m));
-  on.plastic = true;
-  return on;
-}
-
-Mat4 Body::TransitionTangent(const PointState &elastic, const PointState &onset, double m) const
-{
-  const Mat4 de = material_->Tangent(elastic), dep = material_->Tangent(onset);
-  Mat4 c;
-  for (int r = 0; r < 4; ++r)
-    for (int k = 0; k < 4; ++k) c[r][k] = m * de[r][k] + (1 - m) * dep[r][k];
-  return c;
 }
 
 bool Body::OwnLoading(size_t i, const Voigt &deps) const

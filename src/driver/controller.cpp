@@ -55,12 +55,23 @@ PetscErrorCode Controller::Solve(double lambda, double dl, Vec du, double &dU, I
   // the tools' prescribed motion and friction rows first, the scene's supports
   // and loads, the inertia load; for an equilibrium iterate, the start's forces
   // against the iterate's internal force.
-  PetscCall(m_.system.Begin());
-  PetscCall(m_.body.AssembleTangent(m_.system));
   // The state of the last iterate with this assembly's element state: QM6's
   // modes follow the condensation of the tangent just assembled (points that
   // changed their loading state change it), so the forces and K agree.
-  if (Equilibrium() && have_iter_) PetscCall(TrialState(iter_));
+  // With midpoint kinematics a correction's tangent is taken at its iterate
+  // where the start's is off (a term of the order of the strain increment,
+  // which the bulk modulus of a nearly incompressible wall makes as large as
+  // the rest: docs/theory.md, 5a), from the iterate's forces.
+  const bool iterate = Equilibrium() && have_iter_;
+  PetscCall(m_.system.Begin());
+  if (iterate && m_.body.IterateTangent()) {
+    PetscCall(m_.body.UpdateTangents(m_.system));
+    PetscCall(TrialState(iter_));
+    PetscCall(m_.body.AssembleIterateTangent(m_.system));
+  } else {
+    PetscCall(m_.body.AssembleTangent(m_.system));
+    if (iterate) PetscCall(TrialState(iter_));
+  }
   if (dt > 0) PetscCall(inertia_->AddMass(m_.system, dt));
   dU = scene_.ToolStroke(lambda + dl) - scene_.ToolStroke(lambda);
   if (ContactActive()) {

@@ -19,6 +19,14 @@ bool CellFormulation::Stiffness(int e, const double xe[2 * kNodes], const QuadGe
   return true;
 }
 
+bool CellFormulation::MidpointStiffness(const QuadGeometry &geo, const Mat4 c[kGauss], const Voigt s[kGauss],
+                                        const MidpointColumns &m, ElemMat &ke) const
+{
+  if (has_modes()) return QM6Stiffness(geo, c, s, m, ke, mean_dilatation());
+  MidpointElementStiffness(geo, kind_, c, s, m, ke);
+  return true;
+}
+
 void CellFormulation::Kinematics(int e, const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du,
                                  Voigt &deps, double &omega) const
 {

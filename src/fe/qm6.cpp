@@ -101,6 +101,38 @@ bool Solve4(double a[kInternal][kInternal], double x[kInternal][N])
     }
   return true;
 }
+
+// cond = -Kii^{-1} Kic of the 12-dof k, then K* = Kcc + Kci cond (and Kii^{-1}
+// with kii_inv); false when Kii is singular.
+bool Condense(const double (&k)[kAll][kAll], ElemMat &ke, Condensation &cond, ModeMatrix *kii_inv)
+{
+  double kii[kInternal][kInternal], x[kInternal][kDofs];
+  for (int i = 0; i < kInternal; ++i) {
+    for (int j = 0; j < kInternal; ++j) kii[i][j] = k[kDofs + i][kDofs + j];
+    for (int j = 0; j < kDofs; ++j) x[i][j] = k[kDofs + i][j];
+  }
+  if (kii_inv) {
+    double a[kInternal][kInternal], id[kInternal][kInternal] = {};
+    for (int i = 0; i < kInternal; ++i) {
+      id[i][i] = 1;
+      for (int j = 0; j < kInternal; ++j) a[i][j] = kii[i][j];
+    }
+    if (!Solve4<kInternal>(a, id)) return false;
+    for (int i = 0; i < kInternal; ++i)
+      for (int j = 0; j < kInternal; ++j) (*kii_inv)[i][j] = id[i][j];
+  }
+  if (!Solve4<kDofs>(kii, x)) return false;
+  for (int i = 0; i < kInternal; ++i)
+    for (int j = 0; j < kDofs; ++j) cond[i][j] = -x[i][j];
+  for (int i = 0; i < kDofs; ++i)
+    for (int j = 0; j < kDofs; ++j) {
+      double sum = k[i][j];
+      for (int m = 0; m < kInternal; ++m) sum += k[i][kDofs + m] * cond[m][j];
+      ke[i][j] = sum;
+    }
+  return true;
+}
+
 } // namespace
 
 bool QM6Stiffness(const double xe[2 * kNodes], const Mat4 tangent[kGauss], const Voigt sigma[kGauss], bool geometric,
@@ -139,32 +171,43 @@ bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Ma
         for (int comp = 0; comp < 2; ++comp) k[Dof(s, comp)][Dof(t, comp)] += kst;
       }
   }
-  // cond = -Kii^{-1} Kic, then K* = Kcc + Kci cond.
-  double kii[kInternal][kInternal], x[kInternal][kDofs];
-  for (int i = 0; i < kInternal; ++i) {
-    for (int j = 0; j < kInternal; ++j) kii[i][j] = k[kDofs + i][kDofs + j];
-    for (int j = 0; j < kDofs; ++j) x[i][j] = k[kDofs + i][j];
-  }
-  if (kii_inv) {
-    double a[kInternal][kInternal], id[kInternal][kInternal] = {};
-    for (int i = 0; i < kInternal; ++i) {
-      id[i][i] = 1;
-      for (int j = 0; j < kInternal; ++j) a[i][j] = kii[i][j];
+  return Condense(k, ke, cond, kii_inv);
+}
+
+bool QM6Stiffness(const QuadGeometry &rows, const Mat4 tangent[kGauss], const Voigt sigma[kGauss],
+                  const MidpointColumns &m, ElemMat &ke, bool mean_dilatation)
+{
+  Gradients gr, gm;
+  ComputeGradients(rows, gr);
+  ComputeGradients(m.mid, gm);
+  double k[kAll][kAll] = {};
+  for (int g = 0; g < kGauss; ++g) {
+    double bl[kVoigt][kAll], br[kVoigt][kAll];
+    StrainMatrix12(gr, g, bl, mean_dilatation);
+    for (int s = 0; s < kShapes; ++s) {
+      double col[kVoigt][2];
+      if (s < kNodes)
+        NodeStrainColumns(m, g, s, mean_dilatation, col);
+      else
+        ModeStrainColumns(gm.g[g][s], mean_dilatation, col);
+      for (int r = 0; r < kVoigt; ++r)
+        for (int c = 0; c < 2; ++c) br[r][Dof(s, c)] = col[r][c];
     }
-    if (!Solve4<kInternal>(a, id)) return false;
-    for (int i = 0; i < kInternal; ++i)
-      for (int j = 0; j < kInternal; ++j) (*kii_inv)[i][j] = id[i][j];
+    // k += w det J  B12^T (C - Q) B12_mid
+    const Mat4 c = JaumannTangent(tangent[g], sigma[g], true);
+    if (mean_dilatation)
+      AddBtCB(bl, c, br, gr.wdet[g], k);
+    else
+      AddBtCBPlainLeft(bl, kComponent12, c, br, gr.wdet[g], k);
+    // Initial-stress stiffness (grad P_s . sigma . grad P_t) I over nodes and modes alike.
+    for (int s = 0; s < kShapes; ++s)
+      for (int t = 0; t < kShapes; ++t) {
+        const double kst = gr.wdet[g] * InitialStress(gr.g[g][s], gr.g[g][t], sigma[g]);
+        for (int comp = 0; comp < 2; ++comp) k[Dof(s, comp)][Dof(t, comp)] += kst;
+      }
   }
-  if (!Solve4<kDofs>(kii, x)) return false;
-  for (int i = 0; i < kInternal; ++i)
-    for (int j = 0; j < kDofs; ++j) cond[i][j] = -x[i][j];
-  for (int i = 0; i < kDofs; ++i)
-    for (int j = 0; j < kDofs; ++j) {
-      double sum = k[i][j];
-      for (int m = 0; m < kInternal; ++m) sum += k[i][kDofs + m] * cond[m][j];
-      ke[i][j] = sum;
-    }
-  return true;
+  Condensation cond;
+  return Condense(k, ke, cond, nullptr);
 }
 
 bool QM6Kinematics(const double xe[2 * kNodes], int g, const ElemVec &du, const InternalVec &alpha, Voigt &deps,

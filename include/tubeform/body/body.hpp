@@ -27,6 +27,18 @@ namespace tf {
 // removes all but the step's second-order part of their force; a second
 // changed the load by less than 1e-4 on the default preset).
 constexpr int kModeCorrections = 1;
+// Midpoint kinematics: the equilibrium corrections take the tangent at their
+// iterate (Body::AssembleIterateTangent) in every cell where the bulk modulus
+// is at least this many times the shear modulus (nu >= 0.45): the start's
+// tangent is off in the volumetric strain by the order of the strain
+// increment, which K multiplies; from K/G 10 that error is an order above the
+// deviatoric one, and at nu 0.49 (K/G 50) the start's tangent took 5.2
+// factorizations an increment against 3.8. Below it the start's tangent
+// stays (the iterate's costs 23 % more CPU on the default case at nu 0.34 for
+// 1.4 % fewer factorizations). A constant of the material, not a threshold on
+// the iterate: a choice round-off could flip cell by cell parted runs of one
+// thin tube on two OpenBLAS kernels (docs/theory.md, 5a).
+constexpr double kNearlyIncompressible = 10;
 
 struct BodyParams {
   fe::Formulation element = fe::Formulation::BBar;
@@ -59,6 +71,21 @@ public:
   // before other terms): the system's kept body matrix, updated by the cells
   // whose tangent changed since the last call, or rebuilt.
   PetscErrorCode AssembleTangent(System &system);
+  // With midpoint kinematics an equilibrium correction takes the tangent at its
+  // iterate (docs/theory.md, 5a): UpdateTangents (collective) brings the start's
+  // cell tangents up to date without assembling them (QM6: the condensations
+  // the iterate's forces take); then, after TrialForce of the iterate,
+  // AssembleIterateTangent (collective; before other terms) puts K into
+  // `system`: in every cell, the start's rows on the iterate's configuration
+  // with the derivative of its mid-increment strain in the columns
+  // (fe/midpoint.hpp; unsymmetric), where K/G reaches kNearlyIncompressible. With forward
+  // kinematics the start's tangent linearizes the strain exactly: AssembleTangent.
+  bool IterateTangent() const
+  {
+    return prm_.kinematics == ObjectiveScheme::Midpoint && BulkToShear() >= kNearlyIncompressible;
+  }
+  PetscErrorCode UpdateTangents(System &system);
+  PetscErrorCode AssembleIterateTangent(System &system);
   // What the trial increment du would do at the Gauss points: r1 (yield
   // onset), r2 (strain), r3 (rotation) into `limit`; `switches` counts the
   // points whose loading state (alpha) disagrees with du, and with `apply`
@@ -158,6 +185,16 @@ private:
   // iterations and re-solves of an increment change few or none).
   std::vector<fe::ElemMat> ke_;
   std::vector<char> ke_stale_;
+  // The system's kept body matrix cell by cell: a cell's block in it is its
+  // start tangent ke_ (kBlockStart), or held_: a start tangent since
+  // recomputed (kBlockOutdated), or its tangent at an iterate whose points'
+  // velocity gradients are in taken_at_ (kBlockIterate).
+  enum Block : char { kBlockStart, kBlockOutdated, kBlockIterate };
+  std::vector<char> block_;
+  std::vector<fe::ElemMat> held_;
+  std::vector<fe::Gradient> taken_at_;
+  // The elastic bulk to shear modulus ratio K/G = 2 (1 + nu) / (3 (1 - 2 nu)).
+  double BulkToShear() const { return 2 * (1 + prm_.material.nu) / (3 * (1 - 2 * prm_.material.nu)); }
 
   // Cell geometry (gradients, weights) on the current coordinates, computed
   // once per configuration: the scans, internal forces and energies of an
@@ -180,8 +217,18 @@ private:
   // scaled by r), into to[0..kGauss); false (to untouched) if the cell's
   // geometry is inverted. Shared by Commit and TrialForce.
   // `used`: the condensation the cell's modes and forces were taken with (qm6).
+  // `grad`: the velocity gradient of each point's strain and spin increments.
   bool AdvanceCell(PetscInt e, const fe::ElemVec &due, double r, PointState *to, Advanced &acc,
-                   fe::Condensation *used = nullptr) const;
+                   fe::Condensation *used = nullptr, fe::Gradient *grad = nullptr) const;
+  // The start's point tangents and stresses of cell e (what its tangent is assembled from).
+  void StartTangents(PetscInt e, Mat4 c[fe::kGauss], Voigt s[fe::kGauss]) const;
+  // Cell e's tangent recomputed if stale; false if the cell is inverted (it stays stale).
+  bool RefreshCell(PetscInt e);
+  // Cell e's tangent at the iterate of the last TrialForce (AssembleIterateTangent); false
+  // if its mid or end configuration is inverted.
+  bool IterateCellTangent(PetscInt e, fe::ElemMat &ke) const;
+  // Collective: stops the run naming the lowest inverted cell (bad: this rank's, -1 if none).
+  PetscErrorCode CheckInverted(PetscInt bad, System &system) const;
   // qm6 with equilibrium iterations: the tangents are selected by the strain
   // increment itself (OwnTangents), not by the assembly, so that a cell's
   // forces are a function of its nodal increments (docs/theory.md, 5a).
@@ -221,6 +268,7 @@ private:
     double r = 0;
     std::vector<PointState> states;
     std::vector<fe::Condensation> conds; // qm6: per cell, the condensation of its forces
+    std::vector<fe::Gradient> grad;      // per point, the velocity gradient of its increments
     Advanced acc;
     bool valid = false;
   };

@@ -25,6 +25,11 @@ public:
   // condensation is stored. False when qm6's modes cannot be condensed.
   bool Stiffness(int e, const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 c[kGauss],
                  const Voigt s[kGauss], ElemMat &ke);
+  // The equilibrium corrections' tangent at an iterate with midpoint
+  // kinematics: the rows of Stiffness, the columns of the mid-increment strain
+  // (midpoint.hpp); nothing is stored. False when qm6's modes cannot be condensed.
+  bool MidpointStiffness(const QuadGeometry &geo, const Mat4 c[kGauss], const Voigt s[kGauss], const MidpointColumns &m,
+                         ElemMat &ke) const;
   // Strain and spin increments at Gauss point g for the nodal increments du
   // (qm6: its modes from the last stiffness of the cell).
   void Kinematics(int e, const double xe[2 * kNodes], const QuadGeometry &geo, int g, const ElemVec &du, Voigt &deps,

@@ -22,6 +22,7 @@
 
 #include <array>
 
+#include "tubeform/fe/midpoint.hpp"
 #include "tubeform/fe/quad.hpp"
 
 namespace tf::fe {
@@ -67,6 +68,13 @@ void QM6Kinematics(const double xe[2 * kNodes], const QuadGeometry &geo, int g, 
 bool QM6Stiffness(const double xe[2 * kNodes], const QuadGeometry &geo, const Mat4 tangent[kGauss],
                   const Voigt sigma[kGauss], bool geometric, ElemMat &ke, Condensation &cond, ModeMatrix *kii_inv,
                   bool mean_dilatation = false);
+// The tangent of the equilibrium corrections at an iterate with midpoint
+// kinematics (midpoint.hpp): rows as QM6Stiffness's on the configuration of
+// `rows` (the forces'), columns those of the mid-increment strain
+// (NodeStrainColumns, ModeStrainColumns), condensed; nothing is stored (the
+// forces keep their own condensation). False if Kii is singular.
+bool QM6Stiffness(const QuadGeometry &rows, const Mat4 tangent[kGauss], const Voigt sigma[kGauss],
+                  const MidpointColumns &m, ElemMat &ke, bool mean_dilatation = false);
 // f_i = sum_g w det J G_g^T sigma_g: the force on the internal modes (zero when they are in balance).
 void QM6ModeForce(const double xe[2 * kNodes], const QuadGeometry &geo, const Voigt sigma[kGauss], InternalVec &fi,
                   bool mean_dilatation = false);

@@ -65,24 +65,49 @@ inline double InitialStress(const double ga[2], const double gb[2], const Voigt 
   return ga[0] * (s[0] * gb[0] + s[3] * gb[1]) + ga[1] * (s[3] * gb[0] + s[1] * gb[1]);
 }
 
-// k += w B^T C B for a strain matrix of N columns (8 for Q4/B-bar, 12 for
-// QM6 with its incompatible modes); K is any N x N indexable matrix.
+// k += w Bl^T C Br: rows and columns of different strain matrices (an unsymmetric tangent).
 template <int N, class K>
-void AddBtCB(const double (&b)[kVoigt][N], const Mat4 &c, double w, K &k)
+void AddBtCB(const double (&bl)[kVoigt][N], const Mat4 &c, const double (&br)[kVoigt][N], double w, K &k)
 {
   double cb[kVoigt][N];
   for (int r = 0; r < kVoigt; ++r)
     for (int j = 0; j < N; ++j) {
       double sum = 0;
-      for (int s = 0; s < kVoigt; ++s) sum += c[r][s] * b[s][j];
+      for (int s = 0; s < kVoigt; ++s) sum += c[r][s] * br[s][j];
       cb[r][j] = sum;
     }
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j) {
       double sum = 0;
-      for (int r = 0; r < kVoigt; ++r) sum += b[r][i] * cb[r][j];
+      for (int r = 0; r < kVoigt; ++r) sum += bl[r][i] * cb[r][j];
       k[i][j] += w * sum;
     }
+}
+
+// k += w B^T C B for a strain matrix of N columns (8 for Q4/B-bar, 12 for
+// QM6 with its incompatible modes); K is any N x N indexable matrix.
+template <int N, class K>
+void AddBtCB(const double (&b)[kVoigt][N], const Mat4 &c, double w, K &k)
+{
+  AddBtCB(b, c, b, w, k);
+}
+
+// AddBtCB (Bl, C, Br) for a plain Bl (as AddBtCBPlain's) and any Br.
+template <int N, class K>
+void AddBtCBPlainLeft(const double (&bl)[kVoigt][N], const int (&comp)[N], const Mat4 &c, const double (&br)[kVoigt][N],
+                      double w, K &k)
+{
+  double cb[kVoigt][N];
+  for (int r = 0; r < kVoigt; ++r)
+    for (int j = 0; j < N; ++j) {
+      double sum = 0;
+      for (int s = 0; s < kVoigt; ++s) sum += c[r][s] * br[s][j];
+      cb[r][j] = sum;
+    }
+  for (int i = 0; i < N; ++i) {
+    const int ri = comp[i];
+    for (int j = 0; j < N; ++j) k[i][j] += w * (bl[ri][i] * cb[ri][j] + bl[3][i] * cb[3][j]);
+  }
 }
 
 // AddBtCB for a plain strain matrix (no mean dilatation): column j strains
