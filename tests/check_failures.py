@@ -89,7 +89,8 @@ for np_ in (1, 2):
 # of the out-of-balance forces), each on 1 and 2 ranks. With inertia (the
 # squaring default) a trial is halved further, where the mass balances a
 # step; steps that settle only there count too, or the run would creep on at
-# 1e-6 of a step: it stops on the fourth such increment, saying so.
+# 1e-6 of a step: twenty of them count as one unsettled step, so it stops
+# after 4 x 20 of them, saying so.
 for np_, case in [(n, c) for c in (["-equilibrium_tol", 0, "-friction_tol", "1e-300"], ["-equilibrium_tol", "1e-12"])
                   for n in (1, 2)]:
     f = out(f"unsettled_np{np_}_{case[-2][1:]}.h5")
@@ -117,5 +118,7 @@ k.check(p.returncode != 0 and len(lines) == 1 and "-friction_max_unsettled" in l
 if os.path.exists(f):
     with h5py.File(f, "r") as h:
         stopped, rows = h["/history"].attrs["stopped"], h["/history"].attrs["rows"]
-    k.check(stopped == 1 and rows < 20, f"inertia: results flagged stopped after {rows:g} rows (a creep would go on)")
+    k.check(stopped == 1 and rows < 4 * 20 + 10,
+            f"inertia: results flagged stopped after {rows:g} rows (4 x 20 steps settled only on inertia's halvings, "
+            f"each a twentieth of an unsettled one; a creep would go on)")
 k.done()

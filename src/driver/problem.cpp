@@ -339,8 +339,9 @@ PetscErrorCode Problem::Commit(Vec du, const Increment &taken, double next_break
   on_break = std::abs(lambda + taken.dl - next_break) < kSnapToBreak * dl_stage;
   lambda = on_break ? next_break : lambda + taken.dl;
   unsettled_ += taken.unsettled;
-  // (a step that settled only on inertia's shorter steps counts too: a run of them creeps on at 1e-6 steps)
-  unsettled_run_ = taken.unsettled > 0 || taken.deep ? unsettled_run_ + 1 : 0;
+  // (in kDeepPerUnsettled-ths of an unsettled step: a step that settled only on inertia's shorter steps counts
+  // as such a part, a run of them creeping on at 1e-6 of a step)
+  unsettled_run_ = taken.unsettled > 0 ? unsettled_run_ + kDeepPerUnsettled : taken.deep ? unsettled_run_ + 1 : 0;
   events_inside_ += taken.event_inside;
   inconsistent_ += taken.inconsistent > 0;
   PetscFunctionReturn(PETSC_SUCCESS);

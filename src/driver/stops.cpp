@@ -148,16 +148,18 @@ PetscErrorCode Problem::StopAfter(Stop &stop, bool &wrote_last)
              "equilibrium (shorter steps: more -increments, a smaller -rmin_deps; docs/accuracy.md, \"Extremes\") "
              "(%s)",
              100 * history_.rows().back().energy_error, opt_.max_energy_error, Where().c_str());
-  } else if (unsettled_run_ >= opt_.friction_max_unsettled) {
+  } else if (unsettled_run_ >= opt_.friction_max_unsettled * kDeepPerUnsettled) {
     stop.code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
     const bool balance = opt_.equilibrium_tol > 0; // the equilibrium iterations carry the friction's
     const bool inertia = inertia_ && inertia_->active();
     const std::string shorter =
-      inertia ? Format(" (and with inertia up to %d times, on ever shorter steps)", kMaxCutsInertia) : "";
+      inertia ? Format(" (and with inertia up to %d times, %d steps settled only so counting as one)", kMaxCutsInertia,
+                       kDeepPerUnsettled)
+              : "";
     stop.why =
       Format("the %s iterations did not settle in %d increments in a row (-friction_max_unsettled), "
              "even on steps halved %d times%s: raise -friction_max_iters or %s%s (%s)",
-             balance ? "equilibrium" : "friction", (int)unsettled_run_, kMaxCuts, shorter.c_str(),
+             balance ? "equilibrium" : "friction", (int)(unsettled_run_ / kDeepPerUnsettled), kMaxCuts, shorter.c_str(),
              balance ? "-equilibrium_tol" : "-friction_tol", inertia ? "" : ", or try -dynamics auto", Where().c_str());
   }
   if (stop.why.empty() && contact_) {

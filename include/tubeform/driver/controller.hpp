@@ -27,6 +27,10 @@ constexpr int kBacktracks = 3;
 // springback: halvings down to about 1e-6 of the trial (kMinDynamicStep, below).
 constexpr int kMaxCuts = 6, kMaxCutsInertia = 20;
 inline int MaxCuts(bool inertia) { return inertia ? kMaxCutsInertia : kMaxCuts; }
+// Steps that settled only past kMaxCuts halvings are balanced, but a run of them creeps on at 1e-6 of a step: this
+// many in a row count as one unsettled step towards -friction_max_unsettled (50: a thousand in a row). The
+// figures' R/t 50 tube at mu 0.35 passes a run of more than 50 of them and goes on at full steps.
+constexpr int kDeepPerUnsettled = 20;
 // Re-solves of a shortened non-linear step that go to its limits' estimate; later ones at least halve it.
 constexpr int kMaxResolves = 3;
 // Inertia: a re-solved step cut by a bound on its size (r2, r3) and well

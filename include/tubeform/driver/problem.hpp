@@ -109,7 +109,8 @@ private:
   double q_now_ = 0; // the mean magnitude of the cells' nodal forces at the last EndForces
   // Compromises so far (history columns of those names).
   PetscInt unsettled_ = 0, events_inside_ = 0, inconsistent_ = 0;
-  PetscInt unsettled_run_ = 0;                  // increments in a row taken unsettled (-friction_max_unsettled)
+  PetscInt unsettled_run_ =
+    0; // increments in a row taken unsettled, in kDeepPerUnsettled-ths (-friction_max_unsettled)
   double worst_error_ = 0, worst_internal_ = 0; // largest |energy_error|, |internal_error| so far
   bool warned_ = false;                         // the energy warning was printed
   bool diverged_ = false;                       // the energy balance error passed -max_energy_error
