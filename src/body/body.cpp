@@ -47,7 +47,6 @@ PetscErrorCode Body::Setup(const Mesh &mesh, const BodyParams &prm)
   ke_stale_.assign(mesh.num_cells, 1);
   block_.assign(mesh.num_cells, kBlockStart);
   held_.resize(mesh.num_cells);
-  taken_at_.resize(state_.size());
   x_ = mesh.x0;
   u_.assign(2 * mesh.num_nodes, 0.0);
   PetscFunctionReturn(PETSC_SUCCESS);

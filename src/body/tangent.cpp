@@ -126,32 +126,20 @@ Mat4 Body::TransitionTangent(const PointState &elastic, const PointState &onset,
 
 PetscErrorCode Body::AssembleIterateTangent(System &system)
 {
-  enum Action : char { kKeep, kStart, kIterate };
-  const PetscInt n = mesh_->num_cells;
-  std::vector<char> act(n, kKeep);
   fe::ElemMat ki;
 
   PetscFunctionBeginUser;
   PetscCheck(last_trial_.valid, comm(), PETSC_ERR_ORDER, "the iterate's tangent needs its forces first (TrialForce)");
   PetscCall(PetscLogEventBegin(Log::assemble, 0, 0, 0, 0));
-  // Every cell takes the iterate's tangent (IterateTangent: K/G past kNearlyIncompressible).
-  const long changed = n;
-  for (PetscInt e = 0; e < n; ++e) act[e] = kIterate;
-  bool rebuild = 2 * changed > (long)n; // (as AssembleTangent)
+  // Every cell takes the iterate's tangent (IterateTangent: K/G past kNearlyIncompressible), or the start's where
+  // the iterate inverts it: the whole body assembled again, each block kept for AssembleTangent's differences.
+  bool rebuild = true;
   PetscCall(system.BeginBody(rebuild));
-  for (PetscInt e = 0; e < n; ++e) {
-    const fe::ElemMat &kept = block_[e] == kBlockStart ? ke_[e] : held_[e];
-    if (act[e] == kIterate && !IterateCellTangent(e, ki)) act[e] = kStart; // (a cell the iterate inverts)
-    const fe::ElemMat &to = act[e] == kKeep ? kept : act[e] == kStart ? ke_[e] : ki;
-    if (rebuild)
-      PetscCall(system.AddElement(e, to));
-    else if (act[e] != kKeep)
-      PetscCall(system.AddElement(e, Difference(to, kept)));
-    if (act[e] == kStart) block_[e] = kBlockStart;
-    if (act[e] != kIterate) continue;
-    held_[e] = ki;
-    block_[e] = kBlockIterate;
-    std::copy_n(&last_trial_.grad[fe::kGauss * e], fe::kGauss, &taken_at_[fe::kGauss * e]);
+  for (PetscInt e = 0; e < mesh_->num_cells; ++e) {
+    const bool iterate = IterateCellTangent(e, ki);
+    PetscCall(system.AddElement(e, iterate ? ki : ke_[e]));
+    if (iterate) held_[e] = ki;
+    block_[e] = iterate ? kBlockIterate : kBlockStart;
   }
   PetscCall(system.EndBody());
   PetscCall(PetscLogEventEnd(Log::assemble, 0, 0, 0, 0));

@@ -187,12 +187,10 @@ private:
   std::vector<char> ke_stale_;
   // The system's kept body matrix cell by cell: a cell's block in it is its
   // start tangent ke_ (kBlockStart), or held_: a start tangent since
-  // recomputed (kBlockOutdated), or its tangent at an iterate whose points'
-  // velocity gradients are in taken_at_ (kBlockIterate).
+  // recomputed (kBlockOutdated), or its tangent at an iterate (kBlockIterate).
   enum Block : char { kBlockStart, kBlockOutdated, kBlockIterate };
   std::vector<char> block_;
   std::vector<fe::ElemMat> held_;
-  std::vector<fe::Gradient> taken_at_;
   // The elastic bulk to shear modulus ratio K/G = 2 (1 + nu) / (3 (1 - 2 nu)).
   double BulkToShear() const { return 2 * (1 + prm_.material.nu) / (3 * (1 - 2 * prm_.material.nu)); }
 
