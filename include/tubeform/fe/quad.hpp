@@ -65,17 +65,24 @@ inline double InitialStress(const double ga[2], const double gb[2], const Voigt 
   return ga[0] * (s[0] * gb[0] + s[3] * gb[1]) + ga[1] * (s[3] * gb[0] + s[1] * gb[1]);
 }
 
-// k += w Bl^T C Br: rows and columns of different strain matrices (an unsymmetric tangent).
-template <int N, class K>
-void AddBtCB(const double (&bl)[kVoigt][N], const Mat4 &c, const double (&br)[kVoigt][N], double w, K &k)
+// cb = C Br.
+template <int N>
+void TimesB(const Mat4 &c, const double (&br)[kVoigt][N], double (&cb)[kVoigt][N])
 {
-  double cb[kVoigt][N];
   for (int r = 0; r < kVoigt; ++r)
     for (int j = 0; j < N; ++j) {
       double sum = 0;
       for (int s = 0; s < kVoigt; ++s) sum += c[r][s] * br[s][j];
       cb[r][j] = sum;
     }
+}
+
+// k += w Bl^T C Br: rows and columns of different strain matrices (an unsymmetric tangent).
+template <int N, class K>
+void AddBtCB(const double (&bl)[kVoigt][N], const Mat4 &c, const double (&br)[kVoigt][N], double w, K &k)
+{
+  double cb[kVoigt][N];
+  TimesB(c, br, cb);
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j) {
       double sum = 0;
@@ -98,12 +105,7 @@ void AddBtCBPlainLeft(const double (&bl)[kVoigt][N], const int (&comp)[N], const
                       double w, K &k)
 {
   double cb[kVoigt][N];
-  for (int r = 0; r < kVoigt; ++r)
-    for (int j = 0; j < N; ++j) {
-      double sum = 0;
-      for (int s = 0; s < kVoigt; ++s) sum += c[r][s] * br[s][j];
-      cb[r][j] = sum;
-    }
+  TimesB(c, br, cb);
   for (int i = 0; i < N; ++i) {
     const int ri = comp[i];
     for (int j = 0; j < N; ++j) k[i][j] += w * (bl[ri][i] * cb[ri][j] + bl[3][i] * cb[3][j]);
