@@ -15,4 +15,11 @@ public:
 
 std::unique_ptr<Motion> FixedMotion() { return std::make_unique<Fixed>(); }
 
+const MotionKind &FixedKind()
+{
+  static const MotionKind kind{
+    "fixed", {}, nullptr, [](const MotionSpec &, MotionHandle &m) { return m = FixedMotion(), std::string(); }};
+  return kind;
+}
+
 } // namespace tf

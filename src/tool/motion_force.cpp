@@ -16,4 +16,13 @@ public:
 
 std::unique_ptr<Motion> ForceMotion(const Vec2 &direction) { return std::make_unique<Force>(direction); }
 
+const MotionKind &ForceKind()
+{
+  static const MotionKind kind{"force", {}, nullptr, [](const MotionSpec &s, MotionHandle &m) {
+                                 return Moves(s.direction) ? (m = ForceMotion(s.direction), std::string())
+                                                           : "a force along no direction";
+                               }};
+  return kind;
+}
+
 } // namespace tf

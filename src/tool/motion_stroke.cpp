@@ -15,6 +15,15 @@ public:
 
 std::unique_ptr<Motion> StrokeMotion(const Vec2 &direction) { return std::make_unique<Stroke>(direction); }
 
+const MotionKind &StrokeKind()
+{
+  static const MotionKind kind{"stroke", {}, nullptr, [](const MotionSpec &s, MotionHandle &m) {
+                                 return Moves(s.direction) ? (m = StrokeMotion(s.direction), std::string())
+                                                           : "a stroke along no direction";
+                               }};
+  return kind;
+}
+
 MotionHandle::MotionHandle() : m_(StrokeMotion({0, -1})) {}
 
 } // namespace tf

@@ -18,4 +18,7 @@ private:
   Vec2 d_;
 };
 
+// A direction that moves the tool (stroke and force refuse one that does not).
+inline bool Moves(const Vec2 &d) { return d[0] != 0 || d[1] != 0; }
+
 } // namespace tf
