@@ -9,9 +9,10 @@ const MotionKind &StrokeKind();   // motion_stroke.cpp
 const MotionKind &PathKind();     // motion_path.cpp
 const MotionKind &ForceKind();    // motion_force.cpp
 const MotionKind &ScheduleKind(); // motion_schedule.cpp
+const MotionKind &PulseKind();    // motion_pulse.cpp
 
 namespace {
-const MotionKind &(*const kKinds[])() = {FixedKind, StrokeKind, PathKind, ForceKind, ScheduleKind};
+const MotionKind &(*const kKinds[])() = {FixedKind, StrokeKind, PathKind, ForceKind, ScheduleKind, PulseKind};
 } // namespace
 
 const MotionKind *FindMotionKind(const std::string &kind)
