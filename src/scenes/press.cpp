@@ -26,6 +26,7 @@
 #include <algorithm>
 
 #include "tubeform/scenes/contact_params.hpp"
+#include "tubeform/tool/shape.hpp"
 
 namespace tf {
 
