@@ -27,6 +27,7 @@
 #include "tubeform/body/body.hpp"
 #include "tubeform/contact/contact.hpp"
 #include "tubeform/mesh/generator.hpp"
+#include "tubeform/tool/shape.hpp"
 
 using namespace tf;
 

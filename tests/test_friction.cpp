@@ -11,6 +11,7 @@
 
 #include "check.hpp"
 #include "tubeform/contact/friction.hpp"
+#include "tubeform/tool/shape.hpp"
 #include "tubeform/tool/tool.hpp"
 
 using namespace tf;

@@ -16,7 +16,12 @@
 //     rising towards it where the closed form says.
 // ClearanceBack (how far back a second pass's die starts to clear the tube) against
 // the closed forms of a plate and the V-die over a circle larger than the tube's.
-// The motions and their registry against hand values (CheckMotions).
+// The motions and their registry against hand values (CheckMotions). The shapes' registry (CheckShapes): the
+// V-die's flanks tangent to the tube's circle (the closed form: a point of the circle at the flank's normal
+// angle projects onto it with gap 0, 1e-12 mm: round-off of a 17.5 mm geometry), its apex on the y axis at
+// h - r_apex / sin + r_apex; the plate along its line; the flat-bottomed die from its profile file and from the
+// DXF drawing of it (options/dies/) the same segments to 1e-12 mm (the DXF's bulge is the arc's, given to 16
+// digits); refusals name what is wrong.
 // The tools: the flat-bottomed die of options/dies/flat_bottom.profile (a
 // concave fillet between face and flank) and the V-die with a parting face
 // (a concave apex fillet, the tube inside its circle, and a convex edge
@@ -30,6 +35,7 @@
 
 #include "check.hpp"
 #include "tubeform/tool/profile.hpp"
+#include "tubeform/tool/shape.hpp"
 #include "tubeform/tool/tool.hpp"
 
 using namespace tf;
@@ -271,7 +277,56 @@ void CheckMotions()
   std::printf("Motions: the registry's kinds and refusals; the schedule through its points, piece by piece\n");
 }
 
-int main()
+// The shapes' registry (the comment at the top). `root`: the source tree (for options/dies/).
+void CheckShapes(const std::string &root)
+{
+  CHECK((ShapeKinds() == std::vector<std::string>{"v", "flat", "profile", "dxf"}));
+  ShapeSpec v;
+  v.ro = 17.5, v.r_apex = 3.0, v.angle = 90;
+  Tool die;
+  CHECK(MakeShape("v", v, die).empty());
+  const double c = std::sqrt(0.5), h = 17.5 * std::sqrt(2.0);
+  const Projection on_flank = die.Project({17.5 * c, 17.5 * c});
+  CHECK(on_flank.segment >= 0 && std::abs(on_flank.gap) < 1e-12);
+  const double top = h - 3.0 * std::sqrt(2.0) + 3.0; // (the fillet's circle, centred on the axis, at its top)
+  const Projection apex = die.Project({0, top - 0.5});
+  CHECK(std::abs(apex.point[1] - top) < 1e-12 && std::abs(apex.point[0]) < 1e-12 && std::abs(apex.gap - 0.5) < 1e-12);
+  v.u_close = 2 * h; // (a parting face above the apex)
+  CHECK(!MakeShape("v", v, die).empty());
+  ShapeSpec plate;
+  plate.y = 2.0, plate.x0 = -1, plate.x1 = 4, plate.floor = true;
+  CHECK(MakeShape("flat", plate, die).empty() && die.segments.size() == 1 && die.Project({1, 3}).gap == 1.0);
+  std::string texts[2];
+  const char *files[2] = {"/options/dies/flat_bottom.profile", "/options/dies/flat_bottom.dxf"};
+  for (int k = 0; k < 2; ++k) {
+    std::FILE *f = std::fopen((root + files[k]).c_str(), "r");
+    CHECK(f != nullptr);
+    for (int ch; f && (ch = std::fgetc(f)) != EOF;) texts[k] += (char)ch;
+    if (f) std::fclose(f);
+  }
+  Tool drawn[2];
+  for (int k = 0; k < 2; ++k) {
+    ShapeSpec s;
+    s.text = texts[k], s.file = files[k];
+    CHECK(DrawingKind(s.file) == (k ? "dxf" : "profile") && MakeShape(DrawingKind(s.file), s, drawn[k]).empty());
+  }
+  CHECK(drawn[0].segments.size() == drawn[1].segments.size() && drawn[0].segments.size() == 3);
+  for (size_t k = 0; k < drawn[0].segments.size() && k < drawn[1].segments.size(); ++k) {
+    const Segment &a = drawn[0].segments[k], &b = drawn[1].segments[k];
+    const double ends = std::hypot(a.a[0] - b.a[0], a.a[1] - b.a[1]) + std::hypot(a.b[0] - b.b[0], a.b[1] - b.b[1]);
+    const double arc = std::hypot(a.c[0] - b.c[0], a.c[1] - b.c[1]) + std::abs(a.radius - b.radius) +
+                       17.5 * (std::abs(a.t0 - b.t0) + std::abs(a.t1 - b.t1)); // (angles as arc lengths at Ro)
+    CHECK(a.kind == b.kind && (a.kind == Segment::Line ? ends : arc) < 1e-12);
+  }
+  ShapeSpec broken;
+  broken.text = "line 0 1\n", broken.file = "broken.profile";
+  CHECK(!MakeShape("profile", broken, die).empty());
+  const std::string unknown = MakeShape("oval", v, die);
+  CHECK(unknown.find("oval") != std::string::npos && unknown.find("dxf") != std::string::npos);
+  std::printf("Shapes: the registry's kinds; the V-die against its closed form; a profile and its DXF alike\n");
+}
+
+int main(int argc, char **argv)
 {
   int concave = 0, convex = 0;
   const std::string flat = "line 0 17.5 7.0 17.5\n"
@@ -287,5 +342,6 @@ int main()
   CheckPath();
   CheckTurningPath();
   CheckMotions();
+  CheckShapes(argc > 1 ? argv[1] : "..");
   return ReportChecks("test_tool");
 }

@@ -6,6 +6,7 @@
 #include "tubeform/contact/contact.hpp"
 #include "tubeform/io/text_file.hpp"
 #include "tubeform/tool/profile.hpp"
+#include "tubeform/tool/shape.hpp"
 
 namespace tf {
 
@@ -20,16 +21,9 @@ PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::str
   PetscFunctionBeginUser;
   PetscCall(ReadTextOnRoot(comm, path, ok, text));
   PetscCheck(ok, comm, PETSC_ERR_USER_INPUT, "%s %s: cannot read the file", option, path.c_str());
-  std::string error;
-  const std::string &f = path;
-  const bool dxf = f.size() > 4 && (f.compare(f.size() - 4, 4, ".dxf") == 0 || f.compare(f.size() - 4, 4, ".DXF") == 0);
-  if (dxf) {
-    std::vector<ProfileItem> items;
-    error = DxfProfile(text, f, items);
-    if (error.empty()) error = BuildProfile(items, f, tool);
-  } else {
-    error = ParseProfile(text, f, tool);
-  }
+  ShapeSpec spec;
+  spec.text = text, spec.file = path;
+  const std::string error = MakeShape(DrawingKind(path), spec, tool); // (tool/shape.hpp)
   PetscCheck(error.empty(), comm, PETSC_ERR_USER_INPUT, "%s %s", option, error.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -40,8 +34,10 @@ PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die)
 {
   PetscFunctionBeginUser;
   if (opt.die_profile.empty()) {
-    const std::string error =
-      MakeVDie(opt.tube_ro, opt.die_r_apex, opt.die_u_close, opt.die_r_edge, opt.die_angle, die.tool);
+    ShapeSpec v;
+    v.ro = opt.tube_ro, v.r_apex = opt.die_r_apex, v.u_close = opt.die_u_close, v.r_edge = opt.die_r_edge;
+    v.angle = opt.die_angle;
+    const std::string error = MakeShape("v", v, die.tool);
     PetscCheck(error.empty(), comm, PETSC_ERR_USER_INPUT,
                "-die_angle %g, -die_r_apex %g, -die_u_close %g, -die_r_edge %g make no die: %s", opt.die_angle,
                opt.die_r_apex, opt.die_u_close, opt.die_r_edge, error.c_str());

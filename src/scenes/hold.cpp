@@ -18,9 +18,17 @@ PetscErrorCode RotationHold::Mark(Model &m, const TurnMap &press)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode RotationHold::Constrain(Model &m, const Vec2 &along)
+void RotationHold::TakeFrames(Model &m, const TurnMap &to_tube) const
+{
+  double angle;
+  if (TurnedFrame(to_tube, angle))
+    for (PetscInt n : m.mesh.node_sets["hold"]) m.system.SetFrame(n, angle);
+}
+
+PetscErrorCode RotationHold::Constrain(Model &m, const TurnMap &to_tube)
 {
   PetscFunctionBeginUser;
+  const Vec2 along = to_tube({1, 0}); // (the press's x)
   m_ = &m, along_ = along;
   // (fixed while they hold the slide too: no unknown, the nodes carry a force with the couple)
   for (PetscInt n : m.mesh.node_sets["hold"])

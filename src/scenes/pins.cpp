@@ -1,10 +1,11 @@
 // How the half and full models are held where no die holds them
-// (scenes/common.hpp): the springback's pin along y, and the full model's
-// pins along x on the y axis (the press's axes: a turned pass's), with their
-// node frames in a press turned by any angle.
+// (scenes/support.hpp, scenes/common.hpp): the springback's pin along y, and
+// the full model's pins along x on the y axis (the press's axes: a turned
+// pass's), with their node frames in a press turned by any angle.
 #include <cmath>
 
 #include "tubeform/scenes/common.hpp"
+#include "tubeform/scenes/support.hpp"
 
 namespace tf {
 
@@ -58,12 +59,68 @@ PetscErrorCode MarkAxisPins(Model &m, const TurnMap &press, const char *surface,
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-void TurnedSupportFrames(Model &m, const Vec2 &axis, bool hold, PetscInt pin)
+PetscErrorCode AxisPins::Mark(Model &m, const TurnMap &press)
 {
-  if (axis[0] == 0 || axis[1] == 0) return;
-  const double angle = std::atan2(axis[1], axis[0]);
-  for (PetscInt n : m.mesh.node_sets[hold ? "hold" : "axis"]) m.system.SetFrame(n, angle);
-  if (pin >= 0) m.system.SetFrame(pin, angle);
+  PetscFunctionBeginUser;
+  PetscCall(MarkAxisPins(m, press));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void AxisPins::TakeFrames(Model &m, const TurnMap &to_tube) const
+{
+  double angle;
+  if (TurnedFrame(to_tube, angle))
+    for (PetscInt n : m.mesh.node_sets["axis"]) m.system.SetFrame(n, angle);
+}
+
+PetscErrorCode AxisPins::Constrain(Model &m, const TurnMap &to_tube)
+{
+  PetscFunctionBeginUser;
+  const Vec2 along = to_tube({1, 0}); // (the press's x)
+  PetscCall(HoldAlong(m, "axis", along[0], along[1]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SpringbackPin::Mark(Model &m, const TurnMap &press)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ChooseSpringbackPin(m, node_, press));
+  holds_ = true;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void SpringbackPin::TakeFrames(Model &m, const TurnMap &to_tube) const
+{
+  double angle;
+  if (node() >= 0 && TurnedFrame(to_tube, angle)) m.system.SetFrame(node_, angle);
+}
+
+PetscErrorCode SpringbackPin::Constrain(Model &m, const TurnMap &to_tube)
+{
+  PetscFunctionBeginUser;
+  const Vec2 along = to_tube({0, 1}); // (the press's y)
+  if (node() >= 0)
+    PetscCheck(m.system.PrescribeAlong(node_, along[0], along[1], 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "the springback's pin is not along a node frame axis");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SpringbackPin::ReleaseOnTouch(Model &m)
+{
+  PetscInt touching;
+  PetscFunctionBeginUser;
+  if (!holds_) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(m.contact->Count(touching, false));
+  holds_ = touching == 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SpringbackPin::Persist(Model &m, Archive &ar, const TurnMap &press)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ar.Value("pinned", holds_));
+  if (holds_ && ar.reading()) PetscCall(Mark(m, press));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 } // namespace tf

@@ -26,6 +26,7 @@
 #include <algorithm>
 
 #include "tubeform/scenes/contact_params.hpp"
+#include "tubeform/tool/shape.hpp"
 
 namespace tf {
 
@@ -82,7 +83,7 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
   tools.candidates = "outer";
   for (int pass = stroke2_ > 0; full_ && pass >= 0; --pass) { // (the second pass's axis checked now)
-    PetscCall(MarkAxisPins(m, PassMap(pass).Inverse()));
+    PetscCall(pins_.Mark(m, PassMap(pass).Inverse()));
     if (held_[pass]) PetscCall(hold_.Mark(m, PassMap(pass).Inverse()));
   }
   hold_.PinSlide(held_[0]);
@@ -134,7 +135,7 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
                             "at U = %s mm (-pass2_stroke); the upper die from U = %s to %s mm\n",
                             Formatted("%.4g", stroke2_ + StartBack()).c_str(), Formatted("%g", stroke2_).c_str(),
                             Formatted("%.4g", Pass2Start()).c_str(), Formatted("%.4g", Pass2End()).c_str()));
-    if (pinned_) PetscCall(ChoosePin(m));
+    if (pin_.holds()) PetscCall(pin_.Mark(m, Press()));
     PetscCall(m.contact->Setup(m.mesh, m.system, m.body.position(), spec));
     m.contact->SetStroke(0.0);
     PetscCall(m.contact->Initialize());
@@ -152,7 +153,7 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
   m.system.ClearFrames();
   m.body.BeginRelease(elastic, true);
   unloading_ = true;
-  if (half_) PetscCall(ChoosePin(m));
+  if (half_) PetscCall(pin_.Mark(m, Press()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -160,7 +161,8 @@ PetscErrorCode PressScene::BeginIncrement(Model &m, double lambda)
 {
   PetscFunctionBeginUser;
   if (Holding() && hold_.pins()) PetscCall(hold_.FreeSlide(m, Stroke(m, lambda))); // (scenes/hold.hpp)
-  TurnedSupportFrames(m, AxisHeld(), Holding(), pinned_ ? pin_ : -1);
+  if (Support *axis = AxisSupport()) axis->TakeFrames(m, PassMap(pass_));
+  pin_.TakeFrames(m, PassMap(pass_));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -182,22 +184,12 @@ PetscErrorCode PressScene::Load(Model &m, double lambda, double dlambda)
   // (inside the increment: its failure writes the results so far)
   if (opt_.die_force > 0 && m.contact->active())
     PetscCall(CheckForceReach(m.comm, opt_, squaring_, m.contact->tool(kUpper).stroke));
-  if (Holding())
-    PetscCall(hold_.Constrain(m, AxisHeld())); // (scenes/hold.hpp; released, the pins hold the tube)
-  else if (full_)
-    PetscCall(HoldAlong(m, "axis", AxisHeld()[0], AxisHeld()[1])); // (the pins: scenes/pins.cpp)
+  // (the rotation hold, or released the pins: scenes/support.hpp)
+  if (Support *axis = AxisSupport()) PetscCall(axis->Constrain(m, PassMap(pass_)));
   // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
-  // holds the tube's rigid motion along the press's y.
-  if (pinned_ && !unloading_) {
-    // The second pass of the half model: the pin holds the tube until its dies do.
-    PetscInt touching;
-    PetscCall(m.contact->Count(touching, false));
-    pinned_ = touching == 0;
-  }
-  const Vec2 pin_dir = PassMap(pass_)({0, 1}); // (the press's y)
-  if (pinned_ && pin_ >= 0)
-    PetscCheck(m.system.PrescribeAlong(pin_, pin_dir[0], pin_dir[1], 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
-               "the springback's pin is not along a node frame axis");
+  // holds the tube's rigid motion along the press's y; in a second pass until its dies hold the tube.
+  if (!unloading_) PetscCall(pin_.ReleaseOnTouch(m));
+  PetscCall(pin_.Constrain(m, PassMap(pass_)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -237,7 +229,7 @@ PetscErrorCode PressScene::SecondPass(Model &m, std::vector<Tool> &tools,
     if (d[0] != 0 || d[1] != 0) pass2_back_ = std::min(pass2_back_, start_back_[k]);
   }
   if (pass2_back_ == kNever) pass2_back_ = 0; // (no die moves)
-  if (full_) PetscCall(MarkAxisPins(m, Press()));
+  if (full_) PetscCall(pins_.Mark(m, Press()));
   if (held_[1]) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)
   symmetry = Symmetry();
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -255,14 +247,6 @@ std::vector<std::pair<std::string, Vec2>> PressScene::Symmetry() const
   if (full_) return {{"axis", AxisHeld()}};
   if (half_) return {{"x0", {1, 0}}};
   return {{"x0", {1, 0}}, {"y0", {0, 1}}};
-}
-
-PetscErrorCode PressScene::ChoosePin(Model &m)
-{
-  PetscFunctionBeginUser;
-  PetscCall(ChooseSpringbackPin(m, pin_, Press()));
-  pinned_ = true;
-  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 std::unique_ptr<Scene> MakeSquaringScene(const Options &opt) { return std::make_unique<PressScene>(opt, true); }

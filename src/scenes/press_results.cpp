@@ -51,7 +51,7 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   hold_.SeeLoad(row.load); // (the warning's floor: the largest load so far)
   if (Holding() && !hold_.pins()) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
   if (held_[pass_] && unloading_) // (what the springback's pins carry; scenes/hold.hpp)
-    PetscCall(hold_.SupportMoment(m, f_int, reversed_, ReleaseEnd() - lambda, pinned_ ? pin_ : -1, row.hold_moment));
+    PetscCall(hold_.SupportMoment(m, f_int, reversed_, ReleaseEnd() - lambda, pin_.node(), row.hold_moment));
   PetscCall(OuterExtents(m, row, Part(), Press()));
   PetscCall(Shape(m, lambda, row));
   row.stage = StageOf(lambda);
@@ -95,8 +95,7 @@ PetscErrorCode PressScene::Persist(Model &m, Archive &ar)
   reversed_total_[0] = pairs[0], reversed_total_[1] = pairs[1];
   side_ends_[0] = (long)pairs[2], side_ends_[1] = (long)pairs[3];
   reversed_moment_ = pairs[4];
-  PetscCall(ar.Value("pinned", pinned_));
-  if (pinned_ && ar.reading()) PetscCall(ChoosePin(m));
+  PetscCall(pin_.Persist(m, ar, Press()));
   if (!unloading_) PetscFunctionReturn(PETSC_SUCCESS);
   // The reversed contact forces: contributions of the owned nodes.
   if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));

@@ -9,6 +9,7 @@
 #include "tubeform/mesh/generator.hpp"
 #include "tubeform/scenes/common.hpp"
 #include "tubeform/scenes/contact_params.hpp"
+#include "tubeform/tool/shape.hpp"
 
 namespace tf {
 

@@ -78,10 +78,6 @@ constexpr double kAxisPin = 1e-9;
 // hold's nodes (scenes/hold.hpp).
 PetscErrorCode MarkAxisPins(Model &m, const TurnMap &press = {}, const char *surface = "outer",
                             const char *set = "axis", bool exact = true);
-// A press turned by an angle that is no quarter turn holds its supports along its own x and y (`axis`: its x in
-// the tube's frame): their nodes get that frame (System::SetFrame): the rotation hold's (`hold`) or else the pins,
-// and the springback's pin (`pin`, -1: none here). Nothing along the global axes.
-void TurnedSupportFrames(Model &m, const Vec2 &axis, bool hold, PetscInt pin);
 // A press's summary metrics per pass: the loaded state (the last row of its press, stage 2 p) and the unloaded
 // one (the last of its release): loaded_* and unloaded_* of C/t, C1/C2, x_max, y_max for the first pass (as the
 // run's summary), pass2_loaded_* and so on for the second.

@@ -17,16 +17,17 @@
 #include <vector>
 
 #include "tubeform/scenes/scene.hpp"
+#include "tubeform/scenes/support.hpp"
 
 namespace tf {
 
-class RotationHold : public ExtraUnknown {
+class RotationHold : public ExtraUnknown, public Support {
 public:
-  // Collective: the hold's nodes in the press's frame `press` (node set "hold"), on every pass's start.
-  PetscErrorCode Mark(Model &m, const TurnMap &press);
-  // The increment's constraint: both nodes along `along` (the press's x in the tube's frame) by the system's
-  // extra unknown.
-  PetscErrorCode Constrain(Model &m, const Vec2 &along);
+  // Support (collective): the hold's nodes in the press's frame `press` (node set "hold"), on every pass's start.
+  PetscErrorCode Mark(Model &m, const TurnMap &press) override;
+  void TakeFrames(Model &m, const TurnMap &to_tube) const override;
+  // Support: the increment's constraint: both nodes along the press's x by the system's extra unknown.
+  PetscErrorCode Constrain(Model &m, const TurnMap &to_tube) override;
   // ExtraUnknown (collective): minus the sum of the nodes' reactions along `along` (0 for a couple).
   PetscErrorCode Missing(double &missing) override;
   void Moved(double) override {} // (a slide the body keeps: nothing to carry)

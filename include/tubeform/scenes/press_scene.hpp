@@ -10,6 +10,7 @@
 #include "tubeform/scenes/hold.hpp"
 #include "tubeform/scenes/scene.hpp"
 #include "tubeform/scenes/stroke_path.hpp"
+#include "tubeform/scenes/support.hpp"
 
 namespace tf {
 
@@ -81,10 +82,10 @@ private:
   std::vector<double> start_back_; // how far back along its motion each second-pass die starts (StartOnTube)
   double pass2_back_ = 0;          // StartBack(), derived from start_back_ and the dies' motions (SecondPass)
   ContactSpec spec_;               // the contact set's nodes, supports and law (for the second pass's dies)
-  PetscInt pin_ = -1;              // the half model's springback: the local node whose press y is held (-1: none here)
-  bool pinned_ = false;            // the pin holds (every rank alike)
   bool held_[2];                   // the full model's pass held by the rotation hold (not its pins) while pressing
-  RotationHold hold_;
+  AxisPins pins_;                  // the full model's pins on the press's axis (scenes/support.hpp)
+  RotationHold hold_;              // or, in their place, the rotation hold (scenes/hold.hpp)
+  SpringbackPin pin_;              // the half and full models' springback pin along the press's y
   double stroke_ = 0, back_ = 0;
   StrokePath path_;           // the first press's (-stroke_path, or straight to the stroke)
   MotionHandle lower_motion_; // its lower die's motion (-lower_die_motion) at the stroke U, for the tools' work
@@ -128,13 +129,13 @@ private:
   TurnMap Press() const { return PassMap(pass_).Inverse(); }
   // The full model's pins hold the tube along the press's x.
   Vec2 AxisHeld() const { return PassMap(pass_)({1, 0}); }
+  // What holds the full model's tube along the press's x in place of a symmetry plane: the rotation hold while
+  // it holds the pass, else the pins; none in the quarter and half models.
+  Support *AxisSupport() { return !full_ ? nullptr : Holding() ? static_cast<Support *>(&hold_) : &pins_; }
   // The nodes whose direction the contact set keeps: the quarter's and the half's symmetry planes (the half tube
   // between both dies is mirrored about the y axis only), the full model's pins (the rotation hold's: inner nodes).
   std::vector<std::pair<std::string, Vec2>> Symmetry() const;
 
-  // The half and full models' springback: one node holds the tube's rigid motion along the press's y
-  // (scenes/pins.cpp).
-  PetscErrorCode ChoosePin(Model &m);
   // The punch load per vertical force of the model on the upper die: the quarter and the half model carry half.
   double LoadPerModelForce() const { return full_ ? 1.0 : 2.0; }
   TubePart Part() const { return full_ ? TubePart::Full : half_ ? TubePart::Half : TubePart::Quarter; }

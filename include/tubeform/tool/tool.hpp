@@ -93,29 +93,6 @@ struct Outline {
 constexpr double kOutlineStep = M_PI / 90; // 2 degrees: an apex fillet of 3 mm is drawn to 1.5 um
 Outline ToolOutline(const Tool &t);
 
-// The half-angle of a V-die of `degrees` between its flanks, with 1 / sin and
-// 1 / cos of it.
-struct VAngle {
-  explicit VAngle(double degrees);
-  double half, qs, qc;
-};
-
-// The upper V-die of the quarter model (docs/dies.md), of `angle` degrees
-// between its flanks (the paper's 90 by default): the flanks touch the tube's
-// outer circle, meeting on the y axis at (0, h), h = ro / sin(angle / 2),
-// rounded there by an arc of radius r_apex centred at (0, h - r_apex / sin);
-// the flank runs to x = 1.3 ro, or, with u_close > 0, to the parting face
-// y = u_close (at stroke 0) through a convex edge fillet of radius r_edge.
-// Moves down by the stroke.
-// "" or why these numbers make no die (a parting face above the apex, ...), naming "the V-die".
-std::string MakeVDie(double ro, double r_apex, double u_close, double r_edge, double angle, Tool &t);
-// The same, throwing std::invalid_argument on an error (for tests and code that checked its numbers).
-Tool BuildVDie(double ro, double r_apex, double u_close = 0, double r_edge = 0, double angle = 90);
-
-// A flat plate y = y0 from x = x0 to x1, pressing down (body below), or with
-// `floor` a support with the body above it.
-Tool BuildFlatPlate(double y0, double x0, double x1, bool floor = false);
-
 // A tool mapped by a TurnMap: its segments (their order kept), the body's side (the normals) and its motion.
 Tool Transform(const Tool &t, const TurnMap &map);
 // A tool moved by d (its segments and its frame's origin).
@@ -142,10 +119,5 @@ Tool BothSides(const Tool &t);
 // A symmetry plane through the origin as a wall that does not move (a fixed motion): the line of the points x with
 // x . normal = 0, from -reach to reach along it, the body on the side `normal` (a unit vector) points to.
 Tool SymmetryWall(const Vec2 &normal, double reach, const std::string &name);
-
-// The paper's stroke rule: the stroke at which a rounded rhombus (a square at
-// 90 degrees) of corner radius rc, its sides on the closed dies' flanks, has
-// the perimeter of the tube's outer circle 2 pi ro.
-double StrokeForCornerRadius(double ro, double rc, double angle = 90);
 
 } // namespace tf

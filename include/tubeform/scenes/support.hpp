@@ -1,0 +1,64 @@
+// What holds a press's tube where no die does (docs/theory.md, section 8), behind one interface: the full
+// model's pins on the press's y axis (AxisPins), the rotation hold in their place on a press off the axis
+// (scenes/hold.hpp), and the springback's pin of the half and full models (SpringbackPin). Each marks its nodes
+// at a pass's start, turns their frames with a press turned by any angle, and prescribes them at each increment.
+#pragma once
+
+#include <cmath>
+
+#include "tubeform/scenes/scene.hpp"
+#include "tubeform/tool/turn_map.hpp"
+
+namespace tf {
+
+class Support {
+public:
+  virtual ~Support() = default;
+  // Collective: its nodes, at a pass's start (`press`: the tube's coordinates into the press's frame).
+  virtual PetscErrorCode Mark(Model &m, const TurnMap &press) = 0;
+  // Before an increment: its nodes' frames along a press turned by an angle that is no quarter turn (`to_tube`:
+  // the press's frame into the tube's); nothing in a press along the global axes.
+  virtual void TakeFrames(Model &m, const TurnMap &to_tube) const = 0;
+  // The increment's prescribed motion of its nodes (`to_tube` as in TakeFrames).
+  virtual PetscErrorCode Constrain(Model &m, const TurnMap &to_tube) = 0;
+
+protected:
+  // The frame's angle of a press whose x is `axis` in the tube's frame; false along the global axes.
+  static bool TurnedFrame(const TurnMap &to_tube, double &angle)
+  {
+    const Vec2 axis = to_tube({1, 0});
+    angle = std::atan2(axis[1], axis[0]);
+    return axis[0] != 0 && axis[1] != 0;
+  }
+};
+
+// The full model's pins, node set "axis": the outer nodes on the press's y axis at the tube's top and bottom,
+// held along the press's x (scenes/pins.cpp, MarkAxisPins): the tube's rotation and its slide.
+class AxisPins : public Support {
+public:
+  PetscErrorCode Mark(Model &m, const TurnMap &press) override;
+  void TakeFrames(Model &m, const TurnMap &to_tube) const override;
+  PetscErrorCode Constrain(Model &m, const TurnMap &to_tube) override;
+};
+
+// The half and full models' springback: one inner node holds the tube's rigid motion along the press's y
+// (ChooseSpringbackPin), from the release's start until a second pass's dies touch the tube.
+class SpringbackPin : public Support {
+public:
+  PetscErrorCode Mark(Model &m, const TurnMap &press) override;
+  void TakeFrames(Model &m, const TurnMap &to_tube) const override;
+  PetscErrorCode Constrain(Model &m, const TurnMap &to_tube) override;
+  // It holds (every rank alike), and its local node (-1: none here, or not holding).
+  bool holds() const { return holds_; }
+  PetscInt node() const { return holds_ ? node_ : -1; }
+  // Collective: the pin lets go once the dies touch the tube (a pass pressing, not its release).
+  PetscErrorCode ReleaseOnTouch(Model &m);
+  // Collective: whether it holds, for a restart, which marks it again (`press` as in Mark).
+  PetscErrorCode Persist(Model &m, Archive &ar, const TurnMap &press);
+
+private:
+  PetscInt node_ = -1;
+  bool holds_ = false;
+};
+
+} // namespace tf
