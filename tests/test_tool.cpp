@@ -230,12 +230,14 @@ void CheckTurningPath()
 // their strokes, standing after the last, its pieces taken from a stroke at (or within round-off below) a point.
 void CheckMotions()
 {
-  CHECK((MotionKinds() == std::vector<std::string>{"fixed", "stroke", "path", "force", "schedule"}));
+  const std::vector<std::string> builtin{"fixed", "stroke", "path", "force", "schedule"};
+  const std::vector<std::string> kinds = MotionKinds(); // (the built-in ones first, a new kind after them)
+  CHECK(kinds.size() >= builtin.size() && std::equal(builtin.begin(), builtin.end(), kinds.begin()));
   MotionSpec spec;
   spec.direction = {0.5, -2};
   spec.path = ToolPath({{0, -2}});
   spec.at = {1, 2}, spec.to = {{0, 0}, {0, 1}};
-  for (const std::string &kind : MotionKinds()) {
+  for (const std::string &kind : builtin) {
     MotionHandle m;
     CHECK(MakeMotion(kind, spec, m).empty() && m->Kind() == kind && m->Unknown() == (kind == "force"));
   }
@@ -248,6 +250,11 @@ void CheckMotions()
   CHECK(!MakeMotion("path", none, m).empty() && !MakeMotion("schedule", none, m).empty());
   none.at = {1, 1}, none.to = {{0, 0}, {0, 1}}; // (strokes that do not rise)
   CHECK(!MakeMotion("schedule", none, m).empty());
+  // A schedule by its distances along its direction: (0, 0) and 1 x (0.5, -2) at strokes 1 and 2.
+  MotionSpec along;
+  along.direction = {0.5, -2}, along.at = {1, 2}, along.along = {0, 1};
+  CHECK(MakeMotion("schedule", along, m).empty() && m->Offset(3)[0] == 0.5 && m->Offset(3)[1] == -2);
+  CHECK(m->Offset(0.5)[0] == 0 && !std::signbit(m->Offset(0.5)[0]) && m->Offset(1.5)[1] == -1);
   // A stroke: s x direction; fixed: nothing; a copy followed elsewhere leaves the original's piece.
   CHECK(MakeMotion("stroke", spec, m).empty() && m->Offset(2)[0] == 1 && m->Offset(2)[1] == -4);
   CHECK(MakeMotion("fixed", spec, m).empty() && m->Offset(3)[0] == 0 && m->Offset(3)[1] == 0);

@@ -400,6 +400,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(ReadMaterial(comm, read, opt));
   PetscCall(ReadDriver(comm, read, opt));
   PetscCall(ReadLoading(comm, read, opt));
+  PetscCall(ReadLowerDieMotion(comm, read, opt)); // (tool_options.cpp)
 
   opt.known = read.known();
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);

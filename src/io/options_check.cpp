@@ -155,19 +155,18 @@ PetscErrorCode CheckDiePaths(MPI_Comm comm, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// -lower_die_motion path: the lower die's own path (its points: the motion's own check, scenes/die_motion.cpp).
-PetscErrorCode CheckLowerDiePath(MPI_Comm comm, const Options &opt)
+// A lower die on a motion of its own (neither mirror nor fixed: a path, or another kind; its options are its
+// kind's own reader's, tool/motion.hpp): one pass, the stroke rising.
+PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 {
   PetscFunctionBeginUser;
-  const bool path = opt.lower_die_motion == "path";
-  PetscCheck(path == !opt.lower_die_path.empty() && opt.lower_die_path.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
-             "-lower_die_path: the lower die's path of -lower_die_motion path, as U,y pairs (mm); give both or "
-             "neither");
-  PetscCheck(!path || (opt.stroke_path.empty() && opt.unload != "withdraw" && opt.pass2_stroke == 0 &&
-                       opt.stroke_corner_radius <= 0),
+  const bool own = opt.lower_die_motion != "mirror" && opt.lower_die_motion != "fixed";
+  PetscCheck(!own || (opt.stroke_path.empty() && opt.unload != "withdraw" && opt.pass2_stroke == 0 &&
+                      opt.stroke_corner_radius <= 0),
              comm, PETSC_ERR_USER_INPUT,
-             "-lower_die_motion path: the lower die follows its path as the stroke rises, in one pass: not with "
-             "-stroke_path, -unload withdraw, -pass2_stroke or -stroke_corner_radius");
+             "-lower_die_motion %s: the lower die follows its motion as the stroke rises, in one pass: not with "
+             "-stroke_path, -unload withdraw, -pass2_stroke or -stroke_corner_radius",
+             opt.lower_die_motion.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -229,7 +228,7 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
   PetscFunctionBeginUser;
   PetscCall(CheckDies(comm, opt));
   PetscCall(CheckDiePaths(comm, opt));
-  PetscCall(CheckLowerDiePath(comm, opt));
+  PetscCall(CheckLowerDieMotion(comm, opt));
   PetscCall(CheckPassesAndHolds(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -1,10 +1,12 @@
 // The tool scenes' options (include/tubeform/io/tool_options.hpp); checked in options_check.cpp.
 #include "tubeform/io/tool_options.hpp"
 
+#include <algorithm>
+
 namespace tf {
 
 namespace {
-// The die's strokes in turn, the upper and lower dies' shapes, the lower die's motion.
+// The die's strokes in turn, the upper and lower dies' shapes.
 PetscErrorCode ReadDieShapes(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
@@ -32,16 +34,6 @@ PetscErrorCode ReadDieShapes(PetscOptionItems *PetscOptionsObject, OptionReader 
                 "tool scenes: the lower die: mirror (of the upper one), flat (a floor at y = -Ro), or a profile "
                 "file (*.dxf or text) drawn as an upper die, mirrored below the tube",
                 opt.lower_die));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-lower_die_motion",
-                       "tool scenes: the lower die moves up by the stroke U (mirror), stays (fixed; the upper die "
-                       "then travels 2 U, so U is half the dies' closing either way), or follows -lower_die_path "
-                       "(path; the upper die travels U)",
-                       {"mirror", "fixed", "path"}, opt.lower_die_motion));
-  PetscCall(RealList(PetscOptionsObject, read, "-lower_die_path",
-                     "tool scenes with -lower_die_motion path: the lower die's rise (mm, up from where it starts) at "
-                     "strokes U in turn, as U,y pairs (U rising from 0), linear in U between them; it stays after "
-                     "the last",
-                     2 * kMaxPathPoints, opt.lower_die_path));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -126,7 +118,83 @@ PetscErrorCode ReadSecondPassAndSideDies(PetscOptionItems *PetscOptionsObject, O
                       opt.pass2_turn));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+// The lower die's words for its motion (-lower_die_motion): mirror and path name the stroke up by U and the
+// schedule; fixed and each kind registered after the built-in ones (tool/motion.hpp) are their own words.
+struct LowerWord {
+  std::string word, kind;
+};
+std::vector<LowerWord> LowerWords()
+{
+  std::vector<LowerWord> words{{"mirror", "stroke"}, {"fixed", "fixed"}, {"path", "schedule"}};
+  for (const std::string &kind : MotionKinds())
+    if (kind != "fixed" && kind != "stroke" && kind != "path" && kind != "force" && kind != "schedule")
+      words.push_back({kind, kind});
+  return words;
+}
+
+// -lower_die_motion's help: its words (a kind after the built-in ones named with its options).
+std::string LowerHelp(const std::vector<LowerWord> &words)
+{
+  std::string help = "tool scenes: the lower die moves up by the stroke U (mirror), stays (fixed; the upper die then "
+                     "travels 2 U, so U is half the dies' closing either way), ";
+  help +=
+    words.size() > 3 ? "follows -lower_die_path (path)" : "or follows -lower_die_path (path; the upper die travels U)";
+  for (size_t k = 3; k < words.size(); ++k) {
+    help += std::string(k + 1 < words.size() ? ", " : " or ") + "moves as its motion " + words[k].word + " says (";
+    for (const std::string &name : FindMotionKind(words[k].kind)->options) help += "-lower_die_" + name + " ";
+    help += "docs/dies.md)";
+  }
+  if (words.size() > 3) help += "; the upper die travels U but with fixed";
+  return help;
+}
+
+// -lower_die_<name> of the words other than `chosen`, given: one line naming it and the word it belongs to.
+PetscErrorCode RefuseOthers(MPI_Comm comm, const std::vector<LowerWord> &words, const LowerWord &chosen)
+{
+  PetscFunctionBeginUser;
+  const std::vector<std::string> mine = FindMotionKind(chosen.kind)->options;
+  for (const LowerWord &w : words)
+    for (const std::string &name : FindMotionKind(w.kind)->options) {
+      PetscBool given;
+      PetscCall(PetscOptionsHasName(nullptr, "lower_die_", ("-" + name).c_str(), &given));
+      const bool other = std::find(mine.begin(), mine.end(), name) == mine.end();
+      PetscCheck(!given || !other, comm, PETSC_ERR_USER_INPUT,
+                 "-lower_die_%s: an option of -lower_die_motion %s, not of -lower_die_motion %s", name.c_str(),
+                 w.word.c_str(), chosen.word.c_str());
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 } // namespace
+
+PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  const std::vector<LowerWord> words = LowerWords();
+  std::vector<const char *> list;
+  PetscInt choice = 0;
+  const std::string help = LowerHelp(words);
+
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < words.size(); ++k) {
+    list.push_back(words[k].word.c_str());
+    if (opt.lower_die_motion == words[k].word) choice = (PetscInt)k;
+    for (const std::string &name : FindMotionKind(words[k].kind)->options) read.Note(("-lower_die_" + name).c_str());
+  }
+  read.Note("-lower_die_motion", help.c_str());
+  PetscOptionsBegin(comm, "lower_die_", "tubeform: lower die motion", "tubeform");
+  OptionsBlock block(PetscOptionsObject);
+  PetscCall(PetscOptionsEList("-motion", help.c_str(), "tubeform", list.data(), (PetscInt)list.size(), list[choice],
+                              &choice, nullptr));
+  opt.lower_die_motion = words[choice].word, opt.lower_die_kind = words[choice].kind;
+  if (opt.help)
+    for (const LowerWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, opt.lower_die_spec));
+  else
+    PetscCall(ReadMotion(PetscOptionsObject, opt.lower_die_kind, opt.lower_die_spec));
+  block.Release();
+  PetscOptionsEnd();
+  if (!opt.help) PetscCall(RefuseOthers(comm, words, words[choice]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {

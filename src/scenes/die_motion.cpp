@@ -1,39 +1,39 @@
 // The press's dies' motions from the options, made by the motion registry (tool/motion.hpp): the lower die's of
-// -lower_die_motion, with the upper die's that goes with it; the upper die's path (-die_path); force control
+// -lower_die_motion (its kind and options read by the kind, io/tool_options.cpp), with the upper die's that goes
+// with it; the upper die's path (-die_path); force control
 // (-die_force, -side_force).
 #include "tubeform/scenes/die.hpp"
 
 namespace tf {
 
 namespace {
-// A -lower_die_motion word: the lower die's motion (a kind of the registry, along `lower` per unit stroke U)
-// and the upper die's (U: half the dies' closing either way, if `closing`: the closed forms of the dies' reach
-// hold, CheckDieReach).
+// A -lower_die_motion word (its kind and options: opt.lower_die_kind, opt.lower_die_spec, read by the kind,
+// io/tool_options.cpp): the upper die's motion that goes with it (U: half the dies' closing either way), and whether
+// the dies close as the closed forms of their reach say (CheckDieReach). Any other word: the upper die travels U,
+// the lower one moves as its motion says.
 struct LowerMotion {
-  const char *word, *kind;
-  Vec2 lower, upper;
+  const char *word;
+  Vec2 upper;
   bool closing;
 };
 const LowerMotion kLowerMotions[] = {
-  {"mirror", "stroke", {0.0, 1.0}, {0.0, -1.0}, true}, // up by U: the mirror of the upper die's
-  {"fixed", "fixed", {0.0, 0.0}, {0.0, -2.0}, true},   // it stays; the upper die travels 2 U
-  {"path", "schedule", {}, {0.0, -1.0}, false},        // through -lower_die_path's rises at its strokes
+  {"mirror", {0.0, -1.0}, true}, // up by U: the mirror of the upper die's
+  {"fixed", {0.0, -2.0}, true},  // it stays; the upper die travels 2 U
 };
+const LowerMotion kOwnMotion{"", {0.0, -1.0}, false};
 
-const LowerMotion *LowerMotionOf(const Options &o)
+const LowerMotion &LowerMotionOf(const Options &o)
 {
   for (const LowerMotion &m : kLowerMotions)
-    if (o.lower_die_motion == m.word) return &m;
-  return nullptr;
+    if (o.lower_die_motion == m.word) return m;
+  return kOwnMotion;
 }
 
-// The lower die's motion spec of -lower_die_motion's word m.
-MotionSpec LowerSpec(const Options &o, const LowerMotion &m)
+// The lower die's motion spec: its options' along its direction, up by the stroke.
+MotionSpec LowerSpec(const Options &o)
 {
-  MotionSpec spec;
-  spec.direction = m.lower;
-  for (size_t k = 0; k + 1 < o.lower_die_path.size(); k += 2)
-    spec.at.push_back(o.lower_die_path[k]), spec.to.push_back({0.0, o.lower_die_path[k + 1]});
+  MotionSpec spec = o.lower_die_spec;
+  spec.direction = {0.0, 1.0};
   return spec;
 }
 } // namespace
@@ -50,13 +50,9 @@ PetscErrorCode SetMotion(MPI_Comm comm, const char *option, const std::string &k
 PetscErrorCode SetLowerMotion(MPI_Comm comm, const Options &o, Tool &upper, Tool &lower)
 {
   PetscFunctionBeginUser;
-  const LowerMotion *m = LowerMotionOf(o);
-  PetscCheck(m, comm, PETSC_ERR_USER_INPUT, "-lower_die_motion %s: not a motion of the lower die",
-             o.lower_die_motion.c_str());
-  PetscCall(SetMotion(comm, o.lower_die_path.empty() ? "-lower_die_motion" : "-lower_die_path", m->kind,
-                      LowerSpec(o, *m), lower));
+  PetscCall(SetMotion(comm, "-lower_die_motion", o.lower_die_kind, LowerSpec(o), lower));
   MotionSpec spec;
-  spec.direction = m->upper;
+  spec.direction = LowerMotionOf(o).upper;
   PetscCall(SetMotion(comm, "-lower_die_motion", "stroke", spec, upper));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -64,22 +60,13 @@ PetscErrorCode SetLowerMotion(MPI_Comm comm, const Options &o, Tool &upper, Tool
 MotionHandle LowerDieMotion(const Options &o)
 {
   MotionHandle lower;
-  const LowerMotion *m = LowerMotionOf(o);
-  if (!m || !MakeMotion(m->kind, LowerSpec(o, *m), lower).empty()) lower = StrokeMotion({0.0, 1.0});
+  if (!MakeMotion(o.lower_die_kind, LowerSpec(o), lower).empty()) lower = StrokeMotion({0.0, 1.0});
   return lower;
 }
 
-double UpperTravel(const Options &o)
-{
-  const LowerMotion *m = LowerMotionOf(o);
-  return m ? -m->upper[1] : 1.0;
-}
+double UpperTravel(const Options &o) { return -LowerMotionOf(o).upper[1]; }
 
-bool LowerDieClosing(const Options &o)
-{
-  const LowerMotion *m = LowerMotionOf(o);
-  return m && m->closing;
-}
+bool LowerDieClosing(const Options &o) { return LowerMotionOf(o).closing; }
 
 std::vector<double> PressKinks(const Options &opt)
 {
@@ -88,8 +75,7 @@ std::vector<double> PressKinks(const Options &opt)
   MotionSpec spec;
   spec.path = DiePath(opt);
   if (!opt.die_path.empty() && MakeMotion("path", spec, upper).empty()) kinks = upper->Kinks();
-  const LowerMotion *m = QuarterModel(opt) ? nullptr : LowerMotionOf(opt);
-  if (m && MakeMotion(m->kind, LowerSpec(opt, *m), lower).empty())
+  if (!QuarterModel(opt) && MakeMotion(opt.lower_die_kind, LowerSpec(opt), lower).empty())
     for (double s : lower->Kinks()) kinks.push_back(s);
   return kinks;
 }

@@ -31,4 +31,13 @@ private:
 
 std::unique_ptr<Motion> PathMotion(const ToolPath &path) { return std::make_unique<Path>(path); }
 
+const MotionKind &PathKind()
+{
+  static const MotionKind kind{"path", {}, nullptr, [](const MotionSpec &s, MotionHandle &m) {
+                                 return s.path.empty() ? "a path with no points"
+                                                       : (m = PathMotion(s.path), std::string());
+                               }};
+  return kind;
+}
+
 } // namespace tf

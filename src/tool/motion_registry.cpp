@@ -1,42 +1,33 @@
-// The registry of tool motions: a kind's name, and how it is made from a MotionSpec and what it refuses. A new
-// motion is its own file (motion_*.cpp) and a line here.
-#include <utility>
-
+// The registry of tool motions: each kind's name, the options it reads, its reader and its factory (a MotionKind,
+// defined in the kind's own file). A new motion is its own file (motion_*.cpp) and a line here.
 #include "tubeform/tool/motion.hpp"
 
 namespace tf {
 
+const MotionKind &FixedKind();    // motion_fixed.cpp
+const MotionKind &StrokeKind();   // motion_stroke.cpp
+const MotionKind &PathKind();     // motion_path.cpp
+const MotionKind &ForceKind();    // motion_force.cpp
+const MotionKind &ScheduleKind(); // motion_schedule.cpp
+const MotionKind &PulseKind();    // motion_pulse.cpp
+
 namespace {
-// "" or why not, and the motion made.
-using Factory = std::string (*)(const MotionSpec &spec, MotionHandle &m);
-
-bool Moves(const Vec2 &d) { return d[0] != 0 || d[1] != 0; }
-
-const std::pair<const char *, Factory> kMotions[] = {
-  {"fixed", [](const MotionSpec &, MotionHandle &m) { return m = FixedMotion(), std::string(); }},
-  {"stroke",
-   [](const MotionSpec &s, MotionHandle &m) {
-     return Moves(s.direction) ? (m = StrokeMotion(s.direction), std::string()) : "a stroke along no direction";
-   }},
-  {"path",
-   [](const MotionSpec &s, MotionHandle &m) {
-     return s.path.empty() ? "a path with no points" : (m = PathMotion(s.path), std::string());
-   }},
-  {"force",
-   [](const MotionSpec &s, MotionHandle &m) {
-     return Moves(s.direction) ? (m = ForceMotion(s.direction), std::string()) : "a force along no direction";
-   }},
-  {"schedule", [](const MotionSpec &s, MotionHandle &m) { return ScheduleMotion(s.at, s.to, m); }},
-};
+const MotionKind &(*const kKinds[])() = {FixedKind, StrokeKind, PathKind, ForceKind, ScheduleKind, PulseKind};
 } // namespace
+
+const MotionKind *FindMotionKind(const std::string &kind)
+{
+  for (const auto &k : kKinds)
+    if (kind == k().name) return &k();
+  return nullptr;
+}
 
 std::string MakeMotion(const std::string &kind, const MotionSpec &spec, MotionHandle &m)
 {
-  for (const auto &[name, make] : kMotions)
-    if (kind == name) {
-      const std::string why = make(spec, m);
-      return why.empty() ? why : "a motion '" + kind + "': " + why;
-    }
+  if (const MotionKind *k = FindMotionKind(kind)) {
+    const std::string why = k->make(spec, m);
+    return why.empty() ? why : "a motion '" + kind + "': " + why;
+  }
   std::string known;
   for (const std::string &k : MotionKinds()) known += (known.empty() ? "" : ", ") + k;
   return "no motion '" + kind + "' (known: " + known + ")";
@@ -45,8 +36,20 @@ std::string MakeMotion(const std::string &kind, const MotionSpec &spec, MotionHa
 std::vector<std::string> MotionKinds()
 {
   std::vector<std::string> kinds;
-  for (const auto &m : kMotions) kinds.push_back(m.first);
+  for (const auto &k : kKinds) kinds.push_back(k().name);
   return kinds;
+}
+
+PetscErrorCode ReadMotion(PetscOptionItems *PetscOptionsObject, const std::string &kind, MotionSpec &spec)
+{
+  PetscFunctionBeginUser;
+  const MotionKind *k = FindMotionKind(kind);
+  MotionHandle none;
+  PetscCheck(k, PetscOptionsObject->comm, PETSC_ERR_USER_INPUT, "-%smotion %s: %s",
+             PetscOptionsObject->prefix ? PetscOptionsObject->prefix : "", kind.c_str(),
+             MakeMotion(kind, spec, none).c_str());
+  if (k->read) PetscCall(k->read(PetscOptionsObject, spec));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 } // namespace tf

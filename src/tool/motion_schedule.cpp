@@ -1,6 +1,7 @@
 // A tool moved through displacements given at strokes (-lower_die_motion path, -lower_die_path): from (0, 0) at
 // stroke 0 through each point at its stroke, linear in the stroke between them; past the last stroke it stays
-// there. Each stroke is a kink: a step runs on one piece (Follow), ending at the next stroke.
+// there. Each stroke is a kink: a step runs on one piece (Follow), ending at the next stroke. Its option,
+// -<prefix>path U1,d1,U2,d2,...: the distances d along the tool's direction at the strokes U.
 #include <cmath>
 #include <cstdio>
 
@@ -80,6 +81,54 @@ std::string ScheduleMotion(const std::vector<double> &at, const std::vector<Vec2
   }
   m = MotionHandle(std::make_unique<Schedule>(at, to));
   return "";
+}
+
+namespace {
+// -<prefix>path's numbers at most: 32 points, as -die_path's.
+constexpr PetscInt kMaxNumbers = 64;
+
+PetscErrorCode ReadSchedule(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
+{
+  std::vector<PetscReal> v(kMaxNumbers, 0.0); // (-help prints the first as the default)
+  PetscInt n = kMaxNumbers;
+  PetscBool set;
+  const char *prefix = PetscOptionsObject->prefix ? PetscOptionsObject->prefix : "";
+
+  PetscFunctionBeginUser;
+  PetscCall(
+    PetscOptionsRealArray("-path",
+                          "the tool's travel y along its motion (mm, from where it starts; the lower die's: up) "
+                          "at strokes U in turn, as U,y pairs (U rising from 0), linear in U between them; it "
+                          "stays after the last (-lower_die_motion path)",
+                          "tubeform", v.data(), &n, &set));
+  if (PetscOptionsObject->printhelp) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(set && n > 0 && n % 2 == 0, PetscOptionsObject->comm, PETSC_ERR_USER_INPUT,
+             "-%spath: the path of -%smotion path, as U,y pairs (mm), an even count of numbers: give both or neither",
+             prefix, prefix);
+  spec.at.clear(), spec.to.clear(), spec.along.clear();
+  for (PetscInt k = 0; k + 1 < n; k += 2) spec.at.push_back(v[k]), spec.along.push_back(v[k + 1]);
+  std::vector<Vec2> probe; // (the factory's own refusals, before any direction is given)
+  for (double d : spec.along) probe.push_back({0.0, d});
+  MotionHandle m;
+  const std::string why = ScheduleMotion(spec.at, probe, m);
+  PetscCheck(why.empty(), PetscOptionsObject->comm, PETSC_ERR_USER_INPUT, "-%spath: %s", prefix, why.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The spec's displacements: `to`, or the distances `along` its direction (+ 0.0: a zero coordinate's sign is +).
+std::string MakeSchedule(const MotionSpec &s, MotionHandle &m)
+{
+  std::vector<Vec2> to = s.to;
+  if (to.empty())
+    for (double d : s.along) to.push_back({d * s.direction[0] + 0.0, d * s.direction[1] + 0.0});
+  return ScheduleMotion(s.at, to, m);
+}
+} // namespace
+
+const MotionKind &ScheduleKind()
+{
+  static const MotionKind kind{"schedule", {"path"}, ReadSchedule, MakeSchedule};
+  return kind;
 }
 
 } // namespace tf

@@ -13,6 +13,7 @@
 #include "tubeform/contact/contact.hpp"
 #include "tubeform/fe/quad.hpp"
 #include "tubeform/material/elastic.hpp"
+#include "tubeform/tool/motion.hpp"
 
 namespace tf {
 
@@ -78,8 +79,9 @@ struct Options {
   std::string die_profile;          // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
   double die_angle = 90;            // degrees between the V-die's flanks
   std::string lower_die = "mirror"; // mirror, flat or a profile file drawn as an upper die
-  std::string lower_die_motion = "mirror"; // mirror (up by the stroke), fixed, or path (-lower_die_path)
-  std::vector<double> lower_die_path;      // its path: U, y pairs (mm: its rise at the stroke U), in turn
+  std::string lower_die_motion = "mirror"; // its motion's word: mirror, fixed, path, or another motion's kind
+  std::string lower_die_kind = "stroke";   // the motion's kind of that word (tool/motion.hpp: mirror is a stroke)
+  MotionSpec lower_die_spec;               // and what its options (-lower_die_*) give it
   std::string model = "auto";              // quarter, half, full, or auto: the quarter where it is exact
   double die_force = 0;              // > 0: the upper die is force-controlled, its punch load rising to this (N/mm)
   double die_offset = 0;             // the first pass's upper die off the y axis along the press's x (mm; full model)

@@ -1,11 +1,14 @@
 // How a rigid tool moves (docs/dies.md): where its stroke has moved it, how far it has turned it, its motion per
 // unit stroke on the piece it follows, whether its stroke is an unknown found from a force. One kind per file
-// (src/tool/motion_*.cpp), each named in the registry (motion_registry.cpp). Pure geometry, no PETSc.
+// (src/tool/motion_*.cpp): the motion, the options it reads under its tool's options prefix, how it is made;
+// each named in the registry (motion_registry.cpp). Geometry, and PETSc only to read the options.
 //
 // A motion's only state between increments is its tool's stroke (Tool::stroke, which the contact set persists for
 // a restart) and the piece it follows, which Follow takes again from the stroke at each increment's start
 // (ContactSet::SetStroke); the rest is its configuration, made again from the options on a restart.
 #pragma once
+
+#include <petscsys.h>
 
 #include <memory>
 #include <string>
@@ -78,15 +81,37 @@ std::string ScheduleMotion(const std::vector<double> &at, const std::vector<Vec2
 
 // What a kind of motion is made from (each kind reads what it needs).
 struct MotionSpec {
-  Vec2 direction{0, -1};  // stroke, force: per unit stroke
-  ToolPath path;          // path: its points and turns
-  std::vector<double> at; // schedule: the strokes
-  std::vector<Vec2> to;   // and the displacements there
+  Vec2 direction{0, -1};     // stroke, force, schedule: per unit stroke (the tool's, given by its scene)
+  ToolPath path;             // path: its points and turns
+  std::vector<double> at;    // schedule: the strokes
+  std::vector<Vec2> to;      // and the displacements there
+  std::vector<double> along; // or its distances there along `direction` (what -<prefix>path gives)
+  std::vector<double> own;   // a kind's own numbers, as its reader reads them (its file says which)
 };
+
+// A kind's reader: its options, under the options prefix of the PetscOptionsBegin block it is called in (the
+// tool's: "lower_die_" reads -lower_die_path as "-path"), into `spec`; a bad or missing value refused in one line
+// naming the full option. Under -help it lists them and refuses nothing.
+using MotionReader = PetscErrorCode (*)(PetscOptionItems *PetscOptionsObject, MotionSpec &spec);
+// A kind's factory: the motion from `spec` into `m`; "" or why not.
+using MotionFactory = std::string (*)(const MotionSpec &spec, MotionHandle &m);
+// A kind in the registry: its name, its options' names under a prefix (without the dash), its reader (none: it
+// reads nothing) and its factory. Each kind's file defines its own (FixedKind(), ..., the registry lists them).
+struct MotionKind {
+  const char *name;
+  std::vector<std::string> options;
+  MotionReader read;
+  MotionFactory make;
+};
+
 // The registry: a motion of the kind named `kind` from `spec` into `m`; "" or why not (an unknown kind names the
 // known ones; a kind refuses a spec it cannot move by: a path with no points, a force along no direction).
 std::string MakeMotion(const std::string &kind, const MotionSpec &spec, MotionHandle &m);
 // The registered kinds, in the registry's order.
 std::vector<std::string> MotionKinds();
+// The kind named `kind`, or nullptr.
+const MotionKind *FindMotionKind(const std::string &kind);
+// Reads the options of the kind named `kind` (a registered one) into `spec` (MotionReader).
+PetscErrorCode ReadMotion(PetscOptionItems *PetscOptionsObject, const std::string &kind, MotionSpec &spec);
 
 } // namespace tf
