@@ -47,8 +47,9 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
   const auto summarize = [&](const Companions *estimate) {
     Answer a = Summarize(history_.rows(), !scene_metrics.empty(), estimate);
     a.stroke_name = scene_->StrokeName(), a.load_unit = scene_->LoadUnit();
-    for (const auto &[name, value] : scene_metrics) // (the second pass's start: the scene's, before its first row)
-      if (name == "pass2_start_stroke" && a.passes.size() > 1) a.passes[1].start = value;
+    for (const auto &[name, value] : scene_metrics) // (a later pass's start: the scene's, before its first row)
+      for (size_t p = 1; p < a.passes.size(); ++p)
+        if (name == Formatted("pass%d_start_stroke", (int)p + 1)) a.passes[p].start = value;
     a.mesh_covered = opt_.mesh_file.empty();
     // (the accuracy held to: the one demanded, else the preset's expectation)
     a.target_load = opt_.target_load > 0 ? opt_.target_load : opt_.expect_load;
