@@ -47,6 +47,7 @@ PressScene::PressScene(const Options &opt, bool squaring)
     p.dies = PassOptions(opt, k);
     p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side_die != "none";
   }
+  if (passes_.size() > 1) passes_[1].side_from = stroke_; // (a later one's: StartPass, kept for a restart: Persist)
 }
 
 LoadPath PressScene::Path(const Options &opt) const
@@ -155,7 +156,7 @@ PetscErrorCode PressScene::StartPass(Model &m)
   PetscCall(StartOnTube(m.comm, !m.quiet, outer, drawn, passes_[next].start_back, (int)pass_));
   // (the side dies' travel goes on from where the pass before left it: through its press and its backing off)
   const Pass &before = passes_[pass_];
-  passes_[next].side_from = next == 1 ? stroke_ : before.side_from + before.stroke + before.back;
+  if (next > 1) passes_[next].side_from = before.side_from + before.stroke + before.back;
   unloading_ = false;
   // (the pin stays until the next pass's dies hold the half model's tube: Load)
   reversed_total_[0] = reversed_total_[1] = reversed_moment_ = 0;
