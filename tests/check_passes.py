@@ -28,7 +28,11 @@ C. TURNED on 1 and 2 ranks: load, C1, C2, C/t and internal work along each press
 D. What the third turn does: TURNED's third die moves along the tube's -y by its stroke (its outline in the
    results displaced by (0, -1.5) mm at the end: two quarter turns are the first press's axis), SAME's along -x
    (the second's), within 1e-9 mm (a die's displacement is its stroke along its motion, exact in floating point).
-E. Bad input: -pass4_stroke without -pass3_stroke, and -pass3_turn without -pass3_stroke, are refused in one line
+E. A checkpoint half way through the third press, continued with -restart (TURNED with side plates in the third
+   pass, -pass3_side_die flat, whose travel goes on from the passes before): the history of the run never stopped
+   within 1e-12 of each column's largest value (tests/check_restart.py's bound); a restart that lost where the
+   third pass's side plates started, or its dies' start, differs at O(1).
+F. Bad input: -pass4_stroke without -pass3_stroke, and -pass3_turn without -pass3_stroke, are refused in one line
    naming the option, a non-zero exit, no results file.
 """
 import os
@@ -43,7 +47,8 @@ k = Checks("passes")
 U = 1.5
 BASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src}/options/preset-fast.opts",
         "-error_estimate", 0, "-progress", 0, "-stroke", U, "-pass2_stroke", U, "-pass2_turn", 90, "-pass3_stroke", U]
-RUNS = {"passes_same.h5": BASE, "passes_turned.h5": BASE + ["-pass3_turn", 90]}
+RUNS = {"passes_same.h5": BASE, "passes_turned.h5": BASE + ["-pass3_turn", 90],
+        "passes_side.h5": BASE + ["-pass3_turn", 90, "-pass3_side_die", "flat"]}
 run_all(tf, mpirun, [opts + ["-output", out(name)] for name, opts in RUNS.items()], timeout=600)
 same, turned = history_and_tools(out("passes_same.h5")), history_and_tools(out("passes_turned.h5"))
 
@@ -102,7 +107,25 @@ for name, h, want in (("TURNED", turned, (0.0, -U)), ("SAME", same, (-U, 0.0))):
     k.check(off <= 1e-9, f"D. {name}: the third pass's die moved by ({moved[0][0]:.6g}, {moved[0][1]:.6g}) mm, "
             f"({want[0]:g}, {want[1]:g}) within {off:.1e} mm (1e-9)")
 
-# E. A pass needs the one before it.
+# E. A checkpoint inside the third press, continued.
+whole = history_and_tools(out("passes_side.h5"))
+ck = out("passes_side_ck.h5")
+every = int(np.sum(whole["stage"] <= 3)) + int(np.sum(whole["stage"] == 4)) // 2
+run(tf, mpirun, 1, RUNS["passes_side.h5"] + ["-output", out("passes_part.h5"), "-checkpoint", ck, "-checkpoint_every",
+                                              every], timeout=600)
+cont = run(tf, mpirun, 1, RUNS["passes_side.h5"] + ["-output", out("passes_part.h5"), "-restart", ck], check=False,
+           timeout=600)
+with h5py.File(ck, "r") as c:
+    lam = c["/run/lambda"][0]
+part = history_and_tools(out("passes_part.h5"))
+cols = [c for c in whole if c != "tools"]
+same_shape = all(part[c].shape == whole[c].shape for c in cols)
+worst = max(np.abs(part[c] - whole[c]).max() / max(np.abs(whole[c]).max(), 1e-300) for c in cols) if same_shape else 1
+k.check(cont.returncode == 0 and same_shape and worst <= 1e-12 and 4 < lam < 5 and whole["side_load"][whole["stage"] == 4].max() > 0,
+        f"E. side plates in the third pass, continued from a checkpoint inside its press (lambda {lam:.3f}, exit "
+        f"{cont.returncode}): the history within {worst:.1e} (1e-12)")
+
+# F. A pass needs the one before it.
 for extra, option in ((["-pass4_stroke", 1], "-pass4_stroke"), (["-pass3_turn", 90], "-pass3_turn")):
     f = out("passes_bad.h5")
     if os.path.exists(f):
@@ -110,6 +133,6 @@ for extra, option in ((["-pass4_stroke", 1], "-pass4_stroke"), (["-pass3_turn", 
     p = run(tf, mpirun, 1, BASE[:-2] + extra + ["-output", f], check=False, timeout=60)
     lines = [l for l in (p.stdout + p.stderr).splitlines() if "error" in l.lower()]
     k.check(p.returncode != 0 and len(lines) == 1 and option in lines[0] and not os.path.exists(f),
-            f"E. {' '.join(map(str, extra))} without -pass3_stroke: exit {p.returncode}, refused in one line naming "
+            f"F. {' '.join(map(str, extra))} without -pass3_stroke: exit {p.returncode}, refused in one line naming "
             f"{option}: {lines[0] if lines else '(none)'}")
 k.done()
