@@ -17,9 +17,9 @@
 // metrics and forces in its press's frame: die.hpp, PassTurn). -die_force presses by a force (the stroke its
 // outcome), -side_die adds dies at the sides, -die_offset and -die_path move the die off the axis (the full
 // model under the rotation hold, hold.hpp); docs/dies.md.
-// History: stroke = tool stroke U (mm; half the dies' closing; in the second
+// History: stroke = tool stroke U (mm; half the dies' closing; in a later
 // pass its upper die's position from the same zero: the die touching the round
-// tube; -pass2_stroke is where it ends), load = punch load on the
+// tube; -pass2_stroke, -pass3_stroke, ... is where it ends), load = punch load on the
 // full tube (N/mm), the upper die's vertical force on the model: twice it in
 // the quarter and the half model, which carry half of it.
 #include "tubeform/scenes/press_scene.hpp"

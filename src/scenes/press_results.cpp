@@ -85,7 +85,8 @@ PetscErrorCode PressScene::Persist(Model &m, Archive &ar)
   PetscCall(ar.Value("floor_y", floor_y_));
   PetscCall(ar.Values("pass2_back", passes_[pass_].start_back)); // (the pass in place's; the name of two passes)
   if (pass_ >= 2) {
-    // (past the second pass: the side dies' travel where the pass in place began, where each pass's upper die started)
+    // (past the second pass: the side dies' travel where the pass in place began, where each later pass's upper die
+    // started)
     std::vector<double> from = {passes_[pass_].side_from};
     for (int k = 1; k < pass_; ++k) from.push_back(passes_[k].start);
     PetscCall(ar.Values("side_from_pass_starts", from));
