@@ -5,7 +5,8 @@ nor a rank-local abort), no hang (timeout) and no core dump where tubeform
 runs (the source directory), on 1 and 2 ranks; and an earlier result
 file is left untouched by the failed run. Misspelled options, options
 nothing reads (the option likely meant named where there is one; a solver
-option of the factorization the run does not use), values that are not
+option of the factorization the run does not use), an option only other
+scenes read (naming them: scenes/registry.cpp), values that are not
 numbers and material constants not in MPa (E against the law's initial
 yield stress, however the material is given) are such errors too
 (-allow_unused lets a run go on with an unknown option: checked twice, with
@@ -36,6 +37,10 @@ def OptionsReadLater(src):
 tf, mpirun, src = args()
 k = Checks("bad_input")
 base = ["-options_file", f"{src}/options/pressure.opts", "-mesh_nt", 2, "-mesh_ntheta", 6, "-increments", 1]
+# The same without the pressure scene's own option (-pressure_p), for the cases that name another scene: that scene
+# would refuse it as an option only the pressure scene reads (scenes/registry.cpp).
+other = ["-options_file", f"{src}/options/solver.opts", "-scene", "pressure", "-tube_ro", 20, "-tube_t", 10,
+         "-material", "aluminum", "-material_law", "elastic"] + base[2:]
 
 # A good run leaves a result we must not lose.
 run(tf, mpirun, 1, base + ["-output", out("keep.h5"), "-history_csv", out("keep.csv")])
@@ -70,6 +75,11 @@ cases = [
     (["-slide_back", "-1"], "-slide_back"),
     (["-bending_strain", "0"], "-bending_strain"),
     (["-die_angle", "40"], "-die_angle"),
+    (["-friction_mu", "0.1"], "-friction_mu: read by the squaring, flattening and slide scenes, not by this run's "
+     "pressure scene"),
+    (["-scene", "squaring", "-pressure_u", "0.1"], "-pressure_u: read by the pressure scene, not by this run's "
+     "squaring scene"),
+    (["-scene", "flattening", "-die_angle", "80"], "-die_angle: read by the squaring scene"),
     (["-scene", "squaring", "-model", "quarter", "-lower_die", "flat"], "-model quarter"),
     (["-scene", "squaring", "-lower_die", "flat", "-unload", "withdraw"], "-unload withdraw"),
     (["-scene", "squaring", "-lower_die", "no/such/die.profile"], "-lower_die no/such/die.profile"),
@@ -240,14 +250,16 @@ print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
 # On 2 ranks one of each kind: option value, option choice, mesh file, output path, material file.
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")], ["-wall_thickness", "1.65"],
-         ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"])
+         ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 137 and len(selected) == 8, f"{len(cases)} cases on 1 rank (137), {len(selected)} on 2 (8)")
+k.check(len(cases) == 140 and len(selected) == 9, f"{len(cases)} cases on 1 rank (140), {len(selected)} on 2 (9)")
 
 
 def attempt(np_, extra):
     """Runs a case that must be refused, with the earlier result's paths as its outputs."""
-    return run(tf, mpirun, np_, base + ["-output", out("keep.h5"), "-history_csv", out("keep.csv")] + extra,
+    scene = extra[extra.index("-scene") + 1] if "-scene" in extra else "pressure"
+    return run(tf, mpirun, np_, (base if scene == "pressure" else other) + ["-output", out("keep.h5"), "-history_csv",
+                                                                             out("keep.csv")] + extra,
                check=False, timeout=60, report_hang=True)
 
 

@@ -1,5 +1,7 @@
 #include "tubeform/scenes/registry.hpp"
 
+#include <sstream>
+
 namespace tf {
 
 // One factory per scene file.
@@ -23,17 +25,19 @@ std::unique_ptr<Scene> MakeAnySlideScene(const Options &opt)
 
 const std::vector<SceneEntry> &SceneRegistry()
 {
+  // The options only some scenes read (`reads`): the V-die's, friction's where something touches, each scene's own.
   static const std::vector<SceneEntry> scenes = {
-    {"squaring", "quarter tube pressed by the upper 90-degree V-die (the paper's process)", MakeSquaringScene},
-    {"flattening", "quarter ring crushed by a flat plate", MakeFlatteningScene},
-    {"pressure", "quarter thick cylinder under internal pressure (Lame, Hill)", MakePressureScene},
-    {"shear", "simple shear of a block (Jaumann objectivity)", MakeShearScene},
-    {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene},
-    {"column", "a bowed strip shortened past its Euler load (geometric stiffness)", MakeColumnScene},
-    {"tension", "plane-strain tension or compression of a block (flow curve)", MakeTensionScene},
-    {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene},
+    {"squaring", "quarter tube pressed by the upper 90-degree V-die (the paper's process)", MakeSquaringScene,
+     "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge -friction_mu -friction_vcri"},
+    {"flattening", "quarter ring crushed by a flat plate", MakeFlatteningScene, "-friction_mu -friction_vcri"},
+    {"pressure", "quarter thick cylinder under internal pressure (Lame, Hill)", MakePressureScene, "-pressure_"},
+    {"shear", "simple shear of a block (Jaumann objectivity)", MakeShearScene, "-shear_"},
+    {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene, "-rotation_"},
+    {"column", "a bowed strip shortened past its Euler load (geometric stiffness)", MakeColumnScene, "-column_"},
+    {"tension", "plane-strain tension or compression of a block (flow curve)", MakeTensionScene, "-tension_"},
+    {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene, "-bending_"},
     {"slide", "a block pushed along a floor, or a ring turned in a cylinder (-slide_tool arc): Coulomb friction",
-     MakeAnySlideScene},
+     MakeAnySlideScene, "-slide_ -friction_mu -friction_vcri"},
   };
   return scenes;
 }
@@ -43,6 +47,33 @@ std::vector<std::string> SceneNames()
   std::vector<std::string> names;
   for (const auto &s : SceneRegistry()) names.push_back(s.name);
   return names;
+}
+
+namespace {
+// Whether the space-separated list `reads` names `option` (a name ending in '_' as a prefix).
+bool Lists(const std::string &reads, const std::string &option)
+{
+  std::istringstream words(reads);
+  for (std::string w; words >> w;)
+    if (w.back() == '_' ? option.compare(0, w.size(), w) == 0 : option == w) return true;
+  return false;
+}
+} // namespace
+
+std::string ForeignOption(const std::string &scene, const std::string &option)
+{
+  std::vector<std::string> readers;
+  for (const auto &s : SceneRegistry()) {
+    if (!Lists(s.reads, option)) continue;
+    if (scene == s.name) return "";
+    readers.push_back(s.name);
+  }
+  if (readers.empty()) return "";
+  std::string names;
+  for (size_t k = 0; k < readers.size(); ++k)
+    names += (k == 0 ? "" : k + 1 == readers.size() ? " and " : ", ") + readers[k];
+  return "read by the " + names + (readers.size() > 1 ? " scenes" : " scene") + ", not by this run's " + scene +
+         " scene (docs/scenes.md)";
 }
 
 std::unique_ptr<Scene> CreateScene(const Options &opt)

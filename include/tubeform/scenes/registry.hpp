@@ -13,10 +13,16 @@ struct SceneEntry {
   const char *name;
   const char *what; // one line for -help and docs/
   std::unique_ptr<Scene> (*make)(const Options &opt);
+  // The options it reads that not every scene does (space-separated; a name ending in '_' a prefix): an option of
+  // another scene's list, given to this one, is refused naming the scenes that read it (ForeignOption).
+  const char *reads = "";
 };
 
 const std::vector<SceneEntry> &SceneRegistry();
 std::vector<std::string> SceneNames();
+// "" or why the option named `option` (with its dash) is not for the scene `scene`: the scenes whose `reads` list
+// it, where `scene`'s does not.
+std::string ForeignOption(const std::string &scene, const std::string &option);
 // The scene of opt.scene; null if the name is not registered.
 std::unique_ptr<Scene> CreateScene(const Options &opt);
 
