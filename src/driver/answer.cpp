@@ -119,8 +119,9 @@ Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const Companion
   Answer a;
   a.tool = tool;
   if (rows.empty()) return a;
-  const bool second = tool && std::any_of(rows.begin(), rows.end(), [](const HistoryRow &r) { return r.stage >= 2; });
-  for (int p = 0; p < (second ? 2 : 1); ++p) {
+  int passes = 1; // (a tool scene's pass k presses in stage 2k: the passes the history reached)
+  for (const HistoryRow &r : rows) passes = tool ? std::max(passes, (int)(r.stage / 2) + 1) : 1;
+  for (int p = 0; p < passes; ++p) {
     a.passes.push_back(SummarizePass(rows, tool, p));
     PassAnswer &pass = a.passes.back();
     if (companions && companions->Ran()) EstimatePass(pass, rows, *companions, tool, p);
@@ -142,7 +143,7 @@ std::vector<std::pair<std::string, double>> AnswerAttributes(const Answer &a)
   std::vector<std::pair<std::string, double>> out;
   for (size_t p = 0; p < a.passes.size(); ++p) {
     const PassAnswer &s = a.passes[p];
-    const std::string pre = p == 0 ? "" : "pass2_";
+    const std::string pre = p == 0 ? "" : Formatted("pass%d_", (int)p + 1);
     out.push_back({pre + "loaded_stroke", s.stroke});
     out.push_back({pre + "loaded_load", s.load});
     out.push_back({pre + "max_load", s.load_max});

@@ -54,11 +54,12 @@ std::string Errors(const Answer &a, const PassAnswer &s)
 PetscErrorCode PrintPass(MPI_Comm comm, const Answer &a, size_t p)
 {
   const PassAnswer &s = a.passes[p];
-  const std::string pass = p == 0 ? "" : "second pass: ";
+  const std::string pass = p == 0 ? "" : PassOrdinal((int)p) + " pass: ";
   PetscFunctionBeginUser;
   if (p > 0)
-    PetscCall(PetscPrintf(comm, "tubeform: second pass, its upper die from %s = %s to %s mm:\n", a.stroke_name.c_str(),
-                          Formatted("%.4g", s.start).c_str(), Formatted("%.4g", s.stroke).c_str()));
+    PetscCall(PetscPrintf(comm, "tubeform: %s pass, its upper die from %s = %s to %s mm:\n",
+                          PassOrdinal((int)p).c_str(), a.stroke_name.c_str(), Formatted("%.4g", s.start).c_str(),
+                          Formatted("%.4g", s.stroke).c_str()));
   PetscCall(PetscPrintf(comm, "tubeform: %s%s\n", pass.c_str(), LoadLine(a, s).c_str()));
   if (s.transient_max > 0)
     PetscCall(PetscPrintf(comm,
@@ -85,7 +86,7 @@ PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, bool finer_follows, c
                                       "error this run does not estimate): ";
   for (size_t p = 0; p < a.passes.size(); ++p) {
     const PassAnswer &s = a.passes[p];
-    line += p == 0 ? "" : "; second pass: ";
+    line += p == 0 ? "" : "; " + PassOrdinal((int)p) + " pass: ";
     line += s.estimated ? Errors(a, s) : "none (a companion run did not reach it)";
   }
   if (a.target_load > 0 || a.target_ct > 0)

@@ -15,6 +15,16 @@
 
 namespace tf {
 
+namespace {
+// Each later pass's start into the answer: the scene's pass<K>_start_stroke (before the pass's first row).
+void TakePassStarts(const std::vector<std::pair<std::string, double>> &scene_metrics, Answer &a)
+{
+  for (const auto &[name, value] : scene_metrics)
+    for (size_t p = 1; p < a.passes.size(); ++p)
+      if (name == Formatted("pass%d_start_stroke", (int)p + 1)) a.passes[p].start = value;
+}
+} // namespace
+
 PetscErrorCode Problem::PlaceResults(ResultWriter &writer, const std::vector<std::pair<std::string, double>> &metrics,
                                      const std::string &stop_reason)
 {
@@ -47,8 +57,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
   const auto summarize = [&](const Companions *estimate) {
     Answer a = Summarize(history_.rows(), !scene_metrics.empty(), estimate);
     a.stroke_name = scene_->StrokeName(), a.load_unit = scene_->LoadUnit();
-    for (const auto &[name, value] : scene_metrics) // (the second pass's start: the scene's, before its first row)
-      if (name == "pass2_start_stroke" && a.passes.size() > 1) a.passes[1].start = value;
+    TakePassStarts(scene_metrics, a);
     a.mesh_covered = opt_.mesh_file.empty();
     // (the accuracy held to: the one demanded, else the preset's expectation)
     a.target_load = opt_.target_load > 0 ? opt_.target_load : opt_.expect_load;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "tubeform/core/core.hpp"
+
 namespace tf {
 
 std::vector<ReleaseSummary> SummarizeReleases(const std::vector<HistoryRow> &rows)
@@ -31,8 +33,8 @@ std::vector<ReleaseSummary> SummarizeReleases(const std::vector<HistoryRow> &row
 std::vector<std::pair<std::string, double>> ReleaseAttributes(const std::vector<ReleaseSummary> &releases)
 {
   std::vector<std::pair<std::string, double>> out;
-  for (size_t k = 0; k < releases.size() && k < 2; ++k) {
-    const std::string pass = k ? "pass2_" : "";
+  for (size_t k = 0; k < releases.size(); ++k) {
+    const std::string pass = k ? Formatted("pass%d_", (int)k + 1) : "";
     out.push_back({pass + "springback_yielded_points", releases[k].reached});
     out.push_back({pass + "springback_yield_excess", releases[k].excess});
     out.push_back({pass + "springback_plastic_strain", releases[k].dep});
@@ -46,7 +48,8 @@ PetscErrorCode PrintReleases(MPI_Comm comm, const std::vector<ReleaseSummary> &r
   PetscFunctionBeginUser;
   for (size_t k = 0; k < releases.size(); ++k) {
     const ReleaseSummary &s = releases[k];
-    const char *which = k ? "the second pass's springback" : "the springback";
+    const std::string name = k ? "the " + PassOrdinal((int)k) + " pass's springback" : "the springback";
+    const char *which = name.c_str();
     const bool weighs = s.excess * s.reached / std::max(points, 1.0) >= kReleaseExcessWarn;
     if (s.elastic && s.reached > 0)
       PetscCall(PetscPrintf(comm,

@@ -25,14 +25,15 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
-  const bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != "auto" ||
-                     opt.pass2_stroke != 0 || !opt.pass2_die_profile.empty() || !opt.pass2_lower_die.empty() ||
-                     opt.pass2_turn != 0 || opt.die_force != 0 || opt.side_die != "none" ||
-                     !opt.pass2_side_die.empty() || opt.side_force != 0 || opt.die_offset != 0 ||
-                     !opt.die_path.empty() || opt.full_hold != "auto";
+  bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != "auto" ||
+               opt.die_force != 0 || opt.side_die != "none" || opt.side_force != 0 || opt.die_offset != 0 ||
+               !opt.die_path.empty() || opt.full_hold != "auto";
+  for (const PassSpec &p : opt.more_passes)
+    asked =
+      asked || p.stroke != 0 || p.turn != 0 || !p.die_profile.empty() || !p.lower_die.empty() || !p.side_die.empty();
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
-    "-lower_die, -lower_die_motion, -model, -pass2_*, -die_force, -die_offset, -die_path, -side_die, -side_force, "
+    "-lower_die, -lower_die_motion, -model, -pass<N>_*, -die_force, -die_offset, -die_path, -side_die, -side_force, "
     "-full_hold: "
     "the %s scene presses with no dies (these are the squaring and flattening scenes' options)",
     opt.scene.c_str());
@@ -45,7 +46,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
                "-die_force %g: with the half or full model the lower die must stay (-lower_die_motion fixed); a "
                "lower die moving by the upper one's unknown stroke is not available",
                opt.die_force);
-    PetscCheck(opt.pass2_stroke == 0, comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(PassCount(opt) == 1, comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: not with a second pass (-pass2_stroke); press one pass by force", opt.die_force);
     PetscCheck(opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: -unload withdraw moves the die back by its stroke; use -unload reverse or none",
@@ -53,36 +54,21 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
     PetscCheck(opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", opt.die_force);
   }
-  PetscCheck(opt.scene == "squaring" || opt.pass2_die_profile.empty(), comm, PETSC_ERR_USER_INPUT,
-             "-pass2_die_profile: the %s scene presses with plates, not dies", opt.scene.c_str());
   PetscCheck(
     opt.lower_die == "mirror" || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
     "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
     opt.stroke_corner_radius, opt.lower_die.c_str());
-  const bool pass2_mirror = opt.pass2_lower_die.empty() || opt.pass2_lower_die == "mirror";
-  PetscCheck(opt.model != "quarter" || (opt.lower_die == "mirror" && pass2_mirror && opt.lower_die_motion == "mirror"),
-             comm, PETSC_ERR_USER_INPUT,
+  bool mirror = opt.lower_die_motion == "mirror";
+  for (int pass = 0; pass < kMaxPasses; ++pass) mirror = mirror && PassLowerDie(opt, pass) == "mirror";
+  PetscCheck(opt.model != "quarter" || mirror, comm, PETSC_ERR_USER_INPUT,
              "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
              "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
-  PetscCheck(opt.pass2_stroke >= 0 && std::isfinite(opt.pass2_stroke), comm, PETSC_ERR_USER_INPUT,
-             "-pass2_stroke %g: must be non-negative (0: one pass)", opt.pass2_stroke);
-  PetscCheck(opt.pass2_stroke == 0 || opt.unload == "reverse", comm, PETSC_ERR_USER_INPUT,
-             "-pass2_stroke %g: a second pass follows the paper's springback; use -unload reverse (not %s)",
-             opt.pass2_stroke, opt.unload.c_str());
-  PetscCheck(opt.pass2_stroke > 0 ||
-               (opt.pass2_die_profile.empty() && opt.pass2_lower_die.empty() && opt.pass2_side_die.empty()),
-             comm, PETSC_ERR_USER_INPUT,
-             "-pass2_die_profile, -pass2_lower_die, -pass2_side_die: give -pass2_stroke for the second pass");
-  for (const auto &[name, value] : {std::pair{"-side_die", &opt.side_die}, {"-pass2_side_die", &opt.pass2_side_die}}) {
-    if (*value == "none" || (value == &opt.pass2_side_die && value->empty())) continue;
-    PetscCheck(!value->empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name);
-    PetscCheck(opt.die_force == 0 && opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
-               "%s %s: side dies press by the stroke: not with -die_force or -unload withdraw", name, value->c_str());
-  }
+  PetscCall(CheckPassStrokesAndDies(comm, opt)); // (passes_check.cpp)
+  PetscCall(CheckSideDies(comm, opt, "-side_die", opt.side_die));
   PetscCheck(opt.side_force >= 0 && std::isfinite(opt.side_force), comm, PETSC_ERR_USER_INPUT,
              "-side_force %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",
              opt.side_force);
-  PetscCheck(opt.side_force == 0 || (opt.side_die != "none" && opt.pass2_stroke == 0), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(opt.side_force == 0 || (opt.side_die != "none" && PassCount(opt) == 1), comm, PETSC_ERR_USER_INPUT,
              "-side_force %g: force-controlled side dies need -side_die (mirror, flat or a file) and one pass (not "
              "with -pass2_stroke)",
              opt.side_force);
@@ -144,8 +130,8 @@ PetscErrorCode CheckDiePaths(MPI_Comm comm, Options &opt)
     PetscCheck(opt.lower_die_motion == "fixed", comm, PETSC_ERR_USER_INPUT,
                "-die_path: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion "
                "fixed");
-    PetscCheck(opt.stroke_path.empty() && opt.die_force == 0 && opt.stroke_corner_radius <= 0 &&
-                 opt.pass2_stroke == 0 && opt.side_die == "none" && opt.unload != "withdraw" && opt.die_offset == 0,
+    PetscCheck(opt.stroke_path.empty() && opt.die_force == 0 && opt.stroke_corner_radius <= 0 && PassCount(opt) == 1 &&
+                 opt.side_die == "none" && opt.unload != "withdraw" && opt.die_offset == 0,
                comm, PETSC_ERR_USER_INPUT,
                "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, -die_force, "
                "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways "
@@ -161,7 +147,7 @@ PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 {
   PetscFunctionBeginUser;
   const bool own = opt.lower_die_motion != "mirror" && opt.lower_die_motion != "fixed";
-  PetscCheck(!own || (opt.stroke_path.empty() && opt.unload != "withdraw" && opt.pass2_stroke == 0 &&
+  PetscCheck(!own || (opt.stroke_path.empty() && opt.unload != "withdraw" && PassCount(opt) == 1 &&
                       opt.stroke_corner_radius <= 0),
              comm, PETSC_ERR_USER_INPUT,
              "-lower_die_motion %s: the lower die follows its motion as the stroke rises, in one pass: not with "
@@ -174,26 +160,7 @@ PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 PetscErrorCode CheckPassesAndHolds(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
-  const int quarters = Pass2Quarters(opt);
-  PetscCheck(std::isfinite(opt.pass2_turn) && std::abs(opt.pass2_turn) <= 360, comm, PETSC_ERR_USER_INPUT,
-             "-pass2_turn %g: the tube turns by -360 to 360 degrees", opt.pass2_turn);
-  PetscCheck(QuarterTurn(opt) || (FullModel(opt) && opt.full_hold != "pins"), comm, PETSC_ERR_USER_INPUT,
-             "-pass2_turn %g: a turn that is no multiple of 90 degrees needs the full model held by the rotation hold "
-             "(-model full or auto, -full_hold rotation or auto)",
-             opt.pass2_turn);
-  PetscCheck(opt.pass2_stroke > 0 || opt.pass2_turn == 0, comm, PETSC_ERR_USER_INPUT,
-             "-pass2_turn %g: give -pass2_stroke for the second pass", opt.pass2_turn);
-  PetscCheck(quarters % 2 == 0 || (opt.lower_die == "mirror" && opt.lower_die_motion == "mirror") ||
-               opt.full_hold != "pins",
-             comm, PETSC_ERR_USER_INPUT,
-             "-pass2_turn %g with -full_hold pins: the first pass's dies (-lower_die %s, -lower_die_motion %s) leave "
-             "the tube symmetric about the y axis only; a quarter turn presses it off that axis, which the pins "
-             "would hold it against (use -full_hold rotation or auto)",
-             opt.pass2_turn, opt.lower_die.c_str(), opt.lower_die_motion.c_str());
-  PetscCheck(opt.model != "half" || quarters % 2 == 0, comm, PETSC_ERR_USER_INPUT,
-             "-pass2_turn %g with -model half: the half model's plane x = 0 is no symmetry plane of a press turned by "
-             "90 degrees; use -model full (or auto)",
-             opt.pass2_turn);
+  PetscCall(CheckPassTurns(comm, opt)); // (passes_check.cpp)
   // The rotation hold: the full model; one extra unknown in a solve (scenes/hold.hpp).
   PetscCheck(std::isfinite(opt.die_offset), comm, PETSC_ERR_USER_INPUT, "-die_offset %g: give a number of mm",
              opt.die_offset);
@@ -212,9 +179,10 @@ PetscErrorCode CheckPassesAndHolds(MPI_Comm comm, Options &opt)
              off_axis);
   PetscCheck(opt.full_hold == "auto" || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
              "-full_hold %s: only the full model is held so (-model full)", opt.full_hold.c_str());
+  bool held = false;
+  for (int pass = 0; pass < kMaxPasses; ++pass) held = held || HeldByRotation(opt, pass);
   PetscCheck(
-    !(HeldByRotation(opt, 0) || HeldByRotation(opt, 1)) || (opt.die_force == 0 && opt.side_force == 0), comm,
-    PETSC_ERR_USER_INPUT,
+    !held || (opt.die_force == 0 && opt.side_force == 0), comm, PETSC_ERR_USER_INPUT,
     "the rotation hold (-full_hold, -die_offset, -die_path): not with -die_force or -side_force (one force-controlled "
     "unknown in an increment)");
   PetscCheck(QuarterModel(opt) || opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,

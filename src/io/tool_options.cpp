@@ -80,22 +80,10 @@ PetscErrorCode ReadModelAndDieMotion(PetscOptionItems *PetscOptionsObject, Optio
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The second pass (its stroke, dies and turn) and the side dies.
-PetscErrorCode ReadSecondPassAndSideDies(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+// The side dies.
+PetscErrorCode ReadSideDies(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
-                      "squaring: a second pass after the springback: press again until the upper die is at this "
-                      "stroke (mm, from the same zero as -stroke: the die touching the round tube; it starts where it "
-                      "touches the tube; 0: one pass), then spring back",
-                      opt.pass2_stroke));
-  PetscCall(read.String(PetscOptionsObject, "-pass2_die_profile",
-                        "squaring: the second pass's upper die from a profile file (default: the first pass's die)",
-                        opt.pass2_die_profile));
-  PetscCall(read.String(PetscOptionsObject, "-pass2_lower_die",
-                        "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first "
-                        "pass's -lower_die)",
-                        opt.pass2_lower_die));
   PetscCall(
     read.String(PetscOptionsObject, "-side_die",
                 "tool scenes: side dies pressing by the stroke U (or with -side_force): none, mirror (the upper "
@@ -106,16 +94,66 @@ PetscErrorCode ReadSecondPassAndSideDies(PetscOptionItems *PetscOptionsObject, O
                       "this (N/mm, on the whole tube) over the press, its travel an unknown of each increment (0: "
                       "they move by the stroke)",
                       opt.side_force));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The second pass: its stroke, dies and turn (the help's text; a later pass's options read by the same names).
+PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, PassSpec &pass)
+{
+  PetscFunctionBeginUser;
+  PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
+                      "squaring: a second pass after the springback: press again until the upper die is at this "
+                      "stroke (mm, from the same zero as -stroke: the die touching the round tube; it starts where it "
+                      "touches the tube; 0: one pass), then spring back; a third pass and more (up to 9) by the same "
+                      "options with their number: -pass3_stroke, -pass3_turn, ... (docs/dies.md)",
+                      pass.stroke));
+  PetscCall(read.String(PetscOptionsObject, "-pass2_die_profile",
+                        "squaring: the second pass's upper die from a profile file (default: the first pass's die)",
+                        pass.die_profile));
+  PetscCall(read.String(PetscOptionsObject, "-pass2_lower_die",
+                        "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first "
+                        "pass's -lower_die)",
+                        pass.lower_die));
   PetscCall(
     read.String(PetscOptionsObject, "-pass2_side_die",
                 "squaring: the second pass's side dies: none, mirror, flat or a profile file (default: the first "
                 "pass's -side_die)",
-                opt.pass2_side_die));
+                pass.side_die));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_turn",
                       "squaring: the tube turned counter-clockwise by this many degrees (-360 to 360) before the "
                       "second pass: its dies press along the turned axis (not a multiple of 90: the full model, "
-                      "held by the rotation hold; docs/dies.md)",
-                      opt.pass2_turn));
+                      "held by the rotation hold; a later pass's -pass<N>_turn turns it on from the pass before's; "
+                      "docs/dies.md)",
+                      pass.turn));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Pass `number` (3 to kMaxPasses): -pass<number>_stroke, _die_profile, _lower_die, _side_die, _turn, as the second
+// pass's. Read (and listed by -help) where one of them is given; named for the hints on a misspelt option always.
+PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, int number, PassSpec &pass)
+{
+  const std::string pre = "-pass" + std::to_string(number) + "_";
+  const std::string stroke = pre + "stroke", profile = pre + "die_profile", lower = pre + "lower_die",
+                    side = pre + "side_die", turn = pre + "turn";
+  const std::string help = "squaring: pass " + std::to_string(number) + "'s, as -pass2_";
+  bool given = false;
+  PetscFunctionBeginUser;
+  for (const std::string *name : {&stroke, &profile, &lower, &side, &turn}) {
+    PetscBool set;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, name->c_str(), &set));
+    given = given || set;
+  }
+  if (!given) {
+    for (const std::string *name : {&stroke, &profile, &lower, &side, &turn})
+      read.Note(name->c_str(), (help + name->substr(pre.size()) + "'s").c_str());
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(read.Real(PetscOptionsObject, stroke.c_str(), (help + "stroke").c_str(), pass.stroke));
+  PetscCall(read.String(PetscOptionsObject, profile.c_str(), (help + "die_profile").c_str(), pass.die_profile));
+  PetscCall(read.String(PetscOptionsObject, lower.c_str(), (help + "lower_die").c_str(), pass.lower_die));
+  PetscCall(read.String(PetscOptionsObject, side.c_str(), (help + "side_die").c_str(), pass.side_die));
+  PetscCall(
+    read.Real(PetscOptionsObject, turn.c_str(), (help + "turn (from the pass before's press)").c_str(), pass.turn));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -201,7 +239,10 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
   PetscFunctionBeginUser;
   PetscCall(ReadDieShapes(PetscOptionsObject, read, opt));
   PetscCall(ReadModelAndDieMotion(PetscOptionsObject, read, opt));
-  PetscCall(ReadSecondPassAndSideDies(PetscOptionsObject, read, opt));
+  PetscCall(ReadSecondPass(PetscOptionsObject, read, opt.more_passes[0]));
+  PetscCall(ReadSideDies(PetscOptionsObject, read, opt));
+  for (int number = 3; number <= kMaxPasses; ++number)
+    PetscCall(ReadLaterPass(PetscOptionsObject, read, number, opt.more_passes[number - 2]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -111,15 +111,15 @@ PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part, const Turn
 std::vector<std::pair<std::string, double>> PassMetrics(const History &h)
 {
   std::vector<std::pair<std::string, double>> m;
-  const bool second = std::any_of(h.rows().begin(), h.rows().end(), [](const HistoryRow &r) { return r.stage >= 2; });
-  const int passes = second ? 2 : 1;
+  int passes = 1; // (pass k presses in stage 2k: the passes the history reached)
+  for (const HistoryRow &r : h.rows()) passes = std::max(passes, (int)(r.stage / 2) + 1);
   for (int p = 0; p < passes; ++p) {
     const HistoryRow *loaded = &h.rows().front(), *unloaded = loaded;
     for (const auto &r : h.rows()) {
       if (r.stage == 2 * p) loaded = &r;
       if (r.stage <= 2 * p + 1) unloaded = &r;
     }
-    const std::string pre = p == 0 ? "" : "pass2_";
+    const std::string pre = p == 0 ? "" : Formatted("pass%d_", p + 1);
     for (auto [name, row] : {std::pair{"loaded_", loaded}, {"unloaded_", unloaded}})
       for (auto [what, v] : {std::pair{"c_over_t", row->c_over_t},
                              {"deviation_ratio", row->deviation_ratio},

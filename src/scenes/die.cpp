@@ -107,9 +107,11 @@ PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, 
 Options PassOptions(const Options &opt, int pass)
 {
   Options o = opt;
-  if (pass == 1 && !opt.pass2_die_profile.empty()) o.die_profile = opt.pass2_die_profile;
-  if (pass == 1 && !opt.pass2_lower_die.empty()) o.lower_die = opt.pass2_lower_die;
-  if (pass == 1 && !opt.pass2_side_die.empty()) o.side_die = opt.pass2_side_die;
+  if (pass == 0) return o;
+  const PassSpec &p = LaterPass(opt, pass);
+  if (!p.die_profile.empty()) o.die_profile = p.die_profile;
+  if (!p.lower_die.empty()) o.lower_die = p.lower_die;
+  if (!p.side_die.empty()) o.side_die = p.side_die;
   return o;
 }
 
@@ -136,16 +138,16 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
     tools.push_back(lower);
   }
   if (o.side_die != "none")
-    PetscCall(
-      AddSideDies(comm, o, pass == 1 ? "-pass2_side_die" : "-side_die", squaring, right_half, half, full, tools));
-  // The second pass's dies by their own names (errors, and their outlines in the results).
-  if (pass == 1)
-    for (Tool &t : tools) t.name = "pass2-" + t.name;
+    PetscCall(AddSideDies(comm, o, pass > 0 ? PassOption(pass, "side_die").c_str() : "-side_die", squaring, right_half,
+                          half, full, tools));
+  // A later pass's dies by their own names (errors, and their outlines in the results): pass2-, pass3-, ...
+  if (pass > 0)
+    for (Tool &t : tools) t.name = Formatted("pass%d-", pass + 1) + t.name;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, std::vector<Tool> &tools,
-                           std::vector<double> &back)
+                           std::vector<double> &back, int before)
 {
   PetscFunctionBeginUser;
   std::vector<Vec2> points;
@@ -156,18 +158,19 @@ PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoi
     // (a tenth of the contact set's start tolerance: the nearest node then starts on the die, in contact)
     const double b = ClearanceBack(tools[k], points, 0.1 * kStartGap * (1 + extent));
     PetscCheck(b >= 0, comm, PETSC_ERR_USER_INPUT,
-               "the %s would start inside the tube as the first springback left it, and cannot be moved back along "
+               "the %s would start inside the tube as the %s springback left it, and cannot be moved back along "
                "its motion clear of it (a die that stays in place, -lower_die_motion fixed, is drawn where it is)",
-               tools[k].name.c_str());
+               tools[k].name.c_str(), PassOrdinal(before).c_str());
     if (b == 0) continue;
     back[k] = b;
     tools[k] = MovedBack(tools[k], b);
     if (say)
       PetscCall(PetscPrintf(comm,
                             "tubeform: the %s starts at U = %.4g mm, %.4g mm back along its motion from where it "
-                            "would touch the round tube, where it touches the tube as the first pass left it\n",
+                            "would touch the round tube, where it touches the tube as the %s pass left it\n",
                             tools[k].name.c_str(), -b * std::hypot(tools[k].Direction()[0], tools[k].Direction()[1]),
-                            b * std::hypot(tools[k].Direction()[0], tools[k].Direction()[1])));
+                            b * std::hypot(tools[k].Direction()[0], tools[k].Direction()[1]),
+                            PassOrdinal(before).c_str()));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -177,7 +180,7 @@ PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint
   std::vector<Tool> one = {Shifted(die, {offset, 0})};
   std::vector<double> back;
   PetscFunctionBeginUser;
-  PetscCall(StartOnTube(comm, false, outer, one, back));
+  PetscCall(StartOnTube(comm, false, outer, one, back, 0));
   die = one[0];
   if (say)
     PetscCall(PetscPrintf(comm,
@@ -189,8 +192,8 @@ PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint
 
 TurnMap PassTurn(const Options &opt, int pass, bool half, bool full)
 {
-  const int k = pass == 1 ? Pass2Quarters(opt) : 0, q = ((k % 4) + 4) % 4;
-  if (full && pass == 1 && !QuarterTurn(opt)) return TurnMap::TurnBy(-opt.pass2_turn * M_PI / 180);
+  const int k = PassQuarters(opt, pass), q = ((k % 4) + 4) % 4;
+  if (full && !QuarterTurn(opt, pass)) return TurnMap::TurnBy(-PassTurnDegrees(opt, pass) * M_PI / 180);
   if (full) return TurnMap::Turn(-k);
   if (half) return q == 2 ? TurnMap{true, 0} : TurnMap{};
   return q % 2 ? TurnMap{true, 1} : TurnMap{};
@@ -200,8 +203,9 @@ PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring,
 {
   PetscFunctionBeginUser;
   if (opt.die_force == 0) PetscCall(CheckDieReach(comm, PassOptions(opt, 0), squaring, deepest, "-stroke"));
-  if (opt.pass2_stroke > 0)
-    PetscCall(CheckDieReach(comm, PassOptions(opt, 1), squaring, opt.pass2_stroke, "-pass2_stroke"));
+  for (int pass = 1; pass < PassCount(opt); ++pass)
+    PetscCall(CheckDieReach(comm, PassOptions(opt, pass), squaring, LaterPass(opt, pass).stroke,
+                            PassOption(pass, "stroke").c_str()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -253,7 +257,7 @@ PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, dou
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode WarnUntouched(MPI_Comm comm, const ContactSet &contact, const char *pass, double stroke)
+PetscErrorCode WarnUntouched(MPI_Comm comm, const ContactSet &contact, int pass, double stroke)
 {
   PetscInt touching;
   PetscFunctionBeginUser;
@@ -262,7 +266,7 @@ PetscErrorCode WarnUntouched(MPI_Comm comm, const ContactSet &contact, const cha
     PetscCall(PetscPrintf(comm,
                           "tubeform: warning: the %s pass's dies never touched the tube (at U = %g mm they are not "
                           "yet down to it): its shape is the last springback's\n",
-                          pass, stroke));
+                          PassOrdinal(pass).c_str(), stroke));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -12,13 +12,14 @@
 // either with every point elastic (the paper's) or by the material's law:
 // -springback, ElasticRelease.
 // With -pass2_stroke, a second pass after the paper's unloading: lambda in [2, 3] presses its dies from their
-// start, [3, 4] springs back; -pass2_turn turns the tube before it (its dies drawn turned the other way, its
+// start, [3, 4] springs back; a third (-pass3_stroke) presses over [4, 5], and so on (pass k over [2k, 2k + 1]);
+// -pass2_turn turns the tube before it (its dies drawn turned the other way, its
 // metrics and forces in its press's frame: die.hpp, PassTurn). -die_force presses by a force (the stroke its
 // outcome), -side_die adds dies at the sides, -die_offset and -die_path move the die off the axis (the full
 // model under the rotation hold, hold.hpp); docs/dies.md.
-// History: stroke = tool stroke U (mm; half the dies' closing; in the second
+// History: stroke = tool stroke U (mm; half the dies' closing; in a later
 // pass its upper die's position from the same zero: the die touching the round
-// tube; -pass2_stroke is where it ends), load = punch load on the
+// tube; -pass2_stroke, -pass3_stroke, ... is where it ends), load = punch load on the
 // full tube (N/mm), the upper die's vertical force on the model: twice it in
 // the quarter and the half model, which carry half of it.
 #include "tubeform/scenes/press_scene.hpp"
@@ -36,25 +37,35 @@ PressScene::PressScene(const Options &opt, bool squaring)
   stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_angle)
                                          : opt.stroke;
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
-  stroke2_ = opt.pass2_stroke;
   path_ = opt.die_path.empty() ? StrokePath(opt.stroke_path, stroke_) : StrokePath(DiePath(opt));
   lower_motion_ = LowerDieMotion(opt);
-  for (int pass = 0; pass < 2; ++pass)
-    side_dies_[pass] = PassOptions(opt, pass).side_die != "none", held_[pass] = HeldByRotation(opt, pass);
+  passes_.resize(PassCount(opt));
+  for (int k = 0; k < (int)passes_.size(); ++k) {
+    Pass &p = passes_[k];
+    p.stroke = k == 0 ? stroke_ : LaterPass(opt, k).stroke;
+    p.turn = PassTurn(opt, k, half_, full_);
+    p.dies = PassOptions(opt, k);
+    p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side_die != "none";
+  }
+  if (passes_.size() > 1) passes_[1].side_from = stroke_; // (a later one's: StartPass, kept for a restart: Persist)
 }
 
 LoadPath PressScene::Path(const Options &opt) const
 {
   const double t = path_.travel() / opt.punch_speed;               // (the press's duration)
   const std::vector<double> kinks = path_.Kinks(PressKinks(opt_)); // (where the dies' motions turn)
-  if (stroke2_ > 0) return {kSecondRelease + 1, t, {kFirstRelease, kSecondPress, kSecondRelease}, kinks};
-  return {opt_.unload == "none" ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
+  if (passes_.size() == 1)
+    return {opt_.unload == "none" ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
+  std::vector<double> stages; // (where each stage after the first begins)
+  for (size_t k = 1; k < 2 * passes_.size(); ++k) stages.push_back((double)k);
+  return {2.0 * passes_.size(), t, stages, kinks};
 }
 
 double PressScene::ToolStroke(double lambda) const
 {
   if (opt_.die_force > 0) return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
-  if (pass_ == 1) return std::min(std::max(lambda - kSecondPress, 0.0), 1.0) * (stroke2_ + StartBack());
+  if (pass_ > 0)
+    return std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0) * (passes_[pass_].stroke + StartBack());
   if (lambda <= 1.0) return path_.Stroke(lambda);
   return opt_.unload == "withdraw" ? stroke_ - (lambda - 1.0) * back_ : path_.Stroke(1.0);
 }
@@ -70,10 +81,10 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckPressReach(m.comm, opt_, squaring_, path_.deepest())); // (before any work)
-  if (stroke2_ > 0) {
-    // The second pass's dies are checked now, before any work (they are set up after the first springback).
-    std::vector<Tool> second;
-    PetscCall(PassTools(m, 1, second));
+  for (int k = (int)passes_.size() - 1; k > 0; --k) {
+    // A later pass's dies are checked now, before any work (they are set up after the springback before it).
+    std::vector<Tool> later;
+    PetscCall(PassTools(m, k, later));
   }
   PetscCall(PassTools(m, 0, tools.tools));
   std::vector<SurfacePoint> outer;
@@ -82,11 +93,11 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   PetscCall(SetPressMotions(m.comm, opt_, SideDie(), tools.tools));
   if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
   tools.candidates = "outer";
-  for (int pass = stroke2_ > 0; full_ && pass >= 0; --pass) { // (the second pass's axis checked now)
+  for (int pass = (int)passes_.size() - 1; full_ && pass >= 0; --pass) { // (the later passes' axes checked now)
     PetscCall(pins_.Mark(m, PassMap(pass).Inverse()));
-    if (held_[pass]) PetscCall(hold_.Mark(m, PassMap(pass).Inverse()));
+    if (passes_[pass].held) PetscCall(hold_.Mark(m, PassMap(pass).Inverse()));
   }
-  hold_.PinSlide(held_[0]);
+  hold_.PinSlide(passes_[0].held);
   tools.symmetry = Symmetry();
   // The wall meets its mirror image on the quarter's and the half model's symmetry planes: frictionless walls.
   tools.surfaces = {"outer", "inner"};
@@ -99,7 +110,7 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
     length += std::hypot(outer[k].x - outer[k - 1].x, outer[k].y - outer[k - 1].y);
   const double spacing = outer.size() > 1 ? length / (outer.size() - 1) : opt_.tube_ro * 0.5 * M_PI / opt_.mesh_ntheta;
   tools.params = MakeContactParams(opt_, kVcriOfSpacing * spacing);
-  spec_ = tools; // the second pass's set: the same nodes, supports and law
+  spec_ = tools; // a later pass's set: the same nodes, supports and law
   spec_.tools.clear();
   if (opt_.stroke_corner_radius > 0 && !m.quiet)
     PetscCall(NoteCornerRadius(m.comm, stroke_, opt_.stroke_corner_radius));
@@ -112,48 +123,59 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
   const bool elastic = ElasticRelease(opt_);
   if (opt_.unload == "withdraw") m.body.BeginRelease(elastic, false);
   if (opt_.unload != "reverse") PetscFunctionReturn(PETSC_SUCCESS);
-  if (!Unloading(lambda)) {
-    // The second pass: the springback's loads are all applied; its dies from their start, the material's law.
-    // (Its dies first: one the scene refuses, inside the tube, ends the run with the first pass's results; the
-    // pass's floor and die measures are already its own then, which nothing reads after a stop.)
-    std::vector<Tool> drawn;
-    PetscCall(PassTools(m, 1, drawn)); // (the floor under the tube as the springback left it: floor_y_)
-    std::vector<SurfacePoint> outer;
-    PetscCall(GatherOuter(m, outer));
-    PetscCall(StartOnTube(m.comm, !m.quiet, outer, drawn, start_back_));
-    unloading_ = false;
-    // (the pin stays until the second pass's dies hold the half model's tube: Load)
-    reversed_total_[0] = reversed_total_[1] = reversed_moment_ = 0;
-    m.body.EndRelease();
-    pass_ = 1;
-    ContactSpec spec = spec_;
-    hold_.PinSlide(held_[1]);
-    PetscCall(SecondPass(m, spec.tools, spec.symmetry));
-    if (!m.quiet)
-      PetscCall(PetscPrintf(m.comm,
-                            "tubeform: second pass: the dies travel %s mm together until the one furthest along is "
-                            "at U = %s mm (-pass2_stroke); the upper die from U = %s to %s mm\n",
-                            Formatted("%.4g", stroke2_ + StartBack()).c_str(), Formatted("%g", stroke2_).c_str(),
-                            Formatted("%.4g", Pass2Start()).c_str(), Formatted("%.4g", Pass2End()).c_str()));
-    if (pin_.holds()) PetscCall(pin_.Mark(m, Press()));
-    PetscCall(m.contact->Setup(m.mesh, m.system, m.body.position(), spec));
-    m.contact->SetStroke(0.0);
-    PetscCall(m.contact->Initialize());
+  if (!Unloading(lambda)) { // (the next pass)
+    PetscCall(StartPass(m));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  if (!m.quiet)
-    PetscCall(WarnUntouched(m.comm, *m.contact, pass_ == 1 ? "second" : "first", pass_ == 1 ? stroke2_ : stroke_));
+  if (!m.quiet) PetscCall(WarnUntouched(m.comm, *m.contact, pass_, passes_[pass_].stroke));
   // The paper's unloading: contact forces become loads, tools go (every point elastic by default: ElasticRelease).
   if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
   PetscCall(VecZeroEntries(reversed_));
-  PetscCall(m.contact->AddContactForces(reversed_, true));    // (a symmetry wall's force stays: it is the tube's own)
-  if (held_[pass_]) PetscCall(hold_.AddForces(m, reversed_)); // (its couple falls with them)
+  PetscCall(m.contact->AddContactForces(reversed_, true)); // (a symmetry wall's force stays: it is the tube's own)
+  if (passes_[pass_].held) PetscCall(hold_.AddForces(m, reversed_)); // (its couple falls with them)
   PetscCall(m.contact->TotalForce(kUpper, reversed_total_, &reversed_moment_));
   PetscCall(m.contact->Remove());
   m.system.ClearFrames();
   m.body.BeginRelease(elastic, true);
   unloading_ = true;
   if (half_) PetscCall(pin_.Mark(m, Press()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode PressScene::StartPass(Model &m)
+{
+  const int next = (int)pass_ + 1;
+  PetscFunctionBeginUser;
+  // The next pass: the springback's loads are all applied; its dies from their start, the material's law.
+  // (Its dies first: one the scene refuses, inside the tube, ends the run with the results so far; the pass's
+  // floor and die measures are already its own then, which nothing reads after a stop.)
+  std::vector<Tool> drawn;
+  PetscCall(PassTools(m, next, drawn)); // (the floor under the tube as the springback left it: floor_y_)
+  std::vector<SurfacePoint> outer;
+  PetscCall(GatherOuter(m, outer));
+  PetscCall(StartOnTube(m.comm, !m.quiet, outer, drawn, passes_[next].start_back, (int)pass_));
+  // (the side dies' travel goes on from where the pass before left it: through its press and its backing off)
+  const Pass &before = passes_[pass_];
+  if (next > 1) passes_[next].side_from = before.side_from + before.stroke + before.back;
+  unloading_ = false;
+  // (the pin stays until the next pass's dies hold the half model's tube: Load)
+  reversed_total_[0] = reversed_total_[1] = reversed_moment_ = 0;
+  m.body.EndRelease();
+  pass_ = next;
+  ContactSpec spec = spec_;
+  hold_.PinSlide(passes_[pass_].held);
+  PetscCall(PassDies(m, spec.tools, spec.symmetry));
+  if (!m.quiet)
+    PetscCall(PetscPrintf(m.comm,
+                          "tubeform: %s pass: the dies travel %s mm together until the one furthest along is "
+                          "at U = %s mm (%s); the upper die from U = %s to %s mm\n",
+                          PassOrdinal(next).c_str(), Formatted("%.4g", passes_[pass_].stroke + StartBack()).c_str(),
+                          Formatted("%g", passes_[pass_].stroke).c_str(), PassOption(next, "stroke").c_str(),
+                          Formatted("%.4g", PassStart()).c_str(), Formatted("%.4g", PassEnd()).c_str()));
+  if (pin_.holds()) PetscCall(pin_.Mark(m, Press()));
+  PetscCall(m.contact->Setup(m.mesh, m.system, m.body.position(), spec));
+  m.contact->SetStroke(0.0);
+  PetscCall(m.contact->Initialize());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -187,7 +209,7 @@ PetscErrorCode PressScene::Load(Model &m, double lambda, double dlambda)
   // (the rotation hold, or released the pins: scenes/support.hpp)
   if (Support *axis = AxisSupport()) PetscCall(axis->Constrain(m, PassMap(pass_)));
   // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
-  // holds the tube's rigid motion along the press's y; in a second pass until its dies hold the tube.
+  // holds the tube's rigid motion along the press's y; in a later pass until its dies hold the tube.
   if (!unloading_) PetscCall(pin_.ReleaseOnTouch(m));
   PetscCall(pin_.Constrain(m, PassMap(pass_)));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -217,20 +239,22 @@ PetscErrorCode PressScene::PassTools(Model &m, int pass, double floor_y, std::ve
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode PressScene::SecondPass(Model &m, std::vector<Tool> &tools,
-                                      std::vector<std::pair<std::string, Vec2>> &symmetry)
+PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
+                                    std::vector<std::pair<std::string, Vec2>> &symmetry)
 {
+  Pass &p = passes_[pass_];
   PetscFunctionBeginUser;
-  PetscCall(PassTools(m, 1, floor_y_, tools));
-  pass2_back_ = kNever;
-  for (size_t k = 0; k < tools.size() && k < start_back_.size(); ++k) {
-    tools[k] = MovedBack(tools[k], start_back_[k]);
+  PetscCall(PassTools(m, pass_, floor_y_, tools));
+  p.back = kNever;
+  for (size_t k = 0; k < tools.size() && k < p.start_back.size(); ++k) {
+    tools[k] = MovedBack(tools[k], p.start_back[k]);
     const Vec2 d = tools[k].Direction();
-    if (d[0] != 0 || d[1] != 0) pass2_back_ = std::min(pass2_back_, start_back_[k]);
+    if (d[0] != 0 || d[1] != 0) p.back = std::min(p.back, p.start_back[k]);
   }
-  if (pass2_back_ == kNever) pass2_back_ = 0; // (no die moves)
+  if (p.back == kNever) p.back = 0; // (no die moves)
+  p.start = PassStart();
   if (full_) PetscCall(pins_.Mark(m, Press()));
-  if (held_[1]) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)
+  if (p.held) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)
   symmetry = Symmetry();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -238,12 +262,12 @@ PetscErrorCode PressScene::SecondPass(Model &m, std::vector<Tool> &tools,
 double PressScene::Stroke(Model &m, double lambda) const
 {
   const double s = ToolStroke(lambda);
-  return opt_.die_force > 0 ? m.contact->tool(kUpper).stroke : pass_ == 1 ? s - UpperBack() : path_.U(s);
+  return opt_.die_force > 0 ? m.contact->tool(kUpper).stroke : pass_ > 0 ? s - UpperBack() : path_.U(s);
 }
 
 std::vector<std::pair<std::string, Vec2>> PressScene::Symmetry() const
 {
-  if (full_ && held_[pass_]) return {};
+  if (full_ && passes_[pass_].held) return {};
   if (full_) return {{"axis", AxisHeld()}};
   if (half_) return {{"x0", {1, 0}}};
   return {{"x0", {1, 0}}, {"y0", {0, 1}}};

@@ -8,8 +8,8 @@ namespace tf {
 
 double PressScene::ToolWork(const HistoryRow &prev, const HistoryRow &row, double) const
 {
-  HistoryRow from = prev; // (the second pass's dies from where they start)
-  if (row.stage == kSecondPress && prev.stage < row.stage) from.stroke = -UpperBack();
+  HistoryRow from = prev; // (a later pass's dies from where they start)
+  if (pass_ > 0 && row.stage == PressStage(pass_) && prev.stage < row.stage) from.stroke = -UpperBack();
   // (the lower die's rise by its motion: by U where it mirrors the upper one's, LowerDieMotion)
   const DieTravel travel{UpperTravel(opt_), lower_motion_->Kind() != "fixed",
                          lower_motion_->Offset(row.stroke)[1] - lower_motion_->Offset(from.stroke)[1]};
@@ -33,11 +33,13 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   row.load = -LoadPerModelForce() * f[1]; // (the punch load on the whole tube)
   row.tool_fx = -f[0], row.tool_fy = -f[1], row.tool_moment = -Press().det() * moment;
   // (the side dies' travel: the stroke, through the springbacks too, or their own under -side_force)
-  if (side_dies_[0] || side_dies_[1])
+  bool side_dies = false;
+  for (const Pass &p : passes_) side_dies = side_dies || p.side_dies;
+  if (side_dies)
     row.side_stroke = opt_.side_force > 0 ? m.contact->tool(SideDie()).stroke
-                      : pass_ == 1        ? stroke_ + ToolStroke(lambda)
+                      : pass_ > 0         ? passes_[pass_].side_from + ToolStroke(lambda)
                                           : row.stroke;
-  if (side_dies_[pass_] && !unloading_) {
+  if (passes_[pass_].side_dies && !unloading_) {
     // (the right side die: whole in the half and full models, its upper half in the quarter)
     // (its force along the press's x: a turned pass's side die presses along the press's -x)
     PetscCall(m.contact->TotalForce(SideDie(), force, nullptr));
@@ -50,7 +52,7 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   }
   hold_.SeeLoad(row.load); // (the warning's floor: the largest load so far)
   if (Holding() && !hold_.pins()) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
-  if (held_[pass_] && unloading_) // (what the springback's pins carry; scenes/hold.hpp)
+  if (passes_[pass_].held && unloading_) // (what the springback's pins carry; scenes/hold.hpp)
     PetscCall(hold_.SupportMoment(m, f_int, reversed_, ReleaseEnd() - lambda, pin_.node(), row.hold_moment));
   PetscCall(OuterExtents(m, row, Part(), Press()));
   PetscCall(Shape(m, lambda, row));
@@ -63,8 +65,10 @@ std::vector<std::pair<std::string, double>> PressScene::FinalMetrics(const Histo
   std::vector<std::pair<std::string, double>> m = PassMetrics(h);
   const bool forced = opt_.die_force > 0;
   m.push_back({forced ? "final_force_target" : "final_stroke_target", forced ? opt_.die_force : stroke_});
-  if (stroke2_ > 0) m.push_back({"pass2_stroke_target", stroke2_});
-  if (pass_ == 1) m.push_back({"pass2_start_stroke", Pass2Start()}); // (where its upper die started)
+  for (size_t k = 1; k < passes_.size(); ++k)
+    m.push_back({Formatted("pass%d_stroke_target", (int)k + 1), passes_[k].stroke});
+  for (int k = 1; k <= pass_; ++k) // (where the upper die of each pass set up started)
+    m.push_back({Formatted("pass%d_start_stroke", k + 1), passes_[k].start});
   return m;
 }
 
@@ -74,15 +78,29 @@ PetscErrorCode PressScene::Persist(Model &m, Archive &ar)
   ar.Group("/scene");
   PetscCall(ar.Value("unloading", unloading_));
   PetscCall(ar.Value("pass", pass_));
+  PetscCheck(pass_ >= 0 && pass_ < (PetscInt)passes_.size(), m.comm, PETSC_ERR_USER_INPUT,
+             "%s: the checkpoint is in pass %d; the options give %d pass(es)", ar.path().c_str(), (int)pass_ + 1,
+             (int)passes_.size());
   PetscCall(hold_.Persist(ar));
   PetscCall(ar.Value("floor_y", floor_y_));
-  PetscCall(ar.Values("pass2_back", start_back_));
-  if (ar.reading() && pass_ == 1) {
-    // A restart in the second pass: its dies' shapes for the contact set (its state, strokes included, read),
+  PetscCall(ar.Values("pass2_back", passes_[pass_].start_back)); // (the pass in place's; the name of two passes)
+  if (pass_ >= 2) {
+    // (past the second pass: the side dies' travel where the pass in place began, where each later pass's upper die
+    // started)
+    std::vector<double> from = {passes_[pass_].side_from};
+    for (int k = 1; k < pass_; ++k) from.push_back(passes_[k].start);
+    PetscCall(ar.Values("side_from_pass_starts", from));
+    PetscCheck(from.size() == (size_t)pass_, m.comm, PETSC_ERR_USER_INPUT,
+               "%s: /scene/side_from_pass_starts is not %d numbers", ar.path().c_str(), (int)pass_);
+    passes_[pass_].side_from = from[0];
+    for (int k = 1; k < pass_; ++k) passes_[k].start = from[k];
+  }
+  if (ar.reading() && pass_ > 0) {
+    // A restart in a later pass: its dies' shapes for the contact set (its state, strokes included, read),
     // a turned tube's pins.
     std::vector<Tool> tools;
     std::vector<std::pair<std::string, Vec2>> symmetry;
-    PetscCall(SecondPass(m, tools, symmetry));
+    PetscCall(PassDies(m, tools, symmetry));
     m.contact->ReplaceTools(std::move(tools));
     if (!symmetry.empty()) m.contact->SetSymmetry(symmetry);
   }
@@ -114,7 +132,7 @@ PetscErrorCode PressScene::Persist(Model &m, Archive &ar)
 PetscErrorCode PressScene::Shape(Model &m, double lambda, HistoryRow &row)
 {
   const bool release = (int)StageOf(lambda) % 2 == 1; // (whatever releases the tube: reversed loads, a withdrawal)
-  const PressShapeState state{squaring_, half_, release, pass_ == 1, flank_, apex_, opt_.tube_t, Press()};
+  const PressShapeState state{squaring_, half_, release, pass_ > 0, flank_, apex_, opt_.tube_t, Press()};
   return PressShape(m, state, side_ends_, row);
 }
 

@@ -26,9 +26,9 @@ PetscErrorCode PressShape(Model &m, const PressShapeState &s, long side_ends[2],
   const Line flank{a, n, {n[1], -n[0]}};
   // The line starts at the flank's apex end (s = 0), where the fillet ends.
   const SideSpan side = s.unloading ? SideSpan{} : SideOnFlank(all, flank, s.flank, s.apex, 0.0);
-  // Without a side on the flank (springback; the second pass's die still on its way to the tube), C is the
+  // Without a side on the flank (springback; a later pass's die still on its way to the tube), C is the
   // chord's gap of the side the last one left.
-  if (s.unloading || (s.second_pass && side.empty() && side_ends[0] >= 0)) {
+  if (s.unloading || (s.later_pass && side.empty() && side_ends[0] >= 0)) {
     // (the half and full models: the whole surface, as a pass that turned the tube finds the side the first
     // one left in another quarter)
     std::vector<SurfacePoint> whole;

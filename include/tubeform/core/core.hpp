@@ -43,4 +43,13 @@ std::string Formatted(const char *fmt, T... v)
   return buf;
 }
 
+// A press's pass in words, as its messages name it: "first", "second", ... for pass 0, 1, ... (a press takes at
+// most nine: io/options.hpp, kMaxPasses).
+inline std::string PassOrdinal(int pass)
+{
+  static const char *const words[] = {"first", "second",  "third",  "fourth", "fifth",
+                                      "sixth", "seventh", "eighth", "ninth"};
+  return pass >= 0 && pass < 9 ? words[pass] : "later";
+}
+
 } // namespace tf

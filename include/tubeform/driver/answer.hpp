@@ -81,7 +81,7 @@ struct Answer {
   bool tool = false;                                 // a tool scene: C/t, C1/C2 and springback mean something
   std::string stroke_name = "U", load_unit = "N/mm"; // the scene's, for the printed summary
   std::string release;                               // what released the tube (a tool scene's springback)
-  std::vector<PassAnswer> passes;                    // one, or a press's two
+  std::vector<PassAnswer> passes;                    // one, or each of a press's passes
   // The largest estimated errors over the passes (estimated: any pass has an estimate). With a mesh file the
   // companion keeps the mesh: the estimate then covers the increments alone (mesh_covered false).
   bool estimated = false, mesh_covered = true;
@@ -112,7 +112,7 @@ Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const Companion
 constexpr double kNoEstimate = -1; // (no error is negative: the value says "none" without a NaN in the results)
 std::vector<std::pair<std::string, std::vector<double>>> ErrorColumns(const std::vector<HistoryRow> &rows,
                                                                       const Companions &companions, const Answer &a);
-// As HDF5 attributes of /history (the second pass's prefixed pass2_).
+// As HDF5 attributes of /history (a later pass's prefixed pass2_, pass3_, ...).
 std::vector<std::pair<std::string, double>> AnswerAttributes(const Answer &a);
 // Collective: the answer's lines on rank 0. An estimate over its targets is
 // a warning, unless a finer level follows (driver/refine.hpp); `why` says

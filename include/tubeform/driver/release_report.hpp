@@ -1,5 +1,5 @@
 // What each springback of a run did at the yield surface, from its history's release columns (the rows with
-// `release` 1 or 2, one run of them per release: a tool scene's first and second pass): the Gauss points that
+// `release` 1 or 2, one run of them per release: each of a tool scene's passes): the Gauss points that
 // reached the surface, how far an elastic springback carried a point past it, the largest plastic strain the
 // material's law took in it, and its plastic work against the elastic energy stored at its start. Written as
 // attributes and said in the run's last lines, with a warning when an elastic springback passes the surface or
@@ -30,7 +30,7 @@ struct ReleaseSummary {
 // The releases of `rows` in order.
 std::vector<ReleaseSummary> SummarizeReleases(const std::vector<HistoryRow> &rows);
 // springback_yielded_points, springback_yield_excess, springback_plastic_strain, springback_plastic_work (pass2_
-// for the second).
+// for the second, pass3_ for the third, ...).
 std::vector<std::pair<std::string, double>> ReleaseAttributes(const std::vector<ReleaseSummary> &releases);
 // An elastic springback's weight past the yield surface, its largest excess times the share of Gauss points it
 // carries past: what the material's law changes in the springback of C/t, C1, C2 is of this order relative to

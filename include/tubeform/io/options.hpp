@@ -26,6 +26,17 @@ struct KnownOption {
   std::string name, help;
 };
 
+// The most passes a press takes (-pass2_* to -pass9_*): one digit in the options' names, and a press line's
+// stations are a handful.
+constexpr int kMaxPasses = 9;
+
+// A pass after the first (-pass<N>_*, N from 2), after the springback of the one before.
+struct PassSpec {
+  double stroke = 0; // where its upper die ends (mm, from the same zero as -stroke; 0: no such pass)
+  double turn = 0;   // the tube turned counter-clockwise before it (degrees, from the pass before's press)
+  std::string die_profile, lower_die, side_die; // its dies ("": the first pass's)
+};
+
 struct Options {
   std::string scene = "pressure"; // a name of the scene registry (scenes/registry.hpp)
   // Geometry and mesh
@@ -89,13 +100,10 @@ struct Options {
   std::vector<double> die_path_turn; // and its turns there (degrees, counter-clockwise), one a point
   std::vector<double> die_pivot;     // the point it turns about (x, y, mm, where it starts; none: the tube's centre)
   std::string full_hold = "auto";    // the full model's support: pins, rotation (the rotation hold), auto
-  // A second pass after the springback: its stroke (0: none), its dies ("": the first pass's).
-  double pass2_stroke = 0;
-  std::string pass2_die_profile, pass2_lower_die;
+  // The passes after the first, each after the springback of the one before (-pass2_* to -pass9_*).
+  std::vector<PassSpec> more_passes = std::vector<PassSpec>(kMaxPasses - 1);
   std::string side_die = "none"; // side dies pressing along x by the stroke: none, mirror, flat or a profile file
-  std::string pass2_side_die;    // the second pass's side dies (empty: the first pass's -side_die)
   double side_force = 0;         // side dies pressing with this force (N/mm, each), their travel unknown (0: stroke)
-  double pass2_turn = 0;         // the tube turned counter-clockwise before the second pass (degrees, quarter turns)
   double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
   double friction_tol = ContactParams{}.tol;
   double rmin_dphi = ContactParams{}.dphi_max;       // r6: largest fall of f_l / (mu f_n) towards stick in an increment
@@ -148,6 +156,14 @@ struct Options {
 PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes, Options &opt);
 // Collective: refuses values out of range (called by ReadOptions).
 PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt);
+// Collective: refuses a later pass's stroke, dies (called by CheckOptions, passes_check.cpp) and turns out of
+// range or that do not go together with the others' options.
+PetscErrorCode CheckPassStrokesAndDies(MPI_Comm comm, const Options &opt);
+PetscErrorCode CheckPassTurns(MPI_Comm comm, const Options &opt);
+// Collective: side dies (`name`: -side_die, -pass<N>_side_die; "none" or a shape) go with the other options.
+PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const std::string &value);
+// The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
+std::string PassOption(int pass, const char *what);
 // Collective: refuses material constants out of range or not in MPa (called by CheckOptions).
 PetscErrorCode CheckMaterial(MPI_Comm comm, const MaterialParams &m);
 
@@ -237,35 +253,68 @@ inline bool DieOffAxis(const Options &opt)
   return opt.die_offset != 0 || DiePathSideways(opt) || turned;
 }
 
-// The second pass's turn of the tube in quarter turns (-pass2_turn / 90, rounded), and whether it is whole.
-inline int Pass2Quarters(const Options &opt) { return (int)std::lround(opt.pass2_turn / 90.0); }
-inline bool QuarterTurn(const Options &opt) { return opt.pass2_turn == 90.0 * Pass2Quarters(opt); }
+// Pass `pass` (1 the second, ...) of the passes after the first: its -pass<pass + 1>_* options.
+inline const PassSpec &LaterPass(const Options &opt, int pass) { return opt.more_passes[pass - 1]; }
+// The passes: the first and each later one given a stroke, in turn (the options refuse a gap).
+inline int PassCount(const Options &opt)
+{
+  int n = 1;
+  while (n < kMaxPasses && LaterPass(opt, n).stroke > 0) ++n;
+  return n;
+}
+// A pass's turn of the tube from the first pass's press (degrees): the turns before it and its own, summed.
+inline double PassTurnDegrees(const Options &opt, int pass)
+{
+  double turn = 0;
+  for (int k = 1; k <= pass; ++k) turn += LaterPass(opt, k).turn;
+  return turn;
+}
+// That turn in quarter turns (rounded), and whether it is whole.
+inline int PassQuarters(const Options &opt, int pass) { return (int)std::lround(PassTurnDegrees(opt, pass) / 90.0); }
+inline bool QuarterTurn(const Options &opt, int pass)
+{
+  return PassTurnDegrees(opt, pass) == 90.0 * PassQuarters(opt, pass);
+}
+// Pass `pass`'s lower die (-lower_die, -pass<N>_lower_die: the first pass's where not given).
+inline const std::string &PassLowerDie(const Options &opt, int pass)
+{
+  return pass == 0 || LaterPass(opt, pass).lower_die.empty() ? opt.lower_die : LaterPass(opt, pass).lower_die;
+}
+// Pass `pass`'s lower die mirrors the upper one in shape and motion.
+inline bool PassMirrored(const Options &opt, int pass)
+{
+  return PassLowerDie(opt, pass) == "mirror" && opt.lower_die_motion == "mirror";
+}
 // The tool scenes model a quarter of the tube where that is exact (or asked for): -model quarter, or auto
-// with a lower die that mirrors the upper one in shape and motion (and a turn by quarter turns); the half
-// (x >= 0) otherwise.
+// with lower dies that mirror the upper ones in shape and motion in every pass (each turned by quarter turns);
+// the half (x >= 0) otherwise. (Every pass's options count, given or not: a pass given without its stroke is
+// refused after the model is chosen.)
 inline bool QuarterModel(const Options &opt)
 {
-  const bool mirror = opt.lower_die == "mirror" && (opt.pass2_lower_die.empty() || opt.pass2_lower_die == "mirror");
-  return opt.model == "quarter" ||
-         (opt.model == "auto" && mirror && opt.lower_die_motion == "mirror" && !DieOffAxis(opt) && QuarterTurn(opt));
+  bool mirror = opt.lower_die_motion == "mirror", quarters = true;
+  for (int pass = 0; pass < kMaxPasses; ++pass)
+    mirror = mirror && PassLowerDie(opt, pass) == "mirror", quarters = quarters && QuarterTurn(opt, pass);
+  return opt.model == "quarter" || (opt.model == "auto" && mirror && !DieOffAxis(opt) && quarters);
 }
 // The whole tube (-model full), or auto where neither the quarter nor the half is exact: the half's plane x = 0
 // is not a symmetry plane of a press turned by an odd number of quarter turns, or by another angle.
 inline bool FullModel(const Options &opt)
 {
-  return opt.model == "full" || (opt.model == "auto" && !QuarterModel(opt) &&
-                                 (Pass2Quarters(opt) % 2 != 0 || !QuarterTurn(opt) || DieOffAxis(opt)));
+  bool turned = false;
+  for (int pass = 1; pass < kMaxPasses; ++pass)
+    turned = turned || PassQuarters(opt, pass) % 2 != 0 || !QuarterTurn(opt, pass);
+  return opt.model == "full" || (opt.model == "auto" && !QuarterModel(opt) && (turned || DieOffAxis(opt)));
 }
-// A pass (0, 1) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked, or
-// (auto) where the pins would hold the tube's slide against the dies: the first pass with a die off the axis; a
-// second pass after it, turned by a quarter turn after a first one not symmetric about the press's x axis (a
-// lower die that does not mirror the upper one), or by an angle that is no quarter turn.
+// A pass (0 the first) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked,
+// or (auto) where the pins would hold the tube's slide against the dies: the first pass with a die off the axis; a
+// later pass after it, or turned by an angle that is no quarter turn, or turned by an odd number of quarter turns
+// from an earlier pass not symmetric about its press's x axis (a lower die that does not mirror the upper one).
 inline bool HeldByRotation(const Options &opt, int pass)
 {
-  const bool first_mirrored = opt.lower_die == "mirror" && opt.lower_die_motion == "mirror";
-  const bool off_axis = pass == 0
-                          ? DieOffAxis(opt)
-                          : !QuarterTurn(opt) || DieOffAxis(opt) || (Pass2Quarters(opt) % 2 != 0 && !first_mirrored);
+  bool off_axis = DieOffAxis(opt) || !QuarterTurn(opt, pass);
+  for (int before = 0; before < pass; ++before)
+    off_axis =
+      off_axis || ((PassQuarters(opt, pass) - PassQuarters(opt, before)) % 2 != 0 && !PassMirrored(opt, before));
   return FullModel(opt) && (opt.full_hold == "rotation" || (opt.full_hold == "auto" && off_axis));
 }
 } // namespace tf

@@ -80,7 +80,7 @@ PetscErrorCode MarkAxisPins(Model &m, const TurnMap &press = {}, const char *sur
                             const char *set = "axis", bool exact = true);
 // A press's summary metrics per pass: the loaded state (the last row of its press, stage 2 p) and the unloaded
 // one (the last of its release): loaded_* and unloaded_* of C/t, C1/C2, x_max, y_max for the first pass (as the
-// run's summary), pass2_loaded_* and so on for the second.
+// run's summary), pass2_loaded_* and so on for the second, pass3_* for the third, ...
 std::vector<std::pair<std::string, double>> PassMetrics(const History &h);
 // The tube mesh of the options: structured (the part asked) or -mesh_file.
 std::string TubeMesh(const Options &opt, SerialMesh &mesh, TubePart part = TubePart::Quarter);

@@ -49,26 +49,27 @@ PetscErrorCode SetPressMotions(MPI_Comm comm, const Options &opt, size_t first_s
 // The flattening scene's plate reaches past the ring on both sides (fractions of Ro): a crushed ring widens by
 // much less than half its radius.
 constexpr double kPlateOverhang = 0.1, kPlateReach = 0.5;
-// The options of a pass (0, 1): the second's dies where -pass2_die_profile, -pass2_lower_die give them.
+// The options of a pass (0 the first): a later one's dies where its -pass<N>_die_profile, _lower_die, _side_die
+// give them.
 Options PassOptions(const Options &opt, int pass);
 // Collective: the dies of a pass: the upper one (the squaring scene's die, or the flattening scene's plate) and,
 // in the half (and full) model, the lower one (a floor at floor_y); in the full model both reaching across the
-// y axis; the second pass's named pass2-<name>. `flank` and `apex`: the upper die's segments the shape metrics
+// y axis; a later pass's named pass<N>-<name>. `flank` and `apex`: the upper die's segments the shape metrics
 // use (of its right half).
 PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, bool full,
                              double floor_y, std::vector<Tool> &tools, int &flank, int &apex);
-// The second pass's dies start where the first pass's started (on the round tube's circle) or,
-// where that is inside the tube's outer surface `outer` as the first springback left it (wider than round along
-// their motion: an oval, a turned square), moved back along their motion until they touch it (`back`: how far,
-// in units of stroke, each tool; with `say`, a line printed for each); an error on every rank for a die that
-// cannot be moved back clear of the tube (one that stays: its motion is none).
+// A later pass's dies start where the first pass's started (on the round tube's circle) or,
+// where that is inside the tube's outer surface `outer` as the springback of pass `before` left it (wider than round
+// along their motion: an oval, a turned square), moved back along their motion until they touch it (`back`: how far, in
+// units of stroke, each tool; with `say`, a line printed for each); an error on every rank for a die that cannot be
+// moved back clear of the tube (one that stays: its motion is none).
 PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, std::vector<Tool> &tools,
-                           std::vector<double> &back);
+                           std::vector<double> &back, int before);
 // Collective: the first pass's upper die moved off the axis by `offset` along x (-die_offset) and, where that
 // puts it inside the tube's outer surface `outer`, back along its motion until it touches it (with `say`, a line
 // printed); an error on every rank if it cannot be moved clear.
 PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, double offset, Tool &die);
-// Collective: a pass's side dies (o.side_die, read from `option`: -side_die or -pass2_side_die) appended to
+// Collective: a pass's side dies (o.side_die, read from `option`: -side_die or -pass<N>_side_die) appended to
 // `tools`: the right one (for mirror the squaring scene's upper die, whose right half is `upper_right`, or the
 // flattening scene's plate; a plate; or a profile drawn as an upper die), turned to the side by the reflection
 // about y = x, moving along -x by the stroke; whole in the half and full models; in the full model, its mirror on
@@ -76,7 +77,8 @@ PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint
 PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, bool squaring, const Tool &upper_right,
                            bool half, bool full, std::vector<Tool> &tools);
 // The map that draws a pass's dies, built in its press's frame, into the tube's: -pass2_turn turns the tube
-// before the second pass, so its dies turn the other way about the tube's centre (the full model: by any angle,
+// before the second pass, -pass3_turn on from there before the third, ..., so its dies turn the other way about
+// the tube's centre by the turns summed (PassTurnDegrees; the full model: by any angle,
 // TurnMap::TurnBy, unless a whole number of quarter turns). The quarter and the half model
 // draw the turned dies by the reflection that keeps their symmetry planes (the same press, by the tube's
 // symmetry): the quarter's quarter turn is the reflection about y = x, the half's half turn y -> -y.
@@ -89,11 +91,11 @@ TurnMap PassTurn(const Options &opt, int pass, bool half, bool full);
 // stroke that closes it fails in the run.
 PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, double stroke, const char *option);
 // Collective: CheckDieReach for a press's passes: the first pass's deepest stroke (-stroke, or -stroke_path's; not
-// with -die_force, whose stroke is its outcome) and the second's.
+// with -die_force, whose stroke is its outcome) and each later one's.
 PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring, double deepest);
-// Collective: a warning if the `pass` ("first", "second") pass's dies, at its end (stroke mm), touch nothing: its
+// Collective: a warning if pass `pass`'s (0 the first) dies, at its end (stroke mm), touch nothing: its
 // stroke was shorter than the way to the tube.
-PetscErrorCode WarnUntouched(MPI_Comm comm, const ContactSet &contact, const char *pass, double stroke);
+PetscErrorCode WarnUntouched(MPI_Comm comm, const ContactSet &contact, int pass, double stroke);
 // Collective: the note of the paper's stroke rule (-stroke_corner_radius): the stroke a corner radius gives.
 PetscErrorCode NoteCornerRadius(MPI_Comm comm, double stroke, double corner_radius);
 // The first stroke CheckDieReach refuses (the dies closing on the tube, their parting faces meeting, the ring's

@@ -32,7 +32,8 @@ public:
                                              : "");
   }
   LoadPath Path(const Options &opt) const override;
-  // Stages by the lambda an increment starts at: 0 press, 1 release, 2 press (the second pass), 3 release.
+  // Stages by the lambda an increment starts at: 0 press, 1 release, 2 press (the second pass), 3 release, ...:
+  // pass k presses over [2k, 2k + 1] and releases over [2k + 1, 2k + 2].
   static int StageAt(double lambda) { return (int)std::floor(lambda + kLambdaTol); }
   bool Unloading(double lambda) const override { return StageAt(lambda) % 2 == 1; }
   // The quarter model carries half the punch load of the full tube (the
@@ -43,9 +44,9 @@ public:
   {
     return Unloading(lambda) && opt_.unload == "reverse" ? 0.0 : full_ ? 2.0 : half_ ? 1.0 : 0.5;
   }
-  // Each die's force over its own travel (scenes/common.cpp); the second pass's dies from where they start.
+  // Each die's force over its own travel (scenes/common.cpp); a later pass's dies from where they start.
   double ToolWork(const HistoryRow &prev, const HistoryRow &row, double) const override;
-  // The stroke of the dies in place: the first pass's, then (once its dies are set up) the second's.
+  // The stroke of the dies in place: the first pass's, then (once their dies are set up) each later one's.
   double ToolStroke(double lambda) const override;
 
   // Force control: the model's half of the punch load, rising to -die_force over the press; or the side dies'
@@ -65,27 +66,36 @@ private:
   // VCRI as a fraction of the outer nodes' spacing: a micro-slip far below an
   // element, so that sticking nodes hold (docs/theory.md, "The law").
   static constexpr double kVcriOfSpacing = 0.02;
-  // Where the load path's releases begin (lambda): each pass takes one unit of it to press and one to release.
-  static constexpr double kFirstRelease = 1.0, kSecondPress = 2.0, kSecondRelease = 3.0;
+  // Where the first pass's release begins (lambda): each pass takes one unit of it to press and one to release.
+  static constexpr double kFirstRelease = 1.0;
   // The tools' places in the contact set.
   static constexpr int kUpper = 0, kLower = 1;
   // The right side die's place (-side_die): after the lower die of the half and full models.
   int SideDie() const { return half_ ? kLower + 1 : kLower; }
   Options opt_;
   bool squaring_;
-  bool half_;                      // the half model x >= 0 with both dies (or the full model)
-  bool full_;                      // the full model: the whole tube, both dies across the y axis
-  bool side_dies_[2];              // each pass has side dies (-side_die, -pass2_side_die)
-  double stroke2_ = 0;             // the second pass's stroke (0: one pass)
-  PetscInt pass_ = 0;              // the pass whose dies are in place
-  double floor_y_ = 0;             // where the floor of the pass in place is
-  std::vector<double> start_back_; // how far back along its motion each second-pass die starts (StartOnTube)
-  double pass2_back_ = 0;          // StartBack(), derived from start_back_ and the dies' motions (SecondPass)
-  ContactSpec spec_;               // the contact set's nodes, supports and law (for the second pass's dies)
-  bool held_[2];                   // the full model's pass held by the rotation hold (not its pins) while pressing
-  AxisPins pins_;                  // the full model's pins on the press's axis (scenes/support.hpp)
-  RotationHold hold_;              // or, in their place, the rotation hold (scenes/hold.hpp)
-  SpringbackPin pin_;              // the half and full models' springback pin along the press's y
+  bool half_; // the half model x >= 0 with both dies (or the full model)
+  bool full_; // the full model: the whole tube, both dies across the y axis
+  // A pass: its stroke, its turn, its dies' options, its hold, its side dies and (a later pass) where its dies
+  // start; the scene's passes are a list of them, built once from the options.
+  struct Pass {
+    double stroke = 0;              // where its upper die ends (mm; the first pass's: stroke_)
+    TurnMap turn;                   // draws its dies, built in its press's frame, into the tube's (PassTurn)
+    Options dies;                   // its dies' options (PassOptions: die profile, lower die, side die)
+    bool held = false;              // the full model's pass held by the rotation hold (not its pins) while pressing
+    bool side_dies = false;         // it has side dies (-side_die, -pass<N>_side_die)
+    std::vector<double> start_back; // how far back along its motion each die starts (StartOnTube; a later pass)
+    double back = 0;                // StartBack(), from start_back and the dies' motions (PassDies)
+    double side_from = 0;           // the side dies' travel where it starts (the passes before it, their backs)
+    double start = 0;               // where its upper die starts (PassStart; once its dies are set up)
+  };
+  std::vector<Pass> passes_;
+  PetscInt pass_ = 0;  // the pass whose dies are in place
+  double floor_y_ = 0; // where the floor of the pass in place is
+  ContactSpec spec_;   // the contact set's nodes, supports and law (for a later pass's dies)
+  AxisPins pins_;      // the full model's pins on the press's axis (scenes/support.hpp)
+  RotationHold hold_;  // or, in their place, the rotation hold (scenes/hold.hpp)
+  SpringbackPin pin_;  // the half and full models' springback pin along the press's y
   double stroke_ = 0, back_ = 0;
   StrokePath path_;           // the first press's (-stroke_path, or straight to the stroke)
   MotionHandle lower_motion_; // its lower die's motion (-lower_die_motion) at the stroke U, for the tools' work
@@ -96,35 +106,39 @@ private:
   double reversed_moment_ = 0;   // of the reversed forces about the tool frame's origin (TotalForce)
   long side_ends_[2] = {-1, -1}; // input node numbers of the side's ends (latest loading state)
 
-  // The end of the release stage under way (the load path: press 0-1, release 1-2, press 2-3, release 3-4):
+  // The end of the release stage under way (the load path: press 0-1, release 1-2, press 2-3, release 3-4, ...):
   // the reversed loads fall to zero there.
-  double ReleaseEnd() const { return pass_ == 1 ? kSecondRelease + 1 : kFirstRelease + 1; }
+  double ReleaseEnd() const { return 2.0 * pass_ + 2; }
+  // The load path's stage where pass k presses.
+  static double PressStage(int k) { return 2.0 * k; }
 
   // Collective: the dies of a pass; the floor under the tube's lowest point (kept for a restart).
   PetscErrorCode PassTools(Model &m, int pass, std::vector<Tool> &tools);
   // (the floor's y in the pass's press frame; the dies drawn there, then turned with the tube: PassMap)
   PetscErrorCode PassTools(Model &m, int pass, double floor_y, std::vector<Tool> &tools);
 
-  // The second pass's dies where they start (drawn on floor_y_, moved back by start_back_) and, in the full
-  // model, its pins on the press's axis, and the held directions the contact set keeps (`symmetry`): the pass's
-  // start (BeginStage) and a restart inside it (Persist) alike.
-  PetscErrorCode SecondPass(Model &m, std::vector<Tool> &tools, std::vector<std::pair<std::string, Vec2>> &symmetry);
+  // The later pass in place's dies where they start (drawn on floor_y_, moved back by its start_back) and, in the
+  // full model, its pins on the press's axis, and the held directions the contact set keeps (`symmetry`): the
+  // pass's start (BeginStage, StartPass) and a restart inside it (Persist) alike.
+  PetscErrorCode PassDies(Model &m, std::vector<Tool> &tools, std::vector<std::pair<std::string, Vec2>> &symmetry);
+  // Collective: the next pass's dies set up from where they touch the tube the springback left (BeginStage).
+  PetscErrorCode StartPass(Model &m);
 
-  TurnMap PassMap(int pass) const { return PassTurn(opt_, pass, half_, full_); }
-  // The history's U at lambda: the force-controlled die's own, -die_path's, the second pass's upper die's position
+  TurnMap PassMap(int pass) const { return passes_[pass].turn; }
+  // The history's U at lambda: the force-controlled die's own, -die_path's, a later pass's upper die's position
   // (from the same zero as the first pass's, the die touching the round tube; it starts UpperBack() before it).
   double Stroke(Model &m, double lambda) const;
-  // How far back the second pass's dies start to touch the tube where the first pass left it (SecondPass; 0 before
+  // How far back the later pass's dies start to touch the tube where the pass before left it (PassDies; 0 before
   // they are set up): the least any die that moves is moved back (they travel together until the one furthest
-  // along is at -pass2_stroke: no die passes it, and in a press symmetric top to bottom every die ends there), and
-  // the upper die's.
-  double StartBack() const { return pass2_back_; }
-  double UpperBack() const { return start_back_.empty() ? 0.0 : start_back_[kUpper]; }
-  // The second pass's stroke (the upper die's position) where it starts and ends.
-  double Pass2Start() const { return UpperBack() > 0 ? -UpperBack() : 0.0; }
-  double Pass2End() const { return stroke2_ + StartBack() - UpperBack(); }
+  // along is at its -pass<N>_stroke: no die passes it, and in a press symmetric top to bottom every die ends
+  // there), and the upper die's.
+  double StartBack() const { return passes_[pass_].back; }
+  double UpperBack() const { return passes_[pass_].start_back.empty() ? 0.0 : passes_[pass_].start_back[kUpper]; }
+  // The later pass's stroke (the upper die's position) where it starts and ends.
+  double PassStart() const { return UpperBack() > 0 ? -UpperBack() : 0.0; }
+  double PassEnd() const { return passes_[pass_].stroke + StartBack() - UpperBack(); }
   // The rotation hold holds the pass in place (its nodes fixed, holding the slide too, until the dies hold it).
-  bool Holding() const { return held_[pass_] && !unloading_; }
+  bool Holding() const { return passes_[pass_].held && !unloading_; }
   // The tube's coordinates into the frame of the press in place (its die moving along -y).
   TurnMap Press() const { return PassMap(pass_).Inverse(); }
   // The full model's pins hold the tube along the press's x.

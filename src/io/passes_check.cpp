@@ -1,0 +1,99 @@
+// The validation of the passes after the first (-pass2_* to -pass9_*): one message per problem, naming the option
+// and what it allows. Each pass is checked as the second is: a pass needs the one before it.
+#include "tubeform/core/core.hpp"
+#include "tubeform/io/options.hpp"
+
+namespace tf {
+
+// The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
+std::string PassOption(int pass, const char *what) { return Formatted("-pass%d_%s", pass + 1, what); }
+
+// Side dies (`name`: -side_die, -pass<N>_side_die): none, or with what side dies press with.
+PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const std::string &value)
+{
+  PetscFunctionBeginUser;
+  if (value == "none") PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
+  PetscCheck(opt.die_force == 0 && opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
+             "%s %s: side dies press by the stroke: not with -die_force or -unload withdraw", name.c_str(),
+             value.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+namespace {
+
+// Pass `pass`'s stroke and dies.
+PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
+{
+  const PassSpec &p = LaterPass(opt, pass);
+  const std::string stroke = PassOption(pass, "stroke"), ordinal = PassOrdinal(pass);
+  PetscFunctionBeginUser;
+  PetscCheck(opt.scene == "squaring" || p.die_profile.empty(), comm, PETSC_ERR_USER_INPUT,
+             "%s: the %s scene presses with plates, not dies", PassOption(pass, "die_profile").c_str(),
+             opt.scene.c_str());
+  PetscCheck(p.stroke >= 0 && std::isfinite(p.stroke), comm, PETSC_ERR_USER_INPUT,
+             "%s %g: must be non-negative (0: %s)", stroke.c_str(), p.stroke,
+             pass == 1 ? "one pass" : ("the " + PassOrdinal(pass - 1) + " pass the last").c_str());
+  PetscCheck(p.stroke == 0 || opt.unload == "reverse", comm, PETSC_ERR_USER_INPUT,
+             "%s %g: a %s pass follows the paper's springback; use -unload reverse (not %s)", stroke.c_str(), p.stroke,
+             ordinal.c_str(), opt.unload.c_str());
+  PetscCheck(p.stroke == 0 || pass == 1 || LaterPass(opt, pass - 1).stroke > 0, comm, PETSC_ERR_USER_INPUT,
+             "%s %g: the %s pass follows the %s; give %s", stroke.c_str(), p.stroke, ordinal.c_str(),
+             PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
+  PetscCheck(p.stroke > 0 || (p.die_profile.empty() && p.lower_die.empty() && p.side_die.empty()), comm,
+             PETSC_ERR_USER_INPUT, "%s, %s, %s: give %s for the %s pass", PassOption(pass, "die_profile").c_str(),
+             PassOption(pass, "lower_die").c_str(), PassOption(pass, "side_die").c_str(), stroke.c_str(),
+             ordinal.c_str());
+  if (!p.side_die.empty()) PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), p.side_die));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Pass `pass`'s turn (from the pass before's press; its dies drawn by the turns summed: PassTurnDegrees).
+PetscErrorCode CheckPassTurn(MPI_Comm comm, const Options &opt, int pass)
+{
+  const PassSpec &p = LaterPass(opt, pass);
+  const std::string turn = PassOption(pass, "turn");
+  const int quarters = PassQuarters(opt, pass);
+  PetscFunctionBeginUser;
+  PetscCheck(std::isfinite(p.turn) && std::abs(p.turn) <= 360, comm, PETSC_ERR_USER_INPUT,
+             "%s %g: the tube turns by -360 to 360 degrees", turn.c_str(), p.turn);
+  PetscCheck(QuarterTurn(opt, pass) || (FullModel(opt) && opt.full_hold != "pins"), comm, PETSC_ERR_USER_INPUT,
+             "%s %g: a turn that is no multiple of 90 degrees needs the full model held by the rotation hold "
+             "(-model full or auto, -full_hold rotation or auto)",
+             turn.c_str(), p.turn);
+  PetscCheck(p.stroke > 0 || p.turn == 0, comm, PETSC_ERR_USER_INPUT, "%s %g: give %s for the %s pass", turn.c_str(),
+             p.turn, PassOption(pass, "stroke").c_str(), PassOrdinal(pass).c_str());
+  for (int before = 0; before < pass; ++before) {
+    const bool odd = (quarters - PassQuarters(opt, before)) % 2 != 0;
+    const std::string lower = before == 0 ? "-lower_die" : PassOption(before, "lower_die");
+    PetscCheck(!odd || PassMirrored(opt, before) || opt.full_hold != "pins", comm, PETSC_ERR_USER_INPUT,
+               "%s %g with -full_hold pins: the %s pass's dies (%s %s, -lower_die_motion %s) leave the tube symmetric "
+               "about the y axis only; a quarter turn presses it off that axis, which the pins would hold it against "
+               "(use -full_hold rotation or auto)",
+               turn.c_str(), p.turn, PassOrdinal(before).c_str(), lower.c_str(), PassLowerDie(opt, before).c_str(),
+               opt.lower_die_motion.c_str());
+  }
+  PetscCheck(opt.model != "half" || quarters % 2 == 0, comm, PETSC_ERR_USER_INPUT,
+             "%s %g with -model half: the half model's plane x = 0 is no symmetry plane of a press turned by 90 "
+             "degrees; use -model full (or auto)",
+             turn.c_str(), p.turn);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace
+
+PetscErrorCode CheckPassStrokesAndDies(MPI_Comm comm, const Options &opt)
+{
+  PetscFunctionBeginUser;
+  for (int pass = 1; pass < kMaxPasses; ++pass) PetscCall(CheckPassStroke(comm, opt, pass));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckPassTurns(MPI_Comm comm, const Options &opt)
+{
+  PetscFunctionBeginUser;
+  for (int pass = 1; pass < kMaxPasses; ++pass) PetscCall(CheckPassTurn(comm, opt, pass));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
