@@ -43,13 +43,18 @@ What it reached (2026-11-29, GetFEM 5.4.2, one core of a shared machine) -- NOT 
   98.37, 100.37, 103.77 N/mm at U = 0.1, 0.2, 0.4, 0.6, 0.8, 1.0; C/t 0.0026 at 1.0. 4 x 90 with
   --du 0.04 --r_aug 1e4 stalls at U = 0.16 mm.
 - 4 x 90, --du 0.04 --r_aug 1e5: 90.08, 96.30, 98.47, 100.35, 103.73, 107.14 at U = 0.2, 0.4, 0.6, 0.8,
-  1.0, 1.2 (C/t 0.0027, 0.0077 at 1.0, 1.2), then no convergence at U = 1.4 mm with the step halved 5 times.
+  1.0, 1.2 (C/t 0.0027, 0.0077 at 1.0, 1.2), then no convergence at U = 1.4 mm with the step halved 5 times (4 x 180: at U = 0.2 mm).
+- 4 x 90, --du 0.02 --r_aug 1e5 (the furthest): 90.15, 96.31, 98.48, 100.37, 103.75, 107.15, 110.81,
+  123.85, 163.78 N/mm at U = 0.2, 0.4, 0.6, 0.8, 1.0, 1.2, 1.4, 2.0, 3.0 (C/t 0.0027, 0.0329, 0.0812 at
+  1, 2, 3 mm), then no convergence at U = 3.1 mm with the step halved 5 times. Against the --du 0.04 run:
+  within 0.03 % to 1.2 mm; against --du 0.02 --r_aug 1e4: within 0.08 % to 1.0 mm.
 - 8 x 90 died at the first steps on a cell turned inside out by a Newton iterate (now a failed step, halved);
   8 x 180 and 4 x 180 did not pass U = 0.4 mm in 10 minutes (the first yield steps need many halvings).
 Against CalculiX (tests/reference/calculix/default.csv) and tubeform's accurate preset the 4 x 90 load is
-1.0-1.3 % lower from U = 0.4 to 1.2 mm (e.g. 103.73-103.77 against 104.93 and 104.70 at U = 1 mm): the
-mesh's share of that is not measured yet. What fails: Newton cycles where the contact zone splits (U
-~1.3 mm), at every step size tried; a remedy to try is a smaller release distance or a nodal contact.
+1.0-1.3 % lower from U = 0.4 to 1.2 mm (103.75 against 104.93 and 104.70 at U = 1 mm), 0.9 % at 2 mm,
+-0.15 % / +0.28 % at 3 mm: the mesh's share of that is not measured (no finer mesh got through). What
+fails: Newton stalls at some contact transitions (U 0.16, 1.4, 3.1 mm) with every step halving tried; a
+remedy to try is a smaller release distance, another --r_aug, or more halvings.
 """
 import argparse
 import csv
