@@ -20,9 +20,7 @@ PetscErrorCode RotationHold::Mark(Model &m, const TurnMap &press)
 
 void RotationHold::TakeFrames(Model &m, const TurnMap &to_tube) const
 {
-  double angle;
-  if (TurnedFrame(to_tube, angle))
-    for (PetscInt n : m.mesh.node_sets["hold"]) m.system.SetFrame(n, angle);
+  TurnFrames(m, m.mesh.node_sets["hold"], to_tube);
 }
 
 PetscErrorCode RotationHold::Constrain(Model &m, const TurnMap &to_tube)

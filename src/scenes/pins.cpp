@@ -66,12 +66,7 @@ PetscErrorCode AxisPins::Mark(Model &m, const TurnMap &press)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-void AxisPins::TakeFrames(Model &m, const TurnMap &to_tube) const
-{
-  double angle;
-  if (TurnedFrame(to_tube, angle))
-    for (PetscInt n : m.mesh.node_sets["axis"]) m.system.SetFrame(n, angle);
-}
+void AxisPins::TakeFrames(Model &m, const TurnMap &to_tube) const { TurnFrames(m, m.mesh.node_sets["axis"], to_tube); }
 
 PetscErrorCode AxisPins::Constrain(Model &m, const TurnMap &to_tube)
 {
@@ -91,8 +86,7 @@ PetscErrorCode SpringbackPin::Mark(Model &m, const TurnMap &press)
 
 void SpringbackPin::TakeFrames(Model &m, const TurnMap &to_tube) const
 {
-  double angle;
-  if (node() >= 0 && TurnedFrame(to_tube, angle)) m.system.SetFrame(node_, angle);
+  if (node() >= 0) TurnFrames(m, {node_}, to_tube);
 }
 
 PetscErrorCode SpringbackPin::Constrain(Model &m, const TurnMap &to_tube)

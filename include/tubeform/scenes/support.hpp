@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <vector>
 
 #include "tubeform/scenes/scene.hpp"
 #include "tubeform/tool/turn_map.hpp"
@@ -23,12 +24,14 @@ public:
   virtual PetscErrorCode Constrain(Model &m, const TurnMap &to_tube) = 0;
 
 protected:
-  // The frame's angle of a press whose x is `axis` in the tube's frame; false along the global axes.
-  static bool TurnedFrame(const TurnMap &to_tube, double &angle)
+  // `nodes`' frames along a press turned by an angle that is no quarter turn (`to_tube` as in
+  // TakeFrames); nothing in a press along the global axes.
+  static void TurnFrames(Model &m, const std::vector<PetscInt> &nodes, const TurnMap &to_tube)
   {
-    const Vec2 axis = to_tube({1, 0});
-    angle = std::atan2(axis[1], axis[0]);
-    return axis[0] != 0 && axis[1] != 0;
+    const Vec2 axis = to_tube({1, 0}); // (the press's x in the tube's frame)
+    if (axis[0] == 0 || axis[1] == 0) return;
+    const double angle = std::atan2(axis[1], axis[0]);
+    for (PetscInt n : nodes) m.system.SetFrame(n, angle);
   }
 };
 
