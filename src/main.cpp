@@ -86,6 +86,7 @@ static PetscErrorCode Run()
   PetscFunctionBeginUser;
   PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneNames(), opt));
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(tf::RefuseForeignOptions(PETSC_COMM_WORLD, opt));
   opt.job_started = MPI_Wtime();
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   tf::Problem::CompanionRun companion;

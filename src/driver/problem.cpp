@@ -1,9 +1,7 @@
 #include "tubeform/driver/problem.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "tubeform/core/log.hpp"
@@ -72,23 +70,6 @@ Stages StagesOf(const LoadPath &path)
   return s;
 }
 
-// Collective: an option given (command line or options files) that only other scenes read stops the run in one
-// line naming its readers (scenes/registry.hpp, ForeignOption); -allow_unused lets it pass, as an unread one.
-PetscErrorCode RefuseForeignOptions(MPI_Comm comm, const Options &opt)
-{
-  char *all;
-  PetscFunctionBeginUser;
-  if (opt.allow_unused || opt.help) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscOptionsGetAll(nullptr, &all));
-  std::istringstream words(all);
-  PetscCall(PetscFree(all));
-  for (std::string w; words >> w;) {
-    if (w.size() < 2 || w[0] != '-' || !std::isalpha((unsigned char)w[1])) continue; // (a value)
-    const std::string why = ForeignOption(opt.scene, w);
-    PetscCheck(why.empty(), comm, PETSC_ERR_USER_INPUT, "%s: %s; -allow_unused runs anyway", w.c_str(), why.c_str());
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
 } // namespace
 
 Problem::~Problem() { (void)DestroyForces(); }
@@ -102,7 +83,6 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt)
     for (const auto &n : SceneNames()) names += (names.empty() ? "" : ", ") + n;
     SETERRQ(comm, PETSC_ERR_USER_INPUT, "-scene %s: unknown scene (available: %s)", opt.scene.c_str(), names.c_str());
   }
-  PetscCall(RefuseForeignOptions(comm, opt));
   PetscCall(Setup(comm, opt, std::move(scene)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -1,5 +1,6 @@
 #include "tubeform/scenes/registry.hpp"
 
+#include <cctype>
 #include <sstream>
 
 namespace tf {
@@ -74,6 +75,22 @@ std::string ForeignOption(const std::string &scene, const std::string &option)
     names += (k == 0 ? "" : k + 1 == readers.size() ? " and " : ", ") + readers[k];
   return "read by the " + names + (readers.size() > 1 ? " scenes" : " scene") + ", not by this run's " + scene +
          " scene (docs/scenes.md)";
+}
+
+PetscErrorCode RefuseForeignOptions(MPI_Comm comm, const Options &opt)
+{
+  char *all;
+  PetscFunctionBeginUser;
+  if (opt.allow_unused || opt.help) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscOptionsGetAll(nullptr, &all));
+  std::istringstream words(all);
+  PetscCall(PetscFree(all));
+  for (std::string w; words >> w;) {
+    if (w.size() < 2 || w[0] != '-' || !std::isalpha((unsigned char)w[1])) continue; // (a value)
+    const std::string why = ForeignOption(opt.scene, w);
+    PetscCheck(why.empty(), comm, PETSC_ERR_USER_INPUT, "%s: %s; -allow_unused runs anyway", w.c_str(), why.c_str());
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 std::unique_ptr<Scene> CreateScene(const Options &opt)

@@ -23,6 +23,9 @@ std::vector<std::string> SceneNames();
 // "" or why the option named `option` (with its dash) is not for the scene `scene`: the scenes whose `reads` list
 // it, where `scene`'s does not.
 std::string ForeignOption(const std::string &scene, const std::string &option);
+// Collective: an option given (command line or options files) that only other scenes read stops the run in one
+// line naming them (ForeignOption), once a job, after its options are read; -allow_unused lets it pass.
+PetscErrorCode RefuseForeignOptions(MPI_Comm comm, const Options &opt);
 // The scene of opt.scene; null if the name is not registered.
 std::unique_ptr<Scene> CreateScene(const Options &opt);
 
