@@ -85,7 +85,7 @@ static PetscErrorCode Run()
   PetscMPIInt size;
   PetscFunctionBeginUser;
   PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneNames(), opt));
-  if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
+  if (opt.help) PetscFunctionReturn(tf::PrintSceneHelp(PETSC_COMM_WORLD));
   PetscCall(tf::RefuseForeignOptions(PETSC_COMM_WORLD, opt));
   opt.job_started = MPI_Wtime();
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));

@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """docs/options-reference.md from `tubeform -help`: every tubeform option with
-its default and description, by section, so the reference cannot drift from
-the code (the test docs_options checks it is up to date).
+its default and description, by section, and which scenes read the options
+that not every scene does (the scene registry's lines under "tubeform:
+scenes:"), so the reference cannot drift from the code (the test docs_options
+checks it is up to date).
 
     /usr/bin/python3 tools/options_doc.py [--check] [EXE]
 
@@ -14,16 +16,22 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "docs", "options-reference.md")
+SCENE = re.compile(r"^  scene (?P<name>[a-z_]+): (?P<what>.*); reads also: (?P<reads>.*)$")
 LINE = re.compile(r"^  -(?P<name>[a-z0-9_]+):? <(?:now )?(?P<default>.*?)(?: : (?:formerly )?.*?)?>:? (?P<help>.*) "
                   r"\(tubeform\)$")
 
 
 def options(exe):
-    """[(section, [(name, default, help, choices)])] from -help, run with no options (the built-in defaults)."""
+    """[(section, [(name, default, help, choices)])] and [(scene, what, [the options only some scenes read: a name
+    ending in '_' a prefix])] from -help, run with no options (the built-in defaults)."""
     env = {k: v for k, v in os.environ.items() if k != "PETSC_OPTIONS"}
     p = subprocess.run([os.path.abspath(exe), "-help", "-options_left", "no"], capture_output=True, text=True, env=env, cwd="/")
-    sections, current = [], None
+    sections, current, scenes = [], None, []
     for line in p.stdout.splitlines():
+        m = SCENE.match(line)
+        if m:
+            scenes.append((m.group("name"), m.group("what"), m.group("reads").split()))
+            continue
         m = re.match(r"^tubeform: (.*):$", line)
         if m:
             current = (m.group(1), [])
@@ -39,23 +47,41 @@ def options(exe):
             if default in ("", "0.") and m.group("name") == "material_table":
                 default = "none"
             current[1].append((m.group("name"), default or "none", text.strip(), choices.split()))
-    if not sections:
-        sys.exit(f"tools/options_doc.py: no tubeform options in the -help output of {exe}")
-    return sections
+    if not sections or not scenes:
+        sys.exit(f"tools/options_doc.py: no tubeform options or scenes in the -help output of {exe}")
+    return sections, scenes
 
 
-def markdown(sections):
+def readers(name, scenes):
+    """The scenes that read option `name` (no dash) where not every scene does; [] where every scene does."""
+    return [s for s, _, reads in scenes if any(name.startswith(r[1:]) if r.endswith("_") else name == r[1:]
+                                                for r in reads)]
+
+
+def markdown(sections, scenes):
     out = ["# Options reference", "",
            "Generated from `build/tubeform -help` by `/usr/bin/python3 tools/options_doc.py`",
            "(do not edit; the test `docs_options` fails when it is out of date). Defaults are the built-in",
            "ones: scene files and presets under `options/` set many of them. docs/options.md guides",
            "through the groups and names the doc that explains each; PETSc's own options (solver,",
-           "`-log_view`, ...) are listed by `-help` too.", ""]
+           "`-log_view`, ...) are listed by `-help` too.", "",
+           "## Scenes", "",
+           "An option marked *Only* below is read by the scenes it names: given to another scene it stops the run",
+           "naming them (`-allow_unused` runs anyway). Every scene accepts the others; their meaning says where",
+           "they act (a `squaring:` or `tool scenes:` option acts where a die presses). The scenes and the options",
+           "only some of them read (`-pressure_*`: every option beginning so):", "",
+           "| scene | what | reads also |", "|---|---|---|"]
+    for name, what, reads in scenes:
+        out.append(f"| `{name}` | {what} | " + ", ".join(f"`{r}*`" if r.endswith("_") else f"`{r}`"
+                                                        for r in reads) + " |")
+    out.append("")
     for title, opts in sections:
         out += [f"## {title[0].upper() + title[1:]}", "", "| option | default | meaning |", "|---|---|---|"]
         for name, default, text, choices in opts:
             meaning = text.replace("|", "\\|") + (" (one of: " + ", ".join(f"`{c}`" for c in choices) + ")"
                                                   if choices else "")
+            only = readers(name, scenes)
+            meaning += f" *Only {', '.join(only)}.*" if only else ""
             out.append(f"| `-{name}` | `{default}` | {meaning} |")
         out.append("")
     return "\n".join(out)
@@ -64,7 +90,7 @@ def markdown(sections):
 def main():
     args = [a for a in sys.argv[1:] if a != "--check"]
     exe = args[0] if args else os.path.join(ROOT, "build", "tubeform")
-    text = markdown(options(exe))
+    text = markdown(*options(exe))
     if "--check" in sys.argv:
         old = open(OUT).read() if os.path.exists(OUT) else ""
         if old != text:

@@ -93,6 +93,16 @@ PetscErrorCode RefuseForeignOptions(MPI_Comm comm, const Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode PrintSceneHelp(MPI_Comm comm)
+{
+  PetscFunctionBeginUser;
+  PetscCall((*PetscHelpPrintf)(comm, "tubeform: scenes:\n"));
+  for (const auto &s : SceneRegistry())
+    PetscCall((*PetscHelpPrintf)(comm, "  scene %s: %s; reads also: %s\n", s.name, s.what, s.reads));
+  PetscCall((*PetscHelpPrintf)(comm, "----------------------------------------\n"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 std::unique_ptr<Scene> CreateScene(const Options &opt)
 {
   for (const auto &s : SceneRegistry())

@@ -26,6 +26,9 @@ std::string ForeignOption(const std::string &scene, const std::string &option);
 // Collective: an option given (command line or options files) that only other scenes read stops the run in one
 // line naming them (ForeignOption), once a job, after its options are read; -allow_unused lets it pass.
 PetscErrorCode RefuseForeignOptions(MPI_Comm comm, const Options &opt);
+// Under -help: each scene, what it is and the options of the `reads` lists it reads, one line each after the
+// heading "tubeform: scenes:" (tools/options_doc.py builds the options reference's scene table from them).
+PetscErrorCode PrintSceneHelp(MPI_Comm comm);
 // The scene of opt.scene; null if the name is not registered.
 std::unique_ptr<Scene> CreateScene(const Options &opt);
 
