@@ -20,10 +20,9 @@ B. A die that waits, then rises (-lower_die_path 1,0,2,1): at every field step i
 C. Refusals, one line each naming the option: strokes that do not rise, a path without -lower_die_motion path (or
    the motion without a path), with -stroke_path.
 """
-import h5py
 import numpy as np
 
-from tfcheck import Checks, args, history_and_tools, out, run
+from tfcheck import Checks, args, lower_die_steps, out, ran_to_end, run, self_checks
 
 tf, mpirun, src = args()
 k = Checks("lower_path")
@@ -33,11 +32,7 @@ BASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src
 
 def press(name, opts, n=1):
     """The run's history and tools (its results up to a stop too); a check that it ran to its end."""
-    p = run(tf, mpirun, n, BASE + opts + ["-output", out(name)], check=False, timeout=600)
-    why = [x for x in p.stdout.splitlines() + p.stderr.splitlines() if "error:" in x][:1]
-    k.check(p.returncode == 0, f"{' '.join(map(str, opts))}{' (2 ranks)' if n > 1 else ''}: ran to its end "
-            f"(exit {p.returncode}) {''.join(why)}")
-    return history_and_tools(out(name))
+    return ran_to_end(k, tf, mpirun, n, BASE + opts, out(name), " ".join(map(str, opts)))
 
 
 # A. Straight up by U: the mirror's motion.
@@ -52,10 +47,7 @@ k.check(same and worst <= 1e-12, f"a lower die's path straight up by U gives the
 # B. It waits, then rises.
 h = press("lower_wait.h5", ["-lower_die_motion", "path", "-lower_die_path", "1,0,2,1"])
 U = h["stroke"]
-with h5py.File(out("lower_wait.h5"), "r") as f:
-    lam = f["/time"][:, 0]  # (each field step's lambda: the press's U = 2 lambda while it loads)
-lower = [t for t in h["tools"] if t.startswith("lower-")]
-disp = h["tools"][lower[0]] if lower else np.zeros((0, 1, 2))
+lam, disp = lower_die_steps(out("lower_wait.h5"), h)
 press_steps = np.flatnonzero(lam <= 1)
 want = np.clip(2 * lam[press_steps] - 1, 0, None)
 miss = max(np.abs(disp[press_steps, :, 0]).max(), np.abs(disp[press_steps, :, 1] - want[:, None]).max()) \
@@ -63,12 +55,8 @@ miss = max(np.abs(disp[press_steps, :, 0]).max(), np.abs(disp[press_steps, :, 1]
 k.check(miss <= 1e-12, f"the lower die's displacement at {len(press_steps)} field steps of the press is the path's at "
         f"their strokes within {miss:.1e} mm (1e-12)")
 k.check(np.abs(U - 1).min() <= 1e-12, f"a row at the path's kink U = 1 (nearest {np.abs(U - 1).min():.1e} off)")
-P, fy, loading = h["load"], h["lower_fy"], h["stage"] == 0
-rise = np.clip(U - 1, 0, None)  # (the path's, at each row's stroke)
-tool = np.concatenate([[0.0], np.cumsum(0.5 * 0.5 * (P[1:] + P[:-1]) * np.diff(U)
-                                        - 0.5 * (fy[1:] + fy[:-1]) * np.diff(rise))])
-w_in = tool + h["w_ext"] - h["w_tool"]
-a = (w_in - h["w_int"] - h["w_friction"] - h["w_kinetic"] - h["w_damped"]) / np.maximum(np.abs(w_in), 1e-300)
+loading = h["stage"] == 0
+a = self_checks(h, lower_rise=np.clip(U - 1, 0, None))[0]  # (the path's rise at each row's stroke)
 e = np.abs(a[1:][loading[1:]]).max()
 k.check(e < 5e-3, f"the energy balance from the history and the path's rise within {e:.1e} at every increment "
         f"of the press (5e-3)")

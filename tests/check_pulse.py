@@ -21,10 +21,9 @@ B. With A = 0.3: at every field step of the press the lower die's displacement i
 C. Refusals, one line each naming the option: a negative or non-number amplitude, a period of 0, an amplitude
    without -lower_die_motion pulse, the motion with -stroke_path.
 """
-import h5py
 import numpy as np
 
-from tfcheck import Checks, args, history_and_tools, out, run
+from tfcheck import Checks, args, lower_die_steps, out, ran_to_end, run, self_checks
 
 tf, mpirun, src = args()
 k = Checks("pulse")
@@ -37,11 +36,7 @@ FIELDS = ["-output_stroke", 0.05]  # (fields every 0.05 mm of stroke: five on ea
 
 def press(name, opts, n=1):
     """The run's history and tools; a check that it ran to its end."""
-    p = run(tf, mpirun, n, BASE + opts + ["-output", out(name)], check=False, timeout=600)
-    why = [x for x in p.stdout.splitlines() + p.stderr.splitlines() if "error:" in x][:1]
-    k.check(p.returncode == 0, f"{' '.join(map(str, opts))}{' (2 ranks)' if n > 1 else ''}: ran to its end "
-            f"(exit {p.returncode}) {''.join(why)}")
-    return history_and_tools(out(name))
+    return ran_to_end(k, tf, mpirun, n, BASE + opts, out(name), " ".join(map(str, opts)))
 
 
 def rise(U):
@@ -62,10 +57,7 @@ k.check(same, f"amplitude 0 gives the plain motion's history bit for bit ({len(c
 # B. Four pulses.
 h = press("pulse.h5", PULSE + FIELDS)
 U = h["stroke"]
-lower = [t for t in h["tools"] if t.startswith("lower-")]
-disp = h["tools"][lower[0]] if lower else np.zeros((0, 1, 2))
-with h5py.File(out("pulse.h5"), "r") as f:
-    lam = f["/time"][:, 0]
+lam, disp = lower_die_steps(out("pulse.h5"), h)
 steps = np.flatnonzero(lam <= 1)
 want = rise(2 * lam[steps])
 miss = max(np.abs(disp[steps, :, 0]).max(), np.abs(disp[steps, :, 1] - want[:, None]).max()) \
@@ -79,12 +71,8 @@ back = steps[(2 * lam[steps] > 0.5 - 1e-9) & (2 * lam[steps] < 0.75 + 1e-9)]
 dy = np.diff(disp[back, 0, 1]) if len(back) > 1 else np.zeros(1)
 k.check(len(back) > 2 and (dy < 0).all(), f"the die backs off on the first half of a pulse: its y falls at each of "
         f"{len(back)} field steps from U = 0.5 to 0.75 (by {-dy.sum() if len(dy) else 0:.4f} mm; the closed form 0.05)")
-Pl, fy, loading = h["load"], h["lower_fy"], h["stage"] == 0
-y = rise(U)
-tool = np.concatenate([[0.0], np.cumsum(0.5 * 0.5 * (Pl[1:] + Pl[:-1]) * np.diff(U)
-                                        - 0.5 * (fy[1:] + fy[:-1]) * np.diff(y))])
-w_in = tool + h["w_ext"] - h["w_tool"]
-a = (w_in - h["w_int"] - h["w_friction"] - h["w_kinetic"] - h["w_damped"]) / np.maximum(np.abs(w_in), 1e-300)
+loading = h["stage"] == 0
+a = self_checks(h, lower_rise=rise(U))[0]
 e = np.abs(a[1:][loading[1:]]).max()
 k.check(e < 5e-3, f"the energy balance from the history and y(U) within {e:.1e} at every increment of the press "
         f"(5e-3)")

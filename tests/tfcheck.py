@@ -143,17 +143,41 @@ def history_and_tools(path):
     return r
 
 
-def self_checks(H, share=0.5):
+def ran_to_end(k, tf, mpirun, n, opts, path, label):
+    """Runs tubeform on n ranks with opts writing `path`; checks (in k) that it ran to its end, named by `label`
+    and the run's first error line; returns its history and tools (history_and_tools; its results up to a stop)."""
+    p = run(tf, mpirun, n, list(opts) + ["-output", path], check=False, timeout=600)
+    why = [x for x in p.stdout.splitlines() + p.stderr.splitlines() if "error:" in x][:1]
+    k.check(p.returncode == 0, f"{label}{' (2 ranks)' if n > 1 else ''}: ran to its end (exit {p.returncode}) "
+            f"{''.join(why)}")
+    return history_and_tools(path)
+
+
+def lower_die_steps(path, h):
+    """The field steps' lambda in the result file `path` and the lower die's displacement at each ((steps, 1, 2);
+    none where it has no lower die of its own), from its history and tools `h` (history_and_tools)."""
+    with h5py.File(path, "r") as f:
+        lam = f["/time"][:, 0]  # (each field step's lambda: the press's U = 2 lambda while it loads)
+    lower = [t for t in h["tools"] if t.startswith("lower-")]
+    return lam, h["tools"][lower[0]] if lower else np.zeros((0, 1, 2))
+
+
+def self_checks(H, share=0.5, lower_rise=None):
     """A press's self-checks recomputed from its history (docs/theory.md, "Self-checks"; docs/output.md's
     columns), not read from its energy_error and internal_error columns. Returns (a, b, tool) by row:
       tool: the press's work from the reported load and stroke, share x the trapezoidal integral of load dU
             (the quarter model carries half the punch load: share 0.5);
       a:    (work put in - w_int - w_friction - w_kinetic - w_damped) / work put in, the work put in being tool
-            plus what the loads at the nodes did (w_ext - w_tool: the paper's unloading, pending release forces);
+            plus what the loads at the nodes did (w_ext - w_tool: the paper's unloading, pending release forces),
+            less the work of a lower die moving on its own (`lower_rise`: its rise at each row's stroke, against
+            its force lower_fy);
       b:    (w_int - w_plastic - w_elastic) / w_int.
     Row 0 (no work yet) gives 0."""
     U, P = H["stroke"], H["load"]
-    tool = np.concatenate([[0.0], np.cumsum(share * 0.5 * (P[1:] + P[:-1]) * np.diff(U))])
+    dw = share * 0.5 * (P[1:] + P[:-1]) * np.diff(U)
+    if lower_rise is not None:
+        dw = dw - 0.5 * (H["lower_fy"][1:] + H["lower_fy"][:-1]) * np.diff(lower_rise)
+    tool = np.concatenate([[0.0], np.cumsum(dw)])
     w_in = tool + H["w_ext"] - H["w_tool"]
     a = (w_in - H["w_int"] - H["w_friction"] - H["w_kinetic"] - H["w_damped"]) / np.maximum(np.abs(w_in), 1e-300)
     b = (H["w_int"] - H["w_plastic"] - H["w_elastic"]) / np.maximum(np.abs(H["w_int"]), 1e-300)
