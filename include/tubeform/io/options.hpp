@@ -255,18 +255,17 @@ inline double Travel(const Options &opt)
 // -die_path moves the die sideways somewhere.
 inline bool DiePathSideways(const Options &opt)
 {
-  const DieMotion die = UpperDie(opt);
-  for (const Vec2 &p : die.spec.points)
-    if (die.kind == DieMotionKind::Path && p[0] != 0) return true;
+  if (!DieMoves(opt, DieMotionKind::Path)) return false;
+  for (const Vec2 &p : opt.die_motion.spec.points)
+    if (p[0] != 0) return true;
   return false;
 }
 // The first pass's upper die leaves the press's y axis: -die_offset, or a -die_path with a sideways motion or a
 // turn.
 inline bool DieOffAxis(const Options &opt)
 {
-  const DieMotion die = UpperDie(opt);
   bool turned = false;
-  for (double a : die.spec.turns) turned = turned || (die.kind == DieMotionKind::Path && a != 0);
+  for (double a : opt.die_motion.spec.turns) turned = turned || (DieMoves(opt, DieMotionKind::Path) && a != 0);
   return opt.die_offset != 0 || DiePathSideways(opt) || turned;
 }
 
