@@ -143,6 +143,17 @@ cases = [
       "half"], "-die_path_turn: a die off the axis"),
     (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1", "-die_pivot", "0,20"],
      "-die_pivot: the point the die turns about; give its turns"),
+    # The upper die's motion (-die_motion): a word it takes, and only the options of the kind chosen (the old
+    # spellings: -die_path means path, -die_force other than 0 force).
+    (["-scene", "squaring", "-die_motion", "spiral"], "Unknown option spiral for -die_motion"),
+    (["-scene", "squaring", "-die_motion", "force", "-die_force", "100", "-die_path", "0,-1"],
+     "-die_path: an option of -die_motion path, not of -die_motion force"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,-1", "-die_force", "100"],
+     "-die_force: an option of -die_motion force, not of -die_motion path"),
+    (["-scene", "squaring", "-die_motion", "stroke", "-die_pivot", "0,1"],
+     "-die_pivot: an option of -die_motion path, not of -die_motion stroke"),
+    (["-scene", "squaring", "-die_motion", "force"], "-die_force: give the force"),
+    (["-scene", "squaring", "-die_motion", "path"], "-die_path: the points of -die_motion path"),
     (["-scene", "flattening", "-model", "full", "-full_hold", "rotation"], "plates do not hold"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_die", out("none.profile")],
      f"-pass2_side_die {out('none.profile')}: cannot read"),
@@ -252,7 +263,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")], ["-wall_thickness", "1.65"],
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 140 and len(selected) == 9, f"{len(cases)} cases on 1 rank (140), {len(selected)} on 2 (9)")
+k.check(len(cases) == 146 and len(selected) == 9, f"{len(cases)} cases on 1 rank (146), {len(selected)} on 2 (9)")
 
 
 def attempt(np_, extra):
@@ -326,7 +337,8 @@ solver = ["-redundant_mat_mumps_icntl_14", 50, "-redundant_mat_mumps_icntl_33", 
           "-malloc_dump", "-memory_view", "-ksp_view", "ascii:/dev/null"]
 lu = ["-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps", "-mat_mumps_icntl_14", 50, "-mat_mumps_icntl_33", 1]
 accepted = [(1, ["-material_law", "ludwik", "-material_sy", 1500]), (1, ["-material_law", "ludwik", "-material_sy", 15]),
-            (1, later), (1, viewer), (1, solver), (1, lu), (2, later), (2, solver)]
+            (1, later), (1, viewer), (1, solver), (1, lu), (2, later), (2, solver),
+            (1, ["-die_force", 0])]  # (the old spelling of the stroke: -die_force 0, not by force)
 for np_, extra in accepted:
     p = run(tf, mpirun, np_, base + ["-output", out("accepted.h5"), "-options_left"] + extra, check=False, timeout=60)
     ok = p.returncode == 0 and "There are no unused options." in p.stdout

@@ -235,7 +235,7 @@ void CheckMotions()
   CHECK(kinds.size() >= builtin.size() && std::equal(builtin.begin(), builtin.end(), kinds.begin()));
   MotionSpec spec;
   spec.direction = {0.5, -2};
-  spec.path = ToolPath({{0, -2}});
+  spec.points = {{0, -2}};
   spec.at = {1, 2}, spec.to = {{0, 0}, {0, 1}};
   for (const std::string &kind : builtin) {
     MotionHandle m;

@@ -183,7 +183,7 @@ PetscErrorCode RunBeside(MPI_Comm world, const Options &opt, const LevelRunner &
     const LevelHook after = [&side](const Refinement &next) { return side.Next(next); };
     failed = levels(half, opt, companion, after);
     // (a level that failed or stopped: the companions are told, and end with its error)
-    if (failed) (void)side.Next(Refinement{}, failed);
+    if (failed) (void)side.Next(Refinement(), failed);
   }
   PetscCallMPI(MPI_Comm_free(&link));
   PetscCallMPI(MPI_Comm_free(&half));

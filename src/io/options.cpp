@@ -400,7 +400,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(ReadMaterial(comm, read, opt));
   PetscCall(ReadDriver(comm, read, opt));
   PetscCall(ReadLoading(comm, read, opt));
-  PetscCall(ReadLowerDieMotion(comm, read, opt)); // (tool_options.cpp)
+  PetscCall(ReadLowerDieMotion(comm, read, opt)); // (die_motion_options.cpp)
+  PetscCall(ReadUpperDieMotion(comm, read, opt));
 
   opt.known = read.known();
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);

@@ -26,33 +26,30 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   PetscFunctionBeginUser;
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
   bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != "auto" ||
-               opt.die_force != 0 || opt.side_die != "none" || opt.side_force != 0 || opt.die_offset != 0 ||
-               !opt.die_path.empty() || opt.full_hold != "auto";
+               !DieMoves(opt, DieMotionKind::Stroke) || opt.side_die != "none" || opt.side_force != 0 ||
+               opt.die_offset != 0 || opt.full_hold != "auto";
   for (const PassSpec &p : opt.more_passes)
     asked =
       asked || p.stroke != 0 || p.turn != 0 || !p.die_profile.empty() || !p.lower_die.empty() || !p.side_die.empty();
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
-    "-lower_die, -lower_die_motion, -model, -pass<N>_*, -die_force, -die_offset, -die_path, -side_die, -side_force, "
-    "-full_hold: "
+    "-lower_die, -lower_die_motion, -model, -pass<N>_*, -die_motion, -die_force, -die_offset, -die_path, -side_die, "
+    "-side_force, -full_hold: "
     "the %s scene presses with no dies (these are the squaring and flattening scenes' options)",
     opt.scene.c_str());
-  PetscCheck(opt.die_force >= 0 && std::isfinite(opt.die_force), comm, PETSC_ERR_USER_INPUT,
-             "-die_force %g: the punch load must be a non-negative number of N/mm (0: the die follows -stroke)",
-             opt.die_force);
-  if (opt.die_force > 0) {
-    // Force control drives one die; the stroke is its outcome.
+  if (DieMoves(opt, DieMotionKind::Force)) {
+    // Force control drives one die; the stroke is its outcome. (The force itself: the force kind's reader.)
+    const double force = DieForce(opt);
     PetscCheck(QuarterModel(opt) || opt.lower_die_motion == "fixed", comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: with the half or full model the lower die must stay (-lower_die_motion fixed); a "
                "lower die moving by the upper one's unknown stroke is not available",
-               opt.die_force);
+               force);
     PetscCheck(PassCount(opt) == 1, comm, PETSC_ERR_USER_INPUT,
-               "-die_force %g: not with a second pass (-pass2_stroke); press one pass by force", opt.die_force);
+               "-die_force %g: not with a second pass (-pass2_stroke); press one pass by force", force);
     PetscCheck(opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
-               "-die_force %g: -unload withdraw moves the die back by its stroke; use -unload reverse or none",
-               opt.die_force);
+               "-die_force %g: -unload withdraw moves the die back by its stroke; use -unload reverse or none", force);
     PetscCheck(opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-               "-die_force %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", opt.die_force);
+               "-die_force %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", force);
   }
   PetscCheck(
     opt.lower_die == "mirror" || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
@@ -75,6 +72,37 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// -die_motion path (its points, turns and pivot checked by the path kind's reader, tool/motion_path.cpp): the
+// squaring scene's upper die, within a quarter turn, ending below its start; over a lower die that stays; one pass
+// by the stroke it ends at.
+PetscErrorCode CheckDiePath(MPI_Comm comm, Options &opt)
+{
+  const MotionSpec &path = opt.die_motion.spec;
+  PetscFunctionBeginUser;
+  // The upper die through the points in turn, relative to a lower die that stays; one pass by the stroke.
+  PetscCheck(opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
+             "-die_path: the squaring scene's upper die through x,y pairs (mm, from its start), in turn; not the %s "
+             "scene's",
+             opt.scene.c_str());
+  for (double turn : path.turns)
+    PetscCheck(std::abs(turn) <= kMaxDieTurn, comm, PETSC_ERR_USER_INPUT,
+               "-die_path_turn %g: each turn must be a number of degrees within +-%g", turn, kMaxDieTurn);
+  const double y = path.points.back()[1];
+  PetscCheck(y < 0, comm, PETSC_ERR_USER_INPUT,
+             "-die_path: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", y);
+  PetscCheck(opt.lower_die_motion == "fixed", comm, PETSC_ERR_USER_INPUT,
+             "-die_path: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion "
+             "fixed");
+  PetscCheck(opt.stroke_path.empty() && opt.stroke_corner_radius <= 0 && PassCount(opt) == 1 &&
+               opt.side_die == "none" && opt.unload != "withdraw" && opt.die_offset == 0,
+             comm, PETSC_ERR_USER_INPUT,
+             "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, "
+             "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways is "
+             "its own offset)");
+  opt.stroke = -0.5 * y;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 // -stroke_path and -die_path: their points, and the stroke they end at.
 PetscErrorCode CheckDiePaths(MPI_Comm comm, Options &opt)
 {
@@ -93,51 +121,11 @@ PetscErrorCode CheckDiePaths(MPI_Comm comm, Options &opt)
     }
     PetscCheck(opt.stroke_path.back() > 0, comm, PETSC_ERR_USER_INPUT,
                "-stroke_path: the last stroke is the press's final one and must be positive");
-    PetscCheck(opt.die_force == 0 && opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(!DieMoves(opt, DieMotionKind::Force) && opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
                "-stroke_path: not with -die_force or -stroke_corner_radius");
     opt.stroke = opt.stroke_path.back();
   }
-  PetscCheck((opt.die_path_turn.empty() && opt.die_pivot.empty()) || !opt.die_path.empty(), comm, PETSC_ERR_USER_INPUT,
-             "-die_path_turn and -die_pivot: the turns along a -die_path; give -die_path");
-  PetscCheck(opt.die_pivot.empty() ||
-               (opt.die_pivot.size() == 2 && std::isfinite(opt.die_pivot[0]) && std::isfinite(opt.die_pivot[1])),
-             comm, PETSC_ERR_USER_INPUT, "-die_pivot: one point x,y (mm, where the die starts)");
-  PetscCheck(opt.die_pivot.empty() || !opt.die_path_turn.empty(), comm, PETSC_ERR_USER_INPUT,
-             "-die_pivot: the point the die turns about; give its turns (-die_path_turn)");
-  if (!opt.die_path.empty()) {
-    // The upper die through the points in turn, relative to a lower die that stays; one pass by the stroke.
-    PetscCheck(opt.scene == "squaring" && opt.die_path.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
-               "-die_path: the squaring scene's upper die through x,y pairs (mm, from its start), in turn");
-    const std::vector<Vec2> points = DiePathPoints(opt);
-    PetscCheck(opt.die_path_turn.empty() || opt.die_path_turn.size() == points.size(), comm, PETSC_ERR_USER_INPUT,
-               "-die_path_turn: %d angles for %d -die_path points: give one (degrees) for each point",
-               (int)opt.die_path_turn.size(), (int)points.size());
-    Vec2 at = {0, 0};
-    double turned = 0;
-    for (size_t k = 0; k < points.size(); ++k) {
-      const Vec2 &p = points[k];
-      const double turn = opt.die_path_turn.empty() ? 0.0 : opt.die_path_turn[k];
-      PetscCheck(std::isfinite(p[0]) && std::isfinite(p[1]) && (p != at || turn != turned), comm, PETSC_ERR_USER_INPUT,
-                 "-die_path: %g,%g after %g,%g: each point must be a pair of numbers (mm), other than the one before "
-                 "it (the path starts at 0,0) or turned otherwise (-die_path_turn)",
-                 p[0], p[1], at[0], at[1]);
-      PetscCheck(std::isfinite(turn) && std::abs(turn) <= kMaxDieTurn, comm, PETSC_ERR_USER_INPUT,
-                 "-die_path_turn %g: each turn must be a number of degrees within +-%g", turn, kMaxDieTurn);
-      at = p, turned = turn;
-    }
-    PetscCheck(at[1] < 0, comm, PETSC_ERR_USER_INPUT,
-               "-die_path: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", at[1]);
-    PetscCheck(opt.lower_die_motion == "fixed", comm, PETSC_ERR_USER_INPUT,
-               "-die_path: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion "
-               "fixed");
-    PetscCheck(opt.stroke_path.empty() && opt.die_force == 0 && opt.stroke_corner_radius <= 0 && PassCount(opt) == 1 &&
-                 opt.side_die == "none" && opt.unload != "withdraw" && opt.die_offset == 0,
-               comm, PETSC_ERR_USER_INPUT,
-               "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, -die_force, "
-               "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways "
-               "is its own offset)");
-    opt.stroke = -0.5 * at[1];
-  }
+  if (DieMoves(opt, DieMotionKind::Path)) PetscCall(CheckDiePath(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -182,7 +170,7 @@ PetscErrorCode CheckPassesAndHolds(MPI_Comm comm, Options &opt)
   bool held = false;
   for (int pass = 0; pass < kMaxPasses; ++pass) held = held || HeldByRotation(opt, pass);
   PetscCheck(
-    !held || (opt.die_force == 0 && opt.side_force == 0), comm, PETSC_ERR_USER_INPUT,
+    !held || (!DieMoves(opt, DieMotionKind::Force) && opt.side_force == 0), comm, PETSC_ERR_USER_INPUT,
     "the rotation hold (-full_hold, -die_offset, -die_path): not with -die_force or -side_force (one force-controlled "
     "unknown in an increment)");
   PetscCheck(QuarterModel(opt) || opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,

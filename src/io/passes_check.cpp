@@ -14,7 +14,7 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
   PetscFunctionBeginUser;
   if (value == "none") PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
-  PetscCheck(opt.die_force == 0 && opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(!DieMoves(opt, DieMotionKind::Force) && opt.unload != "withdraw", comm, PETSC_ERR_USER_INPUT,
              "%s %s: side dies press by the stroke: not with -die_force or -unload withdraw", name.c_str(),
              value.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -1,8 +1,6 @@
 // The tool scenes' options (include/tubeform/io/tool_options.hpp); checked in options_check.cpp.
 #include "tubeform/io/tool_options.hpp"
 
-#include <algorithm>
-
 namespace tf {
 
 namespace {
@@ -37,37 +35,19 @@ PetscErrorCode ReadDieShapes(PetscOptionItems *PetscOptionsObject, OptionReader 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The part of the tube modelled and how the full model is held; the upper die's force, offset and path.
-PetscErrorCode ReadModelAndDieMotion(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+// The part of the tube modelled and how the full model is held; the upper die's offset (its motion: -die_motion,
+// die_motion_options.cpp).
+PetscErrorCode ReadModelAndOffset(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
                        "tool scenes: the part of the tube modelled: quarter, half (x >= 0), full (held as "
                        "-full_hold says), auto (the quarter where exact, else the half or the full)",
                        {"auto", "quarter", "half", "full"}, opt.model));
-  PetscCall(read.Real(PetscOptionsObject, "-die_force",
-                      "tool scenes: force control: the upper die presses with a punch load rising from 0 to this "
-                      "(N/mm) over the press, its stroke an unknown of each increment (0: the stroke -stroke)",
-                      opt.die_force));
   PetscCall(read.Real(PetscOptionsObject, "-die_offset",
                       "squaring: the first pass's upper die moved off the y axis by this along x (mm; the full model, "
                       "held by the rotation hold, a second pass after it too; docs/dies.md)",
                       opt.die_offset));
-  PetscCall(RealList(PetscOptionsObject, read, "-die_path",
-                     "squaring: the upper die's path: x,y points (mm, from where it starts) in turn, at twice the "
-                     "punch speed along it, the lower die staying (-lower_die_motion fixed); in place of -stroke "
-                     "(U = -y / 2), one pass; a sideways motion takes the full model and the rotation hold "
-                     "(docs/dies.md)",
-                     2 * kMaxPathPoints, opt.die_path));
-  PetscCall(RealList(PetscOptionsObject, read, "-die_path_turn",
-                     "squaring: the upper die's turn at each -die_path point (degrees, counter-clockwise, about "
-                     "-die_pivot; linear between the points; a turn counts in the path's length as the arc of a point "
-                     "at the tube's outer radius)",
-                     kMaxPathPoints, opt.die_path_turn));
-  PetscCall(RealList(PetscOptionsObject, read, "-die_pivot",
-                     "squaring: the point x,y (mm, where the die starts; default 0,0: the tube's centre) the upper "
-                     "die turns about under -die_path_turn (needs it), moving with it; its tool_moment is about it",
-                     2, opt.die_pivot));
   PetscCall(
     ChooseWord(PetscOptionsObject, read, "-full_hold",
                "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "
@@ -157,88 +137,13 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The lower die's words for its motion (-lower_die_motion): mirror and path name the stroke up by U and the
-// schedule; fixed and each kind registered after the built-in ones (tool/motion.hpp) are their own words.
-struct LowerWord {
-  std::string word, kind;
-};
-std::vector<LowerWord> LowerWords()
-{
-  std::vector<LowerWord> words{{"mirror", "stroke"}, {"fixed", "fixed"}, {"path", "schedule"}};
-  for (const std::string &kind : MotionKinds())
-    if (kind != "fixed" && kind != "stroke" && kind != "path" && kind != "force" && kind != "schedule")
-      words.push_back({kind, kind});
-  return words;
-}
-
-// -lower_die_motion's help: its words (a kind after the built-in ones named with its options).
-std::string LowerHelp(const std::vector<LowerWord> &words)
-{
-  std::string help = "tool scenes: the lower die moves up by the stroke U (mirror), stays (fixed; the upper die then "
-                     "travels 2 U, so U is half the dies' closing either way), ";
-  help +=
-    words.size() > 3 ? "follows -lower_die_path (path)" : "or follows -lower_die_path (path; the upper die travels U)";
-  for (size_t k = 3; k < words.size(); ++k) {
-    help += std::string(k + 1 < words.size() ? ", " : " or ") + "moves as its motion " + words[k].word + " says (";
-    for (const std::string &name : FindMotionKind(words[k].kind)->options) help += "-lower_die_" + name + " ";
-    help += "docs/dies.md)";
-  }
-  if (words.size() > 3) help += "; the upper die travels U but with fixed";
-  return help;
-}
-
-// -lower_die_<name> of the words other than `chosen`, given: one line naming it and the word it belongs to.
-PetscErrorCode RefuseOthers(MPI_Comm comm, const std::vector<LowerWord> &words, const LowerWord &chosen)
-{
-  PetscFunctionBeginUser;
-  const std::vector<std::string> mine = FindMotionKind(chosen.kind)->options;
-  for (const LowerWord &w : words)
-    for (const std::string &name : FindMotionKind(w.kind)->options) {
-      PetscBool given;
-      PetscCall(PetscOptionsHasName(nullptr, "lower_die_", ("-" + name).c_str(), &given));
-      const bool other = std::find(mine.begin(), mine.end(), name) == mine.end();
-      PetscCheck(!given || !other, comm, PETSC_ERR_USER_INPUT,
-                 "-lower_die_%s: an option of -lower_die_motion %s, not of -lower_die_motion %s", name.c_str(),
-                 w.word.c_str(), chosen.word.c_str());
-    }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
 } // namespace
-
-PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
-{
-  const std::vector<LowerWord> words = LowerWords();
-  std::vector<const char *> list;
-  PetscInt choice = 0;
-  const std::string help = LowerHelp(words);
-
-  PetscFunctionBeginUser;
-  for (size_t k = 0; k < words.size(); ++k) {
-    list.push_back(words[k].word.c_str());
-    if (opt.lower_die_motion == words[k].word) choice = (PetscInt)k;
-    for (const std::string &name : FindMotionKind(words[k].kind)->options) read.Note(("-lower_die_" + name).c_str());
-  }
-  read.Note("-lower_die_motion", help.c_str());
-  PetscOptionsBegin(comm, "lower_die_", "tubeform: lower die motion", "tubeform");
-  OptionsBlock block(PetscOptionsObject);
-  PetscCall(PetscOptionsEList("-motion", help.c_str(), "tubeform", list.data(), (PetscInt)list.size(), list[choice],
-                              &choice, nullptr));
-  opt.lower_die_motion = words[choice].word, opt.lower_die_kind = words[choice].kind;
-  if (opt.help)
-    for (const LowerWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, opt.lower_die_spec));
-  else
-    PetscCall(ReadMotion(PetscOptionsObject, opt.lower_die_kind, opt.lower_die_spec));
-  block.Release();
-  PetscOptionsEnd();
-  if (!opt.help) PetscCall(RefuseOthers(comm, words, words[choice]));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
 
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(ReadDieShapes(PetscOptionsObject, read, opt));
-  PetscCall(ReadModelAndDieMotion(PetscOptionsObject, read, opt));
+  PetscCall(ReadModelAndOffset(PetscOptionsObject, read, opt));
   PetscCall(ReadSecondPass(PetscOptionsObject, read, opt.more_passes[0]));
   PetscCall(ReadSideDies(PetscOptionsObject, read, opt));
   for (int number = 3; number <= kMaxPasses; ++number)

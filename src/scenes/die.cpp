@@ -202,7 +202,8 @@ TurnMap PassTurn(const Options &opt, int pass, bool half, bool full)
 PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring, double deepest)
 {
   PetscFunctionBeginUser;
-  if (opt.die_force == 0) PetscCall(CheckDieReach(comm, PassOptions(opt, 0), squaring, deepest, "-stroke"));
+  if (!DieMoves(opt, DieMotionKind::Force))
+    PetscCall(CheckDieReach(comm, PassOptions(opt, 0), squaring, deepest, "-stroke"));
   for (int pass = 1; pass < PassCount(opt); ++pass)
     PetscCall(CheckDieReach(comm, PassOptions(opt, pass), squaring, LaterPass(opt, pass).stroke,
                             PassOption(pass, "stroke").c_str()));
@@ -227,7 +228,7 @@ PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, bool squaring, d
   PetscCheck(stroke < reach, comm, PETSC_ERR_NOT_CONVERGED,
              "-die_force %g: the die has come down to U = %.4g mm, where %s (U = %.4g mm): the tube carries no more "
              "in this model",
-             o.die_force, stroke, squaring ? "the dies close on the tube or meet" : "the ring's walls meet", reach);
+             DieForce(o), stroke, squaring ? "the dies close on the tube or meet" : "the ring's walls meet", reach);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

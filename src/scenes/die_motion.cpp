@@ -1,7 +1,7 @@
 // The press's dies' motions from the options, made by the motion registry (tool/motion.hpp): the lower die's of
-// -lower_die_motion (its kind and options read by the kind, io/tool_options.cpp), with the upper die's that goes
-// with it; the upper die's path (-die_path); force control
-// (-die_force, -side_force).
+// -lower_die_motion (its kind and options read by the kind, io/die_motion_options.cpp), with the upper die's stroke
+// that goes with it; the upper die's own motion of -die_motion (its path or its force: UpperDie); the side dies'
+// force control (-side_force).
 #include "tubeform/scenes/die.hpp"
 
 namespace tf {
@@ -72,9 +72,9 @@ std::vector<double> PressKinks(const Options &opt)
 {
   std::vector<double> kinks;
   MotionHandle upper, lower;
-  MotionSpec spec;
-  spec.path = DiePath(opt);
-  if (!opt.die_path.empty() && MakeMotion("path", spec, upper).empty()) kinks = upper->Kinks();
+  const DieMotion die = UpperDie(opt);
+  if (die.kind == DieMotionKind::Path && MakeMotion(DieMotionName(die.kind), die.spec, upper).empty())
+    kinks = upper->Kinks();
   if (!QuarterModel(opt) && MakeMotion(opt.lower_die_kind, LowerSpec(opt), lower).empty())
     for (double s : lower->Kinks()) kinks.push_back(s);
   return kinks;
@@ -84,18 +84,17 @@ PetscErrorCode SetPressMotions(MPI_Comm comm, const Options &opt, size_t first_s
 {
   PetscFunctionBeginUser;
   Tool &upper = tools[0];
-  if (!opt.die_path.empty()) {
-    MotionSpec spec;
-    spec.path = DiePath(opt);
-    PetscCall(SetMotion(comm, "-die_path", "path", spec, upper));
+  const DieMotion die = UpperDie(opt);
+  if (die.kind != DieMotionKind::Stroke) { // (the stroke: the lower die's word's, SetLowerMotion)
+    MotionSpec spec = die.spec;
+    spec.direction = upper.Direction(); // (force: along the stroke's)
+    PetscCall(SetMotion(comm, "-die_motion", DieMotionName(die.kind), spec, upper));
   }
-  if (!opt.die_path_turn.empty()) upper.origin = DiePivot(opt);
-  for (size_t k = 0; k < tools.size(); ++k) {
-    const bool forced = k == 0 ? opt.die_force > 0 : k >= first_side && opt.side_force > 0;
-    if (!forced) continue;
+  if (!die.spec.turns.empty()) upper.origin = DiePivot(opt);
+  for (size_t k = first_side; opt.side_force > 0 && k < tools.size(); ++k) {
     MotionSpec spec;
     spec.direction = tools[k].Direction();
-    PetscCall(SetMotion(comm, k == 0 ? "-die_force" : "-side_force", "force", spec, tools[k]));
+    PetscCall(SetMotion(comm, "-side_force", "force", spec, tools[k]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -14,8 +14,8 @@
 // With -pass2_stroke, a second pass after the paper's unloading: lambda in [2, 3] presses its dies from their
 // start, [3, 4] springs back; a third (-pass3_stroke) presses over [4, 5], and so on (pass k over [2k, 2k + 1]);
 // -pass2_turn turns the tube before it (its dies drawn turned the other way, its
-// metrics and forces in its press's frame: die.hpp, PassTurn). -die_force presses by a force (the stroke its
-// outcome), -side_die adds dies at the sides, -die_offset and -die_path move the die off the axis (the full
+// metrics and forces in its press's frame: die.hpp, PassTurn). -die_motion force presses by a force (the stroke
+// its outcome), -side_die adds dies at the sides, -die_offset and -die_motion path move the die off the axis (the full
 // model under the rotation hold, hold.hpp); docs/dies.md.
 // History: stroke = tool stroke U (mm; half the dies' closing; in a later
 // pass its upper die's position from the same zero: the die touching the round
@@ -37,7 +37,7 @@ PressScene::PressScene(const Options &opt, bool squaring)
   stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_angle)
                                          : opt.stroke;
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
-  path_ = opt.die_path.empty() ? StrokePath(opt.stroke_path, stroke_) : StrokePath(DiePath(opt));
+  path_ = DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke_path, stroke_);
   lower_motion_ = LowerDieMotion(opt);
   passes_.resize(PassCount(opt));
   for (int k = 0; k < (int)passes_.size(); ++k) {
@@ -63,7 +63,8 @@ LoadPath PressScene::Path(const Options &opt) const
 
 double PressScene::ToolStroke(double lambda) const
 {
-  if (opt_.die_force > 0) return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
+  if (DieMoves(opt_, DieMotionKind::Force))
+    return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
   if (pass_ > 0)
     return std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0) * (passes_[pass_].stroke + StartBack());
   if (lambda <= 1.0) return path_.Stroke(lambda);
@@ -73,7 +74,7 @@ double PressScene::ToolStroke(double lambda) const
 double PressScene::ToolForce(double lambda) const
 {
   const double model =
-    opt_.side_force > 0 ? opt_.side_force * SideDiesInModel(Part()) : opt_.die_force / LoadPerModelForce();
+    opt_.side_force > 0 ? opt_.side_force * SideDiesInModel(Part()) : DieForce(opt_) / LoadPerModelForce();
   return std::min(lambda, kFirstRelease) * model; // (released: not read)
 }
 
@@ -89,7 +90,8 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   PetscCall(PassTools(m, 0, tools.tools));
   std::vector<SurfacePoint> outer;
   PetscCall(GatherOuter(m, outer));
-  // (-die_path: a path of its own, to move back along before the offset; -die_force, -side_force: die_motion.cpp)
+  // (-die_motion path: a path of its own, to move back along before the offset; -die_motion force, -side_force:
+  // die_motion.cpp)
   PetscCall(SetPressMotions(m.comm, opt_, SideDie(), tools.tools));
   if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
   tools.candidates = "outer";
@@ -204,7 +206,7 @@ PetscErrorCode PressScene::Load(Model &m, double lambda, double dlambda)
   }
   if (!full_) PetscCall(QuarterSymmetry(m)); // (a full model's mesh file may carry x0 or y0 sets: not held)
   // (inside the increment: its failure writes the results so far)
-  if (opt_.die_force > 0 && m.contact->active())
+  if (DieMoves(opt_, DieMotionKind::Force) && m.contact->active())
     PetscCall(CheckForceReach(m.comm, opt_, squaring_, m.contact->tool(kUpper).stroke));
   // (the rotation hold, or released the pins: scenes/support.hpp)
   if (Support *axis = AxisSupport()) PetscCall(axis->Constrain(m, PassMap(pass_)));
@@ -262,7 +264,9 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
 double PressScene::Stroke(Model &m, double lambda) const
 {
   const double s = ToolStroke(lambda);
-  return opt_.die_force > 0 ? m.contact->tool(kUpper).stroke : pass_ > 0 ? s - UpperBack() : path_.U(s);
+  return DieMoves(opt_, DieMotionKind::Force) ? m.contact->tool(kUpper).stroke
+         : pass_ > 0                          ? s - UpperBack()
+                                              : path_.U(s);
 }
 
 std::vector<std::pair<std::string, Vec2>> PressScene::Symmetry() const

@@ -63,8 +63,8 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
 std::vector<std::pair<std::string, double>> PressScene::FinalMetrics(const History &h) const
 {
   std::vector<std::pair<std::string, double>> m = PassMetrics(h);
-  const bool forced = opt_.die_force > 0;
-  m.push_back({forced ? "final_force_target" : "final_stroke_target", forced ? opt_.die_force : stroke_});
+  const bool forced = DieMoves(opt_, DieMotionKind::Force);
+  m.push_back({forced ? "final_force_target" : "final_stroke_target", forced ? DieForce(opt_) : stroke_});
   for (size_t k = 1; k < passes_.size(); ++k)
     m.push_back({Formatted("pass%d_stroke_target", (int)k + 1), passes_[k].stroke});
   for (int k = 1; k <= pass_; ++k) // (where the upper die of each pass set up started)

@@ -1,5 +1,10 @@
-// A force-controlled tool (-die_force, -side_force): moved along a direction by a stroke that is an unknown of
-// each increment, found from the force it presses with (the contact set's extra unknown, contact/pad.cpp).
+// A force-controlled tool: moved along a direction by a stroke that is an unknown of each increment, found from the
+// force it presses with (the contact set's extra unknown, contact/pad.cpp). Its option under its tool's prefix:
+// -<prefix>force F (> 0, the force it presses with at the end, rising from 0 over the press; its scene says per
+// what). The upper die's: -die_motion force, -die_force (docs/dies.md); the side dies' force is their scene's
+// -side_force.
+#include <cmath>
+
 #include "tubeform/tool/motion_straight.hpp"
 
 namespace tf {
@@ -12,13 +17,37 @@ public:
   std::string Kind() const override { return "force"; }
   bool Unknown() const override { return true; }
 };
+
+PetscErrorCode ReadForce(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
+{
+  PetscReal f = spec.force;
+  PetscBool set;
+  const char *prefix = PetscOptionsObject->prefix ? PetscOptionsObject->prefix : "";
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsReal("-force",
+                             "a force motion: the force the tool presses with, rising from 0 to this over the press, "
+                             "its stroke an unknown of each increment (-die_motion force: the upper die's punch load, "
+                             "N/mm, as the history's load; docs/dies.md)",
+                             "tubeform", f, &f, &set));
+  if (PetscOptionsObject->printhelp) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(set, PetscOptionsObject->comm, PETSC_ERR_USER_INPUT,
+             "-%sforce: give the force %s presses with under -%smotion force (N/mm, more than 0)", prefix,
+             spec.tool.c_str(), prefix);
+  PetscCheck(std::isfinite(f) && f > 0, PetscOptionsObject->comm, PETSC_ERR_USER_INPUT,
+             "-%sforce %g: the force %s presses with must be a positive number of N/mm (-%smotion stroke: by the "
+             "stroke)",
+             prefix, (double)f, spec.tool.c_str(), prefix);
+  spec.force = f;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 } // namespace
 
 std::unique_ptr<Motion> ForceMotion(const Vec2 &direction) { return std::make_unique<Force>(direction); }
 
 const MotionKind &ForceKind()
 {
-  static const MotionKind kind{"force", {}, nullptr, [](const MotionSpec &s, MotionHandle &m) {
+  static const MotionKind kind{"force", {"force"}, ReadForce, [](const MotionSpec &s, MotionHandle &m) {
                                  return Moves(s.direction) ? (m = ForceMotion(s.direction), std::string())
                                                            : "a force along no direction";
                                }};

@@ -1,7 +1,8 @@
 // A tool moved through displacements given at strokes (-lower_die_motion path, -lower_die_path): from (0, 0) at
 // stroke 0 through each point at its stroke, linear in the stroke between them; past the last stroke it stays
 // there. Each stroke is a kink: a step runs on one piece (Follow), ending at the next stroke. Its option,
-// -<prefix>path U1,d1,U2,d2,...: the distances d along the tool's direction at the strokes U.
+// -<prefix>path U1,d1,U2,d2,...: the distances d along the tool's direction at the strokes U. The lower die's word
+// for it is path; the upper die's path is the path kind (motion_path.cpp says how the two share the word).
 #include <cmath>
 #include <cstdio>
 

@@ -39,10 +39,11 @@ public:
   // once the run's PETSc objects have read theirs (io/options_left.hpp).
   PetscErrorCode CheckUnknown(MPI_Comm comm) const;
   const std::vector<KnownOption> &known() const { return names_; }
+  // Collective: option `name` (with the dash), where given, a number (a whole one: `integer`), or an error naming it.
+  PetscErrorCode CheckNumber(MPI_Comm comm, const char *name, bool integer) const;
 
 private:
   std::vector<KnownOption> names_; // with the dash
-  PetscErrorCode CheckNumber(MPI_Comm comm, const char *name, bool integer) const;
 };
 
 // One of a list of words for a string-valued option; the current value is the default.

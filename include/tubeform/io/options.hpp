@@ -37,6 +37,18 @@ struct PassSpec {
   std::string die_profile, lower_die, side_die; // its dies ("": the first pass's)
 };
 
+// The upper die's motion (-die_motion; docs/dies.md): a kind of the motion registry (tool/motion.hpp), its word
+// the kind's name (DieMotionName), and what its options (-die_path, -die_path_turn, -die_pivot; -die_force) give it,
+// read by the kind (io/die_motion_options.cpp). The scenes read it through UpperDie.
+enum class DieMotionKind { Stroke, Path, Force };
+struct DieMotion {
+  DieMotionKind kind = DieMotionKind::Stroke; // stroke: down by the stroke U (2 U over a fixed lower die)
+  MotionSpec spec;                            // path: its points, turns, pivot; force: its punch load (N/mm)
+};
+// The kinds' words, in DieMotionKind's order.
+constexpr const char *kDieMotionWords[] = {"stroke", "path", "force"};
+inline const char *DieMotionName(DieMotionKind kind) { return kDieMotionWords[(int)kind]; }
+
 struct Options {
   std::string scene = "pressure"; // a name of the scene registry (scenes/registry.hpp)
   // Geometry and mesh
@@ -94,12 +106,9 @@ struct Options {
   std::string lower_die_kind = "stroke";   // the motion's kind of that word (tool/motion.hpp: mirror is a stroke)
   MotionSpec lower_die_spec;               // and what its options (-lower_die_*) give it
   std::string model = "auto";              // quarter, half, full, or auto: the quarter where it is exact
-  double die_force = 0;              // > 0: the upper die is force-controlled, its punch load rising to this (N/mm)
-  double die_offset = 0;             // the first pass's upper die off the y axis along the press's x (mm; full model)
-  std::vector<double> die_path;      // squaring: the upper die's displacements (x, y pairs, mm) in turn from its start
-  std::vector<double> die_path_turn; // and its turns there (degrees, counter-clockwise), one a point
-  std::vector<double> die_pivot;     // the point it turns about (x, y, mm, where it starts; none: the tube's centre)
-  std::string full_hold = "auto";    // the full model's support: pins, rotation (the rotation hold), auto
+  DieMotion die_motion;                    // the upper die's motion (-die_motion; UpperDie)
+  double die_offset = 0;          // the first pass's upper die off the y axis along the press's x (mm; full model)
+  std::string full_hold = "auto"; // the full model's support: pins, rotation (the rotation hold), auto
   // The passes after the first, each after the springback of the one before (-pass2_* to -pass9_*).
   std::vector<PassSpec> more_passes = std::vector<PassSpec>(kMaxPasses - 1);
   std::string side_die = "none"; // side dies pressing along x by the stroke: none, mirror, flat or a profile file
@@ -208,31 +217,37 @@ constexpr PetscInt kMaxTargetLevels = 5;
 // The most strokes -stroke_path takes (a press's path, not a cycle test: a few dozen).
 constexpr PetscInt kMaxPathPoints = 32;
 
-// -die_path's points in turn.
-inline std::vector<Vec2> DiePathPoints(const Options &opt)
+// The upper die's motion as the scenes take it: its kind and spec, the spec's reach the tube's outer radius (a turn
+// counted in the path's length as the arc of a point there).
+inline DieMotion UpperDie(const Options &opt)
 {
-  std::vector<Vec2> p;
-  for (size_t k = 0; k + 1 < opt.die_path.size(); k += 2) p.push_back({opt.die_path[k], opt.die_path[k + 1]});
-  return p;
+  DieMotion die = opt.die_motion;
+  die.spec.reach = opt.tube_ro;
+  return die;
 }
-// -die_path with its turns (-die_path_turn, radians in the path), a turn's length counted at the tube's outer
-// radius.
+// The upper die's kind is `kind`.
+inline bool DieMoves(const Options &opt, DieMotionKind kind) { return opt.die_motion.kind == kind; }
+// Its punch load under force control (N/mm; 0: by the stroke).
+inline double DieForce(const Options &opt)
+{
+  return DieMoves(opt, DieMotionKind::Force) ? opt.die_motion.spec.force : 0.0;
+}
+// Its own path (-die_path with its turns; none unless -die_motion path).
 inline ToolPath DiePath(const Options &opt)
 {
-  std::vector<double> turns;
-  for (double a : opt.die_path_turn) turns.push_back(a * (M_PI / 180));
-  return ToolPath(DiePathPoints(opt), turns, opt.tube_ro);
+  return DieMoves(opt, DieMotionKind::Path) ? PathOf(UpperDie(opt).spec) : ToolPath();
 }
-// The point the upper die turns about (-die_pivot; the tube's centre), where it starts.
+// The point it turns about (-die_pivot; the tube's centre), where it starts.
 inline Vec2 DiePivot(const Options &opt)
 {
-  return opt.die_pivot.size() == 2 ? Vec2{opt.die_pivot[0], opt.die_pivot[1]} : Vec2{0.0, 0.0};
+  const std::vector<double> &p = opt.die_motion.spec.pivot;
+  return p.size() == 2 ? Vec2{p[0], p[1]} : Vec2{0.0, 0.0};
 }
 // The die's travel over the press in units of the stroke U (mm; -output_stroke counts it): along -stroke_path,
 // half -die_path's length (ToolPath: a fixed lower die's U is half the upper one's travel), or -stroke.
 inline double Travel(const Options &opt)
 {
-  if (!opt.die_path.empty()) return DiePath(opt).end();
+  if (DieMoves(opt, DieMotionKind::Path)) return DiePath(opt).end();
   double travel = opt.stroke_path.empty() ? opt.stroke : 0, at = 0;
   for (double u : opt.stroke_path) travel += std::abs(u - at), at = u;
   return travel;
@@ -240,7 +255,8 @@ inline double Travel(const Options &opt)
 // -die_path moves the die sideways somewhere.
 inline bool DiePathSideways(const Options &opt)
 {
-  for (const Vec2 &p : DiePathPoints(opt))
+  if (!DieMoves(opt, DieMotionKind::Path)) return false;
+  for (const Vec2 &p : opt.die_motion.spec.points)
     if (p[0] != 0) return true;
   return false;
 }
@@ -249,7 +265,7 @@ inline bool DiePathSideways(const Options &opt)
 inline bool DieOffAxis(const Options &opt)
 {
   bool turned = false;
-  for (double a : opt.die_path_turn) turned = turned || a != 0;
+  for (double a : opt.die_motion.spec.turns) turned = turned || (DieMoves(opt, DieMotionKind::Path) && a != 0);
   return opt.die_offset != 0 || DiePathSideways(opt) || turned;
 }
 

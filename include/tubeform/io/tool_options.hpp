@@ -14,5 +14,11 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
 // kind of tool/motion.hpp; that kind's options, -lower_die_*, read by the kind): opt.lower_die_motion, _kind, _spec.
 // An option of another of its words' kinds given is refused, naming it.
 PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
+// The upper die's motion, its own block under the options prefix die_ (-die_motion: stroke, path or force, each a kind
+// of tool/motion.hpp; that kind's options, -die_path, -die_path_turn, -die_pivot, -die_force, read by the kind):
+// opt.die_motion. Without -die_motion the old spellings choose: -die_path (or its turns or pivot) path, -die_force
+// other than 0 force (-die_force 0 is allowed with any word). An option of another word's kind is refused, naming it.
+PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
+// (both in die_motion_options.cpp)
 
 } // namespace tf

@@ -70,7 +70,8 @@ private:
 std::unique_ptr<Motion> FixedMotion();
 // stroke: moves by the stroke along `direction` per unit stroke (motion_stroke.cpp).
 std::unique_ptr<Motion> StrokeMotion(const Vec2 &direction);
-// path: along a path of its own, turning about its frame's origin as the path says (motion_path.cpp).
+// path: along a path of its own, turning about its frame's origin as the path says (motion_path.cpp: the upper
+// die's -die_motion path; the lower die's -lower_die_motion path is the schedule below).
 std::unique_ptr<Motion> PathMotion(const ToolPath &path);
 // force: along `direction`, its stroke an unknown found from the force it presses with (motion_force.cpp).
 std::unique_ptr<Motion> ForceMotion(const Vec2 &direction);
@@ -81,13 +82,22 @@ std::string ScheduleMotion(const std::vector<double> &at, const std::vector<Vec2
 
 // What a kind of motion is made from (each kind reads what it needs).
 struct MotionSpec {
-  Vec2 direction{0, -1};     // stroke, force, schedule: per unit stroke (the tool's, given by its scene)
-  ToolPath path;             // path: its points and turns
-  std::vector<double> at;    // schedule: the strokes
-  std::vector<Vec2> to;      // and the displacements there
-  std::vector<double> along; // or its distances there along `direction` (what -<prefix>path gives)
-  std::vector<double> own;   // a kind's own numbers, as its reader reads them (its file says which)
+  std::string tool = "the tool"; // whose motion it is, as its reader's refusals name it ("the lower die")
+  Vec2 direction{0, -1};         // stroke, force, schedule: per unit stroke (the tool's, given by its scene)
+  std::vector<Vec2> points;      // path: its points in turn from where it starts (what -<prefix>path gives)
+  std::vector<double> turns;     // and its turns there (degrees, counter-clockwise; none: it does not turn)
+  std::vector<double> pivot;     // the point x, y it turns about (where it starts; none: its frame's origin)
+  double reach = 0;              // a turn counted in the path's length at this reach (mm, > 0 with turns)
+  std::vector<double> at;        // schedule: the strokes
+  std::vector<Vec2> to;          // and the displacements there
+  std::vector<double> along;     // or its distances there along `direction` (what -<prefix>path gives)
+  double force = 0;              // force: the force it presses with at the end (what -<prefix>force gives)
+  std::vector<double> own;       // a kind's own numbers, as its reader reads them (its file says which)
 };
+
+// The path of a path motion's spec: through its points, turned by its turns (radians in the path) counted at its
+// reach (none where it has turns but no reach > 0) (motion_path.cpp).
+ToolPath PathOf(const MotionSpec &spec);
 
 // A kind's reader: its options, under the options prefix of the PetscOptionsBegin block it is called in (the
 // tool's: "lower_die_" reads -lower_die_path as "-path"), into `spec`; a bad or missing value refused in one line

@@ -1,0 +1,159 @@
+// The dies' motions, each die's in its own options block under its prefix (include/tubeform/io/tool_options.hpp):
+// -<prefix>motion names a kind of the motion registry (tool/motion.hpp) by one of the die's words, and the kind
+// reads its own options, -<prefix>*, refusing what it cannot move by; an option of another of the die's words'
+// kinds given is refused, naming it. The lower die: -lower_die_motion (mirror, fixed, path: the schedule, and the
+// kinds registered after the built-in ones); the upper die: -die_motion (stroke, path, force: each its kind's own
+// name). Combinations with the scene's other options are the scene's checks (options_check.cpp).
+#include <algorithm>
+
+#include "tubeform/io/tool_options.hpp"
+
+namespace tf {
+
+namespace {
+// A die's word for its motion and the kind of the registry it names.
+struct MotionWord {
+  std::string word, kind;
+};
+
+// -<prefix><name> of the words' kinds other than `chosen`'s, given: one line naming it, the word it belongs to and
+// the word chosen. `spared`: an option the old spellings give with the chosen word (none: "").
+PetscErrorCode RefuseOthers(MPI_Comm comm, const char *prefix, const std::vector<MotionWord> &words,
+                            const MotionWord &chosen, const std::string &spared = "")
+{
+  PetscFunctionBeginUser;
+  const std::vector<std::string> mine = FindMotionKind(chosen.kind)->options;
+  for (const MotionWord &w : words)
+    for (const std::string &name : FindMotionKind(w.kind)->options) {
+      PetscBool given;
+      PetscCall(PetscOptionsHasName(nullptr, prefix, ("-" + name).c_str(), &given));
+      const bool other = std::find(mine.begin(), mine.end(), name) == mine.end() && name != spared;
+      PetscCheck(!given || !other, comm, PETSC_ERR_USER_INPUT, "-%s%s: an option of -%smotion %s, not of -%smotion %s",
+                 prefix, name.c_str(), prefix, w.word.c_str(), prefix, chosen.word.c_str());
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The lower die's words (-lower_die_motion): mirror and path name the stroke up by U and the schedule; fixed and each
+// kind registered after the built-in ones (tool/motion.hpp) are their own words.
+std::vector<MotionWord> LowerWords()
+{
+  std::vector<MotionWord> words{{"mirror", "stroke"}, {"fixed", "fixed"}, {"path", "schedule"}};
+  for (const std::string &kind : MotionKinds())
+    if (kind != "fixed" && kind != "stroke" && kind != "path" && kind != "force" && kind != "schedule")
+      words.push_back({kind, kind});
+  return words;
+}
+
+// -lower_die_motion's help: its words (a kind after the built-in ones named with its options).
+std::string LowerHelp(const std::vector<MotionWord> &words)
+{
+  std::string help = "tool scenes: the lower die moves up by the stroke U (mirror), stays (fixed; the upper die then "
+                     "travels 2 U, so U is half the dies' closing either way), ";
+  help +=
+    words.size() > 3 ? "follows -lower_die_path (path)" : "or follows -lower_die_path (path; the upper die travels U)";
+  for (size_t k = 3; k < words.size(); ++k) {
+    help += std::string(k + 1 < words.size() ? ", " : " or ") + "moves as its motion " + words[k].word + " says (";
+    for (const std::string &name : FindMotionKind(words[k].kind)->options) help += "-lower_die_" + name + " ";
+    help += "docs/dies.md)";
+  }
+  if (words.size() > 3) help += "; the upper die travels U but with fixed";
+  return help;
+}
+
+// The upper die's words (-die_motion): each its kind's name, in DieMotionKind's order.
+std::vector<MotionWord> UpperWords()
+{
+  std::vector<MotionWord> words;
+  for (const char *w : kDieMotionWords) words.push_back({w, w});
+  return words;
+}
+
+// The upper die's word where -die_motion is not given, from the old spellings: path where -die_path, -die_path_turn
+// or -die_pivot is given; force where -die_force is given other than 0; else the stroke. `zero_force`: -die_force 0
+// given without -die_motion (the old "not by force", allowed with any word).
+PetscErrorCode OldSpelling(MPI_Comm comm, OptionReader &read, PetscInt &choice, bool &zero_force)
+{
+  PetscBool motion, path, turn, pivot, force;
+  PetscReal f = 0;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(nullptr, "die_", "-motion", &motion));
+  PetscCall(PetscOptionsHasName(nullptr, "die_", "-path", &path));
+  PetscCall(PetscOptionsHasName(nullptr, "die_", "-path_turn", &turn));
+  PetscCall(PetscOptionsHasName(nullptr, "die_", "-pivot", &pivot));
+  PetscCall(read.CheckNumber(comm, "-die_force", false));
+  PetscCall(PetscOptionsGetReal(nullptr, "die_", "-force", &f, &force));
+  zero_force = !motion && force && f == 0;
+  if (!motion && (path || turn || pivot))
+    choice = (PetscInt)DieMotionKind::Path;
+  else if (!motion && force && f != 0)
+    choice = (PetscInt)DieMotionKind::Force;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+} // namespace
+
+PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  const std::vector<MotionWord> words = LowerWords();
+  std::vector<const char *> list;
+  PetscInt choice = 0;
+  const std::string help = LowerHelp(words);
+
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < words.size(); ++k) {
+    list.push_back(words[k].word.c_str());
+    if (opt.lower_die_motion == words[k].word) choice = (PetscInt)k;
+    for (const std::string &name : FindMotionKind(words[k].kind)->options) read.Note(("-lower_die_" + name).c_str());
+  }
+  read.Note("-lower_die_motion", help.c_str());
+  opt.lower_die_spec.tool = "the lower die";
+  PetscOptionsBegin(comm, "lower_die_", "tubeform: lower die motion", "tubeform");
+  OptionsBlock block(PetscOptionsObject);
+  PetscCall(PetscOptionsEList("-motion", help.c_str(), "tubeform", list.data(), (PetscInt)list.size(), list[choice],
+                              &choice, nullptr));
+  opt.lower_die_motion = words[choice].word, opt.lower_die_kind = words[choice].kind;
+  if (opt.help)
+    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, opt.lower_die_spec));
+  else
+    PetscCall(ReadMotion(PetscOptionsObject, opt.lower_die_kind, opt.lower_die_spec));
+  block.Release();
+  PetscOptionsEnd();
+  if (!opt.help) PetscCall(RefuseOthers(comm, "lower_die_", words, words[choice]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  const std::vector<MotionWord> words = UpperWords();
+  std::vector<const char *> list;
+  PetscInt choice = (PetscInt)opt.die_motion.kind;
+  bool zero_force = false;
+  const char *help = "tool scenes: the upper die moves down by the stroke U (stroke; 2 U over a fixed lower die), "
+                     "along a path of its own (path: -die_path, -die_path_turn, -die_pivot) or presses with a force "
+                     "(force: -die_force); without it, -die_path (or its turns or pivot) means path, -die_force other "
+                     "than 0 force (docs/dies.md)";
+
+  PetscFunctionBeginUser;
+  for (const MotionWord &w : words) {
+    list.push_back(w.word.c_str());
+    for (const std::string &name : FindMotionKind(w.kind)->options) read.Note(("-die_" + name).c_str());
+  }
+  read.Note("-die_motion", help);
+  PetscCall(OldSpelling(comm, read, choice, zero_force));
+  opt.die_motion.spec.tool = "the " + opt.scene + " scene's upper die";
+  PetscOptionsBegin(comm, "die_", "tubeform: upper die motion", "tubeform");
+  OptionsBlock block(PetscOptionsObject);
+  PetscCall(
+    PetscOptionsEList("-motion", help, "tubeform", list.data(), (PetscInt)list.size(), list[choice], &choice, nullptr));
+  opt.die_motion.kind = (DieMotionKind)choice;
+  if (opt.help)
+    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, opt.die_motion.spec));
+  else
+    PetscCall(ReadMotion(PetscOptionsObject, words[choice].kind, opt.die_motion.spec));
+  block.Release();
+  PetscOptionsEnd();
+  if (!opt.help) PetscCall(RefuseOthers(comm, "die_", words, words[choice], zero_force ? "force" : ""));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
