@@ -63,7 +63,8 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     a.target_load = opt_.target_load > 0 ? opt_.target_load : opt_.expect_load;
     a.target_ct = opt_.target_c_over_t > 0 ? opt_.target_c_over_t : opt_.expect_c_over_t;
     a.demanded = opt_.target_load > 0 || opt_.target_c_over_t > 0;
-    a.release = opt_.unload == "withdraw" ? "the dies withdrawn" : "the contact forces reversed, the dies removed";
+    a.release =
+      opt_.unload == Unload::Withdraw ? "the dies withdrawn" : "the contact forces reversed, the dies removed";
     return a;
   };
   Answer answer = summarize(nullptr);

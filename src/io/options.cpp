@@ -204,17 +204,12 @@ PetscErrorCode ReadIncrements(PetscOptionItems *PetscOptionsObject, OptionReader
 // Inside the driver's block: inertia, the equilibrium iterations and the kinematics they choose.
 PetscErrorCode ReadDynamics(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
-  const char *const kinds[] = {"quasistatic", "implicit", "auto"};
-  PetscInt choice = static_cast<int>(opt.dynamics);
-
   PetscFunctionBeginUser;
-  read.Note("-dynamics");
-  PetscCall(PetscOptionsEList("-dynamics",
-                              "quasistatic (no inertia), implicit (lumped mass, backward Euler in time), auto "
-                              "(quasi-static until an increment's friction iterations do not settle, implicit from "
-                              "then on)",
-                              "tubeform", kinds, 3, kinds[choice], &choice, nullptr));
-  opt.dynamics = static_cast<Dynamics>(choice);
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-dynamics",
+                       "quasistatic (no inertia), implicit (lumped mass, backward Euler in time), auto "
+                       "(quasi-static until an increment's friction iterations do not settle, implicit from "
+                       "then on)",
+                       kDynamicsWords, opt.dynamics));
   PetscCall(read.Real(PetscOptionsObject, "-dynamics_time",
                       "Duration (s) of the load path lambda 0 -> 1 with -dynamics implicit (scenes without tools)",
                       opt.dynamics_time));
@@ -233,7 +228,7 @@ PetscErrorCode ReadDynamics(PetscOptionItems *PetscOptionsObject, OptionReader &
   // it keeps in balance best).
   const char *const schemes[] = {"forward", "midpoint", "auto"};
   PetscBool set;
-  choice = 2;
+  PetscInt choice = 2;
   read.Note("-kinematics");
   PetscCall(PetscOptionsEList(
     "-kinematics",
@@ -295,14 +290,14 @@ PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &rea
   PetscCall(
     ChooseWord(PetscOptionsObject, read, "-unload",
                "Springback: reverse (paper: contact forces reversed, tools removed), withdraw (tools move back), none",
-               {"reverse", "withdraw", "none"}, opt.unload));
+               kUnloadWords, opt.unload));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-springback",
                        "The springback's law: material (the material's own, backstresses and all, as in loading), "
                        "elastic (the paper's: every point elastic; how far that carries points past the yield surface "
                        "is measured and reported), or auto: elastic for -unload reverse (its reversed contact forces "
                        "are dead loads, which can drive a thin wall into a collapse by the material's law), material "
                        "for -unload withdraw and the bending scene",
-                       {"auto", "material", "elastic"}, opt.springback));
+                       kSpringbackWords, opt.springback));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

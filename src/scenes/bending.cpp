@@ -30,7 +30,7 @@ constexpr double kLength = 0.25;
 class BendingScene : public Scene {
 public:
   explicit BendingScene(const Options &opt)
-      : strain_(opt.bending_strain, opt.bending_cycle), elastic_release_(opt.springback == "elastic"),
+      : strain_(opt.bending_strain, opt.bending_cycle), elastic_release_(opt.springback == Springback::Elastic),
         reversal_(!opt.bending_cycle.empty() && (opt.bending_cycle[0] - opt.bending_strain) * opt.bending_strain < 0)
   {}
   std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }

@@ -49,6 +49,18 @@ private:
 // One of a list of words for a string-valued option; the current value is the default.
 PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
                           std::initializer_list<const char *> words, std::string &value);
+// The same for an option whose value is an enum E, `words` its words in its enumerators' order.
+template <class E, size_t N>
+PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
+                          const char *const (&words)[N], E &value)
+{
+  PetscInt choice = static_cast<PetscInt>(value);
+  PetscFunctionBeginUser;
+  read.Note(name, help);
+  PetscCall(PetscOptionsEList(name, help, "tubeform", words, (PetscInt)N, words[choice], &choice, nullptr));
+  value = static_cast<E>(choice);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 // A list of at most `max` numbers; `value` is kept when the option is not given.
 PetscErrorCode RealList(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
                         PetscInt max, std::vector<double> &value);

@@ -20,6 +20,14 @@ namespace tf {
 // Inertia: none, always, or switched on at the first increment whose friction
 // iterations do not settle in quasi-static steps (docs/theory.md, "Inertia").
 enum class Dynamics { Quasistatic, Implicit, Auto };
+inline constexpr const char *kDynamicsWords[] = {"quasistatic", "implicit", "auto"};
+// How a press is released after loading (-unload): its contact forces reversed and the dies removed (the paper's),
+// the dies moved back, or not at all. The words of the option in the enumerators' order.
+enum class Unload { Reverse, Withdraw, None };
+inline constexpr const char *kUnloadWords[] = {"reverse", "withdraw", "none"};
+// The release's law (-springback): auto (ElasticRelease), the material's own, or every point elastic (the paper's).
+enum class Springback { Auto, Material, Elastic };
+inline constexpr const char *kSpringbackWords[] = {"auto", "material", "elastic"};
 
 // An option tubeform reads: its name (with the dash) and its -help text.
 struct KnownOption {
@@ -117,8 +125,8 @@ struct Options {
   double friction_tol = ContactParams{}.tol;
   double rmin_dphi = ContactParams{}.dphi_max;       // r6: largest fall of f_l / (mu f_n) towards stick in an increment
   double rmin_dphi_rise = ContactParams{}.dphi_rise; // r6: largest rise of |f_l / (mu f_n)| (stick to slide)
-  std::string unload = "reverse";
-  std::string springback = "auto"; // the release's law: material, elastic (the paper's), auto (ElasticRelease)
+  Unload unload = Unload::Reverse;
+  Springback springback = Springback::Auto;
   double shear_gamma = 1.0;
   double slide_n = 100.0, slide_push = 0.2; // slide scene: normal force (N/mm, arc: pressure MPa), push (mm)
   double slide_back = 0;                    // slide scene (flat): push back by this much in a third stage (mm)

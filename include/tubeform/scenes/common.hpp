@@ -45,7 +45,7 @@ double PressToolWork(TubePart part, const DieTravel &travel, const HistoryRow &p
 // dead loads can drive a thin wall into a collapse by the material's law; docs/theory.md, "Unloading").
 inline bool ElasticRelease(const Options &opt)
 {
-  return opt.springback == "elastic" || (opt.springback == "auto" && opt.unload == "reverse");
+  return opt.springback == Springback::Elastic || (opt.springback == Springback::Auto && opt.unload == Unload::Reverse);
 }
 // C1 = x_max, C2 = y_max of the outer surface (the half model's C2 half its height, the full model's C1 half
 // its width) and their ratio. A pass that turned the tube measures in its press's frame: `press` maps the
