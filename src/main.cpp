@@ -84,7 +84,7 @@ static PetscErrorCode Run()
   tf::Options opt;
   PetscMPIInt size;
   PetscFunctionBeginUser;
-  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneNames(), opt));
+  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneReaders(), opt));
   if (opt.help) PetscFunctionReturn(tf::PrintSceneHelp(PETSC_COMM_WORLD));
   PetscCall(tf::RefuseForeignOptions(PETSC_COMM_WORLD, opt));
   opt.job_started = MPI_Wtime();

@@ -72,8 +72,9 @@ cases = [
     (["-history_csv", out("keep.csv/h.csv")], "-history_csv"),
     (["-rmin_event_tol", "0"], "-rmin_event_tol"),
     (["-rmin_dphi", "3"], "-rmin_dphi"),
-    (["-slide_back", "-1"], "-slide_back"),
-    (["-bending_strain", "0"], "-bending_strain"),
+    # A scene's own refusals, in its scene (another scene refuses the option as not its own before its value).
+    (["-scene", "slide", "-slide_back", "-1"], "-slide_back -1.: must be a non-negative distance"),
+    (["-scene", "bending", "-bending_strain", "0"], "-bending_strain 0.: must be non-zero"),
     (["-die_angle", "40"], "-die_angle"),
     (["-friction_mu", "0.1"], "-friction_mu: read by the squaring, flattening and slide scenes, not by this run's "
      "pressure scene"),

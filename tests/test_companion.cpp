@@ -52,7 +52,7 @@ static PetscErrorCode Run(const std::string &mode)
 {
   tf::Options opt;
   PetscFunctionBeginUser;
-  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneNames(), opt));
+  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneReaders(), opt));
   tf::Problem problem;
   PetscCall(problem.Setup(PETSC_COMM_WORLD, opt));
   problem.SetCompanion(

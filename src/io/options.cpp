@@ -7,7 +7,6 @@
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/material_library.hpp"
 #include "tubeform/io/option_reader.hpp"
-#include "tubeform/io/scene_options.hpp"
 #include "tubeform/io/tool_options.hpp"
 #include "tubeform/step/rmin.hpp"
 
@@ -20,7 +19,7 @@ const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
 constexpr PetscInt kMaxTable = 200;
 
 // The scene, the tube and its mesh and element.
-PetscErrorCode ReadScene(MPI_Comm comm, const std::vector<std::string> &scenes, OptionReader &read, Options &opt)
+PetscErrorCode ReadScene(MPI_Comm comm, const std::vector<SceneOptions> &scenes, OptionReader &read, Options &opt)
 {
   PetscInt choice;
   PetscBool set;
@@ -29,17 +28,17 @@ PetscErrorCode ReadScene(MPI_Comm comm, const std::vector<std::string> &scenes, 
   TF_OPTIONS_BEGIN(comm, "tubeform: scene and geometry");
   {
     std::vector<const char *> names;
-    for (const auto &s : scenes) names.push_back(s.c_str());
+    for (const auto &s : scenes) names.push_back(s.name.c_str());
     choice = 0;
     for (size_t k = 0; k < scenes.size(); ++k)
-      if (scenes[k] == opt.scene) choice = (PetscInt)k;
+      if (scenes[k].name == opt.scene) choice = (PetscInt)k;
     read.Note("-scene", "Scene to run");
     PetscCall(PetscOptionsEList("-scene", "Scene to run", "tubeform", names.data(), (PetscInt)names.size(),
                                 names[choice], &choice, &set));
-    opt.scene = scenes[choice];
+    opt.scene = scenes[choice].name;
     if (!set && !opt.help) {
       std::string list;
-      for (const auto &n : scenes) list += (list.empty() ? "" : ", ") + n;
+      for (const auto &n : scenes) list += (list.empty() ? "" : ", ") + n.name;
       SETERRQ(comm, PETSC_ERR_USER_INPUT,
               "no scene given: run a scene file (-options_file options/squaring.opts, ...) or name one with -scene "
               "(%s)",
@@ -255,14 +254,6 @@ PetscErrorCode ReadDriver(MPI_Comm comm, OptionReader &read, Options &opt)
 PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(read.Real(PetscOptionsObject, "-pressure_p",
-                      "pressure scene: final internal pressure (MPa), -pressure_control load", opt.pressure_p));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-pressure_control",
-                       "pressure scene: ramp the pressure (load) or the inner radial displacement (displacement)",
-                       {"load", "displacement"}, opt.pressure_control));
-  PetscCall(read.Real(PetscOptionsObject, "-pressure_u",
-                      "pressure scene: final inner radial displacement (mm), -pressure_control displacement",
-                      opt.pressure_u));
   PetscCall(read.Real(PetscOptionsObject, "-stroke",
                       "Final stroke U (mm): tool travel, or the prescribed end shortening of the column", opt.stroke));
   PetscCall(read.Real(PetscOptionsObject, "-stroke_corner_radius", "The paper's rule: the rounded square's corner (mm)",
@@ -377,15 +368,29 @@ PetscErrorCode ReadLoading(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscFunctionBeginUser;
   TF_OPTIONS_BEGIN(comm, "tubeform: loading and output");
   PetscCall(ReadLoads(PetscOptionsObject, read, opt));
-  PetscCall(ReadSceneSizes(PetscOptionsObject, read, opt)); // (scene_options.cpp)
   PetscCall(ReadOutput(PetscOptionsObject, read, opt));
   TF_OPTIONS_END();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// Each scene's own options, read by the scene (one group in -help per scene that has any).
+PetscErrorCode ReadSceneOptions(MPI_Comm comm, const std::vector<SceneOptions> &scenes, OptionReader &read,
+                                Options &opt)
+{
+  PetscFunctionBeginUser;
+  for (const SceneOptions &s : scenes) {
+    if (!s.read) continue;
+    const std::string title = "tubeform: " + s.name + " scene";
+    TF_OPTIONS_BEGIN(comm, title.c_str());
+    PetscCall(s.read(PetscOptionsObject, read, opt));
+    TF_OPTIONS_END();
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace
 
-PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes, Options &opt)
+PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<SceneOptions> &scenes, Options &opt)
 {
   OptionReader read; // every option's name, for the check of unknown ones
 
@@ -395,6 +400,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   PetscCall(ReadMaterial(comm, read, opt));
   PetscCall(ReadDriver(comm, read, opt));
   PetscCall(ReadLoading(comm, read, opt));
+  PetscCall(ReadSceneOptions(comm, scenes, read, opt));
   PetscCall(ReadLowerDieMotion(comm, read, opt)); // (die_motion_options.cpp)
   PetscCall(ReadUpperDieMotion(comm, read, opt));
 
@@ -403,6 +409,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes
   if (!opt.allow_unused) PetscCall(read.CheckUnknown(comm));
 
   PetscCall(CheckOptions(comm, opt));
+  for (const SceneOptions &s : scenes) // (every scene's, given or not: a value out of range is refused all the same)
+    if (s.check) PetscCall(s.check(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -276,26 +276,7 @@ PetscErrorCode CheckDriverAndLoads(MPI_Comm comm, Options &opt)
              "-rmin_dphi_rise %g: must lie in (0, 1]", opt.rmin_dphi_rise);
   PetscCheck(opt.stroke_corner_radius >= 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_corner_radius %g: must be non-negative", opt.stroke_corner_radius);
-  PetscCheck(opt.slide_n > 0 && opt.slide_push > 0, comm, PETSC_ERR_USER_INPUT,
-             "-slide_n %g, -slide_push %g: must be positive", opt.slide_n, opt.slide_push);
-  PetscCheck(opt.slide_back >= 0 && std::isfinite(opt.slide_back), comm, PETSC_ERR_USER_INPUT,
-             "-slide_back %g: must be a non-negative distance (mm)", opt.slide_back);
-  PetscCheck(opt.slide_back == 0 || opt.slide_tool == "flat", comm, PETSC_ERR_USER_INPUT,
-             "-slide_back %g: only the flat slide (-slide_tool flat) has a push-back stage", opt.slide_back);
-  PetscCheck(opt.pressure_u > 0, comm, PETSC_ERR_USER_INPUT, "-pressure_u %g: must be positive (mm)", opt.pressure_u);
   PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);
-  PetscCheck(std::isfinite(opt.shear_gamma) && opt.shear_gamma != 0, comm, PETSC_ERR_USER_INPUT,
-             "-shear_gamma %g: must be a finite non-zero shear strain", opt.shear_gamma);
-  PetscCheck(std::isfinite(opt.tension_strain) && opt.tension_strain != 0 && std::fabs(opt.tension_strain) < 1, comm,
-             PETSC_ERR_USER_INPUT, "-tension_strain %g: must be non-zero with |strain| < 1", opt.tension_strain);
-  PetscCheck(std::isfinite(opt.bending_strain) && opt.bending_strain != 0 && std::fabs(opt.bending_strain) < 0.2, comm,
-             PETSC_ERR_USER_INPUT, "-bending_strain %g: must be non-zero with |strain| < 0.2", opt.bending_strain);
-  PetscCheck(std::fabs(opt.rotation_angle) <= 3600, comm, PETSC_ERR_USER_INPUT,
-             "-rotation_angle %g: must lie within +-3600 degrees", opt.rotation_angle);
-  PetscCheck(opt.column_l > 0 && opt.column_t > 0 && opt.column_t < opt.column_l, comm, PETSC_ERR_USER_INPUT,
-             "-column_l %g, -column_t %g: need 0 < t < L", opt.column_l, opt.column_t);
-  PetscCheck(std::isfinite(opt.pressure_p), comm, PETSC_ERR_USER_INPUT,
-             "-pressure_p %g: must be a finite pressure (MPa)", opt.pressure_p);
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -13,6 +13,7 @@
 // elastic, or the material's law).
 #include <cmath>
 
+#include "tubeform/io/option_reader.hpp"
 #include "tubeform/mesh/generator.hpp"
 #include "tubeform/scenes/common.hpp"
 #include "tubeform/scenes/strain_path.hpp"
@@ -30,8 +31,8 @@ constexpr double kLength = 0.25;
 class BendingScene : public Scene {
 public:
   explicit BendingScene(const Options &opt)
-      : strain_(opt.bending_strain, opt.bending_cycle), elastic_release_(opt.springback == Springback::Elastic),
-        reversal_(!opt.bending_cycle.empty() && (opt.bending_cycle[0] - opt.bending_strain) * opt.bending_strain < 0)
+      : strain_(opt.bending.strain, opt.bending.cycle), elastic_release_(opt.springback == Springback::Elastic),
+        reversal_(!opt.bending.cycle.empty() && (opt.bending.cycle[0] - opt.bending.strain) * opt.bending.strain < 0)
   {}
   std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
@@ -115,5 +116,28 @@ private:
 } // namespace
 
 std::unique_ptr<Scene> MakeBendingScene(const Options &opt) { return std::make_unique<BendingScene>(opt); }
+
+PetscErrorCode ReadBendingOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(read.Real(PetscOptionsObject, "-bending_strain",
+                      "bending scene: the outer fibre's nominal strain at the end of the first stage (y > 0; "
+                      "negative: bent the other way)",
+                      opt.bending.strain));
+  PetscCall(RealList(PetscOptionsObject, read, "-bending_cycle",
+                     "bending scene: outer-fibre strains the strip is then taken to in turn, each over "
+                     "-unload_increments trial increments (bend and unbend: -bending_strain 0.01 -bending_cycle 0)",
+                     kMaxStrainCycle, opt.bending.cycle));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckBendingOptions(MPI_Comm comm, const Options &opt)
+{
+  const double e = opt.bending.strain;
+  PetscFunctionBeginUser;
+  PetscCheck(std::isfinite(e) && e != 0 && std::fabs(e) < 0.2, comm, PETSC_ERR_USER_INPUT,
+             "-bending_strain %g: must be non-zero with |strain| < 0.2", e);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 } // namespace tf

@@ -4,6 +4,7 @@
 // History: stroke = end shortening (mm), load = axial force (N/mm).
 #include <cmath>
 
+#include "tubeform/io/option_reader.hpp"
 #include "tubeform/mesh/generator.hpp"
 #include "tubeform/scenes/common.hpp"
 
@@ -20,10 +21,10 @@ public:
     if (opt.mesh_nt % 2)
       return "-mesh_nt " + std::to_string(opt.mesh_nt) +
              ": the column needs an even number of elements through the thickness (a node on the axis)";
-    mesh = GenerateRectangle(opt.column_t, opt.column_l, (int)opt.mesh_nt, (int)opt.mesh_ntheta);
+    mesh = GenerateRectangle(opt.column.t, opt.column.l, (int)opt.mesh_nt, (int)opt.mesh_ntheta);
     for (int n = 0; n < mesh.num_nodes(); ++n) {
       const double y = mesh.xy[2 * n + 1];
-      mesh.xy[2 * n] += -0.5 * opt.column_t + opt.column_imperfection * std::sin(M_PI * y / opt.column_l);
+      mesh.xy[2 * n] += -0.5 * opt.column.t + opt.column.imperfection * std::sin(M_PI * y / opt.column.l);
     }
     return "";
   }
@@ -75,5 +76,25 @@ private:
 } // namespace
 
 std::unique_ptr<Scene> MakeColumnScene(const Options &opt) { return std::make_unique<ColumnScene>(opt); }
+
+PetscErrorCode ReadColumnOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  ColumnParams &c = opt.column;
+  PetscFunctionBeginUser;
+  PetscCall(read.Real(PetscOptionsObject, "-column_l", "column scene: length between the pins (mm)", c.l));
+  PetscCall(read.Real(PetscOptionsObject, "-column_t", "column scene: thickness (mm)", c.t));
+  PetscCall(read.Real(PetscOptionsObject, "-column_imperfection",
+                      "column scene: amplitude of the initial sine-shaped bow (mm)", c.imperfection));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckColumnOptions(MPI_Comm comm, const Options &opt)
+{
+  const ColumnParams &c = opt.column;
+  PetscFunctionBeginUser;
+  PetscCheck(c.l > 0 && c.t > 0 && c.t < c.l, comm, PETSC_ERR_USER_INPUT, "-column_l %g, -column_t %g: need 0 < t < L",
+             c.l, c.t);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 } // namespace tf

@@ -7,6 +7,7 @@
 //   load = the pressure it takes: radial reaction / current inner arc length.
 #include <cmath>
 
+#include "tubeform/io/option_reader.hpp"
 #include "tubeform/scenes/common.hpp"
 
 namespace tf {
@@ -15,7 +16,7 @@ namespace {
 
 class PressureScene : public Scene {
 public:
-  explicit PressureScene(const Options &opt) : opt_(opt), displacement_(opt.pressure_control == "displacement") {}
+  explicit PressureScene(const Options &opt) : opt_(opt), displacement_(opt.pressure.control == "displacement") {}
   std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
   LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}, {}}; }
@@ -33,9 +34,9 @@ public:
   {
     PetscFunctionBeginUser;
     if (displacement_)
-      for (PetscInt n : m.mesh.node_sets["inner"]) m.system.Prescribe(n, 0, dlambda * opt_.pressure_u);
+      for (PetscInt n : m.mesh.node_sets["inner"]) m.system.Prescribe(n, 0, dlambda * opt_.pressure.u);
     else
-      PetscCall(AddEdgePressure(m, "inner", dlambda * opt_.pressure_p, nullptr, true, lambda * opt_.pressure_p));
+      PetscCall(AddEdgePressure(m, "inner", dlambda * opt_.pressure.p, nullptr, true, lambda * opt_.pressure.p));
     PetscCall(QuarterSymmetry(m));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -44,7 +45,7 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
-    if (!displacement_) PetscCall(AddEdgePressure(m, "inner", lambda * opt_.pressure_p, f, false));
+    if (!displacement_) PetscCall(AddEdgePressure(m, "inner", lambda * opt_.pressure.p, f, false));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
@@ -76,7 +77,7 @@ public:
       PetscCall(SetForce(m, "inner", f_int, radial, fr));
       row.load = fr / g[2];
     } else
-      row.load = lambda * opt_.pressure_p;
+      row.load = lambda * opt_.pressure.p;
     PetscCall(OuterExtents(m, row));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -89,5 +90,28 @@ private:
 } // namespace
 
 std::unique_ptr<Scene> MakePressureScene(const Options &opt) { return std::make_unique<PressureScene>(opt); }
+
+PetscErrorCode ReadPressureOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  PressureParams &p = opt.pressure;
+  PetscFunctionBeginUser;
+  PetscCall(read.Real(PetscOptionsObject, "-pressure_p",
+                      "pressure scene: final internal pressure (MPa), -pressure_control load", p.p));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-pressure_control",
+                       "pressure scene: ramp the pressure (load) or the inner radial displacement (displacement)",
+                       {"load", "displacement"}, p.control));
+  PetscCall(read.Real(PetscOptionsObject, "-pressure_u",
+                      "pressure scene: final inner radial displacement (mm), -pressure_control displacement", p.u));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckPressureOptions(MPI_Comm comm, const Options &opt)
+{
+  const PressureParams &p = opt.pressure;
+  PetscFunctionBeginUser;
+  PetscCheck(p.u > 0, comm, PETSC_ERR_USER_INPUT, "-pressure_u %g: must be positive (mm)", p.u);
+  PetscCheck(std::isfinite(p.p), comm, PETSC_ERR_USER_INPUT, "-pressure_p %g: must be a finite pressure (MPa)", p.p);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 } // namespace tf

@@ -1,5 +1,7 @@
 #include "tubeform/scenes/registry.hpp"
 
+#include "tubeform/io/option_reader.hpp"
+
 #include <cctype>
 #include <sstream>
 
@@ -16,11 +18,23 @@ std::unique_ptr<Scene> MakeTensionScene(const Options &opt);
 std::unique_ptr<Scene> MakeBendingScene(const Options &opt);
 std::unique_ptr<Scene> MakeSlideScene(const Options &opt);
 std::unique_ptr<Scene> MakeArcSlideScene(const Options &opt);
+// The readers and checkers of the scenes' own options, each in its scene's file.
+#define TF_SCENE_OPTIONS(Name)                                                                                         \
+  PetscErrorCode Read##Name##Options(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt);          \
+  PetscErrorCode Check##Name##Options(MPI_Comm comm, const Options &opt);
+TF_SCENE_OPTIONS(Pressure)
+TF_SCENE_OPTIONS(Shear)
+TF_SCENE_OPTIONS(Rotation)
+TF_SCENE_OPTIONS(Column)
+TF_SCENE_OPTIONS(Tension)
+TF_SCENE_OPTIONS(Bending)
+TF_SCENE_OPTIONS(Slide)
+#undef TF_SCENE_OPTIONS
 
 namespace {
 std::unique_ptr<Scene> MakeAnySlideScene(const Options &opt)
 {
-  return opt.slide_tool == "arc" ? MakeArcSlideScene(opt) : MakeSlideScene(opt);
+  return opt.slide.tool == "arc" ? MakeArcSlideScene(opt) : MakeSlideScene(opt);
 }
 } // namespace
 
@@ -31,14 +45,20 @@ const std::vector<SceneEntry> &SceneRegistry()
     {"squaring", "quarter tube pressed by the upper 90-degree V-die (the paper's process)", MakeSquaringScene,
      "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge -friction_mu -friction_vcri"},
     {"flattening", "quarter ring crushed by a flat plate", MakeFlatteningScene, "-friction_mu -friction_vcri"},
-    {"pressure", "quarter thick cylinder under internal pressure (Lame, Hill)", MakePressureScene, "-pressure_"},
-    {"shear", "simple shear of a block (Jaumann objectivity)", MakeShearScene, "-shear_"},
-    {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene, "-rotation_"},
-    {"column", "a bowed strip shortened past its Euler load (geometric stiffness)", MakeColumnScene, "-column_"},
-    {"tension", "plane-strain tension or compression of a block (flow curve)", MakeTensionScene, "-tension_"},
-    {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene, "-bending_"},
+    {"pressure", "quarter thick cylinder under internal pressure (Lame, Hill)", MakePressureScene, "-pressure_",
+     ReadPressureOptions, CheckPressureOptions},
+    {"shear", "simple shear of a block (Jaumann objectivity)", MakeShearScene, "-shear_", ReadShearOptions,
+     CheckShearOptions},
+    {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene, "-rotation_", ReadRotationOptions,
+     CheckRotationOptions},
+    {"column", "a bowed strip shortened past its Euler load (geometric stiffness)", MakeColumnScene, "-column_",
+     ReadColumnOptions, CheckColumnOptions},
+    {"tension", "plane-strain tension or compression of a block (flow curve)", MakeTensionScene, "-tension_",
+     ReadTensionOptions, CheckTensionOptions},
+    {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene, "-bending_",
+     ReadBendingOptions, CheckBendingOptions},
     {"slide", "a block pushed along a floor, or a ring turned in a cylinder (-slide_tool arc): Coulomb friction",
-     MakeAnySlideScene, "-slide_ -friction_mu -friction_vcri"},
+     MakeAnySlideScene, "-slide_ -friction_mu -friction_vcri", ReadSlideOptions, CheckSlideOptions},
   };
   return scenes;
 }
@@ -48,6 +68,13 @@ std::vector<std::string> SceneNames()
   std::vector<std::string> names;
   for (const auto &s : SceneRegistry()) names.push_back(s.name);
   return names;
+}
+
+std::vector<SceneOptions> SceneReaders()
+{
+  std::vector<SceneOptions> scenes;
+  for (const auto &s : SceneRegistry()) scenes.push_back({s.name, s.read, s.check});
+  return scenes;
 }
 
 namespace {

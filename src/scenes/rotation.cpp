@@ -4,6 +4,7 @@
 // History: stroke = rotation angle so far (degrees), load = mean von Mises stress.
 #include <cmath>
 
+#include "tubeform/io/option_reader.hpp"
 #include "tubeform/scenes/block.hpp"
 
 namespace tf {
@@ -17,10 +18,10 @@ public:
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     if (lambda < kStretch - kLambdaTol) {
-      const double de = dlambda / kStretch * opt_.rotation_strain;
+      const double de = dlambda / kStretch * opt_.rotation.strain;
       PrescribeBoundary(m, [&](PetscInt n, double d[2]) { d[0] = de * m.mesh.x0[2 * n], d[1] = 0; });
     } else {
-      const double dth = dlambda / (1 - kStretch) * opt_.rotation_angle * M_PI / 180;
+      const double dth = dlambda / (1 - kStretch) * opt_.rotation.angle * M_PI / 180;
       const double c = std::cos(dth), s = std::sin(dth);
       PrescribeBoundary(m, [&](PetscInt n, double d[2]) {
         const double x = m.body.position()[2 * n], y = m.body.position()[2 * n + 1];
@@ -34,7 +35,7 @@ public:
   PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
-    row.stroke = lambda <= kStretch ? 0.0 : (lambda - kStretch) / (1 - kStretch) * opt_.rotation_angle;
+    row.stroke = lambda <= kStretch ? 0.0 : (lambda - kStretch) / (1 - kStretch) * opt_.rotation.angle;
     PetscCall(PointAverage(
       m, [](const PointState &s) { return VonMises(s.sigma); }, row.load));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -47,5 +48,23 @@ private:
 } // namespace
 
 std::unique_ptr<Scene> MakeRotationScene(const Options &opt) { return std::make_unique<RotationScene>(opt); }
+
+PetscErrorCode ReadRotationOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(read.Real(PetscOptionsObject, "-rotation_angle",
+                      "rotation scene: rigid rotation after the prestretch (degrees)", opt.rotation.angle));
+  PetscCall(read.Real(PetscOptionsObject, "-rotation_strain",
+                      "rotation scene: uniaxial prestretch strain in x before the rotation", opt.rotation.strain));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckRotationOptions(MPI_Comm comm, const Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(std::fabs(opt.rotation.angle) <= 3600, comm, PETSC_ERR_USER_INPUT,
+             "-rotation_angle %g: must lie within +-3600 degrees", opt.rotation.angle);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 } // namespace tf

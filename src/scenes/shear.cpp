@@ -1,6 +1,7 @@
 // Simple shear x = X + gamma Y to -shear_gamma (docs/verification.md, "Scenes against closed forms").
 // History: stroke = gamma, load = mean sigma_xy (MPa). Hypoelastic Jaumann
 // reference: sigma_xy = G sin(gamma), sigma_xx = -sigma_yy = G (1 - cos(gamma)).
+#include "tubeform/io/option_reader.hpp"
 #include "tubeform/scenes/block.hpp"
 
 namespace tf {
@@ -12,7 +13,7 @@ public:
   using BlockScene::BlockScene;
   PetscErrorCode Load(Model &m, double, double dlambda) override
   {
-    const double dgamma = dlambda * opt_.shear_gamma;
+    const double dgamma = dlambda * opt_.shear.gamma;
     PrescribeBoundary(m, [&](PetscInt n, double d[2]) { d[0] = dgamma * m.body.position()[2 * n + 1], d[1] = 0; });
     return 0;
   }
@@ -21,7 +22,7 @@ public:
   PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
-    row.stroke = lambda * opt_.shear_gamma;
+    row.stroke = lambda * opt_.shear.gamma;
     PetscCall(PointAverage(
       m, [](const PointState &s) { return s.sigma[3]; }, row.load));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -31,5 +32,21 @@ public:
 } // namespace
 
 std::unique_ptr<Scene> MakeShearScene(const Options &opt) { return std::make_unique<ShearScene>(opt); }
+
+PetscErrorCode ReadShearOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(read.Real(PetscOptionsObject, "-shear_gamma", "shear scene: final shear strain gamma", opt.shear.gamma));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckShearOptions(MPI_Comm comm, const Options &opt)
+{
+  const double gamma = opt.shear.gamma;
+  PetscFunctionBeginUser;
+  PetscCheck(std::isfinite(gamma) && gamma != 0, comm, PETSC_ERR_USER_INPUT,
+             "-shear_gamma %g: must be a finite non-zero shear strain", gamma);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 } // namespace tf

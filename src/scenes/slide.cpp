@@ -6,6 +6,7 @@
 // History: stroke = top displacement (mm), load = tangential force T (N/mm);
 // slip = mean slip of the bottom on the floor, tool_fx / tool_fy = the
 // block's force on the floor.
+#include "tubeform/io/option_reader.hpp"
 #include "tubeform/mesh/generator.hpp"
 #include "tubeform/scenes/common.hpp"
 #include "tubeform/scenes/contact_params.hpp"
@@ -31,7 +32,7 @@ public:
   }
   LoadPath Path(const Options &opt) const override
   {
-    if (opt.slide_back > 0) return {3.0, opt.dynamics_time, {1.0, 2.0}, {}};
+    if (opt.slide.back > 0) return {3.0, opt.dynamics_time, {1.0, 2.0}, {}};
     return {2.0, opt.dynamics_time, {1.0}, {}};
   }
   // While the top is pushed, T and its displacement are work-conjugate.
@@ -46,8 +47,8 @@ public:
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     PetscFunctionBeginUser;
-    const double dn = lambda < 1.0 ? dlambda * opt_.slide_n : 0.0;
-    const double push = lambda < 1.0 ? 0.0 : lambda < 2.0 ? dlambda * opt_.slide_push : -dlambda * opt_.slide_back;
+    const double dn = lambda < 1.0 ? dlambda * opt_.slide.n : 0.0;
+    const double push = lambda < 1.0 ? 0.0 : lambda < 2.0 ? dlambda * opt_.slide.push : -dlambda * opt_.slide.back;
     PetscCall(TopLoad(m, -dn, nullptr, true));
     for (PetscInt n : m.mesh.node_sets["top"]) m.system.Prescribe(n, 0, push);
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -56,7 +57,7 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
-    PetscCall(TopLoad(m, -std::min(lambda, 1.0) * opt_.slide_n, f, false));
+    PetscCall(TopLoad(m, -std::min(lambda, 1.0) * opt_.slide.n, f, false));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   const char *StrokeName() const override { return "push (mm)"; }
@@ -84,8 +85,8 @@ private:
   double Top(double lambda) const
   {
     if (lambda <= 1.0) return 0.0;
-    if (lambda <= 2.0) return (lambda - 1.0) * opt_.slide_push;
-    return opt_.slide_push - (lambda - 2.0) * opt_.slide_back;
+    if (lambda <= 2.0) return (lambda - 1.0) * opt_.slide.push;
+    return opt_.slide.push - (lambda - 2.0) * opt_.slide.back;
   }
   static constexpr double kWidth = 10.0, kHeight = 2.0; // block (mm)
   static constexpr double kFloorHalfLength = 1e3;       // the floor reaches far past the block (mm)
@@ -114,5 +115,35 @@ private:
 } // namespace
 
 std::unique_ptr<Scene> MakeSlideScene(const Options &opt) { return std::make_unique<SlideScene>(opt); }
+
+PetscErrorCode ReadSlideOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  SlideParams &s = opt.slide;
+  PetscFunctionBeginUser;
+  PetscCall(read.Real(PetscOptionsObject, "-slide_n", "slide scene: normal force pressing the block (N/mm)", s.n));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-slide_tool",
+                       "slide scene: a block on a flat floor, or a quarter ring turned inside a cylinder (arc)",
+                       {"flat", "arc"}, s.tool));
+  PetscCall(
+    read.Real(PetscOptionsObject, "-slide_push", "slide scene: sideways displacement of the block's top (mm)", s.push));
+  PetscCall(read.Real(PetscOptionsObject, "-slide_back",
+                      "slide scene (flat): then push the top back by this much (mm; 0: no third stage), "
+                      "reversing the slip",
+                      s.back));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckSlideOptions(MPI_Comm comm, const Options &opt)
+{
+  const SlideParams &s = opt.slide;
+  PetscFunctionBeginUser;
+  PetscCheck(s.n > 0 && s.push > 0, comm, PETSC_ERR_USER_INPUT, "-slide_n %g, -slide_push %g: must be positive", s.n,
+             s.push);
+  PetscCheck(s.back >= 0 && std::isfinite(s.back), comm, PETSC_ERR_USER_INPUT,
+             "-slide_back %g: must be a non-negative distance (mm)", s.back);
+  PetscCheck(s.back == 0 || s.tool == "flat", comm, PETSC_ERR_USER_INPUT,
+             "-slide_back %g: only the flat slide (-slide_tool flat) has a push-back stage", s.back);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 } // namespace tf

@@ -50,8 +50,8 @@ public:
   {
     PetscFunctionBeginUser;
     if (lambda < 1.0)
-      PetscCall(AddEdgePressure(m, "inner", dlambda * opt_.slide_n, nullptr, true, lambda * opt_.slide_n));
-    const double turn = lambda < 1.0 ? 0.0 : dlambda * opt_.slide_push / opt_.tube_ro;
+      PetscCall(AddEdgePressure(m, "inner", dlambda * opt_.slide.n, nullptr, true, lambda * opt_.slide.n));
+    const double turn = lambda < 1.0 ? 0.0 : dlambda * opt_.slide.push / opt_.tube_ro;
     // A rigid turn of the inner surface: tangential (frame n; l is radial)
     // displacement = turn x current radius, so the moment and the turn are
     // work-conjugate.
@@ -63,7 +63,7 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
-    PetscCall(AddEdgePressure(m, "inner", std::min(lambda, 1.0) * opt_.slide_n, f, false));
+    PetscCall(AddEdgePressure(m, "inner", std::min(lambda, 1.0) * opt_.slide.n, f, false));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   const char *StrokeName() const override { return "turn (rad)"; }
@@ -71,7 +71,7 @@ public:
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
-    row.stroke = lambda <= 1.0 ? 0.0 : (lambda - 1.0) * opt_.slide_push / opt_.tube_ro;
+    row.stroke = lambda <= 1.0 ? 0.0 : (lambda - 1.0) * opt_.slide.push / opt_.tube_ro;
     // Moment about the centre of the internal forces at the inner nodes (their supports).
     const auto &x = m.body.position();
     PetscCall(SetForce(

@@ -3,6 +3,7 @@
 // e(lambda): -tension_strain at lambda 1, then each -tension_cycle strain one
 // unit of lambda later (piecewise linear, scenes/strain_path.hpp).
 // History: stroke = nominal strain, load = mean sigma_xx (MPa).
+#include "tubeform/io/option_reader.hpp"
 #include "tubeform/scenes/block.hpp"
 #include "tubeform/scenes/strain_path.hpp"
 
@@ -12,7 +13,7 @@ namespace {
 
 class TensionScene : public BlockScene {
 public:
-  explicit TensionScene(const Options &opt) : BlockScene(opt), strain_(opt.tension_strain, opt.tension_cycle) {}
+  explicit TensionScene(const Options &opt) : BlockScene(opt), strain_(opt.tension.strain, opt.tension.cycle) {}
   LoadPath Path(const Options &opt) const override { return strain_.Path(opt.dynamics_time); }
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
@@ -40,5 +41,27 @@ private:
 } // namespace
 
 std::unique_ptr<Scene> MakeTensionScene(const Options &opt) { return std::make_unique<TensionScene>(opt); }
+
+PetscErrorCode ReadTensionOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(read.Real(PetscOptionsObject, "-tension_strain",
+                      "tension scene: final nominal strain in x (negative: compression)", opt.tension.strain));
+  PetscCall(RealList(PetscOptionsObject, read, "-tension_cycle",
+                     "tension scene: nominal strains the block is then taken to in turn, each over "
+                     "-unload_increments trial increments (a tension-compression cycle: -tension_strain 0.02 "
+                     "-tension_cycle -0.02,0.02)",
+                     kMaxStrainCycle, opt.tension.cycle));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckTensionOptions(MPI_Comm comm, const Options &opt)
+{
+  const double e = opt.tension.strain;
+  PetscFunctionBeginUser;
+  PetscCheck(std::isfinite(e) && e != 0 && std::fabs(e) < 1, comm, PETSC_ERR_USER_INPUT,
+             "-tension_strain %g: must be non-zero with |strain| < 1", e);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 } // namespace tf

@@ -80,7 +80,7 @@ PetscErrorCode ReadOnce()
   tf::Options opt;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsInsertFile(PETSC_COMM_WORLD, nullptr, path.c_str(), PETSC_TRUE));
-  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneNames(), opt));
+  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneReaders(), opt));
   if (!opt.help) UseOptions(opt);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -12,6 +12,7 @@
 #include "tubeform/body/body.hpp"
 #include "tubeform/contact/contact.hpp"
 #include "tubeform/fe/quad.hpp"
+#include "tubeform/io/scene_params.hpp"
 #include "tubeform/material/elastic.hpp"
 #include "tubeform/tool/motion.hpp"
 
@@ -98,13 +99,9 @@ struct Options {
   double dynamics_time = 1.0;                            // s for lambda 0 -> 1 (scenes without tools)
   double punch_speed = 1.0;                              // mm/s (tool scenes: duration = stroke / speed)
   ObjectiveScheme kinematics = ObjectiveScheme::Forward; // docs/theory.md, section 2
-  // Scene parameters
-  double pressure_p = 50.0;
-  std::string pressure_control = "load";
-  double pressure_u = 0.1;
-  double stroke = 4.2;             // final tool stroke / prescribed end displacement (mm)
-  double stroke_corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
-  std::vector<double> stroke_path; // tool scenes: the die's strokes in turn (empty: 0 to -stroke)
+  double stroke = 4.2;                                   // final tool stroke / prescribed end displacement (mm)
+  double stroke_corner_radius = 0;                       // > 0: stroke from the paper's corner-radius rule
+  std::vector<double> stroke_path;                       // tool scenes: the die's strokes in turn (empty: 0 to -stroke)
   // Tools, contact, friction (docs/dies.md; docs/theory.md, section 6)
   double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
   std::string die_profile;          // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
@@ -127,17 +124,14 @@ struct Options {
   double rmin_dphi_rise = ContactParams{}.dphi_rise; // r6: largest rise of |f_l / (mu f_n)| (stick to slide)
   Unload unload = Unload::Reverse;
   Springback springback = Springback::Auto;
-  double shear_gamma = 1.0;
-  double slide_n = 100.0, slide_push = 0.2; // slide scene: normal force (N/mm, arc: pressure MPa), push (mm)
-  double slide_back = 0;                    // slide scene (flat): push back by this much in a third stage (mm)
-  std::string slide_tool = "flat";
-  double tension_strain = 0.1;       // signed: < 0 compresses
-  std::vector<double> tension_cycle; // nominal strains the block is then taken to in turn (reversals)
-  double bending_strain = 0.01;      // the outer fibre's nominal strain at lambda 1 (signed)
-  std::vector<double> bending_cycle; // outer-fibre strains the strip is then taken to in turn
-  double rotation_angle = 90.0;      // degrees
-  double rotation_strain = 1e-3;     // prestretch before the rotation
-  double column_l = 25.0, column_t = 1.0, column_imperfection = 0.025;
+  // The scenes without tools' own parameters (io/scene_params.hpp; each read and checked by its scene).
+  PressureParams pressure;
+  ShearParams shear;
+  RotationParams rotation;
+  ColumnParams column;
+  TensionParams tension;
+  BendingParams bending;
+  SlideParams slide;
   // Output
   std::string output = "results/tubeform.h5";
   std::string history_csv;
@@ -167,10 +161,20 @@ struct Options {
   std::vector<KnownOption> known; // every option ReadOptions read (the hints for options nothing reads)
 };
 
-// Collective: reads and validates the options; `scenes` are the names -scene
-// accepts. Errors are PETSC_ERR_USER_INPUT with a message naming the option
-// and what is allowed.
-PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<std::string> &scenes, Options &opt);
+class OptionReader;
+// A scene -scene accepts, and the reader and checker of its own options (null: it has none): the reader lists them
+// in -help under "tubeform: <name> scene" (between PetscOptionsBegin and PetscOptionsEnd, whose PetscOptionsObject
+// it takes), the checker refuses their bad values in one line naming the option. The scene registry lists them.
+struct SceneOptions {
+  std::string name;
+  PetscErrorCode (*read)(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt) = nullptr;
+  PetscErrorCode (*check)(MPI_Comm comm, const Options &opt) = nullptr;
+};
+
+// Collective: reads and validates the options; `scenes` are the scenes -scene
+// accepts, with their own options. Errors are PETSC_ERR_USER_INPUT with a
+// message naming the option and what is allowed.
+PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<SceneOptions> &scenes, Options &opt);
 // Collective: refuses values out of range (called by ReadOptions).
 PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt);
 // Collective: refuses a later pass's stroke, dies (called by CheckOptions, passes_check.cpp) and turns out of

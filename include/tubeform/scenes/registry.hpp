@@ -16,10 +16,15 @@ struct SceneEntry {
   // The options it reads that not every scene does (space-separated; a name ending in '_' a prefix): an option of
   // another scene's list, given to this one, is refused naming the scenes that read it (ForeignOption).
   const char *reads = "";
+  // The reader and checker of its own options (SceneOptions; null: none), defined in its file.
+  PetscErrorCode (*read)(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt) = nullptr;
+  PetscErrorCode (*check)(MPI_Comm comm, const Options &opt) = nullptr;
 };
 
 const std::vector<SceneEntry> &SceneRegistry();
 std::vector<std::string> SceneNames();
+// The scenes with the readers and checkers of their own options, for ReadOptions.
+std::vector<SceneOptions> SceneReaders();
 // "" or why the option named `option` (with its dash) is not for the scene `scene`: the scenes whose `reads` list
 // it, where `scene`'s does not.
 std::string ForeignOption(const std::string &scene, const std::string &option);

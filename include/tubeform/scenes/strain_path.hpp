@@ -13,6 +13,9 @@
 
 namespace tf {
 
+// Reversals -tension_cycle and -bending_cycle take at most.
+constexpr PetscInt kMaxStrainCycle = 16;
+
 class StrainPath {
 public:
   StrainPath(double first, const std::vector<double> &then) : targets_{0.0, first}
