@@ -27,7 +27,7 @@ BodyParams MakeBodyParams(const Options &opt)
   b.group_tol = opt.rmin_group_tol;
   // With equilibrium iterations a point yields inside the step on its own path
   // (the update finds the onset); r1 limits the paper's forward increments only.
-  b.yield_inside = opt.rmin_yield == "inside" || opt.equilibrium_tol > 0;
+  b.yield_inside = opt.rmin_yield == RminYield::Inside || opt.equilibrium_tol > 0;
   b.yield_tol = opt.rmin_yield_tol;
   b.drift_correction = opt.drift_correction;
   b.state_from_strain = opt.equilibrium_tol > 0;

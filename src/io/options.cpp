@@ -178,7 +178,7 @@ PetscErrorCode ReadIncrements(PetscOptionItems *PetscOptionsObject, OptionReader
   PetscCall(ChooseWord(PetscOptionsObject, read, "-rmin_yield",
                        "onset (paper: r1 ends the step where a point meets the yield surface), inside (points "
                        "yield inside a step: tangent weighted by the elastic fraction, update split at the onset)",
-                       {"onset", "inside"}, opt.rmin_yield));
+                       kRminYieldWords, opt.rmin_yield));
   PetscCall(read.Real(PetscOptionsObject, "-rmin_yield_tol",
                       "-rmin_yield inside: re-solve the step while a point's elastic fraction moves by more",
                       opt.rmin_yield_tol));

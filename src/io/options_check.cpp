@@ -25,9 +25,9 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
-  bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != "auto" ||
+  bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != TubeModel::Auto ||
                !DieMoves(opt, DieMotionKind::Stroke) || opt.side_die != "none" || opt.side_force != 0 ||
-               opt.die_offset != 0 || opt.full_hold != "auto";
+               opt.die_offset != 0 || opt.full_hold != FullHold::Auto;
   for (const PassSpec &p : opt.more_passes)
     asked =
       asked || p.stroke != 0 || p.turn != 0 || !p.die_profile.empty() || !p.lower_die.empty() || !p.side_die.empty();
@@ -57,7 +57,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
     opt.stroke_corner_radius, opt.lower_die.c_str());
   bool mirror = opt.lower_die_motion == "mirror";
   for (int pass = 0; pass < kMaxPasses; ++pass) mirror = mirror && PassLowerDie(opt, pass) == "mirror";
-  PetscCheck(opt.model != "quarter" || mirror, comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(opt.model != TubeModel::Quarter || mirror, comm, PETSC_ERR_USER_INPUT,
              "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
              "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
   PetscCall(CheckPassStrokesAndDies(comm, opt)); // (passes_check.cpp)
@@ -159,14 +159,14 @@ PetscErrorCode CheckPassesAndHolds(MPI_Comm comm, Options &opt)
   if (opt.die_offset == 0 && !DiePathSideways(opt)) std::snprintf(off_axis, sizeof off_axis, "-die_path_turn");
   PetscCheck(!DieOffAxis(opt) || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
              "%s: a die off the axis breaks the tube's mirror symmetry; use -model full (or auto)", off_axis);
-  PetscCheck(opt.full_hold != "rotation" || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(opt.full_hold != FullHold::Rotation || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
              "-full_hold rotation: the %s scene's plates do not hold the tube's slide; use pins", opt.scene.c_str());
-  PetscCheck(!DieOffAxis(opt) || opt.full_hold != "pins", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(!DieOffAxis(opt) || opt.full_hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
              "%s with -full_hold pins: the pins would hold the tube's slide against the die; use -full_hold rotation "
              "(or auto)",
              off_axis);
-  PetscCheck(opt.full_hold == "auto" || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
-             "-full_hold %s: only the full model is held so (-model full)", opt.full_hold.c_str());
+  PetscCheck(opt.full_hold == FullHold::Auto || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
+             "-full_hold %s: only the full model is held so (-model full)", kFullHoldWords[(int)opt.full_hold]);
   bool held = false;
   for (int pass = 0; pass < kMaxPasses; ++pass) held = held || HeldByRotation(opt, pass);
   PetscCheck(

@@ -43,7 +43,7 @@ PetscErrorCode ReadModelAndOffset(PetscOptionItems *PetscOptionsObject, OptionRe
   PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
                        "tool scenes: the part of the tube modelled: quarter, half (x >= 0), full (held as "
                        "-full_hold says), auto (the quarter where exact, else the half or the full)",
-                       {"auto", "quarter", "half", "full"}, opt.model));
+                       kModelWords, opt.model));
   PetscCall(read.Real(PetscOptionsObject, "-die_offset",
                       "squaring: the first pass's upper die moved off the y axis by this along x (mm; the full model, "
                       "held by the rotation hold, a second pass after it too; docs/dies.md)",
@@ -56,7 +56,7 @@ PetscErrorCode ReadModelAndOffset(PetscOptionItems *PetscOptionsObject, OptionRe
                "-die_path and a second pass after it, and in a "
                "quarter-turned second pass after a first pass not mirrored top to bottom, and in one turned by "
                "another angle; else pins)",
-               {"auto", "pins", "rotation"}, opt.full_hold));
+               kFullHoldWords, opt.full_hold));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -16,7 +16,9 @@ namespace {
 
 class PressureScene : public Scene {
 public:
-  explicit PressureScene(const Options &opt) : opt_(opt), displacement_(opt.pressure.control == "displacement") {}
+  explicit PressureScene(const Options &opt)
+      : opt_(opt), displacement_(opt.pressure.control == PressureControl::Displacement)
+  {}
   std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
   LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}, {}}; }
@@ -99,7 +101,7 @@ PetscErrorCode ReadPressureOptions(PetscOptionItems *PetscOptionsObject, OptionR
                       "pressure scene: final internal pressure (MPa), -pressure_control load", p.p));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-pressure_control",
                        "pressure scene: ramp the pressure (load) or the inner radial displacement (displacement)",
-                       {"load", "displacement"}, p.control));
+                       kPressureControlWords, p.control));
   PetscCall(read.Real(PetscOptionsObject, "-pressure_u",
                       "pressure scene: final inner radial displacement (mm), -pressure_control displacement", p.u));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -34,7 +34,7 @@ TF_SCENE_OPTIONS(Slide)
 namespace {
 std::unique_ptr<Scene> MakeAnySlideScene(const Options &opt)
 {
-  return opt.slide.tool == "arc" ? MakeArcSlideScene(opt) : MakeSlideScene(opt);
+  return opt.slide.tool == SlideTool::Arc ? MakeArcSlideScene(opt) : MakeSlideScene(opt);
 }
 } // namespace
 

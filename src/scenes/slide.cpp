@@ -123,7 +123,7 @@ PetscErrorCode ReadSlideOptions(PetscOptionItems *PetscOptionsObject, OptionRead
   PetscCall(read.Real(PetscOptionsObject, "-slide_n", "slide scene: normal force pressing the block (N/mm)", s.n));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-slide_tool",
                        "slide scene: a block on a flat floor, or a quarter ring turned inside a cylinder (arc)",
-                       {"flat", "arc"}, s.tool));
+                       kSlideToolWords, s.tool));
   PetscCall(
     read.Real(PetscOptionsObject, "-slide_push", "slide scene: sideways displacement of the block's top (mm)", s.push));
   PetscCall(read.Real(PetscOptionsObject, "-slide_back",
@@ -141,7 +141,7 @@ PetscErrorCode CheckSlideOptions(MPI_Comm comm, const Options &opt)
              s.push);
   PetscCheck(s.back >= 0 && std::isfinite(s.back), comm, PETSC_ERR_USER_INPUT,
              "-slide_back %g: must be a non-negative distance (mm)", s.back);
-  PetscCheck(s.back == 0 || s.tool == "flat", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(s.back == 0 || s.tool == SlideTool::Flat, comm, PETSC_ERR_USER_INPUT,
              "-slide_back %g: only the flat slide (-slide_tool flat) has a push-back stage", s.back);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -29,6 +29,16 @@ inline constexpr const char *kUnloadWords[] = {"reverse", "withdraw", "none"};
 // The release's law (-springback): auto (ElasticRelease), the material's own, or every point elastic (the paper's).
 enum class Springback { Auto, Material, Elastic };
 inline constexpr const char *kSpringbackWords[] = {"auto", "material", "elastic"};
+// The part of the tube the tool scenes model (-model): the quarter where it is exact (auto, QuarterModel), or the
+// one asked for.
+enum class TubeModel { Auto, Quarter, Half, Full };
+inline constexpr const char *kModelWords[] = {"auto", "quarter", "half", "full"};
+// The full model's support (-full_hold): auto (HeldByRotation), its axis pins, or the rotation hold.
+enum class FullHold { Auto, Pins, Rotation };
+inline constexpr const char *kFullHoldWords[] = {"auto", "pins", "rotation"};
+// Where r1 ends a step (-rmin_yield): at each yield onset (the paper's), or points yield inside steps.
+enum class RminYield { Onset, Inside };
+inline constexpr const char *kRminYieldWords[] = {"onset", "inside"};
 
 // An option tubeform reads: its name (with the dash) and its -help text.
 struct KnownOption {
@@ -80,7 +90,7 @@ struct Options {
   double rmin_deps_yield = BodyParams{}.rmin_deps_yield; // r2 also at most this many yield strains (0: off)
   double rmin_domega = BodyParams{}.rmin_domega;         // r3: largest rotation increment (rad)
   double rmin_group_tol = BodyParams{}.group_tol;        // events within (1 + tol) r_min are taken together
-  std::string rmin_yield = "onset"; // onset: r1 ends a step at each yield onset; inside: points yield inside steps
+  RminYield rmin_yield = RminYield::Onset; // onset: r1 ends a step at each yield onset; inside: points yield inside
   double rmin_yield_tol = BodyParams{}.yield_tol; // inside: re-solve while an elastic fraction moves by more
   double rmin_event_tol = 1e-2;                   // re-solved steps locate their events to this fraction of the step
   PetscInt rmin_max_increments = 100000;
@@ -110,10 +120,10 @@ struct Options {
   std::string lower_die_motion = "mirror"; // its motion's word: mirror, fixed, path, or another motion's kind
   std::string lower_die_kind = "stroke";   // the motion's kind of that word (tool/motion.hpp: mirror is a stroke)
   MotionSpec lower_die_spec;               // and what its options (-lower_die_*) give it
-  std::string model = "auto";              // quarter, half, full, or auto: the quarter where it is exact
+  TubeModel model = TubeModel::Auto;       // quarter, half, full, or auto: the quarter where it is exact
   DieMotion die_motion;                    // the upper die's motion (-die_motion; UpperDie)
-  double die_offset = 0;          // the first pass's upper die off the y axis along the press's x (mm; full model)
-  std::string full_hold = "auto"; // the full model's support: pins, rotation (the rotation hold), auto
+  double die_offset = 0;               // the first pass's upper die off the y axis along the press's x (mm; full model)
+  FullHold full_hold = FullHold::Auto; // the full model's support: pins, rotation (the rotation hold), auto
   // The passes after the first, each after the springback of the one before (-pass2_* to -pass9_*).
   std::vector<PassSpec> more_passes = std::vector<PassSpec>(kMaxPasses - 1);
   std::string side_die = "none"; // side dies pressing along x by the stroke: none, mirror, flat or a profile file
@@ -322,7 +332,7 @@ inline bool QuarterModel(const Options &opt)
   bool mirror = opt.lower_die_motion == "mirror", quarters = true;
   for (int pass = 0; pass < kMaxPasses; ++pass)
     mirror = mirror && PassLowerDie(opt, pass) == "mirror", quarters = quarters && QuarterTurn(opt, pass);
-  return opt.model == "quarter" || (opt.model == "auto" && mirror && !DieOffAxis(opt) && quarters);
+  return opt.model == TubeModel::Quarter || (opt.model == TubeModel::Auto && mirror && !DieOffAxis(opt) && quarters);
 }
 // The whole tube (-model full), or auto where neither the quarter nor the half is exact: the half's plane x = 0
 // is not a symmetry plane of a press turned by an odd number of quarter turns, or by another angle.
@@ -331,7 +341,8 @@ inline bool FullModel(const Options &opt)
   bool turned = false;
   for (int pass = 1; pass < kMaxPasses; ++pass)
     turned = turned || PassQuarters(opt, pass) % 2 != 0 || !QuarterTurn(opt, pass);
-  return opt.model == "full" || (opt.model == "auto" && !QuarterModel(opt) && (turned || DieOffAxis(opt)));
+  return opt.model == TubeModel::Full ||
+         (opt.model == TubeModel::Auto && !QuarterModel(opt) && (turned || DieOffAxis(opt)));
 }
 // A pass (0 the first) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked,
 // or (auto) where the pins would hold the tube's slide against the dies: the first pass with a die off the axis; a
@@ -343,6 +354,6 @@ inline bool HeldByRotation(const Options &opt, int pass)
   for (int before = 0; before < pass; ++before)
     off_axis =
       off_axis || ((PassQuarters(opt, pass) - PassQuarters(opt, before)) % 2 != 0 && !PassMirrored(opt, before));
-  return FullModel(opt) && (opt.full_hold == "rotation" || (opt.full_hold == "auto" && off_axis));
+  return FullModel(opt) && (opt.full_hold == FullHold::Rotation || (opt.full_hold == FullHold::Auto && off_axis));
 }
 } // namespace tf

@@ -3,16 +3,18 @@
 // Check*Options in src/scenes/<scene>.cpp, listed in the scene registry).
 #pragma once
 
-#include <string>
 #include <vector>
 
 namespace tf {
 
+// What the pressure scene ramps (-pressure_control): the pressure, or the inner radial displacement.
+enum class PressureControl { Load, Displacement };
+inline constexpr const char *kPressureControlWords[] = {"load", "displacement"};
 // The pressure scene (-pressure_*).
 struct PressureParams {
-  double p = 50.0;              // final internal pressure (MPa), -pressure_control load
-  std::string control = "load"; // load: ramp the pressure; displacement: ramp the inner radial displacement
-  double u = 0.1;               // final inner radial displacement (mm), -pressure_control displacement
+  double p = 50.0;                                 // final internal pressure (MPa), -pressure_control load
+  PressureControl control = PressureControl::Load; // what is ramped
+  double u = 0.1; // final inner radial displacement (mm), -pressure_control displacement
 };
 
 // The shear scene (-shear_*).
@@ -43,11 +45,14 @@ struct BendingParams {
   std::vector<double> cycle; // outer-fibre strains the strip is then taken to in turn
 };
 
+// The slide scene's tool (-slide_tool): a block on a flat floor, or a quarter ring turned inside a cylinder.
+enum class SlideTool { Flat, Arc };
+inline constexpr const char *kSlideToolWords[] = {"flat", "arc"};
 // The slide scene (-slide_*).
 struct SlideParams {
   double n = 100.0, push = 0.2; // normal force (N/mm, arc: pressure MPa), push (mm)
   double back = 0;              // (flat) push back by this much in a third stage (mm)
-  std::string tool = "flat";    // flat: a block on a floor; arc: a quarter ring turned in a cylinder
+  SlideTool tool = SlideTool::Flat;
 };
 
 } // namespace tf
