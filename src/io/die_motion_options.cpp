@@ -102,20 +102,20 @@ PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &op
   PetscFunctionBeginUser;
   for (size_t k = 0; k < words.size(); ++k) {
     list.push_back(words[k].word.c_str());
-    if (opt.lower_die_motion == words[k].word) choice = (PetscInt)k;
+    if (opt.lower_motion.word == words[k].word) choice = (PetscInt)k;
     for (const std::string &name : FindMotionKind(words[k].kind)->options) read.Note(("-lower_die_" + name).c_str());
   }
   read.Note("-lower_die_motion", help.c_str());
-  opt.lower_die_spec.tool = "the lower die";
+  opt.lower_motion.spec.tool = "the lower die";
   PetscOptionsBegin(comm, "lower_die_", "tubeform: lower die motion", "tubeform");
   OptionsBlock block(PetscOptionsObject);
   PetscCall(PetscOptionsEList("-motion", help.c_str(), "tubeform", list.data(), (PetscInt)list.size(), list[choice],
                               &choice, nullptr));
-  opt.lower_die_motion = words[choice].word, opt.lower_die_kind = words[choice].kind;
+  opt.lower_motion.word = words[choice].word, opt.lower_motion.kind = words[choice].kind;
   if (opt.help)
-    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, opt.lower_die_spec));
+    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, opt.lower_motion.spec));
   else
-    PetscCall(ReadMotion(PetscOptionsObject, opt.lower_die_kind, opt.lower_die_spec));
+    PetscCall(ReadMotion(PetscOptionsObject, opt.lower_motion.kind, opt.lower_motion.spec));
   block.Release();
   PetscOptionsEnd();
   if (!opt.help) PetscCall(RefuseOthers(comm, "lower_die_", words, words[choice]));

@@ -25,7 +25,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
-  bool asked = opt.lower_die != "mirror" || opt.lower_die_motion != "mirror" || opt.model != TubeModel::Auto ||
+  bool asked = opt.lower_die != "mirror" || !LowerDieMoves(opt, "mirror") || opt.model != TubeModel::Auto ||
                !DieMoves(opt, DieMotionKind::Stroke) || opt.side_die != "none" || opt.side_force != 0 ||
                opt.die_offset != 0 || opt.full_hold != FullHold::Auto;
   for (const PassSpec &p : opt.more_passes)
@@ -40,7 +40,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   if (DieMoves(opt, DieMotionKind::Force)) {
     // Force control drives one die; the stroke is its outcome. (The force itself: the force kind's reader.)
     const double force = DieForce(opt);
-    PetscCheck(QuarterModel(opt) || opt.lower_die_motion == "fixed", comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(QuarterModel(opt) || LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: with the half or full model the lower die must stay (-lower_die_motion fixed); a "
                "lower die moving by the upper one's unknown stroke is not available",
                force);
@@ -55,7 +55,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
     opt.lower_die == "mirror" || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
     "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
     opt.stroke_corner_radius, opt.lower_die.c_str());
-  bool mirror = opt.lower_die_motion == "mirror";
+  bool mirror = LowerDieMoves(opt, "mirror");
   for (int pass = 0; pass < kMaxPasses; ++pass) mirror = mirror && PassLowerDie(opt, pass) == "mirror";
   PetscCheck(opt.model != TubeModel::Quarter || mirror, comm, PETSC_ERR_USER_INPUT,
              "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
@@ -90,7 +90,7 @@ PetscErrorCode CheckDiePath(MPI_Comm comm, Options &opt)
   const double y = path.points.back()[1];
   PetscCheck(y < 0, comm, PETSC_ERR_USER_INPUT,
              "-die_path: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", y);
-  PetscCheck(opt.lower_die_motion == "fixed", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
              "-die_path: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion "
              "fixed");
   PetscCheck(opt.stroke_path.empty() && opt.stroke_corner_radius <= 0 && PassCount(opt) == 1 &&
@@ -134,13 +134,13 @@ PetscErrorCode CheckDiePaths(MPI_Comm comm, Options &opt)
 PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 {
   PetscFunctionBeginUser;
-  const bool own = opt.lower_die_motion != "mirror" && opt.lower_die_motion != "fixed";
+  const bool own = !LowerDieMoves(opt, "mirror") && !LowerDieMoves(opt, "fixed");
   PetscCheck(!own || (opt.stroke_path.empty() && opt.unload != Unload::Withdraw && PassCount(opt) == 1 &&
                       opt.stroke_corner_radius <= 0),
              comm, PETSC_ERR_USER_INPUT,
              "-lower_die_motion %s: the lower die follows its motion as the stroke rises, in one pass: not with "
              "-stroke_path, -unload withdraw, -pass2_stroke or -stroke_corner_radius",
-             opt.lower_die_motion.c_str());
+             opt.lower_motion.word.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

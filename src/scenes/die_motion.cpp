@@ -7,7 +7,7 @@
 namespace tf {
 
 namespace {
-// A -lower_die_motion word (its kind and options: opt.lower_die_kind, opt.lower_die_spec, read by the kind,
+// A -lower_die_motion word (its kind and options: LowerDie, read by the kind,
 // io/tool_options.cpp): the upper die's motion that goes with it (U: half the dies' closing either way), and whether
 // the dies close as the closed forms of their reach say (CheckDieReach). Any other word: the upper die travels U,
 // the lower one moves as its motion says.
@@ -25,16 +25,8 @@ const LowerMotion kOwnMotion{"", {0.0, -1.0}, false};
 const LowerMotion &LowerMotionOf(const Options &o)
 {
   for (const LowerMotion &m : kLowerMotions)
-    if (o.lower_die_motion == m.word) return m;
+    if (LowerDieMoves(o, m.word)) return m;
   return kOwnMotion;
-}
-
-// The lower die's motion spec: its options' along its direction, up by the stroke.
-MotionSpec LowerSpec(const Options &o)
-{
-  MotionSpec spec = o.lower_die_spec;
-  spec.direction = {0.0, 1.0};
-  return spec;
 }
 } // namespace
 
@@ -50,7 +42,8 @@ PetscErrorCode SetMotion(MPI_Comm comm, const char *option, const std::string &k
 PetscErrorCode SetLowerMotion(MPI_Comm comm, const Options &o, Tool &upper, Tool &lower)
 {
   PetscFunctionBeginUser;
-  PetscCall(SetMotion(comm, "-lower_die_motion", o.lower_die_kind, LowerSpec(o), lower));
+  const LowerDieSpec die = LowerDie(o);
+  PetscCall(SetMotion(comm, "-lower_die_motion", die.kind, die.spec, lower));
   MotionSpec spec;
   spec.direction = LowerMotionOf(o).upper;
   PetscCall(SetMotion(comm, "-lower_die_motion", "stroke", spec, upper));
@@ -60,7 +53,8 @@ PetscErrorCode SetLowerMotion(MPI_Comm comm, const Options &o, Tool &upper, Tool
 MotionHandle LowerDieMotion(const Options &o)
 {
   MotionHandle lower;
-  if (!MakeMotion(o.lower_die_kind, LowerSpec(o), lower).empty()) lower = StrokeMotion({0.0, 1.0});
+  const LowerDieSpec die = LowerDie(o);
+  if (!MakeMotion(die.kind, die.spec, lower).empty()) lower = StrokeMotion({0.0, 1.0});
   return lower;
 }
 
@@ -75,7 +69,8 @@ std::vector<double> PressKinks(const Options &opt)
   const DieMotion die = UpperDie(opt);
   if (die.kind == DieMotionKind::Path && MakeMotion(DieMotionName(die.kind), die.spec, upper).empty())
     kinks = upper->Kinks();
-  if (!QuarterModel(opt) && MakeMotion(opt.lower_die_kind, LowerSpec(opt), lower).empty())
+  const LowerDieSpec lower_die = LowerDie(opt);
+  if (!QuarterModel(opt) && MakeMotion(lower_die.kind, lower_die.spec, lower).empty())
     for (double s : lower->Kinks()) kinks.push_back(s);
   return kinks;
 }

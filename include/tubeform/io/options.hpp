@@ -68,6 +68,15 @@ struct DieMotion {
 constexpr const char *kDieMotionWords[] = {"stroke", "path", "force"};
 inline const char *DieMotionName(DieMotionKind kind) { return kDieMotionWords[(int)kind]; }
 
+// The lower die's motion (-lower_die_motion; docs/dies.md): its word (mirror, fixed, path, or a kind registered after
+// the built-in ones: io/die_motion_options.cpp), the kind of the motion registry that word names (mirror: a stroke),
+// and what its options (-lower_die_*) give it, read by the kind. The scenes read it through LowerDie.
+struct LowerDieSpec {
+  std::string word = "mirror";
+  std::string kind = "stroke";
+  MotionSpec spec;
+};
+
 struct Options {
   std::string scene = "pressure"; // a name of the scene registry (scenes/registry.hpp)
   // Geometry and mesh
@@ -114,14 +123,12 @@ struct Options {
   std::vector<double> stroke_path;                       // tool scenes: the die's strokes in turn (empty: 0 to -stroke)
   // Tools, contact, friction (docs/dies.md; docs/theory.md, section 6)
   double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
-  std::string die_profile;          // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
-  double die_angle = 90;            // degrees between the V-die's flanks
-  std::string lower_die = "mirror"; // mirror, flat or a profile file drawn as an upper die
-  std::string lower_die_motion = "mirror"; // its motion's word: mirror, fixed, path, or another motion's kind
-  std::string lower_die_kind = "stroke";   // the motion's kind of that word (tool/motion.hpp: mirror is a stroke)
-  MotionSpec lower_die_spec;               // and what its options (-lower_die_*) give it
-  TubeModel model = TubeModel::Auto;       // quarter, half, full, or auto: the quarter where it is exact
-  DieMotion die_motion;                    // the upper die's motion (-die_motion; UpperDie)
+  std::string die_profile;             // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
+  double die_angle = 90;               // degrees between the V-die's flanks
+  std::string lower_die = "mirror";    // mirror, flat or a profile file drawn as an upper die
+  LowerDieSpec lower_motion;           // its motion (-lower_die_motion; LowerDie)
+  TubeModel model = TubeModel::Auto;   // quarter, half, full, or auto: the quarter where it is exact
+  DieMotion die_motion;                // the upper die's motion (-die_motion; UpperDie)
   double die_offset = 0;               // the first pass's upper die off the y axis along the press's x (mm; full model)
   FullHold full_hold = FullHold::Auto; // the full model's support: pins, rotation (the rotation hold), auto
   // The passes after the first, each after the springback of the one before (-pass2_* to -pass9_*).
@@ -247,6 +254,15 @@ inline DieMotion UpperDie(const Options &opt)
   die.spec.reach = opt.tube_ro;
   return die;
 }
+// The lower die's motion as the scenes take it: its word, kind and spec, the spec moving up (y) by the stroke.
+inline LowerDieSpec LowerDie(const Options &opt)
+{
+  LowerDieSpec die = opt.lower_motion;
+  die.spec.direction = {0.0, 1.0};
+  return die;
+}
+// Its word is `word` (mirror, fixed, ...).
+inline bool LowerDieMoves(const Options &opt, const char *word) { return opt.lower_motion.word == word; }
 // The upper die's kind is `kind`.
 inline bool DieMoves(const Options &opt, DieMotionKind kind) { return opt.die_motion.kind == kind; }
 // Its punch load under force control (N/mm; 0: by the stroke).
@@ -321,7 +337,7 @@ inline const std::string &PassLowerDie(const Options &opt, int pass)
 // Pass `pass`'s lower die mirrors the upper one in shape and motion.
 inline bool PassMirrored(const Options &opt, int pass)
 {
-  return PassLowerDie(opt, pass) == "mirror" && opt.lower_die_motion == "mirror";
+  return PassLowerDie(opt, pass) == "mirror" && LowerDieMoves(opt, "mirror");
 }
 // The tool scenes model a quarter of the tube where that is exact (or asked for): -model quarter, or auto
 // with lower dies that mirror the upper ones in shape and motion in every pass (each turned by quarter turns);
@@ -329,7 +345,7 @@ inline bool PassMirrored(const Options &opt, int pass)
 // refused after the model is chosen.)
 inline bool QuarterModel(const Options &opt)
 {
-  bool mirror = opt.lower_die_motion == "mirror", quarters = true;
+  bool mirror = LowerDieMoves(opt, "mirror"), quarters = true;
   for (int pass = 0; pass < kMaxPasses; ++pass)
     mirror = mirror && PassLowerDie(opt, pass) == "mirror", quarters = quarters && QuarterTurn(opt, pass);
   return opt.model == TubeModel::Quarter || (opt.model == TubeModel::Auto && mirror && !DieOffAxis(opt) && quarters);

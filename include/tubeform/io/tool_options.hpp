@@ -11,7 +11,7 @@ namespace tf {
 // Between PetscOptionsBegin and PetscOptionsEnd (it needs their PetscOptionsObject).
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt);
 // The lower die's motion, its own block under the options prefix lower_die_ (-lower_die_motion: a word naming a
-// kind of tool/motion.hpp; that kind's options, -lower_die_*, read by the kind): opt.lower_die_motion, _kind, _spec.
+// kind of tool/motion.hpp; that kind's options, -lower_die_*, read by the kind): opt.lower_motion (LowerDieSpec).
 // An option of another of its words' kinds given is refused, naming it.
 PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
 // The upper die's motion, its own block under the options prefix die_ (-die_motion: stroke, path or force, each a kind
