@@ -8,7 +8,8 @@ links to it, and docs/guide.md points to it. So:
     examples of what is refused;
   - the guide holds no second table of every option, and links to each of
     the reference's sections (by its anchor);
-  - docs/guide.md and docs/README.md link to the reference.
+  - docs/guide.md and docs/README.md link to the reference;
+  - no section of the reference twice (an anchor would reach only the first).
 Exact checks on text: nothing here has a tolerance.
 """
 import os
@@ -41,6 +42,8 @@ k.check(len(named & ref) > 50, f"the guide names {len(named & ref)} of the optio
 tables = [line[:60] for line in guide.splitlines() if line.startswith("| `-")]
 k.check(not tables, f"the guide has no table of options, the reference is that ({len(tables)} rows: {tables[:3]})")
 sections = re.findall(r"^## (.+)$", reference, re.M)
+twice = sorted({x for x in sections if sections.count(x) > 1})
+k.check(not twice, f"each of the reference's sections once (twice: {twice})")
 anchors = [re.sub(r"[^a-z0-9_ -]", "", s.lower()).replace(" ", "-") for s in sections]
 missing = [a for a in anchors if f"options-reference.md#{a})" not in guide]
 k.check(sections and not missing, f"the guide links each of the reference's {len(sections)} sections (missing: {missing})")

@@ -33,6 +33,9 @@ def options(exe):
             scenes.append((m.group("name"), m.group("what"), m.group("reads").split()))
             continue
         m = re.match(r"^tubeform: (.*):$", line)
+        if m and m.group(1) == "scenes":  # (the registry's lines follow: SCENE)
+            current = None
+            continue
         if m:
             current = (m.group(1), [])
             sections.append(current)
