@@ -88,9 +88,23 @@ def staircase(U, P, window=0.2, start=0.2):
     return worst
 
 
-# The single-rank runs two at a time, then the 2-rank one.
+# The single-rank runs two at a time, the longest first (the thick wall's and the cells' below among them), then
+# the 2-rank ones.
 ONE = {"default_np1": ("default", []), "default_u100": ("default", ["-unload_increments", 100]), "fast": ("fast", [])}
-run_all(tf, mpirun, [case(p, e) + ["-output", out(f"preset_{name}.h5")] for name, (p, e) in ONE.items()], timeout=600)
+THICK = ["-tube_ro", 15, "-tube_t", 2.5, "-friction_mu", 0.2, "-stroke", 3, "-error_estimate", 0]
+TUBES = [(preset, s_max, floor, ro, t) for preset, s_max, floor in (("fast", 0.044, 2), ("default", 0.022, 4))
+         for ro, t in ((17.5, 1.5), (20.0, 2.0), (15.0, 2.5))]
+
+
+def wall_file(preset, ro, t):
+    return out(f"preset_wall_{preset}_{ro:g}_{t:g}.h5")
+
+
+single = run_all(tf, mpirun, [case("default", THICK + ["-output", out("preset_default_thick.h5")])] +
+                 [case(p, e) + ["-output", out(f"preset_{name}.h5")] for name, (p, e) in ONE.items()] +
+                 [case(preset, ["-tube_ro", ro, "-tube_t", t, "-stroke", 0.05, "-output_stroke", 0,
+                                "-error_estimate", 0, "-output", wall_file(preset, ro, t)])
+                  for preset, _, _, ro, t in TUBES], timeout=600)
 # The default preset's run itself on 2 ranks (its estimate off: with it, the run takes one rank and the estimate's
 # companions the other); the fast preset's with its estimate, beside it.
 run(tf, mpirun, 2, case("default", ["-error_estimate", 0]) + ["-output", out("preset_default_np2.h5")], timeout=600)
@@ -149,9 +163,7 @@ k.check(d < 0.005, f"C/t after springback, 10 vs 100 unloading increments: {A['s
 # On 1 and 2 ranks alike, with the bounds of the default case above (its
 # qm6bar cells: measured 1.8e-12, 1.2e-13, 1.6e-12).
 f = out("preset_default_thick.h5")
-for np_, path in ((1, f), (2, out("preset_default_thick_np2.h5"))):
-    run(tf, mpirun, np_, case("default", ["-tube_ro", 15, "-tube_t", 2.5, "-friction_mu", 0.2, "-stroke", 3,
-                                          "-error_estimate", 0, "-output", path]), timeout=600)
+run(tf, mpirun, 2, case("default", THICK + ["-output", out("preset_default_thick_np2.h5")]), timeout=600)
 same_on_ranks("default preset, thick wall 15/2.5 (qm6bar)", read(f), read(out("preset_default_thick_np2.h5")))
 with h5py.File(f, "r") as h:
     H = h["/history"]
@@ -166,18 +178,14 @@ k.check(r <= 0.005 * (1 + 1e-12) and unsettled == 0 and inconsistent == 0,
 # preset's floor, and enough that a cell spans at most its share of the bending
 # strain t/Ro. Counted on the written mesh: the nodes on the symmetry line y = 0.
 # The element follows the count (-element auto), as the run reports it.
-for preset, s_max, floor in (("fast", 0.044, 2), ("default", 0.022, 4)):
-    for ro, t in ((17.5, 1.5), (20.0, 2.0), (15.0, 2.5)):
-        f = out(f"preset_wall_{preset}_{ro:g}_{t:g}.h5")
-        p = run(tf, mpirun, 1, case(preset, ["-tube_ro", ro, "-tube_t", t, "-stroke", 0.05, "-output_stroke", 0,
-                                             "-error_estimate", 0, "-output", f]), timeout=120)
-        with h5py.File(f, "r") as h:
-            xy = h["/geometry/vertices"][:]
-        across = int(np.sum(np.abs(xy[:, 1]) < 1e-9 * ro))
-        want = max(floor, int(np.ceil(t / (ro * s_max) - 1e-9)))
-        element = "qm6bar" if want >= 5 else "qm6"  # -element auto: qm6bar from 5 cells through the wall on
-        said = re.search(r"mesh \d+ cells .*, (\w+) elements", p.stdout)
-        k.check(across == want + 1 and said and said.group(1) == element,
-                f"{preset} preset, tube {ro:g}/{t:g}: {across - 1} cells through the wall, "
-                f"{said.group(1) if said else '?'} elements; the rules give {want}, {element}")
+for (preset, s_max, floor, ro, t), p in zip(TUBES, single[1 + len(ONE):]):
+    with h5py.File(wall_file(preset, ro, t), "r") as h:
+        xy = h["/geometry/vertices"][:]
+    across = int(np.sum(np.abs(xy[:, 1]) < 1e-9 * ro))
+    want = max(floor, int(np.ceil(t / (ro * s_max) - 1e-9)))
+    element = "qm6bar" if want >= 5 else "qm6"  # -element auto: qm6bar from 5 cells through the wall on
+    said = re.search(r"mesh \d+ cells .*, (\w+) elements", p.stdout)
+    k.check(across == want + 1 and said and said.group(1) == element,
+            f"{preset} preset, tube {ro:g}/{t:g}: {across - 1} cells through the wall, "
+            f"{said.group(1) if said else '?'} elements; the rules give {want}, {element}")
 k.done()

@@ -25,6 +25,17 @@ class Strip:
         n = xi / np.maximum(q, 1e-300)[:, None]
         return trial - 3 * self.g * dp[:, None] * n, a + c * dp[:, None] * n, p + dp
 
+    def fibre_syy(self, state, dxx, dyy, c, h):
+        """sigma_yy of fibre_update's result alone, component by component (the secant steps need no more)."""
+        s, a, p = state
+        d, tr = self.d, dxx + dyy
+        t = [s[:, i] + (dxx * d[i, 0] + dyy * d[i, 1]) - s[:, i] * tr for i in range(3)]
+        mean = (t[0] + t[1] + t[2]) / 3
+        xi = [t[i] - mean - a[:, i] for i in range(3)]
+        q = np.sqrt(1.5 * (xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]))
+        dp = np.where(q > self.sy0 + h * p, (q - self.sy0 - h * p) / (3 * self.g + c + h), 0.0)
+        return t[1] - 3 * self.g * dp * (xi[1] / np.maximum(q, 1e-300))
+
     def moments(self, strokes, c, h, sub=4, nf=4000, y_fibres=()):
         """The moment at the outer-fibre strains `strokes` (c: Prager modulus, h: isotropic slope, MPa), `sub`
         substeps between them, `nf` fibres; with `y_fibres` (initial y of fibres of a 1 mm strip), also their
@@ -36,13 +47,13 @@ class Strip:
             for e0, e1 in zip(np.linspace(a, b, sub + 1)[:-1], np.linspace(a, b, sub + 1)[1:]):
                 dxx = np.log1p(2 * e1 * y0) - np.log1p(2 * e0 * y0)
                 ya, yb = -0.5 * dxx, -0.4 * dxx  # secant on d_yy for sigma_yy = 0, fibre by fibre
-                fa, fb = self.fibre_update(state, dxx, ya, c, h)[0][:, 1], self.fibre_update(state, dxx, yb, c, h)[0][:, 1]
+                fa, fb = self.fibre_syy(state, dxx, ya, c, h), self.fibre_syy(state, dxx, yb, c, h)
                 for _ in range(40):
                     move = (np.abs(fb) > 1e-11) & (fb != fa)
                     if not move.any():
                         break
                     ya, fa, yb = yb, fb, np.where(move, yb - fb * (yb - ya) / np.where(move, fb - fa, 1), yb)
-                    fb = self.fibre_update(state, dxx, yb, c, h)[0][:, 1]
+                    fb = self.fibre_syy(state, dxx, yb, c, h)
                 state, eyy = self.fibre_update(state, dxx, yb, c, h), eyy + yb
             # the current thickness: each fibre's share stretched by exp(e_yy), lever arms from the middle
             dy = np.exp(eyy[:nf]) / nf
