@@ -166,7 +166,7 @@ PetscErrorCode CheckPassesAndHolds(MPI_Comm comm, Options &opt)
              "(or auto)",
              off_axis);
   PetscCheck(opt.full_hold == FullHold::Auto || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
-             "-full_hold %s: only the full model is held so (-model full)", kFullHoldWords[(int)opt.full_hold]);
+             "-full_hold %s: only the full model is held so (-model full)", WordOf(kFullHoldWords, opt.full_hold));
   bool held = false;
   for (int pass = 0; pass < kMaxPasses; ++pass) held = held || HeldByRotation(opt, pass);
   PetscCheck(

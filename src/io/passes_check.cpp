@@ -36,7 +36,7 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
              pass == 1 ? "one pass" : ("the " + PassOrdinal(pass - 1) + " pass the last").c_str());
   PetscCheck(p.stroke == 0 || opt.unload == Unload::Reverse, comm, PETSC_ERR_USER_INPUT,
              "%s %g: a %s pass follows the paper's springback; use -unload reverse (not %s)", stroke.c_str(), p.stroke,
-             ordinal.c_str(), kUnloadWords[static_cast<int>(opt.unload)]);
+             ordinal.c_str(), WordOf(kUnloadWords, opt.unload));
   PetscCheck(p.stroke == 0 || pass == 1 || LaterPass(opt, pass - 1).stroke > 0, comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", stroke.c_str(), p.stroke, ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());

@@ -18,6 +18,13 @@
 
 namespace tf {
 
+// The word of an option's enum value among its words (the enumerators in their words' order: kUnloadWords, ...).
+template <class E, size_t N>
+constexpr const char *WordOf(const char *const (&words)[N], E value)
+{
+  return words[static_cast<size_t>(value)];
+}
+
 // Inertia: none, always, or switched on at the first increment whose friction
 // iterations do not settle in quasi-static steps (docs/theory.md, "Inertia").
 enum class Dynamics { Quasistatic, Implicit, Auto };
@@ -66,7 +73,7 @@ struct DieMotion {
 };
 // The kinds' words, in DieMotionKind's order.
 constexpr const char *kDieMotionWords[] = {"stroke", "path", "force"};
-inline const char *DieMotionName(DieMotionKind kind) { return kDieMotionWords[(int)kind]; }
+inline const char *DieMotionName(DieMotionKind kind) { return WordOf(kDieMotionWords, kind); }
 
 // The lower die's motion (-lower_die_motion; docs/dies.md): its word (mirror, fixed, path, or a kind registered after
 // the built-in ones: io/die_motion_options.cpp), the kind of the motion registry that word names (mirror: a stroke),
