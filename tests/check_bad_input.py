@@ -63,6 +63,8 @@ cases = [
     (["-increments", "0"], "-increments"),
     (["-rmin_stall_increments", "5"], "-rmin_stall_increments"),
     (["-dynamics", "explicit"], "-dynamics"),
+    (["-factorization", "lu"], "-factorization"),
+    (["-error_estimate_factorization", "petsc"], "-error_estimate_factorization"),
     (["-punch_speed", "0"], "-punch_speed"),
     (["-dynamics_time", "-1"], "-dynamics_time"),
     (["-material_density", "0"], "-material_density"),
@@ -264,7 +266,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")], ["-wall_thickness", "1.65"],
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 146 and len(selected) == 9, f"{len(cases)} cases on 1 rank (146), {len(selected)} on 2 (9)")
+k.check(len(cases) == 148 and len(selected) == 9, f"{len(cases)} cases on 1 rank (148), {len(selected)} on 2 (9)")
 
 
 def attempt(np_, extra):

@@ -13,8 +13,15 @@
 // singular only to round-off: MUMPS finds no null pivot without ICNTL(24).)
 // The path is chosen by the `ndofs` SetupLinearSolver is given, not by the
 // matrix's size, so a small matrix takes the path of a large system.
+// KLU (-factorization klu, every rank factoring the whole matrix): the same
+// singular matrix stops its solve with an error that DescribeSolveError names
+// as a singular stiffness, and on the 1D Laplacian it is made from (the last
+// diagonal 2, its couplings kept) its solution of A x = 1 is the closed form
+// x_i = i (n + 1 - i) / 2 (i from 1) to round-off (1e-12 relative: n is tens).
 #include <petscksp.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "check.hpp"
@@ -26,7 +33,8 @@ using namespace tf;
 
 static const PetscInt kRowsPerRank = 6;
 
-static PetscErrorCode SingularMatrix(MPI_Comm comm, Mat &a)
+// The matrix above (`singular`), or the 1D Laplacian it is made from.
+static PetscErrorCode Laplacian(MPI_Comm comm, bool singular, Mat &a)
 {
   PetscInt lo, hi, n;
   PetscFunctionBeginUser;
@@ -35,13 +43,13 @@ static PetscErrorCode SingularMatrix(MPI_Comm comm, Mat &a)
   PetscCall(MatGetOwnershipRange(a, &lo, &hi));
   PetscCall(MatGetSize(a, &n, nullptr));
   for (PetscInt i = lo; i < hi; ++i) {
-    if (i == n - 1) {
+    if (singular && i == n - 1) {
       PetscCall(MatSetValue(a, i, i, 0.0, INSERT_VALUES)); // the null pivot
       continue;
     }
     PetscCall(MatSetValue(a, i, i, 2.0, INSERT_VALUES));
     if (i > 0) PetscCall(MatSetValue(a, i, i - 1, -1.0, INSERT_VALUES));
-    if (i + 1 < n - 1) PetscCall(MatSetValue(a, i, i + 1, -1.0, INSERT_VALUES));
+    if (i + 1 < (singular ? n - 1 : n)) PetscCall(MatSetValue(a, i, i + 1, -1.0, INSERT_VALUES));
   }
   PetscCall(MatAssemblyBegin(a, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(a, MAT_FINAL_ASSEMBLY));
@@ -49,7 +57,8 @@ static PetscErrorCode SingularMatrix(MPI_Comm comm, Mat &a)
 }
 
 // One solve on the path SetupLinearSolver takes for `ndofs`; `why` is empty when it succeeded.
-static PetscErrorCode Solve(Mat a, PetscInt ndofs, std::string &why, bool &redundant)
+static PetscErrorCode Solve(Mat a, PetscInt ndofs, std::string &why, bool &redundant,
+                            Factorization factorization = Factorization::Mumps)
 {
   KSP ksp;
   Vec x, b;
@@ -57,7 +66,7 @@ static PetscErrorCode Solve(Mat a, PetscInt ndofs, std::string &why, bool &redun
   std::string what;
   PetscFunctionBeginUser;
   PetscCall(KSPCreate(PetscObjectComm((PetscObject)a), &ksp));
-  PetscCall(SetupLinearSolver(ksp, ndofs, what, redundant));
+  PetscCall(SetupLinearSolver(ksp, ndofs, factorization, what, redundant));
   PetscCall(KSPSetOperators(ksp, a, a));
   PetscCall(MatCreateVecs(a, &x, &b));
   PetscCall(VecSet(b, 1.0));
@@ -105,14 +114,62 @@ static PetscErrorCode CheckPath(Mat a, PetscInt ndofs)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// KLU on the singular matrix (an error DescribeSolveError names) and on the regular one (the closed form).
+static PetscErrorCode CheckKlu(Mat a, Mat regular)
+{
+  KSP ksp;
+  Vec x, b;
+  std::string what, why;
+  bool redundant;
+  PetscInt lo, hi, n;
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(PetscObjectComm((PetscObject)a), &rank));
+  PetscCall(MatGetSize(a, &n, nullptr));
+  PetscCall(KSPCreate(PetscObjectComm((PetscObject)a), &ksp));
+  PetscCall(SetupLinearSolver(ksp, kDistributedDofs, Factorization::Klu, what, redundant));
+  if (!rank) std::printf("klu: %s\n", what.c_str());
+  CHECK(what.find("KLU") != std::string::npos);
+  PetscCall(KSPSetOperators(ksp, a, a));
+  PetscCall(MatCreateVecs(a, &x, &b));
+  PetscCall(VecSet(b, 1.0));
+  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
+  const PetscErrorCode failed = KSPSolve(ksp, b, x);
+  PetscCall(PetscPopErrorHandler());
+  PetscCall(DescribeSolveError(ksp, failed, why));
+  if (!rank) std::printf("  singular: error %d: %s\n", (int)failed, why.c_str());
+  CHECK(failed != 0 && why.find("the stiffness is singular") != std::string::npos);
+  PetscCall(MatGetOwnershipRange(regular, &lo, &hi));
+  PetscCall(KSPSetOperators(ksp, regular, regular));
+  PetscCall(KSPSolve(ksp, b, x));
+  const PetscScalar *xa;
+  double worst = 0;
+  PetscCall(VecGetArrayRead(x, &xa));
+  for (PetscInt i = lo; i < hi; ++i) {
+    const double exact = 0.5 * (double)(i + 1) * (double)(n - i);
+    worst = std::max(worst, std::abs(xa[i - lo] - exact) / exact);
+  }
+  PetscCall(VecRestoreArrayRead(x, &xa));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &worst, 1, MPI_DOUBLE, MPI_MAX, PetscObjectComm((PetscObject)a)));
+  if (!rank) std::printf("  regular: largest relative difference from the closed form %.2e\n", worst);
+  CHECK(worst < 1e-12);
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&b));
+  PetscCall(KSPDestroy(&ksp));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
-  Mat a;
+  Mat a, regular;
   PetscCall(PetscInitialize(&argc, &argv, nullptr, nullptr));
-  PetscCall(SingularMatrix(PETSC_COMM_WORLD, a));
+  PetscCall(Laplacian(PETSC_COMM_WORLD, true, a));
+  PetscCall(Laplacian(PETSC_COMM_WORLD, false, regular));
   PetscCall(CheckPath(a, kDistributedDofs));     // every rank factors the whole matrix
   PetscCall(CheckPath(a, kDistributedDofs + 1)); // distributed on several ranks (on one: redundant again)
+  PetscCall(CheckKlu(a, regular));
   PetscCall(MatDestroy(&a));
+  PetscCall(MatDestroy(&regular));
   const int status = ReportChecks("solve_failure");
   PetscCall(PetscFinalize());
   return status;

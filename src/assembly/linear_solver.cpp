@@ -53,10 +53,9 @@ PetscErrorCode Describe(KSP ksp, std::string &solver, bool &redundant)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The redundant factorization (every rank factors the whole matrix) or the
-// distributed one, then the options; `defaults`: kMumpsDefaults where the user
-// gave no value.
-PetscErrorCode Configure(KSP ksp, bool distributed, bool defaults)
+// The redundant factorization (every rank factors the whole matrix, with `factorization`) or the distributed one
+// (MUMPS), then the options; `defaults`: kMumpsDefaults where the user gave no value and MUMPS factors.
+PetscErrorCode Configure(KSP ksp, bool distributed, Factorization factorization, bool defaults)
 {
   PC pc;
   PetscBool user_pc;
@@ -76,8 +75,9 @@ PetscErrorCode Configure(KSP ksp, bool distributed, bool defaults)
     PetscCall(KSPSetType(inner, KSPPREONLY));
     PetscCall(KSPGetPC(inner, &inner_pc));
     PetscCall(PCSetType(inner_pc, PCLU));
-    PetscCall(PCFactorSetMatSolverType(inner_pc, MATSOLVERMUMPS));
-    if (!user_pc && defaults)
+    const bool mumps = factorization == Factorization::Mumps;
+    PetscCall(PCFactorSetMatSolverType(inner_pc, mumps ? MATSOLVERMUMPS : MATSOLVERKLU));
+    if (!user_pc && defaults && mumps)
       for (const auto &d : kMumpsDefaults) {
         PetscBool set;
         PetscCall(PetscOptionsHasName(nullptr, nullptr, d.option, &set));
@@ -103,7 +103,8 @@ bool Distributed(PetscMPIInt size, PetscInt ndofs) { return size > 1 && ndofs > 
 
 } // namespace
 
-PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what, bool &redundant)
+PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, Factorization factorization, std::string &what,
+                                 bool &redundant)
 {
   MPI_Comm comm;
   PetscMPIInt size;
@@ -111,7 +112,7 @@ PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what, boo
   PetscFunctionBeginUser;
   PetscCall(PetscObjectGetComm((PetscObject)ksp, &comm));
   PetscCallMPI(MPI_Comm_size(comm, &size));
-  PetscCall(Configure(ksp, Distributed(size, ndofs), true));
+  PetscCall(Configure(ksp, Distributed(size, ndofs), factorization, true));
 
   std::string solver;
   PetscCall(Describe(ksp, solver, redundant));
@@ -132,7 +133,7 @@ PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what, boo
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ReadFactorizationOptions(MPI_Comm comm, PetscInt ndofs, bool other_path)
+PetscErrorCode ReadFactorizationOptions(MPI_Comm comm, PetscInt ndofs, Factorization factorization, bool other_path)
 {
   PetscMPIInt size, rank;
   Mat a = nullptr;
@@ -149,7 +150,7 @@ PetscErrorCode ReadFactorizationOptions(MPI_Comm comm, PetscInt ndofs, bool othe
   PetscCall(MatAssemblyBegin(a, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(a, MAT_FINAL_ASSEMBLY));
   PetscCall(KSPCreate(comm, &ksp));
-  PetscErrorCode ierr = Configure(ksp, Distributed(size, ndofs) != other_path, !other_path);
+  PetscErrorCode ierr = Configure(ksp, Distributed(size, ndofs) != other_path, factorization, !other_path);
   if (!ierr) ierr = KSPSetOperators(ksp, a, a);
   if (!ierr) ierr = KSPSetUp(ksp);
   if (!ierr) ierr = KSPSetUpOnBlocks(ksp); // a redundant PC's inner solver factors here

@@ -214,7 +214,13 @@ PetscErrorCode System::FactorAndSolve(const std::vector<PetscInt> &rows, const s
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::solve, 0, 0, 0, 0));
   PetscCall(KSPSetOperators(ksp_, k_, k_));
-  PetscCall(KSPSolve(ksp_, rhs_, sol_));
+  const PetscErrorCode solved = KSPSolve(ksp_, rhs_, sol_);
+  if (solved) {
+    std::string why;
+    PetscCall(DescribeSolveError(ksp_, solved, why));
+    PetscCheck(why.empty(), mesh_->comm, PETSC_ERR_NOT_CONVERGED, "%s", why.c_str());
+    PetscCall(solved);
+  }
   PetscCall(KSPGetConvergedReason(ksp_, &reason));
   if (reason < 0) {
     std::string why;

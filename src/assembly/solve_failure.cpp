@@ -79,4 +79,20 @@ PetscErrorCode DescribeSolveFailure(KSP ksp, std::string &why)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode DescribeSolveError(KSP ksp, PetscErrorCode code, std::string &why)
+{
+  Mat factor;
+  bool mumps;
+  MatSolverType type = nullptr;
+  PetscFunctionBeginUser;
+  why.clear();
+  if (code != PETSC_ERR_LIB) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(FactoredMatrix(ksp, factor, mumps));
+  if (factor) PetscCall(MatFactorGetSolverType(factor, &type));
+  if (type && std::string(type) == MATSOLVERKLU)
+    why = "the stiffness is singular (KLU found no usable pivot): a rigid-body motion left free (check the scene's "
+          "supports) or an element without stiffness";
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace tf

@@ -29,7 +29,7 @@ System::~System()
   (void)KSPDestroy(&ksp_);
 }
 
-PetscErrorCode System::Setup(const Mesh &mesh)
+PetscErrorCode System::Setup(const Mesh &mesh, Factorization factorization)
 {
   PetscFunctionBeginUser;
   mesh_ = &mesh;
@@ -52,10 +52,10 @@ PetscErrorCode System::Setup(const Mesh &mesh)
   PetscCall(DMCreateGlobalVector(mesh.dm, &reactions_global_));
   PetscCall(PetscObjectSetName((PetscObject)sol_, "displacement"));
 
-  // MUMPS LU, redundant or distributed by the size of the system; options may override.
+  // LU, redundant or distributed (MUMPS) by the size of the system; options may override.
   PetscCall(VecGetSize(rhs_, &ndofs_));
   PetscCall(KSPCreate(mesh.comm, &ksp_));
-  PetscCall(SetupLinearSolver(ksp_, ndofs_, solver_, redundant_));
+  PetscCall(SetupLinearSolver(ksp_, ndofs_, factorization, solver_, redundant_));
 
   has_frame_.assign(mesh.num_nodes, 0);
   cos_.assign(mesh.num_nodes, 1.0);

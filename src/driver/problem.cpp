@@ -130,7 +130,7 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
   // 2. Partition and distribute; the global system, the body, inertia.
   PetscCall(mesh_.Create(comm, serial, scene_->BoundarySets()));
   PetscCall(PetscLogEventEnd(Log::mesh, 0, 0, 0, 0));
-  PetscCall(system_.Setup(mesh_));
+  PetscCall(system_.Setup(mesh_, opt_.factorization));
   if ((size_ > 1 || opt_.monitor) && !quiet_)
     PetscCall(PetscPrintf(comm_, "tubeform: linear solver: %s\n", system_.solver().c_str()));
   PetscCall(body_.Setup(mesh_, MakeBodyParams(opt_)));

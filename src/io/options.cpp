@@ -200,7 +200,7 @@ PetscErrorCode ReadIncrements(PetscOptionItems *PetscOptionsObject, OptionReader
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Inside the driver's block: inertia, the equilibrium iterations and the kinematics they choose.
+// Inside the driver's block: inertia, the equilibrium iterations and the kinematics they choose; the factorization.
 PetscErrorCode ReadDynamics(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
@@ -209,6 +209,10 @@ PetscErrorCode ReadDynamics(PetscOptionItems *PetscOptionsObject, OptionReader &
                        "(quasi-static until an increment's friction iterations do not settle, implicit from "
                        "then on)",
                        kDynamicsWords, opt.dynamics));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-factorization",
+                       "The LU of a system every rank factors whole (one rank, or up to 20,000 dofs): mumps, or klu "
+                       "(cheaper per call up to a few thousand dofs; docs/performance.md, \"Factorization\")",
+                       kFactorizationWords, opt.factorization));
   PetscCall(read.Real(PetscOptionsObject, "-dynamics_time",
                       "Duration (s) of the load path lambda 0 -> 1 with -dynamics implicit (scenes without tools)",
                       opt.dynamics_time));
@@ -321,6 +325,10 @@ PetscErrorCode ReadOutput(PetscOptionItems *PetscOptionsObject, OptionReader &re
                       "Estimate the error of the load and C/t (tool scenes), the mesh's part and the increments', "
                       "from two companion runs after the main run (docs/accuracy.md, \"The error estimate\")",
                       opt.error_estimate));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-error_estimate_factorization",
+                       "The companion runs' LU (as -factorization): klu, cheaper per call on their few hundred dofs, "
+                       "or mumps",
+                       kFactorizationWords, opt.estimate_factorization));
   PetscCall(read.Real(PetscOptionsObject, "-target_load",
                       "Accuracy demanded of the load (relative; 0: none): where the estimate passes it, the run "
                       "goes on at a finer level (docs/accuracy.md, \"Accuracy on demand\")",

@@ -20,15 +20,22 @@
 
 namespace tf {
 
+// The factorization of a system every rank factors whole (PCREDUNDANT): MUMPS, as the design says, or KLU
+// (SuiteSparse, through PETSc), which pivots as MUMPS does and, at the few hundred to few thousand dofs of a tube
+// quarter, costs less per call (docs/performance.md, "Factorization"). The distributed one is always MUMPS.
+enum class Factorization { Mumps, Klu };
+
 // Above this many dofs, on more than one rank, the factorization is
 // distributed (measured crossover on 2 ranks: docs/performance.md, "Solver").
 constexpr PetscInt kDistributedDofs = 20000;
 
-// Collective: KSP preonly with MUMPS LU for a system of `ndofs` global dofs on
+// Collective: KSP preonly with an LU factorization (`factorization` where every
+// rank factors the whole matrix, else MUMPS) for a system of `ndofs` global dofs on
 // the KSP's communicator, then KSPSetFromOptions. `what` receives one line
 // saying which factorization was chosen and why; `redundant` whether every
 // rank factors the whole matrix (PCREDUNDANT, the options prefix redundant_).
-PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what, bool &redundant);
+PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, Factorization factorization, std::string &what,
+                                 bool &redundant);
 
 // Collective: sets up and factors a solver as SetupLinearSolver does for a
 // system of `ndofs` dofs (`other_path`: the factorization it does not choose
@@ -36,7 +43,7 @@ PetscErrorCode SetupLinearSolver(KSP ksp, PetscInt ndofs, std::string &what, boo
 // identity, one row per rank), and destroys it. PETSc's objects read some
 // options only at their first factorization (MUMPS's -[redundant_]mat_mumps_*):
 // after this they are marked read, before the run's own solver factors.
-PetscErrorCode ReadFactorizationOptions(MPI_Comm comm, PetscInt ndofs, bool other_path);
+PetscErrorCode ReadFactorizationOptions(MPI_Comm comm, PetscInt ndofs, Factorization factorization, bool other_path);
 
 // The factored matrix of a direct solve (through PCREDUNDANT to its inner
 // KSP), or nullptr when the preconditioner factors nothing (an iterative

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "tubeform/assembly/linear_solver.hpp"
 #include "tubeform/fe/quad.hpp"
 #include "tubeform/mesh/archive.hpp"
 #include "tubeform/mesh/mesh.hpp"
@@ -64,7 +65,8 @@ public:
   System &operator=(const System &) = delete;
   ~System();
 
-  PetscErrorCode Setup(const Mesh &mesh);
+  // `factorization`: the one where every rank factors the whole matrix (linear_solver.hpp).
+  PetscErrorCode Setup(const Mesh &mesh, Factorization factorization = Factorization::Mumps);
 
   // Node frames: angle of the l axis from x (n is l turned +90 degrees).
   void SetFrame(PetscInt node, double angle);

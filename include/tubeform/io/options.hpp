@@ -47,6 +47,9 @@ inline constexpr const char *kFullHoldWords[] = {"auto", "pins", "rotation"};
 enum class RminYield { Onset, Inside };
 inline constexpr const char *kRminYieldWords[] = {"onset", "inside"};
 
+// The words of -factorization and -error_estimate_factorization, in Factorization's order (assembly/linear_solver.hpp).
+inline constexpr const char *kFactorizationWords[] = {"mumps", "klu"};
+
 // An option tubeform reads: its name (with the dash) and its -help text.
 struct KnownOption {
   std::string name, help;
@@ -117,6 +120,7 @@ struct Options {
   // iterations no longer converge at any step size: the run stops.
   PetscInt friction_max_unsettled = 50;
   PetscBool drift_correction = PETSC_FALSE;
+  Factorization factorization = Factorization::Mumps; // where every rank factors the whole matrix (-factorization)
   // Equilibrium iterations in every increment: the largest out-of-balance force
   // on a free dof at most this fraction of the time-averaged nodal force (0: off,
   // the paper's forward increments).
@@ -171,7 +175,8 @@ struct Options {
   // the accuracy it is held to: a target demanded (a finer level where the
   // estimate passes it), else the preset's expectation (a warning).
   PetscBool error_estimate = PETSC_TRUE;
-  double target_load = 0, target_c_over_t = 0; // accuracy on demand (driver/refine.hpp; 0: none)
+  Factorization estimate_factorization = Factorization::Klu; // the companions' (-error_estimate_factorization)
+  double target_load = 0, target_c_over_t = 0;               // accuracy on demand (driver/refine.hpp; 0: none)
   double expect_load = 0, expect_c_over_t = 0; // what the preset's discretization is expected to give (0: none)
   PetscInt target_levels = 3;                  // at most this many levels, the first included
   double target_time = 0;                      // no level predicted to bring the job past this (s; 0: no limit)
