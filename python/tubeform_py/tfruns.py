@@ -10,12 +10,25 @@ import h5py
 import numpy as np
 
 root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # python/tubeform_py/..
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-# Open MPI's start-up as scripts/env.sh sets it: no daemon for a singleton, and the point-to-point layer it would fall
-# back to (ob1) named where no InfiniBand or Omni-Path hardware is there to probe for (docs/performance.md).
-env.setdefault("OMPI_MCA_ess_singleton_isolated", "1")
-if not os.path.exists("/sys/class/infiniband"):
-    env.setdefault("OMPI_MCA_pml", "ob1")
+
+
+def runs_env(base):
+    """`base` (a mapping of environment variables) with scripts/runs.env's settings where it has none: the
+    environment of tubeform's runs that scripts/env.sh and the tests set too."""
+    out = dict(base)
+    with open(os.path.join(root, "scripts", "runs.env")) as f:
+        for line in f:
+            words = line.split()
+            if not words or words[0].startswith("#"):
+                continue
+            name, value = words[0].split("=", 1)
+            if len(words) == 3 and words[1] == "unless" and os.path.exists(words[2]):
+                continue
+            out.setdefault(name, value)
+    return out
+
+
+env = runs_env(os.environ)
 EXE = os.path.join(root, "build", "tubeform")
 LOAD_AT, CT_AT = (1.0, 2.0, 3.0, 4.2), (2.0, 3.0, 4.2)
 
