@@ -34,31 +34,31 @@ PetscErrorCode RefuseOthers(MPI_Comm comm, const char *prefix, const std::vector
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The lower die's words (-lower_die_motion): mirror and path name the stroke up by U and the schedule; fixed and each
-// kind registered after the built-in ones (tool/motion.hpp) are their own words.
+// The lower die's words (-lower_die_motion): each kind of the registry that offers one (MotionKind::lower_word).
 std::vector<MotionWord> LowerWords()
 {
-  std::vector<MotionWord> words{{"mirror", "stroke"}, {"fixed", "fixed"}, {"path", "schedule"}};
+  std::vector<MotionWord> words;
   for (const std::string &kind : MotionKinds())
-    if (kind != "fixed" && kind != "stroke" && kind != "path" && kind != "force" && kind != "schedule")
-      words.push_back({kind, kind});
+    if (const char *word = FindMotionKind(kind)->lower_word) words.push_back({word, kind});
   return words;
 }
 
-// -lower_die_motion's help: its words (a kind after the built-in ones named with its options).
+// -lower_die_motion's help: what the lower die does under each word (a kind's lower_help, or its options).
 std::string LowerHelp(const std::vector<MotionWord> &words)
 {
-  std::string help = "tool scenes: the lower die moves up by the stroke U (mirror), stays (fixed; the upper die then "
-                     "travels 2 U, so U is half the dies' closing either way), ";
-  help +=
-    words.size() > 3 ? "follows -lower_die_path (path)" : "or follows -lower_die_path (path; the upper die travels U)";
-  for (size_t k = 3; k < words.size(); ++k) {
-    help += std::string(k + 1 < words.size() ? ", " : " or ") + "moves as its motion " + words[k].word + " says (";
-    for (const std::string &name : FindMotionKind(words[k].kind)->options) help += "-lower_die_" + name + " ";
+  std::string help = "tool scenes: the lower die ";
+  for (size_t k = 0; k < words.size(); ++k) {
+    const MotionKind *kind = FindMotionKind(words[k].kind);
+    help += k == 0 ? "" : k + 1 < words.size() ? ", " : " or ";
+    if (kind->lower_help) {
+      help += kind->lower_help;
+      continue;
+    }
+    help += "moves as its motion " + words[k].word + " says (";
+    for (const std::string &name : kind->options) help += "-lower_die_" + name + " ";
     help += "docs/dies.md)";
   }
-  if (words.size() > 3) help += "; the upper die travels U but with fixed";
-  return help;
+  return help + "; the upper die travels U but with fixed";
 }
 
 // The upper die's words (-die_motion): each its kind's name, in DieMotionKind's order.

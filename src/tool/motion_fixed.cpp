@@ -18,7 +18,9 @@ std::unique_ptr<Motion> FixedMotion() { return std::make_unique<Fixed>(); }
 const MotionKind &FixedKind()
 {
   static const MotionKind kind{
-    "fixed", {}, nullptr, [](const MotionSpec &, MotionHandle &m) { return m = FixedMotion(), std::string(); }};
+    "fixed", {},
+    nullptr, [](const MotionSpec &, MotionHandle &m) { return m = FixedMotion(), std::string(); },
+    "fixed", "stays (fixed; the upper die then travels 2 U, so U is half the dies' closing either way)"};
   return kind;
 }
 

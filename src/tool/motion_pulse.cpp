@@ -89,7 +89,7 @@ std::string MakePulse(const MotionSpec &s, MotionHandle &m)
 
 const MotionKind &PulseKind()
 {
-  static const MotionKind kind{"pulse", {"pulse_amplitude", "pulse_period"}, ReadPulse, MakePulse};
+  static const MotionKind kind{"pulse", {"pulse_amplitude", "pulse_period"}, ReadPulse, MakePulse, "pulse"};
   return kind;
 }
 

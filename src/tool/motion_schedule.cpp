@@ -128,7 +128,8 @@ std::string MakeSchedule(const MotionSpec &s, MotionHandle &m)
 
 const MotionKind &ScheduleKind()
 {
-  static const MotionKind kind{"schedule", {"path"}, ReadSchedule, MakeSchedule};
+  static const MotionKind kind{"schedule",   {"path"}, ReadSchedule,
+                               MakeSchedule, "path",   "follows -lower_die_path (path)"};
   return kind;
 }
 

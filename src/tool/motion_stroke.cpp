@@ -17,10 +17,15 @@ std::unique_ptr<Motion> StrokeMotion(const Vec2 &direction) { return std::make_u
 
 const MotionKind &StrokeKind()
 {
-  static const MotionKind kind{"stroke", {}, nullptr, [](const MotionSpec &s, MotionHandle &m) {
+  static const MotionKind kind{"stroke",
+                               {},
+                               nullptr,
+                               [](const MotionSpec &s, MotionHandle &m) {
                                  return Moves(s.direction) ? (m = StrokeMotion(s.direction), std::string())
                                                            : "a stroke along no direction";
-                               }};
+                               },
+                               "mirror",
+                               "moves up by the stroke U (mirror)"};
   return kind;
 }
 

@@ -106,12 +106,16 @@ using MotionReader = PetscErrorCode (*)(PetscOptionItems *PetscOptionsObject, Mo
 // A kind's factory: the motion from `spec` into `m`; "" or why not.
 using MotionFactory = std::string (*)(const MotionSpec &spec, MotionHandle &m);
 // A kind in the registry: its name, its options' names under a prefix (without the dash), its reader (none: it
-// reads nothing) and its factory. Each kind's file defines its own (FixedKind(), ..., the registry lists them).
+// reads nothing) and its factory; the word -lower_die_motion offers it under (none: the lower die does not take it)
+// and what the lower die then does in -help's words (none: "moves as its motion <word> says"). Each kind's file
+// defines its own (FixedKind(), ..., the registry lists them).
 struct MotionKind {
   const char *name;
   std::vector<std::string> options;
   MotionReader read;
   MotionFactory make;
+  const char *lower_word = nullptr;
+  const char *lower_help = nullptr;
 };
 
 // The registry: a motion of the kind named `kind` from `spec` into `m`; "" or why not (an unknown kind names the
