@@ -3,6 +3,11 @@ per output increment, in the shapes ParaView's XDMF reader expects), the
 /history group with every documented column, the options attribute and the
 .xmf beside it; the CSV with its header. Sizes are computed from the options
 (structured mesh: (nt+1)(ntheta+1) nodes, nt*ntheta cells), not from the code.
+The CSV's columns begin with the files' in their order (FILE_COLUMNS: the
+header the release before the tools declared their own columns wrote, which
+readers by position rely on; a new column goes after them), and /history
+has the CSV's; the tools' columns are there in a scene without tools too, 0
+(exactly: nothing fills them).
 """
 import csv
 import math
@@ -24,7 +29,21 @@ steps = 1 + len([i for i in range(1, incs + 1) if i % every == 0 or i == incs]) 
 columns = ["increment", "stroke", "load", "rmin", "limiter", "n_contact", "n_plastic", "friction_iters", "residual",
            "w_ext", "w_int", "w_plastic", "w_friction", "w_elastic", "energy_error", "c_over_t", "x_max", "y_max",
            "deviation_ratio"]
+# The files' columns in order (the CSV header of the release before the tools declared theirs; new columns go after
+# these), and the tools' columns among them.
+FILE_COLUMNS = (
+    "increment,stroke,load,rmin,limiter,limiter_where,n_contact,n_plastic,friction_iters,residual,r_max,q_avg,w_ext,"
+    "w_int,w_plastic,w_friction,w_elastic,energy_error,c_over_t,x_max,y_max,deviation_ratio,redo,unsettled,"
+    "events_inside,inconsistent,drift,r_corner_x,r_corner_y,penetration,tension,release_force,contact_gap,det_sign,"
+    "fn_mismatch,stage,n_contact_apex,tool_fx,tool_fy,tool_moment,w_kinetic,w_inertia,w_damped,w_tool,internal_error,"
+    "inertia,slip,fn_sum,lower_fx,lower_fy,side_load,lower_moment,side_stroke,hold_moment,hold_friction,die_x,die_turn,"
+    "release,release_yielded,release_excess,release_dep").split(",")
+TOOL_COLUMNS = ("tool_fx tool_fy tool_moment lower_fx lower_fy side_load lower_moment side_stroke hold_moment "
+                "hold_friction die_x die_turn").split()
 with h5py.File("io.h5", "r") as h:
+    datasets = sorted(h["/history"])
+    unfilled = [c for c in TOOL_COLUMNS if c not in h["/history"] or np.any(h["/history"][c][:] != 0)]
+    k.check(not unfilled, f"a scene without tools has the tools' columns, 0 (not: {unfilled})")
     k.check(h["/geometry/vertices"].shape == (nv, 2), f"/geometry/vertices {h['/geometry/vertices'].shape} == ({nv}, 2)")
     k.check(h["/viz/topology/cells"].shape == (nc, 4), f"/viz/topology/cells {h['/viz/topology/cells'].shape} == ({nc}, 4)")
     k.check(h["/vertex_fields/displacement_u"].shape == (steps, nv, 2), f"displacement {h['/vertex_fields/displacement_u'].shape} == ({steps}, {nv}, 2)")
@@ -53,6 +72,12 @@ k.check(len(grids) == steps, f"io.xmf has {steps} time steps")
 with open("io.csv") as f:
     rows = list(csv.reader(f))
 k.check(rows[0][:len(columns)] != [] and all(c in rows[0] for c in columns), "CSV header has every column")
+moved = [f"{c} at {rows[0].index(c) if c in rows[0] else None}, not {i}" for i, c in enumerate(FILE_COLUMNS)
+         if i >= len(rows[0]) or rows[0][i] != c]
+k.check(rows[0][:len(FILE_COLUMNS)] == FILE_COLUMNS,
+        f"the CSV's columns are the files' in their order ({'; '.join(moved[:3]) or 'the same'})")
+k.check(datasets == sorted(rows[0]), f"/history has the CSV's columns (more: {sorted(set(datasets) - set(rows[0]))}, "
+        f"missing: {sorted(set(rows[0]) - set(datasets))})")
 k.check(len(rows) == incs + 2, f"CSV has header + {incs + 1} rows")
 
 # -output_stroke D: fields whenever the loading passes a multiple of D mm of

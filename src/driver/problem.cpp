@@ -9,6 +9,7 @@
 #include "tubeform/driver/output_schedule.hpp"
 #include "tubeform/driver/progress.hpp"
 #include "tubeform/scenes/registry.hpp"
+#include "tubeform/scenes/tool_columns.hpp"
 
 namespace tf {
 
@@ -184,6 +185,7 @@ PetscErrorCode Problem::Open(ResultWriter &writer)
   }
   if (opt_.restart.empty() && !opt_.output.empty()) PetscCall(writer.Open(mesh_, opt_.output));
   writer.SetTimeScale(path_.duration); // the .xmf's time: seconds of the load path (a tool's stroke at 1 mm/s)
+  PetscCall(history_.Declare(DeclaredToolColumns(), comm_)); // (the tools' columns: scenes/tool_columns.hpp)
   int ok = history_.OpenCsv(opt_.history_csv, rank_);
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm_));
   PetscCheck(ok, comm_, PETSC_ERR_USER_INPUT,

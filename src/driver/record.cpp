@@ -101,8 +101,8 @@ PetscErrorCode Problem::Record(PetscInt inc, double lambda0, double lambda, cons
   PetscCall(EnergyColumns(lambda0, lambda, done, du, row));
   // NaN, or Inf where it can only come from an overflow, is never written:
   // the run stops at the increment before (Run reads nonfinite_).
-  for (const auto &col : HistoryColumns())
-    if (std::isnan(row.*(col.field)) || (std::isinf(row.*(col.field)) && !col.may_be_infinite)) {
+  for (const auto &col : history_.columns())
+    if (std::isnan(col.Of(row)) || (std::isinf(col.Of(row)) && !col.may_be_infinite)) {
       nonfinite_ = col.name;
       PetscCall(PetscLogEventEnd(Log::measure, 0, 0, 0, 0));
       PetscFunctionReturn(PETSC_SUCCESS);

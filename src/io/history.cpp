@@ -1,7 +1,9 @@
 #include "tubeform/io/history.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstring>
 
 #include "tubeform/step/rmin.hpp"
 
@@ -10,7 +12,8 @@ namespace tf {
 namespace {
 
 // The columns of the first histories: the increment, its limiter and solve, the energies and self-checks, the
-// tube's shape, the compromises taken, the contacts, the tool's forces, the dynamics.
+// tube's shape, the compromises taken, the contacts, the dynamics (the tools declare their own:
+// scenes/tool_columns.hpp).
 std::vector<HistoryColumn> FirstColumns()
 {
   return {
@@ -63,11 +66,6 @@ std::vector<HistoryColumn> FirstColumns()
     {"stage", &HistoryRow::stage,
      "0 loading, 1 unloading (or the scene's second stage), 2 the slide scene's push back"},
     {"n_contact_apex", &HistoryRow::n_contact_apex, "contact nodes on the V-die's apex fillet"},
-    {"tool_fx", &HistoryRow::tool_fx, "force of the model on the tool, x (N/mm)"},
-    {"tool_fy", &HistoryRow::tool_fy, "force of the model on the tool, y (N/mm)"},
-    {"tool_moment", &HistoryRow::tool_moment,
-     "moment of the model's forces on the tool about the tool frame's origin, which moves with the tool (the "
-     "tube's centre at stroke 0; N mm/mm, counter-clockwise positive)"},
     {"w_kinetic", &HistoryRow::w_kinetic, "kinetic energy (-dynamics implicit; 0 quasi-static)"},
     {"w_inertia", &HistoryRow::w_inertia, "work of the inertia forces (trapezoidal)"},
     {"w_damped", &HistoryRow::w_damped, "energy damped by backward Euler: w_inertia - w_kinetic"},
@@ -80,29 +78,10 @@ std::vector<HistoryColumn> FirstColumns()
   };
 }
 
-// The columns of the press's further tools and models (the lower die of a half model, the side dies, the rotation
-// hold, the die's path) and of the springback; 0 where they do not act.
-std::vector<HistoryColumn> ToolAndSpringbackColumns()
+// The springback's columns; 0 outside one.
+std::vector<HistoryColumn> SpringbackColumns()
 {
   return {
-    {"lower_fx", &HistoryRow::lower_fx, "half model: force of the model on the lower die, x (N/mm; 0 in a quarter)"},
-    {"lower_fy", &HistoryRow::lower_fy, "half model: force of the model on the lower die, y (N/mm)"},
-    {"side_load", &HistoryRow::side_load,
-     "-side_die: each side die's force along its motion, on the whole tube (N/mm; 0 without)"},
-    {"lower_moment", &HistoryRow::lower_moment,
-     "half model: moment of the model's forces on the lower die about its frame's origin (N mm/mm)"},
-    {"side_stroke", &HistoryRow::side_stroke,
-     "-side_die: the side dies' travel towards the tube's centre (mm): the stroke, or their own with -side_force"},
-    {"hold_moment", &HistoryRow::hold_moment,
-     "full model, the rotation hold: the couple it puts on the tube (N mm/mm, counter-clockwise positive, in the "
-     "press's frame; 0 without it); in its springback, the moment the springback's pins carry"},
-    {"hold_friction", &HistoryRow::hold_friction,
-     "the rotation hold: the largest moment the contacts' friction could carry about the tube's centre (N mm/mm): "
-     "a hold_moment above it is one the real tube may turn under"},
-    {"die_x", &HistoryRow::die_x,
-     "-die_path: the upper die's displacement along the press's x from where it started (mm; 0 without)"},
-    {"die_turn", &HistoryRow::die_turn,
-     "-die_path_turn: the upper die's turn about -die_pivot (degrees, counter-clockwise; 0 without)"},
     {"release", &HistoryRow::release,
      "a springback (the release whose law -springback sets: the unloading of a tool scene, the bending scene's "
      "first reversal up to where its moment passes zero): 1 by the material's law, 2 elastic; 0 elsewhere"},
@@ -120,15 +99,49 @@ std::vector<HistoryColumn> ToolAndSpringbackColumns()
 
 } // namespace
 
-const std::vector<HistoryColumn> &HistoryColumns()
+std::vector<HistoryColumn> History::OwnColumns()
 {
-  // The later columns after the first: a reader of the CSV by position finds the first columns where they were.
-  static const std::vector<HistoryColumn> cols = [] {
-    std::vector<HistoryColumn> all = FirstColumns(), later = ToolAndSpringbackColumns();
-    all.insert(all.end(), later.begin(), later.end());
-    return all;
-  }();
-  return cols;
+  // The springback's after the first: a reader of the CSV by position finds the first columns where they were.
+  std::vector<HistoryColumn> all = FirstColumns(), later = SpringbackColumns();
+  all.insert(all.end(), later.begin(), later.end());
+  return all;
+}
+
+PetscErrorCode History::Declare(const std::vector<ToolColumn> &tools, MPI_Comm comm)
+{
+  std::vector<HistoryColumn> cols = OwnColumns();
+  const auto find = [&cols](const char *name) {
+    return std::find_if(cols.begin(), cols.end(),
+                        [name](const HistoryColumn &c) { return !std::strcmp(c.name, name); });
+  };
+  std::vector<ToolColumn> left = tools;
+
+  PetscFunctionBeginUser;
+  for (size_t a = 0; a < tools.size(); ++a)
+    for (size_t b = 0; b < a; ++b) // (two after one column: their order would be the declarations')
+      PetscCheck(!tools[a].after || !tools[b].after || std::strcmp(tools[a].after, tools[b].after), comm,
+                 PETSC_ERR_PLIB, "history columns %s and %s both follow %s", tools[b].name, tools[a].name,
+                 tools[a].after);
+  // Each after the column it names, once that one is in (a tool's column may follow another tool's).
+  while (!left.empty()) {
+    std::vector<ToolColumn> later;
+    for (const ToolColumn &t : left) {
+      PetscCheck(t.slot >= 0 && t.slot < kToolColumnRoom, comm, PETSC_ERR_PLIB,
+                 "history column %s: slot %d outside the room of %d (kToolColumnRoom)", t.name, t.slot,
+                 kToolColumnRoom);
+      PetscCheck(find(t.name) == cols.end(), comm, PETSC_ERR_PLIB, "history column %s declared twice", t.name);
+      const auto at = t.after ? find(t.after) : cols.end() - 1;
+      if (at == cols.end())
+        later.push_back(t);
+      else
+        cols.insert(at + 1, HistoryColumn{t.name, nullptr, t.meaning, false, t.slot});
+    }
+    PetscCheck(later.size() < left.size(), comm, PETSC_ERR_PLIB, "history column %s: no column %s to follow",
+               later[0].name, later[0].after);
+    left = later;
+  }
+  columns_ = cols;
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 History::~History()
@@ -142,7 +155,7 @@ bool History::OpenCsv(const std::string &path, int rank)
   if (rank != 0 || path.empty()) return true;
   csv_ = std::fopen((path + ".partial").c_str(), "w");
   if (!csv_) return false;
-  const auto &cols = HistoryColumns();
+  const auto &cols = columns_;
   for (size_t c = 0; c < cols.size(); ++c) std::fprintf(csv_, "%s%s", c ? "," : "", cols[c].name);
   std::fprintf(csv_, "\n");
   Checked(std::fflush(csv_) == 0);
@@ -158,10 +171,10 @@ void History::Append(const HistoryRow &row)
 {
   rows_.push_back(row);
   if (!csv_ || csv_errno_) return; // (a file that failed is not written further: the run stops)
-  const auto &cols = HistoryColumns();
+  const auto &cols = columns_;
   bool ok = true;
   for (size_t c = 0; c < cols.size(); ++c) {
-    const double v = row.*(cols[c].field);
+    const double v = cols[c].Of(row);
     if (c) ok = ok && std::fputc(',', csv_) != EOF;
     if (cols[c].field == &HistoryRow::limiter)
       ok = ok && std::fprintf(csv_, "%s", LimiterName(static_cast<int>(v))) >= 0;
@@ -176,16 +189,16 @@ void History::Append(const HistoryRow &row)
 
 PetscErrorCode History::Persist(Archive &ar, MPI_Comm comm)
 {
-  const auto &cols = HistoryColumns();
+  const auto &cols = columns_;
   std::vector<std::vector<double>> values(cols.size());
 
   PetscFunctionBeginUser;
-  // Every member of a row is a column: a row written column by column comes back whole.
-  PetscCheck(cols.size() * sizeof(double) == sizeof(HistoryRow), comm, PETSC_ERR_PLIB,
-             "HistoryRow has members that are not history columns");
+  // Every member of a row is a column, or a tool's slot: a row written column by column comes back whole.
+  PetscCheck(OwnColumns().size() * sizeof(double) + sizeof(HistoryRow::tool) == sizeof(HistoryRow), comm,
+             PETSC_ERR_PLIB, "HistoryRow has members that are not history columns");
   ar.Group("/history");
   for (size_t c = 0; c < cols.size(); ++c) {
-    for (const auto &row : rows_) values[c].push_back(row.*(cols[c].field));
+    for (const auto &row : rows_) values[c].push_back(cols[c].Of(row));
     PetscCall(ar.Values(cols[c].name, values[c]));
     PetscCheck(values[c].size() == values[0].size(), comm, PETSC_ERR_USER_INPUT,
                "%s: the history columns have different lengths", ar.path().c_str());
@@ -193,7 +206,7 @@ PetscErrorCode History::Persist(Archive &ar, MPI_Comm comm)
   if (!ar.reading()) PetscFunctionReturn(PETSC_SUCCESS);
   std::vector<HistoryRow> rows(values[0].size());
   for (size_t c = 0; c < cols.size(); ++c)
-    for (size_t r = 0; r < rows.size(); ++r) rows[r].*(cols[c].field) = values[c][r];
+    for (size_t r = 0; r < rows.size(); ++r) cols[c].Of(rows[r]) = values[c][r];
   rows_.clear();
   for (const auto &row : rows) Append(row); // and into the CSV file
   PetscFunctionReturn(PETSC_SUCCESS);

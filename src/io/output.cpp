@@ -286,7 +286,7 @@ PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std
   {
     const double index = (double)times_.size() * (node_names_.size() + cell_names_.size() + tools_.size() + 4);
     PetscCall(CheckRoom(mesh_->comm, path_, "-output",
-                        kBytesPerValue * HistoryColumns().size() * history.rows().size() + kXdmfBytesPerEntry * index,
+                        kBytesPerValue * history.columns().size() * history.rows().size() + kXdmfBytesPerEntry * index,
                         "the history and the ParaView index"));
   }
   // /history: one 1-D dataset per column. Dataset creation is collective;
@@ -296,9 +296,9 @@ PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std
   group = H5Gcreate2(file, "/history", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   TF_CHECK_HDF5(group);
   std::vector<double> column(n);
-  for (const auto &col : HistoryColumns()) {
+  for (const auto &col : history.columns()) {
     hid_t space, dset;
-    for (hsize_t r = 0; r < n; ++r) column[r] = history.rows()[r].*(col.field);
+    for (hsize_t r = 0; r < n; ++r) column[r] = col.Of(history.rows()[r]);
     space = H5Screate_simple(1, &n, nullptr);
     TF_CHECK_HDF5(space);
     dset = H5Dcreate2(group, col.name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);

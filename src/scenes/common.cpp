@@ -73,21 +73,6 @@ PetscErrorCode QuarterSymmetry(Model &m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-double PressToolWork(TubePart part, const DieTravel &travel, const HistoryRow &prev, const HistoryRow &row)
-{
-  const bool two_dies = part != TubePart::Quarter;
-  const double dU = row.stroke - prev.stroke;
-  // (the share of the punch load the model carries: half in the quarter and the half model, all in the full one)
-  const double upper = !two_dies ? 0.5 : travel.upper_per_u / (part == TubePart::Full ? 1.0 : 2.0);
-  double dw = upper * 0.5 * (prev.load + row.load) * dU;
-  if (two_dies && travel.lower_moves) // (moving up; the model pushes it down)
-    dw -= 0.5 * (prev.lower_fy + row.lower_fy) * travel.lower_rise;
-  dw += SideDiesInModel(part) * 0.5 * (prev.side_load + row.side_load) * (row.side_stroke - prev.side_stroke);
-  dw -= 0.5 * (prev.tool_fx + row.tool_fx) * (row.die_x - prev.die_x); // (-die_path's sideways motion)
-  dw -= 0.5 * (prev.tool_moment + row.tool_moment) * (row.die_turn - prev.die_turn) * (M_PI / 180); // (its turn)
-  return dw;
-}
-
 PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part, const TurnMap &press)
 {
   // (the half and full models' tube may sit anywhere along y)

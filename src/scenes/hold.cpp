@@ -133,18 +133,34 @@ PetscErrorCode RotationHold::SupportMoment(Model &m, Vec f_int, Vec f_rev, doubl
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+const ToolColumns &RotationHold::Columns()
+{
+  static const ToolColumns c({
+    {"hold_moment",
+     "full model, the rotation hold: the couple it puts on the tube (N mm/mm, counter-clockwise positive, in the "
+     "press's frame; 0 without it); in its springback, the moment the springback's pins carry",
+     "side_stroke"},
+    {"hold_friction",
+     "the rotation hold: the largest moment the contacts' friction could carry about the tube's centre (N mm/mm): "
+     "a hold_moment above it is one the real tube may turn under",
+     "hold_moment"},
+  });
+  return c;
+}
+
 PetscErrorCode RotationHold::Measure(Model &m, Vec f_int, double det, double ro, HistoryRow &row)
 {
+  double &moment = Columns()(row, kMoment), &friction = Columns()(row, kFriction);
   PetscFunctionBeginUser;
-  PetscCall(Moment(m, f_int, row.hold_moment, row.hold_friction));
-  row.hold_moment *= det;
-  const bool over = std::abs(row.hold_moment) > row.hold_friction + kUnresolved * largest_load_ * ro;
+  PetscCall(Moment(m, f_int, moment, friction));
+  moment *= det;
+  const bool over = std::abs(moment) > friction + kUnresolved * largest_load_ * ro;
   if (over && !warned_ && !m.quiet)
     PetscCall(PetscPrintf(m.comm,
                           "tubeform: warning: at U = %.4g mm the rotation hold carries %.4g N mm/mm, more than the "
                           "contacts' friction could against a turn (%.4g): the real tube may turn (docs/dies.md, "
                           "\"A die off the axis\")\n",
-                          row.stroke, row.hold_moment, row.hold_friction));
+                          row.stroke, moment, friction));
   warned_ = warned_ || over;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

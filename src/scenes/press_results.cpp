@@ -21,8 +21,9 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   double force[2], moment;
   PetscFunctionBeginUser;
   row.stroke = Stroke(m, lambda);
-  row.die_x = pass_ == 0 ? path_.Sideways(ToolStroke(lambda)) : 0.0; // (-die_path)
-  row.die_turn = pass_ == 0 ? path_.Turn(ToolStroke(lambda)) : 0.0;
+  const ToolColumns &upper = UpperDieColumns(), &path = DiePathColumns(), &side = SideDieColumns();
+  path(row, kDieX) = pass_ == 0 ? path_.Sideways(ToolStroke(lambda)) : 0.0; // (-die_path)
+  path(row, kDieTurn) = pass_ == 0 ? path_.Turn(ToolStroke(lambda)) : 0.0;
   if (unloading_) {
     for (int k = 0; k < 2; ++k) force[k] = (ReleaseEnd() - lambda) * reversed_total_[k];
     moment = (ReleaseEnd() - lambda) * reversed_moment_;
@@ -31,29 +32,31 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   // (in the press's frame: a turned pass's die presses along its -y)
   Vec2 f = Press()({force[0], force[1]});
   row.load = -LoadPerModelForce() * f[1]; // (the punch load on the whole tube)
-  row.tool_fx = -f[0], row.tool_fy = -f[1], row.tool_moment = -Press().det() * moment;
+  upper(row, kDieFx) = -f[0], upper(row, kDieFy) = -f[1], upper(row, kDieMoment) = -Press().det() * moment;
   // (the side dies' travel: the stroke, through the springbacks too, or their own under -side_force)
   bool side_dies = false;
   for (const Pass &p : passes_) side_dies = side_dies || p.side_dies;
   if (side_dies)
-    row.side_stroke = opt_.side_force > 0 ? m.contact->tool(SideDie()).stroke
-                      : pass_ > 0         ? passes_[pass_].side_from + ToolStroke(lambda)
-                                          : row.stroke;
+    side(row, kSideStroke) = opt_.side_force > 0 ? m.contact->tool(SideDie()).stroke
+                             : pass_ > 0         ? passes_[pass_].side_from + ToolStroke(lambda)
+                                                 : row.stroke;
   if (passes_[pass_].side_dies && !unloading_) {
     // (the right side die: whole in the half and full models, its upper half in the quarter)
     // (its force along the press's x: a turned pass's side die presses along the press's -x)
     PetscCall(m.contact->TotalForce(SideDie(), force, nullptr));
-    row.side_load = -(half_ ? 1.0 : 2.0) * Press()({force[0], force[1]})[0];
+    side(row, kSideLoad) = -(half_ ? 1.0 : 2.0) * Press()({force[0], force[1]})[0];
   }
   if (half_ && !unloading_) {
     PetscCall(m.contact->TotalForce(kLower, force, &moment));
     f = Press()({force[0], force[1]});
-    row.lower_fx = -f[0], row.lower_fy = -f[1], row.lower_moment = -Press().det() * moment;
+    const ToolColumns &lower = LowerDieColumns();
+    lower(row, kDieFx) = -f[0], lower(row, kDieFy) = -f[1], lower(row, kDieMoment) = -Press().det() * moment;
   }
   hold_.SeeLoad(row.load); // (the warning's floor: the largest load so far)
   if (Holding() && !hold_.pins()) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
   if (passes_[pass_].held && unloading_) // (what the springback's pins carry; scenes/hold.hpp)
-    PetscCall(hold_.SupportMoment(m, f_int, reversed_, ReleaseEnd() - lambda, pin_.node(), row.hold_moment));
+    PetscCall(hold_.SupportMoment(m, f_int, reversed_, ReleaseEnd() - lambda, pin_.node(),
+                                  RotationHold::Columns()(row, RotationHold::kMoment)));
   PetscCall(OuterExtents(m, row, Part(), Press()));
   PetscCall(Shape(m, lambda, row));
   row.stage = StageOf(lambda);

@@ -10,6 +10,7 @@
 #include "tubeform/mesh/generator.hpp"
 #include "tubeform/scenes/common.hpp"
 #include "tubeform/scenes/contact_params.hpp"
+#include "tubeform/scenes/die_columns.hpp"
 #include "tubeform/tool/shape.hpp"
 
 namespace tf {
@@ -75,7 +76,8 @@ public:
     row.slip = g[0] / g[1];
     double force[2], moment;
     PetscCall(m.contact->TotalForce(0, force, &moment));
-    row.tool_fx = -force[0], row.tool_fy = -force[1], row.tool_moment = -moment;
+    const ToolColumns &floor = UpperDieColumns(); // (the scene's tool's columns, the press's upper die's)
+    floor(row, kDieFx) = -force[0], floor(row, kDieFy) = -force[1], floor(row, kDieMoment) = -moment;
     row.stage = lambda > 2.0 + kLambdaTol ? 2 : StageOf(lambda); // 2: pushed back
     PetscFunctionReturn(PETSC_SUCCESS);
   }

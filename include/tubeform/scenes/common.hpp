@@ -28,19 +28,6 @@ inline double SideDiesInModel(TubePart part)
 {
   return part == TubePart::Full ? 2.0 : part == TubePart::Half ? 1.0 : 0.5;
 }
-// The press scenes' dies' work on the model over a step, each die's reported force over its own travel (the
-// trapezoid rule; self-check (a), Scene::ToolWork): the upper die's share of the punch load (the quarter's y = 0
-// plane stands in for a mirrored lower die; the upper die travels `upper_per_u` per unit U: 2 over a lower die
-// that stays); in the half and full models a moving lower die's own force (a floor carries less than the die
-// above it when side dies take some of the vertical force by friction) over its rise in the step `lower_rise`;
-// the side dies' force over their travel (`side_stroke`); the upper die's force along x over its sideways
-// travel (`die_x`, -die_path), and its moment about its pivot over its turn (`die_turn`, -die_path_turn).
-struct DieTravel {
-  double upper_per_u = 1; // the upper die's travel per unit U
-  bool lower_moves = true;
-  double lower_rise = 0; // the lower die's rise in the step (mm)
-};
-double PressToolWork(TubePart part, const DieTravel &travel, const HistoryRow &prev, const HistoryRow &row);
 // Whether a press's springback is elastic: -springback elastic, or auto under -unload reverse (the paper's: its
 // dead loads can drive a thin wall into a collapse by the material's law; docs/theory.md, "Unloading").
 inline bool ElasticRelease(const Options &opt)

@@ -18,6 +18,7 @@
 
 #include "tubeform/scenes/scene.hpp"
 #include "tubeform/scenes/support.hpp"
+#include "tubeform/scenes/tool_columns.hpp"
 
 namespace tf {
 
@@ -41,6 +42,9 @@ public:
   // set "axis", and the local node `pin`, -1: none here) carry: their internal force less the release's reversed
   // loads (share x f_rev); 0 in balance: the reversed loads, the hold's forces among them, need no support.
   PetscErrorCode SupportMoment(Model &m, Vec f_int, Vec f_rev, double share, PetscInt pin, double &moment) const;
+  // Its history columns (scenes/tool_columns.hpp): the couple and the friction's largest.
+  enum Column { kMoment, kFriction };
+  static const ToolColumns &Columns();
   // Collective: the couple and the friction's largest into the history (`det`: the press's frame's determinant,
   // the row's load and stroke already in), and a warning the first time friction may not carry it.
   PetscErrorCode Measure(Model &m, Vec f_int, double det, double ro, HistoryRow &row);

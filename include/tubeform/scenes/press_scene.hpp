@@ -7,6 +7,7 @@
 
 #include "tubeform/scenes/common.hpp"
 #include "tubeform/scenes/die.hpp"
+#include "tubeform/scenes/die_columns.hpp"
 #include "tubeform/scenes/hold.hpp"
 #include "tubeform/scenes/scene.hpp"
 #include "tubeform/scenes/stroke_path.hpp"
