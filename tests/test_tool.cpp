@@ -266,7 +266,7 @@ void CheckMotions()
   // The schedule: still to U = 1, up to 1 at U = 2, then standing.
   const Motion &s = *lower.motion;
   CHECK(s.Offset(0.5)[1] == 0 && s.Offset(1.5)[1] == 0.5 && s.Offset(2)[1] == 1 && s.Offset(3)[1] == 1);
-  CHECK((s.Kinks() == std::vector<double>{1, 2}));
+  CHECK((s.Kinks(3) == std::vector<double>{1, 2}) && (s.Kinks(2) == std::vector<double>{1}));
   for (auto [at, dy] : {std::pair{0.5, 0.0}, {1.0 - 1e-15, 1.0}, {1.0, 1.0}, {1.9, 1.0}, {2.0, 0.0}, {2.5, 0.0}}) {
     lower.stroke = at, lower.FollowPath();
     CHECK(lower.Direction()[0] == 0 && lower.Direction()[1] == dy);

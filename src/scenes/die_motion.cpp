@@ -62,16 +62,16 @@ double UpperTravel(const Options &o) { return -LowerMotionOf(o).upper[1]; }
 
 bool LowerDieClosing(const Options &o) { return LowerMotionOf(o).closing; }
 
-std::vector<double> PressKinks(const Options &opt)
+std::vector<double> PressKinks(const Options &opt, double until)
 {
   std::vector<double> kinks;
   MotionHandle upper, lower;
   const DieMotion die = UpperDie(opt);
   if (die.kind == DieMotionKind::Path && MakeMotion(DieMotionName(die.kind), die.spec, upper).empty())
-    kinks = upper->Kinks();
+    kinks = upper->Kinks(until);
   const LowerDieSpec lower_die = LowerDie(opt);
   if (!QuarterModel(opt) && MakeMotion(lower_die.kind, lower_die.spec, lower).empty())
-    for (double s : lower->Kinks()) kinks.push_back(s);
+    for (double s : lower->Kinks(until)) kinks.push_back(s);
   return kinks;
 }
 

@@ -52,8 +52,8 @@ PressScene::PressScene(const Options &opt, bool squaring)
 
 LoadPath PressScene::Path(const Options &opt) const
 {
-  const double t = path_.travel() / opt.punch_speed;               // (the press's duration)
-  const std::vector<double> kinks = path_.Kinks(PressKinks(opt_)); // (where the dies' motions turn)
+  const double t = path_.travel() / opt.punch_speed;                               // (the press's duration)
+  const std::vector<double> kinks = path_.Kinks(PressKinks(opt_, path_.travel())); // (where the dies' motions turn)
   if (passes_.size() == 1)
     return {opt_.unload == Unload::None ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
   std::vector<double> stages; // (where each stage after the first begins)

@@ -12,11 +12,8 @@
 namespace tf {
 
 namespace {
-// The pulses a stroke holds at most (kinks are listed up front): 10000, a 100 mm stroke at a 0.01 mm period; past
-// them the tool strokes straight on.
-constexpr double kMaxPulses = 10000;
 // A stroke this close below a kink (in half periods) is at it: a step from there runs on the piece after it (the
-// stroke at a kink is the commits' sum, within round-off of k P / 2 for up to 2 kMaxPulses pieces).
+// stroke at a kink is the commits' sum, within round-off of k P / 2 for the ten thousands of pieces a press holds).
 constexpr double kAtKink = 1e-10;
 
 class Pulse : public Motion {
@@ -33,12 +30,12 @@ public:
   void Follow(double s) override
   {
     const double half = std::floor(2 * s / p_ + kAtKink);
-    slope_ = a_ == 0 || half >= 2 * kMaxPulses ? 1.0 : std::fmod(half, 2.0) == 0 ? 1 - 2 * a_ / p_ : 1 + 2 * a_ / p_;
+    slope_ = a_ == 0 ? 1.0 : std::fmod(half, 2.0) == 0 ? 1 - 2 * a_ / p_ : 1 + 2 * a_ / p_;
   }
-  std::vector<double> Kinks() const override
+  std::vector<double> Kinks(double until) const override
   {
     std::vector<double> k;
-    for (double n = 1; a_ != 0 && n <= 2 * kMaxPulses; ++n) k.push_back(0.5 * n * p_);
+    for (double n = 1; a_ != 0 && 0.5 * n * p_ < until; ++n) k.push_back(0.5 * n * p_);
     return k;
   }
   void Map(const TurnMap &map) override { d_ = map(d_); }
@@ -48,10 +45,9 @@ private:
   double a_, p_;     // the amplitude (mm) and the period (mm of stroke)
   double slope_ = 1; // the travel per unit stroke on the piece followed
 
-  // The triangle wave at s: 0 at each whole period, 1 half a period on (0 past the last pulse).
+  // The triangle wave at s: 0 at each whole period, 1 half a period on.
   double Wave(double s) const
   {
-    if (s >= kMaxPulses * p_) return 0.0;
     const double f = s / p_ - std::floor(s / p_);
     return f < 0.5 ? 2 * f : 2 * (1 - f);
   }

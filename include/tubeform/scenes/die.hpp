@@ -38,9 +38,9 @@ MotionHandle LowerDieMotion(const Options &o);
 double UpperTravel(const Options &o);
 // The lower die's motion keeps the dies closing by 2 U (mirror, fixed): the closed forms of their reach hold.
 bool LowerDieClosing(const Options &o);
-// The strokes where the first pass's dies' motions turn (Motion::Kinks: the upper die's path, the lower die's
-// motion in the half and full models): the load path's kinks (an increment ends there).
-std::vector<double> PressKinks(const Options &opt);
+// The strokes below `until` where the first pass's dies' motions turn (Motion::Kinks: the upper die's path, the
+// lower die's motion in the half and full models): the load path's kinks (an increment ends there).
+std::vector<double> PressKinks(const Options &opt, double until);
 // Collective: the first pass's upper die (tools[0]) on its own path (-die_path, turning about -die_pivot), and
 // the dies that press by a force: the upper one (-die_force), the side dies (tools from first_side on,
 // -side_force).

@@ -35,8 +35,8 @@ public:
   virtual double Spin() const { return 0.0; }
   // Takes the piece a step from stroke s runs on (a step never crosses a kink).
   virtual void Follow(double /*s*/) {}
-  // The strokes where it changes piece: an increment ends there (Scene's LoadPath::kinks).
-  virtual std::vector<double> Kinks() const { return {}; }
+  // The strokes below `until` where it changes piece, rising: an increment ends there (Scene's LoadPath::kinks).
+  virtual std::vector<double> Kinks(double /*until*/) const { return {}; }
   // Its stroke is an unknown of each increment, found from the force it presses with (force control), not the
   // scene's stroke.
   virtual bool Unknown() const { return false; }
