@@ -93,17 +93,13 @@ PetscErrorCode ReadDynamics(PetscOptionItems *PetscOptionsObject, OptionReader &
   // the iterations balance the pressure its strain leaves near
   // incompressibility), forward without them (the paper's increments, which
   // it keeps in balance best).
-  const char *const schemes[] = {"forward", "midpoint", "auto"};
-  PetscBool set;
-  PetscInt choice = 2;
-  read.Note("-kinematics");
-  PetscCall(PetscOptionsEList(
-    "-kinematics",
-    "Strain/spin increments: forward (start configuration, W sigma - sigma W), midpoint (Hughes-Winget), or "
-    "auto (midpoint with equilibrium iterations, forward without)",
-    "tubeform", schemes, 3, schemes[choice], &choice, &set));
-  if (choice == 2) choice = d.equilibrium_tol > 0 ? 1 : 0;
-  d.kinematics = choice == 0 ? ObjectiveScheme::Forward : ObjectiveScheme::Midpoint;
+  Kinematics asked = Kinematics::Auto;
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-kinematics",
+                       "Strain/spin increments: forward (start configuration, W sigma - sigma W), midpoint "
+                       "(Hughes-Winget), or auto (midpoint with equilibrium iterations, forward without)",
+                       kKinematicsWords, asked));
+  if (asked == Kinematics::Auto) asked = d.equilibrium_tol > 0 ? Kinematics::Midpoint : Kinematics::Forward;
+  d.kinematics = asked == Kinematics::Forward ? ObjectiveScheme::Forward : ObjectiveScheme::Midpoint;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

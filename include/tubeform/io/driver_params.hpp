@@ -20,6 +20,10 @@ inline constexpr const char *kDynamicsWords[] = {"quasistatic", "implicit", "aut
 // Where r1 ends a step (-rmin_yield): at each yield onset (the paper's), or points yield inside steps.
 enum class RminYield { Onset, Inside };
 inline constexpr const char *kRminYieldWords[] = {"onset", "inside"};
+// The strain and spin update asked for (-kinematics): forward, midpoint (ObjectiveScheme's), or auto: midpoint with
+// equilibrium iterations, forward without (DriverParams::kinematics is the one chosen).
+enum class Kinematics { Forward, Midpoint, Auto };
+inline constexpr const char *kKinematicsWords[] = {"forward", "midpoint", "auto"};
 // The words of -factorization and -error_estimate_factorization, in Factorization's order (assembly/linear_solver.hpp).
 inline constexpr const char *kFactorizationWords[] = {"mumps", "klu"};
 
