@@ -18,6 +18,7 @@
 #include "tubeform/core/signals.hpp"
 #include "tubeform/driver/beside.hpp"
 #include "tubeform/driver/companions.hpp"
+#include "tubeform/driver/driver_options.hpp"
 #include "tubeform/driver/problem.hpp"
 #include "tubeform/io/options.hpp"
 #include "tubeform/io/options_files.hpp"
@@ -84,7 +85,7 @@ static PetscErrorCode Run()
   tf::Options opt;
   PetscMPIInt size;
   PetscFunctionBeginUser;
-  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneReaders(), opt));
+  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::DriverOptions(), tf::SceneReaders(), opt));
   if (opt.help) PetscFunctionReturn(tf::PrintSceneHelp(PETSC_COMM_WORLD));
   PetscCall(tf::RefuseForeignOptions(PETSC_COMM_WORLD, opt));
   opt.job_started = MPI_Wtime();

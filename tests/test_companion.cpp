@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "tubeform/core/job_end.hpp"
+#include "tubeform/driver/driver_options.hpp"
 #include "tubeform/driver/problem.hpp"
 #include "tubeform/io/options.hpp"
 #include "tubeform/scenes/registry.hpp"
@@ -52,7 +53,7 @@ static PetscErrorCode Run(const std::string &mode)
 {
   tf::Options opt;
   PetscFunctionBeginUser;
-  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneReaders(), opt));
+  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::DriverOptions(), tf::SceneReaders(), opt));
   tf::Problem problem;
   PetscCall(problem.Setup(PETSC_COMM_WORLD, opt));
   problem.SetCompanion(

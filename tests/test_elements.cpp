@@ -84,7 +84,7 @@ public:
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscErrorCode Measure(Model &, double, Vec, HistoryRow &) override { return 0; }
-  LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}}; }
+  LoadPath Path(const Options &opt) const override { return {1.0, opt.driver.dynamics_time, {}}; }
 
 protected:
   virtual NodalLoad Loads(Model &m) const = 0;
@@ -173,7 +173,7 @@ Options Base(fe::Formulation f, double e, double nu)
   opt.material.law = "elastic";
   opt.material.E = e;
   opt.material.nu = nu;
-  opt.increments = 1;
+  opt.driver.increments = 1;
   opt.output = "test_elements.h5";
   return opt;
 }

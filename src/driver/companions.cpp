@@ -112,7 +112,8 @@ PetscErrorCode RunOnce(MPI_Comm comm, const Options &opt, bool quiet, const Prob
 PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out, std::string *line)
 {
   Options mesh = CompanionQuiet(ran);
-  mesh.factorization = ran.estimate_factorization; // (a quarter of the run's cells: MUMPS's per-call cost dominates)
+  // (a quarter of the run's cells: MUMPS's per-call cost dominates)
+  mesh.driver.factorization = ran.estimate_factorization;
   double seconds[2] = {0, 0};
   PetscMPIInt size;
   PetscFunctionBeginUser;
@@ -123,9 +124,9 @@ PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out,
     mesh.mesh_ntheta = std::max<PetscInt>(4, 2 * (ran.mesh_ntheta / 4));
   }
   Options steps = mesh;
-  steps.increments = std::max<PetscInt>(1, ran.increments / 2);
-  steps.rmin_deps = 2 * ran.rmin_deps, steps.rmin_deps_yield = 2 * ran.rmin_deps_yield;
-  steps.rmin_domega = 2 * ran.rmin_domega;
+  steps.driver.increments = std::max<PetscInt>(1, ran.driver.increments / 2);
+  steps.driver.rmin_deps = 2 * ran.driver.rmin_deps, steps.driver.rmin_deps_yield = 2 * ran.driver.rmin_deps_yield;
+  steps.driver.rmin_domega = 2 * ran.driver.rmin_domega;
   if (coarsen && size >= 2) {
     PetscCall(SideBySide(comm, mesh, steps, out, seconds));
     if (!out.Ran()) PetscFunctionReturn(PETSC_SUCCESS);

@@ -92,7 +92,7 @@ PetscErrorCode Controller::Solve(double lambda, double dl, Vec du, double &dU, I
     PetscCall(m_.system.AddForces(f_start_));
     PetscCall(m_.system.AddForces(f_trial_, -1.0));
     const double q = (q_sum_ + q_iter_) / (q_count_ + 1);
-    m_.system.SetIterate(iter_, opt_.equilibrium_tol * q, reject_above_);
+    m_.system.SetIterate(iter_, opt_.driver.equilibrium_tol * q, reject_above_);
   }
   PetscCall(m_.system.Solve(du, reactions));
   // An iterate in balance is taken exactly as it was evaluated (the system's
@@ -124,7 +124,7 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
     bool converged = true;
     if (Iterative()) PetscCall(m_.contact->UpdateIterates(du, t.dU, converged));
     t.limit = StepLimit{};
-    const bool may_switch = t.redo < opt_.rmin_max_redo;
+    const bool may_switch = t.redo < opt_.driver.rmin_max_redo;
     PetscCall(m_.body.ScanTrial(du, may_switch, t.limit, switches, t.transitions));
     // Contact releases always apply: they are finite by construction (a node
     // is released at most once per trial and a grazing one then stays), and a
@@ -138,9 +138,9 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
     // With equilibrium iterations one solve locates the events: the iterations
     // of the step that will be taken settle friction and loading states too.
     if (Equilibrium()) break;
-    if (it < opt_.friction_max_iters + opt_.rmin_max_redo) continue;
+    if (it < opt_.driver.friction_max_iters + opt_.driver.rmin_max_redo) continue;
     // -dynamics auto before the switch: the caller turns inertia on instead.
-    if (!last || (opt_.dynamics == Dynamics::Auto && !InertiaActive())) {
+    if (!last || (opt_.driver.dynamics == Dynamics::Auto && !InertiaActive())) {
       t.settled = false;
       PetscFunctionReturn(PETSC_SUCCESS);
     }
@@ -153,7 +153,7 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
   // A step that will be taken (its first event within -rmin_event_tol of its
   // end) is brought into balance; one that r_min will cut is not: its solution
   // only locates the events.
-  if (Equilibrium() && t.limit.r >= 1.0 - opt_.rmin_event_tol) {
+  if (Equilibrium() && t.limit.r >= 1.0 - opt_.driver.rmin_event_tol) {
     const Trial solved = t;
     PetscCall(Balance(lambda, dl, du, t, inc));
     if (!t.settled && last) {
@@ -227,7 +227,7 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
     // Iterations that do not converge (the step crosses too much non-linearity:
     // many points changing their loading state at once) leave the step to be
     // halved, as unsettled friction does.
-    if (residual > kDivergence * first || it >= opt_.friction_max_iters) {
+    if (residual > kDivergence * first || it >= opt_.driver.friction_max_iters) {
       t.settled = false;
       have_iter_ = false;
       PetscFunctionReturn(PETSC_SUCCESS);
@@ -317,7 +317,7 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
       dl *= taken;
       m_.body.ScaleTransitions(taken);
       PetscCall(SettledTrial(lambda, dl, du, t, inc));
-      if (t.limit.r >= 1.0 - opt_.rmin_event_tol) {
+      if (t.limit.r >= 1.0 - opt_.driver.rmin_event_tol) {
         // Within its limits. With inertia, far within: lengthened (kGrowAbove).
         // (Only a step cut by a bound on its size, r2 or r3: an event is where
         // it is, and a re-solved step ends at it.)
@@ -355,7 +355,7 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   // A scaled step ends at its first event; a re-solved one may end past one:
   // within -rmin_event_tol that is the event's location tolerance, beyond it
   // (inertia's shortest step) a compromise.
-  inc.event_inside = resolve && t.limit.r < 1.0 - opt_.rmin_event_tol;
+  inc.event_inside = resolve && t.limit.r < 1.0 - opt_.driver.rmin_event_tol;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -22,17 +22,17 @@ BodyParams MakeBodyParams(const Options &opt)
   BodyParams b;
   b.element = opt.element;
   b.material = opt.material;
-  b.rmin_deps = opt.rmin_deps;
-  b.rmin_deps_yield = opt.rmin_deps_yield;
-  b.rmin_domega = opt.rmin_domega;
-  b.group_tol = opt.rmin_group_tol;
+  b.rmin_deps = opt.driver.rmin_deps;
+  b.rmin_deps_yield = opt.driver.rmin_deps_yield;
+  b.rmin_domega = opt.driver.rmin_domega;
+  b.group_tol = opt.driver.rmin_group_tol;
   // With equilibrium iterations a point yields inside the step on its own path
   // (the update finds the onset); r1 limits the paper's forward increments only.
-  b.yield_inside = opt.rmin_yield == RminYield::Inside || opt.equilibrium_tol > 0;
-  b.yield_tol = opt.rmin_yield_tol;
-  b.drift_correction = opt.drift_correction;
-  b.state_from_strain = opt.equilibrium_tol > 0;
-  b.kinematics = opt.kinematics;
+  b.yield_inside = opt.driver.rmin_yield == RminYield::Inside || opt.driver.equilibrium_tol > 0;
+  b.yield_tol = opt.driver.rmin_yield_tol;
+  b.drift_correction = opt.driver.drift_correction;
+  b.state_from_strain = opt.driver.equilibrium_tol > 0;
+  b.kinematics = opt.driver.kinematics;
   return b;
 }
 
@@ -131,13 +131,13 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
   // 2. Partition and distribute; the global system, the body, inertia.
   PetscCall(mesh_.Create(comm, serial, scene_->BoundarySets()));
   PetscCall(PetscLogEventEnd(Log::mesh, 0, 0, 0, 0));
-  PetscCall(system_.Setup(mesh_, opt_.factorization));
+  PetscCall(system_.Setup(mesh_, opt_.driver.factorization));
   if ((size_ > 1 || opt_.monitor) && !quiet_)
     PetscCall(PetscPrintf(comm_, "tubeform: linear solver: %s\n", system_.solver().c_str()));
   PetscCall(body_.Setup(mesh_, MakeBodyParams(opt_)));
-  if (opt_.dynamics != Dynamics::Quasistatic) {
+  if (opt_.driver.dynamics != Dynamics::Quasistatic) {
     inertia_ = std::make_unique<Inertia>();
-    PetscCall(inertia_->Setup(body_, opt_.material.density, opt_.dynamics == Dynamics::Implicit));
+    PetscCall(inertia_->Setup(body_, opt_.material.density, opt_.driver.dynamics == Dynamics::Implicit));
   }
   model_ = std::make_unique<Model>(Model{comm_, mesh_, system_, body_, nullptr, quiet_});
   path_ = scene_->Path(opt_);
@@ -179,7 +179,7 @@ PetscErrorCode Problem::Open(ResultWriter &writer)
   if (!tools.candidates.empty()) {
     contact_ = std::make_unique<ContactSet>();
     PetscCall(contact_->Setup(mesh_, system_, body_.position(), std::move(tools)));
-    contact_->SetBalanced(opt_.equilibrium_tol > 0);
+    contact_->SetBalanced(opt_.driver.equilibrium_tol > 0);
     PetscCall(contact_->Initialize());
     model_->contact = contact_.get();
   }
@@ -238,8 +238,8 @@ PetscErrorCode Problem::Increments(ResultWriter &writer, OutputSchedule &output,
   const Stages stages = StagesOf(path_);
   double &lambda = at_.lambda;
   PetscInt &inc = at_.inc;
-  const double dl_load = 1.0 / opt_.increments;
-  const double dl_unload = opt_.unload_increments > 0 ? 1.0 / opt_.unload_increments : dl_load;
+  const double dl_load = 1.0 / opt_.driver.increments;
+  const double dl_unload = opt_.driver.unload_increments > 0 ? 1.0 / opt_.driver.unload_increments : dl_load;
   Controller controller(*model_, *scene_, inertia_.get(), opt_, path_.duration);
   controller.SetStartForces(forces_.f_start);
   Vec du = system_.CreateLocalVector();
@@ -321,7 +321,7 @@ PetscErrorCode Problem::BeginIncrement(double lambda)
   PetscCall(scene_->BeginIncrement(*model_, lambda));
   if (contact_) {
     contact_->SetStroke(scene_->ToolStroke(lambda));
-    if (q_count_ > 0) contact_->SetForceResolution(opt_.equilibrium_tol * q_sum_ / q_count_);
+    if (q_count_ > 0) contact_->SetForceResolution(opt_.driver.equilibrium_tol * q_sum_ / q_count_);
     if (contact_->active()) PetscCall(contact_->BeginIncrement());
   }
   PetscFunctionReturn(PETSC_SUCCESS);

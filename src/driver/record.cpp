@@ -209,7 +209,7 @@ PetscErrorCode Problem::WatchEnergy(PetscInt inc, double lambda, const HistoryRo
       "docs/theory.md\n",
       100 * row.energy_error, (int)inc, lambda));
   }
-  diverged_ = std::abs(row.energy_error) > opt_.max_energy_error;
+  diverged_ = std::abs(row.energy_error) > opt_.driver.max_energy_error;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -36,8 +36,8 @@ PetscInt Scaled(PetscInt n, double r, PetscInt multiple)
 Options LevelChange::Applied(const Options &last) const
 {
   Options n = last;
-  n.level = level, n.mesh_nt = mesh_nt, n.mesh_ntheta = mesh_ntheta, n.increments = increments;
-  n.rmin_deps = rmin_deps, n.rmin_deps_yield = rmin_deps_yield, n.rmin_domega = rmin_domega;
+  n.level = level, n.mesh_nt = mesh_nt, n.mesh_ntheta = mesh_ntheta, n.driver.increments = increments;
+  n.driver.rmin_deps = rmin_deps, n.driver.rmin_deps_yield = rmin_deps_yield, n.driver.rmin_domega = rmin_domega;
   ChooseElement(n);
   return n;
 }
@@ -65,8 +65,9 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
     return r;
   }
   LevelChange &c = r.change;
-  c = {level.level + 1, level.mesh_nt,         level.mesh_ntheta, level.increments,
-       level.rmin_deps, level.rmin_deps_yield, level.rmin_domega};
+  c = {level.level + 1,         level.mesh_nt,          level.mesh_ntheta,
+       level.driver.increments, level.driver.rmin_deps, level.driver.rmin_deps_yield,
+       level.driver.rmin_domega};
   if (r.mesh_ratio > 1) {
     // (through the wall a multiple of 4, so that the estimate's companion has an even count: odd ones converge
     // unevenly, docs/accuracy.md, "The element through the wall"; around, a multiple of 4 likewise)
@@ -74,14 +75,15 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
     c.mesh_ntheta = Scaled(level.mesh_ntheta, r.mesh_ratio, 4);
   }
   if (r.step_ratio > 1) {
-    c.increments = Scaled(level.increments, r.step_ratio, 1);
+    c.increments = Scaled(level.driver.increments, r.step_ratio, 1);
     c.rmin_deps /= r.step_ratio, c.rmin_deps_yield /= r.step_ratio, c.rmin_domega /= r.step_ratio;
   }
   r.next = c.Applied(level);
   const Options &n = r.next;
   r.follows = true;
-  r.why = Formatted("level %d follows: %d x %d cells, %d trial increments, increment limits / %.2g (about %.0f s)",
-                    (int)n.level, (int)n.mesh_nt, (int)n.mesh_ntheta, (int)n.increments, r.step_ratio, predicted);
+  r.why =
+    Formatted("level %d follows: %d x %d cells, %d trial increments, increment limits / %.2g (about %.0f s)",
+              (int)n.level, (int)n.mesh_nt, (int)n.mesh_ntheta, (int)n.driver.increments, r.step_ratio, predicted);
   return r;
 }
 

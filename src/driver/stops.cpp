@@ -57,22 +57,22 @@ PetscErrorCode Problem::StopBefore(ResultWriter &writer, const OutputSchedule &o
 {
   PetscFunctionBeginUser;
   // The stall watch ends a load path that no longer advances.
-  if (at_.inc - at_.inc_mark >= opt_.rmin_stall_increments) {
+  if (at_.inc - at_.inc_mark >= opt_.driver.rmin_stall_increments) {
     if (at_.lambda - at_.lambda_mark < kStallAdvance) {
       stop.stalled = true, stop.code = PETSC_ERR_NOT_CONVERGED;
       stop.why = Format("the load path stalled (%s): %d increments (-rmin_stall_increments) advanced lambda by less "
                         "than %g; the history column limiter names what cut them (docs/theory.md, \"Stalls\")",
-                        Where().c_str(), (int)opt_.rmin_stall_increments, kStallAdvance);
+                        Where().c_str(), (int)opt_.driver.rmin_stall_increments, kStallAdvance);
       PetscFunctionReturn(PETSC_SUCCESS);
     }
     at_.lambda_mark = at_.lambda, at_.inc_mark = at_.inc;
   }
   // ... and so does the increment budget (results up to here are written).
-  if (at_.inc == opt_.rmin_max_increments) {
+  if (at_.inc == opt_.driver.rmin_max_increments) {
     stop.code = PETSC_ERR_NOT_CONVERGED;
     stop.why = Format("the load path needs more than -rmin_max_increments %d increments (%s); raise "
                       "-rmin_max_increments or relax -rmin_deps / -rmin_domega",
-                      (int)opt_.rmin_max_increments, Where().c_str());
+                      (int)opt_.driver.rmin_max_increments, Where().c_str());
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   // ... and the clock (-time_limit) and stop signals (rank 0 may be the only
@@ -147,10 +147,10 @@ PetscErrorCode Problem::StopAfter(Stop &stop, bool &wrote_last)
       Format("the energy balance error %.1f %% passed -max_energy_error %g: the solution has left "
              "equilibrium (shorter steps: more -increments, a smaller -rmin_deps; docs/accuracy.md, \"Extremes\") "
              "(%s)",
-             100 * history_.rows().back().energy_error, opt_.max_energy_error, Where().c_str());
-  } else if (unsettled_run_ >= opt_.friction_max_unsettled * kDeepPerUnsettled) {
+             100 * history_.rows().back().energy_error, opt_.driver.max_energy_error, Where().c_str());
+  } else if (unsettled_run_ >= opt_.driver.friction_max_unsettled * kDeepPerUnsettled) {
     stop.code = PETSC_ERR_NOT_CONVERGED, wrote_last = false;
-    const bool balance = opt_.equilibrium_tol > 0; // the equilibrium iterations carry the friction's
+    const bool balance = opt_.driver.equilibrium_tol > 0; // the equilibrium iterations carry the friction's
     const bool inertia = inertia_ && inertia_->active();
     const std::string shorter =
       inertia ? Format(" (and with inertia up to %d times, %d steps settled only so counting as one)", kMaxCutsInertia,

@@ -8,7 +8,6 @@
 #include "tubeform/io/material_library.hpp"
 #include "tubeform/io/option_reader.hpp"
 #include "tubeform/io/tool_options.hpp"
-#include "tubeform/step/rmin.hpp"
 
 namespace tf {
 
@@ -157,103 +156,6 @@ PetscErrorCode ReadMaterial(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Inside the driver's block: the increments and r_min's bounds, the stops, the re-solves, the drift correction.
-PetscErrorCode ReadIncrements(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
-{
-  PetscFunctionBeginUser;
-  PetscCall(read.Int(PetscOptionsObject, "-increments", "Trial increments over the load path (r_min may cut each)",
-                     opt.increments));
-  PetscCall(read.Int(PetscOptionsObject, "-unload_increments",
-                     "Trial increments of the unloading (the path past the end of loading: the tool scenes' "
-                     "springback, the slide scene's later stages); 0: as -increments",
-                     opt.unload_increments));
-  PetscCall(read.Real(PetscOptionsObject, "-rmin_deps", "r2: largest principal strain increment", opt.rmin_deps));
-  PetscCall(read.Real(PetscOptionsObject, "-rmin_deps_yield",
-                      "r2 relative to the material: the strain increment also at most this many initial "
-                      "yield strains sigma_y0 / E (0: off; materials with E / sigma_y in the thousands)",
-                      opt.rmin_deps_yield));
-  PetscCall(read.Real(PetscOptionsObject, "-rmin_domega", "r3: largest rotation increment (rad)", opt.rmin_domega));
-  PetscCall(read.Real(PetscOptionsObject, "-rmin_group_tol",
-                      "Events within (1 + tol) r_min are taken in the same increment", opt.rmin_group_tol));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-rmin_yield",
-                       "onset (paper: r1 ends the step where a point meets the yield surface), inside (points "
-                       "yield inside a step: tangent weighted by the elastic fraction, update split at the onset)",
-                       kRminYieldWords, opt.rmin_yield));
-  PetscCall(read.Real(PetscOptionsObject, "-rmin_yield_tol",
-                      "-rmin_yield inside: re-solve the step while a point's elastic fraction moves by more",
-                      opt.rmin_yield_tol));
-  PetscCall(read.Real(PetscOptionsObject, "-rmin_event_tol",
-                      "Steps that are not linear in r (friction, inertia) are solved again until their first "
-                      "event lies within this fraction of the step's end",
-                      opt.rmin_event_tol));
-  const std::string stall_help =
-    "Stop (results so far written) when this many increments advance the load path by less than " +
-    std::to_string(kStallAdvance);
-  PetscCall(read.Int(PetscOptionsObject, "-rmin_max_increments",
-                     "Stop (results so far written, non-zero exit) after this many increments",
-                     opt.rmin_max_increments));
-  PetscCall(read.Int(PetscOptionsObject, "-rmin_stall_increments", stall_help.c_str(), opt.rmin_stall_increments));
-  PetscCall(read.Int(PetscOptionsObject, "-rmin_max_redo",
-                     "Re-solves per increment when points switch between loading and unloading", opt.rmin_max_redo));
-  PetscCall(read.Bool(PetscOptionsObject, "-drift_correction",
-                      "Scale plastic stresses back onto the yield surface after each update", opt.drift_correction));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// Inside the driver's block: inertia, the equilibrium iterations and the kinematics they choose; the factorization.
-PetscErrorCode ReadDynamics(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
-{
-  PetscFunctionBeginUser;
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-dynamics",
-                       "quasistatic (no inertia), implicit (lumped mass, backward Euler in time), auto "
-                       "(quasi-static until an increment's friction iterations do not settle, implicit from "
-                       "then on)",
-                       kDynamicsWords, opt.dynamics));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-factorization",
-                       "The LU of a system every rank factors whole (one rank, or up to 20,000 dofs): mumps, or klu "
-                       "(cheaper per call up to a few thousand dofs; docs/performance.md, \"Factorization\")",
-                       kFactorizationWords, opt.factorization));
-  PetscCall(read.Real(PetscOptionsObject, "-dynamics_time",
-                      "Duration (s) of the load path lambda 0 -> 1 with -dynamics implicit (scenes without tools)",
-                      opt.dynamics_time));
-  PetscCall(
-    read.Real(PetscOptionsObject, "-punch_speed",
-              "Tool speed (mm/s) with -dynamics implicit in squaring/flattening: the stroke takes stroke / speed",
-              opt.punch_speed));
-  PetscCall(read.Real(PetscOptionsObject, "-equilibrium_tol",
-                      "Equilibrium iterations: largest out-of-balance force on a free dof against the "
-                      "time-averaged nodal force (Abaqus's R_max <= 0.005 q); 0: off, the paper's forward "
-                      "increments",
-                      opt.equilibrium_tol));
-  // auto: midpoint with equilibrium iterations (objective and second order;
-  // the iterations balance the pressure its strain leaves near
-  // incompressibility), forward without them (the paper's increments, which
-  // it keeps in balance best).
-  const char *const schemes[] = {"forward", "midpoint", "auto"};
-  PetscBool set;
-  PetscInt choice = 2;
-  read.Note("-kinematics");
-  PetscCall(PetscOptionsEList(
-    "-kinematics",
-    "Strain/spin increments: forward (start configuration, W sigma - sigma W), midpoint (Hughes-Winget), or "
-    "auto (midpoint with equilibrium iterations, forward without)",
-    "tubeform", schemes, 3, schemes[choice], &choice, &set));
-  if (choice == 2) choice = opt.equilibrium_tol > 0 ? 1 : 0;
-  opt.kinematics = choice == 0 ? ObjectiveScheme::Forward : ObjectiveScheme::Midpoint;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// The incremental driver: increments, r_min, dynamics, equilibrium, kinematics (one group in -help).
-PetscErrorCode ReadDriver(MPI_Comm comm, OptionReader &read, Options &opt)
-{
-  PetscFunctionBeginUser;
-  TF_OPTIONS_BEGIN(comm, "tubeform: incremental driver (r_min method)");
-  PetscCall(ReadIncrements(PetscOptionsObject, read, opt));
-  PetscCall(ReadDynamics(PetscOptionsObject, read, opt));
-  TF_OPTIONS_END();
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 // Inside the loading block: the loads, the tools and their friction, the release.
 PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
@@ -270,11 +172,6 @@ PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &rea
                       opt.friction_vcri));
   PetscCall(read.Real(PetscOptionsObject, "-friction_tol",
                       "Friction iterations: largest change of f_l / (mu f_n) between iterates", opt.friction_tol));
-  PetscCall(read.Int(PetscOptionsObject, "-friction_max_iters", "Friction iterations per increment before giving up",
-                     opt.friction_max_iters));
-  PetscCall(read.Int(PetscOptionsObject, "-friction_max_unsettled",
-                     "Stop when this many increments in a row are taken with friction iterations unsettled",
-                     opt.friction_max_unsettled));
   PetscCall(read.Real(PetscOptionsObject, "-rmin_dphi",
                       "r6, slide to stick: largest fall of the friction mobilization f_l / (mu f_n), towards "
                       "stick or through it into a reversal, in an increment",
@@ -351,10 +248,6 @@ PetscErrorCode ReadOutput(PetscOptionItems *PetscOptionsObject, OptionReader &re
                       "No finer level whose predicted time would bring the job past this many seconds (0: no "
                       "limit): the run ends with its best level, warned",
                       opt.target_time));
-  PetscCall(read.Real(PetscOptionsObject, "-max_energy_error",
-                      "Stop (results so far written, non-zero exit) when the energy balance error (self-check "
-                      "(a)) passes this fraction",
-                      opt.max_energy_error));
   PetscCall(read.Real(PetscOptionsObject, "-time_limit",
                       "Stop after this many seconds of the incremental loop, results up to there written, with "
                       "an error (non-zero exit); 0: no limit",
@@ -381,6 +274,18 @@ PetscErrorCode ReadLoading(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// A layer's own options (the driver's), read by it (one group in -help).
+PetscErrorCode ReadGroup(MPI_Comm comm, const OptionGroup &group, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  if (!group.read) PetscFunctionReturn(PETSC_SUCCESS);
+  const std::string title = "tubeform: " + group.title;
+  TF_OPTIONS_BEGIN(comm, title.c_str());
+  PetscCall(group.read(PetscOptionsObject, read, opt));
+  TF_OPTIONS_END();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 // Each scene's own options, read by the scene (one group in -help per scene that has any).
 PetscErrorCode ReadSceneOptions(MPI_Comm comm, const std::vector<SceneOptions> &scenes, OptionReader &read,
                                 Options &opt)
@@ -398,7 +303,8 @@ PetscErrorCode ReadSceneOptions(MPI_Comm comm, const std::vector<SceneOptions> &
 
 } // namespace
 
-PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<SceneOptions> &scenes, Options &opt)
+PetscErrorCode ReadOptions(MPI_Comm comm, const OptionGroup &driver, const std::vector<SceneOptions> &scenes,
+                           Options &opt)
 {
   OptionReader read; // every option's name, for the check of unknown ones
 
@@ -406,7 +312,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<SceneOptions> &scene
   PetscCall(PetscOptionsHasHelp(nullptr, &opt.help));
   PetscCall(ReadScene(comm, scenes, read, opt));
   PetscCall(ReadMaterial(comm, read, opt));
-  PetscCall(ReadDriver(comm, read, opt));
+  PetscCall(ReadGroup(comm, driver, read, opt));
   PetscCall(ReadLoading(comm, read, opt));
   PetscCall(ReadSceneOptions(comm, scenes, read, opt));
   PetscCall(ReadLowerDieMotion(comm, read, opt)); // (die_motion_options.cpp)
@@ -417,6 +323,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<SceneOptions> &scene
   if (!opt.allow_unused) PetscCall(read.CheckUnknown(comm));
 
   PetscCall(CheckOptions(comm, opt));
+  if (driver.check) PetscCall(driver.check(comm, opt));
   for (const SceneOptions &s : scenes) // (every scene's, given or not: a value out of range is refused all the same)
     if (s.check) PetscCall(s.check(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -3,7 +3,6 @@
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/option_reader.hpp"
 #include "tubeform/io/options.hpp"
-#include "tubeform/step/rmin.hpp"
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -220,34 +219,10 @@ PetscErrorCode CheckTubeAndMesh(MPI_Comm comm, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The driver, the material, the tools and passes, the loads.
-PetscErrorCode CheckDriverAndLoads(MPI_Comm comm, Options &opt)
+// The material, the tools and passes, the loads.
+PetscErrorCode CheckLoads(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCheck(opt.dynamics_time > 0 && std::isfinite(opt.dynamics_time), comm, PETSC_ERR_USER_INPUT,
-             "-dynamics_time %g: the duration of the load path must be positive (s)", opt.dynamics_time);
-  PetscCheck(opt.punch_speed > 0 && std::isfinite(opt.punch_speed), comm, PETSC_ERR_USER_INPUT,
-             "-punch_speed %g: the tool speed must be positive (mm/s)", opt.punch_speed);
-  PetscCheck(opt.increments >= 1 && opt.increments <= 10000000, comm, PETSC_ERR_USER_INPUT,
-             "-increments %d: must be between 1 and 1e7", (int)opt.increments);
-  PetscCheck(opt.rmin_deps > 0 && opt.rmin_deps <= 0.5, comm, PETSC_ERR_USER_INPUT,
-             "-rmin_deps %g: the strain increment limit must lie in (0, 0.5]", opt.rmin_deps);
-  PetscCheck(opt.rmin_deps_yield >= 0 && std::isfinite(opt.rmin_deps_yield), comm, PETSC_ERR_USER_INPUT,
-             "-rmin_deps_yield %g: must be a number of yield strains >= 0 (0: off)", opt.rmin_deps_yield);
-  PetscCheck(opt.rmin_domega > 0 && opt.rmin_domega <= 0.5, comm, PETSC_ERR_USER_INPUT,
-             "-rmin_domega %g: the rotation increment limit must lie in (0, 0.5] rad", opt.rmin_domega);
-  PetscCheck(opt.rmin_yield_tol > 0 && opt.rmin_yield_tol <= 1, comm, PETSC_ERR_USER_INPUT,
-             "-rmin_yield_tol %g: must lie in (0, 1]", opt.rmin_yield_tol);
-  PetscCheck(opt.rmin_group_tol >= 0 && opt.rmin_group_tol <= 1, comm, PETSC_ERR_USER_INPUT,
-             "-rmin_group_tol %g: must lie in [0, 1]", opt.rmin_group_tol);
-  PetscCheck(opt.rmin_event_tol > 0 && opt.rmin_event_tol <= 0.5, comm, PETSC_ERR_USER_INPUT,
-             "-rmin_event_tol %g: must lie in (0, 0.5]", opt.rmin_event_tol);
-  PetscCheck(opt.rmin_max_increments >= 1, comm, PETSC_ERR_USER_INPUT, "-rmin_max_increments %d: must be at least 1",
-             (int)opt.rmin_max_increments);
-  PetscCheck(opt.rmin_stall_increments >= 10, comm, PETSC_ERR_USER_INPUT,
-             "-rmin_stall_increments %d: must be at least 10", (int)opt.rmin_stall_increments);
-  PetscCheck(opt.rmin_max_redo >= 0, comm, PETSC_ERR_USER_INPUT, "-rmin_max_redo %d: must be non-negative",
-             (int)opt.rmin_max_redo);
   PetscCall(CheckMaterial(comm, opt.material));
   PetscCheck(opt.die_profile.empty() || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
@@ -263,13 +238,6 @@ PetscErrorCode CheckDriverAndLoads(MPI_Comm comm, Options &opt)
              "-friction_mu %g: the friction coefficient must lie in [0, 2]", opt.friction_mu);
   PetscCheck(opt.friction_vcri >= 0, comm, PETSC_ERR_USER_INPUT,
              "-friction_vcri %g: must be non-negative (0: automatic)", opt.friction_vcri);
-  PetscCheck(opt.friction_tol > 0 && opt.friction_max_iters >= 1 && opt.friction_max_unsettled >= 1, comm,
-             PETSC_ERR_USER_INPUT,
-             "-friction_tol %g, -friction_max_iters %d, -friction_max_unsettled %d: need tol > 0 and at least one "
-             "iteration and increment",
-             opt.friction_tol, (int)opt.friction_max_iters, (int)opt.friction_max_unsettled);
-  PetscCheck(opt.equilibrium_tol >= 0 && opt.equilibrium_tol < 1, comm, PETSC_ERR_USER_INPUT,
-             "-equilibrium_tol %g: must lie in [0, 1) (0: no equilibrium iterations)", opt.equilibrium_tol);
   PetscCheck(opt.rmin_dphi > 0 && opt.rmin_dphi <= 2, comm, PETSC_ERR_USER_INPUT, "-rmin_dphi %g: must lie in (0, 2]",
              opt.rmin_dphi);
   PetscCheck(opt.rmin_dphi_rise > 0 && opt.rmin_dphi_rise <= 1, comm, PETSC_ERR_USER_INPUT,
@@ -296,14 +264,10 @@ PetscErrorCode CheckOutputAndStops(MPI_Comm comm, Options &opt)
              "-target_levels %d: must be between 1 and %d", (int)opt.target_levels, (int)kMaxTargetLevels);
   PetscCheck(opt.target_time >= 0 && std::isfinite(opt.target_time), comm, PETSC_ERR_USER_INPUT,
              "-target_time %g: must be a number of seconds >= 0 (0: no limit)", opt.target_time);
-  PetscCheck(opt.max_energy_error > 0, comm, PETSC_ERR_USER_INPUT,
-             "-max_energy_error %g: must be a positive fraction (e.g. 0.25)", opt.max_energy_error);
   PetscCheck(opt.time_limit >= 0 && std::isfinite(opt.time_limit), comm, PETSC_ERR_USER_INPUT,
              "-time_limit %g: must be 0 (no limit) or a positive number of seconds", opt.time_limit);
   PetscCheck(opt.progress >= 0 && std::isfinite(opt.progress), comm, PETSC_ERR_USER_INPUT,
              "-progress %g: must be 0 (none) or a positive number of seconds", opt.progress);
-  PetscCheck(opt.unload_increments >= 0, comm, PETSC_ERR_USER_INPUT,
-             "-unload_increments %d: must be at least 1 (or 0: as -increments)", (int)opt.unload_increments);
   PetscCheck(opt.output_stroke >= 0 && opt.output_stroke <= opt.stroke, comm, PETSC_ERR_USER_INPUT,
              "-output_stroke %g: must be between 0 (off) and the stroke %g mm", opt.output_stroke, opt.stroke);
   PetscCheck(!opt.output.empty(), comm, PETSC_ERR_USER_INPUT, "-output: an HDF5 file name is required");
@@ -332,7 +296,7 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckTubeAndMesh(comm, opt));
-  PetscCall(CheckDriverAndLoads(comm, opt));
+  PetscCall(CheckLoads(comm, opt));
   PetscCall(CheckOutputAndStops(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

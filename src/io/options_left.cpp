@@ -124,7 +124,7 @@ PetscErrorCode CheckOptionsLeft(MPI_Comm comm, const Options &opt, PetscInt ndof
   PetscMPIInt size;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(comm, &size));
-  PetscCall(ReadFactorizationOptions(comm, ndofs, opt.factorization, false));
+  PetscCall(ReadFactorizationOptions(comm, ndofs, opt.driver.factorization, false));
   PetscCall(Unread(comm, left));
   const auto &later = OptionsReadLater();
   const auto read_later = [&](const Given &g) {
@@ -137,7 +137,7 @@ PetscErrorCode CheckOptionsLeft(MPI_Comm comm, const Options &opt, PetscInt ndof
 
   // Which of them the factorization the run does not take reads (a failure there: none).
   const std::vector<Given> unread = left;
-  const PetscErrorCode failed = ReadFactorizationOptions(comm, ndofs, opt.factorization, true);
+  const PetscErrorCode failed = ReadFactorizationOptions(comm, ndofs, opt.driver.factorization, true);
   PetscCall(Unread(comm, left));
   const Given &first = unread.front();
   const bool other =

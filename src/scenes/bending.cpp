@@ -49,7 +49,7 @@ public:
     return "-mesh_nt " + std::to_string(opt.mesh_nt) + " through the thickness x -mesh_ntheta " +
            std::to_string(opt.mesh_ntheta) + " along";
   }
-  LoadPath Path(const Options &opt) const override { return strain_.Path(opt.dynamics_time); }
+  LoadPath Path(const Options &opt) const override { return strain_.Path(opt.driver.dynamics_time); }
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     const double de = strain_.Change(lambda, dlambda);

@@ -33,7 +33,7 @@ public:
     return "-mesh_nt " + std::to_string(opt.mesh_nt) + " across x -mesh_ntheta " + std::to_string(opt.mesh_ntheta) +
            " along";
   }
-  LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}, {}}; }
+  LoadPath Path(const Options &opt) const override { return {1.0, opt.driver.dynamics_time, {}, {}}; }
   // The axial force and the end shortening are work-conjugate.
   double LoadWorkShare(double) const override { return 1.0; }
   PetscErrorCode Load(Model &m, double, double dlambda) override

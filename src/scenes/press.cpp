@@ -52,7 +52,7 @@ PressScene::PressScene(const Options &opt, bool squaring)
 
 LoadPath PressScene::Path(const Options &opt) const
 {
-  const double t = path_.travel() / opt.punch_speed;                               // (the press's duration)
+  const double t = path_.travel() / opt.driver.punch_speed;                        // (the press's duration)
   const std::vector<double> kinks = path_.Kinks(PressKinks(opt_, path_.travel())); // (where the dies' motions turn)
   if (passes_.size() == 1)
     return {opt_.unload == Unload::None ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};

@@ -21,7 +21,7 @@ public:
   {}
   std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
-  LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}, {}}; }
+  LoadPath Path(const Options &opt) const override { return {1.0, opt.driver.dynamics_time, {}, {}}; }
 
   PetscErrorCode BeginIncrement(Model &m, double) override
   {

@@ -14,7 +14,7 @@ namespace {
 class RotationScene : public BlockScene {
 public:
   using BlockScene::BlockScene;
-  LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {kStretch}, {}}; }
+  LoadPath Path(const Options &opt) const override { return {1.0, opt.driver.dynamics_time, {kStretch}, {}}; }
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     if (lambda < kStretch - kLambdaTol) {

@@ -33,8 +33,8 @@ public:
   }
   LoadPath Path(const Options &opt) const override
   {
-    if (opt.slide.back > 0) return {3.0, opt.dynamics_time, {1.0, 2.0}, {}};
-    return {2.0, opt.dynamics_time, {1.0}, {}};
+    if (opt.slide.back > 0) return {3.0, opt.driver.dynamics_time, {1.0, 2.0}, {}};
+    return {2.0, opt.driver.dynamics_time, {1.0}, {}};
   }
   // While the top is pushed, T and its displacement are work-conjugate.
   double LoadWorkShare(double lambda) const override { return lambda > 1.0 ? 1.0 : 0.0; }

@@ -20,7 +20,7 @@ public:
   explicit ArcSlideScene(const Options &opt) : opt_(opt) {}
   std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
-  LoadPath Path(const Options &opt) const override { return {2.0, opt.dynamics_time, {1.0}, {}}; }
+  LoadPath Path(const Options &opt) const override { return {2.0, opt.driver.dynamics_time, {1.0}, {}}; }
   // While the inner surface is turned, the moment and the turn are work-conjugate.
   double LoadWorkShare(double lambda) const override { return lambda > 1.0 ? 1.0 : 0.0; }
   PetscErrorCode Initialize(Model &, ContactSpec &tools) override

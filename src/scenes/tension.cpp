@@ -14,7 +14,7 @@ namespace {
 class TensionScene : public BlockScene {
 public:
   explicit TensionScene(const Options &opt) : BlockScene(opt), strain_(opt.tension.strain, opt.tension.cycle) {}
-  LoadPath Path(const Options &opt) const override { return strain_.Path(opt.dynamics_time); }
+  LoadPath Path(const Options &opt) const override { return strain_.Path(opt.driver.dynamics_time); }
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     for (PetscInt n : m.mesh.node_sets["left"]) m.system.Prescribe(n, 0, 0.0);

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "tubeform/driver/driver_options.hpp"
 #include "tubeform/io/options.hpp"
 #include "tubeform/material/factory.hpp"
 #include "tubeform/scenes/registry.hpp"
@@ -46,7 +47,7 @@ void UseOptions(const tf::Options &opt)
     (void)scene->Path(opt);
     (void)scene->ToolStroke(0.5);
   }
-  auto law = tf::MakeMaterial(opt.material, opt.rmin_deps, opt.drift_correction);
+  auto law = tf::MakeMaterial(opt.material, opt.driver.rmin_deps, opt.driver.drift_correction);
   if (!law->plastic_law()) return;
   for (double ep : opt.material.table) (void)law->YieldStress(ep), (void)law->YieldStress(0.5 * ep);
   tf::PointState s;
@@ -80,7 +81,7 @@ PetscErrorCode ReadOnce()
   tf::Options opt;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsInsertFile(PETSC_COMM_WORLD, nullptr, path.c_str(), PETSC_TRUE));
-  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::SceneReaders(), opt));
+  PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::DriverOptions(), tf::SceneReaders(), opt));
   if (!opt.help) UseOptions(opt);
   PetscFunctionReturn(PETSC_SUCCESS);
 }

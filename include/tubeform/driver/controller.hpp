@@ -122,14 +122,14 @@ private:
     if (ContactActive()) m_.contact->set_pad_step(step);
   }
 
-  bool Equilibrium() const { return opt_.equilibrium_tol > 0; }
+  bool Equilibrium() const { return opt_.driver.equilibrium_tol > 0; }
   bool ContactActive() const { return m_.contact && m_.contact->active(); }
   // The internal force and mean nodal force magnitude (q_iter_) of the state du would reach.
   PetscErrorCode TrialState(Vec du);
   bool Iterative() const { return ContactActive() && m_.contact->friction(); }
   bool InertiaActive() const { return inertia_ && inertia_->active(); }
   // The shortest step inertia allows, as a fraction of a step of dl.
-  double MinStepFraction(double dl) const { return kMinDynamicStep / (opt_.increments * dl); }
+  double MinStepFraction(double dl) const { return kMinDynamicStep / (opt_.driver.increments * dl); }
   // A contact node whose force would vanish within this fraction of a step of
   // dl is released in the trial rather than cutting it: round-off
   // quasi-statically, the shortest step inertia allows otherwise.

@@ -12,6 +12,7 @@
 #include "tubeform/body/body.hpp"
 #include "tubeform/contact/contact.hpp"
 #include "tubeform/fe/quad.hpp"
+#include "tubeform/io/driver_params.hpp"
 #include "tubeform/io/scene_params.hpp"
 #include "tubeform/material/elastic.hpp"
 #include "tubeform/tool/motion.hpp"
@@ -25,10 +26,6 @@ constexpr const char *WordOf(const char *const (&words)[N], E value)
   return words[static_cast<size_t>(value)];
 }
 
-// Inertia: none, always, or switched on at the first increment whose friction
-// iterations do not settle in quasi-static steps (docs/theory.md, "Inertia").
-enum class Dynamics { Quasistatic, Implicit, Auto };
-inline constexpr const char *kDynamicsWords[] = {"quasistatic", "implicit", "auto"};
 // How a press is released after loading (-unload): its contact forces reversed and the dies removed (the paper's),
 // the dies moved back, or not at all. The words of the option in the enumerators' order.
 enum class Unload { Reverse, Withdraw, None };
@@ -43,12 +40,6 @@ inline constexpr const char *kModelWords[] = {"auto", "quarter", "half", "full"}
 // The full model's support (-full_hold): auto (HeldByRotation), its axis pins, or the rotation hold.
 enum class FullHold { Auto, Pins, Rotation };
 inline constexpr const char *kFullHoldWords[] = {"auto", "pins", "rotation"};
-// Where r1 ends a step (-rmin_yield): at each yield onset (the paper's), or points yield inside steps.
-enum class RminYield { Onset, Inside };
-inline constexpr const char *kRminYieldWords[] = {"onset", "inside"};
-
-// The words of -factorization and -error_estimate_factorization, in Factorization's order (assembly/linear_solver.hpp).
-inline constexpr const char *kFactorizationWords[] = {"mumps", "klu"};
 
 // An option tubeform reads: its name (with the dash) and its -help text.
 struct KnownOption {
@@ -102,36 +93,11 @@ struct Options {
   PetscInt element_bar_nt = 5; // -element auto: qm6bar from this many cells through the wall on
   // Material
   MaterialParams material;
-  // Incremental driver (docs/theory.md, section 5)
-  PetscInt increments = 10;                              // trial increments over the load path
-  PetscInt unload_increments = 0;                        // > 0: trial increments per unit of the path past lambda 1
-  double rmin_deps = BodyParams{}.rmin_deps;             // r2: largest principal strain increment
-  double rmin_deps_yield = BodyParams{}.rmin_deps_yield; // r2 also at most this many yield strains (0: off)
-  double rmin_domega = BodyParams{}.rmin_domega;         // r3: largest rotation increment (rad)
-  double rmin_group_tol = BodyParams{}.group_tol;        // events within (1 + tol) r_min are taken together
-  RminYield rmin_yield = RminYield::Onset; // onset: r1 ends a step at each yield onset; inside: points yield inside
-  double rmin_yield_tol = BodyParams{}.yield_tol; // inside: re-solve while an elastic fraction moves by more
-  double rmin_event_tol = 1e-2;                   // re-solved steps locate their events to this fraction of the step
-  PetscInt rmin_max_increments = 100000;
-  PetscInt rmin_stall_increments = 1000; // stop when this many increments advance lambda by < kStallAdvance
-  PetscInt rmin_max_redo = 10;           // re-solves per increment for loading/unloading switches
-  PetscInt friction_max_iters = 30;
-  // An unsettled step is a counted compromise; this many in a row means the
-  // iterations no longer converge at any step size: the run stops.
-  PetscInt friction_max_unsettled = 50;
-  PetscBool drift_correction = PETSC_FALSE;
-  Factorization factorization = Factorization::Mumps; // where every rank factors the whole matrix (-factorization)
-  // Equilibrium iterations in every increment: the largest out-of-balance force
-  // on a free dof at most this fraction of the time-averaged nodal force (0: off,
-  // the paper's forward increments).
-  double equilibrium_tol = 0.005;
-  Dynamics dynamics = Dynamics::Quasistatic;             // implicit/auto: lumped mass, backward Euler
-  double dynamics_time = 1.0;                            // s for lambda 0 -> 1 (scenes without tools)
-  double punch_speed = 1.0;                              // mm/s (tool scenes: duration = stroke / speed)
-  ObjectiveScheme kinematics = ObjectiveScheme::Forward; // docs/theory.md, section 2
-  double stroke = 4.2;                                   // final tool stroke / prescribed end displacement (mm)
-  double stroke_corner_radius = 0;                       // > 0: stroke from the paper's corner-radius rule
-  std::vector<double> stroke_path;                       // tool scenes: the die's strokes in turn (empty: 0 to -stroke)
+  // The incremental driver's (io/driver_params.hpp; read and checked by the driver).
+  DriverParams driver;
+  double stroke = 4.2;             // final tool stroke / prescribed end displacement (mm)
+  double stroke_corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
+  std::vector<double> stroke_path; // tool scenes: the die's strokes in turn (empty: 0 to -stroke)
   // Tools, contact, friction (docs/dies.md; docs/theory.md, section 6)
   double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
   std::string die_profile;             // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
@@ -168,9 +134,6 @@ struct Options {
   PetscInt checkpoint_every = 0; // increments between checkpoints (0: only when a signal or -time_limit stops the run)
   std::string restart;           // checkpoint to continue from
   double output_stroke = 0;      // > 0: fields every this much stroke (mm) instead of every output_every increments
-  // Stop (results written) when the energy balance error passes this: a quarter of the work
-  // unaccounted for means the load-stroke curve is no longer a solution.
-  double max_energy_error = 0.25;
   // The run's estimate of its own error (tool scenes, driver/answer.hpp), and
   // the accuracy it is held to: a target demanded (a finer level where the
   // estimate passes it), else the preset's expectation (a warning).
@@ -200,10 +163,20 @@ struct SceneOptions {
   PetscErrorCode (*check)(MPI_Comm comm, const Options &opt) = nullptr;
 };
 
-// Collective: reads and validates the options; `scenes` are the scenes -scene
-// accepts, with their own options. Errors are PETSC_ERR_USER_INPUT with a
-// message naming the option and what is allowed.
-PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<SceneOptions> &scenes, Options &opt);
+// The reader and checker of the options of a layer above io (the driver's: driver/driver_options.hpp), handed to
+// ReadOptions from above as the scenes' are: the reader lists them in -help under "tubeform: <title>" (between
+// PetscOptionsBegin and PetscOptionsEnd, whose PetscOptionsObject it takes), the checker refuses their bad values in
+// one line naming the option.
+struct OptionGroup {
+  std::string title;
+  PetscErrorCode (*read)(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt) = nullptr;
+  PetscErrorCode (*check)(MPI_Comm comm, const Options &opt) = nullptr;
+};
+
+// Collective: reads and validates the options; `driver` the driver's own, `scenes` the scenes -scene accepts, with
+// their own options. Errors are PETSC_ERR_USER_INPUT with a message naming the option and what is allowed.
+PetscErrorCode ReadOptions(MPI_Comm comm, const OptionGroup &driver, const std::vector<SceneOptions> &scenes,
+                           Options &opt);
 // Collective: refuses values out of range (called by ReadOptions).
 PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt);
 // Collective: refuses a later pass's stroke, dies (called by CheckOptions, passes_check.cpp) and turns out of

@@ -23,7 +23,7 @@ public:
   {
     return "-mesh_nt " + std::to_string(opt.mesh_nt) + " x " + std::to_string(opt.mesh_nt) + " on the unit square";
   }
-  LoadPath Path(const Options &opt) const override { return {1.0, opt.dynamics_time, {}, {}}; }
+  LoadPath Path(const Options &opt) const override { return {1.0, opt.driver.dynamics_time, {}, {}}; }
   PetscErrorCode ExternalForce(Model &, double, Vec f) override { return VecZeroEntries(f); }
 
 protected:

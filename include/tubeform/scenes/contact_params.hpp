@@ -15,8 +15,8 @@ inline ContactParams MakeContactParams(const Options &opt, double default_vcri)
   prm.dphi_max = opt.rmin_dphi;
   prm.dphi_rise = opt.rmin_dphi_rise;
   prm.tol = opt.friction_tol;
-  prm.group_tol = opt.rmin_group_tol;
-  prm.turn_max = opt.rmin_domega; // (a tool's turn taken linear in a step as the body's rotations are)
+  prm.group_tol = opt.driver.rmin_group_tol;
+  prm.turn_max = opt.driver.rmin_domega; // (a tool's turn taken linear in a step as the body's rotations are)
   return prm;
 }
 
