@@ -142,11 +142,11 @@ PetscErrorCode CheckDriverOptions(MPI_Comm comm, const Options &opt)
              "-rmin_stall_increments %d: must be at least 10", (int)d.rmin_stall_increments);
   PetscCheck(d.rmin_max_redo >= 0, comm, PETSC_ERR_USER_INPUT, "-rmin_max_redo %d: must be non-negative",
              (int)d.rmin_max_redo);
-  PetscCheck(opt.friction_tol > 0 && d.friction_max_iters >= 1 && d.friction_max_unsettled >= 1, comm,
+  PetscCheck(opt.friction.tol > 0 && d.friction_max_iters >= 1 && d.friction_max_unsettled >= 1, comm,
              PETSC_ERR_USER_INPUT,
              "-friction_tol %g, -friction_max_iters %d, -friction_max_unsettled %d: need tol > 0 and at least one "
              "iteration and increment",
-             opt.friction_tol, (int)d.friction_max_iters, (int)d.friction_max_unsettled);
+             opt.friction.tol, (int)d.friction_max_iters, (int)d.friction_max_unsettled);
   PetscCheck(d.equilibrium_tol >= 0 && d.equilibrium_tol < 1, comm, PETSC_ERR_USER_INPUT,
              "-equilibrium_tol %g: must lie in [0, 1) (0: no equilibrium iterations)", d.equilibrium_tol);
   PetscCheck(d.max_energy_error > 0, comm, PETSC_ERR_USER_INPUT,

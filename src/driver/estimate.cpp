@@ -19,7 +19,7 @@ Options Kept(const Options &opt, double vcri)
 {
   Options ran = opt;
   ran.element_auto = false;
-  if (vcri > 0) ran.friction_vcri = vcri;
+  if (vcri > 0) ran.friction.vcri = vcri;
   return ran;
 }
 

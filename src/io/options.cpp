@@ -5,6 +5,7 @@
 #include <initializer_list>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/io/friction_options.hpp"
 #include "tubeform/io/material_library.hpp"
 #include "tubeform/io/option_reader.hpp"
 #include "tubeform/io/tool_options.hpp"
@@ -165,20 +166,6 @@ PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &rea
   PetscCall(read.Real(PetscOptionsObject, "-stroke_corner_radius", "The paper's rule: the rounded square's corner (mm)",
                       opt.stroke_corner_radius));
   PetscCall(ReadToolOptions(PetscOptionsObject, read, opt)); // (tool_options.cpp)
-  PetscCall(read.Real(PetscOptionsObject, "-friction_mu",
-                      "Coulomb friction coefficient (0: frictionless, no friction work at all)", opt.friction_mu));
-  PetscCall(read.Real(PetscOptionsObject, "-friction_vcri",
-                      "Quasi-stick slip VCRI (mm) of the tanh law; 0: 2% of the circumferential element size",
-                      opt.friction_vcri));
-  PetscCall(read.Real(PetscOptionsObject, "-friction_tol",
-                      "Friction iterations: largest change of f_l / (mu f_n) between iterates", opt.friction_tol));
-  PetscCall(read.Real(PetscOptionsObject, "-rmin_dphi",
-                      "r6, slide to stick: largest fall of the friction mobilization f_l / (mu f_n), towards "
-                      "stick or through it into a reversal, in an increment",
-                      opt.rmin_dphi));
-  PetscCall(read.Real(PetscOptionsObject, "-rmin_dphi_rise",
-                      "r6, stick to slide: largest rise of |f_l / (mu f_n)| in an increment (1: no bound)",
-                      opt.rmin_dphi_rise));
   PetscCall(
     ChooseWord(PetscOptionsObject, read, "-unload",
                "Springback: reverse (paper: contact forces reversed, tools removed), withdraw (tools move back), none",
@@ -314,6 +301,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const OptionGroup &driver, const std::
   PetscCall(ReadMaterial(comm, read, opt));
   PetscCall(ReadGroup(comm, driver, read, opt));
   PetscCall(ReadLoading(comm, read, opt));
+  PetscCall(ReadFrictionOptions(comm, read, opt)); // (friction_options.cpp)
   PetscCall(ReadSceneOptions(comm, scenes, read, opt));
   PetscCall(ReadLowerDieMotion(comm, read, opt)); // (die_motion_options.cpp)
   PetscCall(ReadUpperDieMotion(comm, read, opt));

@@ -1,6 +1,7 @@
 // The validation of the options ReadOptions has read: one message per
 // problem, naming the option and the range it allows.
 #include "tubeform/core/core.hpp"
+#include "tubeform/io/friction_options.hpp"
 #include "tubeform/io/option_reader.hpp"
 #include "tubeform/io/options.hpp"
 #include <cmath>
@@ -234,14 +235,7 @@ PetscErrorCode CheckLoads(MPI_Comm comm, Options &opt)
              "-die_r_apex %g: must lie in [0, -tube_ro)", opt.die_r_apex);
   PetscCheck(opt.die_u_close >= 0 && opt.die_r_edge >= 0, comm, PETSC_ERR_USER_INPUT,
              "-die_u_close %g, -die_r_edge %g: must be non-negative", opt.die_u_close, opt.die_r_edge);
-  PetscCheck(opt.friction_mu >= 0 && opt.friction_mu <= 2, comm, PETSC_ERR_USER_INPUT,
-             "-friction_mu %g: the friction coefficient must lie in [0, 2]", opt.friction_mu);
-  PetscCheck(opt.friction_vcri >= 0, comm, PETSC_ERR_USER_INPUT,
-             "-friction_vcri %g: must be non-negative (0: automatic)", opt.friction_vcri);
-  PetscCheck(opt.rmin_dphi > 0 && opt.rmin_dphi <= 2, comm, PETSC_ERR_USER_INPUT, "-rmin_dphi %g: must lie in (0, 2]",
-             opt.rmin_dphi);
-  PetscCheck(opt.rmin_dphi_rise > 0 && opt.rmin_dphi_rise <= 1, comm, PETSC_ERR_USER_INPUT,
-             "-rmin_dphi_rise %g: must lie in (0, 1]", opt.rmin_dphi_rise);
+  PetscCall(CheckFrictionOptions(comm, opt.friction)); // (friction_options.cpp)
   PetscCheck(opt.stroke_corner_radius >= 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_corner_radius %g: must be non-negative", opt.stroke_corner_radius);
   PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);

@@ -13,6 +13,7 @@
 #include "tubeform/contact/contact.hpp"
 #include "tubeform/fe/quad.hpp"
 #include "tubeform/io/driver_params.hpp"
+#include "tubeform/io/friction_params.hpp"
 #include "tubeform/io/scene_params.hpp"
 #include "tubeform/material/elastic.hpp"
 #include "tubeform/tool/motion.hpp"
@@ -112,10 +113,7 @@ struct Options {
   std::vector<PassSpec> more_passes = std::vector<PassSpec>(kMaxPasses - 1);
   std::string side_die = "none"; // side dies pressing along x by the stroke: none, mirror, flat or a profile file
   double side_force = 0;         // side dies pressing with this force (N/mm, each), their travel unknown (0: stroke)
-  double friction_mu = 0.05, friction_vcri = 0; // vcri 0: 2 % of the circumferential element size
-  double friction_tol = ContactParams{}.tol;
-  double rmin_dphi = ContactParams{}.dphi_max;       // r6: largest fall of f_l / (mu f_n) towards stick in an increment
-  double rmin_dphi_rise = ContactParams{}.dphi_rise; // r6: largest rise of |f_l / (mu f_n)| (stick to slide)
+  FrictionParams friction;       // the contact and friction options (io/friction_params.hpp; read and checked by io)
   Unload unload = Unload::Reverse;
   Springback springback = Springback::Auto;
   // The scenes without tools' own parameters (io/scene_params.hpp; each read and checked by its scene).

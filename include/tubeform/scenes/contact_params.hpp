@@ -10,11 +10,11 @@ namespace tf {
 inline ContactParams MakeContactParams(const Options &opt, double default_vcri)
 {
   ContactParams prm;
-  prm.mu = opt.friction_mu;
-  prm.vcri = opt.friction_vcri > 0 ? opt.friction_vcri : default_vcri;
-  prm.dphi_max = opt.rmin_dphi;
-  prm.dphi_rise = opt.rmin_dphi_rise;
-  prm.tol = opt.friction_tol;
+  prm.mu = opt.friction.mu;
+  prm.vcri = opt.friction.vcri > 0 ? opt.friction.vcri : default_vcri;
+  prm.dphi_max = opt.friction.rmin_dphi;
+  prm.dphi_rise = opt.friction.rmin_dphi_rise;
+  prm.tol = opt.friction.tol;
   prm.group_tol = opt.driver.rmin_group_tol;
   prm.turn_max = opt.driver.rmin_domega; // (a tool's turn taken linear in a step as the body's rotations are)
   return prm;
