@@ -72,8 +72,8 @@ Options CompanionQuiet(const Options &ran)
   c.checkpoint_every = 0;
   c.progress = 0, c.monitor = PETSC_FALSE;
   c.output_every = std::numeric_limits<int>::max(), c.output_stroke = 0;
-  c.error_estimate = PETSC_FALSE;
-  c.target_load = c.target_c_over_t = 0;
+  c.accuracy.error_estimate = PETSC_FALSE;
+  c.accuracy.target_load = c.accuracy.target_c_over_t = 0;
   return c;
 }
 
@@ -113,7 +113,7 @@ PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out,
 {
   Options mesh = CompanionQuiet(ran);
   // (a quarter of the run's cells: MUMPS's per-call cost dominates)
-  mesh.driver.factorization = ran.estimate_factorization;
+  mesh.driver.factorization = ran.accuracy.estimate_factorization;
   double seconds[2] = {0, 0};
   PetscMPIInt size;
   PetscFunctionBeginUser;

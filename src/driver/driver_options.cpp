@@ -1,8 +1,10 @@
-// The incremental driver's own options: read into Options::driver and checked (one line naming the option).
+// The incremental driver's own options: read into Options::driver and Options::accuracy and checked (one line naming
+// the option).
 #include "tubeform/driver/driver_options.hpp"
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/option_reader.hpp"
@@ -156,6 +158,67 @@ PetscErrorCode CheckDriverOptions(MPI_Comm comm, const Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-OptionGroup DriverOptions() { return {"incremental driver (r_min method)", ReadDriverOptions, CheckDriverOptions}; }
+// The accuracy group: whether the run estimates its own error (and the companions' LU), the accuracy demanded of it
+// (a finer level where the estimate passes it) or expected by its preset (a warning), and the levels' bounds.
+PetscErrorCode ReadAccuracyOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+{
+  AccuracyParams &a = opt.accuracy;
+
+  PetscFunctionBeginUser;
+  PetscCall(read.Bool(PetscOptionsObject, "-error_estimate",
+                      "Estimate the error of the load and C/t (tool scenes), the mesh's part and the increments', "
+                      "from two companion runs after the main run (docs/accuracy.md, \"The error estimate\")",
+                      a.error_estimate));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-error_estimate_factorization",
+                       "The companion runs' LU (as -factorization): klu, cheaper per call on their few hundred dofs, "
+                       "or mumps",
+                       kFactorizationWords, a.estimate_factorization));
+  PetscCall(read.Real(PetscOptionsObject, "-target_load",
+                      "Accuracy demanded of the load (relative; 0: none): where the estimate passes it, the run "
+                      "goes on at a finer level (docs/accuracy.md, \"Accuracy on demand\")",
+                      a.target_load));
+  PetscCall(read.Real(PetscOptionsObject, "-target_c_over_t",
+                      "Accuracy demanded of C/t (absolute; 0: none), as "
+                      "-target_load",
+                      a.target_c_over_t));
+  PetscCall(read.Real(PetscOptionsObject, "-expect_load",
+                      "The load's accuracy the discretization is expected to give (relative; the presets set it; "
+                      "0: none): an estimate above it is a warning (a -target_load replaces it)",
+                      a.expect_load));
+  PetscCall(
+    read.Real(PetscOptionsObject, "-expect_c_over_t", "As -expect_load, for C/t (absolute)", a.expect_c_over_t));
+  PetscCall(read.Int(PetscOptionsObject, "-target_levels",
+                     "Most levels a -target_load or -target_c_over_t runs "
+                     "(the first included)",
+                     a.target_levels));
+  PetscCall(read.Real(PetscOptionsObject, "-target_time",
+                      "No finer level whose predicted time would bring the job past this many seconds (0: no "
+                      "limit): the run ends with its best level, warned",
+                      a.target_time));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckAccuracyOptions(MPI_Comm comm, const Options &opt)
+{
+  const AccuracyParams &a = opt.accuracy;
+  PetscFunctionBeginUser;
+  PetscCheck(a.target_load >= 0 && a.target_load < 1 && a.target_c_over_t >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-target_load %g, -target_c_over_t %g: must be a fraction in [0, 1) and a non-negative C/t", a.target_load,
+             a.target_c_over_t);
+  PetscCheck(a.expect_load >= 0 && a.expect_load < 1 && a.expect_c_over_t >= 0, comm, PETSC_ERR_USER_INPUT,
+             "-expect_load %g, -expect_c_over_t %g: must be a fraction in [0, 1) and a non-negative C/t", a.expect_load,
+             a.expect_c_over_t);
+  PetscCheck(a.target_levels >= 1 && a.target_levels <= kMaxTargetLevels, comm, PETSC_ERR_USER_INPUT,
+             "-target_levels %d: must be between 1 and %d", (int)a.target_levels, (int)kMaxTargetLevels);
+  PetscCheck(a.target_time >= 0 && std::isfinite(a.target_time), comm, PETSC_ERR_USER_INPUT,
+             "-target_time %g: must be a number of seconds >= 0 (0: no limit)", a.target_time);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+std::vector<OptionGroup> DriverOptions()
+{
+  return {{"incremental driver (r_min method)", ReadDriverOptions, CheckDriverOptions},
+          {"error estimate and accuracy", ReadAccuracyOptions, CheckAccuracyOptions}};
+}
 
 } // namespace tf

@@ -59,10 +59,10 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     a.stroke_name = scene_->StrokeName(), a.load_unit = scene_->LoadUnit();
     TakePassStarts(scene_metrics, a);
     a.mesh_covered = opt_.mesh_file.empty();
-    // (the accuracy held to: the one demanded, else the preset's expectation)
-    a.target_load = opt_.target_load > 0 ? opt_.target_load : opt_.expect_load;
-    a.target_ct = opt_.target_c_over_t > 0 ? opt_.target_c_over_t : opt_.expect_c_over_t;
-    a.demanded = opt_.target_load > 0 || opt_.target_c_over_t > 0;
+    const AccuracyParams &held = opt_.accuracy; // (the accuracy held to: the one demanded, else the preset's)
+    a.target_load = held.target_load > 0 ? held.target_load : held.expect_load;
+    a.target_ct = held.target_c_over_t > 0 ? held.target_c_over_t : held.expect_c_over_t;
+    a.demanded = held.target_load > 0 || held.target_c_over_t > 0;
     a.release =
       opt_.unload == Unload::Withdraw ? "the dies withdrawn" : "the contact forces reversed, the dies removed";
     return a;

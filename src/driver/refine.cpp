@@ -45,12 +45,13 @@ Options LevelChange::Applied(const Options &last) const
 Refinement NextLevel(const Options &level, const Answer &a, double level_seconds, double job_seconds)
 {
   Refinement r;
-  const double load = level.target_load, ct = a.tool ? level.target_c_over_t : 0; // (demanded: 0 none)
+  const AccuracyParams &held = level.accuracy;
+  const double load = held.target_load, ct = a.tool ? held.target_c_over_t : 0; // (demanded: 0 none)
   if (!a.estimated || !a.mesh_covered ||
       !((load > 0 && a.worst_load_error > load) || (ct > 0 && a.worst_ct_error > ct)))
     return r;
-  if (level.level >= level.target_levels) {
-    r.why = Formatted("this was level %d of -target_levels %d", (int)level.level, (int)level.target_levels);
+  if (level.level >= held.target_levels) {
+    r.why = Formatted("this was level %d of -target_levels %d", (int)level.level, (int)held.target_levels);
     return r;
   }
   Ratios(a.worst_load, load, r.mesh_ratio, r.step_ratio);
@@ -60,8 +61,8 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
   // The cost of a level: its cells times its increments, the factorization's growing faster than the cells
   // (a 2D direct solve: about n^1.5, so the ratio cubed).
   const double predicted = level_seconds * std::pow(r.mesh_ratio, 3) * r.step_ratio;
-  if (level.target_time > 0 && job_seconds + predicted > level.target_time) {
-    r.why = Formatted("the next level (about %.0f s) would pass -target_time %g s", predicted, level.target_time);
+  if (held.target_time > 0 && job_seconds + predicted > held.target_time) {
+    r.why = Formatted("the next level (about %.0f s) would pass -target_time %g s", predicted, held.target_time);
     return r;
   }
   LevelChange &c = r.change;

@@ -180,7 +180,7 @@ PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &rea
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Inside the loading block: the output, the error estimate and accuracy, the stops and what is printed.
+// Inside the loading block: the output, the stops and what is printed.
 PetscErrorCode ReadOutput(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
@@ -205,36 +205,6 @@ PetscErrorCode ReadOutput(PetscOptionItems *PetscOptionsObject, OptionReader &re
                       "Write fields each time the loading advances this much stroke (mm; later stages: the same "
                       "fraction of the stage) and at every stage end; 0: every -output_every increments",
                       opt.output_stroke));
-  PetscCall(read.Bool(PetscOptionsObject, "-error_estimate",
-                      "Estimate the error of the load and C/t (tool scenes), the mesh's part and the increments', "
-                      "from two companion runs after the main run (docs/accuracy.md, \"The error estimate\")",
-                      opt.error_estimate));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-error_estimate_factorization",
-                       "The companion runs' LU (as -factorization): klu, cheaper per call on their few hundred dofs, "
-                       "or mumps",
-                       kFactorizationWords, opt.estimate_factorization));
-  PetscCall(read.Real(PetscOptionsObject, "-target_load",
-                      "Accuracy demanded of the load (relative; 0: none): where the estimate passes it, the run "
-                      "goes on at a finer level (docs/accuracy.md, \"Accuracy on demand\")",
-                      opt.target_load));
-  PetscCall(read.Real(PetscOptionsObject, "-target_c_over_t",
-                      "Accuracy demanded of C/t (absolute; 0: none), as "
-                      "-target_load",
-                      opt.target_c_over_t));
-  PetscCall(read.Real(PetscOptionsObject, "-expect_load",
-                      "The load's accuracy the discretization is expected to give (relative; the presets set it; "
-                      "0: none): an estimate above it is a warning (a -target_load replaces it)",
-                      opt.expect_load));
-  PetscCall(
-    read.Real(PetscOptionsObject, "-expect_c_over_t", "As -expect_load, for C/t (absolute)", opt.expect_c_over_t));
-  PetscCall(read.Int(PetscOptionsObject, "-target_levels",
-                     "Most levels a -target_load or -target_c_over_t runs "
-                     "(the first included)",
-                     opt.target_levels));
-  PetscCall(read.Real(PetscOptionsObject, "-target_time",
-                      "No finer level whose predicted time would bring the job past this many seconds (0: no "
-                      "limit): the run ends with its best level, warned",
-                      opt.target_time));
   PetscCall(read.Real(PetscOptionsObject, "-time_limit",
                       "Stop after this many seconds of the incremental loop, results up to there written, with "
                       "an error (non-zero exit); 0: no limit",
@@ -290,8 +260,8 @@ PetscErrorCode ReadSceneOptions(MPI_Comm comm, const std::vector<SceneOptions> &
 
 } // namespace
 
-PetscErrorCode ReadOptions(MPI_Comm comm, const OptionGroup &driver, const std::vector<SceneOptions> &scenes,
-                           Options &opt)
+PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups,
+                           const std::vector<SceneOptions> &scenes, Options &opt)
 {
   OptionReader read; // every option's name, for the check of unknown ones
 
@@ -299,7 +269,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const OptionGroup &driver, const std::
   PetscCall(PetscOptionsHasHelp(nullptr, &opt.help));
   PetscCall(ReadScene(comm, scenes, read, opt));
   PetscCall(ReadMaterial(comm, read, opt));
-  PetscCall(ReadGroup(comm, driver, read, opt));
+  for (const OptionGroup &group : groups) PetscCall(ReadGroup(comm, group, read, opt));
   PetscCall(ReadLoading(comm, read, opt));
   PetscCall(ReadFrictionOptions(comm, read, opt)); // (friction_options.cpp)
   PetscCall(ReadSceneOptions(comm, scenes, read, opt));
@@ -311,7 +281,8 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const OptionGroup &driver, const std::
   if (!opt.allow_unused) PetscCall(read.CheckUnknown(comm));
 
   PetscCall(CheckOptions(comm, opt));
-  if (driver.check) PetscCall(driver.check(comm, opt));
+  for (const OptionGroup &group : groups)
+    if (group.check) PetscCall(group.check(comm, opt));
   for (const SceneOptions &s : scenes) // (every scene's, given or not: a value out of range is refused all the same)
     if (s.check) PetscCall(s.check(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -244,20 +244,10 @@ PetscErrorCode CheckLoads(MPI_Comm comm, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The accuracy, the stops, the output and the mesh file.
+// The stops, the output and the mesh file.
 PetscErrorCode CheckOutputAndStops(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCheck(opt.target_load >= 0 && opt.target_load < 1 && opt.target_c_over_t >= 0, comm, PETSC_ERR_USER_INPUT,
-             "-target_load %g, -target_c_over_t %g: must be a fraction in [0, 1) and a non-negative C/t",
-             opt.target_load, opt.target_c_over_t);
-  PetscCheck(opt.expect_load >= 0 && opt.expect_load < 1 && opt.expect_c_over_t >= 0, comm, PETSC_ERR_USER_INPUT,
-             "-expect_load %g, -expect_c_over_t %g: must be a fraction in [0, 1) and a non-negative C/t",
-             opt.expect_load, opt.expect_c_over_t);
-  PetscCheck(opt.target_levels >= 1 && opt.target_levels <= kMaxTargetLevels, comm, PETSC_ERR_USER_INPUT,
-             "-target_levels %d: must be between 1 and %d", (int)opt.target_levels, (int)kMaxTargetLevels);
-  PetscCheck(opt.target_time >= 0 && std::isfinite(opt.target_time), comm, PETSC_ERR_USER_INPUT,
-             "-target_time %g: must be a number of seconds >= 0 (0: no limit)", opt.target_time);
   PetscCheck(opt.time_limit >= 0 && std::isfinite(opt.time_limit), comm, PETSC_ERR_USER_INPUT,
              "-time_limit %g: must be 0 (no limit) or a positive number of seconds", opt.time_limit);
   PetscCheck(opt.progress >= 0 && std::isfinite(opt.progress), comm, PETSC_ERR_USER_INPUT,

@@ -1,8 +1,8 @@
 // The incremental driver's parameters (docs/theory.md, section 5): its increments and r_min's bounds, its stops, the
 // friction and equilibrium iterations of an increment, inertia and the load path's time, the kinematics and the
-// factorization. Options holds one (so that they travel with the run's options to its levels and companions); the
-// driver reads and checks them (ReadDriverOptions and CheckDriverOptions in src/driver/driver_options.cpp, handed to
-// ReadOptions by main).
+// factorization; and the error estimate and the accuracy it holds a run to. Options holds one of each (so that they
+// travel with the run's options to its levels and companions); the driver reads and checks them
+// (src/driver/driver_options.cpp, handed to ReadOptions by main as two groups).
 #pragma once
 
 #include <petscsys.h>
@@ -57,6 +57,22 @@ struct DriverParams {
   double dynamics_time = 1.0;                            // s for lambda 0 -> 1 (scenes without tools)
   double punch_speed = 1.0;                              // mm/s (tool scenes: duration = stroke / speed)
   ObjectiveScheme kinematics = ObjectiveScheme::Forward; // docs/theory.md, section 2
+};
+
+// The most levels -target_levels allows: each finer level costs up to 27 x the last (kMaxRatio cubed), so a
+// sixth is beyond any machine's patience.
+constexpr PetscInt kMaxTargetLevels = 5;
+
+// The run's estimate of its own error (tool scenes, driver/answer.hpp), and the accuracy it is held to: a target
+// demanded (a finer level where the estimate passes it, driver/refine.hpp), else the preset's expectation (a
+// warning). Options holds one; the driver reads and checks them (ReadAccuracyOptions, CheckAccuracyOptions).
+struct AccuracyParams {
+  PetscBool error_estimate = PETSC_TRUE;                     // two companion runs after the main run
+  Factorization estimate_factorization = Factorization::Klu; // the companions' (-error_estimate_factorization)
+  double target_load = 0, target_c_over_t = 0;               // accuracy on demand (0: none)
+  double expect_load = 0, expect_c_over_t = 0; // what the preset's discretization is expected to give (0: none)
+  PetscInt target_levels = 3;                  // at most this many levels, the first included
+  double target_time = 0;                      // no level predicted to bring the job past this (s; 0: no limit)
 };
 
 } // namespace tf

@@ -132,19 +132,12 @@ struct Options {
   PetscInt checkpoint_every = 0; // increments between checkpoints (0: only when a signal or -time_limit stops the run)
   std::string restart;           // checkpoint to continue from
   double output_stroke = 0;      // > 0: fields every this much stroke (mm) instead of every output_every increments
-  // The run's estimate of its own error (tool scenes, driver/answer.hpp), and
-  // the accuracy it is held to: a target demanded (a finer level where the
-  // estimate passes it), else the preset's expectation (a warning).
-  PetscBool error_estimate = PETSC_TRUE;
-  Factorization estimate_factorization = Factorization::Klu; // the companions' (-error_estimate_factorization)
-  double target_load = 0, target_c_over_t = 0;               // accuracy on demand (driver/refine.hpp; 0: none)
-  double expect_load = 0, expect_c_over_t = 0; // what the preset's discretization is expected to give (0: none)
-  PetscInt target_levels = 3;                  // at most this many levels, the first included
-  double target_time = 0;                      // no level predicted to bring the job past this (s; 0: no limit)
-  PetscInt level = 1;                          // (not an option: the level this run is, 1 the first)
-  double job_started = 0;                      // (not an option: MPI_Wtime when the job began)
-  double time_limit = 0; // > 0: stop (results written, non-zero exit) after this many seconds of loading
-  double progress = 10;  // s between progress lines on rank 0 (0: none); quiet on shorter runs
+  // The error estimate and the accuracy held to (io/driver_params.hpp; read and checked by the driver).
+  AccuracyParams accuracy;
+  PetscInt level = 1;     // (not an option: the level this run is, 1 the first)
+  double job_started = 0; // (not an option: MPI_Wtime when the job began)
+  double time_limit = 0;  // > 0: stop (results written, non-zero exit) after this many seconds of loading
+  double progress = 10;   // s between progress lines on rank 0 (0: none); quiet on shorter runs
   PetscBool monitor = PETSC_FALSE;
   PetscBool allow_unused = PETSC_FALSE; // an option nothing reads is a warning, not an error
   PetscBool help = PETSC_FALSE;
@@ -171,10 +164,11 @@ struct OptionGroup {
   PetscErrorCode (*check)(MPI_Comm comm, const Options &opt) = nullptr;
 };
 
-// Collective: reads and validates the options; `driver` the driver's own, `scenes` the scenes -scene accepts, with
-// their own options. Errors are PETSC_ERR_USER_INPUT with a message naming the option and what is allowed.
-PetscErrorCode ReadOptions(MPI_Comm comm, const OptionGroup &driver, const std::vector<SceneOptions> &scenes,
-                           Options &opt);
+// Collective: reads and validates the options; `groups` the driver's own (each its group in -help, in turn), `scenes`
+// the scenes -scene accepts, with their own options. Errors are PETSC_ERR_USER_INPUT with a message naming the option
+// and what is allowed.
+PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups,
+                           const std::vector<SceneOptions> &scenes, Options &opt);
 // Collective: refuses values out of range (called by ReadOptions).
 PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt);
 // Collective: refuses a later pass's stroke, dies (called by CheckOptions, passes_check.cpp) and turns out of
@@ -221,10 +215,6 @@ inline void ChooseElement(Options &opt)
   opt.element = bar ? fe::Formulation::QM6Bar : fe::Formulation::QM6;
   opt.element_name = bar ? "qm6bar" : "qm6";
 }
-
-// The most levels -target_levels allows: each finer level costs up to 27 x the last (kMaxRatio cubed), so a
-// sixth is beyond any machine's patience.
-constexpr PetscInt kMaxTargetLevels = 5;
 
 // The most strokes -stroke_path takes (a press's path, not a cycle test: a few dozen).
 constexpr PetscInt kMaxPathPoints = 32;
