@@ -316,6 +316,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const OptionGroup &driver, const std::
   PetscCall(ReadLoading(comm, read, opt));
   PetscCall(ReadSceneOptions(comm, scenes, read, opt));
   PetscCall(ReadLowerDieMotion(comm, read, opt)); // (die_motion_options.cpp)
+  PetscCall(ReadUpperDieShape(comm, read, opt));  // (die_shape_options.cpp)
   PetscCall(ReadUpperDieMotion(comm, read, opt));
 
   opt.known = read.known();
