@@ -34,12 +34,13 @@ from concurrent.futures import ThreadPoolExecutor
 # The helper package python/tubeform_py (python/README.md).
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
 from tubeform_py.analysis import read  # noqa: E402
+from tubeform_py.tfruns import runs_env  # noqa: E402
 from tubeform_py.tfruns import deviation  # noqa: E402
 
 import numpy as np  # noqa: E402
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+env = runs_env(os.environ)  # (scripts/runs.env: the environment of tubeform's runs)
 timeout = 3600  # seconds per case (a stalled run spends up to ~30 min before the stall watch ends it)
 cases = sorted(glob.glob(os.path.join(root, "options", "squaring_*_mu*.opts")))
 results = os.path.join(root, "results")

@@ -17,9 +17,10 @@ import time
 # The helper package python/tubeform_py (python/README.md).
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
 from tubeform_py.analysis import hill_errors  # noqa: E402
+from tubeform_py.tfruns import runs_env  # noqa: E402
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+env = runs_env(os.environ)  # (scripts/runs.env: the environment of tubeform's runs)
 print(f"{'rmin_deps':>10} {'group_tol':>9} {'increments':>10} {'wall (s)':>9} {'first yield':>12} {'p vs c':>8} {'limit':>8} {'energy':>9}")
 for deps, group in ((4e-3, 1e-6), (1e-3, 1e-6), (2.5e-4, 1e-6), (1e-3, 0.01), (1e-3, 0.1), (1e-3, 0.5)):
     out = f"/tmp/tubeform_study_{deps}_{group}.h5"

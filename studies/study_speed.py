@@ -27,9 +27,10 @@ import numpy as np
 # The helper package python/tubeform_py (python/README.md).
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
 from tubeform_py.tfruns import deviation  # noqa: E402
+from tubeform_py.tfruns import runs_env  # noqa: E402
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+env = runs_env(os.environ)  # (scripts/runs.env: the environment of tubeform's runs)
 args = sys.argv[1:]
 opts = args.pop(0) if args and not args[0].replace(".", "", 1).isdigit() else "options/squaring_al_37_mu0.35.opts"
 speeds = [float(a) for a in args] or [10.0, 1.0, 0.1]

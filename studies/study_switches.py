@@ -17,9 +17,10 @@ import sys
 # The helper package python/tubeform_py (python/README.md).
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
 from tubeform_py.analysis import hill_errors, read  # noqa: E402
+from tubeform_py.tfruns import runs_env  # noqa: E402
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+env = runs_env(os.environ)  # (scripts/runs.env: the environment of tubeform's runs)
 
 
 def run(opts, extra):

@@ -78,6 +78,10 @@ cases = [
     (["-scene", "slide", "-slide_back", "-1"], "-slide_back -1.: must be a non-negative distance"),
     (["-scene", "bending", "-bending_strain", "0"], "-bending_strain 0.: must be non-zero"),
     (["-die_angle", "40"], "-die_angle"),
+    # The V-die's own refusals (its shape kind's reader and checker, tool/shape_v.cpp), under the upper die's prefix.
+    (["-scene", "squaring", "-die_angle", "abc"], "-die_angle abc: not a number"),
+    (["-scene", "squaring", "-die_r_apex", "20"], "-die_r_apex 20.: must lie in [0, -tube_ro)"),  # (Ro = 20 mm)
+    (["-scene", "squaring", "-die_u_close", "-1"], "-die_u_close -1., -die_r_edge 0.: must be non-negative"),
     (["-friction_mu", "0.1"], "-friction_mu: read by the squaring, flattening and slide scenes, not by this run's "
      "pressure scene"),
     (["-scene", "squaring", "-pressure_u", "0.1"], "-pressure_u: read by the pressure scene, not by this run's "
@@ -261,12 +265,13 @@ with open(out("incomplete.opts"), "w") as fh:
 cores, why_none = allow_core_dumps()
 print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
       f"       core dumps cannot appear on this machine ({why_none}): the crash check stands for them")
-# On 2 ranks one of each kind: option value, option choice, mesh file, output path, material file.
+# On 2 ranks one of each kind: option value, option choice, mesh file, output path, material file, a tool's option.
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")], ["-wall_thickness", "1.65"],
-         ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"])
+         ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
+         ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 148 and len(selected) == 9, f"{len(cases)} cases on 1 rank (148), {len(selected)} on 2 (9)")
+k.check(len(cases) == 151 and len(selected) == 10, f"{len(cases)} cases on 1 rank (151), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

@@ -323,7 +323,17 @@ void CheckShapes(const std::string &root)
   CHECK(!MakeShape("profile", broken, die).empty());
   const std::string unknown = MakeShape("oval", v, die);
   CHECK(unknown.find("oval") != std::string::npos && unknown.find("dxf") != std::string::npos);
-  std::printf("Shapes: the registry's kinds; the V-die against its closed form; a profile and its DXF alike\n");
+  // Each kind's options, the names docs/options-reference.md gives under the upper die's prefix die_ (-die_angle,
+  // -die_r_apex, -die_u_close, -die_r_edge), each with its help; the others read none (a file is its tool's choice).
+  std::vector<std::string> names;
+  for (const ShapeOption &o : FindShapeKind("v")->options) names.push_back(o.help.empty() ? "" : o.name);
+  CHECK((names == std::vector<std::string>{"angle", "r_apex", "u_close", "r_edge"}));
+  CHECK(FindShapeKind("v")->read && FindShapeKind("v")->check && !FindShapeKind("oval"));
+  for (const char *k : {"flat", "profile", "dxf"})
+    CHECK(FindShapeKind(k)->options.empty() && !FindShapeKind(k)->read && !FindShapeKind(k)->check);
+  std::printf(
+    "Shapes: the registry's kinds and their options; the V-die against its closed form; a profile and its DXF "
+    "alike\n");
 }
 
 int main(int argc, char **argv)

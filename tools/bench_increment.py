@@ -16,10 +16,14 @@ import re
 import subprocess
 import sys
 
+# The helper package python/tubeform_py (python/README.md).
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from tubeform_py.tfruns import runs_env  # noqa: E402
+
 np_ = sys.argv[1] if len(sys.argv) > 1 else "1"
 solver = sys.argv[2] if len(sys.argv) > 2 else "mumps"
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
+env = runs_env(os.environ)  # (scripts/runs.env: the environment of tubeform's runs)
 incs = 20
 print(f"ranks {np_}, {incs} increments, factorization {solver}; times in ms per increment (max over ranks)")
 print(f"{'mesh':>12} {'dofs':>8} {'assemble':>9} {'bc':>7} {'solve':>8} {'  factor':>8} {'commit':>7} {'total':>8} {'sym.fact':>8}")

@@ -274,6 +274,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups
   PetscCall(ReadFrictionOptions(comm, read, opt)); // (friction_options.cpp)
   PetscCall(ReadSceneOptions(comm, scenes, read, opt));
   PetscCall(ReadLowerDieMotion(comm, read, opt)); // (die_motion_options.cpp)
+  PetscCall(ReadUpperDieShape(comm, read, opt));  // (die_shape_options.cpp)
   PetscCall(ReadUpperDieMotion(comm, read, opt));
 
   opt.known = read.known();

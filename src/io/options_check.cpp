@@ -13,9 +13,6 @@ namespace tf {
 
 namespace {
 
-// -die_angle's range (degrees): the V-dies tests/check_die_angle.py presses (the flank's reach of 1.3 ro is
-// beyond the squared side over it).
-constexpr double kDieAngleMin = 60, kDieAngleMax = 150;
 // -die_path_turn's range (degrees): a die turned by more than a quarter turn no longer presses along the press's
 // y, along which its punch load is read.
 constexpr double kMaxDieTurn = 90;
@@ -225,17 +222,12 @@ PetscErrorCode CheckLoads(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckMaterial(comm, opt.material));
-  PetscCheck(opt.die_profile.empty() || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(VDie(opt) || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
              opt.stroke_corner_radius);
   PetscCall(CheckDiesAndPasses(comm, opt));
-  PetscCheck(opt.die_angle >= kDieAngleMin && opt.die_angle <= kDieAngleMax, comm, PETSC_ERR_USER_INPUT,
-             "-die_angle %g: must lie in [%g, %g] degrees", opt.die_angle, kDieAngleMin, kDieAngleMax);
-  PetscCheck(opt.die_r_apex >= 0 && opt.die_r_apex < opt.tube_ro, comm, PETSC_ERR_USER_INPUT,
-             "-die_r_apex %g: must lie in [0, -tube_ro)", opt.die_r_apex);
-  PetscCheck(opt.die_u_close >= 0 && opt.die_r_edge >= 0, comm, PETSC_ERR_USER_INPUT,
-             "-die_u_close %g, -die_r_edge %g: must be non-negative", opt.die_u_close, opt.die_r_edge);
-  PetscCall(CheckFrictionOptions(comm, opt.friction)); // (friction_options.cpp)
+  PetscCall(CheckShape(comm, "v", "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
+  PetscCall(CheckFrictionOptions(comm, opt.friction));               // (friction_options.cpp)
   PetscCheck(opt.stroke_corner_radius >= 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_corner_radius %g: must be non-negative", opt.stroke_corner_radius);
   PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);

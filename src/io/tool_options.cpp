@@ -4,7 +4,7 @@
 namespace tf {
 
 namespace {
-// The die's strokes in turn, the upper and lower dies' shapes.
+// The die's strokes in turn, the lower die's shape (the upper die's: its own block, die_shape_options.cpp).
 PetscErrorCode ReadDieShapes(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
@@ -12,21 +12,6 @@ PetscErrorCode ReadDieShapes(PetscOptionItems *PetscOptionsObject, OptionReader 
                      "tool scenes: the die's strokes in turn (mm, >= 0), at the punch speed: press, back off, press "
                      "again (in place of -stroke: the last is the final stroke)",
                      kMaxPathPoints, opt.stroke_path));
-  PetscCall(read.String(PetscOptionsObject, "-die_profile",
-                        "squaring: the upper die's right half from a DXF file (*.dxf) or a text profile of lines and "
-                        "arcs (docs/dies.md) in "
-                        "place of the V-die of -die_angle, -die_r_apex, -die_u_close, -die_r_edge",
-                        opt.die_profile));
-  PetscCall(read.Real(PetscOptionsObject, "-die_angle",
-                      "V-die: the angle between its flanks (degrees; the paper's 90), the lower die its mirror",
-                      opt.die_angle));
-  PetscCall(read.Real(PetscOptionsObject, "-die_r_apex", "V-die apex fillet radius (mm)", opt.die_r_apex));
-  PetscCall(
-    read.Real(PetscOptionsObject, "-die_u_close",
-              "V-die parting face at y = u_close - U: the dies close at stroke u_close (mm; 0: no parting face)",
-              opt.die_u_close));
-  PetscCall(read.Real(PetscOptionsObject, "-die_r_edge", "V-die edge fillet radius between flank and parting face (mm)",
-                      opt.die_r_edge));
   PetscCall(
     read.String(PetscOptionsObject, "-lower_die",
                 "tool scenes: the lower die: mirror (of the upper one), flat (a floor at y = -Ro), or a profile "

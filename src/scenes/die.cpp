@@ -33,23 +33,22 @@ PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::str
 PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die)
 {
   PetscFunctionBeginUser;
-  if (opt.die_profile.empty()) {
-    ShapeSpec v;
-    v.ro = opt.tube_ro, v.r_apex = opt.die_r_apex, v.u_close = opt.die_u_close, v.r_edge = opt.die_r_edge;
-    v.angle = opt.die_angle;
-    const std::string error = MakeShape("v", v, die.tool);
+  const DieShape shape = UpperDieShape(opt);
+  if (VDie(opt)) {
+    const ShapeSpec &v = shape.spec;
+    const std::string error = MakeShape(shape.kind, v, die.tool);
     PetscCheck(error.empty(), comm, PETSC_ERR_USER_INPUT,
-               "-die_angle %g, -die_r_apex %g, -die_u_close %g, -die_r_edge %g make no die: %s", opt.die_angle,
-               opt.die_r_apex, opt.die_u_close, opt.die_r_edge, error.c_str());
-    die.flank = opt.die_r_apex > 0 ? 1 : 0;
+               "-die_angle %g, -die_r_apex %g, -die_u_close %g, -die_r_edge %g make no die: %s", v.angle, v.r_apex,
+               v.u_close, v.r_edge, error.c_str());
+    die.flank = v.r_apex > 0 ? 1 : 0;
     die.apex = die.flank - 1;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscCall(ReadProfileTool(comm, "-die_profile", opt.die_profile, die.tool));
+  PetscCall(ReadProfileTool(comm, "-die_profile", shape.spec.file, die.tool));
   die.flank = LongestLine(die.tool);
   PetscCheck(die.flank >= 0, comm, PETSC_ERR_USER_INPUT,
              "-die_profile %s: no straight segment (C/t is measured against the profile's longest line)",
-             opt.die_profile.c_str());
+             shape.spec.file.c_str());
   die.apex = die.flank > 0 && die.tool.segments[die.flank - 1].kind == Segment::Arc ? die.flank - 1 : -1;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -109,7 +108,7 @@ Options PassOptions(const Options &opt, int pass)
   Options o = opt;
   if (pass == 0) return o;
   const PassSpec &p = LaterPass(opt, pass);
-  if (!p.die_profile.empty()) o.die_profile = p.die_profile;
+  if (!p.die_profile.empty()) o.die_shape.kind = DrawingKind(p.die_profile), o.die_shape.spec.file = p.die_profile;
   if (!p.lower_die.empty()) o.lower_die = p.lower_die;
   if (!p.side_die.empty()) o.side_die = p.side_die;
   return o;
@@ -213,12 +212,12 @@ PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring,
 double DieReach(const Options &o, bool squaring)
 {
   const double ro = o.tube_ro, ri = ro - o.tube_t;
-  if (squaring && (!o.die_profile.empty() || o.lower_die != "mirror" || !LowerDieClosing(o) || o.side_die != "none"))
-    return kNever;
+  if (squaring && (!VDie(o) || o.lower_die != "mirror" || !LowerDieClosing(o) || o.side_die != "none")) return kNever;
   if (!squaring) return ro - o.tube_t;
-  const VAngle v(o.die_angle);
+  const VAngle v(o.die_shape.spec.angle);
   const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
-  return o.die_u_close > 0 ? std::min(closed, o.die_u_close) : closed;
+  const double u_close = o.die_shape.spec.u_close;
+  return u_close > 0 ? std::min(closed, u_close) : closed;
 }
 
 PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, bool squaring, double stroke)
@@ -236,19 +235,20 @@ PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, dou
 {
   PetscFunctionBeginUser;
   const double ro = o.tube_ro, ri = ro - o.tube_t;
-  if (squaring && (!o.die_profile.empty() || o.lower_die != "mirror" || !LowerDieClosing(o) || o.side_die != "none")) {
+  if (squaring && (!VDie(o) || o.lower_die != "mirror" || !LowerDieClosing(o) || o.side_die != "none")) {
     // A profile of one's own, side dies: no closed form of the cavity; a stroke that closes it fails in the run.
   } else if (squaring) {
     // The cavity is a rhombus of half-diagonals D = h - U and D tan(half): area 2 D^2 tan(half).
-    const VAngle v(o.die_angle);
+    const VAngle v(o.die_shape.spec.angle);
     const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
     PetscCheck(stroke < closed, comm, PETSC_ERR_USER_INPUT,
                "%s %g: the dies would close on the tube at U = %.4g mm (the cavity between them is then "
                "smaller than the tube's cross-section of %.4g mm^2); choose a smaller stroke",
                option, stroke, closed, area);
-    PetscCheck(o.die_u_close <= 0 || stroke <= o.die_u_close, comm, PETSC_ERR_USER_INPUT,
+    const double u_close = o.die_shape.spec.u_close;
+    PetscCheck(u_close <= 0 || stroke <= u_close, comm, PETSC_ERR_USER_INPUT,
                "%s %g: the dies' parting faces meet at -die_u_close %g mm; the stroke cannot pass it", option, stroke,
-               o.die_u_close);
+               u_close);
   } else {
     PetscCheck(stroke < ro - o.tube_t, comm, PETSC_ERR_USER_INPUT,
                "%s %g: the plate would press the ring's walls together at U = %.4g mm (Ro - t; the solver "

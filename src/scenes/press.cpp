@@ -34,8 +34,9 @@ namespace tf {
 PressScene::PressScene(const Options &opt, bool squaring)
     : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(FullModel(opt))
 {
-  stroke_ = opt.stroke_corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_angle)
-                                         : opt.stroke;
+  stroke_ = opt.stroke_corner_radius > 0
+              ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_shape.spec.angle)
+              : opt.stroke;
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
   path_ = DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke_path, stroke_);
   lower_motion_ = LowerDieMotion(opt);

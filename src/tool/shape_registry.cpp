@@ -1,33 +1,30 @@
-// The registry of tool shapes: a kind's name, and how it is drawn from a ShapeSpec and what it refuses. A new
-// shape is its own file and a line here.
-#include <utility>
+// The registry of tool shapes: each kind's name, the options it reads, its reader, checker and factory (a
+// ShapeKind, defined in the kind's own file). A new shape is its own file (shape_*.cpp) and a line here.
+#include <cstdlib>
 
-#include "tubeform/tool/profile.hpp"
 #include "tubeform/tool/shape.hpp"
 
 namespace tf {
 
-namespace {
-// "" or why not, and the tool drawn.
-using Factory = std::string (*)(const ShapeSpec &spec, Tool &t);
+const ShapeKind &VKind();       // shape_v.cpp
+const ShapeKind &FlatKind();    // shape_flat.cpp
+const ShapeKind &ProfileKind(); // shape_drawing.cpp
+const ShapeKind &DxfKind();     // shape_drawing.cpp
 
-const std::pair<const char *, Factory> kShapes[] = {
-  {"v", [](const ShapeSpec &s, Tool &t) { return MakeVDie(s.ro, s.r_apex, s.u_close, s.r_edge, s.angle, t); }},
-  {"flat", [](const ShapeSpec &s, Tool &t) { return t = BuildFlatPlate(s.y, s.x0, s.x1, s.floor), std::string(); }},
-  {"profile", [](const ShapeSpec &s, Tool &t) { return ParseProfile(s.text, s.file, t); }},
-  {"dxf",
-   [](const ShapeSpec &s, Tool &t) {
-     std::vector<ProfileItem> items;
-     const std::string error = DxfProfile(s.text, s.file, items);
-     return error.empty() ? BuildProfile(items, s.file, t) : error;
-   }},
-};
+namespace {
+const ShapeKind &(*const kKinds[])() = {VKind, FlatKind, ProfileKind, DxfKind};
 } // namespace
+
+const ShapeKind *FindShapeKind(const std::string &kind)
+{
+  for (const auto &k : kKinds)
+    if (kind == k().name) return &k();
+  return nullptr;
+}
 
 std::string MakeShape(const std::string &kind, const ShapeSpec &spec, Tool &tool)
 {
-  for (const auto &[name, make] : kShapes)
-    if (kind == name) return make(spec, tool);
+  if (const ShapeKind *k = FindShapeKind(kind)) return k->make(spec, tool);
   std::string known;
   for (const std::string &k : ShapeKinds()) known += (known.empty() ? "" : ", ") + k;
   return "no shape '" + kind + "' (known: " + known + ")";
@@ -36,14 +33,47 @@ std::string MakeShape(const std::string &kind, const ShapeSpec &spec, Tool &tool
 std::vector<std::string> ShapeKinds()
 {
   std::vector<std::string> kinds;
-  for (const auto &s : kShapes) kinds.push_back(s.first);
+  for (const auto &k : kKinds) kinds.push_back(k().name);
   return kinds;
 }
 
-std::string DrawingKind(const std::string &f)
+PetscErrorCode ReadShape(PetscOptionItems *PetscOptionsObject, const std::string &kind, ShapeSpec &spec)
 {
-  const bool dxf = f.size() > 4 && (f.compare(f.size() - 4, 4, ".dxf") == 0 || f.compare(f.size() - 4, 4, ".DXF") == 0);
-  return dxf ? "dxf" : "profile";
+  PetscFunctionBeginUser;
+  const ShapeKind *k = FindShapeKind(kind);
+  Tool none;
+  PetscCheck(k, PetscOptionsObject->comm, PETSC_ERR_PLIB, "%s", MakeShape(kind, spec, none).c_str());
+  if (k->read) PetscCall(k->read(PetscOptionsObject, spec));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckShape(MPI_Comm comm, const std::string &kind, const char *prefix, const ShapeSpec &spec)
+{
+  PetscFunctionBeginUser;
+  const ShapeKind *k = FindShapeKind(kind);
+  Tool none;
+  PetscCheck(k, comm, PETSC_ERR_PLIB, "%s", MakeShape(kind, spec, none).c_str());
+  if (k->check) PetscCall(k->check(comm, prefix, spec));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ReadShapeReal(PetscOptionItems *PetscOptionsObject, const ShapeOption &o, double &value)
+{
+  const char *prefix = PetscOptionsObject->prefix ? PetscOptionsObject->prefix : "";
+  const std::string name = "-" + o.name;
+  char buf[256];
+  PetscBool set;
+  PetscReal v = value;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(nullptr, prefix, name.c_str(), buf, sizeof(buf), &set));
+  char *end = nullptr;
+  if (set) (void)std::strtod(buf, &end);
+  PetscCheck(!set || (buf[0] && end && *end == 0), PetscOptionsObject->comm, PETSC_ERR_USER_INPUT,
+             "-%s%s %s: not a number", prefix, o.name.c_str(), buf);
+  PetscCall(PetscOptionsReal(name.c_str(), o.help.c_str(), "tubeform", v, &v, nullptr));
+  value = v;
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 } // namespace tf

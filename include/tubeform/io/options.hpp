@@ -17,6 +17,7 @@
 #include "tubeform/io/scene_params.hpp"
 #include "tubeform/material/elastic.hpp"
 #include "tubeform/tool/motion.hpp"
+#include "tubeform/tool/shape.hpp"
 
 namespace tf {
 
@@ -79,6 +80,22 @@ struct LowerDieSpec {
   MotionSpec spec;
 };
 
+// The paper's die: 90 degrees between the flanks, an apex fillet of 3 mm, no parting face.
+inline ShapeSpec PaperVDie()
+{
+  ShapeSpec v;
+  v.r_apex = 3.0;
+  return v;
+}
+// The upper die's shape (docs/dies.md): a kind of the shape registry (tool/shape.hpp), the V-die unless -die_profile
+// names a file (then profile, or dxf for *.dxf: DrawingKind), and its spec: the V-die's numbers, read and checked
+// by the V kind under the prefix die_ (-die_angle, -die_r_apex, -die_u_close, -die_r_edge; read with a file too), and
+// the file (io/die_shape_options.cpp). The scenes read it through UpperDieShape.
+struct DieShape {
+  std::string kind = "v";
+  ShapeSpec spec = PaperVDie(); // (ro: the tube's, set by UpperDieShape)
+};
+
 struct Options {
   std::string scene = "pressure"; // a name of the scene registry (scenes/registry.hpp)
   // Geometry and mesh
@@ -100,9 +117,7 @@ struct Options {
   double stroke_corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
   std::vector<double> stroke_path; // tool scenes: the die's strokes in turn (empty: 0 to -stroke)
   // Tools, contact, friction (docs/dies.md; docs/theory.md, section 6)
-  double die_r_apex = 3.0, die_u_close = 0.0, die_r_edge = 0.0;
-  std::string die_profile;             // the upper die's right half from a file (tool/profile.hpp); empty: the V-die
-  double die_angle = 90;               // degrees between the V-die's flanks
+  DieShape die_shape;                  // the upper die's shape (-die_profile, -die_angle, ...; UpperDieShape)
   std::string lower_die = "mirror";    // mirror, flat or a profile file drawn as an upper die
   LowerDieSpec lower_motion;           // its motion (-lower_die_motion; LowerDie)
   TubeModel model = TubeModel::Auto;   // quarter, half, full, or auto: the quarter where it is exact
@@ -227,6 +242,15 @@ inline DieMotion UpperDie(const Options &opt)
   die.spec.reach = opt.tube_ro;
   return die;
 }
+// The upper die's shape as the scenes take it: its kind and spec, drawn on the tube (the spec's ro its outer radius).
+inline DieShape UpperDieShape(const Options &opt)
+{
+  DieShape die = opt.die_shape;
+  die.spec.ro = opt.tube_ro;
+  return die;
+}
+// It is the V-die (not drawn from a file).
+inline bool VDie(const Options &opt) { return opt.die_shape.kind == "v"; }
 // The lower die's motion as the scenes take it: its word, kind and spec, the spec moving up (y) by the stroke.
 inline LowerDieSpec LowerDie(const Options &opt)
 {

@@ -20,5 +20,9 @@ PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &op
 // other than 0 force (-die_force 0 is allowed with any word). An option of another word's kind is refused, naming it.
 PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
 // (both in die_motion_options.cpp)
+// The upper die's shape, its own block under the options prefix die_: the V-die, its options -die_angle, -die_r_apex,
+// -die_u_close, -die_r_edge read by the V kind of tool/shape.hpp (and checked by it in CheckOptions), unless
+// -die_profile names a file: opt.die_shape (die_shape_options.cpp).
+PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 
 } // namespace tf

@@ -1,7 +1,11 @@
 // What a rigid tool looks like (docs/dies.md), drawn as an upper die's right half, or a plate: one kind per file
-// (src/tool/shape_v.cpp, shape_flat.cpp, profile.cpp, dxf.cpp), each named in the registry (shape_registry.cpp,
-// MakeShape). Its motion is the tool's Motion (tool/motion.hpp). Pure geometry, no PETSc.
+// (src/tool/shape_v.cpp, shape_flat.cpp, shape_drawing.cpp: a profile or DXF file, parsed by profile.cpp and
+// dxf.cpp): the shape, the options it reads under its tool's options prefix and how it refuses their values, how
+// it is drawn; each named in the registry (shape_registry.cpp). Its motion is the tool's Motion
+// (tool/motion.hpp). Geometry, and PETSc only to read and check the options.
 #pragma once
+
+#include <petscsys.h>
 
 #include <string>
 #include <vector>
@@ -47,12 +51,46 @@ struct ShapeSpec {
   // profile, dxf: a file's text and its name (tool/profile.hpp)
   std::string text, file;
 };
+
+// An option of a kind: its name under a prefix (without the dash: "angle" is the upper die's -die_angle) and its
+// -help text.
+struct ShapeOption {
+  std::string name, help;
+};
+// A kind's reader: its options, under the options prefix of the PetscOptionsBegin block it is called in (the
+// tool's: "die_" reads -die_angle as "-angle"), into `spec`, their values as defaults; a value that is not a number
+// refused in one line naming the full option. Its values' ranges are its checker's.
+using ShapeReader = PetscErrorCode (*)(PetscOptionItems *PetscOptionsObject, ShapeSpec &spec);
+// A kind's checker (collective): the values its reader read refused in one line naming the option -<prefix><name>
+// and what it allows (against the tube of outer radius spec.ro).
+using ShapeCheck = PetscErrorCode (*)(MPI_Comm comm, const char *prefix, const ShapeSpec &spec);
+// A kind's factory: the tool from `spec` into `t`; "" or why not.
+using ShapeFactory = std::string (*)(const ShapeSpec &spec, Tool &t);
+// A kind in the registry: its name, its options (none: it reads nothing), its reader and checker (none: nothing to
+// read or check) and its factory. Each kind's file defines its own (VKind(), ...; the registry lists them).
+struct ShapeKind {
+  const char *name;
+  std::vector<ShapeOption> options;
+  ShapeReader read;
+  ShapeCheck check;
+  ShapeFactory make;
+};
+
 // The registry: the tool of the kind named `kind` from `spec` into `tool`; "" or why not (an unknown kind names the
 // known ones; a kind refuses a spec it cannot draw: a V-die whose parting face is above its apex, a profile file
 // that does not parse).
 std::string MakeShape(const std::string &kind, const ShapeSpec &spec, Tool &tool);
 // The registered kinds, in the registry's order.
 std::vector<std::string> ShapeKinds();
+// The kind named `kind`, or nullptr.
+const ShapeKind *FindShapeKind(const std::string &kind);
+// Reads the options of the kind named `kind` (a registered one) into `spec` (ShapeReader).
+PetscErrorCode ReadShape(PetscOptionItems *PetscOptionsObject, const std::string &kind, ShapeSpec &spec);
+// Refuses the values of the kind named `kind` (a registered one) read under `prefix` (ShapeCheck).
+PetscErrorCode CheckShape(MPI_Comm comm, const std::string &kind, const char *prefix, const ShapeSpec &spec);
+// For a kind's reader: its option `o`, a number, into `value` (its default), under the block's prefix; a value
+// that is not a number refused ("-die_angle abc: not a number").
+PetscErrorCode ReadShapeReal(PetscOptionItems *PetscOptionsObject, const ShapeOption &o, double &value);
 // The kind of a drawing file by its name: dxf for .dxf (.DXF), else profile (tubeform's own format).
 std::string DrawingKind(const std::string &file);
 
