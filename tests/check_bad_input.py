@@ -90,6 +90,8 @@ cases = [
     (["-scene", "squaring", "-model", "quarter", "-lower_die", "flat"], "-model quarter"),
     (["-scene", "squaring", "-lower_die", "flat", "-unload", "withdraw"], "-unload withdraw"),
     (["-scene", "squaring", "-lower_die", "no/such/die.profile"], "-lower_die no/such/die.profile"),
+    # (none is the side dies' word, not the lower die's: a file of that name)
+    (["-scene", "squaring", "-lower_die", "none"], "-lower_die none: cannot read the file"),
     (["-lower_die_motion", "up"], "-lower_die_motion"),
     (["-springback", "plastic"], "-springback"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-unload", "withdraw"], "-pass2_stroke"),
@@ -271,7 +273,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 151 and len(selected) == 10, f"{len(cases)} cases on 1 rank (151), {len(selected)} on 2 (10)")
+k.check(len(cases) == 152 and len(selected) == 10, f"{len(cases)} cases on 1 rank (152), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

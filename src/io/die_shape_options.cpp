@@ -3,9 +3,45 @@
 // for the file's name (DrawingKind; its text read when the die is drawn). The V kind reads its own options,
 // -die_angle, -die_r_apex, -die_u_close, -die_r_edge, with a file too (a scene file's V-die stays allowed under a
 // -die_profile given after it), and its checker refuses their values (CheckOptions).
+// The lower die's and the side dies' shapes, each its own block: a word (-lower_die, -side_die) choosing mirror (the
+// upper die's shape, a relation between the tools), flat (the flat kind), none (no side dies) or a file (its kind by
+// its name); these kinds read no options. The scenes place and size them (scenes/die.cpp).
 #include "tubeform/io/tool_options.hpp"
 
 namespace tf {
+
+namespace {
+// The word of `option` (its help `help`) in its own block titled `title`, its shape into `shape`.
+PetscErrorCode ReadWordShape(MPI_Comm comm, OptionReader &read, const char *option, const char *help, const char *title,
+                             bool none, DieChoice &shape)
+{
+  std::string word = ShapeWord(shape);
+
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, nullptr, title, "tubeform");
+  OptionsBlock block(PetscOptionsObject);
+  PetscCall(read.String(PetscOptionsObject, option, help, word));
+  block.Release();
+  PetscOptionsEnd();
+  shape = ShapeChoice(word, none);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+} // namespace
+
+DieChoice ShapeChoice(const std::string &word, bool none)
+{
+  DieChoice shape;
+  if (word == "mirror" || word == "flat" || (none && word == "none"))
+    shape.kind = word;
+  else
+    shape.kind = DrawingKind(word), shape.spec.file = word;
+  return shape;
+}
+
+std::string ShapeWord(const DieChoice &shape)
+{
+  return shape.kind == "profile" || shape.kind == "dxf" ? shape.spec.file : shape.kind;
+}
 
 PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 {
@@ -29,6 +65,27 @@ PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt
   block.Release();
   PetscOptionsEnd();
   die.kind = die.spec.file.empty() ? "v" : DrawingKind(die.spec.file);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ReadWordShape(comm, read, "-lower_die",
+                          "tool scenes: the lower die: mirror (of the upper one), flat (a floor at y = -Ro), or a "
+                          "profile file (*.dxf or text) drawn as an upper die, mirrored below the tube",
+                          "tubeform: lower die shape", false, opt.lower_die_shape));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ReadWordShape(comm, read, "-side_die",
+                          "tool scenes: side dies pressing by the stroke U (or with -side_force): none, mirror (the "
+                          "upper die turned to the side), flat (a plate), or a profile file drawn as an upper die "
+                          "(docs/dies.md)",
+                          "tubeform: side die shape", true, opt.side_die_shape));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

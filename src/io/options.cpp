@@ -273,9 +273,11 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups
   PetscCall(ReadLoading(comm, read, opt));
   PetscCall(ReadFrictionOptions(comm, read, opt)); // (friction_options.cpp)
   PetscCall(ReadSceneOptions(comm, scenes, read, opt));
+  PetscCall(ReadLowerDieShape(comm, read, opt));  // (die_shape_options.cpp)
   PetscCall(ReadLowerDieMotion(comm, read, opt)); // (die_motion_options.cpp)
   PetscCall(ReadUpperDieShape(comm, read, opt));  // (die_shape_options.cpp)
   PetscCall(ReadUpperDieMotion(comm, read, opt));
+  PetscCall(ReadSideDieShape(comm, read, opt));
 
   opt.known = read.known();
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);

@@ -22,8 +22,8 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
-  bool asked = opt.lower_die != "mirror" || !LowerDieMoves(opt, "mirror") || opt.model != TubeModel::Auto ||
-               !DieMoves(opt, DieMotionKind::Stroke) || opt.side_die != "none" || opt.side_force != 0 ||
+  bool asked = opt.lower_die_shape.kind != "mirror" || !LowerDieMoves(opt, "mirror") || opt.model != TubeModel::Auto ||
+               !DieMoves(opt, DieMotionKind::Stroke) || opt.side_die_shape.kind != "none" || opt.side_force != 0 ||
                opt.die_offset != 0 || opt.full_hold != FullHold::Auto;
   for (const PassSpec &p : opt.more_passes)
     asked =
@@ -49,20 +49,21 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
                "-die_force %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", force);
   }
   PetscCheck(
-    opt.lower_die == "mirror" || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+    opt.lower_die_shape.kind == "mirror" || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
     "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
-    opt.stroke_corner_radius, opt.lower_die.c_str());
+    opt.stroke_corner_radius, ShapeWord(opt.lower_die_shape).c_str());
   bool mirror = LowerDieMoves(opt, "mirror");
   for (int pass = 0; pass < kMaxPasses; ++pass) mirror = mirror && PassLowerDie(opt, pass) == "mirror";
   PetscCheck(opt.model != TubeModel::Quarter || mirror, comm, PETSC_ERR_USER_INPUT,
              "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
              "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
   PetscCall(CheckPassStrokesAndDies(comm, opt)); // (passes_check.cpp)
-  PetscCall(CheckSideDies(comm, opt, "-side_die", opt.side_die));
+  PetscCall(CheckSideDies(comm, opt, "-side_die", ShapeWord(opt.side_die_shape)));
   PetscCheck(opt.side_force >= 0 && std::isfinite(opt.side_force), comm, PETSC_ERR_USER_INPUT,
              "-side_force %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",
              opt.side_force);
-  PetscCheck(opt.side_force == 0 || (opt.side_die != "none" && PassCount(opt) == 1), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(opt.side_force == 0 || (opt.side_die_shape.kind != "none" && PassCount(opt) == 1), comm,
+             PETSC_ERR_USER_INPUT,
              "-side_force %g: force-controlled side dies need -side_die (mirror, flat or a file) and one pass (not "
              "with -pass2_stroke)",
              opt.side_force);
@@ -91,7 +92,7 @@ PetscErrorCode CheckDiePath(MPI_Comm comm, Options &opt)
              "-die_path: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion "
              "fixed");
   PetscCheck(opt.stroke_path.empty() && opt.stroke_corner_radius <= 0 && PassCount(opt) == 1 &&
-               opt.side_die == "none" && opt.unload != Unload::Withdraw && opt.die_offset == 0,
+               opt.side_die_shape.kind == "none" && opt.unload != Unload::Withdraw && opt.die_offset == 0,
              comm, PETSC_ERR_USER_INPUT,
              "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, "
              "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways is "

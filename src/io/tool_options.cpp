@@ -4,19 +4,14 @@
 namespace tf {
 
 namespace {
-// The die's strokes in turn, the lower die's shape (the upper die's: its own block, die_shape_options.cpp).
-PetscErrorCode ReadDieShapes(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+// The die's strokes in turn (the dies' shapes: their own blocks, die_shape_options.cpp).
+PetscErrorCode ReadStrokePath(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(RealList(PetscOptionsObject, read, "-stroke_path",
                      "tool scenes: the die's strokes in turn (mm, >= 0), at the punch speed: press, back off, press "
                      "again (in place of -stroke: the last is the final stroke)",
                      kMaxPathPoints, opt.stroke_path));
-  PetscCall(
-    read.String(PetscOptionsObject, "-lower_die",
-                "tool scenes: the lower die: mirror (of the upper one), flat (a floor at y = -Ro), or a profile "
-                "file (*.dxf or text) drawn as an upper die, mirrored below the tube",
-                opt.lower_die));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -45,15 +40,10 @@ PetscErrorCode ReadModelAndOffset(PetscOptionItems *PetscOptionsObject, OptionRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The side dies.
+// The side dies' force (their shape: its own block, die_shape_options.cpp).
 PetscErrorCode ReadSideDies(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(
-    read.String(PetscOptionsObject, "-side_die",
-                "tool scenes: side dies pressing by the stroke U (or with -side_force): none, mirror (the upper "
-                "die turned to the side), flat (a plate), or a profile file drawn as an upper die (docs/dies.md)",
-                opt.side_die));
   PetscCall(read.Real(PetscOptionsObject, "-side_force",
                       "tool scenes with side dies: force control: each side die presses with a force rising from 0 to "
                       "this (N/mm, on the whole tube) over the press, its travel an unknown of each increment (0: "
@@ -127,7 +117,7 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(ReadDieShapes(PetscOptionsObject, read, opt));
+  PetscCall(ReadStrokePath(PetscOptionsObject, read, opt));
   PetscCall(ReadModelAndOffset(PetscOptionsObject, read, opt));
   PetscCall(ReadSecondPass(PetscOptionsObject, read, opt.more_passes[0]));
   PetscCall(ReadSideDies(PetscOptionsObject, read, opt));

@@ -12,9 +12,10 @@ namespace tf {
 
 namespace {
 
-// Collective: the tool of the profile file `path` given to `option`, or an error on every rank. Rank 0 reads
-// the file; every rank parses the same text, so each reaches the same verdict.
-PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::string &path, Tool &tool)
+// Collective: the tool of the drawing file `path` of the shape kind `kind` (profile, dxf) given to `option`, or an
+// error on every rank. Rank 0 reads the file; every rank parses the same text, so each reaches the same verdict.
+PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::string &kind, const std::string &path,
+                               Tool &tool)
 {
   std::string text;
   bool ok;
@@ -23,7 +24,7 @@ PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::str
   PetscCheck(ok, comm, PETSC_ERR_USER_INPUT, "%s %s: cannot read the file", option, path.c_str());
   ShapeSpec spec;
   spec.text = text, spec.file = path;
-  const std::string error = MakeShape(DrawingKind(path), spec, tool); // (tool/shape.hpp)
+  const std::string error = MakeShape(kind, spec, tool); // (tool/shape.hpp)
   PetscCheck(error.empty(), comm, PETSC_ERR_USER_INPUT, "%s %s", option, error.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -44,7 +45,7 @@ PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die)
     die.apex = die.flank - 1;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscCall(ReadProfileTool(comm, "-die_profile", shape.spec.file, die.tool));
+  PetscCall(ReadProfileTool(comm, "-die_profile", shape.kind, shape.spec.file, die.tool));
   die.flank = LongestLine(die.tool);
   PetscCheck(die.flank >= 0, comm, PETSC_ERR_USER_INPUT,
              "-die_profile %s: no straight segment (C/t is measured against the profile's longest line)",
@@ -55,20 +56,23 @@ PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die)
 
 PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, Tool &upper, double floor_y, bool full, Tool &lower)
 {
+  DieChoice shape = opt.lower_die_shape;
   PetscFunctionBeginUser;
-  if (opt.lower_die == "mirror") {
+  if (shape.kind == "mirror") {
     lower = MirrorY(upper);
-  } else if (opt.lower_die == "flat") {
+  } else if (shape.kind == "flat") {
     // A floor under the tube, reaching past its widening on the outside.
-    const double from = full ? -(1 + kFloorReach) * opt.tube_ro : -kFloorOverhang * opt.tube_ro;
-    lower = BuildFlatPlate(floor_y, from, (1 + kFloorReach) * opt.tube_ro, true);
+    ShapeSpec &spec = shape.spec;
+    spec.y = floor_y, spec.x1 = (1 + kFloorReach) * opt.tube_ro, spec.floor = true;
+    spec.x0 = full ? -(1 + kFloorReach) * opt.tube_ro : -kFloorOverhang * opt.tube_ro;
+    MakeShape(shape.kind, spec, lower); // (the flat kind draws any plate)
   } else {
     Tool drawn;
-    PetscCall(ReadProfileTool(comm, "-lower_die", opt.lower_die, drawn));
+    PetscCall(ReadProfileTool(comm, "-lower_die", shape.kind, shape.spec.file, drawn));
     lower = full ? BothSides(MirrorY(drawn)) : MirrorY(drawn);
   }
   // Its name in errors and in the results (/tools/<name>): no spaces.
-  lower.name = opt.lower_die == "flat" ? "floor" : opt.lower_die == "mirror" ? "lower-" + upper.name : "lower-die";
+  lower.name = shape.kind == "flat" ? "floor" : shape.kind == "mirror" ? "lower-" + upper.name : "lower-die";
   PetscCall(SetLowerMotion(comm, opt, upper, lower)); // (-lower_die_motion: die_motion.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -77,20 +81,23 @@ PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, 
                            bool half, bool full, std::vector<Tool> &tools)
 {
   Tool drawn; // drawn as an upper die (its right half), then turned to the side by the reflection about y = x
+  DieChoice shape = o.side_die_shape;
   PetscFunctionBeginUser;
-  const bool plate = o.side_die == "flat" || (o.side_die == "mirror" && !squaring);
+  const bool plate = shape.kind == "flat" || (shape.kind == "mirror" && !squaring);
   if (plate) {
     // (the whole plate in the half and full models, which reach below the x axis)
-    drawn = BuildFlatPlate(o.tube_ro, half ? -(1 + kPlateReach) * o.tube_ro : -kPlateOverhang * o.tube_ro,
-                           (1 + kPlateReach) * o.tube_ro);
-  } else if (o.side_die == "mirror") {
+    ShapeSpec &spec = shape.spec;
+    spec.y = o.tube_ro, spec.x1 = (1 + kPlateReach) * o.tube_ro, spec.floor = false;
+    spec.x0 = half ? -(1 + kPlateReach) * o.tube_ro : -kPlateOverhang * o.tube_ro;
+    MakeShape("flat", spec, drawn); // (the flat kind draws any plate; the flattening scene's mirror too)
+  } else if (shape.kind == "mirror") {
     drawn = half ? BothSides(upper_right) : upper_right;
   } else {
-    PetscCall(ReadProfileTool(comm, option, o.side_die, drawn));
+    PetscCall(ReadProfileTool(comm, option, shape.kind, shape.spec.file, drawn));
     drawn = half ? BothSides(drawn) : drawn;
   }
   Tool right = Transform(drawn, {true, 1}); // (x, y) -> (y, x): moving along -x by the stroke
-  right.name = "side-" + std::string(plate ? "plate" : o.side_die == "mirror" ? tools[0].name : "die");
+  right.name = "side-" + std::string(plate ? "plate" : shape.kind == "mirror" ? tools[0].name : "die");
   MotionSpec in;
   in.direction = {-1.0, 0.0};
   PetscCall(SetMotion(comm, option, "stroke", in, right));
@@ -109,8 +116,8 @@ Options PassOptions(const Options &opt, int pass)
   if (pass == 0) return o;
   const PassSpec &p = LaterPass(opt, pass);
   if (!p.die_profile.empty()) o.die_shape.kind = DrawingKind(p.die_profile), o.die_shape.spec.file = p.die_profile;
-  if (!p.lower_die.empty()) o.lower_die = p.lower_die;
-  if (!p.side_die.empty()) o.side_die = p.side_die;
+  if (!p.lower_die.empty()) o.lower_die_shape = ShapeChoice(p.lower_die);
+  if (!p.side_die.empty()) o.side_die_shape = ShapeChoice(p.side_die, true);
   return o;
 }
 
@@ -136,7 +143,7 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
     PetscCall(BuildLowerDie(comm, o, tools[0], floor_y, full, lower));
     tools.push_back(lower);
   }
-  if (o.side_die != "none")
+  if (o.side_die_shape.kind != "none")
     PetscCall(AddSideDies(comm, o, pass > 0 ? PassOption(pass, "side_die").c_str() : "-side_die", squaring, right_half,
                           half, full, tools));
   // A later pass's dies by their own names (errors, and their outlines in the results): pass2-, pass3-, ...
@@ -212,7 +219,9 @@ PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring,
 double DieReach(const Options &o, bool squaring)
 {
   const double ro = o.tube_ro, ri = ro - o.tube_t;
-  if (squaring && (!VDie(o) || o.lower_die != "mirror" || !LowerDieClosing(o) || o.side_die != "none")) return kNever;
+  if (squaring &&
+      (!VDie(o) || o.lower_die_shape.kind != "mirror" || !LowerDieClosing(o) || o.side_die_shape.kind != "none"))
+    return kNever;
   if (!squaring) return ro - o.tube_t;
   const VAngle v(o.die_shape.spec.angle);
   const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
@@ -235,7 +244,8 @@ PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, dou
 {
   PetscFunctionBeginUser;
   const double ro = o.tube_ro, ri = ro - o.tube_t;
-  if (squaring && (!VDie(o) || o.lower_die != "mirror" || !LowerDieClosing(o) || o.side_die != "none")) {
+  if (squaring &&
+      (!VDie(o) || o.lower_die_shape.kind != "mirror" || !LowerDieClosing(o) || o.side_die_shape.kind != "none")) {
     // A profile of one's own, side dies: no closed form of the cavity; a stroke that closes it fails in the run.
   } else if (squaring) {
     // The cavity is a rhombus of half-diagonals D = h - U and D tan(half): area 2 D^2 tan(half).

@@ -46,7 +46,7 @@ PressScene::PressScene(const Options &opt, bool squaring)
     p.stroke = k == 0 ? stroke_ : LaterPass(opt, k).stroke;
     p.turn = PassTurn(opt, k, half_, full_);
     p.dies = PassOptions(opt, k);
-    p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side_die != "none";
+    p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side_die_shape.kind != "none";
   }
   if (passes_.size() > 1) passes_[1].side_from = stroke_; // (a later one's: StartPass, kept for a restart: Persist)
 }

@@ -95,6 +95,20 @@ struct DieShape {
   std::string kind = "v";
   ShapeSpec spec = PaperVDie(); // (ro: the tube's, set by UpperDieShape)
 };
+// A lower or side die's shape (docs/dies.md), as its word chose it (ShapeChoice): none (no side dies), mirror (the
+// upper die's shape: a relation between the tools, not a kind), flat (the flat kind), or else a file drawn as an
+// upper die (the kind for its name, DrawingKind: profile or dxf; the file in spec.file). The scenes place and size
+// the flat plate and read the file (scenes/die.cpp); these kinds read no options of their own.
+struct DieChoice {
+  explicit DieChoice(const char *k = "") : kind(k) {}
+  std::string kind;
+  ShapeSpec spec;
+};
+// The shape a word names (-lower_die, -side_die and their passes'): mirror, flat, none where `none` (the side dies),
+// else a file. (die_shape_options.cpp)
+DieChoice ShapeChoice(const std::string &word, bool none = false);
+// The word back (the messages name it): the kind's, or the file.
+std::string ShapeWord(const DieChoice &shape);
 
 struct Options {
   std::string scene = "pressure"; // a name of the scene registry (scenes/registry.hpp)
@@ -118,7 +132,7 @@ struct Options {
   std::vector<double> stroke_path; // tool scenes: the die's strokes in turn (empty: 0 to -stroke)
   // Tools, contact, friction (docs/dies.md; docs/theory.md, section 6)
   DieShape die_shape;                  // the upper die's shape (-die_profile, -die_angle, ...; UpperDieShape)
-  std::string lower_die = "mirror";    // mirror, flat or a profile file drawn as an upper die
+  DieChoice lower_die_shape{"mirror"}; // -lower_die (ShapeChoice)
   LowerDieSpec lower_motion;           // its motion (-lower_die_motion; LowerDie)
   TubeModel model = TubeModel::Auto;   // quarter, half, full, or auto: the quarter where it is exact
   DieMotion die_motion;                // the upper die's motion (-die_motion; UpperDie)
@@ -126,9 +140,9 @@ struct Options {
   FullHold full_hold = FullHold::Auto; // the full model's support: pins, rotation (the rotation hold), auto
   // The passes after the first, each after the springback of the one before (-pass2_* to -pass9_*).
   std::vector<PassSpec> more_passes = std::vector<PassSpec>(kMaxPasses - 1);
-  std::string side_die = "none"; // side dies pressing along x by the stroke: none, mirror, flat or a profile file
-  double side_force = 0;         // side dies pressing with this force (N/mm, each), their travel unknown (0: stroke)
-  FrictionParams friction;       // the contact and friction options (io/friction_params.hpp; read and checked by io)
+  DieChoice side_die_shape{"none"}; // -side_die (ShapeChoice)
+  double side_force = 0;            // side dies pressing with this force (N/mm, each), their travel unknown (0: stroke)
+  FrictionParams friction;          // the contact and friction options (io/friction_params.hpp; read and checked by io)
   Unload unload = Unload::Reverse;
   Springback springback = Springback::Auto;
   // The scenes without tools' own parameters (io/scene_params.hpp; each read and checked by its scene).
@@ -327,9 +341,10 @@ inline bool QuarterTurn(const Options &opt, int pass)
   return PassTurnDegrees(opt, pass) == 90.0 * PassQuarters(opt, pass);
 }
 // Pass `pass`'s lower die (-lower_die, -pass<N>_lower_die: the first pass's where not given).
-inline const std::string &PassLowerDie(const Options &opt, int pass)
+inline std::string PassLowerDie(const Options &opt, int pass)
 {
-  return pass == 0 || LaterPass(opt, pass).lower_die.empty() ? opt.lower_die : LaterPass(opt, pass).lower_die;
+  const std::string &later = pass == 0 ? "" : LaterPass(opt, pass).lower_die;
+  return later.empty() ? ShapeWord(opt.lower_die_shape) : later;
 }
 // Pass `pass`'s lower die mirrors the upper one in shape and motion.
 inline bool PassMirrored(const Options &opt, int pass)

@@ -24,5 +24,10 @@ PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &op
 // -die_u_close, -die_r_edge read by the V kind of tool/shape.hpp (and checked by it in CheckOptions), unless
 // -die_profile names a file: opt.die_shape (die_shape_options.cpp).
 PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
+// The lower die's and the side dies' shapes, each its own block: -lower_die (mirror, flat or a file) into
+// opt.lower_die_shape, -side_die (none, mirror, flat or a file) into opt.side_die_shape (ShapeChoice; both in
+// die_shape_options.cpp, refused where they do not go with the other options by CheckOptions).
+PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
+PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 
 } // namespace tf

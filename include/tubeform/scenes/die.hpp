@@ -69,7 +69,7 @@ PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoi
 // puts it inside the tube's outer surface `outer`, back along its motion until it touches it (with `say`, a line
 // printed); an error on every rank if it cannot be moved clear.
 PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, double offset, Tool &die);
-// Collective: a pass's side dies (o.side_die, read from `option`: -side_die or -pass<N>_side_die) appended to
+// Collective: a pass's side dies (o.side_die_shape, read from `option`: -side_die or -pass<N>_side_die) appended to
 // `tools`: the right one (for mirror the squaring scene's upper die, whose right half is `upper_right`, or the
 // flattening scene's plate; a plate; or a profile drawn as an upper die), turned to the side by the reflection
 // about y = x, moving along -x by the stroke; whole in the half and full models; in the full model, its mirror on
