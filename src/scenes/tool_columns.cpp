@@ -12,15 +12,15 @@ const ToolColumns &(*const kTools[])() = {UpperDieColumns, LowerDieColumns, Side
                                           DiePathColumns};
 } // namespace
 
-int ToolColumns::Slot(int k) const
+int ToolColumns::First() const
 {
   int first = 0;
   for (const auto &t : kTools) {
-    if (&t() == this) return first + k;
+    if (&t() == this) return first_ = first;
     first += (int)t().columns().size();
   }
   PetscCheckAbort(false, PETSC_COMM_SELF, PETSC_ERR_PLIB, "history column %s: its tool is not in the registry",
-                  columns_[k].name);
+                  columns_.front().name);
   return 0;
 }
 

@@ -26,13 +26,7 @@ public:
   Vec2 Direction() const override { return d_; }
   double Spin() const override { return spin_; }
   void Follow(double s) override { d_ = path_.Motion(s), spin_ = path_.Spin(s); }
-  std::vector<double> Kinks(double until) const override
-  {
-    std::vector<double> k;
-    for (double s : path_.Turns())
-      if (s < until) k.push_back(s);
-    return k;
-  }
+  std::vector<double> Kinks(double until) const override { return KinksBelow(path_.Turns(), until); }
   void Map(const TurnMap &map) override
   {
     path_ = path_.Mapped(map), d_ = map(d_);

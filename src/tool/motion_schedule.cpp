@@ -41,12 +41,7 @@ public:
     const size_t k = Piece(s);
     d_ = k + 1 == at_.size() ? Vec2{0.0, 0.0} : Slope(k);
   }
-  std::vector<double> Kinks(double until) const override
-  {
-    std::vector<double> k;
-    for (size_t i = 1; i < at_.size() && at_[i] < until; ++i) k.push_back(at_[i]);
-    return k;
-  }
+  std::vector<double> Kinks(double until) const override { return KinksBelow({at_.begin() + 1, at_.end()}, until); }
   void Map(const TurnMap &map) override
   {
     for (Vec2 &p : to_) p = map(p);

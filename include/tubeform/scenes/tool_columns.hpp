@@ -26,8 +26,10 @@ public:
 
 private:
   std::vector<Column> columns_;
-  // Its k-th column's slot: its first (the registry's) + k; a declaration missing from the registry aborts.
-  int Slot(int k) const;
+  mutable int first_ = -1; // its first column's slot, found in the registry at the first access (it never moves)
+  // Its k-th column's slot: its first + k; a declaration missing from the registry aborts.
+  int Slot(int k) const { return (first_ < 0 ? First() : first_) + k; }
+  int First() const;
 };
 
 // The registry's declared columns, each with its slot (History::Declare).

@@ -20,6 +20,15 @@
 
 namespace tf {
 
+// The strokes of `strokes` (rising) below `until`: a motion's kinks within the press (Motion::Kinks).
+inline std::vector<double> KinksBelow(const std::vector<double> &strokes, double until)
+{
+  std::vector<double> k;
+  for (double s : strokes)
+    if (s < until) k.push_back(s);
+  return k;
+}
+
 class Motion {
 public:
   virtual ~Motion() = default;
