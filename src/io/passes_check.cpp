@@ -28,7 +28,7 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   const PassSpec &p = LaterPass(opt, pass);
   const std::string stroke = PassOption(pass, "stroke"), ordinal = PassOrdinal(pass);
   PetscFunctionBeginUser;
-  PetscCheck(opt.scene == "squaring" || p.die_profile.empty(), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(opt.scene == "squaring" || p.upper.kind.empty(), comm, PETSC_ERR_USER_INPUT,
              "%s: the %s scene presses with plates, not dies", PassOption(pass, "die_profile").c_str(),
              opt.scene.c_str());
   PetscCheck(p.stroke >= 0 && std::isfinite(p.stroke), comm, PETSC_ERR_USER_INPUT,
@@ -40,11 +40,11 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(p.stroke == 0 || pass == 1 || LaterPass(opt, pass - 1).stroke > 0, comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", stroke.c_str(), p.stroke, ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
-  PetscCheck(p.stroke > 0 || (p.die_profile.empty() && p.lower_die.empty() && p.side_die.empty()), comm,
+  PetscCheck(p.stroke > 0 || (p.upper.kind.empty() && p.lower.kind.empty() && p.side.kind.empty()), comm,
              PETSC_ERR_USER_INPUT, "%s, %s, %s: give %s for the %s pass", PassOption(pass, "die_profile").c_str(),
              PassOption(pass, "lower_die").c_str(), PassOption(pass, "side_die").c_str(), stroke.c_str(),
              ordinal.c_str());
-  if (!p.side_die.empty()) PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), p.side_die));
+  if (!p.side.kind.empty()) PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), ShapeWord(p.side)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

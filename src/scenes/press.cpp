@@ -45,8 +45,8 @@ PressScene::PressScene(const Options &opt, bool squaring)
     Pass &p = passes_[k];
     p.stroke = k == 0 ? stroke_ : LaterPass(opt, k).stroke;
     p.turn = PassTurn(opt, k, half_, full_);
-    p.dies = PassOptions(opt, k);
-    p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side_die_shape.kind != "none";
+    p.dies = DiesOfPass(opt, k);
+    p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side.kind != "none";
   }
   if (passes_.size() > 1) passes_[1].side_from = stroke_; // (a later one's: StartPass, kept for a restart: Persist)
 }
@@ -91,9 +91,9 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   PetscCall(PassTools(m, 0, tools.tools));
   std::vector<SurfacePoint> outer;
   PetscCall(GatherOuter(m, outer));
-  // (-die_motion path: a path of its own, to move back along before the offset; -die_motion force, -side_force:
-  // die_motion.cpp)
-  PetscCall(SetPressMotions(m.comm, opt_, SideDie(), tools.tools));
+  // (-side_force: die_motion.cpp; the upper die's own motion, -die_motion path or force, set with its dies: a path
+  // of its own to move back along before the offset)
+  PetscCall(SetSideForces(m.comm, opt_, SideDie(), tools.tools));
   if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
   tools.candidates = "outer";
   for (int pass = (int)passes_.size() - 1; full_ && pass >= 0; --pass) { // (the later passes' axes checked now)

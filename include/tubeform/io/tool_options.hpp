@@ -29,5 +29,13 @@ PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt
 // die_shape_options.cpp, refused where they do not go with the other options by CheckOptions).
 PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
+// Inside a block (its PetscOptionsObject): a die's shape by the word of `option` (ShapeChoice: mirror, flat, none where
+// `none`, or a file; kept where the word is the shape's own), and the upper die's drawing by the file of `option`
+// (DrawingChoice; kept where the file is its own): the first pass's dies and a later one's alike
+// (die_shape_options.cpp).
+PetscErrorCode ReadDieChoice(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *option,
+                             const char *help, bool none, DieChoice &shape);
+PetscErrorCode ReadDrawingChoice(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *option,
+                                 const char *help, DieChoice &shape);
 
 } // namespace tf

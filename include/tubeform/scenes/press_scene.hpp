@@ -82,7 +82,7 @@ private:
   struct Pass {
     double stroke = 0;              // where its upper die ends (mm; the first pass's: stroke_)
     TurnMap turn;                   // draws its dies, built in its press's frame, into the tube's (PassTurn)
-    Options dies;                   // its dies' options (PassOptions: die profile, lower die, side die)
+    DieSet dies;                    // its dies (DiesOfPass: the upper one's shape and motion, lower, side)
     bool held = false;              // the full model's pass held by the rotation hold (not its pins) while pressing
     bool side_dies = false;         // it has side dies (-side_die, -pass<N>_side_die)
     std::vector<double> start_back; // how far back along its motion each die starts (StartOnTube; a later pass)
