@@ -62,13 +62,17 @@ double UpperTravel(const Options &o) { return -LowerMotionOf(o).upper[1]; }
 
 bool LowerDieClosing(const Options &o) { return LowerMotionOf(o).closing; }
 
+std::vector<double> UpperKinks(const DieMotion &die, double until)
+{
+  MotionHandle upper;
+  if (die.kind != DieMotionKind::Path || !MakeMotion(DieMotionName(die.kind), die.spec, upper).empty()) return {};
+  return upper->Kinks(until);
+}
+
 std::vector<double> PressKinks(const Options &opt, double until)
 {
-  std::vector<double> kinks;
-  MotionHandle upper, lower;
-  const DieMotion die = UpperDie(opt);
-  if (die.kind == DieMotionKind::Path && MakeMotion(DieMotionName(die.kind), die.spec, upper).empty())
-    kinks = upper->Kinks(until);
+  std::vector<double> kinks = UpperKinks(UpperDie(opt), until);
+  MotionHandle lower;
   const LowerDieSpec lower_die = LowerDie(opt);
   if (!QuarterModel(opt) && MakeMotion(lower_die.kind, lower_die.spec, lower).empty())
     for (double s : lower->Kinks(until)) kinks.push_back(s);

@@ -38,9 +38,10 @@ PressScene::PressScene(const Options &opt, bool squaring)
               ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_shape.spec.angle)
               : opt.stroke;
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
-  path_ = DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke_path, stroke_);
   lower_motion_ = LowerDieMotion(opt);
   passes_.resize(PassCount(opt));
+  passes_[0].path =
+    DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke_path, stroke_);
   for (int k = 0; k < (int)passes_.size(); ++k) {
     Pass &p = passes_[k];
     p.stroke = k == 0 ? stroke_ : LaterPass(opt, k).stroke;
@@ -53,8 +54,9 @@ PressScene::PressScene(const Options &opt, bool squaring)
 
 LoadPath PressScene::Path(const Options &opt) const
 {
-  const double t = path_.travel() / opt.driver.punch_speed;                        // (the press's duration)
-  const std::vector<double> kinks = path_.Kinks(PressKinks(opt_, path_.travel())); // (where the dies' motions turn)
+  const StrokePath &path = passes_[0].path;
+  const double t = path.travel() / opt.driver.punch_speed;                       // (the press's duration)
+  const std::vector<double> kinks = path.Kinks(PressKinks(opt_, path.travel())); // (where the dies' motions turn)
   if (passes_.size() == 1)
     return {opt_.unload == Unload::None ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
   std::vector<double> stages; // (where each stage after the first begins)
@@ -66,10 +68,10 @@ double PressScene::ToolStroke(double lambda) const
 {
   if (DieMoves(opt_, DieMotionKind::Force))
     return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
-  if (pass_ > 0)
-    return std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0) * (passes_[pass_].stroke + StartBack());
-  if (lambda <= 1.0) return path_.Stroke(lambda);
-  return opt_.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path_.Stroke(1.0);
+  const StrokePath &path = passes_[pass_].path;
+  if (pass_ > 0) return path.Stroke(std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0));
+  if (lambda <= 1.0) return path.Stroke(lambda);
+  return opt_.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path.Stroke(1.0);
 }
 
 double PressScene::ToolForce(double lambda) const
@@ -82,7 +84,7 @@ double PressScene::ToolForce(double lambda) const
 PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
 {
   PetscFunctionBeginUser;
-  PetscCall(CheckPressReach(m.comm, opt_, squaring_, path_.deepest())); // (before any work)
+  PetscCall(CheckPressReach(m.comm, opt_, squaring_, passes_[0].path.deepest())); // (before any work)
   for (int k = (int)passes_.size() - 1; k > 0; --k) {
     // A later pass's dies are checked now, before any work (they are set up after the springback before it).
     std::vector<Tool> later;
@@ -255,6 +257,7 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
     if (d[0] != 0 || d[1] != 0) p.back = std::min(p.back, p.start_back[k]);
   }
   if (p.back == kNever) p.back = 0; // (no die moves)
+  p.path = StrokePath({}, p.stroke + p.back);
   p.start = PassStart();
   if (full_) PetscCall(pins_.Mark(m, Press()));
   if (p.held) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)
@@ -265,9 +268,7 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
 double PressScene::Stroke(Model &m, double lambda) const
 {
   const double s = ToolStroke(lambda);
-  return DieMoves(opt_, DieMotionKind::Force) ? m.contact->tool(kUpper).stroke
-         : pass_ > 0                          ? s - UpperBack()
-                                              : path_.U(s);
+  return DieMoves(opt_, DieMotionKind::Force) ? m.contact->tool(kUpper).stroke : passes_[pass_].path.U(s) - UpperBack();
 }
 
 std::vector<std::pair<std::string, Vec2>> PressScene::Symmetry() const

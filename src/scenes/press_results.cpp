@@ -22,8 +22,8 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   PetscFunctionBeginUser;
   row.stroke = Stroke(m, lambda);
   const ToolColumns &upper = UpperDieColumns(), &path = DiePathColumns(), &side = SideDieColumns();
-  path(row, kDieX) = pass_ == 0 ? path_.Sideways(ToolStroke(lambda)) : 0.0; // (-die_path)
-  path(row, kDieTurn) = pass_ == 0 ? path_.Turn(ToolStroke(lambda)) : 0.0;
+  path(row, kDieX) = passes_[pass_].path.Sideways(ToolStroke(lambda)); // (-die_path; 0 without)
+  path(row, kDieTurn) = passes_[pass_].path.Turn(ToolStroke(lambda));
   if (unloading_) {
     for (int k = 0; k < 2; ++k) force[k] = (ReleaseEnd() - lambda) * reversed_total_[k];
     moment = (ReleaseEnd() - lambda) * reversed_moment_;

@@ -77,11 +77,13 @@ private:
   bool squaring_;
   bool half_; // the half model x >= 0 with both dies (or the full model)
   bool full_; // the full model: the whole tube, both dies across the y axis
-  // A pass: its stroke, its turn, its dies' options, its hold, its side dies and (a later pass) where its dies
-  // start; the scene's passes are a list of them, built once from the options.
+  // A pass: its stroke, its turn, its dies, its upper die's way, its hold, its side dies and (a later pass) where its
+  // dies start; the scene's passes are a list of them, built once from the options.
   struct Pass {
     double stroke = 0;              // where its upper die ends (mm; the first pass's: stroke_)
     TurnMap turn;                   // draws its dies, built in its press's frame, into the tube's (PassTurn)
+    StrokePath path;                // its stroke over its press: the first pass's -stroke_path or -die_path; a later
+                                    // one's straight by its stroke from where its dies start (PassDies)
     DieSet dies;                    // its dies (DiesOfPass: the upper one's shape and motion, lower, side)
     bool held = false;              // the full model's pass held by the rotation hold (not its pins) while pressing
     bool side_dies = false;         // it has side dies (-side_die, -pass<N>_side_die)
@@ -98,7 +100,6 @@ private:
   RotationHold hold_;  // or, in their place, the rotation hold (scenes/hold.hpp)
   SpringbackPin pin_;  // the half and full models' springback pin along the press's y
   double stroke_ = 0, back_ = 0;
-  StrokePath path_;           // the first press's (-stroke_path, or straight to the stroke)
   MotionHandle lower_motion_; // its lower die's motion (-lower_die_motion) at the stroke U, for the tools' work
   int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
   bool unloading_ = false;
