@@ -173,4 +173,47 @@ PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &op
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  for (int pass = 1; pass < kMaxPasses; ++pass) {
+    PassSpec &p = opt.more_passes[pass - 1];
+    const UpperMotionBlock block{
+      Formatted("pass%d_die_", pass + 1), Formatted("tubeform: pass %d upper die motion", pass + 1),
+      pass > 1 ? Formatted("squaring: pass %d's, as -pass2_die_motion", pass + 1)
+               : "squaring: the second pass's upper die moves by its stroke (stroke: -pass2_stroke) or along a path "
+                 "of its own from where it starts (path: -pass2_die_path, -pass2_die_path_turn, -pass2_die_pivot, as "
+                 "-die_path's; over a lower die that stays, -lower_die_motion fixed; in place of -pass2_stroke: the "
+                 "pass ends at U = -y / 2 of its last point; off the axis: -model full -full_hold rotation); without "
+                 "it, -pass2_die_path (or its turns or pivot) means path; a later pass's by its number: "
+                 "-pass3_die_path, ... (docs/dies.md)",
+      (size_t)DieMotionKind::Force}; // (stroke, path)
+    bool given = pass == 1;          // (a later one's read, and listed by -help, where one of them is given)
+    for (const char *name : {"-motion", "-path", "-path_turn", "-pivot"}) {
+      PetscBool set;
+      PetscCall(PetscOptionsHasName(nullptr, block.prefix.c_str(), name, &set));
+      given = given || set;
+    }
+    if (!given) {
+      for (const char *name : {"motion", "path", "path_turn", "pivot"})
+        read.Note(("-" + block.prefix + name).c_str(), block.help.c_str());
+      continue;
+    }
+    p.motion.spec.tool = "the " + PassOrdinal(pass) + " pass's upper die";
+    PetscCall(ReadUpperMotion(comm, read, block, opt.help, p.motion));
+    if (opt.help || p.motion.kind != DieMotionKind::Path) continue;
+    // Its stroke: where its path ends (U = -y / 2 of its last point, from where it starts).
+    const std::string path = "-" + block.prefix + "path";
+    const double y = p.motion.spec.points.back()[1];
+    PetscCheck(p.stroke == 0, comm, PETSC_ERR_USER_INPUT,
+               "%s: in place of %s (the pass ends at U = -y / 2 of its last point); give one of them", path.c_str(),
+               PassOption(pass, "stroke").c_str());
+    PetscCheck(y < 0, comm, PETSC_ERR_USER_INPUT,
+               "%s: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", path.c_str(),
+               y);
+    p.stroke = -0.5 * y;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace tf

@@ -48,6 +48,10 @@ PressScene::PressScene(const Options &opt, bool squaring)
     p.turn = PassTurn(opt, k, half_, full_);
     p.dies = DiesOfPass(opt, k);
     p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side.kind != "none";
+    if (k > 0 && p.dies.motion.kind == DieMotionKind::Path) { // (its own path: -pass<N>_die_path)
+      const ToolPath own = PathOf(p.dies.motion.spec);
+      p.path = StrokePath(own), p.rise = -0.5 * own.Motion(0)[1];
+    }
   }
   if (passes_.size() > 1) passes_[1].side_from = stroke_; // (a later one's: StartPass, kept for a restart: Persist)
 }
@@ -55,12 +59,16 @@ PressScene::PressScene(const Options &opt, bool squaring)
 LoadPath PressScene::Path(const Options &opt) const
 {
   const StrokePath &path = passes_[0].path;
-  const double t = path.travel() / opt.driver.punch_speed;                       // (the press's duration)
-  const std::vector<double> kinks = path.Kinks(PressKinks(opt_, path.travel())); // (where the dies' motions turn)
+  const double t = path.travel() / opt.driver.punch_speed;                 // (the press's duration)
+  std::vector<double> kinks = path.Kinks(PressKinks(opt_, path.travel())); // (where the dies' motions turn)
   if (passes_.size() == 1)
     return {opt_.unload == Unload::None ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
   std::vector<double> stages; // (where each stage after the first begins)
   for (size_t k = 1; k < 2 * passes_.size(); ++k) stages.push_back((double)k);
+  for (size_t k = 1; k < passes_.size(); ++k) { // (a later pass's upper die on its own path: its points)
+    const StrokePath &own = passes_[k].path;
+    for (double f : own.Kinks(UpperKinks(passes_[k].dies.motion, own.travel()))) kinks.push_back(PressStage(k) + f);
+  }
   return {2.0 * passes_.size(), t, stages, kinks};
 }
 
@@ -170,7 +178,11 @@ PetscErrorCode PressScene::StartPass(Model &m)
   ContactSpec spec = spec_;
   hold_.PinSlide(passes_[pass_].held);
   PetscCall(PassDies(m, spec.tools, spec.symmetry));
-  if (!m.quiet)
+  if (!m.quiet && OwnPath())
+    PetscCall(PetscPrintf(m.comm, "tubeform: %s pass: the upper die along its path (%s) from U = %s to %s mm\n",
+                          PassOrdinal(next).c_str(), PassOption(next, "die_path").c_str(),
+                          Formatted("%.4g", PassStart()).c_str(), Formatted("%.4g", PassEnd()).c_str()));
+  else if (!m.quiet)
     PetscCall(PetscPrintf(m.comm,
                           "tubeform: %s pass: the dies travel %s mm together until the one furthest along is "
                           "at U = %s mm (%s); the upper die from U = %s to %s mm\n",
@@ -257,7 +269,7 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
     if (d[0] != 0 || d[1] != 0) p.back = std::min(p.back, p.start_back[k]);
   }
   if (p.back == kNever) p.back = 0; // (no die moves)
-  p.path = StrokePath({}, p.stroke + p.back);
+  if (p.dies.motion.kind == DieMotionKind::Stroke) p.path = StrokePath({}, p.stroke + p.back);
   p.start = PassStart();
   if (full_) PetscCall(pins_.Mark(m, Press()));
   if (p.held) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)

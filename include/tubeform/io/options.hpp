@@ -122,7 +122,7 @@ struct PassSpec {
   DieChoice upper;   // -pass<N>_die_profile (DrawingChoice)
   DieChoice lower;   // -pass<N>_lower_die (ShapeChoice)
   DieChoice side;    // -pass<N>_side_die (ShapeChoice, none allowed)
-  DieMotion motion;  // its upper die's motion (by the stroke)
+  DieMotion motion;  // its upper die's motion: by the stroke, or a path of its own (ReadPassMotions)
 };
 
 struct Options {

@@ -31,6 +31,10 @@ struct UpperMotionBlock {
 // kind refused, naming it. die.spec.tool names the die in the kinds' refusals.
 PetscErrorCode ReadUpperMotion(MPI_Comm comm, OptionReader &read, const UpperMotionBlock &block, bool help,
                                DieMotion &die);
+// A later pass's upper die's motion, each its own block under the prefix pass<N>_die_ (ReadUpperMotion: the stroke,
+// or a path of its own, -pass<N>_die_path, _die_path_turn, _die_pivot, read by the path kind; in place of its
+// -pass<N>_stroke, which it sets to where the path ends). Pass 2's listed by -help; a later one's where given.
+PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt);
 // (both in die_motion_options.cpp)
 // The upper die's shape, its own block under the options prefix die_: the V-die, its options -die_angle, -die_r_apex,
 // -die_u_close, -die_r_edge read by the V kind of tool/shape.hpp (and checked by it in CheckOptions), unless
