@@ -8,7 +8,10 @@
     docs/*.md: `tests/check_turn.py`, options/dies/plate.profile, ...) exists;
     a placeholder (`src/tool/shape_<kind>.cpp`) is not a path;
   - docs/README.md, the index, links every doc of docs/, and
-    docs/notes/README.md every note.
+    docs/notes/README.md every note;
+  - the tests, tools, scripts, studies, Python helpers and options files cite
+    docs that exist and sections they have (comments wrapped over lines are
+    joined). The C++ sources are not scanned yet.
 The notes are records at their commits: their plain paths may name files
 since removed, so only their links and cited sections are checked.
 Exact checks on text: nothing here has a tolerance.
@@ -88,6 +91,24 @@ for doc in user + notes:
         if not (path in files or os.path.exists(os.path.join(src, path)) or resolve(doc, path)
                 or any(f.endswith("/" + path) for f in files)):
             bad_paths.append(f"{rel}: {path}")
+cite = re.compile(r"(docs/[\w./-]+\.md)\)?,? \"([^\"]+)\"")
+for rel in sorted(f for f in files if f.split(os.sep)[0] in ("tests", "tools", "scripts", "studies", "python", "options")
+                  and not f.endswith((".cpp", ".hpp", ".h", ".png", ".pdf", ".h5", ".dxf", ".msh", ".csv"))):
+    try:
+        t = open(os.path.join(src, rel), encoding="utf-8").read()
+    except (UnicodeDecodeError, OSError):
+        continue  # not text
+    flat = re.sub(r"\s*\n\s*(#|//|\*)?\s*", " ", t)
+    for name in re.findall(r"(docs/[\w./-]+\.md)", flat):
+        n_cited += 1
+        if not os.path.exists(os.path.join(src, name)):
+            bad_cited.append(f"{rel}: {name} (no such file)")
+    for name, title in cite.findall(flat):
+        n_cited += 1
+        title = title.strip(" .,")
+        if os.path.exists(os.path.join(src, name)) and not any(
+                h.strip().startswith(title) or title in h for h in titles(os.path.join(src, name))):
+            bad_cited.append(f'{rel}: {name}, "{title}" (no such section)')
 k.check(n_links > 50 and not bad_links, f"{n_links} links resolve" + "".join("\n         " + b for b in bad_links))
 k.check(n_cited > 50 and not bad_cited, f"{n_cited} cited sections exist" + "".join("\n         " + b for b in bad_cited))
 k.check(n_paths > 50 and not bad_paths, f"{n_paths} paths the user docs name exist"
