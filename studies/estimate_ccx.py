@@ -78,6 +78,25 @@ def values(h5, case):
     return us, np.array(load), np.array(ct), np.array(rload), np.array(rct)
 
 
+def smooth_at(H, col, U, half):
+    """Column `col` at stroke U from a quadratic fitted over the rows within `half` mm of U (one-sided at the ends
+    of the loading): the curve's trend with the contact staircase averaged out."""
+    S, Y = H["stroke"], H[col]
+    k = (S >= U - half) & (S <= U + half)
+    if k.sum() < 4:
+        return float(np.interp(U, S, Y))
+    return float(np.polyval(np.polyfit(S[k] - U, Y[k], 2), 0.0))
+
+
+def smoothed(h5, case, half):
+    """values() with the loaded values from the trend (smooth_at); C/t after springback as it is."""
+    us, load, ct, rload, rct = values(h5, case)
+    H = tfruns.history(h5)
+    sl = np.array([smooth_at(H, "load", u, half) for u in us])
+    sc = np.array([smooth_at(H, "c_over_t", u, half) for u in us if u >= 2] + [ct[-1]])
+    return us, sl, sc, rload, rct
+
+
 def candidates(v):
     """Each candidate's estimate of the run's load (relative) and C/t errors from the levels' values."""
     run, M, S, A, T, R = (v[k] for k in ("run", "M", "S", "A", "T", "R"))
@@ -92,6 +111,18 @@ def candidates(v):
     out["|S-M| + |A-run|/3"] = (rel(S, M) + rel(A, run) / 3, absd(S, M) + absd(A, run) / 3)
     out["|R-run| + |A-run|"] = (rel(R, run) + rel(A, run), absd(R, run) + absd(A, run))
     out["|S-M| + |M-run|/3"] = (rel(S, M) + rel(M, run) / 3, absd(S, M) + absd(M, run) / 3)
+    for half in (0.2, 0.4):
+        sm = {k: v[f"{k}~{half}"] for k in ("run", "M", "S", "A", "R")}
+        rip_l = np.abs(run[1] / sm["run"][1] - 1)
+        rip_c = np.abs(run[2] - sm["run"][2])
+        sl = lambda a, b: np.abs(sm[a][1] / sm[b][1] - 1)  # noqa: E731
+        sc = lambda a, b: np.abs(sm[a][2] - sm[b][2])  # noqa: E731
+        out[f"trend {half}: |S-M| + |M-run| + ripple"] = (sl("S", "M") + sl("M", "run") + rip_l,
+                                                         sc("S", "M") + sc("M", "run") + rip_c)
+        out[f"trend {half}: |R-run| + |A-run| + ripple"] = (sl("R", "run") + sl("A", "run") + rip_l,
+                                                           sc("R", "run") + sc("A", "run") + rip_c)
+        out[f"trend {half}: |S-M| + |M-run|/3 + ripple"] = (sl("S", "M") + sl("M", "run") / 3 + rip_l,
+                                                           sc("S", "M") + sc("M", "run") / 3 + rip_c)
     return out
 
 
@@ -104,6 +135,7 @@ def evaluate(cases, presets, cells):
                 print(f"{case} {preset}: not run")
                 continue
             v = {k: values(f, case) for k, f in files.items()}
+            v.update({f"{k}~{half}": smoothed(f, case, half) for k, f in files.items() for half in (0.2, 0.4)})
             us, load, ct, rload, rct = v["run"]
             err_l, err_c = np.abs(load / rload - 1), np.abs(ct - rct)
             for name, (el, ec) in candidates(v).items():
