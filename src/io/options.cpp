@@ -8,6 +8,7 @@
 #include "tubeform/io/friction_options.hpp"
 #include "tubeform/io/material_library.hpp"
 #include "tubeform/io/option_reader.hpp"
+#include "tubeform/io/press_options.hpp"
 #include "tubeform/io/tool_options.hpp"
 
 namespace tf {
@@ -161,11 +162,8 @@ PetscErrorCode ReadMaterial(MPI_Comm comm, OptionReader &read, Options &opt)
 PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(read.Real(PetscOptionsObject, "-stroke",
-                      "Final stroke U (mm): tool travel, or the prescribed end shortening of the column", opt.stroke));
-  PetscCall(read.Real(PetscOptionsObject, "-stroke_corner_radius", "The paper's rule: the rounded square's corner (mm)",
-                      opt.stroke_corner_radius));
-  PetscCall(ReadToolOptions(PetscOptionsObject, read, opt)); // (tool_options.cpp)
+  PetscCall(ReadStrokeOptions(PetscOptionsObject, read, opt.stroke)); // (stroke_options.cpp)
+  PetscCall(ReadToolOptions(PetscOptionsObject, read, opt));          // (tool_options.cpp)
   PetscCall(
     ChooseWord(PetscOptionsObject, read, "-unload",
                "Springback: reverse (paper: contact forces reversed, tools removed), withdraw (tools move back), none",

@@ -4,6 +4,7 @@
 #include "tubeform/io/friction_options.hpp"
 #include "tubeform/io/option_reader.hpp"
 #include "tubeform/io/options.hpp"
+#include "tubeform/io/press_options.hpp"
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -45,13 +46,9 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
                "-die_force %g: not with a second pass (-pass2_stroke); press one pass by force", force);
     PetscCheck(opt.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: -unload withdraw moves the die back by its stroke; use -unload reverse or none", force);
-    PetscCheck(opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(opt.stroke.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", force);
   }
-  PetscCheck(
-    opt.lower_die_shape.kind == "mirror" || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-    "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
-    opt.stroke_corner_radius, ShapeWord(opt.lower_die_shape).c_str());
   bool mirror = LowerDieMoves(opt, "mirror");
   for (int pass = 0; pass < kMaxPasses; ++pass) mirror = mirror && PassLowerDie(opt, pass) == "mirror";
   PetscCheck(opt.model != TubeModel::Quarter || mirror, comm, PETSC_ERR_USER_INPUT,
@@ -91,39 +88,13 @@ PetscErrorCode CheckDiePath(MPI_Comm comm, Options &opt)
   PetscCheck(LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
              "-die_path: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion "
              "fixed");
-  PetscCheck(opt.stroke_path.empty() && opt.stroke_corner_radius <= 0 && PassCount(opt) == 1 &&
+  PetscCheck(opt.stroke.path.empty() && opt.stroke.corner_radius <= 0 && PassCount(opt) == 1 &&
                opt.side_die_shape.kind == "none" && opt.unload != Unload::Withdraw && opt.die_offset == 0,
              comm, PETSC_ERR_USER_INPUT,
              "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, "
              "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways is "
              "its own offset)");
-  opt.stroke = -0.5 * y;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// -stroke_path and -die_path: their points, and the stroke they end at.
-PetscErrorCode CheckDiePaths(MPI_Comm comm, Options &opt)
-{
-  PetscFunctionBeginUser;
-  const bool press = opt.scene == "squaring" || opt.scene == "flattening";
-  if (!opt.stroke_path.empty()) {
-    // The die goes to each stroke in turn at the punch speed; the last is the press's final stroke.
-    PetscCheck(press, comm, PETSC_ERR_USER_INPUT, "-stroke_path: the %s scene presses with no dies", opt.scene.c_str());
-    double at = 0;
-    for (double u : opt.stroke_path) {
-      PetscCheck(std::isfinite(u) && u >= 0 && u != at, comm, PETSC_ERR_USER_INPUT,
-                 "-stroke_path: %g after %g: each stroke must be a non-negative number of mm, other than the one "
-                 "before it (the path starts at 0)",
-                 u, at);
-      at = u;
-    }
-    PetscCheck(opt.stroke_path.back() > 0, comm, PETSC_ERR_USER_INPUT,
-               "-stroke_path: the last stroke is the press's final one and must be positive");
-    PetscCheck(!DieMoves(opt, DieMotionKind::Force) && opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-               "-stroke_path: not with -die_force or -stroke_corner_radius");
-    opt.stroke = opt.stroke_path.back();
-  }
-  if (DieMoves(opt, DieMotionKind::Path)) PetscCall(CheckDiePath(comm, opt));
+  opt.stroke.u = -0.5 * y;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -133,8 +104,8 @@ PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 {
   PetscFunctionBeginUser;
   const bool own = !LowerDieMoves(opt, "mirror") && !LowerDieMoves(opt, "fixed");
-  PetscCheck(!own || (opt.stroke_path.empty() && opt.unload != Unload::Withdraw && PassCount(opt) == 1 &&
-                      opt.stroke_corner_radius <= 0),
+  PetscCheck(!own || (opt.stroke.path.empty() && opt.unload != Unload::Withdraw && PassCount(opt) == 1 &&
+                      opt.stroke.corner_radius <= 0),
              comm, PETSC_ERR_USER_INPUT,
              "-lower_die_motion %s: the lower die follows its motion as the stroke rises, in one pass: not with "
              "-stroke_path, -unload withdraw, -pass2_stroke or -stroke_corner_radius",
@@ -181,7 +152,7 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckDies(comm, opt));
-  PetscCall(CheckDiePaths(comm, opt));
+  if (DieMoves(opt, DieMotionKind::Path)) PetscCall(CheckDiePath(comm, opt));
   PetscCall(CheckLowerDieMotion(comm, opt));
   PetscCall(CheckPassesAndHolds(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -223,15 +194,10 @@ PetscErrorCode CheckLoads(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckMaterial(comm, opt.material));
-  PetscCheck(VDie(opt) || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-             "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
-             opt.stroke_corner_radius);
   PetscCall(CheckDiesAndPasses(comm, opt));
   PetscCall(CheckShape(comm, "v", "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
   PetscCall(CheckFrictionOptions(comm, opt.friction));               // (friction_options.cpp)
-  PetscCheck(opt.stroke_corner_radius >= 0, comm, PETSC_ERR_USER_INPUT,
-             "-stroke_corner_radius %g: must be non-negative", opt.stroke_corner_radius);
-  PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);
+  PetscCall(CheckStrokeOptions(comm, opt));                          // (stroke_options.cpp; after -die_path's)
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -245,8 +211,8 @@ PetscErrorCode CheckOutputAndStops(MPI_Comm comm, Options &opt)
              "-time_limit %g: must be 0 (no limit) or a positive number of seconds", opt.time_limit);
   PetscCheck(opt.progress >= 0 && std::isfinite(opt.progress), comm, PETSC_ERR_USER_INPUT,
              "-progress %g: must be 0 (none) or a positive number of seconds", opt.progress);
-  PetscCheck(opt.output_stroke >= 0 && opt.output_stroke <= opt.stroke, comm, PETSC_ERR_USER_INPUT,
-             "-output_stroke %g: must be between 0 (off) and the stroke %g mm", opt.output_stroke, opt.stroke);
+  PetscCheck(opt.output_stroke >= 0 && opt.output_stroke <= opt.stroke.u, comm, PETSC_ERR_USER_INPUT,
+             "-output_stroke %g: must be between 0 (off) and the stroke %g mm", opt.output_stroke, opt.stroke.u);
   PetscCheck(!opt.output.empty(), comm, PETSC_ERR_USER_INPUT, "-output: an HDF5 file name is required");
   PetscCheck(opt.checkpoint_every >= 0, comm, PETSC_ERR_USER_INPUT,
              "-checkpoint_every %d: must be 0 (only when stopped) or a number of increments",

@@ -4,17 +4,6 @@
 namespace tf {
 
 namespace {
-// The die's strokes in turn (the dies' shapes: their own blocks, die_shape_options.cpp).
-PetscErrorCode ReadStrokePath(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
-{
-  PetscFunctionBeginUser;
-  PetscCall(RealList(PetscOptionsObject, read, "-stroke_path",
-                     "tool scenes: the die's strokes in turn (mm, >= 0), at the punch speed: press, back off, press "
-                     "again (in place of -stroke: the last is the final stroke)",
-                     kMaxPathPoints, opt.stroke_path));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 // The part of the tube modelled and how the full model is held; the upper die's offset (its motion: -die_motion,
 // die_motion_options.cpp).
 PetscErrorCode ReadModelAndOffset(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
@@ -117,7 +106,6 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(ReadStrokePath(PetscOptionsObject, read, opt));
   PetscCall(ReadModelAndOffset(PetscOptionsObject, read, opt));
   PetscCall(ReadSecondPass(PetscOptionsObject, read, opt.more_passes[0]));
   PetscCall(ReadSideDies(PetscOptionsObject, read, opt));

@@ -34,11 +34,11 @@ namespace tf {
 PressScene::PressScene(const Options &opt, bool squaring)
     : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(FullModel(opt))
 {
-  stroke_ = opt.stroke_corner_radius > 0
-              ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_shape.spec.angle)
-              : opt.stroke;
+  stroke_ = opt.stroke.corner_radius > 0
+              ? StrokeForCornerRadius(opt.tube_ro, opt.stroke.corner_radius, opt.die_shape.spec.angle)
+              : opt.stroke.u;
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
-  path_ = DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke_path, stroke_);
+  path_ = DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
   lower_motion_ = LowerDieMotion(opt);
   passes_.resize(PassCount(opt));
   for (int k = 0; k < (int)passes_.size(); ++k) {
@@ -115,8 +115,8 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   tools.params = MakeContactParams(opt_, kVcriOfSpacing * spacing);
   spec_ = tools; // a later pass's set: the same nodes, supports and law
   spec_.tools.clear();
-  if (opt_.stroke_corner_radius > 0 && !m.quiet)
-    PetscCall(NoteCornerRadius(m.comm, stroke_, opt_.stroke_corner_radius));
+  if (opt_.stroke.corner_radius > 0 && !m.quiet)
+    PetscCall(NoteCornerRadius(m.comm, stroke_, opt_.stroke.corner_radius));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

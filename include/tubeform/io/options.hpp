@@ -14,6 +14,7 @@
 #include "tubeform/fe/quad.hpp"
 #include "tubeform/io/driver_params.hpp"
 #include "tubeform/io/friction_params.hpp"
+#include "tubeform/io/press_params.hpp"
 #include "tubeform/io/scene_params.hpp"
 #include "tubeform/material/elastic.hpp"
 #include "tubeform/tool/motion.hpp"
@@ -127,9 +128,7 @@ struct Options {
   MaterialParams material;
   // The incremental driver's (io/driver_params.hpp; read and checked by the driver).
   DriverParams driver;
-  double stroke = 4.2;             // final tool stroke / prescribed end displacement (mm)
-  double stroke_corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
-  std::vector<double> stroke_path; // tool scenes: the die's strokes in turn (empty: 0 to -stroke)
+  StrokeParams stroke; // the stroke and its path (io/press_params.hpp; read and checked by io, stroke_options.cpp)
   // Tools, contact, friction (docs/dies.md; docs/theory.md, section 6)
   DieShape die_shape;                  // the upper die's shape (-die_profile, -die_angle, ...; UpperDieShape)
   DieChoice lower_die_shape{"mirror"}; // -lower_die (ShapeChoice)
@@ -245,9 +244,6 @@ inline void ChooseElement(Options &opt)
   opt.element_name = bar ? "qm6bar" : "qm6";
 }
 
-// The most strokes -stroke_path takes (a press's path, not a cycle test: a few dozen).
-constexpr PetscInt kMaxPathPoints = 32;
-
 // The upper die's motion as the scenes take it: its kind and spec, the spec's reach the tube's outer radius (a turn
 // counted in the path's length as the arc of a point there).
 inline DieMotion UpperDie(const Options &opt)
@@ -297,8 +293,8 @@ inline Vec2 DiePivot(const Options &opt)
 inline double Travel(const Options &opt)
 {
   if (DieMoves(opt, DieMotionKind::Path)) return DiePath(opt).end();
-  double travel = opt.stroke_path.empty() ? opt.stroke : 0, at = 0;
-  for (double u : opt.stroke_path) travel += std::abs(u - at), at = u;
+  double travel = opt.stroke.path.empty() ? opt.stroke.u : 0, at = 0;
+  for (double u : opt.stroke.path) travel += std::abs(u - at), at = u;
   return travel;
 }
 // -die_path moves the die sideways somewhere.

@@ -1,0 +1,20 @@
+// The press's own options (io/press_params.hpp), one group each, read and checked in its own file: each reader lists
+// its options in -help inside the loading block (between PetscOptionsBegin and PetscOptionsEnd, whose
+// PetscOptionsObject it takes), each checker refuses a bad value or a combination its options cannot take, in one line
+// naming the option (the combinations another tool's option leads are that tool's checks: options_check.cpp).
+#pragma once
+
+#include <petscsys.h>
+
+#include "tubeform/io/option_reader.hpp"
+#include "tubeform/io/options.hpp"
+
+namespace tf {
+
+// -stroke, -stroke_corner_radius, -stroke_path into opt.stroke (stroke_options.cpp).
+PetscErrorCode ReadStrokeOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, StrokeParams &s);
+// Collective: refuses the stroke's values and the dies the corner-radius rule is not for; a -stroke_path sets the
+// final stroke (after the upper die's checks: a -die_path sets it too, CheckOptions).
+PetscErrorCode CheckStrokeOptions(MPI_Comm comm, Options &opt);
+
+} // namespace tf

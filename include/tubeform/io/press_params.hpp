@@ -1,0 +1,25 @@
+// The press's own parameters as the options give them, one struct per group (docs/dies.md): how far it presses (the
+// stroke; also the column's end shortening). Options holds one of each (so that they travel with the run's options to
+// its levels and companions); io reads and checks each in its own file (io/press_options.hpp), and the scenes take
+// them from there.
+#pragma once
+
+#include <petscsys.h>
+
+#include <vector>
+
+namespace tf {
+
+// The most strokes -stroke_path takes (a press's path, not a cycle test: a few dozen).
+constexpr PetscInt kMaxPathPoints = 32;
+
+// The stroke (-stroke, -stroke_corner_radius, -stroke_path): where the press ends, given, by the paper's
+// corner-radius rule, or as the last of the die's strokes in turn (CheckStrokeOptions sets u to it; a -die_path sets
+// it too).
+struct StrokeParams {
+  double u = 4.2;           // final tool stroke U / prescribed end displacement (mm)
+  double corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
+  std::vector<double> path; // tool scenes: the die's strokes in turn (empty: 0 to u)
+};
+
+} // namespace tf
