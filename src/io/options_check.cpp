@@ -44,7 +44,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
                force);
     PetscCheck(PassCount(opt) == 1, comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: not with a second pass (-pass2_stroke); press one pass by force", force);
-    PetscCheck(opt.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: -unload withdraw moves the die back by its stroke; use -unload reverse or none", force);
     PetscCheck(opt.stroke.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", force);
@@ -89,7 +89,7 @@ PetscErrorCode CheckDiePath(MPI_Comm comm, Options &opt)
              "-die_path: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion "
              "fixed");
   PetscCheck(opt.stroke.path.empty() && opt.stroke.corner_radius <= 0 && PassCount(opt) == 1 &&
-               opt.side_die_shape.kind == "none" && opt.unload != Unload::Withdraw && opt.die_offset == 0,
+               opt.side_die_shape.kind == "none" && opt.release.unload != Unload::Withdraw && opt.die_offset == 0,
              comm, PETSC_ERR_USER_INPUT,
              "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, "
              "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways is "
@@ -104,7 +104,7 @@ PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 {
   PetscFunctionBeginUser;
   const bool own = !LowerDieMoves(opt, "mirror") && !LowerDieMoves(opt, "fixed");
-  PetscCheck(!own || (opt.stroke.path.empty() && opt.unload != Unload::Withdraw && PassCount(opt) == 1 &&
+  PetscCheck(!own || (opt.stroke.path.empty() && opt.release.unload != Unload::Withdraw && PassCount(opt) == 1 &&
                       opt.stroke.corner_radius <= 0),
              comm, PETSC_ERR_USER_INPUT,
              "-lower_die_motion %s: the lower die follows its motion as the stroke rises, in one pass: not with "
@@ -142,8 +142,7 @@ PetscErrorCode CheckPassesAndHolds(MPI_Comm comm, Options &opt)
     !held || (!DieMoves(opt, DieMotionKind::Force) && opt.side_force == 0), comm, PETSC_ERR_USER_INPUT,
     "the rotation hold (-full_hold, -die_offset, -die_path): not with -die_force or -side_force (one force-controlled "
     "unknown in an increment)");
-  PetscCheck(QuarterModel(opt) || opt.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
-             "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
+  PetscCall(CheckReleaseOptions(comm, opt)); // (release_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

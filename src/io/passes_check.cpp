@@ -14,7 +14,7 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
   PetscFunctionBeginUser;
   if (value == "none") PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
-  PetscCheck(!DieMoves(opt, DieMotionKind::Force) && opt.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(!DieMoves(opt, DieMotionKind::Force) && opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
              "%s %s: side dies press by the stroke: not with -die_force or -unload withdraw", name.c_str(),
              value.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -34,9 +34,9 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(p.stroke >= 0 && std::isfinite(p.stroke), comm, PETSC_ERR_USER_INPUT,
              "%s %g: must be non-negative (0: %s)", stroke.c_str(), p.stroke,
              pass == 1 ? "one pass" : ("the " + PassOrdinal(pass - 1) + " pass the last").c_str());
-  PetscCheck(p.stroke == 0 || opt.unload == Unload::Reverse, comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(p.stroke == 0 || opt.release.unload == Unload::Reverse, comm, PETSC_ERR_USER_INPUT,
              "%s %g: a %s pass follows the paper's springback; use -unload reverse (not %s)", stroke.c_str(), p.stroke,
-             ordinal.c_str(), WordOf(kUnloadWords, opt.unload));
+             ordinal.c_str(), WordOf(kUnloadWords, opt.release.unload));
   PetscCheck(p.stroke == 0 || pass == 1 || LaterPass(opt, pass - 1).stroke > 0, comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", stroke.c_str(), p.stroke, ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());

@@ -56,7 +56,7 @@ LoadPath PressScene::Path(const Options &opt) const
   const double t = path_.travel() / opt.driver.punch_speed;                        // (the press's duration)
   const std::vector<double> kinks = path_.Kinks(PressKinks(opt_, path_.travel())); // (where the dies' motions turn)
   if (passes_.size() == 1)
-    return {opt_.unload == Unload::None ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
+    return {opt_.release.unload == Unload::None ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
   std::vector<double> stages; // (where each stage after the first begins)
   for (size_t k = 1; k < 2 * passes_.size(); ++k) stages.push_back((double)k);
   return {2.0 * passes_.size(), t, stages, kinks};
@@ -69,7 +69,7 @@ double PressScene::ToolStroke(double lambda) const
   if (pass_ > 0)
     return std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0) * (passes_[pass_].stroke + StartBack());
   if (lambda <= 1.0) return path_.Stroke(lambda);
-  return opt_.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path_.Stroke(1.0);
+  return opt_.release.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path_.Stroke(1.0);
 }
 
 double PressScene::ToolForce(double lambda) const
@@ -124,8 +124,8 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
 {
   PetscFunctionBeginUser;
   const bool elastic = ElasticRelease(opt_);
-  if (opt_.unload == Unload::Withdraw) m.body.BeginRelease(elastic, false);
-  if (opt_.unload != Unload::Reverse) PetscFunctionReturn(PETSC_SUCCESS);
+  if (opt_.release.unload == Unload::Withdraw) m.body.BeginRelease(elastic, false);
+  if (opt_.release.unload != Unload::Reverse) PetscFunctionReturn(PETSC_SUCCESS);
   if (!Unloading(lambda)) { // (the next pass)
     PetscCall(StartPass(m));
     PetscFunctionReturn(PETSC_SUCCESS);

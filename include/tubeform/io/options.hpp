@@ -29,13 +29,6 @@ constexpr const char *WordOf(const char *const (&words)[N], E value)
   return words[static_cast<size_t>(value)];
 }
 
-// How a press is released after loading (-unload): its contact forces reversed and the dies removed (the paper's),
-// the dies moved back, or not at all. The words of the option in the enumerators' order.
-enum class Unload { Reverse, Withdraw, None };
-inline constexpr const char *kUnloadWords[] = {"reverse", "withdraw", "none"};
-// The release's law (-springback): auto (ElasticRelease), the material's own, or every point elastic (the paper's).
-enum class Springback { Auto, Material, Elastic };
-inline constexpr const char *kSpringbackWords[] = {"auto", "material", "elastic"};
 // The part of the tube the tool scenes model (-model): the quarter where it is exact (auto, QuarterModel), or the
 // one asked for.
 enum class TubeModel { Auto, Quarter, Half, Full };
@@ -142,8 +135,7 @@ struct Options {
   DieChoice side_die_shape{"none"}; // -side_die (ShapeChoice)
   double side_force = 0;            // side dies pressing with this force (N/mm, each), their travel unknown (0: stroke)
   FrictionParams friction;          // the contact and friction options (io/friction_params.hpp; read and checked by io)
-  Unload unload = Unload::Reverse;
-  Springback springback = Springback::Auto;
+  ReleaseParams release; // the release after loading (io/press_params.hpp; read and checked by io, release_options.cpp)
   // The scenes without tools' own parameters (io/scene_params.hpp; each read and checked by its scene).
   PressureParams pressure;
   ShearParams shear;

@@ -16,5 +16,9 @@ PetscErrorCode ReadStrokeOptions(PetscOptionItems *PetscOptionsObject, OptionRea
 // Collective: refuses the stroke's values and the dies the corner-radius rule is not for; a -stroke_path sets the
 // final stroke (after the upper die's checks: a -die_path sets it too, CheckOptions).
 PetscErrorCode CheckStrokeOptions(MPI_Comm comm, Options &opt);
+// -unload, -springback into opt.release (release_options.cpp).
+PetscErrorCode ReadReleaseOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ReleaseParams &r);
+// Collective: refuses a release the model cannot take (after the dies' and passes' checks, CheckOptions).
+PetscErrorCode CheckReleaseOptions(MPI_Comm comm, const Options &opt);
 
 } // namespace tf

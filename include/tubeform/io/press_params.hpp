@@ -1,7 +1,7 @@
 // The press's own parameters as the options give them, one struct per group (docs/dies.md): how far it presses (the
-// stroke; also the column's end shortening). Options holds one of each (so that they travel with the run's options to
-// its levels and companions); io reads and checks each in its own file (io/press_options.hpp), and the scenes take
-// them from there.
+// stroke; also the column's end shortening) and how it is released (also the bending scene's springback). Options holds
+// one of each (so that they travel with the run's options to its levels and companions); io reads and checks each in
+// its own file (io/press_options.hpp), and the scenes take them from there.
 #pragma once
 
 #include <petscsys.h>
@@ -20,6 +20,20 @@ struct StrokeParams {
   double u = 4.2;           // final tool stroke U / prescribed end displacement (mm)
   double corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
   std::vector<double> path; // tool scenes: the die's strokes in turn (empty: 0 to u)
+};
+
+// How a press is released after loading (-unload): its contact forces reversed and the dies removed (the paper's),
+// the dies moved back, or not at all. The words of the option in the enumerators' order.
+enum class Unload { Reverse, Withdraw, None };
+inline constexpr const char *kUnloadWords[] = {"reverse", "withdraw", "none"};
+// The release's law (-springback): auto (ElasticRelease), the material's own, or every point elastic (the paper's).
+enum class Springback { Auto, Material, Elastic };
+inline constexpr const char *kSpringbackWords[] = {"auto", "material", "elastic"};
+
+// The release (-unload, -springback): how the press lets the tube go, and by what law it springs back.
+struct ReleaseParams {
+  Unload unload = Unload::Reverse;
+  Springback springback = Springback::Auto;
 };
 
 } // namespace tf
