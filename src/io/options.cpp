@@ -163,6 +163,7 @@ PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &rea
 {
   PetscFunctionBeginUser;
   PetscCall(ReadStrokeOptions(PetscOptionsObject, read, opt.stroke));   // (stroke_options.cpp)
+  PetscCall(ReadModelOptions(PetscOptionsObject, read, opt.model));     // (model_options.cpp)
   PetscCall(ReadToolOptions(PetscOptionsObject, read, opt));            // (tool_options.cpp)
   PetscCall(ReadReleaseOptions(PetscOptionsObject, read, opt.release)); // (release_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -18,14 +18,15 @@ namespace {
 // y, along which its punch load is read.
 constexpr double kMaxDieTurn = 90;
 
-// The dies and the model: which dies, forces and side dies go together, and what the model allows.
+// The dies: which dies, forces and side dies go together.
 PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
-  bool asked = opt.lower_die_shape.kind != "mirror" || !LowerDieMoves(opt, "mirror") || opt.model != TubeModel::Auto ||
-               !DieMoves(opt, DieMotionKind::Stroke) || opt.side_die_shape.kind != "none" || opt.side_force != 0 ||
-               opt.die_offset != 0 || opt.full_hold != FullHold::Auto;
+  bool asked = opt.lower_die_shape.kind != "mirror" || !LowerDieMoves(opt, "mirror") ||
+               opt.model.part != TubeModel::Auto || !DieMoves(opt, DieMotionKind::Stroke) ||
+               opt.side_die_shape.kind != "none" || opt.side_force != 0 || opt.model.die_offset != 0 ||
+               opt.model.full_hold != FullHold::Auto;
   for (const PassSpec &p : opt.more_passes)
     asked =
       asked || p.stroke != 0 || p.turn != 0 || !p.die_profile.empty() || !p.lower_die.empty() || !p.side_die.empty();
@@ -49,11 +50,6 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
     PetscCheck(opt.stroke.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", force);
   }
-  bool mirror = LowerDieMoves(opt, "mirror");
-  for (int pass = 0; pass < kMaxPasses; ++pass) mirror = mirror && PassLowerDie(opt, pass) == "mirror";
-  PetscCheck(opt.model != TubeModel::Quarter || mirror, comm, PETSC_ERR_USER_INPUT,
-             "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
-             "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
   PetscCall(CheckPassStrokesAndDies(comm, opt)); // (passes_check.cpp)
   PetscCall(CheckSideDies(comm, opt, "-side_die", ShapeWord(opt.side_die_shape)));
   PetscCheck(opt.side_force >= 0 && std::isfinite(opt.side_force), comm, PETSC_ERR_USER_INPUT,
@@ -89,7 +85,7 @@ PetscErrorCode CheckDiePath(MPI_Comm comm, Options &opt)
              "-die_path: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion "
              "fixed");
   PetscCheck(opt.stroke.path.empty() && opt.stroke.corner_radius <= 0 && PassCount(opt) == 1 &&
-               opt.side_die_shape.kind == "none" && opt.release.unload != Unload::Withdraw && opt.die_offset == 0,
+               opt.side_die_shape.kind == "none" && opt.release.unload != Unload::Withdraw && opt.model.die_offset == 0,
              comm, PETSC_ERR_USER_INPUT,
              "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, "
              "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways is "
@@ -113,35 +109,12 @@ PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The second pass's turn, a die off the axis, the rotation hold and the release.
+// The later passes' turns, the model (a die off the axis, the rotation hold) and the release.
 PetscErrorCode CheckPassesAndHolds(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(CheckPassTurns(comm, opt)); // (passes_check.cpp)
-  // The rotation hold: the full model; one extra unknown in a solve (scenes/hold.hpp).
-  PetscCheck(std::isfinite(opt.die_offset), comm, PETSC_ERR_USER_INPUT, "-die_offset %g: give a number of mm",
-             opt.die_offset);
-  PetscCheck(opt.die_offset == 0 || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
-             "-die_offset %g: the squaring scene's die (a plate off the axis is the same plate)", opt.die_offset);
-  char off_axis[64] = "-die_path"; // (what puts the die off the axis, named in the errors)
-  if (opt.die_offset != 0) std::snprintf(off_axis, sizeof off_axis, "-die_offset %g", opt.die_offset);
-  if (opt.die_offset == 0 && !DiePathSideways(opt)) std::snprintf(off_axis, sizeof off_axis, "-die_path_turn");
-  PetscCheck(!DieOffAxis(opt) || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
-             "%s: a die off the axis breaks the tube's mirror symmetry; use -model full (or auto)", off_axis);
-  PetscCheck(opt.full_hold != FullHold::Rotation || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
-             "-full_hold rotation: the %s scene's plates do not hold the tube's slide; use pins", opt.scene.c_str());
-  PetscCheck(!DieOffAxis(opt) || opt.full_hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
-             "%s with -full_hold pins: the pins would hold the tube's slide against the die; use -full_hold rotation "
-             "(or auto)",
-             off_axis);
-  PetscCheck(opt.full_hold == FullHold::Auto || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
-             "-full_hold %s: only the full model is held so (-model full)", WordOf(kFullHoldWords, opt.full_hold));
-  bool held = false;
-  for (int pass = 0; pass < kMaxPasses; ++pass) held = held || HeldByRotation(opt, pass);
-  PetscCheck(
-    !held || (!DieMoves(opt, DieMotionKind::Force) && opt.side_force == 0), comm, PETSC_ERR_USER_INPUT,
-    "the rotation hold (-full_hold, -die_offset, -die_path): not with -die_force or -side_force (one force-controlled "
-    "unknown in an increment)");
+  PetscCall(CheckPassTurns(comm, opt));      // (passes_check.cpp)
+  PetscCall(CheckModelOptions(comm, opt));   // (model_options.cpp)
   PetscCall(CheckReleaseOptions(comm, opt)); // (release_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }

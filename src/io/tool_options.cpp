@@ -4,31 +4,6 @@
 namespace tf {
 
 namespace {
-// The part of the tube modelled and how the full model is held; the upper die's offset (its motion: -die_motion,
-// die_motion_options.cpp).
-PetscErrorCode ReadModelAndOffset(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
-{
-  PetscFunctionBeginUser;
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
-                       "tool scenes: the part of the tube modelled: quarter, half (x >= 0), full (held as "
-                       "-full_hold says), auto (the quarter where exact, else the half or the full)",
-                       kModelWords, opt.model));
-  PetscCall(read.Real(PetscOptionsObject, "-die_offset",
-                      "squaring: the first pass's upper die moved off the y axis by this along x (mm; the full model, "
-                      "held by the rotation hold, a second pass after it too; docs/dies.md)",
-                      opt.die_offset));
-  PetscCall(
-    ChooseWord(PetscOptionsObject, read, "-full_hold",
-               "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "
-               "on its inner nodes there holds its rotation alone, the dies its slide; docs/dies.md), auto "
-               "(rotation where the pins would hold the tube's slide against the dies: with -die_offset or a sideways "
-               "-die_path and a second pass after it, and in a "
-               "quarter-turned second pass after a first pass not mirrored top to bottom, and in one turned by "
-               "another angle; else pins)",
-               kFullHoldWords, opt.full_hold));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 // The side dies' force (their shape: its own block, die_shape_options.cpp).
 PetscErrorCode ReadSideDies(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
@@ -106,7 +81,6 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(ReadModelAndOffset(PetscOptionsObject, read, opt));
   PetscCall(ReadSecondPass(PetscOptionsObject, read, opt.more_passes[0]));
   PetscCall(ReadSideDies(PetscOptionsObject, read, opt));
   for (int number = 3; number <= kMaxPasses; ++number)

@@ -94,7 +94,8 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   // (-die_motion path: a path of its own, to move back along before the offset; -die_motion force, -side_force:
   // die_motion.cpp)
   PetscCall(SetPressMotions(m.comm, opt_, SideDie(), tools.tools));
-  if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
+  const double offset = opt_.model.die_offset; // (-die_offset)
+  if (offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, offset, tools.tools[kUpper]));
   tools.candidates = "outer";
   for (int pass = (int)passes_.size() - 1; full_ && pass >= 0; --pass) { // (the later passes' axes checked now)
     PetscCall(pins_.Mark(m, PassMap(pass).Inverse()));

@@ -20,5 +20,11 @@ PetscErrorCode CheckStrokeOptions(MPI_Comm comm, Options &opt);
 PetscErrorCode ReadReleaseOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ReleaseParams &r);
 // Collective: refuses a release the model cannot take (after the dies' and passes' checks, CheckOptions).
 PetscErrorCode CheckReleaseOptions(MPI_Comm comm, const Options &opt);
+// -model, -die_offset, -full_hold into opt.model (model_options.cpp).
+PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ModelParams &m);
+// Collective: refuses a model the dies cannot take (the quarter without mirrored dies, a die off the axis without the
+// full model), the die's offset out of range and a support the model or the forces cannot take (after the passes'
+// turns, CheckOptions).
+PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt);
 
 } // namespace tf

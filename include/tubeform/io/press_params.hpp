@@ -1,5 +1,6 @@
 // The press's own parameters as the options give them, one struct per group (docs/dies.md): how far it presses (the
-// stroke; also the column's end shortening) and how it is released (also the bending scene's springback). Options holds
+// stroke; also the column's end shortening), how it is released (also the bending scene's springback) and the part of
+// the tube it models, with the full model's support. Options holds
 // one of each (so that they travel with the run's options to its levels and companions); io reads and checks each in
 // its own file (io/press_options.hpp), and the scenes take them from there.
 #pragma once
@@ -34,6 +35,23 @@ inline constexpr const char *kSpringbackWords[] = {"auto", "material", "elastic"
 struct ReleaseParams {
   Unload unload = Unload::Reverse;
   Springback springback = Springback::Auto;
+};
+
+// The part of the tube the tool scenes model (-model): the quarter where it is exact (auto, QuarterModel), or the
+// one asked for.
+enum class TubeModel { Auto, Quarter, Half, Full };
+inline constexpr const char *kModelWords[] = {"auto", "quarter", "half", "full"};
+// The full model's support (-full_hold): auto (HeldByRotation), its axis pins, or the rotation hold.
+enum class FullHold { Auto, Pins, Rotation };
+inline constexpr const char *kFullHoldWords[] = {"auto", "pins", "rotation"};
+
+// The model (-model, -die_offset, -full_hold): the part of the tube modelled, the first pass's upper die off the axis
+// (which only the full model takes, held by the rotation hold: it chooses the model and its support with the dies'
+// paths and the passes' turns, QuarterModel, FullModel, HeldByRotation), and the full model's support.
+struct ModelParams {
+  TubeModel part = TubeModel::Auto;    // quarter, half, full, or auto: the quarter where it is exact
+  double die_offset = 0;               // the first pass's upper die off the y axis along the press's x (mm; full model)
+  FullHold full_hold = FullHold::Auto; // the full model's support: pins, rotation (the rotation hold), auto
 };
 
 } // namespace tf
