@@ -5,6 +5,7 @@
 #include "tubeform/io/option_reader.hpp"
 #include "tubeform/io/options.hpp"
 #include "tubeform/io/press_options.hpp"
+#include "tubeform/io/tool_options.hpp"
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -51,15 +52,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
                "-die_force %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", force);
   }
   PetscCall(CheckPassStrokesAndDies(comm, opt)); // (passes_check.cpp)
-  PetscCall(CheckSideDies(comm, opt, "-side_die", ShapeWord(opt.side_die_shape)));
-  PetscCheck(opt.side_force >= 0 && std::isfinite(opt.side_force), comm, PETSC_ERR_USER_INPUT,
-             "-side_force %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",
-             opt.side_force);
-  PetscCheck(opt.side_force == 0 || (opt.side_die_shape.kind != "none" && PassCount(opt) == 1), comm,
-             PETSC_ERR_USER_INPUT,
-             "-side_force %g: force-controlled side dies need -side_die (mirror, flat or a file) and one pass (not "
-             "with -pass2_stroke)",
-             opt.side_force);
+  PetscCall(CheckSideDieOptions(comm, opt));     // (die_shape_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,21 +1,9 @@
-// The tool scenes' options (include/tubeform/io/tool_options.hpp); checked in options_check.cpp.
+// The later passes' options (include/tubeform/io/tool_options.hpp); checked in passes_check.cpp.
 #include "tubeform/io/tool_options.hpp"
 
 namespace tf {
 
 namespace {
-// The side dies' force (their shape: its own block, die_shape_options.cpp).
-PetscErrorCode ReadSideDies(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
-{
-  PetscFunctionBeginUser;
-  PetscCall(read.Real(PetscOptionsObject, "-side_force",
-                      "tool scenes with side dies: force control: each side die presses with a force rising from 0 to "
-                      "this (N/mm, on the whole tube) over the press, its travel an unknown of each increment (0: "
-                      "they move by the stroke)",
-                      opt.side_force));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 // The second pass: its stroke, dies and turn (the help's text; a later pass's options read by the same names).
 PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, PassSpec &pass)
 {
@@ -82,7 +70,6 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
 {
   PetscFunctionBeginUser;
   PetscCall(ReadSecondPass(PetscOptionsObject, read, opt.more_passes[0]));
-  PetscCall(ReadSideDies(PetscOptionsObject, read, opt));
   for (int number = 3; number <= kMaxPasses; ++number)
     PetscCall(ReadLaterPass(PetscOptionsObject, read, number, opt.more_passes[number - 2]));
   PetscFunctionReturn(PETSC_SUCCESS);
