@@ -34,11 +34,11 @@ namespace tf {
 PressScene::PressScene(const Options &opt, bool squaring)
     : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(FullModel(opt))
 {
-  stroke_ = opt.stroke_corner_radius > 0
-              ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_shape.spec.angle)
-              : opt.stroke;
+  stroke_ = opt.stroke.corner_radius > 0
+              ? StrokeForCornerRadius(opt.tube_ro, opt.stroke.corner_radius, opt.die_shape.spec.angle)
+              : opt.stroke.u;
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
-  path_ = DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke_path, stroke_);
+  path_ = DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
   lower_motion_ = LowerDieMotion(opt);
   passes_.resize(PassCount(opt));
   for (int k = 0; k < (int)passes_.size(); ++k) {
@@ -56,7 +56,7 @@ LoadPath PressScene::Path(const Options &opt) const
   const double t = path_.travel() / opt.driver.punch_speed;                        // (the press's duration)
   const std::vector<double> kinks = path_.Kinks(PressKinks(opt_, path_.travel())); // (where the dies' motions turn)
   if (passes_.size() == 1)
-    return {opt_.unload == Unload::None ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
+    return {opt_.release.unload == Unload::None ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
   std::vector<double> stages; // (where each stage after the first begins)
   for (size_t k = 1; k < 2 * passes_.size(); ++k) stages.push_back((double)k);
   return {2.0 * passes_.size(), t, stages, kinks};
@@ -69,7 +69,7 @@ double PressScene::ToolStroke(double lambda) const
   if (pass_ > 0)
     return std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0) * (passes_[pass_].stroke + StartBack());
   if (lambda <= 1.0) return path_.Stroke(lambda);
-  return opt_.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path_.Stroke(1.0);
+  return opt_.release.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path_.Stroke(1.0);
 }
 
 double PressScene::ToolForce(double lambda) const
@@ -94,7 +94,8 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   // (-die_motion path: a path of its own, to move back along before the offset; -die_motion force, -side_force:
   // die_motion.cpp)
   PetscCall(SetPressMotions(m.comm, opt_, SideDie(), tools.tools));
-  if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
+  const double offset = opt_.model.die_offset; // (-die_offset)
+  if (offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, offset, tools.tools[kUpper]));
   tools.candidates = "outer";
   for (int pass = (int)passes_.size() - 1; full_ && pass >= 0; --pass) { // (the later passes' axes checked now)
     PetscCall(pins_.Mark(m, PassMap(pass).Inverse()));
@@ -115,8 +116,8 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   tools.params = MakeContactParams(opt_, kVcriOfSpacing * spacing);
   spec_ = tools; // a later pass's set: the same nodes, supports and law
   spec_.tools.clear();
-  if (opt_.stroke_corner_radius > 0 && !m.quiet)
-    PetscCall(NoteCornerRadius(m.comm, stroke_, opt_.stroke_corner_radius));
+  if (opt_.stroke.corner_radius > 0 && !m.quiet)
+    PetscCall(NoteCornerRadius(m.comm, stroke_, opt_.stroke.corner_radius));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -124,8 +125,8 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
 {
   PetscFunctionBeginUser;
   const bool elastic = ElasticRelease(opt_);
-  if (opt_.unload == Unload::Withdraw) m.body.BeginRelease(elastic, false);
-  if (opt_.unload != Unload::Reverse) PetscFunctionReturn(PETSC_SUCCESS);
+  if (opt_.release.unload == Unload::Withdraw) m.body.BeginRelease(elastic, false);
+  if (opt_.release.unload != Unload::Reverse) PetscFunctionReturn(PETSC_SUCCESS);
   if (!Unloading(lambda)) { // (the next pass)
     PetscCall(StartPass(m));
     PetscFunctionReturn(PETSC_SUCCESS);
