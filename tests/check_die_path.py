@@ -1,5 +1,5 @@
-"""The upper die's own path (-die_path: a prescribed path in time, piecewise linear; docs/dies.md, "A die path of
-one's own").
+"""The upper die's own path (-die_path: a prescribed path in time, piecewise linear; docs/dies.md, "The die's
+own path").
 
 The paper's tube (options/squaring.opts, fast preset), the lower V-die staying (-lower_die_motion fixed), the upper
 one through the given points in turn; its stroke parameter runs along half the path's length, and U = -y / 2.

@@ -1,5 +1,5 @@
 """A die off the axis and the full model's rotation hold (-die_offset, -full_hold;
-docs/dies.md, "The rotation hold").
+docs/dies.md, "A die off the axis").
 
 The paper's tube (options/squaring.opts, fast preset) pressed U = 1.5 mm in the full model by an upper V-die moved
 e = 0.5 mm off the axis, over the lower V-die on it. The pins would hold the tube's slide against the die; the

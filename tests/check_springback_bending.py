@@ -1,5 +1,5 @@
 """The springback's law (-springback) on the pure bending scene (options/bending.opts, scenes/bending.cpp) against
-the closed form of a strip's release with reverse yield (docs/verification.md, "Springback with reverse yield").
+the closed form of a strip's release with reverse yield (docs/verification.md, "Scenes against closed forms").
 
 The strip: 1 mm thick, plane strain, aluminum's E and sigma_y0 with nu = 0.49 and linear kinematic hardening alone
 (Prager: Ludwik n = 1 with K = C = 16000 MPa and -hardening chaboche -material_kinematic 16000,0, so the yield

@@ -2,8 +2,11 @@
 and reading the numbers they compare out of a result history."""
 import csv
 import os
+import contextlib
 import re
+import shutil
 import subprocess
+import tempfile
 import time
 
 import h5py
@@ -83,6 +86,19 @@ def sprung_back(path, col):
     return float(loaded - (float(m.group(2)) - float(m.group(1))))
 
 
+@contextlib.contextmanager
+def session_env():
+    """The runs' environment with an Open MPI session directory of its own, removed afterwards: runs that start
+    and end at once in a shared one race (one's clean-up removes the directory the other is creating its own in:
+    "ORTE_ERROR_LOG ... session_dir.c", exit 1; or, for single-rank runs, "mca_sharedfp_sm ... unable to open file
+    for mmap")."""
+    session = tempfile.mkdtemp(prefix="tf-mpi-")
+    try:
+        yield dict(env, OMPI_MCA_orte_tmpdir_base=session)
+    finally:
+        shutil.rmtree(session, ignore_errors=True)
+
+
 class RunFailed(RuntimeError):
     pass
 
@@ -94,7 +110,8 @@ def run(case, extra, out, np_=1, exe=EXE, log_view=False):
     if log_view:
         cmd += ["-log_view", ":" + out[:-3] + "_log.txt"]
     t0 = time.time()
-    p = subprocess.run(cmd, cwd=root, env=env, capture_output=True, text=True)
+    with session_env() as run_env:
+        p = subprocess.run(cmd, cwd=root, env=run_env, capture_output=True, text=True)
     wall = time.time() - t0
     if p.returncode != 0:
         raise RunFailed(f"{' '.join(cmd)} failed:\n{p.stdout[-2000:]}{p.stderr[-2000:]}")

@@ -10,8 +10,8 @@ namespace tf {
 namespace {
 
 // MUMPS settings for the redundant (small-system) factorization, each taken
-// only where the user gave no value (docs/performance.md, "MUMPS on small
-// systems"; instruction counts of a whole run with callgrind):
+// only where the user gave no value (docs/performance.md, "The presets: MUMPS,
+// and 1 or 2 ranks"; instruction counts of a whole run with callgrind):
 //   ICNTL(8) = 0: no scaling. The stiffness of one material on one mesh is
 //     well scaled, and MUMPS computed its scaling anew at every factorization
 //     (8 % of a run's instructions).

@@ -64,7 +64,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     a.target_ct = held.target_c_over_t > 0 ? held.target_c_over_t : held.expect_c_over_t;
     a.demanded = held.target_load > 0 || held.target_c_over_t > 0;
     a.release =
-      opt_.unload == Unload::Withdraw ? "the dies withdrawn" : "the contact forces reversed, the dies removed";
+      opt_.release.unload == Unload::Withdraw ? "the dies withdrawn" : "the contact forces reversed, the dies removed";
     return a;
   };
   Answer answer = summarize(nullptr);

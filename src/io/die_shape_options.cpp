@@ -6,6 +6,8 @@
 // The lower die's and the side dies' shapes, each its own block: a word (-lower_die, -side_die) choosing mirror (the
 // upper die's shape, a relation between the tools), flat (the flat kind), none (no side dies) or a file (its kind by
 // its name); these kinds read no options. The scenes place and size them (scenes/die.cpp).
+#include <cmath>
+
 #include "tubeform/io/tool_options.hpp"
 
 namespace tf {
@@ -104,12 +106,39 @@ PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt
 
 PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 {
+  std::string word = ShapeWord(opt.side_die_shape);
+
   PetscFunctionBeginUser;
-  PetscCall(ReadWordShape(comm, read, "-side_die",
-                          "tool scenes: side dies pressing by the stroke U (or with -side_force): none, mirror (the "
-                          "upper die turned to the side), flat (a plate), or a profile file drawn as an upper die "
-                          "(docs/dies.md)",
-                          "tubeform: side die shape", true, opt.side_die_shape));
+  PetscOptionsBegin(comm, nullptr, "tubeform: side die shape", "tubeform");
+  OptionsBlock block(PetscOptionsObject);
+  PetscCall(read.Real(PetscOptionsObject, "-side_force",
+                      "tool scenes with side dies: force control: each side die presses with a force rising from 0 to "
+                      "this (N/mm, on the whole tube) over the press, its travel an unknown of each increment (0: "
+                      "they move by the stroke)",
+                      opt.side_force));
+  PetscCall(read.String(PetscOptionsObject, "-side_die",
+                        "tool scenes: side dies pressing by the stroke U (or with -side_force): none, mirror (the "
+                        "upper die turned to the side), flat (a plate), or a profile file drawn as an upper die "
+                        "(docs/dies.md)",
+                        word));
+  block.Release();
+  PetscOptionsEnd();
+  opt.side_die_shape = ShapeChoice(word, true);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckSideDies(comm, opt, "-side_die", ShapeWord(opt.side_die_shape))); // (passes_check.cpp)
+  PetscCheck(opt.side_force >= 0 && std::isfinite(opt.side_force), comm, PETSC_ERR_USER_INPUT,
+             "-side_force %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",
+             opt.side_force);
+  PetscCheck(opt.side_force == 0 || (opt.side_die_shape.kind != "none" && PassCount(opt) == 1), comm,
+             PETSC_ERR_USER_INPUT,
+             "-side_force %g: force-controlled side dies need -side_die (mirror, flat or a file) and one pass (not "
+             "with -pass2_stroke)",
+             opt.side_force);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

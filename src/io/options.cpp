@@ -8,6 +8,7 @@
 #include "tubeform/io/friction_options.hpp"
 #include "tubeform/io/material_library.hpp"
 #include "tubeform/io/option_reader.hpp"
+#include "tubeform/io/press_options.hpp"
 #include "tubeform/io/tool_options.hpp"
 
 namespace tf {
@@ -161,22 +162,10 @@ PetscErrorCode ReadMaterial(MPI_Comm comm, OptionReader &read, Options &opt)
 PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(read.Real(PetscOptionsObject, "-stroke",
-                      "Final stroke U (mm): tool travel, or the prescribed end shortening of the column", opt.stroke));
-  PetscCall(read.Real(PetscOptionsObject, "-stroke_corner_radius", "The paper's rule: the rounded square's corner (mm)",
-                      opt.stroke_corner_radius));
-  PetscCall(ReadToolOptions(PetscOptionsObject, read, opt)); // (tool_options.cpp)
-  PetscCall(
-    ChooseWord(PetscOptionsObject, read, "-unload",
-               "Springback: reverse (paper: contact forces reversed, tools removed), withdraw (tools move back), none",
-               kUnloadWords, opt.unload));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-springback",
-                       "The springback's law: material (the material's own, backstresses and all, as in loading), "
-                       "elastic (the paper's: every point elastic; how far that carries points past the yield surface "
-                       "is measured and reported), or auto: elastic for -unload reverse (its reversed contact forces "
-                       "are dead loads, which can drive a thin wall into a collapse by the material's law), material "
-                       "for -unload withdraw and the bending scene",
-                       kSpringbackWords, opt.springback));
+  PetscCall(ReadStrokeOptions(PetscOptionsObject, read, opt.stroke));   // (stroke_options.cpp)
+  PetscCall(ReadModelOptions(PetscOptionsObject, read, opt.model));     // (model_options.cpp)
+  PetscCall(ReadToolOptions(PetscOptionsObject, read, opt));            // (tool_options.cpp)
+  PetscCall(ReadReleaseOptions(PetscOptionsObject, read, opt.release)); // (release_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

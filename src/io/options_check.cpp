@@ -4,6 +4,8 @@
 #include "tubeform/io/friction_options.hpp"
 #include "tubeform/io/option_reader.hpp"
 #include "tubeform/io/options.hpp"
+#include "tubeform/io/press_options.hpp"
+#include "tubeform/io/tool_options.hpp"
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -17,14 +19,15 @@ namespace {
 // y, along which its punch load is read.
 constexpr double kMaxDieTurn = 90;
 
-// The dies and the model: which dies, forces and side dies go together, and what the model allows.
+// The dies: which dies, forces and side dies go together.
 PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
-  bool asked = opt.lower_die_shape.kind != "mirror" || !LowerDieMoves(opt, "mirror") || opt.model != TubeModel::Auto ||
-               !DieMoves(opt, DieMotionKind::Stroke) || opt.side_die_shape.kind != "none" || opt.side_force != 0 ||
-               opt.die_offset != 0 || opt.full_hold != FullHold::Auto;
+  bool asked = opt.lower_die_shape.kind != "mirror" || !LowerDieMoves(opt, "mirror") ||
+               opt.model.part != TubeModel::Auto || !DieMoves(opt, DieMotionKind::Stroke) ||
+               opt.side_die_shape.kind != "none" || opt.side_force != 0 || opt.model.die_offset != 0 ||
+               opt.model.full_hold != FullHold::Auto;
   for (const PassSpec &p : opt.more_passes)
     asked =
       asked || p.stroke != 0 || p.turn != 0 || !p.upper.kind.empty() || !p.lower.kind.empty() || !p.side.kind.empty();
@@ -43,30 +46,13 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
                force);
     PetscCheck(PassCount(opt) == 1, comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: not with a second pass (-pass2_stroke); press one pass by force", force);
-    PetscCheck(opt.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: -unload withdraw moves the die back by its stroke; use -unload reverse or none", force);
-    PetscCheck(opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(opt.stroke.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", force);
   }
-  PetscCheck(
-    opt.lower_die_shape.kind == "mirror" || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-    "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
-    opt.stroke_corner_radius, ShapeWord(opt.lower_die_shape).c_str());
-  bool mirror = LowerDieMoves(opt, "mirror");
-  for (int pass = 0; pass < kMaxPasses; ++pass) mirror = mirror && PassLowerDie(opt, pass) == "mirror";
-  PetscCheck(opt.model != TubeModel::Quarter || mirror, comm, PETSC_ERR_USER_INPUT,
-             "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
-             "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
   PetscCall(CheckPassStrokesAndDies(comm, opt)); // (passes_check.cpp)
-  PetscCall(CheckSideDies(comm, opt, "-side_die", ShapeWord(opt.side_die_shape)));
-  PetscCheck(opt.side_force >= 0 && std::isfinite(opt.side_force), comm, PETSC_ERR_USER_INPUT,
-             "-side_force %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",
-             opt.side_force);
-  PetscCheck(opt.side_force == 0 || (opt.side_die_shape.kind != "none" && PassCount(opt) == 1), comm,
-             PETSC_ERR_USER_INPUT,
-             "-side_force %g: force-controlled side dies need -side_die (mirror, flat or a file) and one pass (not "
-             "with -pass2_stroke)",
-             opt.side_force);
+  PetscCall(CheckSideDieOptions(comm, opt));     // (die_shape_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -91,39 +77,13 @@ PetscErrorCode CheckDiePath(MPI_Comm comm, Options &opt)
   PetscCheck(LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
              "-die_path: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion "
              "fixed");
-  PetscCheck(opt.stroke_path.empty() && opt.stroke_corner_radius <= 0 && PassCount(opt) == 1 &&
-               opt.side_die_shape.kind == "none" && opt.unload != Unload::Withdraw && opt.die_offset == 0,
+  PetscCheck(opt.stroke.path.empty() && opt.stroke.corner_radius <= 0 && PassCount(opt) == 1 &&
+               opt.side_die_shape.kind == "none" && opt.release.unload != Unload::Withdraw && opt.model.die_offset == 0,
              comm, PETSC_ERR_USER_INPUT,
              "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, "
              "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways is "
              "its own offset)");
-  opt.stroke = -0.5 * y;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// -stroke_path and -die_path: their points, and the stroke they end at.
-PetscErrorCode CheckDiePaths(MPI_Comm comm, Options &opt)
-{
-  PetscFunctionBeginUser;
-  const bool press = opt.scene == "squaring" || opt.scene == "flattening";
-  if (!opt.stroke_path.empty()) {
-    // The die goes to each stroke in turn at the punch speed; the last is the press's final stroke.
-    PetscCheck(press, comm, PETSC_ERR_USER_INPUT, "-stroke_path: the %s scene presses with no dies", opt.scene.c_str());
-    double at = 0;
-    for (double u : opt.stroke_path) {
-      PetscCheck(std::isfinite(u) && u >= 0 && u != at, comm, PETSC_ERR_USER_INPUT,
-                 "-stroke_path: %g after %g: each stroke must be a non-negative number of mm, other than the one "
-                 "before it (the path starts at 0)",
-                 u, at);
-      at = u;
-    }
-    PetscCheck(opt.stroke_path.back() > 0, comm, PETSC_ERR_USER_INPUT,
-               "-stroke_path: the last stroke is the press's final one and must be positive");
-    PetscCheck(!DieMoves(opt, DieMotionKind::Force) && opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-               "-stroke_path: not with -die_force or -stroke_corner_radius");
-    opt.stroke = opt.stroke_path.back();
-  }
-  if (DieMoves(opt, DieMotionKind::Path)) PetscCall(CheckDiePath(comm, opt));
+  opt.stroke.u = -0.5 * y;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -133,8 +93,8 @@ PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 {
   PetscFunctionBeginUser;
   const bool own = !LowerDieMoves(opt, "mirror") && !LowerDieMoves(opt, "fixed");
-  PetscCheck(!own || (opt.stroke_path.empty() && opt.unload != Unload::Withdraw && PassCount(opt) == 1 &&
-                      opt.stroke_corner_radius <= 0),
+  PetscCheck(!own || (opt.stroke.path.empty() && opt.release.unload != Unload::Withdraw && PassCount(opt) == 1 &&
+                      opt.stroke.corner_radius <= 0),
              comm, PETSC_ERR_USER_INPUT,
              "-lower_die_motion %s: the lower die follows its motion as the stroke rises, in one pass: not with "
              "-stroke_path, -unload withdraw, -pass2_stroke or -stroke_corner_radius",
@@ -142,37 +102,13 @@ PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The second pass's turn, a die off the axis, the rotation hold and the release.
+// The later passes' turns, the model (a die off the axis, the rotation hold) and the release.
 PetscErrorCode CheckPassesAndHolds(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(CheckPassTurns(comm, opt)); // (passes_check.cpp)
-  // The rotation hold: the full model; one extra unknown in a solve (scenes/hold.hpp).
-  PetscCheck(std::isfinite(opt.die_offset), comm, PETSC_ERR_USER_INPUT, "-die_offset %g: give a number of mm",
-             opt.die_offset);
-  PetscCheck(opt.die_offset == 0 || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
-             "-die_offset %g: the squaring scene's die (a plate off the axis is the same plate)", opt.die_offset);
-  char off_axis[64] = "-die_path"; // (what puts the die off the axis, named in the errors)
-  if (opt.die_offset != 0) std::snprintf(off_axis, sizeof off_axis, "-die_offset %g", opt.die_offset);
-  if (opt.die_offset == 0 && !DiePathSideways(opt)) std::snprintf(off_axis, sizeof off_axis, "-die_path_turn");
-  PetscCheck(!DieOffAxis(opt) || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
-             "%s: a die off the axis breaks the tube's mirror symmetry; use -model full (or auto)", off_axis);
-  PetscCheck(opt.full_hold != FullHold::Rotation || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
-             "-full_hold rotation: the %s scene's plates do not hold the tube's slide; use pins", opt.scene.c_str());
-  PetscCheck(!DieOffAxis(opt) || opt.full_hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
-             "%s with -full_hold pins: the pins would hold the tube's slide against the die; use -full_hold rotation "
-             "(or auto)",
-             off_axis);
-  PetscCheck(opt.full_hold == FullHold::Auto || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
-             "-full_hold %s: only the full model is held so (-model full)", WordOf(kFullHoldWords, opt.full_hold));
-  bool held = false;
-  for (int pass = 0; pass < kMaxPasses; ++pass) held = held || HeldByRotation(opt, pass);
-  PetscCheck(
-    !held || (!DieMoves(opt, DieMotionKind::Force) && opt.side_force == 0), comm, PETSC_ERR_USER_INPUT,
-    "the rotation hold (-full_hold, -die_offset, -die_path): not with -die_force or -side_force (one force-controlled "
-    "unknown in an increment)");
-  PetscCheck(QuarterModel(opt) || opt.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
-             "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
+  PetscCall(CheckPassTurns(comm, opt));      // (passes_check.cpp)
+  PetscCall(CheckModelOptions(comm, opt));   // (model_options.cpp)
+  PetscCall(CheckReleaseOptions(comm, opt)); // (release_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -181,7 +117,7 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckDies(comm, opt));
-  PetscCall(CheckDiePaths(comm, opt));
+  if (DieMoves(opt, DieMotionKind::Path)) PetscCall(CheckDiePath(comm, opt));
   PetscCall(CheckLowerDieMotion(comm, opt));
   PetscCall(CheckPassesAndHolds(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -223,15 +159,10 @@ PetscErrorCode CheckLoads(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckMaterial(comm, opt.material));
-  PetscCheck(VDie(opt) || opt.stroke_corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-             "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
-             opt.stroke_corner_radius);
   PetscCall(CheckDiesAndPasses(comm, opt));
   PetscCall(CheckShape(comm, "v", "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
   PetscCall(CheckFrictionOptions(comm, opt.friction));               // (friction_options.cpp)
-  PetscCheck(opt.stroke_corner_radius >= 0, comm, PETSC_ERR_USER_INPUT,
-             "-stroke_corner_radius %g: must be non-negative", opt.stroke_corner_radius);
-  PetscCheck(opt.stroke > 0, comm, PETSC_ERR_USER_INPUT, "-stroke %g: must be positive (mm)", opt.stroke);
+  PetscCall(CheckStrokeOptions(comm, opt));                          // (stroke_options.cpp; after -die_path's)
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -245,8 +176,8 @@ PetscErrorCode CheckOutputAndStops(MPI_Comm comm, Options &opt)
              "-time_limit %g: must be 0 (no limit) or a positive number of seconds", opt.time_limit);
   PetscCheck(opt.progress >= 0 && std::isfinite(opt.progress), comm, PETSC_ERR_USER_INPUT,
              "-progress %g: must be 0 (none) or a positive number of seconds", opt.progress);
-  PetscCheck(opt.output_stroke >= 0 && opt.output_stroke <= opt.stroke, comm, PETSC_ERR_USER_INPUT,
-             "-output_stroke %g: must be between 0 (off) and the stroke %g mm", opt.output_stroke, opt.stroke);
+  PetscCheck(opt.output_stroke >= 0 && opt.output_stroke <= opt.stroke.u, comm, PETSC_ERR_USER_INPUT,
+             "-output_stroke %g: must be between 0 (off) and the stroke %g mm", opt.output_stroke, opt.stroke.u);
   PetscCheck(!opt.output.empty(), comm, PETSC_ERR_USER_INPUT, "-output: an HDF5 file name is required");
   PetscCheck(opt.checkpoint_every >= 0, comm, PETSC_ERR_USER_INPUT,
              "-checkpoint_every %d: must be 0 (only when stopped) or a number of increments",

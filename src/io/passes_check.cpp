@@ -14,7 +14,7 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
   PetscFunctionBeginUser;
   if (value == "none") PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
-  PetscCheck(!DieMoves(opt, DieMotionKind::Force) && opt.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(!DieMoves(opt, DieMotionKind::Force) && opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
              "%s %s: side dies press by the stroke: not with -die_force or -unload withdraw", name.c_str(),
              value.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -71,9 +71,9 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(p.stroke >= 0 && std::isfinite(p.stroke), comm, PETSC_ERR_USER_INPUT,
              "%s %g: must be non-negative (0: %s)", stroke.c_str(), p.stroke,
              pass == 1 ? "one pass" : ("the " + PassOrdinal(pass - 1) + " pass the last").c_str());
-  PetscCheck(p.stroke == 0 || opt.unload == Unload::Reverse, comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(p.stroke == 0 || opt.release.unload == Unload::Reverse, comm, PETSC_ERR_USER_INPUT,
              "%s %g: a %s pass follows the paper's springback; use -unload reverse (not %s)", stroke.c_str(), p.stroke,
-             ordinal.c_str(), WordOf(kUnloadWords, opt.unload));
+             ordinal.c_str(), WordOf(kUnloadWords, opt.release.unload));
   PetscCheck(p.stroke == 0 || pass == 1 || LaterPass(opt, pass - 1).stroke > 0, comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", stroke.c_str(), p.stroke, ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
@@ -95,7 +95,8 @@ PetscErrorCode CheckPassTurn(MPI_Comm comm, const Options &opt, int pass)
   PetscFunctionBeginUser;
   PetscCheck(std::isfinite(p.turn) && std::abs(p.turn) <= 360, comm, PETSC_ERR_USER_INPUT,
              "%s %g: the tube turns by -360 to 360 degrees", turn.c_str(), p.turn);
-  PetscCheck(QuarterTurn(opt, pass) || (FullModel(opt) && opt.full_hold != FullHold::Pins), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(QuarterTurn(opt, pass) || (FullModel(opt) && opt.model.full_hold != FullHold::Pins), comm,
+             PETSC_ERR_USER_INPUT,
              "%s %g: a turn that is no multiple of 90 degrees needs the full model held by the rotation hold "
              "(-model full or auto, -full_hold rotation or auto)",
              turn.c_str(), p.turn);
@@ -104,14 +105,14 @@ PetscErrorCode CheckPassTurn(MPI_Comm comm, const Options &opt, int pass)
   for (int before = 0; before < pass; ++before) {
     const bool odd = (quarters - PassQuarters(opt, before)) % 2 != 0;
     const std::string lower = before == 0 ? "-lower_die" : PassOption(before, "lower_die");
-    PetscCheck(!odd || PassMirrored(opt, before) || opt.full_hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(!odd || PassMirrored(opt, before) || opt.model.full_hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
                "%s %g with -full_hold pins: the %s pass's dies (%s %s, -lower_die_motion %s) leave the tube symmetric "
                "about the y axis only; a quarter turn presses it off that axis, which the pins would hold it against "
                "(use -full_hold rotation or auto)",
                turn.c_str(), p.turn, PassOrdinal(before).c_str(), lower.c_str(), PassLowerDie(opt, before).c_str(),
                opt.lower_motion.word.c_str());
   }
-  PetscCheck(opt.model != TubeModel::Half || quarters % 2 == 0, comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(opt.model.part != TubeModel::Half || quarters % 2 == 0, comm, PETSC_ERR_USER_INPUT,
              "%s %g with -model half: the half model's plane x = 0 is no symmetry plane of a press turned by 90 "
              "degrees; use -model full (or auto)",
              turn.c_str(), p.turn);

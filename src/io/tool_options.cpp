@@ -1,57 +1,9 @@
-// The tool scenes' options (include/tubeform/io/tool_options.hpp); checked in options_check.cpp.
+// The later passes' options (include/tubeform/io/tool_options.hpp); checked in passes_check.cpp.
 #include "tubeform/io/tool_options.hpp"
 
 namespace tf {
 
 namespace {
-// The die's strokes in turn (the dies' shapes: their own blocks, die_shape_options.cpp).
-PetscErrorCode ReadStrokePath(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
-{
-  PetscFunctionBeginUser;
-  PetscCall(RealList(PetscOptionsObject, read, "-stroke_path",
-                     "tool scenes: the die's strokes in turn (mm, >= 0), at the punch speed: press, back off, press "
-                     "again (in place of -stroke: the last is the final stroke)",
-                     kMaxPathPoints, opt.stroke_path));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// The part of the tube modelled and how the full model is held; the upper die's offset (its motion: -die_motion,
-// die_motion_options.cpp).
-PetscErrorCode ReadModelAndOffset(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
-{
-  PetscFunctionBeginUser;
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
-                       "tool scenes: the part of the tube modelled: quarter, half (x >= 0), full (held as "
-                       "-full_hold says), auto (the quarter where exact, else the half or the full)",
-                       kModelWords, opt.model));
-  PetscCall(read.Real(PetscOptionsObject, "-die_offset",
-                      "squaring: the first pass's upper die moved off the y axis by this along x (mm; the full model, "
-                      "held by the rotation hold, a second pass after it too; docs/dies.md)",
-                      opt.die_offset));
-  PetscCall(
-    ChooseWord(PetscOptionsObject, read, "-full_hold",
-               "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "
-               "on its inner nodes there holds its rotation alone, the dies its slide; docs/dies.md), auto "
-               "(rotation where the pins would hold the tube's slide against the dies: with -die_offset or a sideways "
-               "-die_path and a second pass after it, and in a "
-               "quarter-turned second pass after a first pass not mirrored top to bottom, and in one turned by "
-               "another angle; else pins)",
-               kFullHoldWords, opt.full_hold));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// The side dies' force (their shape: its own block, die_shape_options.cpp).
-PetscErrorCode ReadSideDies(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
-{
-  PetscFunctionBeginUser;
-  PetscCall(read.Real(PetscOptionsObject, "-side_force",
-                      "tool scenes with side dies: force control: each side die presses with a force rising from 0 to "
-                      "this (N/mm, on the whole tube) over the press, its travel an unknown of each increment (0: "
-                      "they move by the stroke)",
-                      opt.side_force));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 // The second pass: its stroke, dies and turn (the help's text; a later pass's options read by the same names).
 PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, PassSpec &pass)
 {
@@ -117,10 +69,7 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(ReadStrokePath(PetscOptionsObject, read, opt));
-  PetscCall(ReadModelAndOffset(PetscOptionsObject, read, opt));
   PetscCall(ReadSecondPass(PetscOptionsObject, read, opt.more_passes[0]));
-  PetscCall(ReadSideDies(PetscOptionsObject, read, opt));
   for (int number = 3; number <= kMaxPasses; ++number)
     PetscCall(ReadLaterPass(PetscOptionsObject, read, number, opt.more_passes[number - 2]));
   PetscFunctionReturn(PETSC_SUCCESS);

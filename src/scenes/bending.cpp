@@ -31,7 +31,7 @@ constexpr double kLength = 0.25;
 class BendingScene : public Scene {
 public:
   explicit BendingScene(const Options &opt)
-      : strain_(opt.bending.strain, opt.bending.cycle), elastic_release_(opt.springback == Springback::Elastic),
+      : strain_(opt.bending.strain, opt.bending.cycle), elastic_release_(opt.release.springback == Springback::Elastic),
         reversal_(!opt.bending.cycle.empty() && (opt.bending.cycle[0] - opt.bending.strain) * opt.bending.strain < 0)
   {}
   std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }

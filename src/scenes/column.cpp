@@ -39,7 +39,7 @@ public:
   PetscErrorCode Load(Model &m, double, double dlambda) override
   {
     for (PetscInt n : Pins(m, "bottom")) m.system.Prescribe(n, 0, 0.0), m.system.Prescribe(n, 1, 0.0);
-    for (PetscInt n : Pins(m, "top")) m.system.Prescribe(n, 0, 0.0), m.system.Prescribe(n, 1, -dlambda * opt_.stroke);
+    for (PetscInt n : Pins(m, "top")) m.system.Prescribe(n, 0, 0.0), m.system.Prescribe(n, 1, -dlambda * opt_.stroke.u);
     return 0;
   }
   PetscErrorCode ExternalForce(Model &, double, Vec f) override { return VecZeroEntries(f); }
@@ -48,7 +48,7 @@ public:
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
-    row.stroke = lambda * opt_.stroke;
+    row.stroke = lambda * opt_.stroke.u;
     const auto pins = Pins(m, "top");
     const PetscScalar *f;
     double local = 0;

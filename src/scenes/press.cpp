@@ -34,14 +34,14 @@ namespace tf {
 PressScene::PressScene(const Options &opt, bool squaring)
     : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(FullModel(opt))
 {
-  stroke_ = opt.stroke_corner_radius > 0
-              ? StrokeForCornerRadius(opt.tube_ro, opt.stroke_corner_radius, opt.die_shape.spec.angle)
-              : opt.stroke;
+  stroke_ = opt.stroke.corner_radius > 0
+              ? StrokeForCornerRadius(opt.tube_ro, opt.stroke.corner_radius, opt.die_shape.spec.angle)
+              : opt.stroke.u;
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
   lower_motion_ = LowerDieMotion(opt);
   passes_.resize(PassCount(opt));
   passes_[0].path =
-    DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke_path, stroke_);
+    DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
   for (int k = 0; k < (int)passes_.size(); ++k) {
     Pass &p = passes_[k];
     p.stroke = k == 0 ? stroke_ : LaterPass(opt, k).stroke;
@@ -62,7 +62,7 @@ LoadPath PressScene::Path(const Options &opt) const
   const double t = path.travel() / opt.driver.punch_speed;                 // (the press's duration)
   std::vector<double> kinks = path.Kinks(PressKinks(opt_, path.travel())); // (where the dies' motions turn)
   if (passes_.size() == 1)
-    return {opt_.unload == Unload::None ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
+    return {opt_.release.unload == Unload::None ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
   std::vector<double> stages; // (where each stage after the first begins)
   for (size_t k = 1; k < 2 * passes_.size(); ++k) stages.push_back((double)k);
   for (size_t k = 1; k < passes_.size(); ++k) { // (a later pass's upper die on its own path: its points)
@@ -79,7 +79,7 @@ double PressScene::ToolStroke(double lambda) const
   const StrokePath &path = passes_[pass_].path;
   if (pass_ > 0) return path.Stroke(std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0));
   if (lambda <= 1.0) return path.Stroke(lambda);
-  return opt_.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path.Stroke(1.0);
+  return opt_.release.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path.Stroke(1.0);
 }
 
 double PressScene::ToolForce(double lambda) const
@@ -104,7 +104,8 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   // (-side_force: die_motion.cpp; the upper die's own motion, -die_motion path or force, set with its dies: a path
   // of its own to move back along before the offset)
   PetscCall(SetSideForces(m.comm, opt_, SideDie(), tools.tools));
-  if (opt_.die_offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, opt_.die_offset, tools.tools[kUpper]));
+  const double offset = opt_.model.die_offset; // (-die_offset)
+  if (offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, offset, tools.tools[kUpper]));
   tools.candidates = "outer";
   for (int pass = (int)passes_.size() - 1; full_ && pass >= 0; --pass) { // (the later passes' axes checked now)
     PetscCall(pins_.Mark(m, PassMap(pass).Inverse()));
@@ -125,8 +126,8 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   tools.params = MakeContactParams(opt_, kVcriOfSpacing * spacing);
   spec_ = tools; // a later pass's set: the same nodes, supports and law
   spec_.tools.clear();
-  if (opt_.stroke_corner_radius > 0 && !m.quiet)
-    PetscCall(NoteCornerRadius(m.comm, stroke_, opt_.stroke_corner_radius));
+  if (opt_.stroke.corner_radius > 0 && !m.quiet)
+    PetscCall(NoteCornerRadius(m.comm, stroke_, opt_.stroke.corner_radius));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -134,8 +135,8 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
 {
   PetscFunctionBeginUser;
   const bool elastic = ElasticRelease(opt_);
-  if (opt_.unload == Unload::Withdraw) m.body.BeginRelease(elastic, false);
-  if (opt_.unload != Unload::Reverse) PetscFunctionReturn(PETSC_SUCCESS);
+  if (opt_.release.unload == Unload::Withdraw) m.body.BeginRelease(elastic, false);
+  if (opt_.release.unload != Unload::Reverse) PetscFunctionReturn(PETSC_SUCCESS);
   if (!Unloading(lambda)) { // (the next pass)
     PetscCall(StartPass(m));
     PetscFunctionReturn(PETSC_SUCCESS);

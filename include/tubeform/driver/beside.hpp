@@ -1,5 +1,5 @@
-// The error estimate's companions beside the run (docs/performance.md, "Ranks"): where every rank would factor
-// the run's whole matrix (a system of at most kDistributedDofs), a second rank buys the run little, and the
+// The error estimate's companions beside the run (docs/accuracy.md, "The error estimate"): where every rank would
+// factor the run's whole matrix (a system of at most kDistributedDofs), a second rank buys the run little, and the
 // companions cost no wall time if they run on it from the start. The run then takes the first half of the ranks
 // and the companions, one after the other, the second half; their histories reach the run when its results are
 // final (its companion callback), level after level (accuracy on demand). The run's ranks and results are those

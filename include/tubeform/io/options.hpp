@@ -14,6 +14,7 @@
 #include "tubeform/fe/quad.hpp"
 #include "tubeform/io/driver_params.hpp"
 #include "tubeform/io/friction_params.hpp"
+#include "tubeform/io/press_params.hpp"
 #include "tubeform/io/scene_params.hpp"
 #include "tubeform/material/elastic.hpp"
 #include "tubeform/tool/motion.hpp"
@@ -27,21 +28,6 @@ constexpr const char *WordOf(const char *const (&words)[N], E value)
 {
   return words[static_cast<size_t>(value)];
 }
-
-// How a press is released after loading (-unload): its contact forces reversed and the dies removed (the paper's),
-// the dies moved back, or not at all. The words of the option in the enumerators' order.
-enum class Unload { Reverse, Withdraw, None };
-inline constexpr const char *kUnloadWords[] = {"reverse", "withdraw", "none"};
-// The release's law (-springback): auto (ElasticRelease), the material's own, or every point elastic (the paper's).
-enum class Springback { Auto, Material, Elastic };
-inline constexpr const char *kSpringbackWords[] = {"auto", "material", "elastic"};
-// The part of the tube the tool scenes model (-model): the quarter where it is exact (auto, QuarterModel), or the
-// one asked for.
-enum class TubeModel { Auto, Quarter, Half, Full };
-inline constexpr const char *kModelWords[] = {"auto", "quarter", "half", "full"};
-// The full model's support (-full_hold): auto (HeldByRotation), its axis pins, or the rotation hold.
-enum class FullHold { Auto, Pins, Rotation };
-inline constexpr const char *kFullHoldWords[] = {"auto", "pins", "rotation"};
 
 // An option tubeform reads: its name (with the dash) and its -help text.
 struct KnownOption {
@@ -142,24 +128,19 @@ struct Options {
   MaterialParams material;
   // The incremental driver's (io/driver_params.hpp; read and checked by the driver).
   DriverParams driver;
-  double stroke = 4.2;             // final tool stroke / prescribed end displacement (mm)
-  double stroke_corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
-  std::vector<double> stroke_path; // tool scenes: the die's strokes in turn (empty: 0 to -stroke)
+  StrokeParams stroke; // the stroke and its path (io/press_params.hpp; read and checked by io, stroke_options.cpp)
   // Tools, contact, friction (docs/dies.md; docs/theory.md, section 6)
   DieShape die_shape;                  // the upper die's shape (-die_profile, -die_angle, ...; UpperDieShape)
   DieChoice lower_die_shape{"mirror"}; // -lower_die (ShapeChoice)
   LowerDieSpec lower_motion;           // its motion (-lower_die_motion; LowerDie)
-  TubeModel model = TubeModel::Auto;   // quarter, half, full, or auto: the quarter where it is exact
   DieMotion die_motion;                // the upper die's motion (-die_motion; UpperDie)
-  double die_offset = 0;               // the first pass's upper die off the y axis along the press's x (mm; full model)
-  FullHold full_hold = FullHold::Auto; // the full model's support: pins, rotation (the rotation hold), auto
+  ModelParams model; // the part modelled, its support (io/press_params.hpp; read and checked by io, model_options.cpp)
   // The passes after the first, each after the springback of the one before (-pass2_* to -pass9_*).
   std::vector<PassSpec> more_passes = std::vector<PassSpec>(kMaxPasses - 1);
   DieChoice side_die_shape{"none"}; // -side_die (ShapeChoice)
   double side_force = 0;            // side dies pressing with this force (N/mm, each), their travel unknown (0: stroke)
   FrictionParams friction;          // the contact and friction options (io/friction_params.hpp; read and checked by io)
-  Unload unload = Unload::Reverse;
-  Springback springback = Springback::Auto;
+  ReleaseParams release; // the release after loading (io/press_params.hpp; read and checked by io, release_options.cpp)
   // The scenes without tools' own parameters (io/scene_params.hpp; each read and checked by its scene).
   PressureParams pressure;
   ShearParams shear;
@@ -260,9 +241,6 @@ inline void ChooseElement(Options &opt)
   opt.element_name = bar ? "qm6bar" : "qm6";
 }
 
-// The most strokes -stroke_path takes (a press's path, not a cycle test: a few dozen).
-constexpr PetscInt kMaxPathPoints = 32;
-
 // The upper die's motion as the scenes take it: its kind and spec, the spec's reach the tube's outer radius (a turn
 // counted in the path's length as the arc of a point there).
 inline DieMotion UpperDie(const Options &opt)
@@ -312,8 +290,8 @@ inline Vec2 DiePivot(const Options &opt)
 inline double Travel(const Options &opt)
 {
   if (DieMoves(opt, DieMotionKind::Path)) return DiePath(opt).end();
-  double travel = opt.stroke_path.empty() ? opt.stroke : 0, at = 0;
-  for (double u : opt.stroke_path) travel += std::abs(u - at), at = u;
+  double travel = opt.stroke.path.empty() ? opt.stroke.u : 0, at = 0;
+  for (double u : opt.stroke.path) travel += std::abs(u - at), at = u;
   return travel;
 }
 // -die_path moves the die sideways somewhere.
@@ -330,7 +308,7 @@ inline bool DieOffAxis(const Options &opt)
 {
   bool turned = false;
   for (double a : opt.die_motion.spec.turns) turned = turned || (DieMoves(opt, DieMotionKind::Path) && a != 0);
-  return opt.die_offset != 0 || DiePathSideways(opt) || turned;
+  return opt.model.die_offset != 0 || DiePathSideways(opt) || turned;
 }
 
 // Pass `pass` (1 the second, ...) of the passes after the first: its -pass<pass + 1>_* options.
@@ -385,7 +363,8 @@ inline bool QuarterModel(const Options &opt)
   bool mirror = LowerDieMoves(opt, "mirror"), quarters = true;
   for (int pass = 0; pass < kMaxPasses; ++pass)
     mirror = mirror && PassLowerDie(opt, pass) == "mirror", quarters = quarters && QuarterTurn(opt, pass);
-  return opt.model == TubeModel::Quarter || (opt.model == TubeModel::Auto && mirror && !DieOffAxis(opt) && quarters);
+  const TubeModel part = opt.model.part;
+  return part == TubeModel::Quarter || (part == TubeModel::Auto && mirror && !DieOffAxis(opt) && quarters);
 }
 // The whole tube (-model full), or auto where neither the quarter nor the half is exact: the half's plane x = 0
 // is not a symmetry plane of a press turned by an odd number of quarter turns, or by another angle.
@@ -394,8 +373,8 @@ inline bool FullModel(const Options &opt)
   bool turned = false;
   for (int pass = 1; pass < kMaxPasses; ++pass)
     turned = turned || PassQuarters(opt, pass) % 2 != 0 || !QuarterTurn(opt, pass);
-  return opt.model == TubeModel::Full ||
-         (opt.model == TubeModel::Auto && !QuarterModel(opt) && (turned || DieOffAxis(opt)));
+  return opt.model.part == TubeModel::Full ||
+         (opt.model.part == TubeModel::Auto && !QuarterModel(opt) && (turned || DieOffAxis(opt)));
 }
 // A pass (0 the first) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked,
 // or (auto) where the pins would hold the tube's slide against the dies: the first pass with a die off the axis; a
@@ -407,6 +386,7 @@ inline bool HeldByRotation(const Options &opt, int pass)
   for (int before = 0; before < pass; ++before)
     off_axis =
       off_axis || ((PassQuarters(opt, pass) - PassQuarters(opt, before)) % 2 != 0 && !PassMirrored(opt, before));
-  return FullModel(opt) && (opt.full_hold == FullHold::Rotation || (opt.full_hold == FullHold::Auto && off_axis));
+  const FullHold hold = opt.model.full_hold;
+  return FullModel(opt) && (hold == FullHold::Rotation || (hold == FullHold::Auto && off_axis));
 }
 } // namespace tf

@@ -1,4 +1,5 @@
-// The tool scenes' options (squaring, flattening): the dies, their path and passes, the model of the tube.
+// The tool scenes' options (squaring, flattening): the dies and the passes (the stroke, the model of the tube and the
+// release: io/press_options.hpp).
 #pragma once
 
 #include <petscsys.h>
@@ -8,7 +9,8 @@
 
 namespace tf {
 
-// Between PetscOptionsBegin and PetscOptionsEnd (it needs their PetscOptionsObject).
+// The passes after the first (-pass<N>_*), between PetscOptionsBegin and PetscOptionsEnd (it needs their
+// PetscOptionsObject).
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt);
 // The lower die's motion, its own block under the options prefix lower_die_ (-lower_die_motion: a word naming a
 // kind of tool/motion.hpp; that kind's options, -lower_die_*, read by the kind): opt.lower_motion (LowerDieSpec).
@@ -42,7 +44,10 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt);
 PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 // The lower die's and the side dies' shapes, each its own block: -lower_die (mirror, flat or a file) into
 // opt.lower_die_shape, -side_die (none, mirror, flat or a file) into opt.side_die_shape (ShapeChoice; both in
-// die_shape_options.cpp, refused where they do not go with the other options by CheckOptions).
+// die_shape_options.cpp, refused where they do not go with the other options by CheckOptions), and in the side dies'
+// block their force, -side_force, into opt.side_force. Collective: CheckSideDieOptions refuses -side_die and
+// -side_force where they do not go with the other options, one line naming the option (called by CheckOptions).
+PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt);
 PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 // Inside a block (its PetscOptionsObject): a die's shape by the word of `option` (ShapeChoice: mirror, flat, none where

@@ -1,5 +1,5 @@
 // Where the body's surface crosses itself: the tube's wall meeting itself, which the solver does not model as
-// contact (docs/theory.md, "Where the wall meets itself"). The driver stops the run there.
+// contact (docs/theory.md, "Contact and friction"). The driver stops the run there.
 #pragma once
 
 #include <petscsys.h>

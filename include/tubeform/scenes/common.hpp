@@ -32,7 +32,8 @@ inline double SideDiesInModel(TubePart part)
 // dead loads can drive a thin wall into a collapse by the material's law; docs/theory.md, "Unloading").
 inline bool ElasticRelease(const Options &opt)
 {
-  return opt.springback == Springback::Elastic || (opt.springback == Springback::Auto && opt.unload == Unload::Reverse);
+  return opt.release.springback == Springback::Elastic ||
+         (opt.release.springback == Springback::Auto && opt.release.unload == Unload::Reverse);
 }
 // C1 = x_max, C2 = y_max of the outer surface (the half model's C2 half its height, the full model's C1 half
 // its width) and their ratio. A pass that turned the tube measures in its press's frame: `press` maps the

@@ -1,0 +1,57 @@
+// The press's own parameters as the options give them, one struct per group (docs/dies.md): how far it presses (the
+// stroke; also the column's end shortening), how it is released (also the bending scene's springback) and the part of
+// the tube it models, with the full model's support. Options holds
+// one of each (so that they travel with the run's options to its levels and companions); io reads and checks each in
+// its own file (io/press_options.hpp), and the scenes take them from there.
+#pragma once
+
+#include <petscsys.h>
+
+#include <vector>
+
+namespace tf {
+
+// The most strokes -stroke_path takes (a press's path, not a cycle test: a few dozen).
+constexpr PetscInt kMaxPathPoints = 32;
+
+// The stroke (-stroke, -stroke_corner_radius, -stroke_path): where the press ends, given, by the paper's
+// corner-radius rule, or as the last of the die's strokes in turn (CheckStrokeOptions sets u to it; a -die_path sets
+// it too).
+struct StrokeParams {
+  double u = 4.2;           // final tool stroke U / prescribed end displacement (mm)
+  double corner_radius = 0; // > 0: stroke from the paper's corner-radius rule
+  std::vector<double> path; // tool scenes: the die's strokes in turn (empty: 0 to u)
+};
+
+// How a press is released after loading (-unload): its contact forces reversed and the dies removed (the paper's),
+// the dies moved back, or not at all. The words of the option in the enumerators' order.
+enum class Unload { Reverse, Withdraw, None };
+inline constexpr const char *kUnloadWords[] = {"reverse", "withdraw", "none"};
+// The release's law (-springback): auto (ElasticRelease), the material's own, or every point elastic (the paper's).
+enum class Springback { Auto, Material, Elastic };
+inline constexpr const char *kSpringbackWords[] = {"auto", "material", "elastic"};
+
+// The release (-unload, -springback): how the press lets the tube go, and by what law it springs back.
+struct ReleaseParams {
+  Unload unload = Unload::Reverse;
+  Springback springback = Springback::Auto;
+};
+
+// The part of the tube the tool scenes model (-model): the quarter where it is exact (auto, QuarterModel), or the
+// one asked for.
+enum class TubeModel { Auto, Quarter, Half, Full };
+inline constexpr const char *kModelWords[] = {"auto", "quarter", "half", "full"};
+// The full model's support (-full_hold): auto (HeldByRotation), its axis pins, or the rotation hold.
+enum class FullHold { Auto, Pins, Rotation };
+inline constexpr const char *kFullHoldWords[] = {"auto", "pins", "rotation"};
+
+// The model (-model, -die_offset, -full_hold): the part of the tube modelled, the first pass's upper die off the axis
+// (which only the full model takes, held by the rotation hold: it chooses the model and its support with the dies'
+// paths and the passes' turns, QuarterModel, FullModel, HeldByRotation), and the full model's support.
+struct ModelParams {
+  TubeModel part = TubeModel::Auto;    // quarter, half, full, or auto: the quarter where it is exact
+  double die_offset = 0;               // the first pass's upper die off the y axis along the press's x (mm; full model)
+  FullHold full_hold = FullHold::Auto; // the full model's support: pins, rotation (the rotation hold), auto
+};
+
+} // namespace tf

@@ -1,0 +1,70 @@
+// The model's options: read into Options::model (in the loading block of -help, where they always were) and checked,
+// one line naming the option: the part of the tube modelled, the first pass's die off the axis (which only the full
+// model takes), and how the full model is held.
+#include <cmath>
+#include <cstdio>
+
+#include "tubeform/io/press_options.hpp"
+
+namespace tf {
+
+PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ModelParams &m)
+{
+  PetscFunctionBeginUser;
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
+                       "tool scenes: the part of the tube modelled: quarter, half (x >= 0), full (held as "
+                       "-full_hold says), auto (the quarter where exact, else the half or the full)",
+                       kModelWords, m.part));
+  PetscCall(read.Real(PetscOptionsObject, "-die_offset",
+                      "squaring: the first pass's upper die moved off the y axis by this along x (mm; the full model, "
+                      "held by the rotation hold, a second pass after it too; docs/dies.md)",
+                      m.die_offset));
+  PetscCall(
+    ChooseWord(PetscOptionsObject, read, "-full_hold",
+               "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "
+               "on its inner nodes there holds its rotation alone, the dies its slide; docs/dies.md), auto "
+               "(rotation where the pins would hold the tube's slide against the dies: with -die_offset or a sideways "
+               "-die_path and a second pass after it, and in a "
+               "quarter-turned second pass after a first pass not mirrored top to bottom, and in one turned by "
+               "another angle; else pins)",
+               kFullHoldWords, m.full_hold));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
+{
+  const ModelParams &m = opt.model;
+  PetscFunctionBeginUser;
+  bool mirror = LowerDieMoves(opt, "mirror");
+  for (int pass = 0; pass < kMaxPasses; ++pass) mirror = mirror && PassLowerDie(opt, pass) == "mirror";
+  PetscCheck(m.part != TubeModel::Quarter || mirror, comm, PETSC_ERR_USER_INPUT,
+             "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
+             "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
+  // The rotation hold: the full model; one extra unknown in a solve (scenes/hold.hpp).
+  PetscCheck(std::isfinite(m.die_offset), comm, PETSC_ERR_USER_INPUT, "-die_offset %g: give a number of mm",
+             m.die_offset);
+  PetscCheck(m.die_offset == 0 || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
+             "-die_offset %g: the squaring scene's die (a plate off the axis is the same plate)", m.die_offset);
+  char off_axis[64] = "-die_path"; // (what puts the die off the axis, named in the errors)
+  if (m.die_offset != 0) std::snprintf(off_axis, sizeof off_axis, "-die_offset %g", m.die_offset);
+  if (m.die_offset == 0 && !DiePathSideways(opt)) std::snprintf(off_axis, sizeof off_axis, "-die_path_turn");
+  PetscCheck(!DieOffAxis(opt) || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
+             "%s: a die off the axis breaks the tube's mirror symmetry; use -model full (or auto)", off_axis);
+  PetscCheck(m.full_hold != FullHold::Rotation || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
+             "-full_hold rotation: the %s scene's plates do not hold the tube's slide; use pins", opt.scene.c_str());
+  PetscCheck(!DieOffAxis(opt) || m.full_hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
+             "%s with -full_hold pins: the pins would hold the tube's slide against the die; use -full_hold rotation "
+             "(or auto)",
+             off_axis);
+  PetscCheck(m.full_hold == FullHold::Auto || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
+             "-full_hold %s: only the full model is held so (-model full)", WordOf(kFullHoldWords, m.full_hold));
+  bool held = false;
+  for (int pass = 0; pass < kMaxPasses; ++pass) held = held || HeldByRotation(opt, pass);
+  PetscCheck(
+    !held || (!DieMoves(opt, DieMotionKind::Force) && opt.side_force == 0), comm, PETSC_ERR_USER_INPUT,
+    "the rotation hold (-full_hold, -die_offset, -die_path): not with -die_force or -side_force (one force-controlled "
+    "unknown in an increment)");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

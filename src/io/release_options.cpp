@@ -1,0 +1,32 @@
+// The release's options: read into Options::release (in the loading block of -help, where they always were) and
+// checked, one line naming the option: how the press lets the tube go and the springback's law.
+#include "tubeform/io/press_options.hpp"
+
+namespace tf {
+
+PetscErrorCode ReadReleaseOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ReleaseParams &r)
+{
+  PetscFunctionBeginUser;
+  PetscCall(
+    ChooseWord(PetscOptionsObject, read, "-unload",
+               "Springback: reverse (paper: contact forces reversed, tools removed), withdraw (tools move back), none",
+               kUnloadWords, r.unload));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-springback",
+                       "The springback's law: material (the material's own, backstresses and all, as in loading), "
+                       "elastic (the paper's: every point elastic; how far that carries points past the yield surface "
+                       "is measured and reported), or auto: elastic for -unload reverse (its reversed contact forces "
+                       "are dead loads, which can drive a thin wall into a collapse by the material's law), material "
+                       "for -unload withdraw and the bending scene",
+                       kSpringbackWords, r.springback));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckReleaseOptions(MPI_Comm comm, const Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(QuarterModel(opt) || opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
+             "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf

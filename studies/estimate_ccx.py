@@ -1,0 +1,176 @@
+#!/usr/bin/python3
+"""The error estimate's companions against CalculiX (docs/accuracy.md, "The error estimate"): for each case of
+tests/reference/calculix/ and the fast and default presets, the run and the companion levels an estimate can read,
+each changing one thing with the run's element and friction regularization kept, and the load and C/t errors of
+the run against the reference beside what each candidate estimate says.
+
+    /usr/bin/python3 studies/estimate_ccx.py run  [--cases default,steel,thick,thin] [--presets fast,default] [-j 2]
+    /usr/bin/python3 studies/estimate_ccx.py eval [--cases ...] [--presets ...] [--cells]
+
+Levels (nt x N the run's cells through the wall and around, the quarter model): run; M the shipped mesh companion
+(max(2, nt / 2) x 2 (N / 4)); S M at twice the increment limits (the shipped steps companion); A around halved
+(nt x 2 (N / 4)); T through halved (max(2, nt / 2) x N); R the run's mesh at twice the increment limits. Runs are
+cached under results/estimate_ccx/ (delete one to run it again).
+"""
+import argparse
+import concurrent.futures
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
+from tubeform_py import tfruns  # noqa: E402
+
+OUT = os.path.join(tfruns.root, "results", "estimate_ccx")
+CASES = ("default", "steel", "thick", "thin")
+# The presets' increment limits (options/preset-*.opts; -rmin_deps and -rmin_domega are the driver's defaults).
+LIMITS = {"fast": (100, 0.002, 0.01, 2.0), "default": (200, 0.002, 0.01, 2.0)}
+# The automatic friction regularization: 2 % of the circumferential cell size (src/io/friction_options.cpp).
+VCRI_OF_CELL = 0.02
+
+
+def levels(nt, n, ro, preset):
+    """Each level's options after the preset's: the cells, the element kept by the caller, the increment limits."""
+    inc, deps, dom, dy = LIMITS[preset]
+    twice = ["-increments", str(max(1, inc // 2)), "-rmin_deps", str(2 * deps), "-rmin_domega", str(2 * dom),
+             "-rmin_deps_yield", str(2 * dy)]
+    half_nt, half_n = max(2, nt // 2), max(4, 2 * (n // 4))
+    cells = {"M": (half_nt, half_n), "S": (half_nt, half_n), "A": (nt, half_n), "T": (half_nt, n), "R": (nt, n)}
+    return {k: (["-mesh_nt", str(a), "-mesh_ntheta", str(b)] + (twice if k in "SR" else [])) for k, (a, b) in
+            cells.items()}
+
+
+def run_one(case, preset, level, extra):
+    opts, _, _, _ = tfruns.calculix_reference(case)
+    h5 = os.path.join(OUT, f"{case}_{preset}_{level}.h5")
+    if not os.path.exists(h5):
+        _, _, _, out = tfruns.run("options/squaring.opts", ["-options_file", f"options/preset-{preset}.opts"] + opts +
+                                  ["-error_estimate", "0", "-progress", "0", "-output_every", "100000"] + extra, h5)
+        with open(h5[:-3] + ".log", "w") as f:
+            f.write(out)
+    return h5
+
+
+def run_case(case, preset):
+    """The run, then its companions with its element and friction regularization."""
+    h5 = run_one(case, preset, "run", [])
+    m = re.search(r"-mesh_nt (\d+) through the wall x -mesh_ntheta (\d+) around\), (\w+) elements",
+                  open(h5[:-3] + ".log").read())
+    nt, n, element = int(m.group(1)), int(m.group(2)), m.group(3)
+    ro = float(tfruns.option(tfruns.calculix_reference(case)[0], "-tube_ro"))
+    vcri = VCRI_OF_CELL * (math.pi / 2) * ro / n
+    keep = ["-element", element, "-friction_vcri", repr(vcri)]
+    return {k: run_one(case, preset, k, extra + keep) for k, extra in levels(nt, n, ro, preset).items()}
+
+
+def values(h5, case):
+    """Load at the reported strokes and C/t from 2 mm on, and after springback, as one vector (load relative)."""
+    _, ref, spring, stroke = tfruns.calculix_reference(case)
+    H = tfruns.history(h5)
+    us = [u for u in (1.0, 2.0, 3.0, 4.2) if u < stroke - 1e-9] + [stroke]
+    load = [tfruns.at(H, "load", u) for u in us]
+    ct = [tfruns.at(H, "c_over_t", u) for u in us if u >= 2] + [H["spring"]]
+    rload = [tfruns.at(ref, "load", u) for u in us]
+    rct = [tfruns.at(ref, "c_over_t", u) for u in us if u >= 2] + [spring]
+    return us, np.array(load), np.array(ct), np.array(rload), np.array(rct)
+
+
+def smooth_at(H, col, U, half):
+    """Column `col` at stroke U from a quadratic fitted over the rows within `half` mm of U (one-sided at the ends
+    of the loading): the curve's trend with the contact staircase averaged out."""
+    S, Y = H["stroke"], H[col]
+    k = (S >= U - half) & (S <= U + half)
+    if k.sum() < 4:
+        return float(np.interp(U, S, Y))
+    return float(np.polyval(np.polyfit(S[k] - U, Y[k], 2), 0.0))
+
+
+def smoothed(h5, case, half):
+    """values() with the loaded values from the trend (smooth_at); C/t after springback as it is."""
+    us, load, ct, rload, rct = values(h5, case)
+    H = tfruns.history(h5)
+    sl = np.array([smooth_at(H, "load", u, half) for u in us])
+    sc = np.array([smooth_at(H, "c_over_t", u, half) for u in us if u >= 2] + [ct[-1]])
+    return us, sl, sc, rload, rct
+
+
+def candidates(v):
+    """Each candidate's estimate of the run's load (relative) and C/t errors from the levels' values."""
+    run, M, S, A, T, R = (v[k] for k in ("run", "M", "S", "A", "T", "R"))
+    rel = lambda a, b: np.abs(a[1] / b[1] - 1)  # noqa: E731
+    absd = lambda a, b: np.abs(a[2] - b[2])  # noqa: E731
+    out = {}
+    out["shipped |S-M|+|M-run|"] = (rel(S, M) + rel(M, run), absd(S, M) + absd(M, run))
+    out["steps on run |R-run|"] = (rel(R, run), absd(R, run))
+    out["|R-run| + |A-run|/3 + |T-run|"] = (rel(R, run) + rel(A, run) / 3 + rel(T, run),
+                                           absd(R, run) + absd(A, run) / 3 + absd(T, run))
+    out["|R-run| + |A-run|/3"] = (rel(R, run) + rel(A, run) / 3, absd(R, run) + absd(A, run) / 3)
+    out["|S-M| + |A-run|/3"] = (rel(S, M) + rel(A, run) / 3, absd(S, M) + absd(A, run) / 3)
+    out["|R-run| + |A-run|"] = (rel(R, run) + rel(A, run), absd(R, run) + absd(A, run))
+    out["|S-M| + |M-run|/3"] = (rel(S, M) + rel(M, run) / 3, absd(S, M) + absd(M, run) / 3)
+    for half in (0.2, 0.4):
+        sm = {k: v[f"{k}~{half}"] for k in ("run", "M", "S", "A", "R")}
+        rip_l = np.abs(run[1] / sm["run"][1] - 1)
+        rip_c = np.abs(run[2] - sm["run"][2])
+        sl = lambda a, b: np.abs(sm[a][1] / sm[b][1] - 1)  # noqa: E731
+        sc = lambda a, b: np.abs(sm[a][2] - sm[b][2])  # noqa: E731
+        out[f"trend {half}: |S-M| + |M-run| + ripple"] = (sl("S", "M") + sl("M", "run") + rip_l,
+                                                         sc("S", "M") + sc("M", "run") + rip_c)
+        out[f"trend {half}: |R-run| + |A-run| + ripple"] = (sl("R", "run") + sl("A", "run") + rip_l,
+                                                           sc("R", "run") + sc("A", "run") + rip_c)
+        out[f"trend {half}: |S-M| + |M-run|/3 + ripple"] = (sl("S", "M") + sl("M", "run") / 3 + rip_l,
+                                                           sc("S", "M") + sc("M", "run") / 3 + rip_c)
+    return out
+
+
+def evaluate(cases, presets, cells):
+    stats = {}
+    for case in cases:
+        for preset in presets:
+            files = {k: os.path.join(OUT, f"{case}_{preset}_{k}.h5") for k in ("run", "M", "S", "A", "T", "R")}
+            if not all(os.path.exists(f) for f in files.values()):
+                print(f"{case} {preset}: not run")
+                continue
+            v = {k: values(f, case) for k, f in files.items()}
+            v.update({f"{k}~{half}": smoothed(f, case, half) for k, f in files.items() for half in (0.2, 0.4)})
+            us, load, ct, rload, rct = v["run"]
+            err_l, err_c = np.abs(load / rload - 1), np.abs(ct - rct)
+            for name, (el, ec) in candidates(v).items():
+                s = stats.setdefault(name, [])
+                for e, t in list(zip(el, err_l)) + list(zip(ec, err_c)):
+                    s.append((e, t))
+                if cells:
+                    print(f"{case} {preset} {name}: load err " + " ".join(f"{100 * t:.2f}/{100 * e:.2f}" for e, t in
+                                                                          zip(el, err_l)) +
+                          "  C/t " + " ".join(f"{t:.4f}/{e:.4f}" for e, t in zip(ec, err_c)))
+    for name, s in stats.items():
+        e, t = np.array(s).T
+        eff = e / np.maximum(t, 1e-12)
+        bounded = np.mean(e >= t)
+        within3 = np.mean((eff >= 1 / 3) & (eff <= 3))
+        print(f"{name:34s} cells {len(e)}  bounded {100 * bounded:.0f} %  median effectivity "
+              f"{np.median(eff):.2f}  within 3x {100 * within3:.0f} %")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("what", choices=("run", "eval"))
+    ap.add_argument("--cases", default=",".join(CASES))
+    ap.add_argument("--presets", default="fast,default")
+    ap.add_argument("-j", type=int, default=1)
+    ap.add_argument("--cells", action="store_true", help="print each cell: true error / estimate")
+    a = ap.parse_args()
+    cases, presets = a.cases.split(","), a.presets.split(",")
+    os.makedirs(OUT, exist_ok=True)
+    if a.what == "run":
+        with concurrent.futures.ThreadPoolExecutor(a.j) as pool:
+            for f in [pool.submit(run_case, c, p) for c in cases for p in presets]:
+                f.result()
+    evaluate(cases, presets, a.cells)
+
+
+if __name__ == "__main__":
+    main()
