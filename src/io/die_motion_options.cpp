@@ -5,6 +5,7 @@
 // kinds registered after the built-in ones); the upper die: -die_motion (stroke, path, force: each its kind's own
 // name). Combinations with the scene's other options are the scene's checks (options_check.cpp).
 #include <algorithm>
+#include <iterator>
 
 #include "tubeform/io/tool_options.hpp"
 
@@ -69,20 +70,24 @@ std::vector<MotionWord> UpperWords()
   return words;
 }
 
-// The upper die's word where -die_motion is not given, from the old spellings: path where -die_path, -die_path_turn
-// or -die_pivot is given; force where -die_force is given other than 0; else the stroke. `zero_force`: -die_force 0
-// given without -die_motion (the old "not by force", allowed with any word).
-PetscErrorCode OldSpelling(MPI_Comm comm, OptionReader &read, PetscInt &choice, bool &zero_force)
+// An upper die's word where -<prefix>motion is not given, from the old spellings: path where -<prefix>path,
+// -<prefix>path_turn or -<prefix>pivot is given; force (a word of `words`) where -<prefix>force is given other than
+// 0; else the stroke. `zero_force`: -<prefix>force 0 given without -<prefix>motion (the old "not by force", allowed
+// with any word).
+PetscErrorCode OldSpelling(MPI_Comm comm, OptionReader &read, const std::string &prefix,
+                           const std::vector<MotionWord> &words, PetscInt &choice, bool &zero_force)
 {
-  PetscBool motion, path, turn, pivot, force;
+  PetscBool motion, path, turn, pivot, force = PETSC_FALSE;
   PetscReal f = 0;
   PetscFunctionBeginUser;
-  PetscCall(PetscOptionsHasName(nullptr, "die_", "-motion", &motion));
-  PetscCall(PetscOptionsHasName(nullptr, "die_", "-path", &path));
-  PetscCall(PetscOptionsHasName(nullptr, "die_", "-path_turn", &turn));
-  PetscCall(PetscOptionsHasName(nullptr, "die_", "-pivot", &pivot));
-  PetscCall(read.CheckNumber(comm, "-die_force", false));
-  PetscCall(PetscOptionsGetReal(nullptr, "die_", "-force", &f, &force));
+  PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-motion", &motion));
+  PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-path", &path));
+  PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-path_turn", &turn));
+  PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-pivot", &pivot));
+  if (words.size() > (size_t)DieMotionKind::Force) {
+    PetscCall(read.CheckNumber(comm, ("-" + prefix + "force").c_str(), false));
+    PetscCall(PetscOptionsGetReal(nullptr, prefix.c_str(), "-force", &f, &force));
+  }
   zero_force = !motion && force && f == 0;
   if (!motion && (path || turn || pivot))
     choice = (PetscInt)DieMotionKind::Path;
@@ -122,37 +127,92 @@ PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &op
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
+PetscErrorCode ReadUpperMotion(MPI_Comm comm, OptionReader &read, const UpperMotionBlock &block, bool help,
+                               DieMotion &die)
 {
-  const std::vector<MotionWord> words = UpperWords();
+  std::vector<MotionWord> words = UpperWords();
+  words.resize(block.words);
+  const std::string &prefix = block.prefix;
   std::vector<const char *> list;
-  PetscInt choice = (PetscInt)opt.die_motion.kind;
+  PetscInt choice = (PetscInt)die.kind;
   bool zero_force = false;
-  const char *help = "tool scenes: the upper die moves down by the stroke U (stroke; 2 U over a fixed lower die), "
-                     "along a path of its own (path: -die_path, -die_path_turn, -die_pivot) or presses with a force "
-                     "(force: -die_force); without it, -die_path (or its turns or pivot) means path, -die_force other "
-                     "than 0 force (docs/dies.md)";
 
   PetscFunctionBeginUser;
   for (const MotionWord &w : words) {
     list.push_back(w.word.c_str());
-    for (const std::string &name : FindMotionKind(w.kind)->options) read.Note(("-die_" + name).c_str());
+    for (const std::string &name : FindMotionKind(w.kind)->options) read.Note(("-" + prefix + name).c_str());
   }
-  read.Note("-die_motion", help);
-  PetscCall(OldSpelling(comm, read, choice, zero_force));
-  opt.die_motion.spec.tool = "the " + opt.scene + " scene's upper die";
-  PetscOptionsBegin(comm, "die_", "tubeform: upper die motion", "tubeform");
-  OptionsBlock block(PetscOptionsObject);
-  PetscCall(
-    PetscOptionsEList("-motion", help, "tubeform", list.data(), (PetscInt)list.size(), list[choice], &choice, nullptr));
-  opt.die_motion.kind = (DieMotionKind)choice;
-  if (opt.help)
-    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, opt.die_motion.spec));
+  read.Note(("-" + prefix + "motion").c_str(), block.help.c_str());
+  PetscCall(OldSpelling(comm, read, prefix, words, choice, zero_force));
+  PetscOptionsBegin(comm, prefix.c_str(), block.title.c_str(), "tubeform");
+  OptionsBlock end(PetscOptionsObject);
+  PetscCall(PetscOptionsEList("-motion", block.help.c_str(), "tubeform", list.data(), (PetscInt)list.size(),
+                              list[choice], &choice, nullptr));
+  die.kind = (DieMotionKind)choice;
+  if (help)
+    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, die.spec));
   else
-    PetscCall(ReadMotion(PetscOptionsObject, words[choice].kind, opt.die_motion.spec));
-  block.Release();
+    PetscCall(ReadMotion(PetscOptionsObject, words[choice].kind, die.spec));
+  end.Release();
   PetscOptionsEnd();
-  if (!opt.help) PetscCall(RefuseOthers(comm, "die_", words, words[choice], zero_force ? "force" : ""));
+  if (!help) PetscCall(RefuseOthers(comm, prefix.c_str(), words, words[choice], zero_force ? "force" : ""));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  const UpperMotionBlock block{
+    "die_", "tubeform: upper die motion",
+    "tool scenes: the upper die moves down by the stroke U (stroke; 2 U over a fixed lower die), along a path of its "
+    "own (path: -die_path, -die_path_turn, -die_pivot) or presses with a force (force: -die_force); without it, "
+    "-die_path (or its turns or pivot) means path, -die_force other than 0 force (docs/dies.md)",
+    std::size(kDieMotionWords)};
+  PetscFunctionBeginUser;
+  opt.die_motion.spec.tool = "the " + opt.scene + " scene's upper die";
+  PetscCall(ReadUpperMotion(comm, read, block, opt.help, opt.die_motion));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  for (int pass = 1; pass < kMaxPasses; ++pass) {
+    PassSpec &p = opt.more_passes[pass - 1];
+    const UpperMotionBlock block{
+      Formatted("pass%d_die_", pass + 1), Formatted("tubeform: pass %d upper die motion", pass + 1),
+      pass > 1 ? Formatted("squaring: pass %d's, as -pass2_die_motion", pass + 1)
+               : "squaring: the second pass's upper die moves by its stroke (stroke: -pass2_stroke) or along a path "
+                 "of its own from where it starts (path: -pass2_die_path, -pass2_die_path_turn, -pass2_die_pivot, as "
+                 "-die_path's; over a lower die that stays, -lower_die_motion fixed; in place of -pass2_stroke: the "
+                 "pass ends at U = -y / 2 of its last point; off the axis: -model full -full_hold rotation); without "
+                 "it, -pass2_die_path (or its turns or pivot) means path; a later pass's by its number: "
+                 "-pass3_die_path, ... (docs/dies.md)",
+      (size_t)DieMotionKind::Force}; // (stroke, path)
+    bool given = pass == 1;          // (a later one's read, and listed by -help, where one of them is given)
+    for (const char *name : {"-motion", "-path", "-path_turn", "-pivot"}) {
+      PetscBool set;
+      PetscCall(PetscOptionsHasName(nullptr, block.prefix.c_str(), name, &set));
+      given = given || set;
+    }
+    if (!given) {
+      for (const char *name : {"motion", "path", "path_turn", "pivot"})
+        read.Note(("-" + block.prefix + name).c_str(), block.help.c_str());
+      continue;
+    }
+    p.motion.spec.tool = "the " + PassOrdinal(pass) + " pass's upper die";
+    PetscCall(ReadUpperMotion(comm, read, block, opt.help, p.motion));
+    if (opt.help || p.motion.kind != DieMotionKind::Path) continue;
+    // Its stroke: where its path ends (U = -y / 2 of its last point, from where it starts).
+    const std::string path = "-" + block.prefix + "path";
+    const double y = p.motion.spec.points.back()[1];
+    PetscCheck(p.stroke == 0, comm, PETSC_ERR_USER_INPUT,
+               "%s: in place of %s (the pass ends at U = -y / 2 of its last point); give one of them", path.c_str(),
+               PassOption(pass, "stroke").c_str());
+    PetscCheck(y < 0, comm, PETSC_ERR_USER_INPUT,
+               "%s: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", path.c_str(),
+               y);
+    p.stroke = -0.5 * y;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

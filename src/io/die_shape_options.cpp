@@ -17,18 +17,42 @@ namespace {
 PetscErrorCode ReadWordShape(MPI_Comm comm, OptionReader &read, const char *option, const char *help, const char *title,
                              bool none, DieChoice &shape)
 {
-  std::string word = ShapeWord(shape);
-
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, title, "tubeform");
   OptionsBlock block(PetscOptionsObject);
-  PetscCall(read.String(PetscOptionsObject, option, help, word));
+  PetscCall(ReadDieChoice(PetscOptionsObject, read, option, help, none, shape));
   block.Release();
   PetscOptionsEnd();
-  shape = ShapeChoice(word, none);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 } // namespace
+
+PetscErrorCode ReadDieChoice(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *option,
+                             const char *help, bool none, DieChoice &shape)
+{
+  std::string word = ShapeWord(shape);
+  PetscFunctionBeginUser;
+  PetscCall(read.String(PetscOptionsObject, option, help, word));
+  if (word != ShapeWord(shape)) shape = ShapeChoice(word, none);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ReadDrawingChoice(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *option,
+                                 const char *help, DieChoice &shape)
+{
+  std::string file = shape.spec.file;
+  PetscFunctionBeginUser;
+  PetscCall(read.String(PetscOptionsObject, option, help, file));
+  if (file != shape.spec.file) shape = DrawingChoice(file);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+DieChoice DrawingChoice(const std::string &file)
+{
+  DieChoice shape(file.empty() ? "" : DrawingKind(file).c_str());
+  shape.spec.file = file;
+  return shape;
+}
 
 DieChoice ShapeChoice(const std::string &word, bool none)
 {
@@ -66,7 +90,7 @@ PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt
   PetscCall(ReadShape(PetscOptionsObject, "v", die.spec));
   block.Release();
   PetscOptionsEnd();
-  die.kind = die.spec.file.empty() ? "v" : DrawingKind(die.spec.file);
+  die.kind = die.spec.file.empty() ? "v" : DrawingChoice(die.spec.file).kind;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

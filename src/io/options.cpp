@@ -267,6 +267,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups
   PetscCall(ReadUpperDieShape(comm, read, opt));  // (die_shape_options.cpp)
   PetscCall(ReadUpperDieMotion(comm, read, opt));
   PetscCall(ReadSideDieShape(comm, read, opt));
+  PetscCall(ReadPassMotions(comm, read, opt)); // (die_motion_options.cpp)
 
   opt.known = read.known();
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);

@@ -30,7 +30,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
                opt.model.full_hold != FullHold::Auto;
   for (const PassSpec &p : opt.more_passes)
     asked =
-      asked || p.stroke != 0 || p.turn != 0 || !p.die_profile.empty() || !p.lower_die.empty() || !p.side_die.empty();
+      asked || p.stroke != 0 || p.turn != 0 || !p.upper.kind.empty() || !p.lower.kind.empty() || !p.side.kind.empty();
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
     "-lower_die, -lower_die_motion, -model, -pass<N>_*, -die_motion, -die_force, -die_offset, -die_path, -side_die, "

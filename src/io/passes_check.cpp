@@ -22,13 +22,50 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
 
 namespace {
 
+// -pass<N>_die_path_turn's range (degrees), as -die_path_turn's: a die turned by more than a quarter turn no longer
+// presses along its press's y, along which its punch load is read.
+constexpr double kMaxPassDieTurn = 90;
+
+// Pass `pass`'s upper die on a path of its own (its points, turns and pivot checked by the path kind's reader, its
+// stroke set where it ends: ReadPassMotions), as the first pass's -die_path: the squaring scene's upper die, within a
+// quarter turn, over a lower die that stays, with no side dies pressing by the stroke in any pass; off its press's
+// axis (sideways or turned), held by the rotation hold in the full model.
+PetscErrorCode CheckPassPath(MPI_Comm comm, const Options &opt, int pass)
+{
+  const MotionSpec &path = LaterPass(opt, pass).motion.spec;
+  const std::string name = PassOption(pass, "die_path");
+  bool side = false, off = false;
+  PetscFunctionBeginUser;
+  for (int k = 0; k < PassCount(opt); ++k) side = side || DiesOfPass(opt, k).side.kind != "none";
+  for (const Vec2 &p : path.points) off = off || p[0] != 0;
+  for (double turn : path.turns) {
+    PetscCheck(std::abs(turn) <= kMaxPassDieTurn, comm, PETSC_ERR_USER_INPUT,
+               "%s %g: each turn must be a number of degrees within +-%g", PassOption(pass, "die_path_turn").c_str(),
+               turn, kMaxPassDieTurn);
+    off = off || turn != 0;
+  }
+  PetscCheck(opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
+             "%s: the squaring scene's upper die through x,y pairs (mm, from its start), in turn; not the %s scene's",
+             name.c_str(), opt.scene.c_str());
+  PetscCheck(LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
+             "%s: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion fixed",
+             name.c_str());
+  PetscCheck(!side, comm, PETSC_ERR_USER_INPUT,
+             "%s: not with side dies (-side_die, -pass<N>_side_die), which press by the stroke", name.c_str());
+  PetscCheck(!off || HeldByRotation(opt, pass), comm, PETSC_ERR_USER_INPUT,
+             "%s: a die off the axis (a sideways point or a turn) breaks the tube's mirror symmetry; use -model full "
+             "-full_hold rotation",
+             name.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 // Pass `pass`'s stroke and dies.
 PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
 {
   const PassSpec &p = LaterPass(opt, pass);
   const std::string stroke = PassOption(pass, "stroke"), ordinal = PassOrdinal(pass);
   PetscFunctionBeginUser;
-  PetscCheck(opt.scene == "squaring" || p.die_profile.empty(), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(opt.scene == "squaring" || p.upper.kind.empty(), comm, PETSC_ERR_USER_INPUT,
              "%s: the %s scene presses with plates, not dies", PassOption(pass, "die_profile").c_str(),
              opt.scene.c_str());
   PetscCheck(p.stroke >= 0 && std::isfinite(p.stroke), comm, PETSC_ERR_USER_INPUT,
@@ -40,11 +77,12 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(p.stroke == 0 || pass == 1 || LaterPass(opt, pass - 1).stroke > 0, comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", stroke.c_str(), p.stroke, ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
-  PetscCheck(p.stroke > 0 || (p.die_profile.empty() && p.lower_die.empty() && p.side_die.empty()), comm,
+  PetscCheck(p.stroke > 0 || (p.upper.kind.empty() && p.lower.kind.empty() && p.side.kind.empty()), comm,
              PETSC_ERR_USER_INPUT, "%s, %s, %s: give %s for the %s pass", PassOption(pass, "die_profile").c_str(),
              PassOption(pass, "lower_die").c_str(), PassOption(pass, "side_die").c_str(), stroke.c_str(),
              ordinal.c_str());
-  if (!p.side_die.empty()) PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), p.side_die));
+  if (!p.side.kind.empty()) PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), ShapeWord(p.side)));
+  if (p.motion.kind == DieMotionKind::Path) PetscCall(CheckPassPath(comm, opt, pass));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

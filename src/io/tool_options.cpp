@@ -14,18 +14,18 @@ PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader
                       "touches the tube; 0: one pass), then spring back; a third pass and more (up to 9) by the same "
                       "options with their number: -pass3_stroke, -pass3_turn, ... (docs/dies.md)",
                       pass.stroke));
-  PetscCall(read.String(PetscOptionsObject, "-pass2_die_profile",
-                        "squaring: the second pass's upper die from a profile file (default: the first pass's die)",
-                        pass.die_profile));
-  PetscCall(read.String(PetscOptionsObject, "-pass2_lower_die",
-                        "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first "
-                        "pass's -lower_die)",
-                        pass.lower_die));
-  PetscCall(
-    read.String(PetscOptionsObject, "-pass2_side_die",
-                "squaring: the second pass's side dies: none, mirror, flat or a profile file (default: the first "
-                "pass's -side_die)",
-                pass.side_die));
+  PetscCall(ReadDrawingChoice(PetscOptionsObject, read, "-pass2_die_profile",
+                              "squaring: the second pass's upper die from a profile file (default: the first pass's "
+                              "die)",
+                              pass.upper));
+  PetscCall(ReadDieChoice(PetscOptionsObject, read, "-pass2_lower_die",
+                          "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first "
+                          "pass's -lower_die)",
+                          false, pass.lower));
+  PetscCall(ReadDieChoice(PetscOptionsObject, read, "-pass2_side_die",
+                          "squaring: the second pass's side dies: none, mirror, flat or a profile file (default: the "
+                          "first pass's -side_die)",
+                          true, pass.side));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_turn",
                       "squaring: the tube turned counter-clockwise by this many degrees (-360 to 360) before the "
                       "second pass: its dies press along the turned axis (not a multiple of 90: the full model, "
@@ -56,9 +56,9 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(read.Real(PetscOptionsObject, stroke.c_str(), (help + "stroke").c_str(), pass.stroke));
-  PetscCall(read.String(PetscOptionsObject, profile.c_str(), (help + "die_profile").c_str(), pass.die_profile));
-  PetscCall(read.String(PetscOptionsObject, lower.c_str(), (help + "lower_die").c_str(), pass.lower_die));
-  PetscCall(read.String(PetscOptionsObject, side.c_str(), (help + "side_die").c_str(), pass.side_die));
+  PetscCall(ReadDrawingChoice(PetscOptionsObject, read, profile.c_str(), (help + "die_profile").c_str(), pass.upper));
+  PetscCall(ReadDieChoice(PetscOptionsObject, read, lower.c_str(), (help + "lower_die").c_str(), false, pass.lower));
+  PetscCall(ReadDieChoice(PetscOptionsObject, read, side.c_str(), (help + "side_die").c_str(), true, pass.side));
   PetscCall(
     read.Real(PetscOptionsObject, turn.c_str(), (help + "turn (from the pass before's press)").c_str(), pass.turn));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -29,13 +29,19 @@ PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::str
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// The squaring dies' cavity has a closed form: two equal V-dies (the lower one mirroring the upper one, closing by
+// 2 U as mirror and fixed do), no side dies.
+bool ClosedForm(const Options &o, const DieSet &dies)
+{
+  return dies.upper.kind == "v" && dies.lower.kind == "mirror" && LowerDieClosing(o) && dies.side.kind == "none";
+}
+
 } // namespace
 
-PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die)
+PetscErrorCode BuildDie(MPI_Comm comm, const DieShape &shape, Die &die)
 {
   PetscFunctionBeginUser;
-  const DieShape shape = UpperDieShape(opt);
-  if (VDie(opt)) {
+  if (shape.kind == "v") {
     const ShapeSpec &v = shape.spec;
     const std::string error = MakeShape(shape.kind, v, die.tool);
     PetscCheck(error.empty(), comm, PETSC_ERR_USER_INPUT,
@@ -54,9 +60,9 @@ PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, Tool &upper, double floor_y, bool full, Tool &lower)
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape, Tool &upper, double floor_y, bool full,
+                             Tool &lower)
 {
-  DieChoice shape = opt.lower_die_shape;
   PetscFunctionBeginUser;
   if (shape.kind == "mirror") {
     lower = MirrorY(upper);
@@ -77,11 +83,10 @@ PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, Tool &upper, dou
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, bool squaring, const Tool &upper_right,
-                           bool half, bool full, std::vector<Tool> &tools)
+PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, DieChoice shape, const char *option, bool squaring,
+                           const Tool &upper_right, bool half, bool full, std::vector<Tool> &tools)
 {
   Tool drawn; // drawn as an upper die (its right half), then turned to the side by the reflection about y = x
-  DieChoice shape = o.side_die_shape;
   PetscFunctionBeginUser;
   const bool plate = shape.kind == "flat" || (shape.kind == "mirror" && !squaring);
   if (plate) {
@@ -110,42 +115,35 @@ PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-Options PassOptions(const Options &opt, int pass)
-{
-  Options o = opt;
-  if (pass == 0) return o;
-  const PassSpec &p = LaterPass(opt, pass);
-  if (!p.die_profile.empty()) o.die_shape.kind = DrawingKind(p.die_profile), o.die_shape.spec.file = p.die_profile;
-  if (!p.lower_die.empty()) o.lower_die_shape = ShapeChoice(p.lower_die);
-  if (!p.side_die.empty()) o.side_die_shape = ShapeChoice(p.side_die, true);
-  return o;
-}
-
 PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, bool full,
                              double floor_y, std::vector<Tool> &tools, int &flank, int &apex)
 {
-  const Options o = PassOptions(opt, pass);
+  const DieSet dies = DiesOfPass(opt, pass);
   Tool upper, right_half; // (the upper die, and its right half as drawn: the side dies' mirror)
   PetscFunctionBeginUser;
   if (squaring) {
     Die die;
-    PetscCall(BuildDie(comm, o, die));
+    PetscCall(BuildDie(comm, dies.upper, die));
     upper = full ? BothSides(die.tool) : die.tool; // (the right half's segments first: flank and apex stay)
     right_half = die.tool;
     flank = die.flank, apex = die.apex;
   } else {
-    const double from = full ? -(1 + kPlateReach) * o.tube_ro : -kPlateOverhang * o.tube_ro;
-    upper = BuildFlatPlate(o.tube_ro, from, (1 + kPlateReach) * o.tube_ro);
+    const double from = full ? -(1 + kPlateReach) * opt.tube_ro : -kPlateOverhang * opt.tube_ro;
+    upper = BuildFlatPlate(opt.tube_ro, from, (1 + kPlateReach) * opt.tube_ro);
   }
   tools = {upper};
   if (half) {
     Tool lower;
-    PetscCall(BuildLowerDie(comm, o, tools[0], floor_y, full, lower));
+    PetscCall(BuildLowerDie(comm, opt, dies.lower, tools[0], floor_y, full, lower));
     tools.push_back(lower);
   }
-  if (o.side_die_shape.kind != "none")
-    PetscCall(AddSideDies(comm, o, pass > 0 ? PassOption(pass, "side_die").c_str() : "-side_die", squaring, right_half,
-                          half, full, tools));
+  if (dies.side.kind != "none")
+    PetscCall(AddSideDies(comm, opt, dies.side, pass > 0 ? PassOption(pass, "side_die").c_str() : "-side_die", squaring,
+                          right_half, half, full, tools));
+  // Its upper die's own motion (a path, a force: the first pass's -die_motion, a later one's), after the stroke its
+  // lower die's motion gives it.
+  PetscCall(
+    SetUpperMotion(comm, pass > 0 ? PassOption(pass, "die_motion").c_str() : "-die_motion", dies.motion, tools[0]));
   // A later pass's dies by their own names (errors, and their outlines in the results): pass2-, pass3-, ...
   if (pass > 0)
     for (Tool &t : tools) t.name = Formatted("pass%d-", pass + 1) + t.name;
@@ -209,30 +207,28 @@ PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring,
 {
   PetscFunctionBeginUser;
   if (!DieMoves(opt, DieMotionKind::Force))
-    PetscCall(CheckDieReach(comm, PassOptions(opt, 0), squaring, deepest, "-stroke"));
+    PetscCall(CheckDieReach(comm, opt, DiesOfPass(opt, 0), squaring, deepest, "-stroke"));
   for (int pass = 1; pass < PassCount(opt); ++pass)
-    PetscCall(CheckDieReach(comm, PassOptions(opt, pass), squaring, LaterPass(opt, pass).stroke,
+    PetscCall(CheckDieReach(comm, opt, DiesOfPass(opt, pass), squaring, LaterPass(opt, pass).stroke,
                             PassOption(pass, "stroke").c_str()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-double DieReach(const Options &o, bool squaring)
+double DieReach(const Options &o, const DieSet &dies, bool squaring)
 {
   const double ro = o.tube_ro, ri = ro - o.tube_t;
-  if (squaring &&
-      (!VDie(o) || o.lower_die_shape.kind != "mirror" || !LowerDieClosing(o) || o.side_die_shape.kind != "none"))
-    return kNever;
+  if (squaring && !ClosedForm(o, dies)) return kNever;
   if (!squaring) return ro - o.tube_t;
-  const VAngle v(o.die_shape.spec.angle);
+  const VAngle v(dies.upper.spec.angle);
   const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
-  const double u_close = o.die_shape.spec.u_close;
+  const double u_close = dies.upper.spec.u_close;
   return u_close > 0 ? std::min(closed, u_close) : closed;
 }
 
 PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, bool squaring, double stroke)
 {
   PetscFunctionBeginUser;
-  const double reach = DieReach(o, squaring);
+  const double reach = DieReach(o, DiesOfPass(o, 0), squaring);
   PetscCheck(stroke < reach, comm, PETSC_ERR_NOT_CONVERGED,
              "-die_force %g: the die has come down to U = %.4g mm, where %s (U = %.4g mm): the tube carries no more "
              "in this model",
@@ -240,22 +236,22 @@ PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, bool squaring, d
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, double stroke, const char *option)
+PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, const DieSet &dies, bool squaring, double stroke,
+                             const char *option)
 {
   PetscFunctionBeginUser;
   const double ro = o.tube_ro, ri = ro - o.tube_t;
-  if (squaring &&
-      (!VDie(o) || o.lower_die_shape.kind != "mirror" || !LowerDieClosing(o) || o.side_die_shape.kind != "none")) {
+  if (squaring && !ClosedForm(o, dies)) {
     // A profile of one's own, side dies: no closed form of the cavity; a stroke that closes it fails in the run.
   } else if (squaring) {
     // The cavity is a rhombus of half-diagonals D = h - U and D tan(half): area 2 D^2 tan(half).
-    const VAngle v(o.die_shape.spec.angle);
+    const VAngle v(dies.upper.spec.angle);
     const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
     PetscCheck(stroke < closed, comm, PETSC_ERR_USER_INPUT,
                "%s %g: the dies would close on the tube at U = %.4g mm (the cavity between them is then "
                "smaller than the tube's cross-section of %.4g mm^2); choose a smaller stroke",
                option, stroke, closed, area);
-    const double u_close = o.die_shape.spec.u_close;
+    const double u_close = dies.upper.spec.u_close;
     PetscCheck(u_close <= 0 || stroke <= u_close, comm, PETSC_ERR_USER_INPUT,
                "%s %g: the dies' parting faces meet at -die_u_close %g mm; the stroke cannot pass it", option, stroke,
                u_close);

@@ -1,7 +1,7 @@
 // The press's dies' motions from the options, made by the motion registry (tool/motion.hpp): the lower die's of
 // -lower_die_motion (its kind and options read by the kind, io/die_motion_options.cpp), with the upper die's stroke
-// that goes with it; the upper die's own motion of -die_motion (its path or its force: UpperDie); the side dies'
-// force control (-side_force).
+// that goes with it; the upper die's own motion (its path or its force: the first pass's -die_motion, UpperDie, and
+// a later pass's alike, DiesOfPass); the side dies' force control (-side_force).
 #include "tubeform/scenes/die.hpp"
 
 namespace tf {
@@ -62,30 +62,39 @@ double UpperTravel(const Options &o) { return -LowerMotionOf(o).upper[1]; }
 
 bool LowerDieClosing(const Options &o) { return LowerMotionOf(o).closing; }
 
+std::vector<double> UpperKinks(const DieMotion &die, double until)
+{
+  MotionHandle upper;
+  if (die.kind != DieMotionKind::Path || !MakeMotion(DieMotionName(die.kind), die.spec, upper).empty()) return {};
+  return upper->Kinks(until);
+}
+
 std::vector<double> PressKinks(const Options &opt, double until)
 {
-  std::vector<double> kinks;
-  MotionHandle upper, lower;
-  const DieMotion die = UpperDie(opt);
-  if (die.kind == DieMotionKind::Path && MakeMotion(DieMotionName(die.kind), die.spec, upper).empty())
-    kinks = upper->Kinks(until);
+  std::vector<double> kinks = UpperKinks(UpperDie(opt), until);
+  MotionHandle lower;
   const LowerDieSpec lower_die = LowerDie(opt);
   if (!QuarterModel(opt) && MakeMotion(lower_die.kind, lower_die.spec, lower).empty())
     for (double s : lower->Kinks(until)) kinks.push_back(s);
   return kinks;
 }
 
-PetscErrorCode SetPressMotions(MPI_Comm comm, const Options &opt, size_t first_side, std::vector<Tool> &tools)
+PetscErrorCode SetUpperMotion(MPI_Comm comm, const char *option, const DieMotion &die, Tool &upper)
 {
   PetscFunctionBeginUser;
-  Tool &upper = tools[0];
-  const DieMotion die = UpperDie(opt);
   if (die.kind != DieMotionKind::Stroke) { // (the stroke: the lower die's word's, SetLowerMotion)
     MotionSpec spec = die.spec;
     spec.direction = upper.Direction(); // (force: along the stroke's)
-    PetscCall(SetMotion(comm, "-die_motion", DieMotionName(die.kind), spec, upper));
+    PetscCall(SetMotion(comm, option, DieMotionName(die.kind), spec, upper));
   }
-  if (!die.spec.turns.empty()) upper.origin = DiePivot(opt);
+  const std::vector<double> &pivot = die.spec.pivot;
+  if (!die.spec.turns.empty()) upper.origin = pivot.size() == 2 ? Vec2{pivot[0], pivot[1]} : Vec2{0.0, 0.0};
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, size_t first_side, std::vector<Tool> &tools)
+{
+  PetscFunctionBeginUser;
   for (size_t k = first_side; opt.side_force > 0 && k < tools.size(); ++k) {
     MotionSpec spec;
     spec.direction = tools[k].Direction();

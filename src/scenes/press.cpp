@@ -38,27 +38,37 @@ PressScene::PressScene(const Options &opt, bool squaring)
               ? StrokeForCornerRadius(opt.tube_ro, opt.stroke.corner_radius, opt.die_shape.spec.angle)
               : opt.stroke.u;
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
-  path_ = DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
   lower_motion_ = LowerDieMotion(opt);
   passes_.resize(PassCount(opt));
+  passes_[0].path =
+    DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
   for (int k = 0; k < (int)passes_.size(); ++k) {
     Pass &p = passes_[k];
     p.stroke = k == 0 ? stroke_ : LaterPass(opt, k).stroke;
     p.turn = PassTurn(opt, k, half_, full_);
-    p.dies = PassOptions(opt, k);
-    p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side_die_shape.kind != "none";
+    p.dies = DiesOfPass(opt, k);
+    p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side.kind != "none";
+    if (k > 0 && p.dies.motion.kind == DieMotionKind::Path) { // (its own path: -pass<N>_die_path)
+      const ToolPath own = PathOf(p.dies.motion.spec);
+      p.path = StrokePath(own), p.rise = -0.5 * own.Motion(0)[1];
+    }
   }
   if (passes_.size() > 1) passes_[1].side_from = stroke_; // (a later one's: StartPass, kept for a restart: Persist)
 }
 
 LoadPath PressScene::Path(const Options &opt) const
 {
-  const double t = path_.travel() / opt.driver.punch_speed;                        // (the press's duration)
-  const std::vector<double> kinks = path_.Kinks(PressKinks(opt_, path_.travel())); // (where the dies' motions turn)
+  const StrokePath &path = passes_[0].path;
+  const double t = path.travel() / opt.driver.punch_speed;                 // (the press's duration)
+  std::vector<double> kinks = path.Kinks(PressKinks(opt_, path.travel())); // (where the dies' motions turn)
   if (passes_.size() == 1)
     return {opt_.release.unload == Unload::None ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
   std::vector<double> stages; // (where each stage after the first begins)
   for (size_t k = 1; k < 2 * passes_.size(); ++k) stages.push_back((double)k);
+  for (size_t k = 1; k < passes_.size(); ++k) { // (a later pass's upper die on its own path: its points)
+    const StrokePath &own = passes_[k].path;
+    for (double f : own.Kinks(UpperKinks(passes_[k].dies.motion, own.travel()))) kinks.push_back(PressStage(k) + f);
+  }
   return {2.0 * passes_.size(), t, stages, kinks};
 }
 
@@ -66,10 +76,10 @@ double PressScene::ToolStroke(double lambda) const
 {
   if (DieMoves(opt_, DieMotionKind::Force))
     return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
-  if (pass_ > 0)
-    return std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0) * (passes_[pass_].stroke + StartBack());
-  if (lambda <= 1.0) return path_.Stroke(lambda);
-  return opt_.release.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path_.Stroke(1.0);
+  const StrokePath &path = passes_[pass_].path;
+  if (pass_ > 0) return path.Stroke(std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0));
+  if (lambda <= 1.0) return path.Stroke(lambda);
+  return opt_.release.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path.Stroke(1.0);
 }
 
 double PressScene::ToolForce(double lambda) const
@@ -82,7 +92,7 @@ double PressScene::ToolForce(double lambda) const
 PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
 {
   PetscFunctionBeginUser;
-  PetscCall(CheckPressReach(m.comm, opt_, squaring_, path_.deepest())); // (before any work)
+  PetscCall(CheckPressReach(m.comm, opt_, squaring_, passes_[0].path.deepest())); // (before any work)
   for (int k = (int)passes_.size() - 1; k > 0; --k) {
     // A later pass's dies are checked now, before any work (they are set up after the springback before it).
     std::vector<Tool> later;
@@ -91,9 +101,9 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   PetscCall(PassTools(m, 0, tools.tools));
   std::vector<SurfacePoint> outer;
   PetscCall(GatherOuter(m, outer));
-  // (-die_motion path: a path of its own, to move back along before the offset; -die_motion force, -side_force:
-  // die_motion.cpp)
-  PetscCall(SetPressMotions(m.comm, opt_, SideDie(), tools.tools));
+  // (-side_force: die_motion.cpp; the upper die's own motion, -die_motion path or force, set with its dies: a path
+  // of its own to move back along before the offset)
+  PetscCall(SetSideForces(m.comm, opt_, SideDie(), tools.tools));
   const double offset = opt_.model.die_offset; // (-die_offset)
   if (offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, offset, tools.tools[kUpper]));
   tools.candidates = "outer";
@@ -169,7 +179,11 @@ PetscErrorCode PressScene::StartPass(Model &m)
   ContactSpec spec = spec_;
   hold_.PinSlide(passes_[pass_].held);
   PetscCall(PassDies(m, spec.tools, spec.symmetry));
-  if (!m.quiet)
+  if (!m.quiet && OwnPath())
+    PetscCall(PetscPrintf(m.comm, "tubeform: %s pass: the upper die along its path (%s) from U = %s to %s mm\n",
+                          PassOrdinal(next).c_str(), PassOption(next, "die_path").c_str(),
+                          Formatted("%.4g", PassStart()).c_str(), Formatted("%.4g", PassEnd()).c_str()));
+  else if (!m.quiet)
     PetscCall(PetscPrintf(m.comm,
                           "tubeform: %s pass: the dies travel %s mm together until the one furthest along is "
                           "at U = %s mm (%s); the upper die from U = %s to %s mm\n",
@@ -256,6 +270,7 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
     if (d[0] != 0 || d[1] != 0) p.back = std::min(p.back, p.start_back[k]);
   }
   if (p.back == kNever) p.back = 0; // (no die moves)
+  if (p.dies.motion.kind == DieMotionKind::Stroke) p.path = StrokePath({}, p.stroke + p.back);
   p.start = PassStart();
   if (full_) PetscCall(pins_.Mark(m, Press()));
   if (p.held) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)
@@ -266,9 +281,7 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
 double PressScene::Stroke(Model &m, double lambda) const
 {
   const double s = ToolStroke(lambda);
-  return DieMoves(opt_, DieMotionKind::Force) ? m.contact->tool(kUpper).stroke
-         : pass_ > 0                          ? s - UpperBack()
-                                              : path_.U(s);
+  return DieMoves(opt_, DieMotionKind::Force) ? m.contact->tool(kUpper).stroke : passes_[pass_].path.U(s) - UpperBack();
 }
 
 std::vector<std::pair<std::string, Vec2>> PressScene::Symmetry() const

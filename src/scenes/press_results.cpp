@@ -8,8 +8,10 @@ namespace tf {
 
 double PressScene::ToolWork(const HistoryRow &prev, const HistoryRow &row, double) const
 {
-  HistoryRow from = prev; // (a later pass's dies from where they start)
-  if (pass_ > 0 && row.stage == PressStage(pass_) && prev.stage < row.stage) from.stroke = -UpperBack();
+  HistoryRow from = prev; // (a later pass's dies from where they start, its upper die at its path's start)
+  const ToolColumns &path = DiePathColumns();
+  if (pass_ > 0 && row.stage == PressStage(pass_) && prev.stage < row.stage)
+    from.stroke = -UpperBack(), path(from, kDieX) = path(from, kDieTurn) = 0.0;
   // (the lower die's rise by its motion: by U where it mirrors the upper one's, LowerDieMotion)
   const DieTravel travel{UpperTravel(opt_), lower_motion_->Kind() != "fixed",
                          lower_motion_->Offset(row.stroke)[1] - lower_motion_->Offset(from.stroke)[1]};
@@ -22,8 +24,8 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   PetscFunctionBeginUser;
   row.stroke = Stroke(m, lambda);
   const ToolColumns &upper = UpperDieColumns(), &path = DiePathColumns(), &side = SideDieColumns();
-  path(row, kDieX) = pass_ == 0 ? path_.Sideways(ToolStroke(lambda)) : 0.0; // (-die_path)
-  path(row, kDieTurn) = pass_ == 0 ? path_.Turn(ToolStroke(lambda)) : 0.0;
+  path(row, kDieX) = passes_[pass_].path.Sideways(ToolStroke(lambda)); // (-die_path; 0 without)
+  path(row, kDieTurn) = passes_[pass_].path.Turn(ToolStroke(lambda));
   if (unloading_) {
     for (int k = 0; k < 2; ++k) force[k] = (ReleaseEnd() - lambda) * reversed_total_[k];
     moment = (ReleaseEnd() - lambda) * reversed_moment_;

@@ -38,13 +38,6 @@ struct KnownOption {
 // stations are a handful.
 constexpr int kMaxPasses = 9;
 
-// A pass after the first (-pass<N>_*, N from 2), after the springback of the one before.
-struct PassSpec {
-  double stroke = 0; // where its upper die ends (mm, from the same zero as -stroke; 0: no such pass)
-  double turn = 0;   // the tube turned counter-clockwise before it (degrees, from the pass before's press)
-  std::string die_profile, lower_die, side_die; // its dies ("": the first pass's)
-};
-
 // The upper die's motion (-die_motion; docs/dies.md): a kind of the motion registry (tool/motion.hpp), its word
 // the kind's name (DieMotionName), and what its options (-die_path, -die_path_turn, -die_pivot; -die_force) give it,
 // read by the kind (io/die_motion_options.cpp). The scenes read it through UpperDie.
@@ -95,6 +88,28 @@ struct DieChoice {
 DieChoice ShapeChoice(const std::string &word, bool none = false);
 // The word back (the messages name it): the kind's, or the file.
 std::string ShapeWord(const DieChoice &shape);
+// The upper die's drawing a file names (-die_profile, -pass<N>_die_profile): its kind by the file's name
+// (DrawingKind: profile, or dxf for *.dxf), the file in spec.file; none ("") for no file. (die_shape_options.cpp)
+DieChoice DrawingChoice(const std::string &file);
+
+// A pass's dies, the first's and a later one's alike (PassDies): the upper one's shape and motion, the lower and the
+// side dies' shapes. (The lower die's motion, -lower_die_motion, is every pass's.)
+struct DieSet {
+  DieShape upper;
+  DieMotion motion;
+  DieChoice lower{"mirror"}, side{"none"};
+};
+
+// A pass after the first (-pass<N>_*, N from 2), after the springback of the one before: its stroke and turn, and its
+// dies where given, each chosen as the first pass's is (DrawingChoice, ShapeChoice; a kind "": the first pass's).
+struct PassSpec {
+  double stroke = 0; // where its upper die ends (mm, from the same zero as -stroke; 0: no such pass)
+  double turn = 0;   // the tube turned counter-clockwise before it (degrees, from the pass before's press)
+  DieChoice upper;   // -pass<N>_die_profile (DrawingChoice)
+  DieChoice lower;   // -pass<N>_lower_die (ShapeChoice)
+  DieChoice side;    // -pass<N>_side_die (ShapeChoice, none allowed)
+  DieMotion motion;  // its upper die's motion: by the stroke, or a path of its own (ReadPassMotions)
+};
 
 struct Options {
   std::string scene = "pressure"; // a name of the scene registry (scenes/registry.hpp)
@@ -318,12 +333,22 @@ inline bool QuarterTurn(const Options &opt, int pass)
 {
   return PassTurnDegrees(opt, pass) == 90.0 * PassQuarters(opt, pass);
 }
-// Pass `pass`'s lower die (-lower_die, -pass<N>_lower_die: the first pass's where not given).
-inline std::string PassLowerDie(const Options &opt, int pass)
+// Pass `pass`'s dies (0 the first; the scene's passes are built from these alike): the first pass's (-die_*,
+// -lower_die, -side_die), a later one's where its -pass<N>_die_profile, _lower_die, _side_die give them and its
+// upper die's motion; the upper die drawn on the tube (UpperDieShape), its motion's reach the tube's outer radius.
+inline DieSet DiesOfPass(const Options &opt, int pass)
 {
-  const std::string &later = pass == 0 ? "" : LaterPass(opt, pass).lower_die;
-  return later.empty() ? ShapeWord(opt.lower_die_shape) : later;
+  DieSet dies{UpperDieShape(opt), UpperDie(opt), opt.lower_die_shape, opt.side_die_shape};
+  if (pass == 0) return dies;
+  const PassSpec &p = LaterPass(opt, pass);
+  if (!p.upper.kind.empty()) dies.upper.kind = p.upper.kind, dies.upper.spec.file = p.upper.spec.file;
+  if (!p.lower.kind.empty()) dies.lower = p.lower;
+  if (!p.side.kind.empty()) dies.side = p.side;
+  dies.motion = p.motion, dies.motion.spec.reach = opt.tube_ro;
+  return dies;
 }
+// Pass `pass`'s lower die's word (-lower_die, -pass<N>_lower_die: the first pass's where not given).
+inline std::string PassLowerDie(const Options &opt, int pass) { return ShapeWord(DiesOfPass(opt, pass).lower); }
 // Pass `pass`'s lower die mirrors the upper one in shape and motion.
 inline bool PassMirrored(const Options &opt, int pass)
 {

@@ -21,6 +21,22 @@ PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &op
 // opt.die_motion. Without -die_motion the old spellings choose: -die_path (or its turns or pivot) path, -die_force
 // other than 0 force (-die_force 0 is allowed with any word). An option of another word's kind is refused, naming it.
 PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
+// An upper die's motion's block: its options prefix (die_: -die_motion, -die_path, ...), its title in -help, the help
+// of -<prefix>motion, and how many of the upper die's words (kDieMotionWords, in order) it offers.
+struct UpperMotionBlock {
+  std::string prefix, title, help;
+  size_t words;
+};
+// An upper die's motion read in its own block (the first pass's: ReadUpperDieMotion): -<prefix>motion, one of the
+// block's words, or an old spelling (-<prefix>path, its turns or pivot: path; -<prefix>force other than 0: force);
+// that kind's options read by the kind (all the words' under `help`, refusing nothing), an option of another word's
+// kind refused, naming it. die.spec.tool names the die in the kinds' refusals.
+PetscErrorCode ReadUpperMotion(MPI_Comm comm, OptionReader &read, const UpperMotionBlock &block, bool help,
+                               DieMotion &die);
+// A later pass's upper die's motion, each its own block under the prefix pass<N>_die_ (ReadUpperMotion: the stroke,
+// or a path of its own, -pass<N>_die_path, _die_path_turn, _die_pivot, read by the path kind; in place of its
+// -pass<N>_stroke, which it sets to where the path ends). Pass 2's listed by -help; a later one's where given.
+PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt);
 // (both in die_motion_options.cpp)
 // The upper die's shape, its own block under the options prefix die_: the V-die, its options -die_angle, -die_r_apex,
 // -die_u_close, -die_r_edge read by the V kind of tool/shape.hpp (and checked by it in CheckOptions), unless
@@ -34,5 +50,13 @@ PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt
 PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt);
 PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
+// Inside a block (its PetscOptionsObject): a die's shape by the word of `option` (ShapeChoice: mirror, flat, none where
+// `none`, or a file; kept where the word is the shape's own), and the upper die's drawing by the file of `option`
+// (DrawingChoice; kept where the file is its own): the first pass's dies and a later one's alike
+// (die_shape_options.cpp).
+PetscErrorCode ReadDieChoice(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *option,
+                             const char *help, bool none, DieChoice &shape);
+PetscErrorCode ReadDrawingChoice(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *option,
+                                 const char *help, DieChoice &shape);
 
 } // namespace tf

@@ -16,16 +16,18 @@ struct Die {
   int apex = -1; // the fillet before it, -1 if none
 };
 
-// Collective: the die, or an error on every rank (a profile is read on rank 0 and parsed on each).
-PetscErrorCode BuildDie(MPI_Comm comm, const Options &opt, Die &die);
+// Collective: the upper die of `shape` (the V-die, or a drawing: -die_profile, -pass<N>_die_profile), or an error on
+// every rank (a profile is read on rank 0 and parsed on each).
+PetscErrorCode BuildDie(MPI_Comm comm, const DieShape &shape, Die &die);
 
 // The flat lower die reaches this far past the axis and past the tube's outer radius (fractions of Ro): a
 // tube squared on it widens by less than half its radius.
 constexpr double kFloorOverhang = 0.1, kFloorReach = 0.6;
-// Collective: the lower die of -lower_die (the upper die's mirror, a flat floor at y = floor_y, or a profile
-// file drawn as an upper die and mirrored below the tube) with its motion of -lower_die_motion, the upper die's
-// motion with it; `full`: both sides of the y axis (the full model).
-PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, Tool &upper, double floor_y, bool full, Tool &lower);
+// Collective: the lower die of `shape` (a pass's -lower_die: the upper die's mirror, a flat floor at y = floor_y, or
+// a profile file drawn as an upper die and mirrored below the tube) with its motion of -lower_die_motion, the upper
+// die's motion with it; `full`: both sides of the y axis (the full model).
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape, Tool &upper, double floor_y, bool full,
+                             Tool &lower);
 
 // Collective: tool t's motion of the registry's kind `kind` made from `spec` (tool/motion.hpp), or an error on
 // every rank naming `option`.
@@ -38,24 +40,25 @@ MotionHandle LowerDieMotion(const Options &o);
 double UpperTravel(const Options &o);
 // The lower die's motion keeps the dies closing by 2 U (mirror, fixed): the closed forms of their reach hold.
 bool LowerDieClosing(const Options &o);
+// The strokes below `until` where a pass's upper die's own motion `die` turns (its path's points; none by the
+// stroke or a force).
+std::vector<double> UpperKinks(const DieMotion &die, double until);
 // The strokes below `until` where the first pass's dies' motions turn (Motion::Kinks: the upper die's path, the
 // lower die's motion in the half and full models): the load path's kinks (an increment ends there).
 std::vector<double> PressKinks(const Options &opt, double until);
-// Collective: the first pass's upper die (tools[0]) on its own path (-die_path, turning about -die_pivot), and
-// the dies that press by a force: the upper one (-die_force), the side dies (tools from first_side on,
-// -side_force).
-PetscErrorCode SetPressMotions(MPI_Comm comm, const Options &opt, size_t first_side, std::vector<Tool> &tools);
+// Collective: a pass's upper die on its own motion `die` (a path, turning about its pivot; a force), or an error on
+// every rank naming `option`; by the stroke, the motion its lower die's gives it (SetLowerMotion).
+PetscErrorCode SetUpperMotion(MPI_Comm comm, const char *option, const DieMotion &die, Tool &upper);
+// Collective: the side dies pressing by a force (tools from first_side on, -side_force).
+PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, size_t first_side, std::vector<Tool> &tools);
 
 // The flattening scene's plate reaches past the ring on both sides (fractions of Ro): a crushed ring widens by
 // much less than half its radius.
 constexpr double kPlateOverhang = 0.1, kPlateReach = 0.5;
-// The options of a pass (0 the first): a later one's dies where its -pass<N>_die_profile, _lower_die, _side_die
-// give them.
-Options PassOptions(const Options &opt, int pass);
-// Collective: the dies of a pass: the upper one (the squaring scene's die, or the flattening scene's plate) and,
-// in the half (and full) model, the lower one (a floor at floor_y); in the full model both reaching across the
-// y axis; a later pass's named pass<N>-<name>. `flank` and `apex`: the upper die's segments the shape metrics
-// use (of its right half).
+// Collective: the dies of a pass (DiesOfPass: the first pass's and a later one's alike): the upper one (the squaring
+// scene's die, or the flattening scene's plate) on its own motion and, in the half (and full) model, the lower one
+// (a floor at floor_y); in the full model both reaching across the y axis; its side dies; a later pass's named
+// pass<N>-<name>. `flank` and `apex`: the upper die's segments the shape metrics use (of its right half).
 PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, bool full,
                              double floor_y, std::vector<Tool> &tools, int &flank, int &apex);
 // A later pass's dies start where the first pass's started (on the round tube's circle) or,
@@ -69,13 +72,13 @@ PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoi
 // puts it inside the tube's outer surface `outer`, back along its motion until it touches it (with `say`, a line
 // printed); an error on every rank if it cannot be moved clear.
 PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, double offset, Tool &die);
-// Collective: a pass's side dies (o.side_die_shape, read from `option`: -side_die or -pass<N>_side_die) appended to
+// Collective: a pass's side dies (`shape`, read from `option`: -side_die or -pass<N>_side_die) appended to
 // `tools`: the right one (for mirror the squaring scene's upper die, whose right half is `upper_right`, or the
 // flattening scene's plate; a plate; or a profile drawn as an upper die), turned to the side by the reflection
 // about y = x, moving along -x by the stroke; whole in the half and full models; in the full model, its mirror on
 // the left too.
-PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, bool squaring, const Tool &upper_right,
-                           bool half, bool full, std::vector<Tool> &tools);
+PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, DieChoice shape, const char *option, bool squaring,
+                           const Tool &upper_right, bool half, bool full, std::vector<Tool> &tools);
 // The map that draws a pass's dies, built in its press's frame, into the tube's: -pass2_turn turns the tube
 // before the second pass, -pass3_turn on from there before the third, ..., so its dies turn the other way about
 // the tube's centre by the turns summed (PassTurnDegrees; the full model: by any angle,
@@ -84,12 +87,13 @@ PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, const char *option, 
 // symmetry): the quarter's quarter turn is the reflection about y = x, the half's half turn y -> -y.
 TurnMap PassTurn(const Options &opt, int pass, bool half, bool full);
 
-// Collective: refuses a stroke the dies of options `o` cannot take, naming `option`: past the parting faces,
-// past the point where the cavity between two V-dies is smaller than the tube's cross-section (plane strain
+// Collective: refuses a stroke the dies `dies` of a pass (DiesOfPass) cannot take, naming `option`: past the parting
+// faces, past the point where the cavity between two V-dies is smaller than the tube's cross-section (plane strain
 // plasticity keeps the area), or (the flattening plates) past the point where the ring's walls meet (no
 // self-contact is modelled). A profile of one's own or another lower die has no closed form of its cavity: a
 // stroke that closes it fails in the run.
-PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, bool squaring, double stroke, const char *option);
+PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, const DieSet &dies, bool squaring, double stroke,
+                             const char *option);
 // Collective: CheckDieReach for a press's passes: the first pass's deepest stroke (-stroke, or -stroke_path's; not
 // with -die_force, whose stroke is its outcome) and each later one's.
 PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring, double deepest);
@@ -100,7 +104,7 @@ PetscErrorCode WarnUntouched(MPI_Comm comm, const ContactSet &contact, int pass,
 PetscErrorCode NoteCornerRadius(MPI_Comm comm, double stroke, double corner_radius);
 // The first stroke CheckDieReach refuses (the dies closing on the tube, their parting faces meeting, the ring's
 // walls meeting); kNever where there is no closed form (a profile, another lower die).
-double DieReach(const Options &o, bool squaring);
+double DieReach(const Options &o, const DieSet &dies, bool squaring);
 // Collective: a force-controlled die (-die_force) at `stroke` that has come down to DieReach stops the run
 // (PETSC_ERR_NOT_CONVERGED: inside an increment, the results so far are written).
 PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, bool squaring, double stroke);

@@ -77,12 +77,17 @@ private:
   bool squaring_;
   bool half_; // the half model x >= 0 with both dies (or the full model)
   bool full_; // the full model: the whole tube, both dies across the y axis
-  // A pass: its stroke, its turn, its dies' options, its hold, its side dies and (a later pass) where its dies
-  // start; the scene's passes are a list of them, built once from the options.
+  // A pass: its stroke, its turn, its dies, its upper die's way, its hold, its side dies and (a later pass) where its
+  // dies start; the scene's passes are a list of them, built once from the options.
   struct Pass {
     double stroke = 0;              // where its upper die ends (mm; the first pass's: stroke_)
     TurnMap turn;                   // draws its dies, built in its press's frame, into the tube's (PassTurn)
-    Options dies;                   // its dies' options (PassOptions: die profile, lower die, side die)
+    StrokePath path;                // its stroke over its press: the first pass's -stroke_path or -die_path; a later
+                                    // one's straight by its stroke from where its dies start (PassDies), or its
+                                    // upper die's path of its own (-pass<N>_die_path)
+    double rise = 1;                // U per unit of its upper die's start_back: 1 by the stroke; on a path of its
+                                    // own, -y / 2 per unit stroke along its first piece
+    DieSet dies;                    // its dies (DiesOfPass: the upper one's shape and motion, lower, side)
     bool held = false;              // the full model's pass held by the rotation hold (not its pins) while pressing
     bool side_dies = false;         // it has side dies (-side_die, -pass<N>_side_die)
     std::vector<double> start_back; // how far back along its motion each die starts (StartOnTube; a later pass)
@@ -98,7 +103,6 @@ private:
   RotationHold hold_;  // or, in their place, the rotation hold (scenes/hold.hpp)
   SpringbackPin pin_;  // the half and full models' springback pin along the press's y
   double stroke_ = 0, back_ = 0;
-  StrokePath path_;           // the first press's (-stroke_path, or straight to the stroke)
   MotionHandle lower_motion_; // its lower die's motion (-lower_die_motion) at the stroke U, for the tools' work
   int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
   bool unloading_ = false;
@@ -134,10 +138,18 @@ private:
   // along is at its -pass<N>_stroke: no die passes it, and in a press symmetric top to bottom every die ends
   // there), and the upper die's.
   double StartBack() const { return passes_[pass_].back; }
-  double UpperBack() const { return passes_[pass_].start_back.empty() ? 0.0 : passes_[pass_].start_back[kUpper]; }
-  // The later pass's stroke (the upper die's position) where it starts and ends.
+  // (in U: a path of its own moved back along its first piece)
+  double UpperBack() const
+  {
+    const Pass &p = passes_[pass_];
+    return p.start_back.empty() ? 0.0 : p.start_back[kUpper] * p.rise;
+  }
+  // The later pass's stroke (the upper die's position) where it starts and ends (on a path of its own: its stroke
+  // from where it starts).
   double PassStart() const { return UpperBack() > 0 ? -UpperBack() : 0.0; }
-  double PassEnd() const { return passes_[pass_].stroke + StartBack() - UpperBack(); }
+  double PassEnd() const { return passes_[pass_].stroke + (OwnPath() ? 0.0 : StartBack()) - UpperBack(); }
+  // The pass in place's upper die is on a path of its own (-pass<N>_die_path).
+  bool OwnPath() const { return pass_ > 0 && passes_[pass_].dies.motion.kind == DieMotionKind::Path; }
   // The rotation hold holds the pass in place (its nodes fixed, holding the slide too, until the dies hold it).
   bool Holding() const { return passes_[pass_].held && !unloading_; }
   // The tube's coordinates into the frame of the press in place (its die moving along -y).
