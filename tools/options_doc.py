@@ -9,6 +9,7 @@ checks it is up to date).
 
 --check: compare with the file instead of writing it (exit 1 if it differs).
 """
+import argparse
 import os
 import re
 import subprocess
@@ -91,10 +92,14 @@ def markdown(sections, scenes):
 
 
 def main():
-    args = [a for a in sys.argv[1:] if a != "--check"]
-    exe = args[0] if args else os.path.join(ROOT, "build", "tubeform")
-    text = markdown(*options(exe))
-    if "--check" in sys.argv:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--check", action="store_true", help="compare with the file instead of writing it")
+    ap.add_argument("exe", nargs="?", default=os.path.join(ROOT, "build", "tubeform"), help="the tubeform binary")
+    a = ap.parse_args()
+    if not os.access(a.exe, os.X_OK):
+        sys.exit(f"tools/options_doc.py: {a.exe}: not an executable tubeform (build it: scripts/build)")
+    text = markdown(*options(a.exe))
+    if a.check:
         old = open(OUT).read() if os.path.exists(OUT) else ""
         if old != text:
             sys.exit(f"{OUT} is out of date: run /usr/bin/python3 tools/options_doc.py")
