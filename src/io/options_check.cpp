@@ -15,10 +15,6 @@ namespace tf {
 
 namespace {
 
-// -die_path_turn's range (degrees): a die turned by more than a quarter turn no longer presses along the press's
-// y, along which its punch load is read.
-constexpr double kMaxDieTurn = 90;
-
 // The dies: which dies, forces and side dies go together.
 PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 {
@@ -63,27 +59,16 @@ PetscErrorCode CheckDiePath(MPI_Comm comm, Options &opt)
 {
   const MotionSpec &path = opt.die_motion.spec;
   PetscFunctionBeginUser;
-  // The upper die through the points in turn, relative to a lower die that stays; one pass by the stroke.
-  PetscCheck(opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
-             "-die_path: the squaring scene's upper die through x,y pairs (mm, from its start), in turn; not the %s "
-             "scene's",
-             opt.scene.c_str());
-  for (double turn : path.turns)
-    PetscCheck(std::abs(turn) <= kMaxDieTurn, comm, PETSC_ERR_USER_INPUT,
-               "-die_path_turn %g: each turn must be a number of degrees within +-%g", turn, kMaxDieTurn);
-  const double y = path.points.back()[1];
-  PetscCheck(y < 0, comm, PETSC_ERR_USER_INPUT,
-             "-die_path: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", y);
-  PetscCheck(LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
-             "-die_path: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion "
-             "fixed");
+  // The upper die through the points in turn, relative to a lower die that stays (passes_check.cpp); one pass by
+  // the stroke.
+  PetscCall(CheckUpperPath(comm, opt, path, "-die_path"));
   PetscCheck(opt.stroke.path.empty() && opt.stroke.corner_radius <= 0 && PassCount(opt) == 1 &&
                opt.side_die_shape.kind == "none" && opt.release.unload != Unload::Withdraw && opt.model.die_offset == 0,
              comm, PETSC_ERR_USER_INPUT,
              "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, "
              "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways is "
              "its own offset)");
-  opt.stroke.u = -0.5 * y;
+  opt.stroke.u = -0.5 * path.points.back()[1];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

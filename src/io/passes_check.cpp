@@ -1,5 +1,7 @@
 // The validation of the passes after the first (-pass2_* to -pass9_*): one message per problem, naming the option
 // and what it allows. Each pass is checked as the second is: a pass needs the one before it.
+#include <cmath>
+
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/options.hpp"
 
@@ -20,11 +22,30 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-namespace {
+// An upper die's turns along its path (degrees): a die turned by more than a quarter turn no longer presses along
+// its press's y, along which its punch load is read.
+constexpr double kMaxDieTurn = 90;
 
-// -pass<N>_die_path_turn's range (degrees), as -die_path_turn's: a die turned by more than a quarter turn no longer
-// presses along its press's y, along which its punch load is read.
-constexpr double kMaxPassDieTurn = 90;
+PetscErrorCode CheckUpperPath(MPI_Comm comm, const Options &opt, const MotionSpec &path, const std::string &name)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
+             "%s: the squaring scene's upper die through x,y pairs (mm, from its start), in turn; not the %s scene's",
+             name.c_str(), opt.scene.c_str());
+  for (double turn : path.turns)
+    PetscCheck(std::abs(turn) <= kMaxDieTurn, comm, PETSC_ERR_USER_INPUT,
+               "%s_turn %g: each turn must be a number of degrees within +-%g", name.c_str(), turn, kMaxDieTurn);
+  const double y = path.points.back()[1];
+  PetscCheck(y < 0, comm, PETSC_ERR_USER_INPUT,
+             "%s: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", name.c_str(),
+             y);
+  PetscCheck(LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
+             "%s: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion fixed",
+             name.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+namespace {
 
 // Pass `pass`'s upper die on a path of its own (its points, turns and pivot checked by the path kind's reader, its
 // stroke set where it ends: ReadPassMotions), as the first pass's -die_path: the squaring scene's upper die, within a
@@ -36,20 +57,10 @@ PetscErrorCode CheckPassPath(MPI_Comm comm, const Options &opt, int pass)
   const std::string name = PassOption(pass, "die_path");
   bool side = false, off = false;
   PetscFunctionBeginUser;
+  PetscCall(CheckUpperPath(comm, opt, path, name));
   for (int k = 0; k < PassCount(opt); ++k) side = side || DiesOfPass(opt, k).side.kind != "none";
   for (const Vec2 &p : path.points) off = off || p[0] != 0;
-  for (double turn : path.turns) {
-    PetscCheck(std::abs(turn) <= kMaxPassDieTurn, comm, PETSC_ERR_USER_INPUT,
-               "%s %g: each turn must be a number of degrees within +-%g", PassOption(pass, "die_path_turn").c_str(),
-               turn, kMaxPassDieTurn);
-    off = off || turn != 0;
-  }
-  PetscCheck(opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
-             "%s: the squaring scene's upper die through x,y pairs (mm, from its start), in turn; not the %s scene's",
-             name.c_str(), opt.scene.c_str());
-  PetscCheck(LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
-             "%s: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion fixed",
-             name.c_str());
+  for (double turn : path.turns) off = off || turn != 0;
   PetscCheck(!side, comm, PETSC_ERR_USER_INPUT,
              "%s: not with side dies (-side_die, -pass<N>_side_die), which press by the stroke", name.c_str());
   PetscCheck(!off || HeldByRotation(opt, pass), comm, PETSC_ERR_USER_INPUT,

@@ -87,8 +87,7 @@ PetscErrorCode SetUpperMotion(MPI_Comm comm, const char *option, const DieMotion
     spec.direction = upper.Direction(); // (force: along the stroke's)
     PetscCall(SetMotion(comm, option, DieMotionName(die.kind), spec, upper));
   }
-  const std::vector<double> &pivot = die.spec.pivot;
-  if (!die.spec.turns.empty()) upper.origin = pivot.size() == 2 ? Vec2{pivot[0], pivot[1]} : Vec2{0.0, 0.0};
+  if (!die.spec.turns.empty()) upper.origin = PivotOf(die.spec); // (-die_pivot, -pass<N>_die_pivot)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -202,6 +202,10 @@ PetscErrorCode CheckPassStrokesAndDies(MPI_Comm comm, const Options &opt);
 PetscErrorCode CheckPassTurns(MPI_Comm comm, const Options &opt);
 // Collective: side dies (`name`: -side_die, -pass<N>_side_die; "none" or a shape) go with the other options.
 PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const std::string &value);
+// Collective: an upper die on a path of its own (`name`: -die_path, -pass<N>_die_path; its points, turns and pivot
+// checked by the path kind's reader): the squaring scene's die, within a quarter turn, ending below its start, over
+// a lower die that stays.
+PetscErrorCode CheckUpperPath(MPI_Comm comm, const Options &opt, const MotionSpec &path, const std::string &name);
 // The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
 std::string PassOption(int pass, const char *what);
 // Collective: refuses material constants out of range or not in MPa (called by CheckOptions).
@@ -278,12 +282,6 @@ inline double DieForce(const Options &opt)
 inline ToolPath DiePath(const Options &opt)
 {
   return DieMoves(opt, DieMotionKind::Path) ? PathOf(UpperDie(opt).spec) : ToolPath();
-}
-// The point it turns about (-die_pivot; the tube's centre), where it starts.
-inline Vec2 DiePivot(const Options &opt)
-{
-  const std::vector<double> &p = opt.die_motion.spec.pivot;
-  return p.size() == 2 ? Vec2{p[0], p[1]} : Vec2{0.0, 0.0};
 }
 // The die's travel over the press in units of the stroke U (mm; -output_stroke counts it): along -stroke_path,
 // half -die_path's length (ToolPath: a fixed lower die's U is half the upper one's travel), or -stroke.

@@ -107,6 +107,11 @@ struct MotionSpec {
 // The path of a path motion's spec: through its points, turned by its turns (radians in the path) counted at its
 // reach (none where it has turns but no reach > 0) (motion_path.cpp).
 ToolPath PathOf(const MotionSpec &spec);
+// The point a path motion's spec turns about: its pivot, or its frame's origin where it names none.
+inline Vec2 PivotOf(const MotionSpec &spec)
+{
+  return spec.pivot.size() == 2 ? Vec2{spec.pivot[0], spec.pivot[1]} : Vec2{0.0, 0.0};
+}
 
 // A kind's reader: its options, under the options prefix of the PetscOptionsBegin block it is called in (the
 // tool's: "lower_die_" reads -lower_die_path as "-path"), into `spec`; a bad or missing value refused in one line
