@@ -14,6 +14,11 @@
 //    Ludwik (n = 0.927, 1, 0.1), Swift, a table and perfect plasticity;
 //  - linear hardening (H' = K): the elastic-plastic tangent on that path is
 //    2G H'/(3G + H') (paper eq. 1 worked by hand for s = (s, -s, 0, 0));
+//  - the radial return (-plastic_update radial) on the same proportional paths
+//    (the same closed forms: there the trial's deviator is the start's
+//    direction), and after large non-proportional steps on the yield surface
+//    exactly (sbar = sy(ep) to round-off, where the tangent update drifts), its
+//    loading state what its update does;
 //  - r1 puts an elastic point exactly on the yield surface;
 //  - loading/unloading switches; r2 and r3.
 #include <cmath>
@@ -66,9 +71,10 @@ double ExactEp(const FlowCurve &sy, double eps)
   return 0.5 * (lo + hi);
 }
 
-void ProportionalPath(const char *name, std::unique_ptr<Hardening> law, const FlowCurve &sy)
+void ProportionalPath(const char *name, std::unique_ptr<Hardening> law, const FlowCurve &sy,
+                      PlasticUpdate update = PlasticUpdate::Tangent)
 {
-  J2Plasticity m(kE, kNu, std::move(law), 2e-3, false);
+  J2Plasticity m(kE, kNu, std::move(law), 2e-3, false, update);
   PointState s;
   const double d = 2e-4; // strain step; yield near eps = 1e-3
   double eps = 0, worst_ep = 0, worst_s = 0, worst_sigma = 0, drift = 0;
@@ -93,12 +99,67 @@ void ProportionalPath(const char *name, std::unique_ptr<Hardening> law, const Fl
       std::max({std::abs(s.sigma[0] - sxx), std::abs(s.sigma[1] + sxx), std::abs(s.sigma[2]), std::abs(s.sigma[3])});
     worst_sigma = std::max(worst_sigma, dev / sy(0));
   }
-  std::printf("%-22s eps = 0.1: ep = %.6f (exact %.6f), max rel. error ep %.1e, sbar vs sy(ep) %.1e, stress %.1e, "
+  std::printf("%-22s %-7s eps = 0.1: ep = %.6f (exact %.6f), max rel. error ep %.1e, sbar vs sy(ep) %.1e, stress %.1e, "
               "drift %.1e\n",
-              name, s.ep, ExactEp(sy, eps), worst_ep, worst_s, worst_sigma, drift);
+              name, kPlasticUpdateWords[(int)update], s.ep, ExactEp(sy, eps), worst_ep, worst_s, worst_sigma, drift);
   CHECK(worst_ep < kRoundOff);
   CHECK(worst_s < kRoundOff);
   CHECK(worst_sigma < kRoundOff);
+}
+
+// The radial return after large non-proportional steps from a plastic point:
+// sbar = sy(ep) to round-off (the tangent update drifts by a few per cent), the
+// pressure that of the elastic trial, and Loading says whether Update flows.
+void RadialNonProportional()
+{
+  const FlowCurve sy = Ludwik(165.3, 673.5, 0.927);
+  double worst = 0, tangent_drift = 0;
+  int disagree = 0;
+  for (int k = 0; k < 24; ++k) {
+    PointState s[2];
+    const J2Plasticity m[2] = {
+      {kE, kNu, std::make_unique<LudwikHardening>(165.3, 673.5, 0.927), 2e-3, false},
+      {kE, kNu, std::make_unique<LudwikHardening>(165.3, 673.5, 0.927), 2e-3, false, PlasticUpdate::Radial}};
+    // On the surface in plane-strain tension (ep 0.01), then a step of 2.5 yield strains at angle k * 15 degrees in
+    // the (xx - yy, gamma_xy) plane with some volume change.
+    const double sx = sy(0.01) / std::sqrt(3.0), c = std::cos(k * M_PI / 12), sn = std::sin(k * M_PI / 12);
+    const Voigt de = {3e-3 * c + 1e-4, -3e-3 * c + 2e-4, 0, 6e-3 * sn};
+    for (int u = 0; u < 2; ++u) {
+      s[u].sigma = {sx + 20, -sx + 20, 20, 0};
+      s[u].ep = 0.01;
+      s[u].plastic = true;
+    }
+    const bool loads = m[1].Loading(s[1], de);
+    const Voigt before = s[1].sigma;
+    const UpdateInfo ut = m[0].Update(s[0], de), ur = m[1].Update(s[1], de);
+    tangent_drift = std::max(tangent_drift, std::abs(ut.drift));
+    disagree += loads != (s[1].ep > 0.01);
+    if (s[1].ep > 0.01) {
+      worst = std::max(worst, std::abs(VonMises(s[1].sigma) / sy(s[1].ep) - 1));
+      CHECK(std::abs(ur.drift) < kRoundOff);
+      // The pressure is the trial's: p + K tr(de) - p tr(de) (C_e's volumetric part).
+      const double tr = de[0] + de[1] + de[2], p0 = (before[0] + before[1] + before[2]) / 3;
+      const double p = (s[1].sigma[0] + s[1].sigma[1] + s[1].sigma[2]) / 3;
+      CHECK_NEAR(p, p0 + (kLambda + 2 * kG / 3) * tr - p0 * tr, kRoundOff * 165.3);
+    }
+  }
+  std::printf("non-proportional steps of 2.5 yield strains: radial |sbar/sy - 1| %.1e, tangent drift %.1e\n", worst,
+              tangent_drift);
+  CHECK(worst < kRoundOff);
+  CHECK(tangent_drift > 1e-3); // (the case is one the tangent update gets wrong)
+  CHECK(disagree == 0);
+  // An unloading step stays elastic, and Loading says so.
+  {
+    const J2Plasticity m(kE, kNu, std::make_unique<LudwikHardening>(165.3, 673.5, 0.927), 2e-3, false,
+                         PlasticUpdate::Radial);
+    PointState s;
+    s.sigma = {165.3 / std::sqrt(3.0), -165.3 / std::sqrt(3.0), 0, 0};
+    s.plastic = true;
+    CHECK(!m.Loading(s, {-1e-4, 1e-4, 0, 0}));
+    CHECK(m.Loading(s, {1e-4, -1e-4, 0, 0}));
+    m.Update(s, {-1e-4, 1e-4, 0, 0});
+    CHECK(!s.plastic && s.ep == 0);
+  }
 }
 
 // Plane-strain elasticity from zero stress (the Kirchhoff term sigma tr(de) vanishes).
@@ -154,6 +215,17 @@ int main()
   ProportionalPath(
     "table", std::make_unique<TableHardening>(std::vector<double>{0, 0.01, 0.05}, std::vector<double>{165, 200, 240}),
     Table);
+  ProportionalPath("ludwik aluminum", std::make_unique<LudwikHardening>(165.3, 673.5, 0.927),
+                   Ludwik(165.3, 673.5, 0.927), PlasticUpdate::Radial);
+  ProportionalPath("ludwik n = 0.1", std::make_unique<LudwikHardening>(165.3, 673.5, 0.1), Ludwik(165.3, 673.5, 0.1),
+                   PlasticUpdate::Radial);
+  ProportionalPath(
+    "perfectly plastic", std::make_unique<LudwikHardening>(165.3, 0.0, 1.0), [](double) { return 165.3; },
+    PlasticUpdate::Radial);
+  ProportionalPath(
+    "table", std::make_unique<TableHardening>(std::vector<double>{0, 0.01, 0.05}, std::vector<double>{165, 200, 240}),
+    Table, PlasticUpdate::Radial);
+  RadialNonProportional();
   ElasticClosedForm();
   LinearHardeningTangent();
 

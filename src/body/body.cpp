@@ -24,7 +24,7 @@ PetscErrorCode Body::Setup(const Mesh &mesh, const BodyParams &prm)
   mesh_ = &mesh;
   prm_ = prm;
   // Before a point has yielded, H' is the secant over one strain-limit step.
-  material_ = MakeMaterial(prm.material, prm.rmin_deps, prm.drift_correction);
+  material_ = MakeMaterial(prm.material, prm.rmin_deps, prm.drift_correction, prm.plastic_update);
   deps_limit_ = prm.rmin_deps;
   if (prm.rmin_deps_yield > 0 && material_->plastic_law())
     deps_limit_ = std::min(deps_limit_, prm.rmin_deps_yield * material_->YieldStress(0.0) / prm.material.E);

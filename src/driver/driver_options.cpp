@@ -8,6 +8,7 @@
 
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/option_reader.hpp"
+#include "tubeform/material/factory.hpp"
 #include "tubeform/step/rmin.hpp"
 
 namespace tf {
@@ -63,6 +64,10 @@ PetscErrorCode ReadIncrements(PetscOptionItems *PetscOptionsObject, OptionReader
                      d.friction_max_unsettled));
   PetscCall(read.Bool(PetscOptionsObject, "-drift_correction",
                       "Scale plastic stresses back onto the yield surface after each update", d.drift_correction));
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-plastic_update",
+                       "tangent (the rate form with the start's flow direction), radial (radial return: the elastic "
+                       "trial projected back onto the yield surface; isotropic J2 only)",
+                       kPlasticUpdateWords, d.plastic_update));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -155,6 +160,9 @@ PetscErrorCode CheckDriverOptions(MPI_Comm comm, const Options &opt)
              "-max_energy_error %g: must be a positive fraction (e.g. 0.25)", d.max_energy_error);
   PetscCheck(d.unload_increments >= 0, comm, PETSC_ERR_USER_INPUT,
              "-unload_increments %d: must be at least 1 (or 0: as -increments)", (int)d.unload_increments);
+  PetscCheck(d.plastic_update == PlasticUpdate::Tangent || opt.material.law == "elastic" || IsotropicJ2(opt.material),
+             comm, PETSC_ERR_USER_INPUT,
+             "-plastic_update radial: isotropic J2 only (not with -hardening chaboche, -material_r, -material_hill)");
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

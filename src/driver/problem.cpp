@@ -31,6 +31,7 @@ BodyParams MakeBodyParams(const Options &opt)
   b.yield_inside = opt.driver.rmin_yield == RminYield::Inside || opt.driver.equilibrium_tol > 0;
   b.yield_tol = opt.driver.rmin_yield_tol;
   b.drift_correction = opt.driver.drift_correction;
+  b.plastic_update = opt.driver.plastic_update;
   b.state_from_strain = opt.driver.equilibrium_tol > 0;
   b.kinematics = opt.driver.kinematics;
   return b;

@@ -33,7 +33,13 @@ std::optional<std::array<double, 4>> HillCoefficients(const MaterialParams &m)
   return fghl;
 }
 
-std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, bool drift_correction)
+bool IsotropicJ2(const MaterialParams &m)
+{
+  return m.law != "elastic" && !(m.hardening == "chaboche" && !m.kinematic.empty()) && !HillCoefficients(m);
+}
+
+std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, bool drift_correction,
+                                       PlasticUpdate update)
 {
   if (m.law == "elastic") return std::make_unique<Elastic>(m.E, m.nu);
   std::unique_ptr<Hardening> h = MakeHardening(m);
@@ -44,7 +50,7 @@ std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, 
   }
   if (const auto fghl = HillCoefficients(m))
     return std::make_unique<HillPlasticity>(m.E, m.nu, std::move(h), *fghl, dep_ref, drift_correction);
-  return std::make_unique<J2Plasticity>(m.E, m.nu, std::move(h), dep_ref, drift_correction);
+  return std::make_unique<J2Plasticity>(m.E, m.nu, std::move(h), dep_ref, drift_correction, update);
 }
 
 } // namespace tf

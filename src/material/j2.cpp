@@ -4,8 +4,10 @@
 
 namespace tf {
 
-J2Plasticity::J2Plasticity(double e, double nu, std::unique_ptr<Hardening> h, double dep_ref, bool drift_correction)
-    : elastic_(e, nu), h_(std::move(h)), g_(e / (2 * (1 + nu))), dep_ref_(dep_ref), drift_correction_(drift_correction)
+J2Plasticity::J2Plasticity(double e, double nu, std::unique_ptr<Hardening> h, double dep_ref, bool drift_correction,
+                           PlasticUpdate update)
+    : elastic_(e, nu), h_(std::move(h)), g_(e / (2 * (1 + nu))), dep_ref_(dep_ref), drift_correction_(drift_correction),
+      update_(update)
 {}
 
 Mat4 J2Plasticity::Tangent(const PointState &s) const
@@ -97,8 +99,44 @@ double J2Plasticity::SecantStep(double ep, double target, double m, double hi, d
   return Root(g, 0, hi, glo, ghi, hslope > 0 ? target / (m + hslope) : 0);
 }
 
+Voigt J2Plasticity::Trial(const PointState &s, const Voigt &deps) const
+{
+  const double trace = deps[0] + deps[1] + deps[2];
+  const Voigt dsig = ElasticStress(deps);
+  Voigt trial;
+  for (int r = 0; r < 4; ++r) trial[r] = s.sigma[r] + (dsig[r] - s.sigma[r] * trace);
+  return trial;
+}
+
+UpdateInfo J2Plasticity::RadialReturn(PointState &s, const Voigt &deps) const
+{
+  // Whatever the point's flag: the update is a function of the increment from
+  // the start state (an elastic point's trial passes the surface only where
+  // its onset lies inside the step).
+  UpdateInfo info;
+  const Voigt trial = Trial(s, deps);
+  const double sbar_tr = VonMises(trial), sy_old = h_->YieldStress(s.ep);
+  s.sigma = trial;
+  s.plastic = sbar_tr > sy_old;
+  if (!s.plastic) return info;
+  // 3G dep + sigma_y(ep + dep) = sbar_tr: the deviator shrinks along itself to
+  // sbar_tr - 3G dep = sigma_y(ep + dep), the pressure kept.
+  const double over = sbar_tr - sy_old;
+  const double dep = SecantStep(s.ep, over, 3 * g_, over / (3 * g_), s.hslope);
+  const double sy_new = h_->YieldStress(s.ep + dep);
+  const double p = (trial[0] + trial[1] + trial[2]) / 3, f = 1 - 3 * g_ * dep / sbar_tr;
+  for (int r = 0; r < 3; ++r) s.sigma[r] = p + f * (trial[r] - p);
+  s.sigma[3] = f * trial[3];
+  if (dep > 0) s.hslope = (sy_new - sy_old) / dep;
+  s.ep += dep;
+  info.dwp = 0.5 * (sy_old + sy_new) * dep;
+  info.drift = VonMises(s.sigma) / sy_new - 1; // round-off
+  return info;
+}
+
 UpdateInfo J2Plasticity::Update(PointState &s, const Voigt &deps) const
 {
+  if (update_ == PlasticUpdate::Radial) return RadialReturn(s, deps);
   UpdateInfo info;
   const double trace = deps[0] + deps[1] + deps[2];
   const Voigt dev = Deviator(s.sigma);
@@ -169,6 +207,10 @@ double J2Plasticity::OnsetRoot(double qa, double qb, double qc)
 
 bool J2Plasticity::Loading(const PointState &s, const Voigt &deps) const
 {
+  // Radial return: a point on the surface flows when its trial passes it, as
+  // RadialReturn decides (inside the surface: the elastic fraction's business).
+  if (update_ == PlasticUpdate::Radial)
+    return (s.plastic || OnSurface(s)) && VonMises(Trial(s, deps)) > h_->YieldStress(s.ep);
   const double a = DevDotStrain(Deviator(s.sigma), deps);
   if (s.plastic) return a > 0;
   return a > 0 && VonMises(s.sigma) >= (1 - kOnSurface) * h_->YieldStress(s.ep);

@@ -56,6 +56,7 @@ struct BodyParams {
   bool yield_inside = false;
   double yield_tol = 0.05;
   bool drift_correction = false;
+  PlasticUpdate plastic_update = PlasticUpdate::Tangent;
   // The stress update takes a point's loading state from its strain increment
   // (on the yield surface and loading), not from its tangent's (equilibrium iterations).
   bool state_from_strain = false;

@@ -48,7 +48,8 @@ struct DriverParams {
   // unaccounted for means the load-stroke curve is no longer a solution.
   double max_energy_error = 0.25;
   PetscBool drift_correction = PETSC_FALSE;
-  Factorization factorization = Factorization::Mumps; // where every rank factors the whole matrix (-factorization)
+  PlasticUpdate plastic_update = PlasticUpdate::Tangent; // -plastic_update
+  Factorization factorization = Factorization::Mumps;    // where every rank factors the whole matrix (-factorization)
   // Equilibrium iterations in every increment: the largest out-of-balance force
   // on a free dof at most this fraction of the time-averaged nodal force (0: off,
   // the paper's forward increments).

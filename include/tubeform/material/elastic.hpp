@@ -34,8 +34,14 @@ struct PointState {
 // What one material update did (per unit volume).
 struct UpdateInfo {
   double dwp = 0;   // plastic work density of the increment
-  double drift = 0; // sbar / sigma_y - 1 after the tangent update (before any correction)
+  double drift = 0; // sbar / sigma_y - 1 after the update (before any correction; round-off after a radial return)
 };
+
+// How a plastic point's stress is integrated over an increment (-plastic_update; isotropic J2 only): the tangent
+// update (the rate form with the start's flow direction, docs/theory.md (T2)) or the radial return (backward Euler:
+// the elastic trial projected back onto the yield surface along its own deviator).
+enum class PlasticUpdate { Tangent, Radial };
+inline constexpr const char *kPlasticUpdateWords[] = {"tangent", "radial"};
 
 // Material constants: the paper's aluminum (its Table 1, docs/scenes.md) until a
 // material file (options/materials/, io/material_library.hpp) or options set them.

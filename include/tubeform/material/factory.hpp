@@ -21,7 +21,11 @@ std::unique_ptr<Hardening> MakeHardening(const MaterialParams &m);
 // taken as a secant before a point has yielded once (the strain-limit step,
 // -rmin_deps); `drift_correction` scales plastic stresses back onto the yield
 // surface after each update. With hardening "chaboche" the backstresses of
-// m.kinematic take their share of the flow curve (material/kinematic.hpp).
-std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, bool drift_correction);
+// m.kinematic take their share of the flow curve (material/kinematic.hpp). `update`: the isotropic J2 law's
+// plastic update (the kinematic and Hill laws have the tangent update only: the options refuse radial with them).
+std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, bool drift_correction,
+                                       PlasticUpdate update = PlasticUpdate::Tangent);
+// Whether the law of `m` is the isotropic von Mises one (neither backstresses nor Hill's yield).
+bool IsotropicJ2(const MaterialParams &m);
 
 } // namespace tf

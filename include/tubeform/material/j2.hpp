@@ -34,8 +34,10 @@ class J2Plasticity : public Material {
 public:
   // dep_ref: plastic strain step over which H' is taken (as a secant) before a
   // point has yielded once; drift_correction scales the deviator back onto the
-  // yield surface after each plastic update.
-  J2Plasticity(double e, double nu, std::unique_ptr<Hardening> h, double dep_ref, bool drift_correction);
+  // yield surface after each plastic update; update: the tangent update (T2) or
+  // the radial return (docs/theory.md, section 1; the derived laws take the tangent one).
+  J2Plasticity(double e, double nu, std::unique_ptr<Hardening> h, double dep_ref, bool drift_correction,
+               PlasticUpdate update = PlasticUpdate::Tangent);
 
   Mat4 Tangent(const PointState &s) const override;
   UpdateInfo Update(PointState &s, const Voigt &deps) const override;
@@ -60,6 +62,10 @@ public:
 protected:
   // C_e : deps (Voigt strain in, stress out).
   Voigt ElasticStress(const Voigt &deps) const;
+  // The elastic trial of an increment: sigma + C_e : deps - sigma tr(deps) (the spin is the caller's).
+  Voigt Trial(const PointState &s, const Voigt &deps) const;
+  // The radial return (backward Euler) of the trial onto the yield surface where it passes it, else elastic.
+  UpdateInfo RadialReturn(PointState &s, const Voigt &deps) const;
   // The elastic stress change of a step (the law, the spin's turn and the Kirchhoff term), linear in its length.
   Voigt ElasticPath(const PointState &s, const Voigt &deps, double omega) const;
   // The root r in (0, inf) of qa r^2 + qb r + qc = 0 with qc < 0 (the onset on a path), kNever if qa <= 0.
@@ -69,6 +75,7 @@ protected:
   std::unique_ptr<Hardening> h_;
   double g_, dep_ref_;
   bool drift_correction_;
+  PlasticUpdate update_;
   double Modulus(const PointState &s) const { return s.hslope > 0 ? s.hslope : h_->SecantSlope(s.ep, dep_ref_); }
 };
 
