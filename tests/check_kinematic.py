@@ -48,32 +48,36 @@ k = Checks("kinematic")
 E, NU, SY0, KL, NL = 75000.0, 0.34, 165.3, 673.5, 0.927  # -material aluminum (the paper's Table 1, docs/scenes.md)
 G = E / (2 * (1 + NU))
 LAM = E * NU / ((1 + NU) * (1 - 2 * NU))
-D = np.array([[LAM + 2 * G, LAM, LAM], [LAM, LAM + 2 * G, LAM], [LAM, LAM, LAM + 2 * G]])
 
 
 def monotonic(c, g, p):
     return c / g * (1 - math.exp(-g * p)) if g > 0 else c * p
 
 
+def eq(v):
+    """The equivalent (von Mises) value of a deviator of three components."""
+    return math.sqrt(1.5 * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]))
+
+
 def reference(strokes, back, sub, hardening=True):
-    """sigma_xx at the nominal strains `strokes` with backstresses `back` [(C, gamma)], `sub` substeps each."""
+    """sigma_xx at the nominal strains `strokes` with backstresses `back` [(C, gamma)], `sub` substeps each (plain
+    floats: a substep is three stress components, which numpy's per-call cost would make the test's longest part)."""
     back = back if hardening else []
     R = lambda p: SY0 + KL * p ** NL - sum(monotonic(c, g, p) for c, g in back)
-    eq = lambda v: math.sqrt(1.5 * v @ v)
-    state = {"s": np.zeros(3), "a": [np.zeros(3) for _ in back], "p": 0.0}
+    state = {"s": (0.0, 0.0, 0.0), "a": [(0.0, 0.0, 0.0) for _ in back], "p": 0.0}
 
     def update(dxx, dyy, st):
         s, alphas, p = st["s"], st["a"], st["p"]
-        de = np.array([dxx, dyy, 0.0])
-        trial = s + D @ de - s * de.sum()
-        mean = trial.mean()
-        dev = trial - mean
-        xi = dev - sum(alphas, np.zeros(3))
+        tr = dxx + dyy
+        trial = [si + LAM * tr + 2 * G * di - si * tr for si, di in zip(s, (dxx, dyy, 0.0))]
+        mean = sum(trial) / 3
+        dev = [t - mean for t in trial]
+        xi = [dev[i] - sum(a[i] for a in alphas) for i in range(3)]
         if eq(xi) <= R(p):
-            return {"s": trial, "a": alphas, "p": p}
+            return {"s": tuple(trial), "a": alphas, "p": p}
 
         def rhs(dp):
-            return dev - sum((a / (1 + g * dp) for a, (c, g) in zip(alphas, back)), np.zeros(3))
+            return [dev[i] - sum(a[i] / (1 + g * dp) for a, (c, g) in zip(alphas, back)) for i in range(3)]
 
         def f(dp):
             return eq(rhs(dp)) - 3 * G * dp - sum(c * dp / (1 + g * dp) for c, g in back) - R(p + dp)
@@ -93,8 +97,10 @@ def reference(strokes, back, sub, hardening=True):
                 flo, side = (0.5 * flo if side == -1 else flo), -1
         dp = 0.5 * (lo + hi) if fd != 0 else dp
         r = rhs(dp)
-        n = r / eq(r)
-        return {"s": mean + dev - 3 * G * dp * n, "a": [(a + c * dp * n) / (1 + g * dp) for a, (c, g) in zip(alphas, back)],
+        n = [ri / eq(r) for ri in r]
+        return {"s": tuple(mean + dev[i] - 3 * G * dp * n[i] for i in range(3)),
+                "a": [tuple((a[i] + c * dp * n[i]) / (1 + g * dp) for i in range(3))
+                      for a, (c, g) in zip(alphas, back)],
                 "p": p + dp}
 
     out_ = [0.0]
