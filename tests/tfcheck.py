@@ -6,6 +6,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 from concurrent.futures import ThreadPoolExecutor
 
 import h5py
@@ -44,6 +45,7 @@ def run(tf, mpirun, np_, opts, check=True, timeout=300, report_hang=False):
         os.makedirs(env["OMPI_MCA_orte_tmpdir_base"], exist_ok=True)
         session = tempfile.mkdtemp(dir=env["OMPI_MCA_orte_tmpdir_base"])
         env["OMPI_MCA_orte_tmpdir_base"] = session
+    t0 = time.time()
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=sys.argv[3], env=env)
     timed_out = False
     try:
@@ -61,6 +63,10 @@ def run(tf, mpirun, np_, opts, check=True, timeout=300, report_hang=False):
     if session:
         shutil.rmtree(session, ignore_errors=True)
     p = subprocess.CompletedProcess(cmd, proc.returncode, stdout, stderr)
+    if os.environ.get("TF_RUN_LOG"):  # the suite's runs and their times, for choosing what a long test runs
+        line = [os.path.basename(sys.argv[0]), f"{time.time() - t0:.2f}", str(np_), " ".join(cmd[cmd.index(tf) + 1:])]
+        with open(os.environ["TF_RUN_LOG"], "a") as f:
+            f.write("\t".join(line) + "\n")
     p.timed_out = timed_out  # crashed() counts it
     if (check and p.returncode != 0) or (timed_out and not report_hang):
         print(" ".join(cmd))
