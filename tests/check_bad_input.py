@@ -64,6 +64,10 @@ cases = [
     (["-rmin_stall_increments", "5"], "-rmin_stall_increments"),
     (["-dynamics", "explicit"], "-dynamics"),
     (["-factorization", "lu"], "-factorization"),
+    (["-plastic_update", "implicit"], "-plastic_update"),
+    (["-plastic_update", "radial", "-material_law", "ludwik", "-hardening", "chaboche", "-material_kinematic",
+      "20000,200"],
+     "-plastic_update radial: isotropic J2 only"),
     (["-error_estimate_factorization", "petsc"], "-error_estimate_factorization"),
     (["-punch_speed", "0"], "-punch_speed"),
     (["-dynamics_time", "-1"], "-dynamics_time"),
@@ -273,7 +277,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 152 and len(selected) == 10, f"{len(cases)} cases on 1 rank (152), {len(selected)} on 2 (10)")
+k.check(len(cases) == 154 and len(selected) == 10, f"{len(cases)} cases on 1 rank (154), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):
