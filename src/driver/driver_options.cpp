@@ -160,7 +160,8 @@ PetscErrorCode CheckDriverOptions(MPI_Comm comm, const Options &opt)
              "-max_energy_error %g: must be a positive fraction (e.g. 0.25)", d.max_energy_error);
   PetscCheck(d.unload_increments >= 0, comm, PETSC_ERR_USER_INPUT,
              "-unload_increments %d: must be at least 1 (or 0: as -increments)", (int)d.unload_increments);
-  PetscCheck(d.plastic_update == PlasticUpdate::Tangent || opt.material.law == "elastic" || IsotropicJ2(opt.material),
+  PetscCheck(d.plastic_update == PlasticUpdate::Tangent || LawOf(opt.material) == LawKind::Elastic ||
+               LawOf(opt.material) == LawKind::IsotropicJ2,
              comm, PETSC_ERR_USER_INPUT,
              "-plastic_update radial: isotropic J2 only (not with -hardening chaboche, -material_r, -material_hill)");
   PetscFunctionReturn(PETSC_SUCCESS);

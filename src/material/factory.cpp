@@ -33,23 +33,26 @@ std::optional<std::array<double, 4>> HillCoefficients(const MaterialParams &m)
   return fghl;
 }
 
-bool IsotropicJ2(const MaterialParams &m)
+LawKind LawOf(const MaterialParams &m)
 {
-  return m.law != "elastic" && !(m.hardening == "chaboche" && !m.kinematic.empty()) && !HillCoefficients(m);
+  if (m.law == "elastic") return LawKind::Elastic;
+  if (m.hardening == "chaboche" && !m.kinematic.empty()) return LawKind::KinematicJ2;
+  return HillCoefficients(m) ? LawKind::Hill : LawKind::IsotropicJ2;
 }
 
 std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, bool drift_correction,
                                        PlasticUpdate update)
 {
-  if (m.law == "elastic") return std::make_unique<Elastic>(m.E, m.nu);
+  const LawKind kind = LawOf(m);
+  if (kind == LawKind::Elastic) return std::make_unique<Elastic>(m.E, m.nu);
   std::unique_ptr<Hardening> h = MakeHardening(m);
-  if (m.hardening == "chaboche" && !m.kinematic.empty()) {
+  if (kind == LawKind::KinematicJ2) {
     std::vector<Backstress> back = Backstresses(m.kinematic);
     h = std::make_unique<RemainderHardening>(std::move(h), back);
     return std::make_unique<KinematicJ2>(m.E, m.nu, std::move(h), std::move(back), dep_ref, drift_correction);
   }
-  if (const auto fghl = HillCoefficients(m))
-    return std::make_unique<HillPlasticity>(m.E, m.nu, std::move(h), *fghl, dep_ref, drift_correction);
+  if (kind == LawKind::Hill)
+    return std::make_unique<HillPlasticity>(m.E, m.nu, std::move(h), *HillCoefficients(m), dep_ref, drift_correction);
   return std::make_unique<J2Plasticity>(m.E, m.nu, std::move(h), dep_ref, drift_correction, update);
 }
 

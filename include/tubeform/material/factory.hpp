@@ -25,7 +25,8 @@ std::unique_ptr<Hardening> MakeHardening(const MaterialParams &m);
 // plastic update (the kinematic and Hill laws have the tangent update only: the options refuse radial with them).
 std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, bool drift_correction,
                                        PlasticUpdate update = PlasticUpdate::Tangent);
-// Whether the law of `m` is the isotropic von Mises one (neither backstresses nor Hill's yield).
-bool IsotropicJ2(const MaterialParams &m);
+// The law MakeMaterial builds for `m`: the one place that tells them apart.
+enum class LawKind { Elastic, KinematicJ2, Hill, IsotropicJ2 };
+LawKind LawOf(const MaterialParams &m);
 
 } // namespace tf
