@@ -45,6 +45,10 @@ reference is a benchmark (tools/validate, tools/against_ccx; docs/accuracy.md), 
 - no staircase: from U = 0.2 mm (past the knee of first yield) the load is
   within 1 % of a least-squares quadratic over every 0.2 mm window (the
   preset's promise, computed here from the history alone);
+- the radial return (-plastic_update radial) on the fast preset, pressed 1.5 mm, on 1 and 2 ranks with the default
+  preset's bounds: a point on the yield surface that loads neutrally leaves it elastic whatever round-off adds to its
+  trial (docs/theory.md, section 1); decided by the trial's sign alone the two runs part at the third increment
+  and their loads differ by 6.5e-6 (measured by planting that);
 - a thick wall (R/t 6, qm6bar by the element rule) in balance at every
   increment on the default preset, and the same on 1 and 2 ranks;
 - the cells through the wall on three tubes (R/t 11.7, 10, 6): the presets'
@@ -91,6 +95,7 @@ def staircase(U, P, window=0.2, start=0.2):
 # The single-rank runs two at a time, the longest first (the thick wall's and the cells' below among them), then
 # the 2-rank ones.
 ONE = {"default_np1": ("default", []), "default_u100": ("default", ["-unload_increments", 100]), "fast": ("fast", [])}
+RADIAL = ["-plastic_update", "radial", "-stroke", 1.5, "-error_estimate", 0]
 THICK = ["-tube_ro", 15, "-tube_t", 2.5, "-friction_mu", 0.2, "-stroke", 3, "-error_estimate", 0]
 TUBES = [(preset, s_max, floor, ro, t) for preset, s_max, floor in (("fast", 0.044, 2), ("default", 0.022, 4))
          for ro, t in ((17.5, 1.5), (20.0, 2.0), (15.0, 2.5))]
@@ -104,13 +109,15 @@ single = run_all(tf, mpirun, [case("default", THICK + ["-output", out("preset_de
                  [case(p, e) + ["-output", out(f"preset_{name}.h5")] for name, (p, e) in ONE.items()] +
                  [case(preset, ["-tube_ro", ro, "-tube_t", t, "-stroke", 0.05, "-output_stroke", 0,
                                 "-error_estimate", 0, "-output", wall_file(preset, ro, t)])
-                  for preset, _, _, ro, t in TUBES], timeout=600)
+                  for preset, _, _, ro, t in TUBES] +
+                 [case("fast", RADIAL + ["-output", out("preset_radial_np1.h5")])], timeout=600)
 # The default preset's run itself on 2 ranks (its estimate off: with it, the run takes one rank and the estimate's
 # companions the other); the fast preset's with its estimate, beside it.
 run(tf, mpirun, 2, case("default", ["-error_estimate", 0]) + ["-output", out("preset_default_np2.h5")], timeout=600)
 beside = run(tf, mpirun, 2, case("fast", []) + ["-output", out("preset_fast_np2.h5")], timeout=600)
-runs = {name: read(out(f"preset_{name}.h5")) for name in list(ONE) + ["default_np2", "fast_np2"]}
-
+run(tf, mpirun, 2, case("fast", RADIAL + ["-output", out("preset_radial_np2.h5")]), timeout=600)
+runs = {name: read(out(f"preset_{name}.h5")) for name in list(ONE) + ["default_np2", "fast_np2", "radial_np1",
+                                                                      "radial_np2"]}
 
 
 def same_on_ranks(what, A, B):
@@ -124,6 +131,7 @@ def same_on_ranks(what, A, B):
 
 A = runs["default_np1"]
 same_on_ranks("default preset", A, runs["default_np2"])
+same_on_ranks("fast preset, radial return, 1.5 mm", runs["radial_np1"], runs["radial_np2"])
 # The companions beside the run: the run is the one-rank run and its estimate that of the one-rank companions, bit
 # for bit (every history column, the error columns included); the run says where they ran.
 F1, F2 = runs["fast"], runs["fast_np2"]
@@ -178,7 +186,7 @@ k.check(r <= 0.005 * (1 + 1e-12) and unsettled == 0 and inconsistent == 0,
 # preset's floor, and enough that a cell spans at most its share of the bending
 # strain t/Ro. Counted on the written mesh: the nodes on the symmetry line y = 0.
 # The element follows the count (-element auto), as the run reports it.
-for (preset, s_max, floor, ro, t), p in zip(TUBES, single[1 + len(ONE):]):
+for (preset, s_max, floor, ro, t), p in zip(TUBES, single[1 + len(ONE):1 + len(ONE) + len(TUBES)]):
     with h5py.File(wall_file(preset, ro, t), "r") as h:
         xy = h["/geometry/vertices"][:]
     across = int(np.sum(np.abs(xy[:, 1]) < 1e-9 * ro))

@@ -18,7 +18,7 @@
 //    (the same closed forms: there the trial's deviator is the start's
 //    direction), and after large non-proportional steps on the yield surface
 //    exactly (sbar = sy(ep) to round-off, where the tangent update drifts), its
-//    loading state what its update does;
+//    loading state what its update does, a round-off strain on the surface elastic;
 //  - r1 puts an elastic point exactly on the yield surface;
 //  - loading/unloading switches; r2 and r3.
 #include <cmath>
@@ -159,6 +159,19 @@ void RadialNonProportional()
     CHECK(m.Loading(s, {1e-4, -1e-4, 0, 0}));
     m.Update(s, {-1e-4, 1e-4, 0, 0});
     CHECK(!s.plastic && s.ep == 0);
+  }
+  // A point on the surface given a strain of round-off's size (what another rank's summation order adds to a
+  // neutral step: its trial 6e-13 sigma_y past the surface) stays elastic, Loading agreeing; one of 1e-9 (6e-7 past
+  // it) flows (kFlowTie, 1e-8, between them).
+  for (const double d : {1e-15, 1e-9}) {
+    const J2Plasticity m(kE, kNu, std::make_unique<LudwikHardening>(165.3, 673.5, 0.927), 2e-3, false,
+                         PlasticUpdate::Radial);
+    PointState s;
+    s.sigma = {165.3 / std::sqrt(3.0), -165.3 / std::sqrt(3.0), 0, 0};
+    s.plastic = true;
+    const bool loads = m.Loading(s, {d, -d, 0, 0}), flows = d > 1e-12;
+    m.Update(s, {d, -d, 0, 0});
+    CHECK(loads == flows && (s.ep > 0) == flows && s.plastic == flows);
   }
 }
 

@@ -108,6 +108,11 @@ Voigt J2Plasticity::Trial(const PointState &s, const Voigt &deps) const
   return trial;
 }
 
+bool J2Plasticity::TrialFlows(const PointState &s, double sbar_tr, double sy) const
+{
+  return sbar_tr > std::max(VonMises(s.sigma), sy) + kFlowTie * sy;
+}
+
 UpdateInfo J2Plasticity::RadialReturn(PointState &s, const Voigt &deps) const
 {
   // Whatever the point's flag: the update is a function of the increment from
@@ -116,8 +121,8 @@ UpdateInfo J2Plasticity::RadialReturn(PointState &s, const Voigt &deps) const
   UpdateInfo info;
   const Voigt trial = Trial(s, deps);
   const double sbar_tr = VonMises(trial), sy_old = h_->YieldStress(s.ep);
+  s.plastic = TrialFlows(s, sbar_tr, sy_old);
   s.sigma = trial;
-  s.plastic = sbar_tr > sy_old;
   if (!s.plastic) return info;
   // 3G dep + sigma_y(ep + dep) = sbar_tr: the deviator shrinks along itself to
   // sbar_tr - 3G dep = sigma_y(ep + dep), the pressure kept.
@@ -210,7 +215,7 @@ bool J2Plasticity::Loading(const PointState &s, const Voigt &deps) const
   // Radial return: a point on the surface flows when its trial passes it, as
   // RadialReturn decides (inside the surface: the elastic fraction's business).
   if (update_ == PlasticUpdate::Radial)
-    return (s.plastic || OnSurface(s)) && VonMises(Trial(s, deps)) > h_->YieldStress(s.ep);
+    return (s.plastic || OnSurface(s)) && TrialFlows(s, VonMises(Trial(s, deps)), h_->YieldStress(s.ep));
   const double a = DevDotStrain(Deviator(s.sigma), deps);
   if (s.plastic) return a > 0;
   return a > 0 && VonMises(s.sigma) >= (1 - kOnSurface) * h_->YieldStress(s.ep);

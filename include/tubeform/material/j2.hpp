@@ -19,6 +19,10 @@ constexpr double kOnSurface = 1e-6;
 // a few dozen; the cap only guards against a non-monotone table).
 constexpr double kPlasticStepTol = 1e-14;
 constexpr int kPlasticStepIterations = 200;
+// The radial return flows where its trial raises the equivalent stress past the surface by more than this share
+// of sigma_y: a point on the surface loading neutrally (no strain, or along the surface) stays elastic whatever
+// round-off (another rank's summation order) adds to its trial, at most this far past the surface.
+constexpr double kFlowTie = 1e-8;
 
 // The backstresses' part of a plastic step's consistency (kinematic.hpp): how
 // far their projection on the step's flow direction moves over a plastic
@@ -66,6 +70,8 @@ protected:
   Voigt Trial(const PointState &s, const Voigt &deps) const;
   // The radial return (backward Euler) of the trial onto the yield surface where it passes it, else elastic.
   UpdateInfo RadialReturn(PointState &s, const Voigt &deps) const;
+  // Whether a trial of equivalent stress sbar_tr flows: past the surface, and (from a start past it) higher (kFlowTie).
+  bool TrialFlows(const PointState &s, double sbar_tr, double sy) const;
   // The elastic stress change of a step (the law, the spin's turn and the Kirchhoff term), linear in its length.
   Voigt ElasticPath(const PointState &s, const Voigt &deps, double omega) const;
   // The root r in (0, inf) of qa r^2 + qb r + qc = 0 with qc < 0 (the onset on a path), kNever if qa <= 0.
