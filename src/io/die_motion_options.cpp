@@ -184,7 +184,8 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
                : "squaring: the second pass's upper die moves by its stroke (stroke: -pass2_stroke) or along a path "
                  "of its own from where it starts (path: -pass2_die_path, -pass2_die_path_turn, -pass2_die_pivot, as "
                  "-die_path's; over a lower die that stays, -lower_die_motion fixed; in place of -pass2_stroke: the "
-                 "pass ends at U = -y / 2 of its last point; off the axis: -model full -full_hold rotation); without "
+                 "pass ends at U = -y / 2 of its last point; off the axis: the full model under the rotation hold, "
+                 "which -model auto and -full_hold auto choose); without "
                  "it, -pass2_die_path (or its turns or pivot) means path; a later pass's by its number: "
                  "-pass3_die_path, ... (docs/dies.md)",
       (size_t)DieMotionKind::Force}; // (stroke, path)

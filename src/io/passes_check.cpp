@@ -55,17 +55,15 @@ PetscErrorCode CheckPassPath(MPI_Comm comm, const Options &opt, int pass)
 {
   const MotionSpec &path = LaterPass(opt, pass).motion.spec;
   const std::string name = PassOption(pass, "die_path");
-  bool side = false, off = false;
+  bool side = false;
   PetscFunctionBeginUser;
   PetscCall(CheckUpperPath(comm, opt, path, name));
   for (int k = 0; k < PassCount(opt); ++k) side = side || DiesOfPass(opt, k).side.kind != "none";
-  for (const Vec2 &p : path.points) off = off || p[0] != 0;
-  for (double turn : path.turns) off = off || turn != 0;
   PetscCheck(!side, comm, PETSC_ERR_USER_INPUT,
              "%s: not with side dies (-side_die, -pass<N>_side_die), which press by the stroke", name.c_str());
-  PetscCheck(!off || HeldByRotation(opt, pass), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(!PassOffAxis(opt, pass) || HeldByRotation(opt, pass), comm, PETSC_ERR_USER_INPUT,
              "%s: a die off the axis (a sideways point or a turn) breaks the tube's mirror symmetry; use -model full "
-             "-full_hold rotation",
+             "(or auto) -full_hold rotation (or auto)",
              name.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }

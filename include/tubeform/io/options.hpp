@@ -311,6 +311,27 @@ inline bool DieOffAxis(const Options &opt)
 
 // Pass `pass` (1 the second, ...) of the passes after the first: its -pass<pass + 1>_* options.
 inline const PassSpec &LaterPass(const Options &opt, int pass) { return opt.more_passes[pass - 1]; }
+// Pass `pass`'s upper die leaves its press's y axis: the first pass's as DieOffAxis says, a later one's on a path
+// of its own with a sideways point or a turn.
+inline bool PassOffAxis(const Options &opt, int pass)
+{
+  if (pass == 0) return DieOffAxis(opt);
+  const DieMotion &m = LaterPass(opt, pass).motion;
+  bool off = false;
+  if (m.kind == DieMotionKind::Path) {
+    for (const Vec2 &p : m.spec.points) off = off || p[0] != 0;
+    for (double a : m.spec.turns) off = off || a != 0;
+  }
+  return off;
+}
+// Pass `pass`'s upper die or an earlier pass's leaves its press's axis (the tube is then pressed off its mirror
+// symmetry from that pass on). Every pass's options count, given or not, as in QuarterModel below.
+inline bool OffAxisBy(const Options &opt, int pass)
+{
+  bool off = false;
+  for (int k = 0; k <= pass; ++k) off = off || PassOffAxis(opt, k);
+  return off;
+}
 // The passes: the first and each later one given a stroke, in turn (the options refuse a gap).
 inline int PassCount(const Options &opt)
 {
@@ -362,25 +383,27 @@ inline bool QuarterModel(const Options &opt)
   for (int pass = 0; pass < kMaxPasses; ++pass)
     mirror = mirror && PassLowerDie(opt, pass) == "mirror", quarters = quarters && QuarterTurn(opt, pass);
   const TubeModel part = opt.model.part;
-  return part == TubeModel::Quarter || (part == TubeModel::Auto && mirror && !DieOffAxis(opt) && quarters);
+  return part == TubeModel::Quarter ||
+         (part == TubeModel::Auto && mirror && !OffAxisBy(opt, kMaxPasses - 1) && quarters);
 }
 // The whole tube (-model full), or auto where neither the quarter nor the half is exact: the half's plane x = 0
-// is not a symmetry plane of a press turned by an odd number of quarter turns, or by another angle.
+// is not a symmetry plane of a press turned by an odd number of quarter turns, or by another angle, or of a die
+// off its press's axis in any pass.
 inline bool FullModel(const Options &opt)
 {
   bool turned = false;
   for (int pass = 1; pass < kMaxPasses; ++pass)
     turned = turned || PassQuarters(opt, pass) % 2 != 0 || !QuarterTurn(opt, pass);
   return opt.model.part == TubeModel::Full ||
-         (opt.model.part == TubeModel::Auto && !QuarterModel(opt) && (turned || DieOffAxis(opt)));
+         (opt.model.part == TubeModel::Auto && !QuarterModel(opt) && (turned || OffAxisBy(opt, kMaxPasses - 1)));
 }
 // A pass (0 the first) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked,
-// or (auto) where the pins would hold the tube's slide against the dies: the first pass with a die off the axis; a
-// later pass after it, or turned by an angle that is no quarter turn, or turned by an odd number of quarter turns
+// or (auto) where the pins would hold the tube's slide against the dies: a pass with a die off the axis, and every
+// pass after it; a pass turned by an angle that is no quarter turn, or turned by an odd number of quarter turns
 // from an earlier pass not symmetric about its press's x axis (a lower die that does not mirror the upper one).
 inline bool HeldByRotation(const Options &opt, int pass)
 {
-  bool off_axis = DieOffAxis(opt) || !QuarterTurn(opt, pass);
+  bool off_axis = OffAxisBy(opt, pass) || !QuarterTurn(opt, pass);
   for (int before = 0; before < pass; ++before)
     off_axis =
       off_axis || ((PassQuarters(opt, pass) - PassQuarters(opt, before)) % 2 != 0 && !PassMirrored(opt, before));
