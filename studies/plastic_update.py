@@ -4,7 +4,7 @@ the CalculiX cases of tests/reference/calculix/ with each `-plastic_update` (and
 `-drift_correction`), every increment limit divided by s; C/t loaded and after springback, the loads at the
 reported strokes, increments and factorizations.
 
-    /usr/bin/python3 studies/plastic_update.py [--cases default,steel,thin] [--steps 1,2,4]
+    /usr/bin/python3 studies/plastic_update.py [--cases default,steel,thin,thick] [--steps 1,2,4]
 
 Runs are cached under results/plastic_update/ (delete one to run it again); one rank, one run at a time.
 """
@@ -36,7 +36,7 @@ def run(case, update, s):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--cases", default="default,steel,thin")
+    ap.add_argument("--cases", default="default,steel,thin,thick")
     ap.add_argument("--steps", default="1,2,4", help="the divisors s of the increment limits")
     a = ap.parse_args()
     os.makedirs(OUT, exist_ok=True)
