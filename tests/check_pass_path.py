@@ -29,12 +29,15 @@ F. Bad input, each refused in one line naming -pass2_die_path, a non-zero exit, 
    -pass2_stroke (the path is in place of it), over a lower die that moves (-lower_die_motion mirror), sideways
    in the half model (-model half) and in the full model held by its pins (-full_hold pins).
 G. C's press with neither -model nor -full_hold: `auto` chooses the full model (the run says so) under the rotation
-   hold for the sideways pass, and the history is C's within 1e-5 of each column's largest value (load, U, die_x,
+   hold for the sideways pass, and the history is C's within 5e-4 of each column's largest value (load, U, die_x,
    C1, C2, C1/C2, internal work; not C/t, which this shallow press leaves at round-off's 3.5e-8). C holds its
    first pass by the rotation hold, this run by the pins (-full_hold auto: the first pass is symmetric): both exact
-   there, the first pass agrees to round-off (7e-13 measured) and the sideways press carries the difference to
-   1.1e-6 (measured, the internal work; the load 5.3e-7; 1e-5, about ten times that). Before `auto` looked at a
-   later pass's path it refused the run.
+   there, the first pass agrees to round-off (7e-13 measured) and the sideways press carries the difference on, as
+   it carries any round-off: C's own history moves by up to 4.3e-5 of the load (5.3e-7 on OpenBLAS's Haswell
+   kernel, 4.3e-5 on Prescott; U 2.0e-5, the internal work 2.7e-5) under a perturbation of 1.3e-13 in E
+   (-material_e 75000.00000000975), and 5e-4 is about ten times that, as tests/check_die_path.py E bounds its
+   mirror image (measured 1.1e-6 on Haswell, 4.7e-5 on Prescott). Before `auto` looked at a later pass's path it
+   refused the run.
 """
 import os
 
@@ -159,6 +162,6 @@ if auto.returncode == 0:
             gap = gaps[col]
         else:
             col = "the rows"
-k.check(auto.returncode == 0 and full and gap <= 1e-5, f"G. neither -model nor -full_hold: exit {auto.returncode}, "
-        f"the full model {'said' if full else 'not said'}, C's history within {gap:.1e} ({col}; 1e-5)")
+k.check(auto.returncode == 0 and full and gap <= 5e-4, f"G. neither -model nor -full_hold: exit {auto.returncode}, "
+        f"the full model {'said' if full else 'not said'}, C's history within {gap:.1e} ({col}; 5e-4)")
 k.done()
