@@ -300,14 +300,19 @@ inline bool DiePathSideways(const Options &opt)
     if (p[0] != 0) return true;
   return false;
 }
+// A die motion that leaves its press's y axis: a path with a sideways point or a turn.
+inline bool MotionOffAxis(const DieMotion &m)
+{
+  bool off = false;
+  if (m.kind == DieMotionKind::Path) {
+    for (const Vec2 &p : m.spec.points) off = off || p[0] != 0;
+    for (double a : m.spec.turns) off = off || a != 0;
+  }
+  return off;
+}
 // The first pass's upper die leaves the press's y axis: -die_offset, or a -die_path with a sideways motion or a
 // turn.
-inline bool DieOffAxis(const Options &opt)
-{
-  bool turned = false;
-  for (double a : opt.die_motion.spec.turns) turned = turned || (DieMoves(opt, DieMotionKind::Path) && a != 0);
-  return opt.model.die_offset != 0 || DiePathSideways(opt) || turned;
-}
+inline bool DieOffAxis(const Options &opt) { return opt.model.die_offset != 0 || MotionOffAxis(opt.die_motion); }
 
 // Pass `pass` (1 the second, ...) of the passes after the first: its -pass<pass + 1>_* options.
 inline const PassSpec &LaterPass(const Options &opt, int pass) { return opt.more_passes[pass - 1]; }
@@ -315,14 +320,7 @@ inline const PassSpec &LaterPass(const Options &opt, int pass) { return opt.more
 // of its own with a sideways point or a turn.
 inline bool PassOffAxis(const Options &opt, int pass)
 {
-  if (pass == 0) return DieOffAxis(opt);
-  const DieMotion &m = LaterPass(opt, pass).motion;
-  bool off = false;
-  if (m.kind == DieMotionKind::Path) {
-    for (const Vec2 &p : m.spec.points) off = off || p[0] != 0;
-    for (double a : m.spec.turns) off = off || a != 0;
-  }
-  return off;
+  return pass == 0 ? DieOffAxis(opt) : MotionOffAxis(LaterPass(opt, pass).motion);
 }
 // Pass `pass`'s upper die or an earlier pass's leaves its press's axis (the tube is then pressed off its mirror
 // symmetry from that pass on). Every pass's options count, given or not, as in QuarterModel below.
