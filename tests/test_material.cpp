@@ -19,6 +19,7 @@
 //    direction), and after large non-proportional steps on the yield surface
 //    exactly (sbar = sy(ep) to round-off, where the tangent update drifts), its
 //    loading state what its update does, a round-off strain on the surface elastic;
+//    its algorithmic tangent the derivative of its stress by central differences;
 //  - r1 puts an elastic point exactly on the yield surface;
 //  - loading/unloading switches; r2 and r3.
 #include <cmath>
@@ -175,6 +176,48 @@ void RadialNonProportional()
   }
 }
 
+// The radial return's algorithmic tangent (StepTangent) against the central difference of its own stress update, on
+// the non-proportional steps above, in the three isochoric directions (the Kirchhoff term sigma tr(de) does not move
+// along them). Step 1e-7 of the 3e-3 steps: truncation (h / de)^2 ~ 1e-9 and round-off 1e-16 sigma / h ~ 1e-7 MPa
+// against 2G |dir| = 56,000 MPa per unit strain, so 1e-6 of 2G leaves four orders either way; a tangent missing the
+// return's shrink of the deviator (1 - f up to 0.6 here) is off by tenths of 2G.
+void RadialStepTangent()
+{
+  const FlowCurve sy = Ludwik(165.3, 673.5, 0.927);
+  const J2Plasticity m(kE, kNu, std::make_unique<LudwikHardening>(165.3, 673.5, 0.927), 2e-3, false,
+                       PlasticUpdate::Radial);
+  const Voigt dirs[3] = {{1, -1, 0, 0}, {1, 0, -1, 0}, {0, 0, 0, 2}};
+  const double h = 1e-7;
+  double worst = 0;
+  int flowed = 0;
+  for (int k = 0; k < 24; ++k) {
+    const double sx = sy(0.01) / std::sqrt(3.0), c = std::cos(k * M_PI / 12), sn = std::sin(k * M_PI / 12);
+    const Voigt de = {3e-3 * c + 1e-4, -3e-3 * c + 2e-4, 0, 6e-3 * sn};
+    PointState s0;
+    s0.sigma = {sx + 20, -sx + 20, 20, 0};
+    s0.ep = 0.01;
+    s0.plastic = true;
+    if (!m.Loading(s0, de)) continue;
+    ++flowed;
+    const Mat4 t = m.StepTangent(s0, de);
+    for (const Voigt &d : dirs) {
+      PointState up = s0, down = s0;
+      Voigt dp, dm;
+      for (int r = 0; r < 4; ++r) dp[r] = de[r] + h * d[r], dm[r] = de[r] - h * d[r];
+      m.Update(up, dp);
+      m.Update(down, dm);
+      for (int r = 0; r < 4; ++r) {
+        double td = 0;
+        for (int q = 0; q < 4; ++q) td += t[r][q] * d[q];
+        worst = std::max(worst, std::abs(td - (up.sigma[r] - down.sigma[r]) / (2 * h)) / (2 * kG));
+      }
+    }
+  }
+  std::printf("radial return's algorithmic tangent on %d flowing steps: largest miss %.1e of 2G\n", flowed, worst);
+  CHECK(flowed >= 12);
+  CHECK(worst < 1e-6);
+}
+
 // Plane-strain elasticity from zero stress (the Kirchhoff term sigma tr(de) vanishes).
 void ElasticClosedForm()
 {
@@ -239,6 +282,7 @@ int main()
     "table", std::make_unique<TableHardening>(std::vector<double>{0, 0.01, 0.05}, std::vector<double>{165, 200, 240}),
     Table, PlasticUpdate::Radial);
   RadialNonProportional();
+  RadialStepTangent();
   ElasticClosedForm();
   LinearHardeningTangent();
 

@@ -95,6 +95,14 @@ bool Body::ScanTransition(size_t i, const Voigt &deps, double omega, bool apply)
   return true;
 }
 
+void Body::StepTangents(bool on)
+{
+  if (!material_->has_step_tangent() || on == step_tangents_) return;
+  step_tangents_ = on;
+  for (size_t i = 0; i < state_.size(); ++i)
+    if (state_[i].plastic) Stale(i);
+}
+
 void Body::ResetTransitions()
 {
   for (size_t i = 0; i < fraction_.size(); ++i)

@@ -98,7 +98,12 @@ void Body::StartTangents(PetscInt e, Mat4 c[fe::kGauss], Voigt s[fe::kGauss]) co
 {
   for (int g = 0; g < fe::kGauss; ++g) {
     const size_t i = fe::kGauss * e + g;
-    c[g] = fraction_[i] < 1 ? TransitionTangent(i) : material_->Tangent(state_[i]);
+    if (fraction_[i] < 1)
+      c[g] = TransitionTangent(i);
+    else if (step_tangents_ && state_[i].plastic)
+      c[g] = material_->StepTangent(state_[i], trial_[i].first);
+    else
+      c[g] = material_->Tangent(state_[i]);
     s[g] = state_[i].sigma;
   }
 }

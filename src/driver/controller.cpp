@@ -115,6 +115,7 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
   const double release = ReleaseWithin(dl);
   if (ContactActive()) m_.contact->ResetIterates();
   have_iter_ = false;
+  m_.body.StepTangents(false);
   // Re-solve until nothing changes: friction forces linearized about the last
   // iterate, points whose loading state (alpha) disagreed with the last
   // solution switched (at most -rmin_max_redo times), contact nodes pulled off
@@ -190,6 +191,7 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
   PetscCall(VecCopy(du, iter_));
   pad_iter_ = PadStep();
   have_iter_ = true;
+  m_.body.StepTangents(true);
   double first = -1, previous = PETSC_MAX_REAL;
   int backtracks = 0;
   for (PetscInt it = 0;; ++it) {
@@ -230,6 +232,7 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
     if (residual > kDivergence * first || it >= opt_.driver.friction_max_iters) {
       t.settled = false;
       have_iter_ = false;
+      m_.body.StepTangents(false);
       PetscFunctionReturn(PETSC_SUCCESS);
     }
     previous = residual;
@@ -246,6 +249,7 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
     pad_iter_ = PadStep();
   }
   have_iter_ = false;
+  m_.body.StepTangents(false);
   reject_above_ = PETSC_MAX_REAL;
   if (ContactActive()) PetscCall(m_.contact->LimitStep(du, t.dU, t.limit));
   PetscFunctionReturn(PETSC_SUCCESS);

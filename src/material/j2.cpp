@@ -1,5 +1,6 @@
 #include "tubeform/material/j2.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tf {
@@ -22,6 +23,35 @@ Mat4 J2Plasticity::Tangent(const PointState &s) const
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) d[r][c] -= beta * dev[r] * dev[c];
   return d;
+}
+
+Mat4 J2Plasticity::StepTangent(const PointState &s, const Voigt &deps) const
+{
+  if (update_ != PlasticUpdate::Radial || !s.plastic) return Tangent(s);
+  const Voigt trial = Trial(s, deps);
+  const double sbar_tr = VonMises(trial), sy_old = h_->YieldStress(s.ep);
+  if (!TrialFlows(s, sbar_tr, sy_old)) return Tangent(s);
+  // d sigma = C_e d eps - 2G (1 - f) I_dev d eps - 2G theta n (x) n d eps, with f = 1 - 3G dep / sbar_tr the
+  // deviator's shrink and theta = 3G / (3G + H') - (1 - f): the return's own derivative, H' at its end.
+  const double over = sbar_tr - sy_old;
+  const double dep = SecantStep(s.ep, over, 3 * g_, over / (3 * g_), s.hslope);
+  const double f = 1 - 3 * g_ * dep / sbar_tr;
+  const double theta = 3 * g_ / (3 * g_ + SlopeAt(s.ep + dep)) - (1 - f);
+  Mat4 d = elastic_.matrix();
+  const double bulk = d[0][1] + 2 * g_ / 3; // lambda + 2G/3
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) d[r][c] = (r < 3 && c < 3 ? bulk * (1 - f) : 0) + f * d[r][c];
+  const Voigt dev = Deviator(trial);
+  const double beta = 3 * g_ * theta / (sbar_tr * sbar_tr);
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) d[r][c] -= beta * dev[r] * dev[c];
+  return d;
+}
+
+double J2Plasticity::SlopeAt(double ep) const
+{
+  const double h = std::min(kSlopeStep, 0.5 * ep);
+  return h > 0 ? h_->SecantSlope(ep - h, 2 * h) : h_->SecantSlope(ep, kSlopeStep);
 }
 
 namespace {

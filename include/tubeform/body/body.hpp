@@ -96,6 +96,10 @@ public:
   // change of their m by more than yield_tol since the tangent was assembled
   // counts as a switch (applied with `apply`: the next tangent uses the new m).
   PetscErrorCode ScanTrial(Vec du, bool apply, StepLimit &limit, PetscInt &switches, PetscInt &transitions);
+  // Equilibrium corrections (on) take each plastic point's tangent where the law has one for a step
+  // (Material::StepTangent: the radial return's algorithmic tangent) at the increment the last ScanTrial saw,
+  // kept through the corrections while the point's loading state holds; off: the start's.
+  void StepTangents(bool on);
   // yield_inside: a new step starts elastic everywhere; a step shortened by
   // `factor` keeps its transitions (m / factor).
   void ResetTransitions();
@@ -181,6 +185,7 @@ private:
   std::vector<PointState> onset_;    // yield_inside: state where the point meets the surface (plastic)
   std::vector<double> x_, u_;
   std::vector<std::pair<Voigt, double>> trial_; // ScanTrial: strain and spin increments of each point
+  bool step_tangents_ = false;                  // StepTangents
   // Cell tangents of the last assembly; a cell is recomputed only when its
   // geometry, stresses or point tangents changed since (the friction
   // iterations and re-solves of an increment change few or none).

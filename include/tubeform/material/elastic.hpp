@@ -74,6 +74,10 @@ public:
   virtual ~Material() = default;
   // C in  (Jaumann rate of Kirchhoff stress) = C : d, for the point's alpha.
   virtual Mat4 Tangent(const PointState &s) const = 0;
+  // The derivative of Update's stress by deps at a step deps from s (an equilibrium correction's tangent): the law's
+  // algorithmic tangent where it has one (has_step_tangent), else Tangent(s).
+  virtual Mat4 StepTangent(const PointState &s, const Voigt &) const { return Tangent(s); }
+  virtual bool has_step_tangent() const { return false; }
   // sigma += C : deps - sigma tr(deps) (Kirchhoff -> Cauchy), plastic state advanced.
   virtual UpdateInfo Update(PointState &s, const Voigt &deps) const = 0;
   // Elastic strain energy density of a stress state.

@@ -23,6 +23,9 @@ constexpr int kPlasticStepIterations = 200;
 // of sigma_y: a point on the surface loading neutrally (no strain, or along the surface) stays elastic whatever
 // round-off (another rank's summation order) adds to its trial, at most this far past the surface.
 constexpr double kFlowTie = 1e-8;
+// H'(ep) for the algorithmic tangent by central differences over this plastic strain: its truncation (h^2 sigma_y''')
+// and its round-off (1e-16 sigma_y / h) both far below the 1e-3 that would slow a Newton iteration.
+constexpr double kSlopeStep = 1e-6;
 
 // The backstresses' part of a plastic step's consistency (kinematic.hpp): how
 // far their projection on the step's flow direction moves over a plastic
@@ -44,6 +47,9 @@ public:
                PlasticUpdate update = PlasticUpdate::Tangent);
 
   Mat4 Tangent(const PointState &s) const override;
+  // The radial return's algorithmic tangent (Simo and Taylor 1985; docs/theory.md, section 1).
+  Mat4 StepTangent(const PointState &s, const Voigt &deps) const override;
+  bool has_step_tangent() const override { return update_ == PlasticUpdate::Radial; }
   UpdateInfo Update(PointState &s, const Voigt &deps) const override;
   double ElasticEnergy(const Voigt &sigma) const override { return elastic_.ElasticEnergy(sigma); }
   double YieldOnset(const PointState &s, const Voigt &deps, double omega) const override;
@@ -82,6 +88,8 @@ protected:
   double g_, dep_ref_;
   bool drift_correction_;
   PlasticUpdate update_;
+  // dsigma_y/dep at ep (a one-sided difference at ep = 0).
+  double SlopeAt(double ep) const;
   double Modulus(const PointState &s) const { return s.hslope > 0 ? s.hslope : h_->SecantSlope(s.ep, dep_ref_); }
 };
 
