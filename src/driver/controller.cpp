@@ -304,47 +304,18 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   // So does equilibrium: a scaled solution is out of balance.
   const bool resolve = r < 1.0 && (Iterative() || InertiaActive() || t.transitions > 0 || Equilibrium());
   if (resolve) {
-    // 2a. Friction is not linear in r, nor is inertia (M / dt^2): the
-    // shortened step is solved again, and again while the re-solve still finds
-    // an event or a bound more than -rmin_event_tol inside it (the
-    // non-linearity moves them). The step taken meets its limits: with inertia
-    // the response can grow much faster than the step (K + M / dt^2 nearly
-    // singular at some dt, as when a tube snaps), and a step taken past a
-    // rotation bound there moves the tube by millimetres with no equilibrium.
-    // After kMaxResolves tries each cut at least halves the step, so the search
-    // ends; only inertia's shortest step is taken as it is (a compromise,
-    // counted). The last solution is taken unscaled (scaling it would break
-    // the friction forces' equilibrium).
-    double taken = r, within = 0, past = dl; // the longest step found within its limits, the shortest past them
-    int grows = 0;
-    for (int attempt = 1;; ++attempt) {
-      dl *= taken;
-      m_.body.ScaleTransitions(taken);
-      PetscCall(SettledTrial(lambda, dl, du, t, inc));
-      if (t.limit.r >= 1.0 - opt_.driver.rmin_event_tol) {
-        // Within its limits. With inertia, far within: lengthened (kGrowAbove).
-        // (Only a step cut by a bound on its size, r2 or r3: an event is where
-        // it is, and a re-solved step ends at it.)
-        const bool bound = inc.who == Limiter::Strain || inc.who == Limiter::Rotation;
-        if (!InertiaActive() || !bound || grows >= kMaxGrows || t.limit.r < kGrowAbove || dl > kGrowBelow * dl_trial)
-          break;
-        within = dl, ++grows;
-        taken = std::min({t.limit.r, kGrowFactor, std::sqrt(past / dl)});
-        if (taken < kGrowAbove) break;
-        continue;
-      }
-      past = std::min(past, dl);
-      if (within > 0) {
-        // A lengthened step went past its limits: back to the last one within, as it was.
-        taken = within / dl, grows = kMaxGrows, within = 0;
-        continue;
-      }
-      taken = attempt < kMaxResolves ? t.limit.r : std::min(t.limit.r, 0.5);
-      if (InertiaActive()) taken = std::max(taken, MinStepFraction(dl));
-      if (taken >= 1.0) break;
-      PetscCheck(dl * taken > kMinRmin * dl_trial, m_.comm, PETSC_ERR_NOT_CONVERGED,
-                 "r_min = %g (%s at %d) at lambda = %g: the re-solved increment cannot meet its limits",
-                 dl * taken / dl_trial, LimiterName((int)t.limit.who), (int)t.limit.where, lambda);
+    bool stuck = false;
+    PetscCall(ResolveCut(lambda, r, dl_trial, dl, du, t, inc, stuck));
+    if (stuck) {
+      // -dynamics auto: quasi-static steps cannot meet this event (a node touching and leaving the die by turns);
+      // inertia from now on, and the increment again with it.
+      inertia_->Activate();
+      PetscCall(PetscPrintf(m_.comm,
+                            "tubeform: the cut step does not meet its limits at lambda %.6g: inertia on from here "
+                            "(-dynamics auto, docs/theory.md \"Inertia\")\n",
+                            lambda));
+      PetscCall(Advance(lambda, dl_trial, end, du, inc));
+      PetscFunctionReturn(PETSC_SUCCESS);
     }
   } else {
     // 2b. A linear step: the solution scaled by r is the solution of the scaled step.
@@ -360,6 +331,59 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
   // within -rmin_event_tol that is the event's location tolerance, beyond it
   // (inertia's shortest step) a compromise.
   inc.event_inside = resolve && t.limit.r < 1.0 - opt_.driver.rmin_event_tol;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Controller::ResolveCut(double lambda, double r, double dl_trial, double &dl, Vec du, Trial &t,
+                                      Increment &inc, bool &stuck)
+{
+  PetscFunctionBeginUser;
+  // 2a. Friction is not linear in r, nor is inertia (M / dt^2): the
+  // shortened step is solved again, and again while the re-solve still finds
+  // an event or a bound more than -rmin_event_tol inside it (the
+  // non-linearity moves them). The step taken meets its limits: with inertia
+  // the response can grow much faster than the step (K + M / dt^2 nearly
+  // singular at some dt, as when a tube snaps), and a step taken past a
+  // rotation bound there moves the tube by millimetres with no equilibrium.
+  // After kMaxResolves tries each cut at least halves the step, so the search
+  // ends; only inertia's shortest step is taken as it is (a compromise,
+  // counted). The last solution is taken unscaled (scaling it would break
+  // the friction forces' equilibrium).
+  double taken = r, within = 0, past = dl; // the longest step found within its limits, the shortest past them
+  int grows = 0;
+  for (int attempt = 1;; ++attempt) {
+    dl *= taken;
+    m_.body.ScaleTransitions(taken);
+    PetscCall(SettledTrial(lambda, dl, du, t, inc));
+    if (t.limit.r >= 1.0 - opt_.driver.rmin_event_tol) {
+      // Within its limits. With inertia, far within: lengthened (kGrowAbove).
+      // (Only a step cut by a bound on its size, r2 or r3: an event is where
+      // it is, and a re-solved step ends at it.)
+      const bool bound = inc.who == Limiter::Strain || inc.who == Limiter::Rotation;
+      if (!InertiaActive() || !bound || grows >= kMaxGrows || t.limit.r < kGrowAbove || dl > kGrowBelow * dl_trial)
+        break;
+      within = dl, ++grows;
+      taken = std::min({t.limit.r, kGrowFactor, std::sqrt(past / dl)});
+      if (taken < kGrowAbove) break;
+      continue;
+    }
+    past = std::min(past, dl);
+    if (within > 0) {
+      // A lengthened step went past its limits: back to the last one within, as it was.
+      taken = within / dl, grows = kMaxGrows, within = 0;
+      continue;
+    }
+    taken = attempt < kMaxResolves ? t.limit.r : std::min(t.limit.r, 0.5);
+    if (InertiaActive()) taken = std::max(taken, MinStepFraction(dl));
+    if (taken >= 1.0) break;
+    if (dl * taken <= kMinRmin * dl_trial && opt_.driver.dynamics == Dynamics::Auto && !InertiaActive()) {
+      stuck = true;
+      break;
+    }
+    PetscCheck(dl * taken > kMinRmin * dl_trial, m_.comm, PETSC_ERR_NOT_CONVERGED,
+               "r_min = %g (%s at %d) at lambda = %g: the re-solved increment cannot meet its limits",
+               dl * taken / dl_trial, LimiterName((int)t.limit.who), (int)t.limit.where, lambda);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -77,8 +77,8 @@ PetscErrorCode ReadDynamics(PetscOptionItems *PetscOptionsObject, OptionReader &
   PetscFunctionBeginUser;
   PetscCall(ChooseWord(PetscOptionsObject, read, "-dynamics",
                        "quasistatic (no inertia), implicit (lumped mass, backward Euler in time), auto "
-                       "(quasi-static until an increment's friction iterations do not settle, implicit from "
-                       "then on)",
+                       "(quasi-static until an increment's friction iterations do not settle or a cut step "
+                       "cannot meet its first event, implicit from then on)",
                        kDynamicsWords, d.dynamics));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-factorization",
                        "The LU of a system every rank factors whole (one rank, or up to 20,000 dofs): mumps, or klu "

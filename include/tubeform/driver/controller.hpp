@@ -155,6 +155,10 @@ private:
   PetscErrorCode Balance(double lambda, double dl, Vec du, Trial &t, Increment &inc);
   // A trial halved until it settles (kMaxCuts times at most; dl is halved with it).
   PetscErrorCode SettledTrial(double lambda, double &dl, Vec du, Trial &t, Increment &inc);
+  // A step r_min cut to r of its trial (dl on entry): solved at that length, and again while an event or bound
+  // lies inside it (dl the step taken); `stuck` where -dynamics auto's quasi-static steps cannot meet their limits.
+  PetscErrorCode ResolveCut(double lambda, double r, double dl_trial, double &dl, Vec du, Trial &t, Increment &inc,
+                            bool &stuck);
 };
 
 } // namespace tf
