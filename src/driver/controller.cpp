@@ -114,8 +114,7 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
   t = Trial{};
   const double release = ReleaseWithin(dl);
   if (ContactActive()) m_.contact->ResetIterates();
-  have_iter_ = false;
-  m_.body.StepTangents(false);
+  Iterating(false);
   // Re-solve until nothing changes: friction forces linearized about the last
   // iterate, points whose loading state (alpha) disagreed with the last
   // solution switched (at most -rmin_max_redo times), contact nodes pulled off
@@ -141,7 +140,7 @@ PetscErrorCode Controller::SolveTrial(double lambda, double dl, Vec du, bool las
     if (Equilibrium()) break;
     if (it < opt_.driver.friction_max_iters + opt_.driver.rmin_max_redo) continue;
     // -dynamics auto before the switch: the caller turns inertia on instead.
-    if (!last || (opt_.driver.dynamics == Dynamics::Auto && !InertiaActive())) {
+    if (!last || AutoBeforeInertia()) {
       t.settled = false;
       PetscFunctionReturn(PETSC_SUCCESS);
     }
@@ -190,8 +189,7 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
   const double release = ReleaseWithin(dl);
   PetscCall(VecCopy(du, iter_));
   pad_iter_ = PadStep();
-  have_iter_ = true;
-  m_.body.StepTangents(true);
+  Iterating(true);
   double first = -1, previous = PETSC_MAX_REAL;
   int backtracks = 0;
   for (PetscInt it = 0;; ++it) {
@@ -231,8 +229,7 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
     // halved, as unsettled friction does.
     if (residual > kDivergence * first || it >= opt_.driver.friction_max_iters) {
       t.settled = false;
-      have_iter_ = false;
-      m_.body.StepTangents(false);
+      Iterating(false);
       PetscFunctionReturn(PETSC_SUCCESS);
     }
     previous = residual;
@@ -248,11 +245,26 @@ PetscErrorCode Controller::Balance(double lambda, double dl, Vec du, Trial &t, I
     PetscCall(VecCopy(du, iter_));
     pad_iter_ = PadStep();
   }
-  have_iter_ = false;
-  m_.body.StepTangents(false);
+  Iterating(false);
   reject_above_ = PETSC_MAX_REAL;
   if (ContactActive()) PetscCall(m_.contact->LimitStep(du, t.dU, t.limit));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Controller::InertiaOn(double lambda, const char *why)
+{
+  PetscFunctionBeginUser;
+  inertia_->Activate();
+  PetscCall(PetscPrintf(
+    m_.comm, "tubeform: %s at lambda %.6g: inertia on from here (-dynamics auto, docs/theory.md \"Inertia\")\n", why,
+    lambda));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void Controller::Iterating(bool on)
+{
+  have_iter_ = on;
+  m_.body.StepTangents(on);
 }
 
 PetscErrorCode Controller::SettledTrial(double lambda, double &dl, Vec du, Trial &t, Increment &inc)
@@ -264,14 +276,10 @@ PetscErrorCode Controller::SettledTrial(double lambda, double &dl, Vec du, Trial
     inc.redo += t.redo;
     inc.deep = t.settled && cut > kMaxCuts;
     if (t.settled) break;
-    if (cut == max_cuts && inertia_ && !InertiaActive()) {
+    if (cut == max_cuts && AutoBeforeInertia()) {
       // -dynamics auto: quasi-static steps cannot settle here; inertia from
       // now on, and this (shortest) step solved again with it.
-      inertia_->Activate();
-      PetscCall(PetscPrintf(m_.comm,
-                            "tubeform: friction iterations do not settle at lambda %.6g: inertia on from here "
-                            "(-dynamics auto, docs/theory.md \"Inertia\")\n",
-                            lambda));
+      PetscCall(InertiaOn(lambda, "friction iterations do not settle"));
       continue;
     }
     if (cut == max_cuts) break; // (SolveTrial takes the last try whatever it finds)
@@ -309,11 +317,7 @@ PetscErrorCode Controller::Advance(double lambda, double dl, double end, Vec du,
     if (stuck) {
       // -dynamics auto: quasi-static steps cannot meet this event (a node touching and leaving the die by turns);
       // inertia from now on, and the increment again with it.
-      inertia_->Activate();
-      PetscCall(PetscPrintf(m_.comm,
-                            "tubeform: the cut step does not meet its limits at lambda %.6g: inertia on from here "
-                            "(-dynamics auto, docs/theory.md \"Inertia\")\n",
-                            lambda));
+      PetscCall(InertiaOn(lambda, "the cut step does not meet its limits"));
       PetscCall(Advance(lambda, dl_trial, end, du, inc));
       PetscFunctionReturn(PETSC_SUCCESS);
     }
@@ -376,7 +380,7 @@ PetscErrorCode Controller::ResolveCut(double lambda, double r, double dl_trial, 
     taken = attempt < kMaxResolves ? t.limit.r : std::min(t.limit.r, 0.5);
     if (InertiaActive()) taken = std::max(taken, MinStepFraction(dl));
     if (taken >= 1.0) break;
-    if (dl * taken <= kMinRmin * dl_trial && opt_.driver.dynamics == Dynamics::Auto && !InertiaActive()) {
+    if (dl * taken <= kMinRmin * dl_trial && AutoBeforeInertia()) {
       stuck = true;
       break;
     }

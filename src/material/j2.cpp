@@ -28,21 +28,17 @@ Mat4 J2Plasticity::Tangent(const PointState &s) const
 Mat4 J2Plasticity::StepTangent(const PointState &s, const Voigt &deps) const
 {
   if (update_ != PlasticUpdate::Radial || !s.plastic) return Tangent(s);
-  const Voigt trial = Trial(s, deps);
-  const double sbar_tr = VonMises(trial), sy_old = h_->YieldStress(s.ep);
-  if (!TrialFlows(s, sbar_tr, sy_old)) return Tangent(s);
+  const ReturnStep rs = Return(s, deps);
+  if (!rs.flows) return Tangent(s);
   // d sigma = C_e d eps - 2G (1 - f) I_dev d eps - 2G theta n (x) n d eps, with f = 1 - 3G dep / sbar_tr the
   // deviator's shrink and theta = 3G / (3G + H') - (1 - f): the return's own derivative, H' at its end.
-  const double over = sbar_tr - sy_old;
-  const double dep = SecantStep(s.ep, over, 3 * g_, over / (3 * g_), s.hslope);
-  const double f = 1 - 3 * g_ * dep / sbar_tr;
-  const double theta = 3 * g_ / (3 * g_ + SlopeAt(s.ep + dep)) - (1 - f);
+  const double f = rs.f, theta = 3 * g_ / (3 * g_ + SlopeAt(s.ep + rs.dep)) - (1 - f);
   Mat4 d = elastic_.matrix();
-  const double bulk = d[0][1] + 2 * g_ / 3; // lambda + 2G/3
+  const double bulk = elastic_.bulk_modulus();
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) d[r][c] = (r < 3 && c < 3 ? bulk * (1 - f) : 0) + f * d[r][c];
-  const Voigt dev = Deviator(trial);
-  const double beta = 3 * g_ * theta / (sbar_tr * sbar_tr);
+  const Voigt dev = Deviator(rs.trial);
+  const double beta = 3 * g_ * theta / (rs.sbar_tr * rs.sbar_tr);
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) d[r][c] -= beta * dev[r] * dev[c];
   return d;
@@ -143,25 +139,37 @@ bool J2Plasticity::TrialFlows(const PointState &s, double sbar_tr, double sy) co
   return sbar_tr > std::max(VonMises(s.sigma), sy) + kFlowTie * sy;
 }
 
+J2Plasticity::ReturnStep J2Plasticity::Return(const PointState &s, const Voigt &deps) const
+{
+  ReturnStep rs;
+  rs.trial = Trial(s, deps);
+  rs.sbar_tr = VonMises(rs.trial), rs.sy_old = h_->YieldStress(s.ep);
+  rs.flows = TrialFlows(s, rs.sbar_tr, rs.sy_old);
+  if (!rs.flows) return rs;
+  // 3G dep + sigma_y(ep + dep) = sbar_tr: the deviator shrinks along itself to
+  // sbar_tr - 3G dep = sigma_y(ep + dep), the pressure kept.
+  const double over = rs.sbar_tr - rs.sy_old;
+  rs.dep = SecantStep(s.ep, over, 3 * g_, over / (3 * g_), s.hslope);
+  rs.f = 1 - 3 * g_ * rs.dep / rs.sbar_tr;
+  return rs;
+}
+
 UpdateInfo J2Plasticity::RadialReturn(PointState &s, const Voigt &deps) const
 {
   // Whatever the point's flag: the update is a function of the increment from
   // the start state (an elastic point's trial passes the surface only where
   // its onset lies inside the step).
   UpdateInfo info;
-  const Voigt trial = Trial(s, deps);
-  const double sbar_tr = VonMises(trial), sy_old = h_->YieldStress(s.ep);
-  s.plastic = TrialFlows(s, sbar_tr, sy_old);
+  const ReturnStep rs = Return(s, deps);
+  const Voigt &trial = rs.trial;
+  const double sy_old = rs.sy_old, dep = rs.dep;
+  s.plastic = rs.flows;
   s.sigma = trial;
   if (!s.plastic) return info;
-  // 3G dep + sigma_y(ep + dep) = sbar_tr: the deviator shrinks along itself to
-  // sbar_tr - 3G dep = sigma_y(ep + dep), the pressure kept.
-  const double over = sbar_tr - sy_old;
-  const double dep = SecantStep(s.ep, over, 3 * g_, over / (3 * g_), s.hslope);
   const double sy_new = h_->YieldStress(s.ep + dep);
-  const double p = (trial[0] + trial[1] + trial[2]) / 3, f = 1 - 3 * g_ * dep / sbar_tr;
-  for (int r = 0; r < 3; ++r) s.sigma[r] = p + f * (trial[r] - p);
-  s.sigma[3] = f * trial[3];
+  const double p = (trial[0] + trial[1] + trial[2]) / 3;
+  for (int r = 0; r < 3; ++r) s.sigma[r] = p + rs.f * (trial[r] - p);
+  s.sigma[3] = rs.f * trial[3];
   if (dep > 0) s.hslope = (sy_new - sy_old) / dep;
   s.ep += dep;
   info.dwp = 0.5 * (sy_old + sy_new) * dep;

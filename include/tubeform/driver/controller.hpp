@@ -128,6 +128,12 @@ private:
   PetscErrorCode TrialState(Vec du);
   bool Iterative() const { return ContactActive() && m_.contact->friction(); }
   bool InertiaActive() const { return inertia_ && inertia_->active(); }
+  // -dynamics auto before it turned inertia on.
+  bool AutoBeforeInertia() const { return inertia_ && !inertia_->active(); }
+  // -dynamics auto: inertia on from here, saying why at lambda.
+  PetscErrorCode InertiaOn(double lambda, const char *why);
+  // The equilibrium iterations of a step begin (on) or end: the iterate and the body's step tangents with them.
+  void Iterating(bool on);
   // The shortest step inertia allows, as a fraction of a step of dl.
   double MinStepFraction(double dl) const { return kMinDynamicStep / (opt_.driver.increments * dl); }
   // A contact node whose force would vanish within this fraction of a step of

@@ -74,6 +74,14 @@ protected:
   Voigt ElasticStress(const Voigt &deps) const;
   // The elastic trial of an increment: sigma + C_e : deps - sigma tr(deps) (the spin is the caller's).
   Voigt Trial(const PointState &s, const Voigt &deps) const;
+  // The radial return's step from s over deps: the elastic trial and, where it flows, the plastic strain step and
+  // the deviator's shrink f = 1 - 3G dep / sbar_tr (RadialReturn and StepTangent).
+  struct ReturnStep {
+    Voigt trial;
+    double sbar_tr, sy_old, dep = 0, f = 1;
+    bool flows;
+  };
+  ReturnStep Return(const PointState &s, const Voigt &deps) const;
   // The radial return (backward Euler) of the trial onto the yield surface where it passes it, else elastic.
   UpdateInfo RadialReturn(PointState &s, const Voigt &deps) const;
   // Whether a trial of equivalent stress sbar_tr flows: past the surface, and (from a start past it) higher (kFlowTie).
