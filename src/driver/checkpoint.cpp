@@ -23,8 +23,9 @@ namespace {
 // The layout of a checkpoint; a file of another version is refused (4: several tools; 5: a force-controlled one;
 // 6: the second pass's dies moved back to the tube; 7: the side dies' travel, the scene read before the contacts;
 // 8: the rotation hold's columns; 9: die_x; 10: the hold's pins of the slide; 11: die_turn; 12: the springback's
-// law and its measure at the yield surface; 13: the symmetry planes' walls and whether the dies were removed).
-constexpr double kCheckpointVersion = 13;
+// law and its measure at the yield surface; 13: the symmetry planes' walls and whether the dies were removed; 14:
+// whether the corrections take their iterate's tangent).
+constexpr double kCheckpointVersion = 14;
 // Room a checkpoint is given before it is written: 8-byte numbers, fewer than
 // 64 per node, per cell and per history row (the state holds about 30, 48 and
 // 49), and 1 MB for HDF5's own.
@@ -93,6 +94,7 @@ PetscErrorCode Problem::Persist(Archive &ar, CheckpointHeader &head)
   PetscCall(ar.Value("increments", at_.inc));
   PetscCall(ar.Value("lambda_mark", at_.lambda_mark));
   PetscCall(ar.Value("increment_mark", at_.inc_mark));
+  PetscCall(ar.Value("iterate_tangent", at_.iterate_tangent));
   const size_t stages = at_.started.size();
   PetscCall(ar.Values("started", at_.started));
   PetscCheck(at_.started.size() == stages, comm_, PETSC_ERR_USER_INPUT,

@@ -81,10 +81,8 @@ public:
   // with the derivative of its mid-increment strain in the columns
   // (fe/midpoint.hpp; unsymmetric), where K/G reaches kNearlyIncompressible. With forward
   // kinematics the start's tangent linearizes the strain exactly: AssembleTangent.
-  bool IterateTangent() const
-  {
-    return prm_.kinematics == ObjectiveScheme::Midpoint && BulkToShear() >= kNearlyIncompressible;
-  }
+  bool IterateTangent() const { return MidpointKinematics() && BulkToShear() >= kNearlyIncompressible; }
+  bool MidpointKinematics() const { return prm_.kinematics == ObjectiveScheme::Midpoint; }
   PetscErrorCode UpdateTangents(System &system);
   PetscErrorCode AssembleIterateTangent(System &system);
   // What the trial increment du would do at the Gauss points: r1 (yield

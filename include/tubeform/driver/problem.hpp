@@ -85,7 +85,8 @@ private:
     PetscInt inc = 0, step = 0; // increments committed, field steps written
     double lambda_mark = 0;     // the stall watch: lambda and increment at its last mark
     PetscInt inc_mark = 0;
-    std::vector<double> started; // 1 for each stage begun (breakpoints and the end)
+    std::vector<double> started;  // 1 for each stage begun (breakpoints and the end)
+    PetscInt iterate_tangent = 0; // 1: the corrections take their iterate's tangent (Controller::iterate_tangent)
   } at_;
 
   // The state of the loop between increments.
