@@ -8,8 +8,9 @@
 
 namespace tf {
 
-Controller::Controller(Model &model, Scene &scene, Inertia *inertia, const Options &opt, double duration)
-    : m_(model), scene_(scene), inertia_(inertia), opt_(opt), duration_(duration)
+Controller::Controller(Model &model, Scene &scene, Inertia *inertia, const Options &opt, double duration,
+                       PetscInt &iterate_tangent)
+    : m_(model), scene_(scene), inertia_(inertia), opt_(opt), duration_(duration), iterate_tangent_(iterate_tangent)
 {
   if (Equilibrium()) {
     iter_ = m_.system.CreateLocalVector();
@@ -268,7 +269,7 @@ PetscErrorCode Controller::IterateTangentOn(double lambda)
   // rotations inside the step that the start's configuration does not see (a wall snapping through). The iterate's
   // tangent from here on, for the run: the snapping release of the paper's thinnest tube balances with it in a
   // quarter of the solves, and in energy (docs/theory.md, 5a).
-  iterate_tangent_ = true;
+  iterate_tangent_ = 1;
   PetscCall(PetscPrintf(m_.comm,
                         "tubeform: a step halved %d times still out of balance at lambda %.6g: the equilibrium "
                         "corrections take their iterate's tangent from here (docs/theory.md, 5a)\n",

@@ -241,9 +241,8 @@ PetscErrorCode Problem::Increments(ResultWriter &writer, OutputSchedule &output,
   PetscInt &inc = at_.inc;
   const double dl_load = 1.0 / opt_.driver.increments;
   const double dl_unload = opt_.driver.unload_increments > 0 ? 1.0 / opt_.driver.unload_increments : dl_load;
-  Controller controller(*model_, *scene_, inertia_.get(), opt_, path_.duration);
+  Controller controller(*model_, *scene_, inertia_.get(), opt_, path_.duration, at_.iterate_tangent);
   controller.SetStartForces(forces_.f_start);
-  controller.set_iterate_tangent(at_.iterate_tangent != 0);
   Vec du = system_.CreateLocalVector();
   // A restart has written no field step yet: its last state is written whatever ends the run.
   bool wrote_last = opt_.restart.empty();
@@ -277,7 +276,6 @@ PetscErrorCode Problem::Increments(ResultWriter &writer, OutputSchedule &output,
     controller.SetForceScale(q_sum_, q_count_);
     PetscCall(StopOnFailure(controller.Advance(lambda, dl, end, du, taken), stop));
     if (!stop.why.empty()) break;
-    at_.iterate_tangent = controller.iterate_tangent();
 
     // 5. Commit: stresses, plastic states and geometry; inertia; contact; lambda at the step's end.
     Committed done;

@@ -74,7 +74,11 @@ struct Increment {
 
 class Controller {
 public:
-  Controller(Model &model, Scene &scene, Inertia *inertia, const Options &opt, double duration);
+  // iterate_tangent: 1 when the equilibrium corrections take the tangent at their iterate
+  // (Body::AssembleIterateTangent), set from the first step halved kMaxCuts times still out of balance on
+  // (docs/theory.md, 5a); the caller's, which a checkpoint keeps.
+  Controller(Model &model, Scene &scene, Inertia *inertia, const Options &opt, double duration,
+             PetscInt &iterate_tangent);
   ~Controller();
   Controller(const Controller &) = delete;
   Controller &operator=(const Controller &) = delete;
@@ -85,10 +89,6 @@ public:
   // their number).
   void SetStartForces(Vec f_start) { f_start_ = f_start; }
   void SetForceScale(double sum, double count) { q_sum_ = sum, q_count_ = count; }
-  // The equilibrium corrections take the tangent at their iterate (Body::AssembleIterateTangent) from the first
-  // step halved kMaxCuts times still out of balance on (docs/theory.md, 5a); a restart carries the choice on.
-  bool iterate_tangent() const { return iterate_tangent_; }
-  void set_iterate_tangent(bool on) { iterate_tangent_ = on; }
   // Collective: the increment from lambda with trial step dl (`end`: the end of
   // the load path); du (local vector) receives it.
   PetscErrorCode Advance(double lambda, double dl, double end, Vec du, Increment &inc);
@@ -117,8 +117,8 @@ private:
   double reject_above_ = PETSC_MAX_REAL; // an iterate out of balance by more is backtracked
   double q_iter_ = 0;
   bool have_iter_ = false;
-  bool iterate_tangent_ = false; // (iterate_tangent())
-  double dl_trial_ = 0;          // the increment's trial step (a force-controlled tool's catch-up is shared by it)
+  PetscInt &iterate_tangent_; // (the constructor's iterate_tangent)
+  double dl_trial_ = 0;       // the increment's trial step (a force-controlled tool's catch-up is shared by it)
   // A force-controlled tool's stroke increment of iter_ and prev_ (ContactSet::pad_step).
   double pad_iter_ = 0, pad_prev_ = 0;
   double PadStep() const { return ContactActive() ? m_.contact->pad_step() : 0.0; }
@@ -137,7 +137,7 @@ private:
   bool AutoBeforeInertia() const { return inertia_ && !inertia_->active(); }
   // -dynamics auto: inertia on from here, saying why at lambda.
   PetscErrorCode InertiaOn(double lambda, const char *why);
-  // The equilibrium corrections take their iterate's tangent from here (iterate_tangent()), saying why at lambda.
+  // The equilibrium corrections take their iterate's tangent from here (iterate_tangent_), saying why at lambda.
   PetscErrorCode IterateTangentOn(double lambda);
   // The equilibrium iterations of a step begin (on) or end: the iterate and the body's step tangents with them.
   void Iterating(bool on);

@@ -86,7 +86,7 @@ private:
     double lambda_mark = 0;     // the stall watch: lambda and increment at its last mark
     PetscInt inc_mark = 0;
     std::vector<double> started;  // 1 for each stage begun (breakpoints and the end)
-    PetscInt iterate_tangent = 0; // 1: the corrections take their iterate's tangent (Controller::iterate_tangent)
+    PetscInt iterate_tangent = 0; // 1: the corrections take their iterate's tangent (the Controller's)
   } at_;
 
   // The state of the loop between increments.
