@@ -70,7 +70,7 @@ PetscErrorCode Build(MPI_Comm comm, std::unique_ptr<Block> &b, double spin = 0)
   PetscCall(b->mesh.Create(comm, serial, {"left", "right", "bottom", "top"}));
   PetscCall(b->system.Setup(b->mesh));
   BodyParams prm;
-  prm.material.law = "elastic";
+  prm.material.law = FlowLaw::Elastic;
   prm.material.E = 1e9, prm.material.nu = 0.3; // strains ~1e-8: the steps are linear to that
   PetscCall(b->body.Setup(b->mesh, prm));
   ContactSpec spec;

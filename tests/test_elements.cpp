@@ -170,7 +170,7 @@ Options Base(fe::Formulation f, double e, double nu)
   Options opt;
   opt.element = f;
   opt.monitor = PETSC_FALSE;
-  opt.material.law = "elastic";
+  opt.material.law = FlowLaw::Elastic;
   opt.material.E = e;
   opt.material.nu = nu;
   opt.driver.increments = 1;

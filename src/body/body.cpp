@@ -38,7 +38,7 @@ PetscErrorCode Body::Setup(const Mesh &mesh, const BodyParams &prm)
       fe::GaussPoints(xe, xg);
       for (int g = 0; g < fe::kGauss; ++g)
         state_[fe::kGauss * e + g].frame =
-          prm.material.axes == "tube" ? std::atan2(xg[g][1], xg[g][0]) : prm.material.axes_angle;
+          prm.material.axes == MaterialAxes::Tube ? std::atan2(xg[g][1], xg[g][0]) : prm.material.axes_angle;
     }
   yield_factor_.assign(state_.size(), kNever);
   fraction_.assign(state_.size(), 1.0);

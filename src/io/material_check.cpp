@@ -24,9 +24,9 @@ constexpr int kKinematicCheckPoints = 2000;
 PetscErrorCode CheckKinematic(MPI_Comm comm, const MaterialParams &m)
 {
   PetscFunctionBeginUser;
-  if (m.hardening != "chaboche") PetscFunctionReturn(PETSC_SUCCESS);
+  if (m.hardening != HardeningRule::Chaboche) PetscFunctionReturn(PETSC_SUCCESS);
   const auto &k = m.kinematic;
-  PetscCheck(m.law != "elastic", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(m.law != FlowLaw::Elastic, comm, PETSC_ERR_USER_INPUT,
              "-hardening chaboche: needs a plastic -material_law (ludwik, swift, table), not elastic");
   PetscCheck(!k.empty() && k.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
              "-hardening chaboche needs -material_kinematic C1,gamma1[,C2,gamma2[,C3,gamma3]] (pairs; got %d numbers)",
@@ -64,7 +64,7 @@ PetscErrorCode CheckHill(MPI_Comm comm, const MaterialParams &m)
                "surface)",
                f, g, h, l);
   }
-  PetscCheck(!HillCoefficients(m) || m.hardening == "isotropic", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(!HillCoefficients(m) || m.hardening == HardeningRule::Isotropic, comm, PETSC_ERR_USER_INPUT,
              "-hardening chaboche with Hill's yield (-material_r, -material_hill): not available; use one of the two");
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -88,11 +88,12 @@ std::string ModulusAgainstYield(const MaterialParams &m, const Hardening &curve)
 {
   const double sy0 = curve.YieldStress(0);
   const bool hill = HillCoefficients(m).has_value();
-  const std::string from = std::string(m.law == "table" ? "the first stress of -material_table" : "-material_sy") +
-                           (!hill            ? ""
-                            : m.hill.empty() ? ", -material_r"
-                                             : ", -material_hill") +
-                           (m.name == "custom" ? std::string() : ", -material " + m.name);
+  const std::string from =
+    std::string(m.law == FlowLaw::Table ? "the first stress of -material_table" : "-material_sy") +
+    (!hill            ? ""
+     : m.hill.empty() ? ", -material_r"
+                      : ", -material_hill") +
+    (m.name == "custom" ? std::string() : ", -material " + m.name);
   // sigma_eq of unit tension along the axes (1 axial, 2 hoop, 3 radial): Hill's sqrt(G + H), ...; von Mises 1.
   std::array<double, 3> unit = {1, 1, 1};
   if (const auto h = HillCoefficients(m))
@@ -120,7 +121,7 @@ PetscErrorCode CheckUnits(MPI_Comm comm, const MaterialParams &m)
   std::string why;
   char msg[512] = "";
   PetscFunctionBeginUser;
-  if (m.law != "elastic") curve = MakeHardening(m), why = ModulusAgainstYield(m, *curve);
+  if (m.law != FlowLaw::Elastic) curve = MakeHardening(m), why = ModulusAgainstYield(m, *curve);
   if (why.empty() && m.E > kMaxModulus)
     snprintf(msg, sizeof msg,
              "-material_e %g: stiffer than any solid (diamond: 1.05e6 MPa); give E in MPa (aluminum 70000, steel "
@@ -129,7 +130,7 @@ PetscErrorCode CheckUnits(MPI_Comm comm, const MaterialParams &m)
   const double hardened = curve ? curve->YieldStress(kHardenedCheckStrain) : 0;
   if (why.empty() && !msg[0] && !(hardened <= m.E / kMinHardenedRatio)) {
     char k[64] = "-material_table";
-    if (m.law != "table") snprintf(k, sizeof k, "-material_k %g", m.K);
+    if (m.law != FlowLaw::Table) snprintf(k, sizeof k, "-material_k %g", m.K);
     snprintf(msg, sizeof msg,
              "%s: the flow stress at a plastic strain of %g is %g MPa, above E / %g = %g MPa (metals stay below E / "
              "50); give it in MPa",
@@ -160,9 +161,9 @@ PetscErrorCode CheckMaterial(MPI_Comm comm, const MaterialParams &m)
              "-material_n %g: the hardening exponent must lie in (0, 1]", m.n);
   PetscCheck(m.density > 0 && std::isfinite(m.density), comm, PETSC_ERR_USER_INPUT,
              "-material_density %g: the mass density must be positive (t/mm^3; aluminum 2.70e-9)", m.density);
-  if (m.law == "swift")
+  if (m.law == FlowLaw::Swift)
     PetscCheck(m.K > 0, comm, PETSC_ERR_USER_INPUT, "-material_k %g: the Swift law needs K > 0", m.K);
-  if (m.law == "table") {
+  if (m.law == FlowLaw::Table) {
     const auto &t = m.table;
     PetscCheck(t.size() >= 2 && t.size() % 2 == 0, comm, PETSC_ERR_USER_INPUT,
                "-material_table: give pairs ep,sigma_y (at least one pair) for -material_law table");

@@ -11,7 +11,6 @@ namespace tf {
 
 namespace {
 
-const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
 // Flow-curve points a file may tabulate (ep, sigma pairs), as -material_table on the command line.
 constexpr PetscInt kMaxTable = 200;
 constexpr const char *kSuffix = ".opts";
@@ -66,19 +65,21 @@ PetscErrorCode ReadFile(MPI_Comm comm, const std::string &file, const std::strin
   PetscCall(PetscOptionsCreate(&f.o));
   PetscCall(PetscOptionsInsertString(f.o, text.c_str()));
   PetscCall(PetscOptionsGetString(f.o, nullptr, "-material_law", word, sizeof word, &set));
-  p.law = word;
-  PetscCheck(std::find(std::begin(kLaws), std::end(kLaws), p.law) != std::end(kLaws), comm, PETSC_ERR_USER_INPUT,
+  const auto law = std::find_if(std::begin(kFlowLawWords), std::end(kFlowLawWords),
+                                [&](const char *w) { return std::string(w) == word; });
+  PetscCheck(law != std::end(kFlowLawWords), comm, PETSC_ERR_USER_INPUT,
              "-material %s: -material_law %s: allowed are elastic, ludwik, swift, table", file.c_str(), word);
+  p.law = static_cast<FlowLaw>(law - std::begin(kFlowLawWords));
   PetscCall(RequireReal(comm, f.o, file, "-material_e", p.E));
   PetscCall(RequireReal(comm, f.o, file, "-material_nu", p.nu));
   PetscCall(RequireReal(comm, f.o, file, "-material_density", p.density));
-  if (p.law != "elastic") PetscCall(RequireReal(comm, f.o, file, "-material_sy", p.sy));
-  if (p.law == "ludwik" || p.law == "swift") {
+  if (p.law != FlowLaw::Elastic) PetscCall(RequireReal(comm, f.o, file, "-material_sy", p.sy));
+  if (p.law == FlowLaw::Ludwik || p.law == FlowLaw::Swift) {
     PetscCall(RequireReal(comm, f.o, file, "-material_k", p.K));
     PetscCall(RequireReal(comm, f.o, file, "-material_n", p.n));
   }
   p.table.clear();
-  if (p.law == "table") {
+  if (p.law == FlowLaw::Table) {
     PetscReal table[kMaxTable];
     PetscInt n = kMaxTable;
     PetscCall(PetscOptionsGetRealArray(f.o, nullptr, "-material_table", table, &n, &set));
@@ -107,7 +108,7 @@ PetscErrorCode ReadFile(MPI_Comm comm, const std::string &file, const std::strin
   PetscCheck(stray.empty(), comm, PETSC_ERR_USER_INPUT,
              "-material %s: %s is not a constant of its -material_law %s (a material file sets -material_e, _nu, "
              "_density, _law, the law's _sy, _k, _n or _table, and _kinematic, _r or _hill)",
-             file.c_str(), stray.c_str(), p.law.c_str());
+             file.c_str(), stray.c_str(), word);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

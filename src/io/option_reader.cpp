@@ -172,22 +172,6 @@ PetscErrorCode OptionReader::CheckUnknown(MPI_Comm comm) const
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
-                          std::initializer_list<const char *> words, std::string &value)
-{
-  const char *const *list = words.begin();
-  const PetscInt n = (PetscInt)words.size();
-  PetscInt choice = 0;
-
-  PetscFunctionBeginUser;
-  read.Note(name, help);
-  for (PetscInt k = 0; k < n; ++k)
-    if (value == list[k]) choice = k;
-  PetscCall(PetscOptionsEList(name, help, "tubeform", list, n, list[choice], &choice, nullptr));
-  value = list[choice];
-  PetscFunctionReturn(0);
-}
-
 // A list of at most `max` numbers; `value` is kept when the option is not given.
 PetscErrorCode RealList(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
                         PetscInt max, std::vector<double> &value)

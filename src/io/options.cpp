@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <initializer_list>
 
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/friction_options.hpp"
@@ -15,7 +14,6 @@ namespace tf {
 
 namespace {
 const char *const kElements[] = {"q4", "bbar", "qm6", "qm6bar", "auto"};
-const char *const kLaws[] = {"elastic", "ludwik", "swift", "table"};
 // Flow-curve points -material_table takes at most (ep, sigma pairs).
 constexpr PetscInt kMaxTable = 200;
 
@@ -95,8 +93,6 @@ PetscErrorCode ReadScene(MPI_Comm comm, const std::vector<SceneOptions> &scenes,
 // The material: named or its constants, its law and hardening.
 PetscErrorCode ReadMaterial(MPI_Comm comm, OptionReader &read, Options &opt)
 {
-  PetscInt choice;
-
   PetscFunctionBeginUser;
   TF_OPTIONS_BEGIN(comm, "tubeform: material");
   {
@@ -117,14 +113,9 @@ PetscErrorCode ReadMaterial(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscCall(read.Real(PetscOptionsObject, "-material_n", "Hardening exponent n", opt.material.n));
   PetscCall(read.Real(PetscOptionsObject, "-material_density",
                       "Mass density (t/mm^3; aluminum 2.70e-9), used by -dynamics implicit", opt.material.density));
-  choice = 1;
-  for (PetscInt k = 0; k < 4; ++k)
-    if (opt.material.law == kLaws[k]) choice = k;
-  read.Note("-material_law");
-  PetscCall(PetscOptionsEList("-material_law",
-                              "Flow curve: elastic (no yield), ludwik sy+K ep^n, swift K(ep0+ep)^n, table", "tubeform",
-                              kLaws, 4, kLaws[choice], &choice, nullptr));
-  opt.material.law = kLaws[choice];
+  PetscCall(ChooseWord(PetscOptionsObject, read, "-material_law",
+                       "Flow curve: elastic (no yield), ludwik sy+K ep^n, swift K(ep0+ep)^n, table", kFlowLawWords,
+                       opt.material.law));
   PetscCall(RealList(PetscOptionsObject, read, "-material_table",
                      "Flow curve for -material_law table: ep0,sy0,ep1,sy1,... (ep0 = 0, ep increasing)", kMaxTable,
                      opt.material.table));
@@ -143,7 +134,7 @@ PetscErrorCode ReadMaterial(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscCall(ChooseWord(PetscOptionsObject, read, "-material_axes",
                        "The material's radial axis for -material_r/-material_hill: tube (from the tube's centre to "
                        "the point, turning with the material) or fixed (at -material_axes_angle)",
-                       {"tube", "fixed"}, opt.material.axes));
+                       kMaterialAxesWords, opt.material.axes));
   {
     double degrees = opt.material.axes_angle * 180 / M_PI;
     PetscCall(read.Real(PetscOptionsObject, "-material_axes_angle",
@@ -153,7 +144,7 @@ PetscErrorCode ReadMaterial(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscCall(ChooseWord(PetscOptionsObject, read, "-hardening",
                        "isotropic (the flow curve expands the yield surface), or chaboche (the backstresses of "
                        "-material_kinematic move it; the same monotonic flow curve)",
-                       {"isotropic", "chaboche"}, opt.material.hardening));
+                       kHardeningWords, opt.material.hardening));
   TF_OPTIONS_END();
   PetscFunctionReturn(PETSC_SUCCESS);
 }

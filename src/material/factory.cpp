@@ -10,9 +10,9 @@ namespace tf {
 std::unique_ptr<Hardening> MakeHardening(const MaterialParams &m)
 {
   std::unique_ptr<Hardening> h;
-  if (m.law == "ludwik")
+  if (m.law == FlowLaw::Ludwik)
     h = std::make_unique<LudwikHardening>(m.sy, m.K, m.n);
-  else if (m.law == "swift")
+  else if (m.law == FlowLaw::Swift)
     h = std::make_unique<SwiftHardening>(m.sy, m.K, m.n);
   else {
     std::vector<double> ep, sy;
@@ -35,8 +35,8 @@ std::optional<std::array<double, 4>> HillCoefficients(const MaterialParams &m)
 
 LawKind LawOf(const MaterialParams &m)
 {
-  if (m.law == "elastic") return LawKind::Elastic;
-  if (m.hardening == "chaboche" && !m.kinematic.empty()) return LawKind::KinematicJ2;
+  if (m.law == FlowLaw::Elastic) return LawKind::Elastic;
+  if (m.hardening == HardeningRule::Chaboche && !m.kinematic.empty()) return LawKind::KinematicJ2;
   return HillCoefficients(m) ? LawKind::Hill : LawKind::IsotropicJ2;
 }
 

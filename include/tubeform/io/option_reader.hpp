@@ -7,7 +7,6 @@
 
 #include <petscsys.h>
 
-#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -46,10 +45,8 @@ private:
   std::vector<KnownOption> names_; // with the dash
 };
 
-// One of a list of words for a string-valued option; the current value is the default.
-PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
-                          std::initializer_list<const char *> words, std::string &value);
-// The same for an option whose value is an enum E, `words` its words in its enumerators' order.
+// One of a list of words for an option whose value is an enum E, `words` its words in its enumerators' order; the
+// current value is the default.
 template <class E, size_t N>
 PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name, const char *help,
                           const char *const (&words)[N], E &value)

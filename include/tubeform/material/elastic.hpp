@@ -45,24 +45,37 @@ inline constexpr const char *kPlasticUpdateWords[] = {"tangent", "radial"};
 
 // Material constants: the paper's aluminum (its Table 1, docs/scenes.md) until a
 // material file (options/materials/, io/material_library.hpp) or options set them.
+// The flow curve (-material_law), the hardening rule (-hardening) and where the anisotropy's radial axis points
+// (-material_axes), each with its words in its enumerators' order.
+enum class FlowLaw { Elastic, Ludwik, Swift, Table };
+inline constexpr const char *kFlowLawWords[] = {"elastic", "ludwik", "swift", "table"};
+enum class HardeningRule { Isotropic, Chaboche };
+inline constexpr const char *kHardeningWords[] = {"isotropic", "chaboche"};
+enum class MaterialAxes { Tube, Fixed };
+inline constexpr const char *kMaterialAxesWords[] = {"tube", "fixed"};
+static_assert(std::size(kFlowLawWords) == static_cast<size_t>(FlowLaw::Table) + 1 &&
+                std::size(kHardeningWords) == static_cast<size_t>(HardeningRule::Chaboche) + 1 &&
+                std::size(kMaterialAxesWords) == static_cast<size_t>(MaterialAxes::Fixed) + 1,
+              "a word for each enumerator, in order");
+
 struct MaterialParams {
   std::string name = "aluminum";
-  std::string law = "ludwik";
+  FlowLaw law = FlowLaw::Ludwik;
   double E = 75000, nu = 0.34, sy = 165.3, K = 673.5, n = 0.927;
   double density = 2.70e-9;  // t/mm^3 (N, mm, s units): only -dynamics implicit uses it
-  std::vector<double> table; // ep0, sy0, ep1, sy1, ... for law "table"
-  // isotropic, or chaboche: the flow curve above stays the monotonic one and
+  std::vector<double> table; // ep0, sy0, ep1, sy1, ... for the table law
+  // Isotropic, or Chaboche: the flow curve above stays the monotonic one and
   // the backstresses (C1, gamma1, C2, gamma2, ...: Armstrong-Frederick with
   // one pair, gamma 0 linear) take their share of it (material/kinematic.hpp).
-  std::string hardening = "isotropic";
+  HardeningRule hardening = HardeningRule::Isotropic;
   std::vector<double> kinematic;
   // Hill 1948 in the tube's axes (1 axial, 2 hoop, 3 radial): F, G, H, L, or
   // the Lankford coefficients r0, r45, r90 they follow from (both empty, or
   // every r = 1: von Mises).
   std::vector<double> hill, lankford;
-  // Where the material's radial axis points at the start: "tube" (from the
-  // tube's centre, the origin, to the point) or "fixed" (at axes_angle, rad).
-  std::string axes = "tube";
+  // Where the material's radial axis points at the start: Tube (from the
+  // tube's centre, the origin, to the point) or Fixed (at axes_angle, rad).
+  MaterialAxes axes = MaterialAxes::Tube;
   double axes_angle = 0;
 };
 
