@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -43,8 +44,6 @@ struct UpdateInfo {
 enum class PlasticUpdate { Tangent, Radial };
 inline constexpr const char *kPlasticUpdateWords[] = {"tangent", "radial"};
 
-// Material constants: the paper's aluminum (its Table 1, docs/scenes.md) until a
-// material file (options/materials/, io/material_library.hpp) or options set them.
 // The flow curve (-material_law), the hardening rule (-hardening) and where the anisotropy's radial axis points
 // (-material_axes), each with its words in its enumerators' order.
 enum class FlowLaw { Elastic, Ludwik, Swift, Table };
@@ -58,6 +57,8 @@ static_assert(std::size(kFlowLawWords) == static_cast<size_t>(FlowLaw::Table) + 
                 std::size(kMaterialAxesWords) == static_cast<size_t>(MaterialAxes::Fixed) + 1,
               "a word for each enumerator, in order");
 
+// Material constants: the paper's aluminum (its Table 1, docs/scenes.md) until a
+// material file (options/materials/, io/material_library.hpp) or options set them.
 struct MaterialParams {
   std::string name = "aluminum";
   FlowLaw law = FlowLaw::Ludwik;
