@@ -11,8 +11,6 @@ namespace tf {
 
 namespace {
 
-// Flow-curve points a file may tabulate (ep, sigma pairs), as -material_table on the command line.
-constexpr PetscInt kMaxTable = 200;
 constexpr const char *kSuffix = ".opts";
 
 bool EndsWith(const std::string &s, const std::string &tail)
@@ -67,8 +65,10 @@ PetscErrorCode ReadFile(MPI_Comm comm, const std::string &file, const std::strin
   PetscCall(PetscOptionsGetString(f.o, nullptr, "-material_law", word, sizeof word, &set));
   const auto law = std::find_if(std::begin(kFlowLawWords), std::end(kFlowLawWords),
                                 [&](const char *w) { return std::string(w) == word; });
+  std::string allowed;
+  for (const char *w : kFlowLawWords) allowed += (allowed.empty() ? "" : ", ") + std::string(w);
   PetscCheck(law != std::end(kFlowLawWords), comm, PETSC_ERR_USER_INPUT,
-             "-material %s: -material_law %s: allowed are elastic, ludwik, swift, table", file.c_str(), word);
+             "-material %s: -material_law %s: allowed are %s", file.c_str(), word, allowed.c_str());
   p.law = static_cast<FlowLaw>(law - std::begin(kFlowLawWords));
   PetscCall(RequireReal(comm, f.o, file, "-material_e", p.E));
   PetscCall(RequireReal(comm, f.o, file, "-material_nu", p.nu));
@@ -80,8 +80,8 @@ PetscErrorCode ReadFile(MPI_Comm comm, const std::string &file, const std::strin
   }
   p.table.clear();
   if (p.law == FlowLaw::Table) {
-    PetscReal table[kMaxTable];
-    PetscInt n = kMaxTable;
+    PetscReal table[kMaxTableNumbers];
+    PetscInt n = kMaxTableNumbers;
     PetscCall(PetscOptionsGetRealArray(f.o, nullptr, "-material_table", table, &n, &set));
     PetscCheck(set && n >= 2, comm, PETSC_ERR_USER_INPUT, "-material %s: -material_law table needs -material_table",
                file.c_str());

@@ -14,8 +14,6 @@ namespace tf {
 
 namespace {
 const char *const kElements[] = {"q4", "bbar", "qm6", "qm6bar", "auto"};
-// Flow-curve points -material_table takes at most (ep, sigma pairs).
-constexpr PetscInt kMaxTable = 200;
 
 // The scene, the tube and its mesh and element.
 PetscErrorCode ReadScene(MPI_Comm comm, const std::vector<SceneOptions> &scenes, OptionReader &read, Options &opt)
@@ -117,8 +115,8 @@ PetscErrorCode ReadMaterial(MPI_Comm comm, OptionReader &read, Options &opt)
                        "Flow curve: elastic (no yield), ludwik sy+K ep^n, swift K(ep0+ep)^n, table", kFlowLawWords,
                        opt.material.law));
   PetscCall(RealList(PetscOptionsObject, read, "-material_table",
-                     "Flow curve for -material_law table: ep0,sy0,ep1,sy1,... (ep0 = 0, ep increasing)", kMaxTable,
-                     opt.material.table));
+                     "Flow curve for -material_law table: ep0,sy0,ep1,sy1,... (ep0 = 0, ep increasing)",
+                     kMaxTableNumbers, opt.material.table));
   PetscCall(RealList(PetscOptionsObject, read, "-material_kinematic",
                      "Backstresses for -hardening chaboche: C1,gamma1[,C2,gamma2[,C3,gamma3]] (MPa, -; gamma 0: "
                      "linear); their share of the flow curve moves to the kinematic part",

@@ -57,6 +57,10 @@ static_assert(std::size(kFlowLawWords) == static_cast<size_t>(FlowLaw::Table) + 
                 std::size(kMaterialAxesWords) == static_cast<size_t>(MaterialAxes::Fixed) + 1,
               "a word for each enumerator, in order");
 
+// The numbers a flow-curve table (-material_table, on the command line or in a material file) holds at most: 100
+// pairs of ep, sigma, far more than a measured curve needs.
+inline constexpr int kMaxTableNumbers = 200;
+
 // Material constants: the paper's aluminum (its Table 1, docs/scenes.md) until a
 // material file (options/materials/, io/material_library.hpp) or options set them.
 struct MaterialParams {
