@@ -168,8 +168,9 @@ PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &op
     "-die_path (or its turns or pivot) means path, -die_force other than 0 force (docs/dies.md)",
     std::size(kDieMotionWords)};
   PetscFunctionBeginUser;
-  opt.die_motion.spec.tool = "the " + opt.scene + " scene's upper die";
-  PetscCall(ReadUpperMotion(comm, read, block, opt.help, opt.die_motion));
+  DieMotion &motion = opt.passes[0].dies.motion;
+  motion.spec.tool = "the " + opt.scene + " scene's upper die";
+  PetscCall(ReadUpperMotion(comm, read, block, opt.help, motion));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -177,7 +178,7 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
-    PassSpec &p = opt.more_passes[pass - 1];
+    PassSpec &p = opt.passes[pass];
     const UpperMotionBlock block{
       Formatted("pass%d_die_", pass + 1), Formatted("tubeform: pass %d upper die motion", pass + 1),
       pass > 1 ? Formatted("squaring: pass %d's, as -pass2_die_motion", pass + 1)
@@ -200,12 +201,12 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
         read.Note(("-" + block.prefix + name).c_str(), block.help.c_str());
       continue;
     }
-    p.motion.spec.tool = "the " + PassOrdinal(pass) + " pass's upper die";
-    PetscCall(ReadUpperMotion(comm, read, block, opt.help, p.motion));
-    if (opt.help || p.motion.kind != DieMotionKind::Path) continue;
+    p.dies.motion.spec.tool = "the " + PassOrdinal(pass) + " pass's upper die";
+    PetscCall(ReadUpperMotion(comm, read, block, opt.help, p.dies.motion));
+    if (opt.help || p.dies.motion.kind != DieMotionKind::Path) continue;
     // Its stroke: where its path ends (U = -y / 2 of its last point, from where it starts).
     const std::string path = "-" + block.prefix + "path";
-    const double y = p.motion.spec.points.back()[1];
+    const double y = p.dies.motion.spec.points.back()[1];
     PetscCheck(p.stroke == 0, comm, PETSC_ERR_USER_INPUT,
                "%s: in place of %s (the pass ends at U = -y / 2 of its last point); give one of them", path.c_str(),
                PassOption(pass, "stroke").c_str());

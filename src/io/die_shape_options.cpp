@@ -38,12 +38,12 @@ PetscErrorCode ReadDieChoice(PetscOptionItems *PetscOptionsObject, OptionReader 
 }
 
 PetscErrorCode ReadDrawingChoice(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *option,
-                                 const char *help, DieChoice &shape)
+                                 const char *help, DieShape &shape)
 {
   std::string file = shape.spec.file;
   PetscFunctionBeginUser;
   PetscCall(read.String(PetscOptionsObject, option, help, file));
-  if (file != shape.spec.file) shape = DrawingChoice(file);
+  if (file != shape.spec.file) shape.kind = DrawingChoice(file).kind, shape.spec.file = file;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -71,7 +71,7 @@ std::string ShapeWord(const DieChoice &shape)
 
 PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 {
-  DieShape &die = opt.die_shape;
+  DieShape &die = opt.passes[0].dies.upper;
   const ShapeKind *v = FindShapeKind("v");
   std::string help = "squaring: the upper die's right half from a DXF file (*.dxf) or a text profile of lines and arcs "
                      "(docs/dies.md) in place of the V-die of ";
@@ -100,13 +100,13 @@ PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt
   PetscCall(ReadWordShape(comm, read, "-lower_die",
                           "tool scenes: the lower die: mirror (of the upper one), flat (a floor at y = -Ro), or a "
                           "profile file (*.dxf or text) drawn as an upper die, mirrored below the tube",
-                          "tubeform: lower die shape", false, opt.lower_die_shape));
+                          "tubeform: lower die shape", false, opt.passes[0].dies.lower));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 {
-  std::string word = ShapeWord(opt.side_die_shape);
+  DieSet &dies = opt.passes[0].dies;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "tubeform: side die shape", "tubeform");
@@ -115,30 +115,29 @@ PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
                       "tool scenes with side dies: force control: each side die presses with a force rising from 0 to "
                       "this (N/mm, on the whole tube) over the press, its travel an unknown of each increment (0: "
                       "they move by the stroke)",
-                      opt.side_force));
-  PetscCall(read.String(PetscOptionsObject, "-side_die",
-                        "tool scenes: side dies pressing by the stroke U (or with -side_force): none, mirror (the "
-                        "upper die turned to the side), flat (a plate), or a profile file drawn as an upper die "
-                        "(docs/dies.md)",
-                        word));
+                      dies.side_force));
+  PetscCall(ReadDieChoice(PetscOptionsObject, read, "-side_die",
+                          "tool scenes: side dies pressing by the stroke U (or with -side_force): none, mirror (the "
+                          "upper die turned to the side), flat (a plate), or a profile file drawn as an upper die "
+                          "(docs/dies.md)",
+                          true, dies.side)); // (as a later pass's -pass<N>_side_die)
   block.Release();
   PetscOptionsEnd();
-  opt.side_die_shape = ShapeChoice(word, true);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt)
 {
+  const DieSet &dies = FirstDies(opt);
   PetscFunctionBeginUser;
-  PetscCall(CheckSideDies(comm, opt, "-side_die", ShapeWord(opt.side_die_shape))); // (passes_check.cpp)
-  PetscCheck(opt.side_force >= 0 && std::isfinite(opt.side_force), comm, PETSC_ERR_USER_INPUT,
+  PetscCall(CheckSideDies(comm, opt, "-side_die", ShapeWord(dies.side))); // (passes_check.cpp)
+  PetscCheck(dies.side_force >= 0 && std::isfinite(dies.side_force), comm, PETSC_ERR_USER_INPUT,
              "-side_force %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",
-             opt.side_force);
-  PetscCheck(opt.side_force == 0 || (opt.side_die_shape.kind != "none" && PassCount(opt) == 1), comm,
-             PETSC_ERR_USER_INPUT,
+             dies.side_force);
+  PetscCheck(dies.side_force == 0 || (dies.side.kind != "none" && PassCount(opt) == 1), comm, PETSC_ERR_USER_INPUT,
              "-side_force %g: force-controlled side dies need -side_die (mirror, flat or a file) and one pass (not "
              "with -pass2_stroke)",
-             opt.side_force);
+             dies.side_force);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -20,22 +20,24 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
-  bool asked = opt.lower_die_shape.kind != "mirror" || !LowerDieMoves(opt, "mirror") ||
-               opt.model.part != TubeModel::Auto || !DieMoves(opt, DieMotionKind::Stroke) ||
-               opt.side_die_shape.kind != "none" || opt.side_force != 0 || opt.model.die_offset != 0 ||
-               opt.model.full_hold != FullHold::Auto;
-  for (const PassSpec &p : opt.more_passes)
-    asked =
-      asked || p.stroke != 0 || p.turn != 0 || !p.upper.kind.empty() || !p.lower.kind.empty() || !p.side.kind.empty();
+  const DieSet &first = FirstDies(opt);
+  bool asked = first.lower.kind != "mirror" || !LowerDieMoves(opt, "mirror") || opt.model.part != TubeModel::Auto ||
+               !DieMoves(first, DieMotionKind::Stroke) || first.side.kind != "none" || first.side_force != 0 ||
+               opt.model.die_offset != 0 || opt.model.full_hold != FullHold::Auto;
+  for (int pass = 1; pass < kMaxPasses; ++pass) {
+    const PassSpec &p = LaterPass(opt, pass);
+    asked = asked || p.stroke != 0 || p.turn != 0 || !p.dies.upper.kind.empty() || !p.dies.lower.kind.empty() ||
+            !p.dies.side.kind.empty();
+  }
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
     "-lower_die, -lower_die_motion, -model, -pass<N>_*, -die_motion, -die_force, -die_offset, -die_path, -side_die, "
     "-side_force, -full_hold: "
     "the %s scene presses with no dies (these are the squaring and flattening scenes' options)",
     opt.scene.c_str());
-  if (DieMoves(opt, DieMotionKind::Force)) {
+  if (DieMoves(first, DieMotionKind::Force)) {
     // Force control drives one die; the stroke is its outcome. (The force itself: the force kind's reader.)
-    const double force = DieForce(opt);
+    const double force = DieForce(first);
     PetscCheck(QuarterModel(opt) || LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
                "-die_force %g: with the half or full model the lower die must stay (-lower_die_motion fixed); a "
                "lower die moving by the upper one's unknown stroke is not available",
@@ -57,13 +59,14 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 // by the stroke it ends at.
 PetscErrorCode CheckDiePath(MPI_Comm comm, Options &opt)
 {
-  const MotionSpec &path = opt.die_motion.spec;
+  const MotionSpec &path = FirstDies(opt).motion.spec;
   PetscFunctionBeginUser;
   // The upper die through the points in turn, relative to a lower die that stays (passes_check.cpp); one pass by
   // the stroke.
   PetscCall(CheckUpperPath(comm, opt, path, "-die_path"));
   PetscCheck(opt.stroke.path.empty() && opt.stroke.corner_radius <= 0 && PassCount(opt) == 1 &&
-               opt.side_die_shape.kind == "none" && opt.release.unload != Unload::Withdraw && opt.model.die_offset == 0,
+               FirstDies(opt).side.kind == "none" && opt.release.unload != Unload::Withdraw &&
+               opt.model.die_offset == 0,
              comm, PETSC_ERR_USER_INPUT,
              "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, "
              "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways is "
@@ -102,7 +105,7 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckDies(comm, opt));
-  if (DieMoves(opt, DieMotionKind::Path)) PetscCall(CheckDiePath(comm, opt));
+  if (DieMoves(FirstDies(opt), DieMotionKind::Path)) PetscCall(CheckDiePath(comm, opt));
   PetscCall(CheckLowerDieMotion(comm, opt));
   PetscCall(CheckPassesAndHolds(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);

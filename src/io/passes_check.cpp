@@ -16,9 +16,9 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
   PetscFunctionBeginUser;
   if (value == "none") PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
-  PetscCheck(!DieMoves(opt, DieMotionKind::Force) && opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
-             "%s %s: side dies press by the stroke: not with -die_force or -unload withdraw", name.c_str(),
-             value.c_str());
+  PetscCheck(!DieMoves(FirstDies(opt), DieMotionKind::Force) && opt.release.unload != Unload::Withdraw, comm,
+             PETSC_ERR_USER_INPUT, "%s %s: side dies press by the stroke: not with -die_force or -unload withdraw",
+             name.c_str(), value.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -53,7 +53,7 @@ namespace {
 // axis (sideways or turned), held by the rotation hold in the full model.
 PetscErrorCode CheckPassPath(MPI_Comm comm, const Options &opt, int pass)
 {
-  const MotionSpec &path = LaterPass(opt, pass).motion.spec;
+  const MotionSpec &path = LaterPass(opt, pass).dies.motion.spec;
   const std::string name = PassOption(pass, "die_path");
   bool side = false;
   PetscFunctionBeginUser;
@@ -74,7 +74,7 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   const PassSpec &p = LaterPass(opt, pass);
   const std::string stroke = PassOption(pass, "stroke"), ordinal = PassOrdinal(pass);
   PetscFunctionBeginUser;
-  PetscCheck(opt.scene == "squaring" || p.upper.kind.empty(), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(opt.scene == "squaring" || p.dies.upper.kind.empty(), comm, PETSC_ERR_USER_INPUT,
              "%s: the %s scene presses with plates, not dies", PassOption(pass, "die_profile").c_str(),
              opt.scene.c_str());
   PetscCheck(p.stroke >= 0 && std::isfinite(p.stroke), comm, PETSC_ERR_USER_INPUT,
@@ -86,12 +86,13 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(p.stroke == 0 || pass == 1 || LaterPass(opt, pass - 1).stroke > 0, comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", stroke.c_str(), p.stroke, ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
-  PetscCheck(p.stroke > 0 || (p.upper.kind.empty() && p.lower.kind.empty() && p.side.kind.empty()), comm,
+  PetscCheck(p.stroke > 0 || (p.dies.upper.kind.empty() && p.dies.lower.kind.empty() && p.dies.side.kind.empty()), comm,
              PETSC_ERR_USER_INPUT, "%s, %s, %s: give %s for the %s pass", PassOption(pass, "die_profile").c_str(),
              PassOption(pass, "lower_die").c_str(), PassOption(pass, "side_die").c_str(), stroke.c_str(),
              ordinal.c_str());
-  if (!p.side.kind.empty()) PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), ShapeWord(p.side)));
-  if (p.motion.kind == DieMotionKind::Path) PetscCall(CheckPassPath(comm, opt, pass));
+  if (!p.dies.side.kind.empty())
+    PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), ShapeWord(p.dies.side)));
+  if (p.dies.motion.kind == DieMotionKind::Path) PetscCall(CheckPassPath(comm, opt, pass));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

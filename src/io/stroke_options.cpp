@@ -39,7 +39,7 @@ PetscErrorCode CheckStrokePath(MPI_Comm comm, Options &opt)
   }
   PetscCheck(s.path.back() > 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_path: the last stroke is the press's final one and must be positive");
-  PetscCheck(!DieMoves(opt, DieMotionKind::Force) && s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(!DieMoves(FirstDies(opt), DieMotionKind::Force) && s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_path: not with -die_force or -stroke_corner_radius");
   s.u = s.path.back();
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -54,9 +54,9 @@ PetscErrorCode CheckStrokeOptions(MPI_Comm comm, Options &opt)
              "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
              s.corner_radius);
   PetscCheck(
-    opt.lower_die_shape.kind == "mirror" || s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+    FirstDies(opt).lower.kind == "mirror" || s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
     "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
-    s.corner_radius, ShapeWord(opt.lower_die_shape).c_str());
+    s.corner_radius, ShapeWord(FirstDies(opt).lower).c_str());
   if (!s.path.empty()) PetscCall(CheckStrokePath(comm, opt));
   PetscCheck(s.corner_radius >= 0, comm, PETSC_ERR_USER_INPUT, "-stroke_corner_radius %g: must be non-negative",
              s.corner_radius);

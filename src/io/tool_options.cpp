@@ -17,15 +17,15 @@ PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader
   PetscCall(ReadDrawingChoice(PetscOptionsObject, read, "-pass2_die_profile",
                               "squaring: the second pass's upper die from a profile file (default: the first pass's "
                               "die)",
-                              pass.upper));
+                              pass.dies.upper));
   PetscCall(ReadDieChoice(PetscOptionsObject, read, "-pass2_lower_die",
                           "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first "
                           "pass's -lower_die)",
-                          false, pass.lower));
+                          false, pass.dies.lower));
   PetscCall(ReadDieChoice(PetscOptionsObject, read, "-pass2_side_die",
                           "squaring: the second pass's side dies: none, mirror, flat or a profile file (default: the "
                           "first pass's -side_die)",
-                          true, pass.side));
+                          true, pass.dies.side));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_turn",
                       "squaring: the tube turned counter-clockwise by this many degrees (-360 to 360) before the "
                       "second pass: its dies press along the turned axis (not a multiple of 90: the full model, "
@@ -56,9 +56,11 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(read.Real(PetscOptionsObject, stroke.c_str(), (help + "stroke").c_str(), pass.stroke));
-  PetscCall(ReadDrawingChoice(PetscOptionsObject, read, profile.c_str(), (help + "die_profile").c_str(), pass.upper));
-  PetscCall(ReadDieChoice(PetscOptionsObject, read, lower.c_str(), (help + "lower_die").c_str(), false, pass.lower));
-  PetscCall(ReadDieChoice(PetscOptionsObject, read, side.c_str(), (help + "side_die").c_str(), true, pass.side));
+  PetscCall(
+    ReadDrawingChoice(PetscOptionsObject, read, profile.c_str(), (help + "die_profile").c_str(), pass.dies.upper));
+  PetscCall(
+    ReadDieChoice(PetscOptionsObject, read, lower.c_str(), (help + "lower_die").c_str(), false, pass.dies.lower));
+  PetscCall(ReadDieChoice(PetscOptionsObject, read, side.c_str(), (help + "side_die").c_str(), true, pass.dies.side));
   PetscCall(
     read.Real(PetscOptionsObject, turn.c_str(), (help + "turn (from the pass before's press)").c_str(), pass.turn));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -69,9 +71,9 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(ReadSecondPass(PetscOptionsObject, read, opt.more_passes[0]));
+  PetscCall(ReadSecondPass(PetscOptionsObject, read, opt.passes[1]));
   for (int number = 3; number <= kMaxPasses; ++number)
-    PetscCall(ReadLaterPass(PetscOptionsObject, read, number, opt.more_passes[number - 2]));
+    PetscCall(ReadLaterPass(PetscOptionsObject, read, number, opt.passes[number - 1]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

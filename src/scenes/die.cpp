@@ -206,7 +206,7 @@ TurnMap PassTurn(const Options &opt, int pass, bool half, bool full)
 PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring, double deepest)
 {
   PetscFunctionBeginUser;
-  if (!DieMoves(opt, DieMotionKind::Force))
+  if (!DieMoves(FirstDies(opt), DieMotionKind::Force))
     PetscCall(CheckDieReach(comm, opt, DiesOfPass(opt, 0), squaring, deepest, "-stroke"));
   for (int pass = 1; pass < PassCount(opt); ++pass)
     PetscCall(CheckDieReach(comm, opt, DiesOfPass(opt, pass), squaring, LaterPass(opt, pass).stroke,
@@ -232,7 +232,8 @@ PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, bool squaring, d
   PetscCheck(stroke < reach, comm, PETSC_ERR_NOT_CONVERGED,
              "-die_force %g: the die has come down to U = %.4g mm, where %s (U = %.4g mm): the tube carries no more "
              "in this model",
-             DieForce(o), stroke, squaring ? "the dies close on the tube or meet" : "the ring's walls meet", reach);
+             DieForce(FirstDies(o)), stroke, squaring ? "the dies close on the tube or meet" : "the ring's walls meet",
+             reach);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -94,7 +94,7 @@ PetscErrorCode SetUpperMotion(MPI_Comm comm, const char *option, const DieMotion
 PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, size_t first_side, std::vector<Tool> &tools)
 {
   PetscFunctionBeginUser;
-  for (size_t k = first_side; opt.side_force > 0 && k < tools.size(); ++k) {
+  for (size_t k = first_side; FirstDies(opt).side_force > 0 && k < tools.size(); ++k) {
     MotionSpec spec;
     spec.direction = tools[k].Direction();
     PetscCall(SetMotion(comm, "-side_force", "force", spec, tools[k]));

@@ -35,13 +35,13 @@ PressScene::PressScene(const Options &opt, bool squaring)
     : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(FullModel(opt))
 {
   stroke_ = opt.stroke.corner_radius > 0
-              ? StrokeForCornerRadius(opt.tube_ro, opt.stroke.corner_radius, opt.die_shape.spec.angle)
+              ? StrokeForCornerRadius(opt.tube_ro, opt.stroke.corner_radius, FirstDies(opt).upper.spec.angle)
               : opt.stroke.u;
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
   lower_motion_ = LowerDieMotion(opt);
   passes_.resize(PassCount(opt));
   passes_[0].path =
-    DieMoves(opt, DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
+    DieMoves(FirstDies(opt), DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
   for (int k = 0; k < (int)passes_.size(); ++k) {
     Pass &p = passes_[k];
     p.stroke = k == 0 ? stroke_ : LaterPass(opt, k).stroke;
@@ -74,7 +74,7 @@ LoadPath PressScene::Path(const Options &opt) const
 
 double PressScene::ToolStroke(double lambda) const
 {
-  if (DieMoves(opt_, DieMotionKind::Force))
+  if (DieMoves(passes_[pass_].dies, DieMotionKind::Force))
     return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
   const StrokePath &path = passes_[pass_].path;
   if (pass_ > 0) return path.Stroke(std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0));
@@ -84,8 +84,9 @@ double PressScene::ToolStroke(double lambda) const
 
 double PressScene::ToolForce(double lambda) const
 {
+  const DieSet &dies = passes_[pass_].dies;
   const double model =
-    opt_.side_force > 0 ? opt_.side_force * SideDiesInModel(Part()) : DieForce(opt_) / LoadPerModelForce();
+    dies.side_force > 0 ? dies.side_force * SideDiesInModel(Part()) : DieForce(dies) / LoadPerModelForce();
   return std::min(lambda, kFirstRelease) * model; // (released: not read)
 }
 
@@ -222,7 +223,7 @@ PetscErrorCode PressScene::Load(Model &m, double lambda, double dlambda)
   }
   if (!full_) PetscCall(QuarterSymmetry(m)); // (a full model's mesh file may carry x0 or y0 sets: not held)
   // (inside the increment: its failure writes the results so far)
-  if (DieMoves(opt_, DieMotionKind::Force) && m.contact->active())
+  if (DieMoves(passes_[pass_].dies, DieMotionKind::Force) && m.contact->active())
     PetscCall(CheckForceReach(m.comm, opt_, squaring_, m.contact->tool(kUpper).stroke));
   // (the rotation hold, or released the pins: scenes/support.hpp)
   if (Support *axis = AxisSupport()) PetscCall(axis->Constrain(m, PassMap(pass_)));
@@ -281,7 +282,8 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
 double PressScene::Stroke(Model &m, double lambda) const
 {
   const double s = ToolStroke(lambda);
-  return DieMoves(opt_, DieMotionKind::Force) ? m.contact->tool(kUpper).stroke : passes_[pass_].path.U(s) - UpperBack();
+  return DieMoves(passes_[pass_].dies, DieMotionKind::Force) ? m.contact->tool(kUpper).stroke
+                                                             : passes_[pass_].path.U(s) - UpperBack();
 }
 
 std::vector<std::pair<std::string, Vec2>> PressScene::Symmetry() const

@@ -39,9 +39,9 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   bool side_dies = false;
   for (const Pass &p : passes_) side_dies = side_dies || p.side_dies;
   if (side_dies)
-    side(row, kSideStroke) = opt_.side_force > 0 ? m.contact->tool(SideDie()).stroke
-                             : pass_ > 0         ? passes_[pass_].side_from + ToolStroke(lambda)
-                                                 : row.stroke;
+    side(row, kSideStroke) = passes_[pass_].dies.side_force > 0 ? m.contact->tool(SideDie()).stroke
+                             : pass_ > 0                        ? passes_[pass_].side_from + ToolStroke(lambda)
+                                                                : row.stroke;
   if (passes_[pass_].side_dies && !unloading_) {
     // (the right side die: whole in the half and full models, its upper half in the quarter)
     // (its force along the press's x: a turned pass's side die presses along the press's -x)
@@ -68,8 +68,8 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
 std::vector<std::pair<std::string, double>> PressScene::FinalMetrics(const History &h) const
 {
   std::vector<std::pair<std::string, double>> m = PassMetrics(h);
-  const bool forced = DieMoves(opt_, DieMotionKind::Force);
-  m.push_back({forced ? "final_force_target" : "final_stroke_target", forced ? DieForce(opt_) : stroke_});
+  const bool forced = DieMoves(FirstDies(opt_), DieMotionKind::Force);
+  m.push_back({forced ? "final_force_target" : "final_stroke_target", forced ? DieForce(FirstDies(opt_)) : stroke_});
   for (size_t k = 1; k < passes_.size(); ++k)
     m.push_back({Formatted("pass%d_stroke_target", (int)k + 1), passes_[k].stroke});
   for (int k = 1; k <= pass_; ++k) // (where the upper die of each pass set up started)

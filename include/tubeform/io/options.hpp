@@ -14,6 +14,7 @@
 #include "tubeform/fe/quad.hpp"
 #include "tubeform/io/driver_params.hpp"
 #include "tubeform/io/friction_params.hpp"
+#include "tubeform/io/pass_spec.hpp"
 #include "tubeform/io/press_params.hpp"
 #include "tubeform/io/scene_params.hpp"
 #include "tubeform/material/elastic.hpp"
@@ -22,93 +23,9 @@
 
 namespace tf {
 
-// The word of an option's enum value among its words (the enumerators in their words' order: kUnloadWords, ...).
-template <class E, size_t N>
-constexpr const char *WordOf(const char *const (&words)[N], E value)
-{
-  return words[static_cast<size_t>(value)];
-}
-
 // An option tubeform reads: its name (with the dash) and its -help text.
 struct KnownOption {
   std::string name, help;
-};
-
-// The most passes a press takes (-pass2_* to -pass9_*): one digit in the options' names, and a press line's
-// stations are a handful.
-constexpr int kMaxPasses = 9;
-
-// The upper die's motion (-die_motion; docs/dies.md): a kind of the motion registry (tool/motion.hpp), its word
-// the kind's name (DieMotionName), and what its options (-die_path, -die_path_turn, -die_pivot; -die_force) give it,
-// read by the kind (io/die_motion_options.cpp). The scenes read it through UpperDie.
-enum class DieMotionKind { Stroke, Path, Force };
-struct DieMotion {
-  DieMotionKind kind = DieMotionKind::Stroke; // stroke: down by the stroke U (2 U over a fixed lower die)
-  MotionSpec spec;                            // path: its points, turns, pivot; force: its punch load (N/mm)
-};
-// The kinds' words, in DieMotionKind's order.
-constexpr const char *kDieMotionWords[] = {"stroke", "path", "force"};
-inline const char *DieMotionName(DieMotionKind kind) { return WordOf(kDieMotionWords, kind); }
-
-// The lower die's motion (-lower_die_motion; docs/dies.md): its word (mirror, fixed, path, or a kind registered after
-// the built-in ones: io/die_motion_options.cpp), the kind of the motion registry that word names (mirror: a stroke),
-// and what its options (-lower_die_*) give it, read by the kind. The scenes read it through LowerDie.
-struct LowerDieSpec {
-  std::string word = "mirror";
-  std::string kind = "stroke";
-  MotionSpec spec;
-};
-
-// The paper's die: 90 degrees between the flanks, an apex fillet of 3 mm, no parting face.
-inline ShapeSpec PaperVDie()
-{
-  ShapeSpec v;
-  v.r_apex = 3.0;
-  return v;
-}
-// The upper die's shape (docs/dies.md): a kind of the shape registry (tool/shape.hpp), the V-die unless -die_profile
-// names a file (then profile, or dxf for *.dxf: DrawingKind), and its spec: the V-die's numbers, read and checked
-// by the V kind under the prefix die_ (-die_angle, -die_r_apex, -die_u_close, -die_r_edge; read with a file too), and
-// the file (io/die_shape_options.cpp). The scenes read it through UpperDieShape.
-struct DieShape {
-  std::string kind = "v";
-  ShapeSpec spec = PaperVDie(); // (ro: the tube's, set by UpperDieShape)
-};
-// A lower or side die's shape (docs/dies.md), as its word chose it (ShapeChoice): none (no side dies), mirror (the
-// upper die's shape: a relation between the tools, not a kind), flat (the flat kind), or else a file drawn as an
-// upper die (the kind for its name, DrawingKind: profile or dxf; the file in spec.file). The scenes place and size
-// the flat plate and read the file (scenes/die.cpp); these kinds read no options of their own.
-struct DieChoice {
-  explicit DieChoice(const char *k = "") : kind(k) {}
-  std::string kind;
-  ShapeSpec spec;
-};
-// The shape a word names (-lower_die, -side_die and their passes'): mirror, flat, none where `none` (the side dies),
-// else a file. (die_shape_options.cpp)
-DieChoice ShapeChoice(const std::string &word, bool none = false);
-// The word back (the messages name it): the kind's, or the file.
-std::string ShapeWord(const DieChoice &shape);
-// The upper die's drawing a file names (-die_profile, -pass<N>_die_profile): its kind by the file's name
-// (DrawingKind: profile, or dxf for *.dxf), the file in spec.file; none ("") for no file. (die_shape_options.cpp)
-DieChoice DrawingChoice(const std::string &file);
-
-// A pass's dies, the first's and a later one's alike (PassDies): the upper one's shape and motion, the lower and the
-// side dies' shapes. (The lower die's motion, -lower_die_motion, is every pass's.)
-struct DieSet {
-  DieShape upper;
-  DieMotion motion;
-  DieChoice lower{"mirror"}, side{"none"};
-};
-
-// A pass after the first (-pass<N>_*, N from 2), after the springback of the one before: its stroke and turn, and its
-// dies where given, each chosen as the first pass's is (DrawingChoice, ShapeChoice; a kind "": the first pass's).
-struct PassSpec {
-  double stroke = 0; // where its upper die ends (mm, from the same zero as -stroke; 0: no such pass)
-  double turn = 0;   // the tube turned counter-clockwise before it (degrees, from the pass before's press)
-  DieChoice upper;   // -pass<N>_die_profile (DrawingChoice)
-  DieChoice lower;   // -pass<N>_lower_die (ShapeChoice)
-  DieChoice side;    // -pass<N>_side_die (ShapeChoice, none allowed)
-  DieMotion motion;  // its upper die's motion: by the stroke, or a path of its own (ReadPassMotions)
 };
 
 struct Options {
@@ -130,16 +47,12 @@ struct Options {
   DriverParams driver;
   StrokeParams stroke; // the stroke and its path (io/press_params.hpp; read and checked by io, stroke_options.cpp)
   // Tools, contact, friction (docs/dies.md; docs/theory.md, section 6)
-  DieShape die_shape;                  // the upper die's shape (-die_profile, -die_angle, ...; UpperDieShape)
-  DieChoice lower_die_shape{"mirror"}; // -lower_die (ShapeChoice)
-  LowerDieSpec lower_motion;           // its motion (-lower_die_motion; LowerDie)
-  DieMotion die_motion;                // the upper die's motion (-die_motion; UpperDie)
+  LowerDieSpec lower_motion; // the lower die's motion, every pass's (-lower_die_motion; LowerDie)
   ModelParams model; // the part modelled, its support (io/press_params.hpp; read and checked by io, model_options.cpp)
-  // The passes after the first, each after the springback of the one before (-pass2_* to -pass9_*).
-  std::vector<PassSpec> more_passes = std::vector<PassSpec>(kMaxPasses - 1);
-  DieChoice side_die_shape{"none"}; // -side_die (ShapeChoice)
-  double side_force = 0;            // side dies pressing with this force (N/mm, each), their travel unknown (0: stroke)
-  FrictionParams friction;          // the contact and friction options (io/friction_params.hpp; read and checked by io)
+  // The passes: the first (-stroke, -die_*, -lower_die, -side_die), then each after the springback of the one before
+  // (-pass2_* to -pass9_*; a stroke of 0: no such pass). FirstPass, LaterPass, DiesOfPass.
+  std::vector<PassSpec> passes = DefaultPasses();
+  FrictionParams friction; // the contact and friction options (io/friction_params.hpp; read and checked by io)
   ReleaseParams release; // the release after loading (io/press_params.hpp; read and checked by io, release_options.cpp)
   // The scenes without tools' own parameters (io/scene_params.hpp; each read and checked by its scene).
   PressureParams pressure;
@@ -245,23 +158,30 @@ inline void ChooseElement(Options &opt)
   opt.element_name = bar ? "qm6bar" : "qm6";
 }
 
-// The upper die's motion as the scenes take it: its kind and spec, the spec's reach the tube's outer radius (a turn
-// counted in the path's length as the arc of a point there).
+// The first pass (-stroke, -die_*, -lower_die, -side_die) and its dies as given; pass `pass` (1 the second, ...) of
+// the passes after it: its -pass<pass + 1>_* options.
+inline const PassSpec &FirstPass(const Options &opt) { return opt.passes[0]; }
+inline const DieSet &FirstDies(const Options &opt) { return opt.passes[0].dies; }
+inline const PassSpec &LaterPass(const Options &opt, int pass) { return opt.passes[pass]; }
+
+// The first pass's upper die's motion as the scenes take it: its kind and spec, the spec's reach the tube's outer
+// radius (a turn counted in the path's length as the arc of a point there).
 inline DieMotion UpperDie(const Options &opt)
 {
-  DieMotion die = opt.die_motion;
+  DieMotion die = FirstDies(opt).motion;
   die.spec.reach = opt.tube_ro;
   return die;
 }
-// The upper die's shape as the scenes take it: its kind and spec, drawn on the tube (the spec's ro its outer radius).
+// The first pass's upper die's shape as the scenes take it: its kind and spec, drawn on the tube (the spec's ro its
+// outer radius). A later pass's takes its numbers (DiesOfPass).
 inline DieShape UpperDieShape(const Options &opt)
 {
-  DieShape die = opt.die_shape;
+  DieShape die = FirstDies(opt).upper;
   die.spec.ro = opt.tube_ro;
   return die;
 }
 // It is the V-die (not drawn from a file).
-inline bool VDie(const Options &opt) { return opt.die_shape.kind == "v"; }
+inline bool VDie(const Options &opt) { return FirstDies(opt).upper.kind == "v"; }
 // The lower die's motion as the scenes take it: its word, kind and spec, the spec moving up (y) by the stroke.
 inline LowerDieSpec LowerDie(const Options &opt)
 {
@@ -271,32 +191,32 @@ inline LowerDieSpec LowerDie(const Options &opt)
 }
 // Its word is `word` (mirror, fixed, ...).
 inline bool LowerDieMoves(const Options &opt, const char *word) { return opt.lower_motion.word == word; }
-// The upper die's kind is `kind`.
-inline bool DieMoves(const Options &opt, DieMotionKind kind) { return opt.die_motion.kind == kind; }
+// A pass's upper die's kind is `kind` (`dies`: a pass's, FirstDies(opt), DiesOfPass or the scene's).
+inline bool DieMoves(const DieSet &dies, DieMotionKind kind) { return dies.motion.kind == kind; }
 // Its punch load under force control (N/mm; 0: by the stroke).
-inline double DieForce(const Options &opt)
+inline double DieForce(const DieSet &dies)
 {
-  return DieMoves(opt, DieMotionKind::Force) ? opt.die_motion.spec.force : 0.0;
+  return DieMoves(dies, DieMotionKind::Force) ? dies.motion.spec.force : 0.0;
 }
-// Its own path (-die_path with its turns; none unless -die_motion path).
+// The first pass's upper die's own path (-die_path with its turns; none unless -die_motion path).
 inline ToolPath DiePath(const Options &opt)
 {
-  return DieMoves(opt, DieMotionKind::Path) ? PathOf(UpperDie(opt).spec) : ToolPath();
+  return DieMoves(FirstDies(opt), DieMotionKind::Path) ? PathOf(UpperDie(opt).spec) : ToolPath();
 }
-// The die's travel over the press in units of the stroke U (mm; -output_stroke counts it): along -stroke_path,
+// The die's travel over the first pass in units of the stroke U (mm; -output_stroke counts it): along -stroke_path,
 // half -die_path's length (ToolPath: a fixed lower die's U is half the upper one's travel), or -stroke.
 inline double Travel(const Options &opt)
 {
-  if (DieMoves(opt, DieMotionKind::Path)) return DiePath(opt).end();
+  if (DieMoves(FirstDies(opt), DieMotionKind::Path)) return DiePath(opt).end();
   double travel = opt.stroke.path.empty() ? opt.stroke.u : 0, at = 0;
   for (double u : opt.stroke.path) travel += std::abs(u - at), at = u;
   return travel;
 }
-// -die_path moves the die sideways somewhere.
+// -die_path moves the first pass's die sideways somewhere.
 inline bool DiePathSideways(const Options &opt)
 {
-  if (!DieMoves(opt, DieMotionKind::Path)) return false;
-  for (const Vec2 &p : opt.die_motion.spec.points)
+  if (!DieMoves(FirstDies(opt), DieMotionKind::Path)) return false;
+  for (const Vec2 &p : FirstDies(opt).motion.spec.points)
     if (p[0] != 0) return true;
   return false;
 }
@@ -312,15 +232,13 @@ inline bool MotionOffAxis(const DieMotion &m)
 }
 // The first pass's upper die leaves the press's y axis: -die_offset, or a -die_path with a sideways motion or a
 // turn.
-inline bool DieOffAxis(const Options &opt) { return opt.model.die_offset != 0 || MotionOffAxis(opt.die_motion); }
+inline bool DieOffAxis(const Options &opt) { return opt.model.die_offset != 0 || MotionOffAxis(FirstDies(opt).motion); }
 
-// Pass `pass` (1 the second, ...) of the passes after the first: its -pass<pass + 1>_* options.
-inline const PassSpec &LaterPass(const Options &opt, int pass) { return opt.more_passes[pass - 1]; }
 // Pass `pass`'s upper die leaves its press's y axis: the first pass's as DieOffAxis says, a later one's on a path
 // of its own with a sideways point or a turn.
 inline bool PassOffAxis(const Options &opt, int pass)
 {
-  return pass == 0 ? DieOffAxis(opt) : MotionOffAxis(LaterPass(opt, pass).motion);
+  return pass == 0 ? DieOffAxis(opt) : MotionOffAxis(LaterPass(opt, pass).dies.motion);
 }
 // Pass `pass`'s upper die or an earlier pass's leaves its press's axis (the tube is then pressed off its mirror
 // symmetry from that pass on). Every pass's options count, given or not, as in QuarterModel below.
@@ -355,13 +273,15 @@ inline bool QuarterTurn(const Options &opt, int pass)
 // upper die's motion; the upper die drawn on the tube (UpperDieShape), its motion's reach the tube's outer radius.
 inline DieSet DiesOfPass(const Options &opt, int pass)
 {
-  DieSet dies{UpperDieShape(opt), UpperDie(opt), opt.lower_die_shape, opt.side_die_shape};
+  DieSet dies = FirstDies(opt);
+  dies.upper.spec.ro = opt.tube_ro, dies.motion.spec.reach = opt.tube_ro; // (UpperDieShape, UpperDie)
   if (pass == 0) return dies;
-  const PassSpec &p = LaterPass(opt, pass);
-  if (!p.upper.kind.empty()) dies.upper.kind = p.upper.kind, dies.upper.spec.file = p.upper.spec.file;
-  if (!p.lower.kind.empty()) dies.lower = p.lower;
-  if (!p.side.kind.empty()) dies.side = p.side;
-  dies.motion = p.motion, dies.motion.spec.reach = opt.tube_ro;
+  const DieSet &given = LaterPass(opt, pass).dies;
+  if (!given.upper.kind.empty()) dies.upper.kind = given.upper.kind, dies.upper.spec.file = given.upper.spec.file;
+  if (!given.lower.kind.empty()) dies.lower = given.lower;
+  if (!given.side.kind.empty()) dies.side = given.side;
+  dies.motion = given.motion, dies.motion.spec.reach = opt.tube_ro;
+  dies.side_force = given.side_force;
   return dies;
 }
 // Pass `pass`'s lower die's word (-lower_die, -pass<N>_lower_die: the first pass's where not given).

@@ -18,8 +18,9 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
 PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
 // The upper die's motion, its own block under the options prefix die_ (-die_motion: stroke, path or force, each a kind
 // of tool/motion.hpp; that kind's options, -die_path, -die_path_turn, -die_pivot, -die_force, read by the kind):
-// opt.die_motion. Without -die_motion the old spellings choose: -die_path (or its turns or pivot) path, -die_force
-// other than 0 force (-die_force 0 is allowed with any word). An option of another word's kind is refused, naming it.
+// the first pass's dies' motion (opt.passes[0].dies). Without -die_motion the old spellings choose: -die_path (or its
+// turns or pivot) path, -die_force other than 0 force (-die_force 0 is allowed with any word). An option of another
+// word's kind is refused, naming it.
 PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
 // An upper die's motion's block: its options prefix (die_: -die_motion, -die_path, ...), its title in -help, the help
 // of -<prefix>motion, and how many of the upper die's words (kDieMotionWords, in order) it offers.
@@ -40,12 +41,12 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt);
 // (both in die_motion_options.cpp)
 // The upper die's shape, its own block under the options prefix die_: the V-die, its options -die_angle, -die_r_apex,
 // -die_u_close, -die_r_edge read by the V kind of tool/shape.hpp (and checked by it in CheckOptions), unless
-// -die_profile names a file: opt.die_shape (die_shape_options.cpp).
+// -die_profile names a file: the first pass's dies' upper (opt.passes[0].dies; die_shape_options.cpp).
 PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
-// The lower die's and the side dies' shapes, each its own block: -lower_die (mirror, flat or a file) into
-// opt.lower_die_shape, -side_die (none, mirror, flat or a file) into opt.side_die_shape (ShapeChoice; both in
+// The first pass's lower die's and side dies' shapes (opt.passes[0].dies), each its own block: -lower_die (mirror,
+// flat or a file) into its lower, -side_die (none, mirror, flat or a file) into its side (ShapeChoice; both in
 // die_shape_options.cpp, refused where they do not go with the other options by CheckOptions), and in the side dies'
-// block their force, -side_force, into opt.side_force. Collective: CheckSideDieOptions refuses -side_die and
+// block their force, -side_force, into its side_force. Collective: CheckSideDieOptions refuses -side_die and
 // -side_force where they do not go with the other options, one line naming the option (called by CheckOptions).
 PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt);
 PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
@@ -57,6 +58,6 @@ PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 PetscErrorCode ReadDieChoice(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *option,
                              const char *help, bool none, DieChoice &shape);
 PetscErrorCode ReadDrawingChoice(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *option,
-                                 const char *help, DieChoice &shape);
+                                 const char *help, DieShape &shape);
 
 } // namespace tf

@@ -1,0 +1,111 @@
+// A pass of the press and its dies as the options give them (Options::passes; docs/dies.md): the upper die's shape
+// and motion, the lower and side dies' shapes, the side dies' force, the pass's stroke and turn. io reads them under
+// the pass's prefix (-die_*, -lower_die, -side_die; -pass<N>_*: tool_options.hpp), the scenes take them through
+// io/options.hpp (DiesOfPass, UpperDie, ...).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "tubeform/tool/motion.hpp"
+#include "tubeform/tool/shape.hpp"
+
+namespace tf {
+
+// The word of an option's enum value among its words (the enumerators in their words' order: kUnloadWords, ...).
+template <class E, size_t N>
+constexpr const char *WordOf(const char *const (&words)[N], E value)
+{
+  return words[static_cast<size_t>(value)];
+}
+
+// The most passes a press takes (-pass2_* to -pass9_*): one digit in the options' names, and a press line's
+// stations are a handful.
+constexpr int kMaxPasses = 9;
+
+// The upper die's motion (-die_motion; docs/dies.md): a kind of the motion registry (tool/motion.hpp), its word
+// the kind's name (DieMotionName), and what its options (-die_path, -die_path_turn, -die_pivot; -die_force) give it,
+// read by the kind (io/die_motion_options.cpp). The scenes read it through UpperDie.
+enum class DieMotionKind { Stroke, Path, Force };
+struct DieMotion {
+  DieMotionKind kind = DieMotionKind::Stroke; // stroke: down by the stroke U (2 U over a fixed lower die)
+  MotionSpec spec;                            // path: its points, turns, pivot; force: its punch load (N/mm)
+};
+// The kinds' words, in DieMotionKind's order.
+constexpr const char *kDieMotionWords[] = {"stroke", "path", "force"};
+inline const char *DieMotionName(DieMotionKind kind) { return WordOf(kDieMotionWords, kind); }
+
+// The lower die's motion (-lower_die_motion; docs/dies.md): its word (mirror, fixed, path, or a kind registered after
+// the built-in ones: io/die_motion_options.cpp), the kind of the motion registry that word names (mirror: a stroke),
+// and what its options (-lower_die_*) give it, read by the kind. The scenes read it through LowerDie.
+struct LowerDieSpec {
+  std::string word = "mirror";
+  std::string kind = "stroke";
+  MotionSpec spec;
+};
+
+// The paper's die: 90 degrees between the flanks, an apex fillet of 3 mm, no parting face.
+inline ShapeSpec PaperVDie()
+{
+  ShapeSpec v;
+  v.r_apex = 3.0;
+  return v;
+}
+// The upper die's shape (docs/dies.md): a kind of the shape registry (tool/shape.hpp), the V-die unless -die_profile
+// names a file (then profile, or dxf for *.dxf: DrawingKind), and its spec: the V-die's numbers, read and checked
+// by the V kind under the prefix die_ (-die_angle, -die_r_apex, -die_u_close, -die_r_edge; read with a file too), and
+// the file (io/die_shape_options.cpp). The scenes read it through UpperDieShape.
+struct DieShape {
+  std::string kind = "v";
+  ShapeSpec spec = PaperVDie(); // (ro: the tube's, set by UpperDieShape)
+};
+// A lower or side die's shape (docs/dies.md), as its word chose it (ShapeChoice): none (no side dies), mirror (the
+// upper die's shape: a relation between the tools, not a kind), flat (the flat kind), or else a file drawn as an
+// upper die (the kind for its name, DrawingKind: profile or dxf; the file in spec.file). The scenes place and size
+// the flat plate and read the file (scenes/die.cpp); these kinds read no options of their own.
+struct DieChoice {
+  explicit DieChoice(const char *k = "") : kind(k) {}
+  std::string kind;
+  ShapeSpec spec;
+};
+// The shape a word names (-lower_die, -side_die and their passes'): mirror, flat, none where `none` (the side dies),
+// else a file. (die_shape_options.cpp)
+DieChoice ShapeChoice(const std::string &word, bool none = false);
+// The word back (the messages name it): the kind's, or the file.
+std::string ShapeWord(const DieChoice &shape);
+// The upper die's drawing a file names (-die_profile, -pass<N>_die_profile): its kind by the file's name
+// (DrawingKind: profile, or dxf for *.dxf), the file in spec.file; none ("") for no file. (die_shape_options.cpp)
+DieChoice DrawingChoice(const std::string &file);
+
+// A pass's dies, the first's and a later one's alike (DiesOfPass): the upper one's shape and motion (with its path or
+// force), the lower and the side dies' shapes and the side dies' force. (The lower die's motion, -lower_die_motion,
+// is every pass's.)
+struct DieSet {
+  DieShape upper;                          // -die_profile, -die_angle, ... (UpperDieShape); -pass<N>_die_profile
+  DieMotion motion;                        // -die_motion (UpperDie); -pass<N>_die_motion (ReadPassMotions)
+  DieChoice lower{"mirror"}, side{"none"}; // -lower_die, -side_die (ShapeChoice); -pass<N>_lower_die, _side_die
+  double side_force = 0; // -side_force: side dies pressing with this force (N/mm, each), their travel unknown (0: by
+                         // the stroke; the first pass's only)
+};
+
+// A pass of the press (Options::passes: the first, then each after the springback of the one before): its stroke,
+// its turn and its dies, read under the pass's prefix (the first's -die_*, -lower_die, -side_die; a later one's
+// -pass<N>_*). A later pass's shapes where given, each chosen as the first pass's is (DrawingChoice, ShapeChoice),
+// else of kind "" (the first pass's: DiesOfPass).
+struct PassSpec {
+  double stroke = 0; // where its upper die ends (mm, from the same zero as -stroke; 0: no such pass); the first
+                     // pass's is -stroke (Options::stroke), 0 here
+  double turn = 0;   // the tube turned counter-clockwise before it (degrees, from the pass before's press; 0 the first)
+  DieSet dies;       // its dies; its upper die's motion by the stroke, or a path of its own (ReadPassMotions)
+};
+// The passes before any option is read: the first with the default dies, the later ones with none given (kind "").
+inline std::vector<PassSpec> DefaultPasses()
+{
+  std::vector<PassSpec> passes(kMaxPasses);
+  for (int k = 1; k < kMaxPasses; ++k)
+    passes[k].dies.upper.kind = passes[k].dies.lower.kind = passes[k].dies.side.kind = "";
+  return passes;
+}
+
+} // namespace tf
