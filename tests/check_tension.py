@@ -37,13 +37,16 @@ Items 1 and 2 test the paper's forward increments (-equilibrium_tol 0).
    formula. The tangent update leaves sbar off the curve where the path turns
    (the elastic-plastic transition) by a first-order amount (aluminum: 1.5 %,
    0.2 %, 0.03 % at 50, 200, 800 increments); at 400 it must stay below 0.5 %.
-4. -plastic_update radial with the equilibrium increments of item 3: sbar on
-   sigma_y(ep) (below 1e-6; round-off but for n = 0.1's first steps), and
-   sigma_xx against the same reference at 50 and 100 increments within
-   1.3 x the value measured at 100 and below half the tangent update's error
-   of item 3 (measured: aluminum 8.6e-4, 8.5e-4 against 6.9e-3, 2.8e-3;
-   compression 8.0e-4, 1.08e-3 against 7.3e-3, 4.1e-3: at the level where
-   the reference's own strain path and the solver's part, not first order).
+4. -plastic_update radial with the equilibrium increments of item 3, balanced
+   to -equilibrium_tol 1e-9: sbar on sigma_y(ep) (below 1e-6; round-off but
+   for n = 0.1's first steps), and sigma_xx against the same reference at 50
+   and 100 increments within 1.3 x the values measured so and below half
+   the tangent update's error of item 3 (measured: aluminum 1.18e-3,
+   6.5e-4 against 6.9e-3, 2.8e-3; compression 1.15e-3, 6.4e-4 against
+   7.3e-3, 4.1e-3: first order). At the default tolerance the accepted
+   iterates move the load by up to 3.2e-4 of its largest value near the
+   yield onset, which hid the order (8.6e-4, 8.1e-4) and made the errors
+   depend on the corrections' path.
    With the paper's forward increments (-equilibrium_tol 0) it is worse than
    the tangent update (aluminum 2.3e-2 at 100: the update is not the
    tangent's linearization and nothing balances the difference).
@@ -184,18 +187,23 @@ for name, extra, (sy, hp), bound in [("aluminum", [], ludwik(165.3, 673.5, 0.927
     k.check(err[100] < err[50] and err[100] < bound, f"equilibrium increments, {name}: sigma_xx against the rate problem, "
             f"error {err[50]:.2e} -> {err[100]:.2e} from 50 to 100 increments (falls; < {bound:g})")
 
-# 4. The radial return with equilibrium increments: on the yield surface, and against the rate problem.
-for name, extra, (sy, hp), bound in [("aluminum", [], ludwik(165.3, 673.5, 0.927), 1.1e-3),  # measured 8.46e-4
+# 4. The radial return with equilibrium increments: on the yield surface, and against the rate problem. Balanced to
+# -equilibrium_tol 1e-9, so that the error is the update's alone: at the default tolerance the accepted iterates
+# move the load by up to 3.2e-4 of its largest value at the yield onset (50 increments), which is the order of the
+# margins here and depends on the corrections' path. Bounds: 1.3 x the errors measured so, per increment count
+# (first order: about half at 100).
+for name, extra, (sy, hp), bound in [("aluminum", [], ludwik(165.3, 673.5, 0.927), {50: 1.5e-3, 100: 8.5e-4}),
+                                     # measured 1.18e-3, 6.51e-4
                                      ("compression", ["-tension_strain", -0.1], ludwik(165.3, 673.5, 0.927),
-                                      1.4e-3)]:  # 1.08e-3
+                                      {50: 1.5e-3, 100: 8.3e-4})]:  # 1.15e-3, 6.38e-4
     for n in (50, 100):
-        H, vm, ep = solve(extra + ["-plastic_update", "radial"], n, paper=False)
+        H, vm, ep = solve(extra + ["-plastic_update", "radial", "-equilibrium_tol", 1e-9], n, paper=False)
         e = H["stroke"]
         ref = 2 * reference(e, sy, hp, 20) - reference(e, sy, hp, 10)
         err = np.abs(H["load"][1:] - ref[1:]).max() / np.abs(ref).max()
         m = ep > 0
         drift = max(abs(v / sy(x) - 1) for v, x in zip(vm[m], ep[m]))
-        k.check(m.sum() > 10 and drift < 1e-6 and err < bound and err < 0.5 * tangent_error[name][n],
+        k.check(m.sum() > 10 and drift < 1e-6 and err < bound[n] and err < 0.5 * tangent_error[name][n],
                 f"radial return, {name}, {n} equilibrium increments: |sbar / sigma_y(ep) - 1| = {drift:.1e} < 1e-6, "
-                f"sigma_xx error {err:.2e} < {bound:g} and < half the tangent update's {tangent_error[name][n]:.2e}")
+                f"sigma_xx error {err:.2e} < {bound[n]:g} and < half the tangent update's {tangent_error[name][n]:.2e}")
 k.done()
