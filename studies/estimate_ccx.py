@@ -9,8 +9,9 @@ the run against the reference beside what each candidate estimate says.
 
 Levels (nt x N the run's cells through the wall and around, the quarter model): run; M the shipped mesh companion
 (max(2, nt / 2) x 2 (N / 4)); S M at twice the increment limits (the shipped steps companion); A around halved
-(nt x 2 (N / 4)); T through halved (max(2, nt / 2) x N); R the run's mesh at twice the increment limits. Runs are
-cached under results/estimate_ccx/ (delete one to run it again).
+(nt x 2 (N / 4)); T through halved (max(2, nt / 2) x N); R the run's mesh at twice the increment limits; Q three
+quarters of the cells (max(2, round(3 nt / 4)) x the even number nearest 3 N / 4), the third mesh level of a grid
+convergence index. Runs are cached under results/estimate_ccx/ (delete one to run it again).
 """
 import argparse
 import concurrent.futures
@@ -38,7 +39,8 @@ def levels(nt, n, ro, preset):
     twice = ["-increments", str(max(1, inc // 2)), "-rmin_deps", str(2 * deps), "-rmin_domega", str(2 * dom),
              "-rmin_deps_yield", str(2 * dy)]
     half_nt, half_n = max(2, nt // 2), max(4, 2 * (n // 4))
-    cells = {"M": (half_nt, half_n), "S": (half_nt, half_n), "A": (nt, half_n), "T": (half_nt, n), "R": (nt, n)}
+    cells = {"M": (half_nt, half_n), "S": (half_nt, half_n), "A": (nt, half_n), "T": (half_nt, n), "R": (nt, n),
+             "Q": (max(2, round(0.75 * nt)), max(4, 2 * round(0.375 * n)))}
     return {k: (["-mesh_nt", str(a), "-mesh_ntheta", str(b)] + (twice if k in "SR" else [])) for k, (a, b) in
             cells.items()}
 
@@ -78,6 +80,13 @@ def values(h5, case):
     return us, np.array(load), np.array(ct), np.array(rload), np.array(rct)
 
 
+def level_ratios(run_h5):
+    """The cells-around ratios run / Q and Q / M of a run's levels (the grid convergence index's r21, r32)."""
+    n = int(re.search(r"-mesh_ntheta (\d+) around", open(run_h5[:-3] + ".log").read()).group(1))
+    nq, nm = max(4, 2 * round(0.375 * n)), max(4, 2 * (n // 4))
+    return n / nq, nq / nm
+
+
 def smooth_at(H, col, U, half):
     """Column `col` at stroke U from a quadratic fitted over the rows within `half` mm of U (one-sided at the ends
     of the loading): the curve's trend with the contact staircase averaged out."""
@@ -95,6 +104,26 @@ def smoothed(h5, case, half):
     sl = np.array([smooth_at(H, "load", u, half) for u in us])
     sc = np.array([smooth_at(H, "c_over_t", u, half) for u in us if u >= 2] + [ct[-1]])
     return us, sl, sc, rload, rct
+
+
+LEVELS = ("run", "M", "S", "A", "T", "R", "Q")
+
+
+def gci(f1, f2, f3, r21, r32, fs_ok=1.25, fs_bad=3.0, p_max=2.0):
+    """The three-level grid convergence index of the finest value f1 (Celik et al. 2008; absolute): the observed
+    order p from the fixed point p = |ln|e32 / e21| + ln((r21^p - s) / (r32^p - s))| / ln r21, s the sign of
+    e32 / e21; Fs 1.25 with p (at most p_max) where the levels converge monotonically at p >= 0.5, else Fs 3 at
+    p = 1. Returns (the index, p; p < 0 where the levels oscillate)."""
+    e21, e32 = f2 - f1, f3 - f2
+    if e21 == 0:
+        return fs_bad * abs(e32) / (r32 - 1), 0.0
+    s, p = np.sign(e32 / e21), 1.0
+    for _ in range(50):
+        q = math.log(max(1e-12, (r21 ** p - s) / (r32 ** p - s)))
+        p = min(20.0, abs(math.log(max(1e-300, abs(e32 / e21))) + q) / math.log(r21))
+    if s > 0 and p >= 0.5:
+        return fs_ok * abs(e21) / (r21 ** min(p, p_max) - 1), p
+    return fs_bad * abs(e21) / (r21 - 1), -p
 
 
 def candidates(v):
@@ -123,6 +152,16 @@ def candidates(v):
                                                            sc("R", "run") + sc("A", "run") + rip_c)
         out[f"trend {half}: |S-M| + |M-run|/3 + ripple"] = (sl("S", "M") + sl("M", "run") / 3 + rip_l,
                                                            sc("S", "M") + sc("M", "run") / 3 + rip_c)
+    # Three mesh levels (run, Q, M; element, VCRI and increments kept) read by the grid convergence index on the
+    # trends, the steps' part |S - M| and the run's own ripple: the method a grid convergence study applies.
+    if "Q" in v:
+        sm = {k: v[f"{k}~0.2"] for k in ("run", "Q", "M", "S")}
+        r21, r32 = v["levels"]
+        load = np.array([gci(1.0, q / r, m / r, r21, r32)[0] for r, q, m in zip(*(sm[k][1] for k in ("run", "Q", "M")))])
+        ct = np.array([gci(r, q, m, r21, r32)[0] for r, q, m in zip(*(sm[k][2] for k in ("run", "Q", "M")))])
+        rip_l, rip_c = np.abs(run[1] / sm["run"][1] - 1), np.abs(run[2] - sm["run"][2])
+        out["GCI (run, Q, M) + |S-M| + ripple"] = (load + np.abs(sm["S"][1] / sm["M"][1] - 1) + rip_l,
+                                                  ct + np.abs(sm["S"][2] - sm["M"][2]) + rip_c)
     return out
 
 
@@ -130,11 +169,14 @@ def evaluate(cases, presets, cells):
     stats = {}
     for case in cases:
         for preset in presets:
-            files = {k: os.path.join(OUT, f"{case}_{preset}_{k}.h5") for k in ("run", "M", "S", "A", "T", "R")}
-            if not all(os.path.exists(f) for f in files.values()):
+            files = {k: os.path.join(OUT, f"{case}_{preset}_{k}.h5") for k in LEVELS}
+            if not all(os.path.exists(files[k]) for k in LEVELS[:-1]):
                 print(f"{case} {preset}: not run")
                 continue
+            if not os.path.exists(files["Q"]):
+                files.pop("Q")
             v = {k: values(f, case) for k, f in files.items()}
+            v["levels"] = level_ratios(files["run"])
             v.update({f"{k}~{half}": smoothed(f, case, half) for k, f in files.items() for half in (0.2, 0.4)})
             us, load, ct, rload, rct = v["run"]
             err_l, err_c = np.abs(load / rload - 1), np.abs(ct - rct)
