@@ -38,11 +38,22 @@ def levels(nt, n, ro, preset):
     inc, deps, dom, dy = LIMITS[preset]
     twice = ["-increments", str(max(1, inc // 2)), "-rmin_deps", str(2 * deps), "-rmin_domega", str(2 * dom),
              "-rmin_deps_yield", str(2 * dy)]
-    half_nt, half_n = max(2, nt // 2), max(4, 2 * (n // 4))
-    cells = {"M": (half_nt, half_n), "S": (half_nt, half_n), "A": (nt, half_n), "T": (half_nt, n), "R": (nt, n),
-             "Q": (max(2, round(0.75 * nt)), max(4, 2 * round(0.375 * n)))}
     return {k: (["-mesh_nt", str(a), "-mesh_ntheta", str(b)] + (twice if k in "SR" else [])) for k, (a, b) in
-            cells.items()}
+            level_cells(nt, n).items()}
+
+
+def level_cells(nt, n):
+    """Each level's cells through the wall and around, from the run's nt x n."""
+    half_nt, half_n = max(2, nt // 2), max(4, 2 * (n // 4))
+    return {"M": (half_nt, half_n), "S": (half_nt, half_n), "A": (nt, half_n), "T": (half_nt, n), "R": (nt, n),
+            "Q": (max(2, round(0.75 * nt)), max(4, 2 * round(0.375 * n)))}
+
+
+def run_mesh(h5):
+    """A run's cells through the wall and around and its element, from its log."""
+    m = re.search(r"-mesh_nt (\d+) through the wall x -mesh_ntheta (\d+) around\), (\w+) elements",
+                  open(h5[:-3] + ".log").read())
+    return int(m.group(1)), int(m.group(2)), m.group(3)
 
 
 def run_one(case, preset, level, extra):
@@ -59,9 +70,7 @@ def run_one(case, preset, level, extra):
 def run_case(case, preset):
     """The run, then its companions with its element and friction regularization."""
     h5 = run_one(case, preset, "run", [])
-    m = re.search(r"-mesh_nt (\d+) through the wall x -mesh_ntheta (\d+) around\), (\w+) elements",
-                  open(h5[:-3] + ".log").read())
-    nt, n, element = int(m.group(1)), int(m.group(2)), m.group(3)
+    nt, n, element = run_mesh(h5)
     ro = float(tfruns.option(tfruns.calculix_reference(case)[0], "-tube_ro"))
     vcri = VCRI_OF_CELL * (math.pi / 2) * ro / n
     keep = ["-element", element, "-friction_vcri", repr(vcri)]
@@ -82,8 +91,8 @@ def values(h5, case):
 
 def level_ratios(run_h5):
     """The cells-around ratios run / Q and Q / M of a run's levels (the grid convergence index's r21, r32)."""
-    n = int(re.search(r"-mesh_ntheta (\d+) around", open(run_h5[:-3] + ".log").read()).group(1))
-    nq, nm = max(4, 2 * round(0.375 * n)), max(4, 2 * (n // 4))
+    cells = level_cells(*run_mesh(run_h5)[:2])
+    n, nq, nm = cells["R"][1], cells["Q"][1], cells["M"][1]
     return n / nq, nq / nm
 
 
@@ -107,6 +116,7 @@ def smoothed(h5, case, half):
 
 
 LEVELS = ("run", "M", "S", "A", "T", "R", "Q")
+GCI_ORDERS = []  # every cell's observed order of the three mesh levels (< 0 where they oscillate), for evaluate
 
 
 def gci(f1, f2, f3, r21, r32, fs_ok=1.25, fs_bad=3.0, p_max=2.0):
@@ -157,8 +167,10 @@ def candidates(v):
     if "Q" in v:
         sm = {k: v[f"{k}~0.2"] for k in ("run", "Q", "M", "S")}
         r21, r32 = v["levels"]
-        load = np.array([gci(1.0, q / r, m / r, r21, r32)[0] for r, q, m in zip(*(sm[k][1] for k in ("run", "Q", "M")))])
-        ct = np.array([gci(r, q, m, r21, r32)[0] for r, q, m in zip(*(sm[k][2] for k in ("run", "Q", "M")))])
+        load = [gci(1.0, q / r, m / r, r21, r32) for r, q, m in zip(*(sm[k][1] for k in ("run", "Q", "M")))]
+        ct = [gci(r, q, m, r21, r32) for r, q, m in zip(*(sm[k][2] for k in ("run", "Q", "M")))]
+        GCI_ORDERS.extend(p for _, p in load + ct)
+        load, ct = np.array([g for g, _ in load]), np.array([g for g, _ in ct])
         rip_l, rip_c = np.abs(run[1] / sm["run"][1] - 1), np.abs(run[2] - sm["run"][2])
         out["GCI (run, Q, M) + |S-M| + ripple"] = (load + np.abs(sm["S"][1] / sm["M"][1] - 1) + rip_l,
                                                   ct + np.abs(sm["S"][2] - sm["M"][2]) + rip_c)
@@ -170,7 +182,7 @@ def evaluate(cases, presets, cells):
     for case in cases:
         for preset in presets:
             files = {k: os.path.join(OUT, f"{case}_{preset}_{k}.h5") for k in LEVELS}
-            if not all(os.path.exists(files[k]) for k in LEVELS[:-1]):
+            if not all(os.path.exists(f) for k, f in files.items() if k != "Q"):  # (Q: the optional third level)
                 print(f"{case} {preset}: not run")
                 continue
             if not os.path.exists(files["Q"]):
@@ -188,6 +200,10 @@ def evaluate(cases, presets, cells):
                     print(f"{case} {preset} {name}: load err " + " ".join(f"{100 * t:.2f}/{100 * e:.2f}" for e, t in
                                                                           zip(el, err_l)) +
                           "  C/t " + " ".join(f"{t:.4f}/{e:.4f}" for e, t in zip(ec, err_c)))
+    if GCI_ORDERS:
+        p = np.array(GCI_ORDERS)
+        print(f"three mesh levels: oscillating in {np.sum(p < 0)} of {len(p)} cells; observed orders where monotone "
+              f"{p[p > 0].min():.1f} to {p[p > 0].max():.1f}")
     for name, s in stats.items():
         e, t = np.array(s).T
         eff = e / np.maximum(t, 1e-12)
