@@ -42,6 +42,7 @@ import h5py
 import numpy as np
 
 from tfcheck import Checks, args, out, run
+from uniaxial import stress_path
 
 tf, mpirun, src = args()
 k = Checks("kinematic")
@@ -60,13 +61,13 @@ def eq(v):
 
 
 def reference(strokes, back, sub, hardening=True):
-    """sigma_xx at the nominal strains `strokes` with backstresses `back` [(C, gamma)], `sub` substeps each (plain
-    floats: a substep is three stress components, which numpy's per-call cost would make the test's longest part)."""
+    """sigma_xx at the nominal strains `strokes` with backstresses `back` [(C, gamma)], `sub` substeps each
+    (tests/uniaxial.py)."""
     back = back if hardening else []
     R = lambda p: SY0 + KL * p ** NL - sum(monotonic(c, g, p) for c, g in back)
     state = {"s": (0.0, 0.0, 0.0), "a": [(0.0, 0.0, 0.0) for _ in back], "p": 0.0}
 
-    def update(dxx, dyy, st):
+    def update(st, dxx, dyy):
         s, alphas, p = st["s"], st["a"], st["p"]
         tr = dxx + dyy
         trial = [si + LAM * tr + 2 * G * di - si * tr for si, di in zip(s, (dxx, dyy, 0.0))]
@@ -103,20 +104,7 @@ def reference(strokes, back, sub, hardening=True):
                       for a, (c, g) in zip(alphas, back)],
                 "p": p + dp}
 
-    out_ = [0.0]
-    for a, b in zip(strokes[:-1], strokes[1:]):
-        for e0, e1 in zip(np.linspace(a, b, sub + 1)[:-1], np.linspace(a, b, sub + 1)[1:]):
-            dxx = np.log1p(e1) - np.log1p(e0)
-            y0, y1 = -0.5 * dxx, -0.4 * dxx  # secant for sigma_yy = 0
-            f0, f1 = update(dxx, y0, state)["s"][1], update(dxx, y1, state)["s"][1]
-            for _ in range(60):
-                if f1 == f0 or abs(f1) < 1e-11:
-                    break
-                y0, f0, y1 = y1, f1, y1 - f1 * (y1 - y0) / (f1 - f0)
-                f1 = update(dxx, y1, state)["s"][1]
-            state = update(dxx, y1, state)
-        out_.append(state["s"][0])
-    return np.array(out_)
+    return stress_path(strokes, sub, update, state, lambda st: st["s"][0], lambda st: st["s"][1])
 
 
 # Substeps of the reference between the solver's strokes (and half as many for the extrapolation): 8 and 4 are

@@ -49,6 +49,15 @@ B. The paper's forward increments (-equilibrium_tol 0, every onset located
    converges to that path (the code's own result, not an independent
    reference): at 1,000 trial increments load within 0.5 % and C/t within
    0.01, at 300 at least twice as far; on 2 ranks at 300 within 2.7e-7.
+   B's runs on 1 rank factor with KLU (-factorization klu): what B checks is
+   the method's path, which does not depend on the LU (KLU's and MUMPS's
+   paper runs agree within 1.1e-6 of the largest load along the stroke,
+   8,214 and 8,218 increments: round-off moves where a few onsets land;
+   their printed self-checks and results are the same), and its 49,000
+   factorizations of 1,310 dofs are most of the test's time, where KLU's
+   per-call cost is lower than MUMPS's (docs/performance.md,
+   "Factorization"; the first 1.5 mm of the paper run with -log_view: 0.63 x
+   MUMPS's time). The 2-rank runs and C (MUMPS's determinant) keep MUMPS.
 C. mu = 0: the problem is symmetric about the 45-degree line while no node
    touches the apex fillet. The symmetric path is a solution until the
    tangent stiffness loses its definiteness on the symmetric branch: the
@@ -91,6 +100,7 @@ def history(n, name, extra):
 
 
 PAPER = ["-equilibrium_tol", 0]
+KLU = ["-factorization", "klu"]  # B's 1-rank runs (docstring: the path does not depend on the LU)
 
 
 def inside(n):
@@ -158,8 +168,8 @@ if RANKS:
     k.check(rel < 2.7e-7, f"-rmin_yield inside, 1 vs 2 ranks: load and C/t within {rel:.1e} (2.7e-7)")
 
 if PAPER_PART:
-    # B. The paper's forward increments, 1 rank, and -rmin_yield inside against them.
-    p = history(1, "squaring_paper.h5", PAPER)
+    # B. The paper's forward increments, 1 rank, and -rmin_yield inside against them, factored by KLU (docstring).
+    p = history(1, "squaring_paper.h5", PAPER + KLU)
     energy_checks(p, "paper's increments", 3e-3)
     top = p["load"].max()
     k.check(p["penetration"].max() <= 1e-6,
@@ -171,7 +181,7 @@ if PAPER_PART:
     ref = {c: p[c][ps] for c in ("stroke", "load", "c_over_t")}
     err = {}
     for n in (300, 1000):
-        hi = history(1, f"squaring_inside_{n}.h5", inside(n))
+        hi = history(1, f"squaring_inside_{n}.h5", inside(n) + KLU)
         dp = max(abs(np.interp(U, hi["stroke"], hi["load"]) / np.interp(U, ref["stroke"], ref["load"]) - 1)
                  for U in (1, 2, 3, 4.2))
         dc = max(abs(np.interp(U, hi["stroke"], hi["c_over_t"]) - np.interp(U, ref["stroke"], ref["c_over_t"]))

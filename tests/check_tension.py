@@ -57,6 +57,7 @@ import h5py
 import numpy as np
 
 from tfcheck import Checks, args, out, run
+from uniaxial import stress_path
 
 tf, mpirun, src = args()
 k = Checks("tension")
@@ -85,13 +86,12 @@ def swift(sy0, K, n):
 
 
 def reference(strokes, sy, hp, sub):
-    """sigma_xx at the nominal strains `strokes` (starting at 0), `sub` substeps per interval (plain floats: a
-    substep is three stress components, which numpy's per-call cost would make the test's longest part)."""
+    """sigma_xx at the nominal strains `strokes` (starting at 0), `sub` substeps per interval (tests/uniaxial.py)."""
     G = E / (2 * (1 + NU))
     lam = E * NU / ((1 + NU) * (1 - 2 * NU))
-    s, ep, out_ = (0.0, 0.0, 0.0), 0.0, [0.0]
 
-    def update(dxx, dyy):
+    def update(state, dxx, dyy):
+        s, ep = state
         tr = dxx + dyy
         trial = [si + lam * tr + 2 * G * di - si * tr for si, di in zip(s, (dxx, dyy, 0.0))]
         mean = sum(trial) / 3
@@ -107,19 +107,7 @@ def reference(strokes, sy, hp, sub):
                 break
         return tuple(mean + d * (1 - 3 * G * dep / q) for d in dev), ep + dep
 
-    for a, b in zip(strokes[:-1], strokes[1:]):
-        for e0, e1 in zip(np.linspace(a, b, sub + 1)[:-1], np.linspace(a, b, sub + 1)[1:]):
-            dxx = np.log1p(e1) - np.log1p(e0)
-            y0, y1 = -0.5 * dxx, -0.4 * dxx  # secant for sigma_yy = 0
-            f0, f1 = update(dxx, y0)[0][1], update(dxx, y1)[0][1]
-            for _ in range(60):
-                if f1 == f0 or abs(f1) < 1e-11:
-                    break
-                y0, f0, y1 = y1, f1, y1 - f1 * (y1 - y0) / (f1 - f0)
-                f1 = update(dxx, y1)[0][1]
-            s, ep = update(dxx, y1)
-        out_.append(s[0])
-    return np.array(out_)
+    return stress_path(strokes, sub, update, ((0.0, 0.0, 0.0), 0.0), lambda st: st[0][0], lambda st: st[0][1])
 
 
 def solve(extra, n, paper=True):
