@@ -194,11 +194,12 @@ cases = [
     (["-unload_increments", "-1"], "-unload_increments"),
     (["-time_limit", "-1"], "-time_limit"),
     (["-progress", "-1"], "-progress"),
-    # Misspelled options name the nearest known one; numbers that
+    # Misspelled options name the nearest known one and the options it is listed with by -help; numbers that
     # are not numbers name the option.
-    (["-tube_r", "17"], "-tube_r: unknown option; did you mean -tube_ro?"),
-    (["-frction_mu", "0.3"], "did you mean -friction_mu?"),
-    (["-rmin_depps", "0.001"], "did you mean -rmin_deps?"),
+    (["-tube_r", "17"], "-tube_r: unknown option; did you mean -tube_ro, one of the scene and geometry options?"),
+    (["-frction_mu", "0.3"], "did you mean -friction_mu, one of the contact and friction options?"),
+    (["-rmin_depps", "0.001"], "did you mean -rmin_deps, one of the incremental driver (r_min method) options?"),
+    (["-scene", "squaring", "-die_anglee", "80"], "did you mean -die_angle, one of the upper die shape options?"),
     (["-tube_ro", "abc"], "-tube_ro abc: not a number"),
     (["-mesh_nt", "4.5"], "-mesh_nt 4.5: not a whole number"),
     # A die built for a 15 mm tube around a mesh of radius 20: it would start 5 mm inside.
@@ -223,7 +224,8 @@ cases = [
     # has read its options), before anything is written: the likely option named where there is one; a solver
     # option of the factorization the run does not use names the one it does.
     (["-wall_thickness", "1.65"],
-     "-wall_thickness 1.65: no scene, tool or PETSc object of this run reads it; did you mean -tube_t?"),
+     "-wall_thickness 1.65: no scene, tool or PETSc object of this run reads it; did you mean -tube_t, one of the "
+     "scene and geometry options?"),
     (["-ksp_veiw"], "-ksp_veiw: no scene, tool or PETSc object of this run reads it; did you mean -ksp_view?"),
     (["-foo_bar", "2"], "-foo_bar 2: no scene, tool or PETSc object of this run reads it (build/tubeform -help"),
     (["-redundant_mat_mumps_icntl_999", "1"], "-redundant_mat_mumps_icntl_999 1: no scene, tool or PETSc object"),
@@ -277,7 +279,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 154 and len(selected) == 10, f"{len(cases)} cases on 1 rank (154), {len(selected)} on 2 (10)")
+k.check(len(cases) == 155 and len(selected) == 10, f"{len(cases)} cases on 1 rank (155), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

@@ -80,9 +80,10 @@ PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt
   PetscBool set;
 
   PetscFunctionBeginUser;
-  read.Note("-die_profile", help.c_str());
-  for (const ShapeOption &o : v->options) read.Note(("-die_" + o.name).c_str(), o.help.c_str());
-  PetscOptionsBegin(comm, "die_", "tubeform: upper die shape", "tubeform");
+  const char *title = "tubeform: upper die shape";
+  read.Note("-die_profile", help.c_str(), title);
+  for (const ShapeOption &o : v->options) read.Note(("-die_" + o.name).c_str(), o.help.c_str(), title);
+  PetscOptionsBegin(comm, "die_", title, "tubeform");
   OptionsBlock block(PetscOptionsObject);
   PetscCall(PetscStrncpy(file, die.spec.file.c_str(), sizeof(file)));
   PetscCall(PetscOptionsString("-profile", help.c_str(), "tubeform", file, file, sizeof(file), &set));

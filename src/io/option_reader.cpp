@@ -43,6 +43,14 @@ std::vector<std::string> Words(const std::string &text)
 
 } // namespace
 
+std::string OneOfGroup(const std::string &name, const std::vector<KnownOption> &known)
+{
+  const auto k = std::find_if(known.begin(), known.end(), [&](const KnownOption &o) { return o.name == name; });
+  if (k == known.end() || k->reader.empty()) return "";
+  const std::string own = "tubeform: ";
+  return ", one of the " + (k->reader.rfind(own, 0) == 0 ? k->reader.substr(own.size()) : k->reader) + " options";
+}
+
 std::string OptionHint(const std::string &given, const std::vector<KnownOption> &known)
 {
   std::string name = given; // (PETSc's option names ignore case)
@@ -106,7 +114,7 @@ PetscErrorCode OptionReader::String(PetscOptionItems *PetscOptionsObject, const 
   PetscBool set;
 
   PetscFunctionBeginUser;
-  Note(name, help);
+  Note(name, help, PetscOptionsObject->title);
   PetscCall(PetscStrncpy(buf, value.c_str(), sizeof(buf)));
   PetscCall(PetscOptionsString(name, help, "tubeform", buf, buf, sizeof(buf), &set));
   if (set) value = buf;
@@ -117,7 +125,7 @@ PetscErrorCode OptionReader::Real(PetscOptionItems *PetscOptionsObject, const ch
                                   double &value)
 {
   PetscFunctionBeginUser;
-  Note(name, help);
+  Note(name, help, PetscOptionsObject->title);
   PetscCall(CheckNumber(PetscOptionsObject->comm, name, false));
   PetscCall(PetscOptionsReal(name, help, "tubeform", value, &value, nullptr));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -127,7 +135,7 @@ PetscErrorCode OptionReader::Int(PetscOptionItems *PetscOptionsObject, const cha
                                  PetscInt &value)
 {
   PetscFunctionBeginUser;
-  Note(name, help);
+  Note(name, help, PetscOptionsObject->title);
   PetscCall(CheckNumber(PetscOptionsObject->comm, name, true));
   PetscCall(PetscOptionsInt(name, help, "tubeform", value, &value, nullptr));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -137,7 +145,7 @@ PetscErrorCode OptionReader::Bool(PetscOptionItems *PetscOptionsObject, const ch
                                   PetscBool &value)
 {
   PetscFunctionBeginUser;
-  Note(name, help);
+  Note(name, help, PetscOptionsObject->title);
   PetscCall(PetscOptionsBool(name, help, "tubeform", value, &value, nullptr));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -167,8 +175,8 @@ PetscErrorCode OptionReader::CheckUnknown(MPI_Comm comm) const
   }
   PetscCall(PetscOptionsLeftRestore(nullptr, &n, &left, &values));
   PetscCheck(bad.empty(), comm, PETSC_ERR_USER_INPUT,
-             "%s: unknown option; did you mean %s? (build/tubeform -help lists them; -allow_unused runs anyway)",
-             bad.c_str(), near.c_str());
+             "%s: unknown option; did you mean %s%s? (build/tubeform -help lists them; -allow_unused runs anyway)",
+             bad.c_str(), near.c_str(), OneOfGroup(near, names_).c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -181,7 +189,7 @@ PetscErrorCode RealList(PetscOptionItems *PetscOptionsObject, OptionReader &read
   PetscBool set;
 
   PetscFunctionBeginUser;
-  read.Note(name, help);
+  read.Note(name, help, PetscOptionsObject->title);
   PetscCall(PetscOptionsRealArray(name, help, "tubeform", buf.data(), &n, &set));
   if (set) value.assign(buf.begin(), buf.begin() + n);
   PetscFunctionReturn(0);

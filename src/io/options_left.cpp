@@ -33,8 +33,8 @@ const std::vector<KnownOption> &PetscNames()
     for (const char *n : {"-ksp_type", "-ksp_view", "-ksp_monitor", "-pc_type", "-pc_factor_mat_solver_type",
                           "-redundant_pc_factor_mat_solver_type", "-log_view", "-malloc_debug", "-malloc_dump",
                           "-memory_view", "-info", "-help", "-options_file"})
-      v.push_back({n, ""});
-    for (const auto &n : OptionsReadLater()) v.push_back({n, ""});
+      v.push_back({n, "", ""});
+    for (const auto &n : OptionsReadLater()) v.push_back({n, "", ""});
     return v;
   }();
   return names;
@@ -150,7 +150,7 @@ PetscErrorCode CheckOptionsLeft(MPI_Comm comm, const Options &opt, PetscInt ndof
     known.insert(known.end(), PetscNames().begin(), PetscNames().end());
     const std::string hint = OptionHint(first.name, known);
     msg = Shown(first) + ": no scene, tool or PETSc object of this run reads it" +
-          (hint.empty() ? "" : "; did you mean " + hint + "?");
+          (hint.empty() ? "" : "; did you mean " + hint + OneOfGroup(hint, known) + "?");
   }
   if (unread.size() > 1) {
     msg += " (also unread:";

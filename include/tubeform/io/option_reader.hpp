@@ -22,6 +22,10 @@ size_t EditDistance(const std::string &a, const std::string &b);
 // help hold every word of `name` (-wall_thickness: -tube_t, "Wall thickness").
 std::string OptionHint(const std::string &name, const std::vector<KnownOption> &known);
 
+// ", one of the upper die shape options" for the option `name` among `known`, from its -help block's title
+// ("tubeform: upper die shape"); "" where it was noted outside a block or is not among them.
+std::string OneOfGroup(const std::string &name, const std::vector<KnownOption> &known);
+
 class OptionReader {
 public:
   PetscErrorCode Real(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, double &value);
@@ -29,8 +33,11 @@ public:
   PetscErrorCode Bool(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscBool &value);
   // A file name or word (kept as it was when the option is not given).
   PetscErrorCode String(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, std::string &value);
-  // An option read some other way (a word from a list, a file name).
-  void Note(const char *name, const char *help = "") { names_.push_back({name, help}); }
+  // An option read some other way (a word from a list, a file name); `reader`: the title of the block reading it.
+  void Note(const char *name, const char *help = "", const char *reader = "")
+  {
+    names_.push_back({name, help, reader ? reader : ""});
+  }
   // Collective, after every tubeform option is read: an option given but not
   // read that is close to one of tubeform's (within 2 edits, or sharing its
   // first word: -tube_*, -rmin_*, ...) is an error naming the nearest (the
@@ -53,7 +60,7 @@ PetscErrorCode ChooseWord(PetscOptionItems *PetscOptionsObject, OptionReader &re
 {
   PetscInt choice = static_cast<PetscInt>(value);
   PetscFunctionBeginUser;
-  read.Note(name, help);
+  read.Note(name, help, PetscOptionsObject->title);
   PetscCall(PetscOptionsEList(name, help, "tubeform", words, (PetscInt)N, words[choice], &choice, nullptr));
   value = static_cast<E>(choice);
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -23,9 +23,10 @@
 
 namespace tf {
 
-// An option tubeform reads: its name (with the dash) and its -help text.
+// An option tubeform reads: its name (with the dash), its -help text and the title of the -help block that reads it
+// ("tubeform: upper die shape"; empty where it is noted outside a block).
 struct KnownOption {
-  std::string name, help;
+  std::string name, help, reader;
 };
 
 struct Options {
