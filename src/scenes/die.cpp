@@ -206,11 +206,12 @@ TurnMap PassTurn(const Options &opt, int pass, bool half, bool full)
 PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring, double deepest)
 {
   PetscFunctionBeginUser;
-  if (!DieMoves(FirstDies(opt), DieMotionKind::Force))
-    PetscCall(CheckDieReach(comm, opt, DiesOfPass(opt, 0), squaring, deepest, "-stroke"));
-  for (int pass = 1; pass < PassCount(opt); ++pass)
-    PetscCall(CheckDieReach(comm, opt, DiesOfPass(opt, pass), squaring, LaterPass(opt, pass).stroke,
-                            PassOption(pass, "stroke").c_str()));
+  for (int pass = 0; pass < PassCount(opt); ++pass) {
+    const PassExtent e = Extent(opt, pass);
+    if (!e.Forced())
+      PetscCall(
+        CheckDieReach(comm, opt, DiesOfPass(opt, pass), squaring, pass == 0 ? deepest : e.stroke, e.Option().c_str()));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -225,15 +226,16 @@ double DieReach(const Options &o, const DieSet &dies, bool squaring)
   return u_close > 0 ? std::min(closed, u_close) : closed;
 }
 
-PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, bool squaring, double stroke)
+PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, int pass, bool squaring, double stroke)
 {
   PetscFunctionBeginUser;
-  const double reach = DieReach(o, DiesOfPass(o, 0), squaring);
+  const double reach = DieReach(o, DiesOfPass(o, pass), squaring);
+  const PassExtent e = Extent(o, pass);
   PetscCheck(stroke < reach, comm, PETSC_ERR_NOT_CONVERGED,
-             "-die_force %g: the die has come down to U = %.4g mm, where %s (U = %.4g mm): the tube carries no more "
+             "%s %g: the die has come down to U = %.4g mm, where %s (U = %.4g mm): the tube carries no more "
              "in this model",
-             DieForce(FirstDies(o)), stroke, squaring ? "the dies close on the tube or meet" : "the ring's walls meet",
-             reach);
+             e.Option().c_str(), e.Target(), stroke,
+             squaring ? "the dies close on the tube or meet" : "the ring's walls meet", reach);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
