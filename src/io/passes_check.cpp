@@ -22,6 +22,9 @@ PetscErrorCode CheckForcePass(MPI_Comm comm, const Options &opt, int pass)
   const std::string name = e.Option();
   PetscFunctionBeginUser;
   if (!e.Forced()) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(opt.scene == "squaring" || opt.scene == "flattening", comm, PETSC_ERR_USER_INPUT,
+             "%s %g: the %s scene presses with no dies (the squaring and flattening scenes' option)", name.c_str(),
+             e.force, opt.scene.c_str());
   // Force control drives one die; the stroke is its outcome.
   PetscCheck(QuarterModel(opt) || LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
              "%s %g: with the half or full model the lower die must stay (-lower_die_motion fixed); a "
@@ -33,6 +36,9 @@ PetscErrorCode CheckForcePass(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
              "%s %g: -unload withdraw moves the die back by its stroke; use -unload reverse or none", name.c_str(),
              e.force);
+  PetscCheck(pass == 0 || LaterPass(opt, pass).stroke == 0, comm, PETSC_ERR_USER_INPUT,
+             "%s %g: in place of %s (the pass ends at that punch load, its stroke the outcome); give one of them",
+             name.c_str(), e.force, PassOption(pass, "stroke").c_str());
   PetscCheck(pass > 0 || opt.stroke.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
              "%s %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", name.c_str(), e.force);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -45,8 +51,8 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
   if (value == "none") PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
   PetscCheck(!AnyPassForced(opt) && opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
-             "%s %s: side dies press by the stroke: not with -die_force or -unload withdraw", name.c_str(),
-             value.c_str());
+             "%s %s: side dies press by the stroke: not with -die_force, -pass<N>_die_force or -unload withdraw",
+             name.c_str(), value.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -183,6 +183,10 @@ PetscErrorCode PressScene::StartPass(Model &m)
     PetscCall(PetscPrintf(m.comm, "tubeform: %s pass: the upper die along its path (%s) from U = %s to %s mm\n",
                           PassOrdinal(next).c_str(), PassOption(next, "die_path").c_str(),
                           Formatted("%.4g", PassStart()).c_str(), Formatted("%.4g", PassEnd()).c_str()));
+  else if (!m.quiet && passes_[pass_].extent.Forced())
+    PetscCall(PetscPrintf(m.comm, "tubeform: %s pass: the upper die presses with up to %s N/mm (%s) from U = %s mm\n",
+                          PassOrdinal(next).c_str(), Formatted("%g", passes_[pass_].extent.force).c_str(),
+                          passes_[pass_].extent.Option().c_str(), Formatted("%.4g", PassStart()).c_str()));
   else if (!m.quiet)
     PetscCall(PetscPrintf(m.comm,
                           "tubeform: %s pass: the dies travel %s mm together until the one furthest along is "

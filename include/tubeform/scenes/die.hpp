@@ -65,7 +65,8 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
 // where that is inside the tube's outer surface `outer` as the springback of pass `before` left it (wider than round
 // along their motion: an oval, a turned square), moved back along their motion until they touch it (`back`: how far, in
 // units of stroke, each tool; with `say`, a line printed for each); an error on every rank for a die that cannot be
-// moved back clear of the tube (one that stays: its motion is none).
+// moved back clear of the tube (one that stays: its motion is none). A force-controlled die clear of the tube starts
+// ahead, where it touches it (`back` < 0).
 PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, std::vector<Tool> &tools,
                            std::vector<double> &back, int before);
 // Collective: the first pass's upper die moved off the axis by `offset` along x (-die_offset) and, where that

@@ -147,7 +147,7 @@ private:
   }
   // The later pass's stroke (the upper die's position) where it starts and ends (on a path of its own: its stroke
   // from where it starts).
-  double PassStart() const { return UpperBack() > 0 ? -UpperBack() : 0.0; }
+  double PassStart() const { return UpperBack() != 0 ? -UpperBack() : 0.0; }
   double PassEnd() const { return passes_[pass_].extent.stroke + (OwnPath() ? 0.0 : StartBack()) - UpperBack(); }
   // The pass in place's upper die is on a path of its own (-pass<N>_die_path).
   bool OwnPath() const { return pass_ > 0 && passes_[pass_].dies.motion.kind == DieMotionKind::Path; }
