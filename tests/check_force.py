@@ -30,6 +30,15 @@ D. A force above the tube's resistance where its load-stroke curve has a maximum
    one-line error naming force control, exit 1, its results up to there written, every load below 200. A force
    the dies cannot reach (their parting faces meet at U = 1 mm first): the run stops there with one line, its
    results written (the first increment past the faces: at most 0.1 mm beyond them).
+E. A later pass pressed by a force (-pass2_die_force; the paper's tube in the V-dies, fast preset, the first pass to
+   U = 1.5 mm and its springback): the same second pass pressed by its stroke to U = 2 mm reaches F = 120 N/mm (where
+   its load rises slowly, contact moving from node to node) at U_s, its stroke interpolated between the two rows
+   about F. The force pass's die starts where the stroke pass's first touches the sprung-back tube (between its last
+   row without load and its first with, within 1e-6 mm as A's die, in U from -stroke's zero); it ends at F within -equilibrium_tol x the mean
+   nodal force (as A; measured 6e-5 of F) and at U_s within the stroke run's row spacing there (its load is known
+   only at its rows; measured 9e-4 mm of 0.019); the energy balance within 5e-3 (as A). Planted: the force pass's U
+   not shifted to -stroke's zero (its die's own stroke from where it started) -> ends at U = 0.50 mm (FAILED).
+   -pass2_die_force with -pass2_stroke, and a third pass after it, are refused in one line naming the option.
 """
 import h5py
 import numpy as np
@@ -138,4 +147,32 @@ k.check(p.returncode == 1 and len(lines) == 1 and "where the dies close on the t
         and 1.0 <= closed["stroke"][-1] < 1.1,
         f"a force the dies cannot reach (parting faces at U = 1 mm): exit {p.returncode}, one line, results written "
         f"up to U = {closed['stroke'][-1]:.3f} mm")
+# E. A later pass pressed by a force: where the same pass pressed by its stroke reaches that force.
+F, FIRST = 120.0, ["-stroke", 1.5]
+ref, _ = press("squaring", "force_pass2_u.h5", FIRST + ["-pass2_stroke", 2.0])
+h, _ = press("squaring", "force_pass2_f.h5", FIRST + ["-pass2_die_force", F])
+r, s = ref["stage"] == 2, h["stage"] == 2
+U, L = ref["stroke"][r], ref["load"][r]
+i = int(np.argmax(L >= F))  # (the first row at F or above)
+u_s = U[i - 1] + (F - L[i - 1]) / (L[i] - L[i - 1]) * (U[i] - U[i - 1])
+t = int(np.argmax(L > 0))  # (the stroke run's first row with load)
+u_f, end = h["stroke"][s][-1], abs(h["load"][s][-1] / F - 1)
+accept = 2 * 5e-3 * h["q_avg"][s][-1] / F
+with h5py.File(out("force_pass2_f.h5"), "r") as f:
+    u0 = f["/history"].attrs["pass2_start_stroke"]
+# (within 1e-6 mm: follows()'s bound on a node inside the die, ten times the contact set's gap tolerance)
+k.check(U[t - 1] - 1e-6 <= u0 <= U[t], f"pass 2 by force: its die starts at U = {u0:.6f} mm, where the stroke pass's "
+        f"first touches the tube (between U = {U[t - 1]:.6f} and {U[t]:.6f}, 1e-6)")
+k.check(end <= accept and abs(u_f - u_s) <= U[i] - U[i - 1],
+        f"pass 2 by force: ends at F = {F:g} N/mm within {end:.1e} of it ({accept:.1e}: -equilibrium_tol x q_avg), at "
+        f"U = {u_f:.4f} mm, the stroke pass's U at F {u_s:.4f} within {abs(u_f - u_s):.1e} mm (its row spacing "
+        f"{U[i] - U[i - 1]:.3f})")
+energy = np.abs(h["energy_error"]).max()
+k.check(energy < 5e-3, f"pass 2 by force: the energy balance within {energy:.1e} (5e-3)")
+for bad, name in ((["-pass2_stroke", 2.0], "-pass2_die_force"), (["-pass3_stroke", 2.0], "-pass2_die_force")):
+    p = run(tf, mpirun, 1, ["-options_file", f"{src}/options/squaring.opts", "-output", out("force_pass2_bad.h5")]
+            + FIRST + ["-pass2_die_force", F] + bad, check=False)
+    lines = [line for line in (p.stdout + p.stderr).splitlines() if "error" in line]
+    k.check(p.returncode != 0 and len(lines) == 1 and name in lines[0],
+            f"{' '.join(map(str, bad))} with -pass2_die_force: refused in one line ({lines[0] if lines else ''})")
 k.done()

@@ -182,22 +182,24 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
     const UpperMotionBlock block{
       Formatted("pass%d_die_", pass + 1), Formatted("tubeform: pass %d upper die motion", pass + 1),
       pass > 1 ? Formatted("squaring: pass %d's, as -pass2_die_motion", pass + 1)
-               : "squaring: the second pass's upper die moves by its stroke (stroke: -pass2_stroke) or along a path "
+               : "squaring: the second pass's upper die moves by its stroke (stroke: -pass2_stroke), along a path "
                  "of its own from where it starts (path: -pass2_die_path, -pass2_die_path_turn, -pass2_die_pivot, as "
                  "-die_path's; over a lower die that stays, -lower_die_motion fixed; in place of -pass2_stroke: the "
                  "pass ends at U = -y / 2 of its last point; off the axis: the full model under the rotation hold, "
-                 "which -model auto and -full_hold auto choose); without "
-                 "it, -pass2_die_path (or its turns or pivot) means path; a later pass's by its number: "
-                 "-pass3_die_path, ... (docs/dies.md)",
-      (size_t)DieMotionKind::Force}; // (stroke, path)
-    bool given = pass == 1;          // (a later one's read, and listed by -help, where one of them is given)
-    for (const char *name : {"-motion", "-path", "-path_turn", "-pivot"}) {
+                 "which -model auto and -full_hold auto choose) or presses with a force from where it starts (force: "
+                 "-pass2_die_force, as -die_force's; in place of -pass2_stroke: the pass ends at that punch load, its "
+                 "stroke the outcome; the last pass); without it, -pass2_die_path (or its turns or pivot) means path, "
+                 "-pass2_die_force other than 0 force; a later pass's by its number: -pass3_die_path, ... "
+                 "(docs/dies.md)",
+      std::size(kDieMotionWords)};
+    bool given = pass == 1; // (a later one's read, and listed by -help, where one of them is given)
+    for (const char *name : {"-motion", "-path", "-path_turn", "-pivot", "-force"}) {
       PetscBool set;
       PetscCall(PetscOptionsHasName(nullptr, block.prefix.c_str(), name, &set));
       given = given || set;
     }
     if (!given) {
-      for (const char *name : {"motion", "path", "path_turn", "pivot"})
+      for (const char *name : {"motion", "path", "path_turn", "pivot", "force"})
         read.Note(("-" + block.prefix + name).c_str(), block.help.c_str());
       continue;
     }

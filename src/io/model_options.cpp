@@ -61,8 +61,7 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
   bool held = false;
   for (int pass = 0; pass < kMaxPasses; ++pass) held = held || HeldByRotation(opt, pass);
   PetscCheck(
-    !held || (!DieMoves(FirstDies(opt), DieMotionKind::Force) && FirstDies(opt).side_force == 0), comm,
-    PETSC_ERR_USER_INPUT,
+    !held || (!AnyPassForced(opt) && FirstDies(opt).side_force == 0), comm, PETSC_ERR_USER_INPUT,
     "the rotation hold (-full_hold, -die_offset, -die_path): not with -die_force or -side_force (one force-controlled "
     "unknown in an increment)");
   PetscFunctionReturn(PETSC_SUCCESS);

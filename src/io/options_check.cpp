@@ -35,20 +35,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
     "-side_force, -full_hold: "
     "the %s scene presses with no dies (these are the squaring and flattening scenes' options)",
     opt.scene.c_str());
-  if (DieMoves(first, DieMotionKind::Force)) {
-    // Force control drives one die; the stroke is its outcome. (The force itself: the force kind's reader.)
-    const double force = DieForce(first);
-    PetscCheck(QuarterModel(opt) || LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
-               "-die_force %g: with the half or full model the lower die must stay (-lower_die_motion fixed); a "
-               "lower die moving by the upper one's unknown stroke is not available",
-               force);
-    PetscCheck(PassCount(opt) == 1, comm, PETSC_ERR_USER_INPUT,
-               "-die_force %g: not with a second pass (-pass2_stroke); press one pass by force", force);
-    PetscCheck(opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
-               "-die_force %g: -unload withdraw moves the die back by its stroke; use -unload reverse or none", force);
-    PetscCheck(opt.stroke.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-               "-die_force %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", force);
-  }
+  PetscCall(CheckForcePass(comm, opt, 0));       // (passes_check.cpp; a later pass's with its stroke)
   PetscCall(CheckPassStrokesAndDies(comm, opt)); // (passes_check.cpp)
   PetscCall(CheckSideDieOptions(comm, opt));     // (die_shape_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -10,14 +10,48 @@ namespace tf {
 // The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
 std::string PassOption(int pass, const char *what) { return Formatted("-pass%d_%s", pass + 1, what); }
 
+std::string PassExtent::Option() const
+{
+  const char *what = Forced() ? "die_force" : "stroke";
+  return pass == 0 ? std::string("-") + what : PassOption(pass, what);
+}
+
+PetscErrorCode CheckForcePass(MPI_Comm comm, const Options &opt, int pass)
+{
+  const PassExtent e = Extent(opt, pass);
+  const std::string name = e.Option();
+  PetscFunctionBeginUser;
+  if (!e.Forced()) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(opt.scene == "squaring" || opt.scene == "flattening", comm, PETSC_ERR_USER_INPUT,
+             "%s %g: the %s scene presses with no dies (the squaring and flattening scenes' option)", name.c_str(),
+             e.force, opt.scene.c_str());
+  // Force control drives one die; the stroke is its outcome.
+  PetscCheck(QuarterModel(opt) || LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
+             "%s %g: with the half or full model the lower die must stay (-lower_die_motion fixed); a "
+             "lower die moving by the upper one's unknown stroke is not available",
+             name.c_str(), e.force);
+  PetscCheck(PassCount(opt) == pass + 1, comm, PETSC_ERR_USER_INPUT, "%s %g: not with a %s pass (%s); %s", name.c_str(),
+             e.force, PassOrdinal(pass + 1).c_str(), PassOption(pass + 1, "stroke").c_str(),
+             pass == 0 ? "press one pass by force" : "a pass by force is the last");
+  PetscCheck(opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
+             "%s %g: -unload withdraw moves the die back by its stroke; use -unload reverse or none", name.c_str(),
+             e.force);
+  PetscCheck(pass == 0 || LaterPass(opt, pass).stroke == 0, comm, PETSC_ERR_USER_INPUT,
+             "%s %g: in place of %s (the pass ends at that punch load, its stroke the outcome); give one of them",
+             name.c_str(), e.force, PassOption(pass, "stroke").c_str());
+  PetscCheck(pass > 0 || opt.stroke.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+             "%s %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", name.c_str(), e.force);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 // Side dies (`name`: -side_die, -pass<N>_side_die): none, or with what side dies press with.
 PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const std::string &value)
 {
   PetscFunctionBeginUser;
   if (value == "none") PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
-  PetscCheck(!DieMoves(FirstDies(opt), DieMotionKind::Force) && opt.release.unload != Unload::Withdraw, comm,
-             PETSC_ERR_USER_INPUT, "%s %s: side dies press by the stroke: not with -die_force or -unload withdraw",
+  PetscCheck(!AnyPassForced(opt) && opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
+             "%s %s: side dies press by the stroke: not with -die_force, -pass<N>_die_force or -unload withdraw",
              name.c_str(), value.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -68,11 +102,12 @@ PetscErrorCode CheckPassPath(MPI_Comm comm, const Options &opt, int pass)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Pass `pass`'s stroke and dies.
+// Pass `pass`'s stroke and dies (a pass given: PassExtent).
 PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
 {
   const PassSpec &p = LaterPass(opt, pass);
-  const std::string stroke = PassOption(pass, "stroke"), ordinal = PassOrdinal(pass);
+  const PassExtent e = Extent(opt, pass);
+  const std::string stroke = PassOption(pass, "stroke"), ordinal = PassOrdinal(pass), given = e.Option();
   PetscFunctionBeginUser;
   PetscCheck(opt.scene == "squaring" || p.dies.upper.kind.empty(), comm, PETSC_ERR_USER_INPUT,
              "%s: the %s scene presses with plates, not dies", PassOption(pass, "die_profile").c_str(),
@@ -80,19 +115,20 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(p.stroke >= 0 && std::isfinite(p.stroke), comm, PETSC_ERR_USER_INPUT,
              "%s %g: must be non-negative (0: %s)", stroke.c_str(), p.stroke,
              pass == 1 ? "one pass" : ("the " + PassOrdinal(pass - 1) + " pass the last").c_str());
-  PetscCheck(p.stroke == 0 || opt.release.unload == Unload::Reverse, comm, PETSC_ERR_USER_INPUT,
-             "%s %g: a %s pass follows the paper's springback; use -unload reverse (not %s)", stroke.c_str(), p.stroke,
+  PetscCheck(!e.Given() || opt.release.unload == Unload::Reverse, comm, PETSC_ERR_USER_INPUT,
+             "%s %g: a %s pass follows the paper's springback; use -unload reverse (not %s)", given.c_str(), e.Target(),
              ordinal.c_str(), WordOf(kUnloadWords, opt.release.unload));
-  PetscCheck(p.stroke == 0 || pass == 1 || LaterPass(opt, pass - 1).stroke > 0, comm, PETSC_ERR_USER_INPUT,
-             "%s %g: the %s pass follows the %s; give %s", stroke.c_str(), p.stroke, ordinal.c_str(),
+  PetscCheck(!e.Given() || pass == 1 || Extent(opt, pass - 1).Given(), comm, PETSC_ERR_USER_INPUT,
+             "%s %g: the %s pass follows the %s; give %s", given.c_str(), e.Target(), ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
-  PetscCheck(p.stroke > 0 || (p.dies.upper.kind.empty() && p.dies.lower.kind.empty() && p.dies.side.kind.empty()), comm,
+  PetscCheck(e.Given() || (p.dies.upper.kind.empty() && p.dies.lower.kind.empty() && p.dies.side.kind.empty()), comm,
              PETSC_ERR_USER_INPUT, "%s, %s, %s: give %s for the %s pass", PassOption(pass, "die_profile").c_str(),
              PassOption(pass, "lower_die").c_str(), PassOption(pass, "side_die").c_str(), stroke.c_str(),
              ordinal.c_str());
   if (!p.dies.side.kind.empty())
     PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), ShapeWord(p.dies.side)));
   if (p.dies.motion.kind == DieMotionKind::Path) PetscCall(CheckPassPath(comm, opt, pass));
+  PetscCall(CheckForcePass(comm, opt, pass));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -110,8 +146,8 @@ PetscErrorCode CheckPassTurn(MPI_Comm comm, const Options &opt, int pass)
              "%s %g: a turn that is no multiple of 90 degrees needs the full model held by the rotation hold "
              "(-model full or auto, -full_hold rotation or auto)",
              turn.c_str(), p.turn);
-  PetscCheck(p.stroke > 0 || p.turn == 0, comm, PETSC_ERR_USER_INPUT, "%s %g: give %s for the %s pass", turn.c_str(),
-             p.turn, PassOption(pass, "stroke").c_str(), PassOrdinal(pass).c_str());
+  PetscCheck(Extent(opt, pass).Given() || p.turn == 0, comm, PETSC_ERR_USER_INPUT, "%s %g: give %s for the %s pass",
+             turn.c_str(), p.turn, PassOption(pass, "stroke").c_str(), PassOrdinal(pass).c_str());
   for (int before = 0; before < pass; ++before) {
     const bool odd = (quarters - PassQuarters(opt, before)) % 2 != 0;
     const std::string lower = before == 0 ? "-lower_die" : PassOption(before, "lower_die");

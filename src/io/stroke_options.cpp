@@ -39,7 +39,7 @@ PetscErrorCode CheckStrokePath(MPI_Comm comm, Options &opt)
   }
   PetscCheck(s.path.back() > 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_path: the last stroke is the press's final one and must be positive");
-  PetscCheck(!DieMoves(FirstDies(opt), DieMotionKind::Force) && s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(!Extent(opt, 0).Forced() && s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_path: not with -die_force or -stroke_corner_radius");
   s.u = s.path.back();
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -12,6 +12,27 @@ namespace tf {
 
 namespace {
 
+// How far back (negative: ahead) along its motion a force-controlled die clear of the tube's outer points starts
+// where it first touches them (no point deeper than `tol`): its force moves it only where it holds the tube
+// (ContactSet::Initialize). 0 where it would not touch them within the tube's extent.
+double TouchBack(const Tool &t, const std::vector<Vec2> &points, double tol, double extent)
+{
+  const Vec2 d = t.Direction();
+  const double speed = std::hypot(d[0], d[1]);
+  const auto overlaps = [&](double ahead) {
+    const Tool moved = MovedBack(t, -ahead);
+    for (const Vec2 &p : points) {
+      const Projection pr = moved.Project(p);
+      if (pr.segment >= 0 && pr.gap < -tol) return true;
+    }
+    return false;
+  };
+  double lo = 0, hi = speed > 0 ? 2 * extent / speed : 0; // (across the whole tube)
+  if (hi == 0 || !overlaps(hi)) return 0;
+  while (hi - lo > 1e-12 * extent / speed) (overlaps(0.5 * (lo + hi)) ? hi : lo) = 0.5 * (lo + hi);
+  return -lo;
+}
+
 // Collective: the tool of the drawing file `path` of the shape kind `kind` (profile, dxf) given to `option`, or an
 // error on every rank. Rank 0 reads the file; every rank parses the same text, so each reaches the same verdict.
 PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::string &kind, const std::string &path,
@@ -160,15 +181,22 @@ PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoi
   back.assign(tools.size(), 0.0);
   for (size_t k = 0; k < tools.size(); ++k) {
     // (a tenth of the contact set's start tolerance: the nearest node then starts on the die, in contact)
-    const double b = ClearanceBack(tools[k], points, 0.1 * kStartGap * (1 + extent));
+    const double tol = 0.1 * kStartGap * (1 + extent);
+    double b = ClearanceBack(tools[k], points, tol);
     PetscCheck(b >= 0, comm, PETSC_ERR_USER_INPUT,
                "the %s would start inside the tube as the %s springback left it, and cannot be moved back along "
                "its motion clear of it (a die that stays in place, -lower_die_motion fixed, is drawn where it is)",
                tools[k].name.c_str(), PassOrdinal(before).c_str());
+    if (b == 0 && tools[k].Unknown()) b = TouchBack(tools[k], points, tol, extent); // (ahead: < 0)
     if (b == 0) continue;
     back[k] = b;
     tools[k] = MovedBack(tools[k], b);
-    if (say)
+    if (say && b < 0)
+      PetscCall(PetscPrintf(comm,
+                            "tubeform: the %s starts at U = %.4g mm, where it touches the tube as the %s pass "
+                            "left it (force-controlled: it presses from there)\n",
+                            tools[k].name.c_str(), -b, PassOrdinal(before).c_str()));
+    else if (say)
       PetscCall(PetscPrintf(comm,
                             "tubeform: the %s starts at U = %.4g mm, %.4g mm back along its motion from where it "
                             "would touch the round tube, where it touches the tube as the %s pass left it\n",
@@ -206,11 +234,12 @@ TurnMap PassTurn(const Options &opt, int pass, bool half, bool full)
 PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring, double deepest)
 {
   PetscFunctionBeginUser;
-  if (!DieMoves(FirstDies(opt), DieMotionKind::Force))
-    PetscCall(CheckDieReach(comm, opt, DiesOfPass(opt, 0), squaring, deepest, "-stroke"));
-  for (int pass = 1; pass < PassCount(opt); ++pass)
-    PetscCall(CheckDieReach(comm, opt, DiesOfPass(opt, pass), squaring, LaterPass(opt, pass).stroke,
-                            PassOption(pass, "stroke").c_str()));
+  for (int pass = 0; pass < PassCount(opt); ++pass) {
+    const PassExtent e = Extent(opt, pass);
+    if (!e.Forced())
+      PetscCall(
+        CheckDieReach(comm, opt, DiesOfPass(opt, pass), squaring, pass == 0 ? deepest : e.stroke, e.Option().c_str()));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -225,15 +254,16 @@ double DieReach(const Options &o, const DieSet &dies, bool squaring)
   return u_close > 0 ? std::min(closed, u_close) : closed;
 }
 
-PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, bool squaring, double stroke)
+PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, int pass, bool squaring, double stroke)
 {
   PetscFunctionBeginUser;
-  const double reach = DieReach(o, DiesOfPass(o, 0), squaring);
+  const double reach = DieReach(o, DiesOfPass(o, pass), squaring);
+  const PassExtent e = Extent(o, pass);
   PetscCheck(stroke < reach, comm, PETSC_ERR_NOT_CONVERGED,
-             "-die_force %g: the die has come down to U = %.4g mm, where %s (U = %.4g mm): the tube carries no more "
+             "%s %g: the die has come down to U = %.4g mm, where %s (U = %.4g mm): the tube carries no more "
              "in this model",
-             DieForce(FirstDies(o)), stroke, squaring ? "the dies close on the tube or meet" : "the ring's walls meet",
-             reach);
+             e.Option().c_str(), e.Target(), stroke,
+             squaring ? "the dies close on the tube or meet" : "the ring's walls meet", reach);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

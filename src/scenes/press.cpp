@@ -44,7 +44,7 @@ PressScene::PressScene(const Options &opt, bool squaring)
     DieMoves(FirstDies(opt), DieMotionKind::Path) ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
   for (int k = 0; k < (int)passes_.size(); ++k) {
     Pass &p = passes_[k];
-    p.stroke = k == 0 ? stroke_ : LaterPass(opt, k).stroke;
+    p.extent = ExtentOf(opt.passes[k], k, k == 0 ? stroke_ : LaterPass(opt, k).stroke);
     p.turn = PassTurn(opt, k, half_, full_);
     p.dies = DiesOfPass(opt, k);
     p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side.kind != "none";
@@ -74,8 +74,7 @@ LoadPath PressScene::Path(const Options &opt) const
 
 double PressScene::ToolStroke(double lambda) const
 {
-  if (DieMoves(passes_[pass_].dies, DieMotionKind::Force))
-    return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
+  if (passes_[pass_].extent.Forced()) return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
   const StrokePath &path = passes_[pass_].path;
   if (pass_ > 0) return path.Stroke(std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0));
   if (lambda <= 1.0) return path.Stroke(lambda);
@@ -84,10 +83,10 @@ double PressScene::ToolStroke(double lambda) const
 
 double PressScene::ToolForce(double lambda) const
 {
-  const DieSet &dies = passes_[pass_].dies;
+  const Pass &p = passes_[pass_];
   const double model =
-    dies.side_force > 0 ? dies.side_force * SideDiesInModel(Part()) : DieForce(dies) / LoadPerModelForce();
-  return std::min(lambda, kFirstRelease) * model; // (released: not read)
+    p.dies.side_force > 0 ? p.dies.side_force * SideDiesInModel(Part()) : p.extent.force / LoadPerModelForce();
+  return PassExtent::Ramp(lambda, PressStage(pass_)) * model; // (released: not read)
 }
 
 PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
@@ -142,7 +141,7 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
     PetscCall(StartPass(m));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  if (!m.quiet) PetscCall(WarnUntouched(m.comm, *m.contact, pass_, passes_[pass_].stroke));
+  if (!m.quiet) PetscCall(WarnUntouched(m.comm, *m.contact, pass_, passes_[pass_].extent.stroke));
   // The paper's unloading: contact forces become loads, tools go (every point elastic by default: ElasticRelease).
   if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
   PetscCall(VecZeroEntries(reversed_));
@@ -171,7 +170,7 @@ PetscErrorCode PressScene::StartPass(Model &m)
   PetscCall(StartOnTube(m.comm, !m.quiet, outer, drawn, passes_[next].start_back, (int)pass_));
   // (the side dies' travel goes on from where the pass before left it: through its press and its backing off)
   const Pass &before = passes_[pass_];
-  if (next > 1) passes_[next].side_from = before.side_from + before.stroke + before.back;
+  if (next > 1) passes_[next].side_from = before.side_from + before.extent.stroke + before.back;
   unloading_ = false;
   // (the pin stays until the next pass's dies hold the half model's tube: Load)
   reversed_total_[0] = reversed_total_[1] = reversed_moment_ = 0;
@@ -184,12 +183,17 @@ PetscErrorCode PressScene::StartPass(Model &m)
     PetscCall(PetscPrintf(m.comm, "tubeform: %s pass: the upper die along its path (%s) from U = %s to %s mm\n",
                           PassOrdinal(next).c_str(), PassOption(next, "die_path").c_str(),
                           Formatted("%.4g", PassStart()).c_str(), Formatted("%.4g", PassEnd()).c_str()));
+  else if (!m.quiet && passes_[pass_].extent.Forced())
+    PetscCall(PetscPrintf(m.comm, "tubeform: %s pass: the upper die presses with up to %s N/mm (%s) from U = %s mm\n",
+                          PassOrdinal(next).c_str(), Formatted("%g", passes_[pass_].extent.force).c_str(),
+                          passes_[pass_].extent.Option().c_str(), Formatted("%.4g", PassStart()).c_str()));
   else if (!m.quiet)
     PetscCall(PetscPrintf(m.comm,
                           "tubeform: %s pass: the dies travel %s mm together until the one furthest along is "
                           "at U = %s mm (%s); the upper die from U = %s to %s mm\n",
-                          PassOrdinal(next).c_str(), Formatted("%.4g", passes_[pass_].stroke + StartBack()).c_str(),
-                          Formatted("%g", passes_[pass_].stroke).c_str(), PassOption(next, "stroke").c_str(),
+                          PassOrdinal(next).c_str(),
+                          Formatted("%.4g", passes_[pass_].extent.stroke + StartBack()).c_str(),
+                          Formatted("%g", passes_[pass_].extent.stroke).c_str(), PassOption(next, "stroke").c_str(),
                           Formatted("%.4g", PassStart()).c_str(), Formatted("%.4g", PassEnd()).c_str()));
   if (pin_.holds()) PetscCall(pin_.Mark(m, Press()));
   PetscCall(m.contact->Setup(m.mesh, m.system, m.body.position(), spec));
@@ -223,8 +227,8 @@ PetscErrorCode PressScene::Load(Model &m, double lambda, double dlambda)
   }
   if (!full_) PetscCall(QuarterSymmetry(m)); // (a full model's mesh file may carry x0 or y0 sets: not held)
   // (inside the increment: its failure writes the results so far)
-  if (DieMoves(passes_[pass_].dies, DieMotionKind::Force) && m.contact->active())
-    PetscCall(CheckForceReach(m.comm, opt_, squaring_, m.contact->tool(kUpper).stroke));
+  if (passes_[pass_].extent.Forced() && m.contact->active())
+    PetscCall(CheckForceReach(m.comm, opt_, (int)pass_, squaring_, Stroke(m, lambda)));
   // (the rotation hold, or released the pins: scenes/support.hpp)
   if (Support *axis = AxisSupport()) PetscCall(axis->Constrain(m, PassMap(pass_)));
   // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
@@ -271,7 +275,7 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
     if (d[0] != 0 || d[1] != 0) p.back = std::min(p.back, p.start_back[k]);
   }
   if (p.back == kNever) p.back = 0; // (no die moves)
-  if (p.dies.motion.kind == DieMotionKind::Stroke) p.path = StrokePath({}, p.stroke + p.back);
+  if (p.dies.motion.kind == DieMotionKind::Stroke) p.path = StrokePath({}, p.extent.stroke + p.back);
   p.start = PassStart();
   if (full_) PetscCall(pins_.Mark(m, Press()));
   if (p.held) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)
@@ -281,9 +285,8 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
 
 double PressScene::Stroke(Model &m, double lambda) const
 {
-  const double s = ToolStroke(lambda);
-  return DieMoves(passes_[pass_].dies, DieMotionKind::Force) ? m.contact->tool(kUpper).stroke
-                                                             : passes_[pass_].path.U(s) - UpperBack();
+  const Pass &p = passes_[pass_];
+  return p.extent.U(m.contact->tool(kUpper).stroke, p.path.U(ToolStroke(lambda)), UpperBack());
 }
 
 std::vector<std::pair<std::string, Vec2>> PressScene::Symmetry() const

@@ -68,10 +68,12 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
 std::vector<std::pair<std::string, double>> PressScene::FinalMetrics(const History &h) const
 {
   std::vector<std::pair<std::string, double>> m = PassMetrics(h);
-  const bool forced = DieMoves(FirstDies(opt_), DieMotionKind::Force);
-  m.push_back({forced ? "final_force_target" : "final_stroke_target", forced ? DieForce(FirstDies(opt_)) : stroke_});
-  for (size_t k = 1; k < passes_.size(); ++k)
-    m.push_back({Formatted("pass%d_stroke_target", (int)k + 1), passes_[k].stroke});
+  for (size_t k = 0; k < passes_.size(); ++k) { // (what ends each pass: its stroke or its force)
+    const PassExtent &e = passes_[k].extent;
+    m.push_back({k == 0 ? Formatted("final_%s_target", e.TargetWord())
+                        : Formatted("pass%d_%s_target", (int)k + 1, e.TargetWord()),
+                 e.Target()});
+  }
   for (int k = 1; k <= pass_; ++k) // (where the upper die of each pass set up started)
     m.push_back({Formatted("pass%d_start_stroke", k + 1), passes_[k].start});
   return m;

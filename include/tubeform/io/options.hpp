@@ -14,6 +14,7 @@
 #include "tubeform/fe/quad.hpp"
 #include "tubeform/io/driver_params.hpp"
 #include "tubeform/io/friction_params.hpp"
+#include "tubeform/io/pass_extent.hpp"
 #include "tubeform/io/pass_spec.hpp"
 #include "tubeform/io/press_params.hpp"
 #include "tubeform/io/scene_params.hpp"
@@ -120,6 +121,10 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
 // checked by the path kind's reader): the squaring scene's die, within a quarter turn, ending below its start, over
 // a lower die that stays.
 PetscErrorCode CheckUpperPath(MPI_Comm comm, const Options &opt, const MotionSpec &path, const std::string &name);
+// Collective: pass `pass` pressed with a force (PassExtent::Forced; the force itself checked by the force kind's
+// reader) goes with the other options: a lower die that stays in the half and full models, the last pass, not
+// withdrawn; the first pass's not with -stroke_corner_radius. Nothing where it presses by the stroke.
+PetscErrorCode CheckForcePass(MPI_Comm comm, const Options &opt, int pass);
 // The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
 std::string PassOption(int pass, const char *what);
 // Collective: refuses material constants out of range or not in MPa (called by CheckOptions).
@@ -164,6 +169,18 @@ inline void ChooseElement(Options &opt)
 inline const PassSpec &FirstPass(const Options &opt) { return opt.passes[0]; }
 inline const DieSet &FirstDies(const Options &opt) { return opt.passes[0].dies; }
 inline const PassSpec &LaterPass(const Options &opt, int pass) { return opt.passes[pass]; }
+// How far pass `pass` presses (io/pass_extent.hpp): the first pass's stroke -stroke, a later one's its own.
+inline PassExtent Extent(const Options &opt, int pass)
+{
+  return ExtentOf(opt.passes[pass], pass, pass == 0 ? opt.stroke.u : opt.passes[pass].stroke);
+}
+// Some pass presses with a force (its stroke the outcome).
+inline bool AnyPassForced(const Options &opt)
+{
+  bool forced = false;
+  for (int pass = 0; pass < kMaxPasses; ++pass) forced = forced || Extent(opt, pass).Forced();
+  return forced;
+}
 
 // The first pass's upper die's motion as the scenes take it: its kind and spec, the spec's reach the tube's outer
 // radius (a turn counted in the path's length as the arc of a point there).
@@ -194,11 +211,6 @@ inline LowerDieSpec LowerDie(const Options &opt)
 inline bool LowerDieMoves(const Options &opt, const char *word) { return opt.lower_motion.word == word; }
 // A pass's upper die's kind is `kind` (`dies`: a pass's, FirstDies(opt), DiesOfPass or the scene's).
 inline bool DieMoves(const DieSet &dies, DieMotionKind kind) { return dies.motion.kind == kind; }
-// Its punch load under force control (N/mm; 0: by the stroke).
-inline double DieForce(const DieSet &dies)
-{
-  return DieMoves(dies, DieMotionKind::Force) ? dies.motion.spec.force : 0.0;
-}
 // The first pass's upper die's own path (-die_path with its turns; none unless -die_motion path).
 inline ToolPath DiePath(const Options &opt)
 {
@@ -249,11 +261,12 @@ inline bool OffAxisBy(const Options &opt, int pass)
   for (int k = 0; k <= pass; ++k) off = off || PassOffAxis(opt, k);
   return off;
 }
-// The passes: the first and each later one given a stroke, in turn (the options refuse a gap).
+// The passes: the first and each later one given (a stroke, a path or a force: PassExtent), in turn (the options
+// refuse a gap).
 inline int PassCount(const Options &opt)
 {
   int n = 1;
-  while (n < kMaxPasses && LaterPass(opt, n).stroke > 0) ++n;
+  while (n < kMaxPasses && Extent(opt, n).Given()) ++n;
   return n;
 }
 // A pass's turn of the tube from the first pass's press (degrees): the turns before it and its own, summed.

@@ -94,8 +94,8 @@ struct DieSet {
 // -pass<N>_*). A later pass's shapes where given, each chosen as the first pass's is (DrawingChoice, ShapeChoice),
 // else of kind "" (the first pass's: DiesOfPass).
 struct PassSpec {
-  double stroke = 0; // where its upper die ends (mm, from the same zero as -stroke; 0: no such pass); the first
-                     // pass's is -stroke (Options::stroke), 0 here
+  double stroke = 0; // where its upper die ends (mm, from the same zero as -stroke; 0: no such pass, or one pressed
+                     // by a force: PassExtent); the first pass's is -stroke (Options::stroke), 0 here
   double turn = 0;   // the tube turned counter-clockwise before it (degrees, from the pass before's press; 0 the first)
   DieSet dies;       // its dies; its upper die's motion by the stroke, or a path of its own (ReadPassMotions)
 };

@@ -65,7 +65,8 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
 // where that is inside the tube's outer surface `outer` as the springback of pass `before` left it (wider than round
 // along their motion: an oval, a turned square), moved back along their motion until they touch it (`back`: how far, in
 // units of stroke, each tool; with `say`, a line printed for each); an error on every rank for a die that cannot be
-// moved back clear of the tube (one that stays: its motion is none).
+// moved back clear of the tube (one that stays: its motion is none). A force-controlled die clear of the tube starts
+// ahead, where it touches it (`back` < 0).
 PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, std::vector<Tool> &tools,
                            std::vector<double> &back, int before);
 // Collective: the first pass's upper die moved off the axis by `offset` along x (-die_offset) and, where that
@@ -94,8 +95,8 @@ TurnMap PassTurn(const Options &opt, int pass, bool half, bool full);
 // stroke that closes it fails in the run.
 PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, const DieSet &dies, bool squaring, double stroke,
                              const char *option);
-// Collective: CheckDieReach for a press's passes: the first pass's deepest stroke (-stroke, or -stroke_path's; not
-// with -die_force, whose stroke is its outcome) and each later one's.
+// Collective: CheckDieReach for a press's passes: the first pass's deepest stroke (-stroke, or -stroke_path's) and
+// each later one's; not a pass's pressed with a force, whose stroke is its outcome (PassExtent).
 PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring, double deepest);
 // Collective: a warning if pass `pass`'s (0 the first) dies, at its end (stroke mm), touch nothing: its
 // stroke was shorter than the way to the tube.
@@ -105,8 +106,9 @@ PetscErrorCode NoteCornerRadius(MPI_Comm comm, double stroke, double corner_radi
 // The first stroke CheckDieReach refuses (the dies closing on the tube, their parting faces meeting, the ring's
 // walls meeting); kNever where there is no closed form (a profile, another lower die).
 double DieReach(const Options &o, const DieSet &dies, bool squaring);
-// Collective: a force-controlled die (-die_force) at `stroke` that has come down to DieReach stops the run
-// (PETSC_ERR_NOT_CONVERGED: inside an increment, the results so far are written).
-PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, bool squaring, double stroke);
+// Collective: pass `pass`'s force-controlled die (-die_force, -pass<N>_die_force) at `stroke` (its U) that has come
+// down to its dies' DieReach stops the run (PETSC_ERR_NOT_CONVERGED: inside an increment, the results so far are
+// written).
+PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, int pass, bool squaring, double stroke);
 
 } // namespace tf

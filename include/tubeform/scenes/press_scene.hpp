@@ -50,8 +50,8 @@ public:
   // The stroke of the dies in place: the first pass's, then (once their dies are set up) each later one's.
   double ToolStroke(double lambda) const override;
 
-  // Force control: the model's half of the punch load, rising to -die_force over the press; or the side dies'
-  // force in the model (-side_force).
+  // Force control: the model's half of the punch load, rising to the pass's force over its press (-die_force,
+  // PassExtent::Ramp); or the side dies' force in the model (-side_force).
   double ToolForce(double lambda) const override;
   PetscErrorCode Initialize(Model &m, ContactSpec &tools) override;
   PetscErrorCode BeginStage(Model &m, double lambda) override;
@@ -77,10 +77,10 @@ private:
   bool squaring_;
   bool half_; // the half model x >= 0 with both dies (or the full model)
   bool full_; // the full model: the whole tube, both dies across the y axis
-  // A pass: its stroke, its turn, its dies, its upper die's way, its hold, its side dies and (a later pass) where its
-  // dies start; the scene's passes are a list of them, built once from the options.
+  // A pass: how far it presses, its turn, its dies, its upper die's way, its hold, its side dies and (a later pass)
+  // where its dies start; the scene's passes are a list of them, built once from the options.
   struct Pass {
-    double stroke = 0;              // where its upper die ends (mm; the first pass's: stroke_)
+    PassExtent extent;              // its stroke or force (the first pass's stroke: stroke_; io/pass_extent.hpp)
     TurnMap turn;                   // draws its dies, built in its press's frame, into the tube's (PassTurn)
     StrokePath path;                // its stroke over its press: the first pass's -stroke_path or -die_path; a later
                                     // one's straight by its stroke from where its dies start (PassDies), or its
@@ -130,8 +130,9 @@ private:
   PetscErrorCode StartPass(Model &m);
 
   TurnMap PassMap(int pass) const { return passes_[pass].turn; }
-  // The history's U at lambda: the force-controlled die's own, -die_path's, a later pass's upper die's position
-  // (from the same zero as the first pass's, the die touching the round tube; it starts UpperBack() before it).
+  // The history's U at lambda (PassExtent::U): the force-controlled die's own, -die_path's, a later pass's upper
+  // die's position (from the same zero as the first pass's, the die touching the round tube; it starts UpperBack()
+  // before it).
   double Stroke(Model &m, double lambda) const;
   // How far back the later pass's dies start to touch the tube where the pass before left it (PassDies; 0 before
   // they are set up): the least any die that moves is moved back (they travel together until the one furthest
@@ -146,8 +147,8 @@ private:
   }
   // The later pass's stroke (the upper die's position) where it starts and ends (on a path of its own: its stroke
   // from where it starts).
-  double PassStart() const { return UpperBack() > 0 ? -UpperBack() : 0.0; }
-  double PassEnd() const { return passes_[pass_].stroke + (OwnPath() ? 0.0 : StartBack()) - UpperBack(); }
+  double PassStart() const { return UpperBack() != 0 ? -UpperBack() : 0.0; }
+  double PassEnd() const { return passes_[pass_].extent.stroke + (OwnPath() ? 0.0 : StartBack()) - UpperBack(); }
   // The pass in place's upper die is on a path of its own (-pass<N>_die_path).
   bool OwnPath() const { return pass_ > 0 && passes_[pass_].dies.motion.kind == DieMotionKind::Path; }
   // The rotation hold holds the pass in place (its nodes fixed, holding the slide too, until the dies hold it).
