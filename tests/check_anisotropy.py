@@ -38,7 +38,7 @@ import os
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, out, run
+from tfcheck import Checks, args, checkpoint_at, out, run
 
 tf, mpirun, src = args()
 k = Checks("anisotropy")
@@ -128,8 +128,7 @@ for name in ("ck_aniso.h5", "aniso_part.h5"):
         os.remove(out(name))
 rows = len(Hs[1]["stroke"])
 every = rows * 2 // 3  # (one multiple of it in the run: the checkpoint lands where asked)
-run(tf, mpirun, 1, SQ + ["-output", out("aniso_part.h5"), "-checkpoint", out("ck_aniso.h5"), "-checkpoint_every",
-                         every])
+checkpoint_at(tf, mpirun, 1, SQ + ["-output", out("aniso_part.h5")], out("ck_aniso.h5"), every)
 run(tf, mpirun, 1, SQ + ["-output", out("aniso_part.h5"), "-restart", out("ck_aniso.h5")])
 with h5py.File(out("aniso_part.h5"), "r") as h:
     part = {c: h["/history"][c][:] for c in ("load", "c_over_t")}

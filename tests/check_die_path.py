@@ -37,7 +37,7 @@ import h5py
 import numpy as np
 
 from die_press import at_rows, balance
-from tfcheck import Checks, args, out, run, run_all
+from tfcheck import Checks, args, checkpoint_at, out, run, run_all
 
 tf, mpirun, src = args()
 k = Checks("die_path")
@@ -126,7 +126,7 @@ for name, sign, label in (("left", -1, "the path mirrored is the mirror image"),
 ck = out("right_ck.h5")
 opts = BASE + RUNS["right"] + ["-output", out("right_part.h5")]
 inside = int(np.where(press & (r["die_x"] > 0.1) & (r["die_x"] < 0.4))[0][0])
-run(tf, mpirun, 1, opts + ["-checkpoint", ck, "-checkpoint_every", inside], timeout=600)
+checkpoint_at(tf, mpirun, 1, opts, ck, inside, timeout=600)
 with h5py.File(ck, "r") as c:
     lam_ck = c["/run/lambda"][0]
 run(tf, mpirun, 1, opts + ["-restart", ck], timeout=600)

@@ -47,7 +47,7 @@ import h5py
 import numpy as np
 
 from die_press import at_rows, balance
-from tfcheck import Checks, args, out, run, run_all
+from tfcheck import Checks, args, checkpoint_at, out, run, run_all
 
 tf, mpirun, src = args()
 k = Checks("die_turn")
@@ -171,7 +171,7 @@ for name, sign, label in (("mirror", -1, "the press mirrored is the mirror image
 ck = out("turn_ck.h5")
 opts = BASE + RUNS["turn"] + ["-output", out("turn_part.h5")]
 inside = int(np.where(press & (r["die_turn"] > 0.5) & (r["die_turn"] < 2.5))[0][0])
-run(tf, mpirun, 1, opts + ["-checkpoint", ck, "-checkpoint_every", inside], timeout=600)
+checkpoint_at(tf, mpirun, 1, opts, ck, inside, timeout=600)
 run(tf, mpirun, 1, opts + ["-restart", ck], timeout=600)
 w, c = worst(r, history("turn_part.h5"), list(r))
 k.check(w <= 1e-12, f"F. continued from a checkpoint inside the turning piece (row {inside}): the history within "

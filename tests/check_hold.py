@@ -70,7 +70,7 @@ import re
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, out, run, run_all
+from tfcheck import Checks, args, checkpoint_at, out, run, run_all
 
 tf, mpirun, src = args()
 k = Checks("hold")
@@ -165,8 +165,7 @@ k.check(same and worst <= 1e-6, f"E. 1 vs 2 ranks within {worst:.1e} (1e-6)")
 ck = out("right_ck.h5")
 opts = RUNS["right"] + ["-output", out("right_part.h5")]
 # (one checkpoint, a few increments before the press's end: the press takes most of the run's increments)
-run(tf, mpirun, 1, opts + ["-checkpoint", ck, "-checkpoint_every", int(np.sum(right["stage"] == 0)) - 5],
-    timeout=600)
+checkpoint_at(tf, mpirun, 1, opts, ck, int(np.sum(right["stage"] == 0)) - 5, timeout=600)
 with h5py.File(ck, "r") as c:
     lam = c["/run/lambda"][0]
 run(tf, mpirun, 1, opts + ["-restart", ck], timeout=600)
@@ -266,8 +265,7 @@ k.check(n2 < 1000 and said is not None and abs(float(said.group(1)) - last) <= d
 # (a checkpoint in the second pass after the dies took the slide, continued: the state of the hold's nodes kept)
 ck = out("offset2_ck.h5")
 opts = RUNS["offset2"] + ["-output", out("offset2_part.h5")]
-run(tf, mpirun, 1, opts + ["-checkpoint", ck, "-checkpoint_every", int(np.where(t["stroke"] > last + 0.2)[0][0])],
-    timeout=600)
+checkpoint_at(tf, mpirun, 1, opts, ck, int(np.where(t["stroke"] > last + 0.2)[0][0]), timeout=600)
 run(tf, mpirun, 1, opts + ["-restart", ck], timeout=600)
 part = history("offset2_part.h5")
 same = all(part[c].shape == t[c].shape for c in t)

@@ -41,7 +41,7 @@ import os
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, out, run
+from tfcheck import Checks, args, checkpoint_at, out, run
 from uniaxial import stress_path
 
 tf, mpirun, src = args()
@@ -190,7 +190,7 @@ for name in ("ck_full.h5", "ck_part.h5", "ck.h5"):
     if os.path.exists(out(name)):
         os.remove(out(name))
 run(tf, mpirun, 1, CYC + ["-output", out("ck_full.h5")])
-run(tf, mpirun, 1, CYC + ["-output", out("ck_part.h5"), "-checkpoint", out("ck.h5"), "-checkpoint_every", 80])
+checkpoint_at(tf, mpirun, 1, CYC + ["-output", out("ck_part.h5")], out("ck.h5"), 80)
 run(tf, mpirun, 1, CYC + ["-output", out("ck_part.h5"), "-restart", out("ck.h5")])
 with h5py.File(out("ck_full.h5"), "r") as a, h5py.File(out("ck_part.h5"), "r") as b:
     worst = max(np.abs(a["/history"][c][:] - b["/history"][c][:]).max() / max(np.abs(a["/history"][c][:]).max(), 1e-300)

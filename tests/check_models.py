@@ -56,7 +56,7 @@ from concurrent.futures import ThreadPoolExecutor
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, history_and_tools, out, run, run_all
+from tfcheck import Checks, args, checkpoint_at, history_and_tools, out, run, run_all
 
 tf, mpirun, src = args()
 k = Checks("models")
@@ -192,10 +192,9 @@ k.check(grow > 0.05 and m["n_plastic"][m["stage"] == 2].max() > 0,
 
 
 def stop_and_continue(every):
-    """The mixed press written to a checkpoint every `every` increments, then continued from its last one."""
+    """The mixed press run to increment `every`, its checkpoint written there, then continued from it."""
     name, ck = f"models_part_{every}.h5", out(f"models_ck_{every}.h5")
-    run(tf, mpirun, 1, BASE + MIXED + ["-output", out(name), "-checkpoint", ck, "-checkpoint_every", every],
-        timeout=600)
+    checkpoint_at(tf, mpirun, 1, BASE + MIXED + ["-output", out(name)], ck, every, timeout=600)
     run(tf, mpirun, 1, BASE + MIXED + ["-output", out(name), "-restart", ck], timeout=600)
 
 

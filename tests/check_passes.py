@@ -40,7 +40,7 @@ import os
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, history_and_tools, out, run, run_all
+from tfcheck import Checks, args, checkpoint_at, history_and_tools, out, run, run_all
 
 tf, mpirun, src = args()
 k = Checks("passes")
@@ -111,8 +111,7 @@ for name, h, want in (("TURNED", turned, (0.0, -U)), ("SAME", same, (-U, 0.0))):
 whole = history_and_tools(out("passes_side.h5"))
 ck = out("passes_side_ck.h5")
 every = int(np.sum(whole["stage"] <= 3)) + int(np.sum(whole["stage"] == 4)) // 2
-run(tf, mpirun, 1, RUNS["passes_side.h5"] + ["-output", out("passes_part.h5"), "-checkpoint", ck, "-checkpoint_every",
-                                              every], timeout=600)
+checkpoint_at(tf, mpirun, 1, RUNS["passes_side.h5"] + ["-output", out("passes_part.h5")], ck, every, timeout=600)
 cont = run(tf, mpirun, 1, RUNS["passes_side.h5"] + ["-output", out("passes_part.h5"), "-restart", ck], check=False,
            timeout=600)
 with h5py.File(ck, "r") as c:

@@ -72,7 +72,7 @@ import math
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, history_and_tools, out, run, run_all
+from tfcheck import Checks, args, checkpoint_at, history_and_tools, out, run, run_all
 
 tf, mpirun, src = args()
 k = Checks("side_dies")
@@ -103,7 +103,7 @@ def continued(name, whole, every, inside, label):
     inside the load factors `inside` (a checkpoint at the run's end would restart nothing), against `whole`."""
     ck = out(f"{name}_ck.h5")
     opts = RUNS[f"{name}.h5"] + ["-output", out(f"{name}_part.h5")]
-    run(tf, mpirun, 1, opts + ["-checkpoint", ck, "-checkpoint_every", every], timeout=600)
+    checkpoint_at(tf, mpirun, 1, opts, ck, every, timeout=600)
     with h5py.File(ck, "r") as c:
         lam = c["/run/lambda"][0]
     run(tf, mpirun, 1, opts + ["-restart", ck], timeout=600)

@@ -159,6 +159,19 @@ def ran_to_end(k, tf, mpirun, n, opts, path, label):
     return history_and_tools(path)
 
 
+def checkpoint_at(tf, mpirun, np_, opts, ck, every, **kw):
+    """Runs tubeform on np_ ranks with opts (its -output among them) up to increment `every`, writes its checkpoint
+    there to `ck` and stops (-rmin_max_increments `every`, a run control a restart may change): the rest of the
+    path, which the restart from `ck` computes, is not run twice. The stop is an error exit naming the option; any
+    other end fails the test. Returns the CompletedProcess."""
+    p = run(tf, mpirun, np_, list(opts) + ["-checkpoint", ck, "-checkpoint_every", every, "-rmin_max_increments", every],
+            check=False, **kw)
+    if p.returncode == 0 or "-rmin_max_increments" not in p.stdout + p.stderr:
+        print(p.stdout, p.stderr)
+        raise SystemExit(f"checkpoint_at {every}: exit {p.returncode}, not the stop at increment {every}")
+    return p
+
+
 def lower_die_steps(path, h):
     """The field steps' lambda in the result file `path` and the lower die's displacement at each ((steps, 1, 2);
     none where it has no lower die of its own), from its history and tools `h` (history_and_tools)."""
