@@ -43,16 +43,21 @@ E. A later pass pressed by a force (-pass2_die_force; the paper's tube in the V-
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, out, run
+from tfcheck import Checks, args, checkpoint_at, out, run
 
 tf, mpirun, src = args()
 k = Checks("force")
 
 
-def press(scene, name, extra, n=1, check=True):
+def press(scene, name, extra, n=1, check=True, checkpoint=None):
+    """The history and the run; `checkpoint` (file, increment): run to that increment, its checkpoint written there
+    (tfcheck.checkpoint_at)."""
     opts = ["-options_file", f"{src}/options/{scene}.opts", "-options_file", f"{src}/options/preset-fast.opts",
             "-error_estimate", 0, "-progress", 0, "-output", out(name)]
-    p = run(tf, mpirun, n, opts + extra, check=check, timeout=600)
+    if checkpoint:
+        p = checkpoint_at(tf, mpirun, n, opts + extra, *checkpoint, timeout=600)
+    else:
+        p = run(tf, mpirun, n, opts + extra, check=check, timeout=600)
     with h5py.File(out(name), "r") as h:
         r = {c: h["/history"][c][:] for c in h["/history"]}
     return r, p
@@ -94,7 +99,7 @@ k.check(end < 1e-9, f"ring, the paper's method: the press ends at the force aske
         f"step meets its force exactly)")
 ck = out("force_ring_ck.h5")
 every = 2 * len(ring["load"]) // 3  # (not a divisor of the increments: the last checkpoint is inside the press)
-press("flattening", "force_ring_part.h5", ["-die_force", P, "-checkpoint", ck, "-checkpoint_every", every])
+press("flattening", "force_ring_part.h5", ["-die_force", P], checkpoint=(ck, every))
 with h5py.File(ck, "r") as c:
     lam = c["/run/lambda"][0]
 part, _ = press("flattening", "force_ring_part.h5", ["-die_force", P, "-restart", ck])

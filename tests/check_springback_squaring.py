@@ -33,7 +33,7 @@ import os
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, out, run
+from tfcheck import Checks, args, checkpoint_at, out, run
 
 tf, mpirun, src = args()
 k = Checks("springback_squaring")
@@ -45,12 +45,17 @@ TWO = ["-pass2_stroke", 4.2, "-pass2_turn", 90]
 PASSES = (("", 1), ("pass2_", 3))  # (attribute prefix, history stage) of each release
 
 
-def go(name, opts, np_=1, fresh=True):
+def go(name, opts, np_=1, fresh=True, checkpoint=None):
+    """A run's history, attributes and output; `checkpoint` (file, increment): run to that increment, its checkpoint
+    written there (tfcheck.checkpoint_at)."""
     f = out(f"sb_{name}.h5")
     for p in (f, f + ".partial") if fresh else ():
         if os.path.exists(p):
             os.remove(p)
-    p = run(tf, mpirun, np_, opts + ["-output", f])
+    if checkpoint:
+        p = checkpoint_at(tf, mpirun, np_, opts + ["-output", f], *checkpoint)
+    else:
+        p = run(tf, mpirun, np_, opts + ["-output", f])
     with h5py.File(f, "r") as h:
         attrs = dict(h["/history"].attrs, gauss_points=4 * h["/viz/topology/cells"].shape[0])
         return {c: h["/history"][c][:] for c in h["/history"]}, attrs, p.stdout
@@ -138,7 +143,7 @@ def restart(name, opts, full, stage):
     rows = np.flatnonzero(full["stage"] == stage)
     every = int(full["increment"][rows[len(rows) // 2]])  # (past half the run: its only multiple)
     ck = out(f"sb_{name}.ck.h5")
-    go(name, opts + ["-checkpoint", ck, "-checkpoint_every", every])
+    go(name, opts, checkpoint=(ck, every))
     with h5py.File(ck, "r") as c:
         lam = c["/run/lambda"][0]
     h, _, said = go(name, opts + ["-restart", ck], fresh=False)
