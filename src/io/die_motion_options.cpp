@@ -3,7 +3,7 @@
 // reads its own options, -<prefix>*, refusing what it cannot move by; an option of another of the die's words'
 // kinds given is refused, naming it. The lower die: -lower_die_motion (mirror, fixed, path: the schedule, and the
 // kinds registered after the built-in ones); the upper die: -die_motion (stroke, path, force: each its kind's own
-// name). Combinations with the scene's other options are the scene's checks (options_check.cpp).
+// name). Combinations with the scene's other options are each kind's check (io/motion_checks.hpp) and the scene's.
 #include <algorithm>
 #include <iterator>
 

@@ -117,14 +117,6 @@ PetscErrorCode CheckPassStrokesAndDies(MPI_Comm comm, const Options &opt);
 PetscErrorCode CheckPassTurns(MPI_Comm comm, const Options &opt);
 // Collective: side dies (`name`: -side_die, -pass<N>_side_die; "none" or a shape) go with the other options.
 PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const std::string &value);
-// Collective: an upper die on a path of its own (`name`: -die_path, -pass<N>_die_path; its points, turns and pivot
-// checked by the path kind's reader): the squaring scene's die, within a quarter turn, ending below its start, over
-// a lower die that stays.
-PetscErrorCode CheckUpperPath(MPI_Comm comm, const Options &opt, const MotionSpec &path, const std::string &name);
-// Collective: pass `pass` pressed with a force (PassExtent::Forced; the force itself checked by the force kind's
-// reader) goes with the other options: a lower die that stays in the half and full models, the last pass, not
-// withdrawn; the first pass's not with -stroke_corner_radius. Nothing where it presses by the stroke.
-PetscErrorCode CheckForcePass(MPI_Comm comm, const Options &opt, int pass);
 // The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
 std::string PassOption(int pass, const char *what);
 // Collective: refuses material constants out of range or not in MPa (called by CheckOptions).
