@@ -22,8 +22,7 @@ MotionCheck FindMotionCheck(const std::string &kind)
 PetscErrorCode CheckUpperMotion(MPI_Comm comm, const Options &opt, int pass)
 {
   PetscFunctionBeginUser;
-  if (const MotionCheck check = FindMotionCheck(DieMotionName(opt.passes[pass].dies.motion.kind)))
-    PetscCall(check(comm, opt, pass));
+  if (const MotionCheck check = FindMotionCheck(opt.passes[pass].dies.motion.kind)) PetscCall(check(comm, opt, pass));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -23,7 +23,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
   const DieSet &first = FirstDies(opt);
   bool asked = first.lower.kind != "mirror" || !LowerDieMoves(opt, "mirror") || opt.model.part != TubeModel::Auto ||
-               !DieMoves(first, DieMotionKind::Stroke) || first.side.kind != "none" || first.side_force != 0 ||
+               !DieMoves(first, "stroke") || first.side.kind != "none" || first.side_force != 0 ||
                opt.model.die_offset != 0 || opt.model.full_hold != FullHold::Auto;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     const PassSpec &p = LaterPass(opt, pass);
@@ -75,7 +75,7 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckDies(comm, opt));
-  if (DieMoves(FirstDies(opt), DieMotionKind::Path)) SetDiePathStroke(opt);
+  if (DieMoves(FirstDies(opt), "path")) SetDiePathStroke(opt);
   PetscCall(CheckLowerDieMotion(comm, opt));
   PetscCall(CheckPassesAndHolds(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
