@@ -3,7 +3,7 @@
 // reads its own options, -<prefix>*, refusing what it cannot move by; an option of another of the die's words'
 // kinds given is refused, naming it. The lower die: -lower_die_motion (mirror, fixed, path: the schedule, and the
 // kinds registered after the built-in ones); the upper die: -die_motion (stroke, path, force: each its kind's own
-// name). Combinations with the scene's other options are the scene's checks (options_check.cpp).
+// name). Combinations with the scene's other options are each kind's check (io/motion_checks.hpp) and the scene's.
 #include <algorithm>
 #include <iterator>
 
@@ -62,12 +62,22 @@ std::string LowerHelp(const std::vector<MotionWord> &words)
   return help + "; the upper die travels U but with fixed";
 }
 
-// The upper die's words (-die_motion): each its kind's name, in DieMotionKind's order.
+// The upper die's words (-die_motion, -pass<N>_die_motion): each kind of the registry that offers one
+// (MotionKind::upper_word), in the registry's order.
 std::vector<MotionWord> UpperWords()
 {
   std::vector<MotionWord> words;
-  for (const char *w : kDieMotionWords) words.push_back({w, w});
+  for (const std::string &kind : MotionKinds())
+    if (const char *word = FindMotionKind(kind)->upper_word) words.push_back({word, kind});
   return words;
+}
+
+// Where the word `word` is among `words` (-1: not there).
+PetscInt WordAt(const std::vector<MotionWord> &words, const char *word)
+{
+  for (size_t k = 0; k < words.size(); ++k)
+    if (words[k].word == word) return (PetscInt)k;
+  return -1;
 }
 
 // An upper die's word where -<prefix>motion is not given, from the old spellings: path where -<prefix>path,
@@ -84,15 +94,16 @@ PetscErrorCode OldSpelling(MPI_Comm comm, OptionReader &read, const std::string 
   PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-path", &path));
   PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-path_turn", &turn));
   PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-pivot", &pivot));
-  if (words.size() > (size_t)DieMotionKind::Force) {
+  const PetscInt path_at = WordAt(words, "path"), force_at = WordAt(words, "force");
+  if (force_at >= 0) {
     PetscCall(read.CheckNumber(comm, ("-" + prefix + "force").c_str(), false));
     PetscCall(PetscOptionsGetReal(nullptr, prefix.c_str(), "-force", &f, &force));
   }
   zero_force = !motion && force && f == 0;
-  if (!motion && (path || turn || pivot))
-    choice = (PetscInt)DieMotionKind::Path;
+  if (!motion && (path || turn || pivot) && path_at >= 0)
+    choice = path_at;
   else if (!motion && force && f != 0)
-    choice = (PetscInt)DieMotionKind::Force;
+    choice = force_at;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 } // namespace
@@ -134,11 +145,12 @@ PetscErrorCode ReadUpperMotion(MPI_Comm comm, OptionReader &read, const UpperMot
   words.resize(block.words);
   const std::string &prefix = block.prefix;
   std::vector<const char *> list;
-  PetscInt choice = (PetscInt)die.kind;
+  PetscInt choice = 0;
   bool zero_force = false;
 
   PetscFunctionBeginUser;
   for (const MotionWord &w : words) {
+    if (w.kind == die.kind) choice = (PetscInt)list.size();
     list.push_back(w.word.c_str());
     for (const std::string &name : FindMotionKind(w.kind)->options) read.Note(("-" + prefix + name).c_str());
   }
@@ -148,7 +160,7 @@ PetscErrorCode ReadUpperMotion(MPI_Comm comm, OptionReader &read, const UpperMot
   OptionsBlock end(PetscOptionsObject);
   PetscCall(PetscOptionsEList("-motion", block.help.c_str(), "tubeform", list.data(), (PetscInt)list.size(),
                               list[choice], &choice, nullptr));
-  die.kind = (DieMotionKind)choice;
+  die.kind = words[choice].kind;
   if (help)
     for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, die.spec));
   else
@@ -166,7 +178,7 @@ PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &op
     "tool scenes: the upper die moves down by the stroke U (stroke; 2 U over a fixed lower die), along a path of its "
     "own (path: -die_path, -die_path_turn, -die_pivot) or presses with a force (force: -die_force); without it, "
     "-die_path (or its turns or pivot) means path, -die_force other than 0 force (docs/dies.md)",
-    std::size(kDieMotionWords)};
+    UpperWords().size()};
   PetscFunctionBeginUser;
   DieMotion &motion = opt.passes[0].dies.motion;
   motion.spec.tool = "the " + opt.scene + " scene's upper die";
@@ -176,6 +188,9 @@ PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &op
 
 PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
 {
+  std::vector<std::string> names = {"motion"}; // (-<prefix>motion and the upper die's words' kinds' options)
+  for (const MotionWord &w : UpperWords())
+    for (const std::string &name : FindMotionKind(w.kind)->options) names.push_back(name);
   PetscFunctionBeginUser;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     PassSpec &p = opt.passes[pass];
@@ -191,21 +206,20 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
                  "stroke the outcome; the last pass); without it, -pass2_die_path (or its turns or pivot) means path, "
                  "-pass2_die_force other than 0 force; a later pass's by its number: -pass3_die_path, ... "
                  "(docs/dies.md)",
-      std::size(kDieMotionWords)};
+      UpperWords().size()};
     bool given = pass == 1; // (a later one's read, and listed by -help, where one of them is given)
-    for (const char *name : {"-motion", "-path", "-path_turn", "-pivot", "-force"}) {
+    for (const std::string &name : names) {
       PetscBool set;
-      PetscCall(PetscOptionsHasName(nullptr, block.prefix.c_str(), name, &set));
+      PetscCall(PetscOptionsHasName(nullptr, block.prefix.c_str(), ("-" + name).c_str(), &set));
       given = given || set;
     }
     if (!given) {
-      for (const char *name : {"motion", "path", "path_turn", "pivot", "force"})
-        read.Note(("-" + block.prefix + name).c_str(), block.help.c_str());
+      for (const std::string &name : names) read.Note(("-" + block.prefix + name).c_str(), block.help.c_str());
       continue;
     }
     p.dies.motion.spec.tool = "the " + PassOrdinal(pass) + " pass's upper die";
     PetscCall(ReadUpperMotion(comm, read, block, opt.help, p.dies.motion));
-    if (opt.help || p.dies.motion.kind != DieMotionKind::Path) continue;
+    if (opt.help || p.dies.motion.kind != "path") continue;
     // Its stroke: where its path ends (U = -y / 2 of its last point, from where it starts).
     const std::string path = "-" + block.prefix + "path";
     const double y = p.dies.motion.spec.points.back()[1];

@@ -2,6 +2,7 @@
 // problem, naming the option and the range it allows.
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/friction_options.hpp"
+#include "tubeform/io/motion_checks.hpp"
 #include "tubeform/io/option_reader.hpp"
 #include "tubeform/io/options.hpp"
 #include "tubeform/io/press_options.hpp"
@@ -22,7 +23,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   const bool press = opt.scene == "squaring" || opt.scene == "flattening";
   const DieSet &first = FirstDies(opt);
   bool asked = first.lower.kind != "mirror" || !LowerDieMoves(opt, "mirror") || opt.model.part != TubeModel::Auto ||
-               !DieMoves(first, DieMotionKind::Stroke) || first.side.kind != "none" || first.side_force != 0 ||
+               !DieMoves(first, "stroke") || first.side.kind != "none" || first.side_force != 0 ||
                opt.model.die_offset != 0 || opt.model.full_hold != FullHold::Auto;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     const PassSpec &p = LaterPass(opt, pass);
@@ -35,32 +36,14 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
     "-side_force, -full_hold: "
     "the %s scene presses with no dies (these are the squaring and flattening scenes' options)",
     opt.scene.c_str());
-  PetscCall(CheckForcePass(comm, opt, 0));       // (passes_check.cpp; a later pass's with its stroke)
+  PetscCall(CheckUpperMotion(comm, opt, 0));     // (its motion kind's check; a later pass's with its stroke)
   PetscCall(CheckPassStrokesAndDies(comm, opt)); // (passes_check.cpp)
   PetscCall(CheckSideDieOptions(comm, opt));     // (die_shape_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// -die_motion path (its points, turns and pivot checked by the path kind's reader, tool/motion_path.cpp): the
-// squaring scene's upper die, within a quarter turn, ending below its start; over a lower die that stays; one pass
-// by the stroke it ends at.
-PetscErrorCode CheckDiePath(MPI_Comm comm, Options &opt)
-{
-  const MotionSpec &path = FirstDies(opt).motion.spec;
-  PetscFunctionBeginUser;
-  // The upper die through the points in turn, relative to a lower die that stays (passes_check.cpp); one pass by
-  // the stroke.
-  PetscCall(CheckUpperPath(comm, opt, path, "-die_path"));
-  PetscCheck(opt.stroke.path.empty() && opt.stroke.corner_radius <= 0 && PassCount(opt) == 1 &&
-               FirstDies(opt).side.kind == "none" && opt.release.unload != Unload::Withdraw &&
-               opt.model.die_offset == 0,
-             comm, PETSC_ERR_USER_INPUT,
-             "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, "
-             "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways is "
-             "its own offset)");
-  opt.stroke.u = -0.5 * path.points.back()[1];
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
+// -die_motion path (checked by the path motion's check, motion_check_path.cpp): the stroke U where the path ends.
+void SetDiePathStroke(Options &opt) { opt.stroke.u = -0.5 * FirstDies(opt).motion.spec.points.back()[1]; }
 
 // A lower die on a motion of its own (neither mirror nor fixed: a path, or another kind; its options are its
 // kind's own reader's, tool/motion.hpp): one pass, the stroke rising.
@@ -92,7 +75,7 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckDies(comm, opt));
-  if (DieMoves(FirstDies(opt), DieMotionKind::Path)) PetscCall(CheckDiePath(comm, opt));
+  if (DieMoves(FirstDies(opt), "path")) SetDiePathStroke(opt);
   PetscCall(CheckLowerDieMotion(comm, opt));
   PetscCall(CheckPassesAndHolds(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/io/motion_checks.hpp"
 #include "tubeform/io/options.hpp"
 
 namespace tf {
@@ -14,34 +15,6 @@ std::string PassExtent::Option() const
 {
   const char *what = Forced() ? "die_force" : "stroke";
   return pass == 0 ? std::string("-") + what : PassOption(pass, what);
-}
-
-PetscErrorCode CheckForcePass(MPI_Comm comm, const Options &opt, int pass)
-{
-  const PassExtent e = Extent(opt, pass);
-  const std::string name = e.Option();
-  PetscFunctionBeginUser;
-  if (!e.Forced()) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(opt.scene == "squaring" || opt.scene == "flattening", comm, PETSC_ERR_USER_INPUT,
-             "%s %g: the %s scene presses with no dies (the squaring and flattening scenes' option)", name.c_str(),
-             e.force, opt.scene.c_str());
-  // Force control drives one die; the stroke is its outcome.
-  PetscCheck(QuarterModel(opt) || LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
-             "%s %g: with the half or full model the lower die must stay (-lower_die_motion fixed); a "
-             "lower die moving by the upper one's unknown stroke is not available",
-             name.c_str(), e.force);
-  PetscCheck(PassCount(opt) == pass + 1, comm, PETSC_ERR_USER_INPUT, "%s %g: not with a %s pass (%s); %s", name.c_str(),
-             e.force, PassOrdinal(pass + 1).c_str(), PassOption(pass + 1, "stroke").c_str(),
-             pass == 0 ? "press one pass by force" : "a pass by force is the last");
-  PetscCheck(opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
-             "%s %g: -unload withdraw moves the die back by its stroke; use -unload reverse or none", name.c_str(),
-             e.force);
-  PetscCheck(pass == 0 || LaterPass(opt, pass).stroke == 0, comm, PETSC_ERR_USER_INPUT,
-             "%s %g: in place of %s (the pass ends at that punch load, its stroke the outcome); give one of them",
-             name.c_str(), e.force, PassOption(pass, "stroke").c_str());
-  PetscCheck(pass > 0 || opt.stroke.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-             "%s %g: the stroke is its outcome; -stroke_corner_radius sets a stroke", name.c_str(), e.force);
-  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 // Side dies (`name`: -side_die, -pass<N>_side_die): none, or with what side dies press with.
@@ -56,51 +29,7 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// An upper die's turns along its path (degrees): a die turned by more than a quarter turn no longer presses along
-// its press's y, along which its punch load is read.
-constexpr double kMaxDieTurn = 90;
-
-PetscErrorCode CheckUpperPath(MPI_Comm comm, const Options &opt, const MotionSpec &path, const std::string &name)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
-             "%s: the squaring scene's upper die through x,y pairs (mm, from its start), in turn; not the %s scene's",
-             name.c_str(), opt.scene.c_str());
-  for (double turn : path.turns)
-    PetscCheck(std::abs(turn) <= kMaxDieTurn, comm, PETSC_ERR_USER_INPUT,
-               "%s_turn %g: each turn must be a number of degrees within +-%g", name.c_str(), turn, kMaxDieTurn);
-  const double y = path.points.back()[1];
-  PetscCheck(y < 0, comm, PETSC_ERR_USER_INPUT,
-             "%s: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", name.c_str(),
-             y);
-  PetscCheck(LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
-             "%s: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion fixed",
-             name.c_str());
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 namespace {
-
-// Pass `pass`'s upper die on a path of its own (its points, turns and pivot checked by the path kind's reader, its
-// stroke set where it ends: ReadPassMotions), as the first pass's -die_path: the squaring scene's upper die, within a
-// quarter turn, over a lower die that stays, with no side dies pressing by the stroke in any pass; off its press's
-// axis (sideways or turned), held by the rotation hold in the full model.
-PetscErrorCode CheckPassPath(MPI_Comm comm, const Options &opt, int pass)
-{
-  const MotionSpec &path = LaterPass(opt, pass).dies.motion.spec;
-  const std::string name = PassOption(pass, "die_path");
-  bool side = false;
-  PetscFunctionBeginUser;
-  PetscCall(CheckUpperPath(comm, opt, path, name));
-  for (int k = 0; k < PassCount(opt); ++k) side = side || DiesOfPass(opt, k).side.kind != "none";
-  PetscCheck(!side, comm, PETSC_ERR_USER_INPUT,
-             "%s: not with side dies (-side_die, -pass<N>_side_die), which press by the stroke", name.c_str());
-  PetscCheck(!PassOffAxis(opt, pass) || HeldByRotation(opt, pass), comm, PETSC_ERR_USER_INPUT,
-             "%s: a die off the axis (a sideways point or a turn) breaks the tube's mirror symmetry; use -model full "
-             "(or auto) -full_hold rotation (or auto)",
-             name.c_str());
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
 
 // Pass `pass`'s stroke and dies (a pass given: PassExtent).
 PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
@@ -127,8 +56,7 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
              ordinal.c_str());
   if (!p.dies.side.kind.empty())
     PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), ShapeWord(p.dies.side)));
-  if (p.dies.motion.kind == DieMotionKind::Path) PetscCall(CheckPassPath(comm, opt, pass));
-  PetscCall(CheckForcePass(comm, opt, pass));
+  PetscCall(CheckUpperMotion(comm, opt, pass)); // (its motion kind's check: motion_checks.hpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

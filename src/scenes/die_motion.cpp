@@ -65,7 +65,7 @@ bool LowerDieClosing(const Options &o) { return LowerMotionOf(o).closing; }
 std::vector<double> UpperKinks(const DieMotion &die, double until)
 {
   MotionHandle upper;
-  if (die.kind != DieMotionKind::Path || !MakeMotion(DieMotionName(die.kind), die.spec, upper).empty()) return {};
+  if (die.kind != "path" || !MakeMotion(die.kind, die.spec, upper).empty()) return {};
   return upper->Kinks(until);
 }
 
@@ -82,10 +82,10 @@ std::vector<double> PressKinks(const Options &opt, double until)
 PetscErrorCode SetUpperMotion(MPI_Comm comm, const char *option, const DieMotion &die, Tool &upper)
 {
   PetscFunctionBeginUser;
-  if (die.kind != DieMotionKind::Stroke) { // (the stroke: the lower die's word's, SetLowerMotion)
+  if (die.kind != "stroke") { // (the stroke: the lower die's word's, SetLowerMotion)
     MotionSpec spec = die.spec;
     spec.direction = upper.Direction(); // (force: along the stroke's)
-    PetscCall(SetMotion(comm, option, DieMotionName(die.kind), spec, upper));
+    PetscCall(SetMotion(comm, option, die.kind, spec, upper));
   }
   if (!die.spec.turns.empty()) upper.origin = PivotOf(die.spec); // (-die_pivot, -pass<N>_die_pivot)
   PetscFunctionReturn(PETSC_SUCCESS);

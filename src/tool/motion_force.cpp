@@ -47,10 +47,16 @@ std::unique_ptr<Motion> ForceMotion(const Vec2 &direction) { return std::make_un
 
 const MotionKind &ForceKind()
 {
-  static const MotionKind kind{"force", {"force"}, ReadForce, [](const MotionSpec &s, MotionHandle &m) {
+  static const MotionKind kind{"force",
+                               {"force"},
+                               ReadForce,
+                               [](const MotionSpec &s, MotionHandle &m) {
                                  return Moves(s.direction) ? (m = ForceMotion(s.direction), std::string())
                                                            : "a force along no direction";
-                               }};
+                               },
+                               nullptr,
+                               nullptr,
+                               "force"};
   return kind;
 }
 

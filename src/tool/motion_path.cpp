@@ -153,7 +153,7 @@ std::unique_ptr<Motion> PathMotion(const ToolPath &path) { return std::make_uniq
 
 const MotionKind &PathKind()
 {
-  static const MotionKind kind{"path", {"path", "path_turn", "pivot"}, ReadPath, MakePath};
+  static const MotionKind kind{"path", {"path", "path_turn", "pivot"}, ReadPath, MakePath, nullptr, nullptr, "path"};
   return kind;
 }
 

@@ -25,7 +25,8 @@ const MotionKind &StrokeKind()
                                                            : "a stroke along no direction";
                                },
                                "mirror",
-                               "moves up by the stroke U (mirror)"};
+                               "moves up by the stroke U (mirror)",
+                               "stroke"};
   return kind;
 }
 

@@ -117,14 +117,6 @@ PetscErrorCode CheckPassStrokesAndDies(MPI_Comm comm, const Options &opt);
 PetscErrorCode CheckPassTurns(MPI_Comm comm, const Options &opt);
 // Collective: side dies (`name`: -side_die, -pass<N>_side_die; "none" or a shape) go with the other options.
 PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const std::string &value);
-// Collective: an upper die on a path of its own (`name`: -die_path, -pass<N>_die_path; its points, turns and pivot
-// checked by the path kind's reader): the squaring scene's die, within a quarter turn, ending below its start, over
-// a lower die that stays.
-PetscErrorCode CheckUpperPath(MPI_Comm comm, const Options &opt, const MotionSpec &path, const std::string &name);
-// Collective: pass `pass` pressed with a force (PassExtent::Forced; the force itself checked by the force kind's
-// reader) goes with the other options: a lower die that stays in the half and full models, the last pass, not
-// withdrawn; the first pass's not with -stroke_corner_radius. Nothing where it presses by the stroke.
-PetscErrorCode CheckForcePass(MPI_Comm comm, const Options &opt, int pass);
 // The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
 std::string PassOption(int pass, const char *what);
 // Collective: refuses material constants out of range or not in MPa (called by CheckOptions).
@@ -210,17 +202,17 @@ inline LowerDieSpec LowerDie(const Options &opt)
 // Its word is `word` (mirror, fixed, ...).
 inline bool LowerDieMoves(const Options &opt, const char *word) { return opt.lower_motion.word == word; }
 // A pass's upper die's kind is `kind` (`dies`: a pass's, FirstDies(opt), DiesOfPass or the scene's).
-inline bool DieMoves(const DieSet &dies, DieMotionKind kind) { return dies.motion.kind == kind; }
+inline bool DieMoves(const DieSet &dies, const char *kind) { return dies.motion.kind == kind; }
 // The first pass's upper die's own path (-die_path with its turns; none unless -die_motion path).
 inline ToolPath DiePath(const Options &opt)
 {
-  return DieMoves(FirstDies(opt), DieMotionKind::Path) ? PathOf(UpperDie(opt).spec) : ToolPath();
+  return DieMoves(FirstDies(opt), "path") ? PathOf(UpperDie(opt).spec) : ToolPath();
 }
 // The die's travel over the first pass in units of the stroke U (mm; -output_stroke counts it): along -stroke_path,
 // half -die_path's length (ToolPath: a fixed lower die's U is half the upper one's travel), or -stroke.
 inline double Travel(const Options &opt)
 {
-  if (DieMoves(FirstDies(opt), DieMotionKind::Path)) return DiePath(opt).end();
+  if (DieMoves(FirstDies(opt), "path")) return DiePath(opt).end();
   double travel = opt.stroke.path.empty() ? opt.stroke.u : 0, at = 0;
   for (double u : opt.stroke.path) travel += std::abs(u - at), at = u;
   return travel;
@@ -228,7 +220,7 @@ inline double Travel(const Options &opt)
 // -die_path moves the first pass's die sideways somewhere.
 inline bool DiePathSideways(const Options &opt)
 {
-  if (!DieMoves(FirstDies(opt), DieMotionKind::Path)) return false;
+  if (!DieMoves(FirstDies(opt), "path")) return false;
   for (const Vec2 &p : FirstDies(opt).motion.spec.points)
     if (p[0] != 0) return true;
   return false;
@@ -237,7 +229,7 @@ inline bool DiePathSideways(const Options &opt)
 inline bool MotionOffAxis(const DieMotion &m)
 {
   bool off = false;
-  if (m.kind == DieMotionKind::Path) {
+  if (m.kind == "path") {
     for (const Vec2 &p : m.spec.points) off = off || p[0] != 0;
     for (double a : m.spec.turns) off = off || a != 0;
   }

@@ -24,17 +24,14 @@ constexpr const char *WordOf(const char *const (&words)[N], E value)
 // stations are a handful.
 constexpr int kMaxPasses = 9;
 
-// The upper die's motion (-die_motion; docs/dies.md): a kind of the motion registry (tool/motion.hpp), its word
-// the kind's name (DieMotionName), and what its options (-die_path, -die_path_turn, -die_pivot; -die_force) give it,
-// read by the kind (io/die_motion_options.cpp). The scenes read it through UpperDie.
-enum class DieMotionKind { Stroke, Path, Force };
+// The upper die's motion (-die_motion; docs/dies.md): the name of a kind of the motion registry (tool/motion.hpp)
+// that offers the upper die a word (MotionKind::upper_word: stroke, path, force), and what its options (-die_path,
+// -die_path_turn, -die_pivot; -die_force) give it, read by the kind (io/die_motion_options.cpp). The scenes read it
+// through UpperDie.
 struct DieMotion {
-  DieMotionKind kind = DieMotionKind::Stroke; // stroke: down by the stroke U (2 U over a fixed lower die)
-  MotionSpec spec;                            // path: its points, turns, pivot; force: its punch load (N/mm)
+  std::string kind = "stroke"; // stroke: down by the stroke U (2 U over a fixed lower die)
+  MotionSpec spec;             // path: its points, turns, pivot; force: its punch load (N/mm)
 };
-// The kinds' words, in DieMotionKind's order.
-constexpr const char *kDieMotionWords[] = {"stroke", "path", "force"};
-inline const char *DieMotionName(DieMotionKind kind) { return WordOf(kDieMotionWords, kind); }
 
 // The lower die's motion (-lower_die_motion; docs/dies.md): its word (mirror, fixed, path, or a kind registered after
 // the built-in ones: io/die_motion_options.cpp), the kind of the motion registry that word names (mirror: a stroke),

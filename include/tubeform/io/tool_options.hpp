@@ -23,7 +23,8 @@ PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &op
 // word's kind is refused, naming it.
 PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
 // An upper die's motion's block: its options prefix (die_: -die_motion, -die_path, ...), its title in -help, the help
-// of -<prefix>motion, and how many of the upper die's words (kDieMotionWords, in order) it offers.
+// of -<prefix>motion, and how many of the upper die's words (the registry's kinds' MotionKind::upper_word, in the
+// registry's order) it offers.
 struct UpperMotionBlock {
   std::string prefix, title, help;
   size_t words;

@@ -121,7 +121,8 @@ using MotionReader = PetscErrorCode (*)(PetscOptionItems *PetscOptionsObject, Mo
 using MotionFactory = std::string (*)(const MotionSpec &spec, MotionHandle &m);
 // A kind in the registry: its name, its options' names under a prefix (without the dash), its reader (none: it
 // reads nothing) and its factory; the word -lower_die_motion offers it under (none: the lower die does not take it)
-// and what the lower die then does in -help's words (none: "moves as its motion <word> says"). Each kind's file
+// and what the lower die then does in -help's words (none: "moves as its motion <word> says"); the word
+// -die_motion and -pass<N>_die_motion offer it under (none: the upper die does not take it). Each kind's file
 // defines its own (FixedKind(), ..., the registry lists them).
 struct MotionKind {
   const char *name;
@@ -130,6 +131,7 @@ struct MotionKind {
   MotionFactory make;
   const char *lower_word = nullptr;
   const char *lower_help = nullptr;
+  const char *upper_word = nullptr;
 };
 
 // The registry: a motion of the kind named `kind` from `spec` into `m`; "" or why not (an unknown kind names the
