@@ -19,7 +19,7 @@ namespace {
 PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
-  const bool press = opt.scene == "squaring" || opt.scene == "flattening";
+  const bool press = PressesWithTools(opt);
   const DieSet &first = FirstDies(opt);
   bool asked = first.lower.kind != "mirror" || !LowerDieMoves(opt, "mirror") || opt.model.part != TubeModel::Auto ||
                !DieMoves(first, DieMotionKind::Stroke) || first.side.kind != "none" || first.side_force != 0 ||

@@ -22,7 +22,7 @@ PetscErrorCode CheckForcePass(MPI_Comm comm, const Options &opt, int pass)
   const std::string name = e.Option();
   PetscFunctionBeginUser;
   if (!e.Forced()) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(opt.scene == "squaring" || opt.scene == "flattening", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(PressesWithTools(opt), comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s scene presses with no dies (the squaring and flattening scenes' option)", name.c_str(),
              e.force, opt.scene.c_str());
   // Force control drives one die; the stroke is its outcome.
@@ -63,7 +63,7 @@ constexpr double kMaxDieTurn = 90;
 PetscErrorCode CheckUpperPath(MPI_Comm comm, const Options &opt, const MotionSpec &path, const std::string &name)
 {
   PetscFunctionBeginUser;
-  PetscCheck(opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(PressesWithDie(opt), comm, PETSC_ERR_USER_INPUT,
              "%s: the squaring scene's upper die through x,y pairs (mm, from its start), in turn; not the %s scene's",
              name.c_str(), opt.scene.c_str());
   for (double turn : path.turns)
@@ -109,7 +109,7 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   const PassExtent e = Extent(opt, pass);
   const std::string stroke = PassOption(pass, "stroke"), ordinal = PassOrdinal(pass), given = e.Option();
   PetscFunctionBeginUser;
-  PetscCheck(opt.scene == "squaring" || p.dies.upper.kind.empty(), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(PressesWithDie(opt) || p.dies.upper.kind.empty(), comm, PETSC_ERR_USER_INPUT,
              "%s: the %s scene presses with plates, not dies", PassOption(pass, "die_profile").c_str(),
              opt.scene.c_str());
   PetscCheck(p.stroke >= 0 && std::isfinite(p.stroke), comm, PETSC_ERR_USER_INPUT,
