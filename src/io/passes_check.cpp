@@ -26,7 +26,7 @@ PetscErrorCode CheckForcePass(MPI_Comm comm, const Options &opt, int pass)
              "%s %g: the %s scene presses with no dies (the squaring and flattening scenes' option)", name.c_str(),
              e.force, opt.scene.c_str());
   // Force control drives one die; the stroke is its outcome.
-  PetscCheck(QuarterModel(opt) || LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(QuarterModel(opt) || LowerDieMoves(opt, LowerDieMove::Fixed), comm, PETSC_ERR_USER_INPUT,
              "%s %g: with the half or full model the lower die must stay (-lower_die_motion fixed); a "
              "lower die moving by the upper one's unknown stroke is not available",
              name.c_str(), e.force);
@@ -73,7 +73,7 @@ PetscErrorCode CheckUpperPath(MPI_Comm comm, const Options &opt, const MotionSpe
   PetscCheck(y < 0, comm, PETSC_ERR_USER_INPUT,
              "%s: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", name.c_str(),
              y);
-  PetscCheck(LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(LowerDieMoves(opt, LowerDieMove::Fixed), comm, PETSC_ERR_USER_INPUT,
              "%s: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion fixed",
              name.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -219,8 +219,8 @@ inline LowerDieSpec LowerDie(const Options &opt)
   die.spec.direction = {0.0, 1.0};
   return die;
 }
-// Its word is `word` (mirror, fixed, ...).
-inline bool LowerDieMoves(const Options &opt, const char *word) { return opt.lower_motion.word == word; }
+// It goes with the upper die's motion as `move` says (mirror, fixed or its own).
+inline bool LowerDieMoves(const Options &opt, LowerDieMove move) { return opt.lower_motion.move == move; }
 // A pass's upper die's kind is `kind` (`dies`: a pass's, FirstDies(opt), DiesOfPass or the scene's).
 inline bool DieMoves(const DieSet &dies, DieMotionKind kind) { return dies.motion.kind == kind; }
 // The first pass's upper die's own path (-die_path with its turns; none unless -die_motion path).
@@ -315,7 +315,7 @@ inline std::string PassLowerDie(const Options &opt, int pass) { return ShapeWord
 // Pass `pass`'s lower die mirrors the upper one in shape and motion.
 inline bool PassMirrored(const Options &opt, int pass)
 {
-  return PassLowerDie(opt, pass) == "mirror" && LowerDieMoves(opt, "mirror");
+  return PassLowerDie(opt, pass) == "mirror" && LowerDieMoves(opt, LowerDieMove::Mirror);
 }
 // The tool scenes model a quarter of the tube where that is exact (or asked for): -model quarter, or auto
 // with lower dies that mirror the upper ones in shape and motion in every pass (each turned by quarter turns);
@@ -323,7 +323,7 @@ inline bool PassMirrored(const Options &opt, int pass)
 // refused after the model is chosen.)
 inline bool QuarterModel(const Options &opt)
 {
-  bool mirror = LowerDieMoves(opt, "mirror"), quarters = true;
+  bool mirror = LowerDieMoves(opt, LowerDieMove::Mirror), quarters = true;
   for (int pass = 0; pass < kMaxPasses; ++pass)
     mirror = mirror && PassLowerDie(opt, pass) == "mirror", quarters = quarters && QuarterTurn(opt, pass);
   const TubeModel part = opt.model.part;
