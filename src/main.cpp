@@ -91,7 +91,7 @@ static PetscErrorCode Run()
   opt.job_started = MPI_Wtime();
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   tf::Problem::CompanionRun companion;
-  if (opt.accuracy.error_estimate && (opt.scene == "squaring" || opt.scene == "flattening")) {
+  if (opt.accuracy.error_estimate && tf::PressesWithTools(opt)) {
     if (tf::CompanionsBeside(opt, size)) PetscFunctionReturn(tf::RunBeside(PETSC_COMM_WORLD, opt, RunLevels));
     companion = [](const tf::Options &ran, tf::Companions &out) {
       return tf::RunCompanions(PETSC_COMM_WORLD, ran, out);

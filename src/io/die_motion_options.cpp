@@ -128,6 +128,7 @@ PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &op
   PetscCall(PetscOptionsEList("-motion", help.c_str(), "tubeform", list.data(), (PetscInt)list.size(), list[choice],
                               &choice, nullptr));
   opt.lower_motion.word = words[choice].word, opt.lower_motion.kind = words[choice].kind;
+  opt.lower_motion.move = LowerDieMoveOf(opt.lower_motion.word);
   if (opt.help)
     for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, opt.lower_motion.spec));
   else

@@ -35,7 +35,7 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
 {
   const ModelParams &m = opt.model;
   PetscFunctionBeginUser;
-  bool mirror = LowerDieMoves(opt, "mirror");
+  bool mirror = LowerDieMoves(opt, LowerDieMove::Mirror);
   for (int pass = 0; pass < kMaxPasses; ++pass) mirror = mirror && PassLowerDie(opt, pass) == "mirror";
   PetscCheck(m.part != TubeModel::Quarter || mirror, comm, PETSC_ERR_USER_INPUT,
              "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
@@ -43,14 +43,14 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
   // The rotation hold: the full model; one extra unknown in a solve (scenes/hold.hpp).
   PetscCheck(std::isfinite(m.die_offset), comm, PETSC_ERR_USER_INPUT, "-die_offset %g: give a number of mm",
              m.die_offset);
-  PetscCheck(m.die_offset == 0 || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(m.die_offset == 0 || PressesWithDie(opt), comm, PETSC_ERR_USER_INPUT,
              "-die_offset %g: the squaring scene's die (a plate off the axis is the same plate)", m.die_offset);
   char off_axis[64] = "-die_path"; // (what puts the die off the axis, named in the errors)
   if (m.die_offset != 0) std::snprintf(off_axis, sizeof off_axis, "-die_offset %g", m.die_offset);
   if (m.die_offset == 0 && !DiePathSideways(opt)) std::snprintf(off_axis, sizeof off_axis, "-die_path_turn");
   PetscCheck(!DieOffAxis(opt) || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
              "%s: a die off the axis breaks the tube's mirror symmetry; use -model full (or auto)", off_axis);
-  PetscCheck(m.full_hold != FullHold::Rotation || opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(m.full_hold != FullHold::Rotation || PressesWithDie(opt), comm, PETSC_ERR_USER_INPUT,
              "-full_hold rotation: the %s scene's plates do not hold the tube's slide; use pins", opt.scene.c_str());
   PetscCheck(!DieOffAxis(opt) || m.full_hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
              "%s with -full_hold pins: the pins would hold the tube's slide against the die; use -full_hold rotation "

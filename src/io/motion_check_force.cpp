@@ -13,11 +13,11 @@ PetscErrorCode CheckForce(MPI_Comm comm, const Options &opt, int pass)
   const PassExtent e = Extent(opt, pass);
   const std::string name = e.Option();
   PetscFunctionBeginUser;
-  PetscCheck(opt.scene == "squaring" || opt.scene == "flattening", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(PressesWithTools(opt), comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s scene presses with no dies (the squaring and flattening scenes' option)", name.c_str(),
              e.force, opt.scene.c_str());
   // Force control drives one die; the stroke is its outcome.
-  PetscCheck(QuarterModel(opt) || LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(QuarterModel(opt) || LowerDieMoves(opt, LowerDieMove::Fixed), comm, PETSC_ERR_USER_INPUT,
              "%s %g: with the half or full model the lower die must stay (-lower_die_motion fixed); a "
              "lower die moving by the upper one's unknown stroke is not available",
              name.c_str(), e.force);

@@ -22,7 +22,7 @@ constexpr double kMaxDieTurn = 90;
 PetscErrorCode CheckUpperPath(MPI_Comm comm, const Options &opt, const MotionSpec &path, const std::string &name)
 {
   PetscFunctionBeginUser;
-  PetscCheck(opt.scene == "squaring", comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(PressesWithDie(opt), comm, PETSC_ERR_USER_INPUT,
              "%s: the squaring scene's upper die through x,y pairs (mm, from its start), in turn; not the %s scene's",
              name.c_str(), opt.scene.c_str());
   for (double turn : path.turns)
@@ -32,7 +32,7 @@ PetscErrorCode CheckUpperPath(MPI_Comm comm, const Options &opt, const MotionSpe
   PetscCheck(y < 0, comm, PETSC_ERR_USER_INPUT,
              "%s: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", name.c_str(),
              y);
-  PetscCheck(LowerDieMoves(opt, "fixed"), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(LowerDieMoves(opt, LowerDieMove::Fixed), comm, PETSC_ERR_USER_INPUT,
              "%s: the path is the upper die's, relative to a lower die that stays: give -lower_die_motion fixed",
              name.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -32,7 +32,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, const std::vector<SceneOptions> &scenes,
     read.Note("-scene", "Scene to run");
     PetscCall(PetscOptionsEList("-scene", "Scene to run", "tubeform", names.data(), (PetscInt)names.size(),
                                 names[choice], &choice, &set));
-    opt.scene = scenes[choice].name;
+    opt.scene = scenes[choice].name, opt.press = scenes[choice].press;
     if (!set && !opt.help) {
       std::string list;
       for (const auto &n : scenes) list += (list.empty() ? "" : ", ") + n.name;

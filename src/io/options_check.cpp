@@ -20,11 +20,11 @@ namespace {
 PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
-  const bool press = opt.scene == "squaring" || opt.scene == "flattening";
+  const bool press = PressesWithTools(opt);
   const DieSet &first = FirstDies(opt);
-  bool asked = first.lower.kind != "mirror" || !LowerDieMoves(opt, "mirror") || opt.model.part != TubeModel::Auto ||
-               !DieMoves(first, "stroke") || first.side.kind != "none" || first.side_force != 0 ||
-               opt.model.die_offset != 0 || opt.model.full_hold != FullHold::Auto;
+  bool asked = first.lower.kind != "mirror" || !LowerDieMoves(opt, LowerDieMove::Mirror) ||
+               opt.model.part != TubeModel::Auto || !DieMoves(first, "stroke") || first.side.kind != "none" ||
+               first.side_force != 0 || opt.model.die_offset != 0 || opt.model.full_hold != FullHold::Auto;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     const PassSpec &p = LaterPass(opt, pass);
     asked = asked || p.stroke != 0 || p.turn != 0 || !p.dies.upper.kind.empty() || !p.dies.lower.kind.empty() ||
@@ -50,7 +50,7 @@ void SetDiePathStroke(Options &opt) { opt.stroke.u = -0.5 * FirstDies(opt).motio
 PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 {
   PetscFunctionBeginUser;
-  const bool own = !LowerDieMoves(opt, "mirror") && !LowerDieMoves(opt, "fixed");
+  const bool own = LowerDieMoves(opt, LowerDieMove::Own);
   PetscCheck(!own || (opt.stroke.path.empty() && opt.release.unload != Unload::Withdraw && PassCount(opt) == 1 &&
                       opt.stroke.corner_radius <= 0),
              comm, PETSC_ERR_USER_INPUT,

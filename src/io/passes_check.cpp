@@ -38,7 +38,7 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   const PassExtent e = Extent(opt, pass);
   const std::string stroke = PassOption(pass, "stroke"), ordinal = PassOrdinal(pass), given = e.Option();
   PetscFunctionBeginUser;
-  PetscCheck(opt.scene == "squaring" || p.dies.upper.kind.empty(), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(PressesWithDie(opt) || p.dies.upper.kind.empty(), comm, PETSC_ERR_USER_INPUT,
              "%s: the %s scene presses with plates, not dies", PassOption(pass, "die_profile").c_str(),
              opt.scene.c_str());
   PetscCheck(p.stroke >= 0 && std::isfinite(p.stroke), comm, PETSC_ERR_USER_INPUT,

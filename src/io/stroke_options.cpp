@@ -27,8 +27,8 @@ PetscErrorCode CheckStrokePath(MPI_Comm comm, Options &opt)
 {
   StrokeParams &s = opt.stroke;
   PetscFunctionBeginUser;
-  const bool press = opt.scene == "squaring" || opt.scene == "flattening";
-  PetscCheck(press, comm, PETSC_ERR_USER_INPUT, "-stroke_path: the %s scene presses with no dies", opt.scene.c_str());
+  PetscCheck(PressesWithTools(opt), comm, PETSC_ERR_USER_INPUT, "-stroke_path: the %s scene presses with no dies",
+             opt.scene.c_str());
   double at = 0;
   for (double u : s.path) {
     PetscCheck(std::isfinite(u) && u >= 0 && u != at, comm, PETSC_ERR_USER_INPUT,

@@ -4,30 +4,27 @@
 // a later pass's alike, DiesOfPass); the side dies' force control (-side_force).
 #include "tubeform/scenes/die.hpp"
 
+#include <iterator>
+
 namespace tf {
 
 namespace {
-// A -lower_die_motion word (its kind and options: LowerDie, read by the kind,
-// io/tool_options.cpp): the upper die's motion that goes with it (U: half the dies' closing either way), and whether
-// the dies close as the closed forms of their reach say (CheckDieReach). Any other word: the upper die travels U,
-// the lower one moves as its motion says.
+// How a lower die's motion goes with the upper die's (LowerDieMove; its kind and options: LowerDie, read by the kind,
+// io/die_motion_options.cpp): the upper die's motion that goes with it (U: half the dies' closing either way), and
+// whether the dies close as the closed forms of their reach say (CheckDieReach). A motion of its own: the upper die
+// travels U, the lower one moves as its motion says.
 struct LowerMotion {
-  const char *word;
   Vec2 upper;
   bool closing;
 };
 const LowerMotion kLowerMotions[] = {
-  {"mirror", {0.0, -1.0}, true}, // up by U: the mirror of the upper die's
-  {"fixed", {0.0, -2.0}, true},  // it stays; the upper die travels 2 U
+  {{0.0, -1.0}, true},  // mirror: up by U, the mirror of the upper die's
+  {{0.0, -2.0}, true},  // fixed: it stays; the upper die travels 2 U
+  {{0.0, -1.0}, false}, // its own
 };
-const LowerMotion kOwnMotion{"", {0.0, -1.0}, false};
+static_assert(std::size(kLowerMotions) == static_cast<size_t>(LowerDieMove::Own) + 1, "one for each LowerDieMove");
 
-const LowerMotion &LowerMotionOf(const Options &o)
-{
-  for (const LowerMotion &m : kLowerMotions)
-    if (LowerDieMoves(o, m.word)) return m;
-  return kOwnMotion;
-}
+const LowerMotion &LowerMotionOf(const Options &o) { return kLowerMotions[static_cast<size_t>(o.lower_motion.move)]; }
 } // namespace
 
 PetscErrorCode SetMotion(MPI_Comm comm, const char *option, const std::string &kind, const MotionSpec &spec, Tool &t)

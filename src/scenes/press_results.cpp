@@ -13,7 +13,7 @@ double PressScene::ToolWork(const HistoryRow &prev, const HistoryRow &row, doubl
   if (pass_ > 0 && row.stage == PressStage(pass_) && prev.stage < row.stage)
     from.stroke = -UpperBack(), path(from, kDieX) = path(from, kDieTurn) = 0.0;
   // (the lower die's rise by its motion: by U where it mirrors the upper one's, LowerDieMotion)
-  const DieTravel travel{UpperTravel(opt_), lower_motion_->Kind() != "fixed",
+  const DieTravel travel{UpperTravel(opt_), !LowerDieMoves(opt_, LowerDieMove::Fixed),
                          lower_motion_->Offset(row.stroke)[1] - lower_motion_->Offset(from.stroke)[1]};
   return PressToolWork(Part(), travel, from, row);
 }

@@ -43,22 +43,23 @@ const std::vector<SceneEntry> &SceneRegistry()
   // The options only some scenes read (`reads`): the V-die's, friction's where something touches, each scene's own.
   static const std::vector<SceneEntry> scenes = {
     {"squaring", "quarter tube pressed by the upper 90-degree V-die (the paper's process)", MakeSquaringScene,
-     "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge -friction_mu -friction_vcri"},
-    {"flattening", "quarter ring crushed by a flat plate", MakeFlatteningScene, "-friction_mu -friction_vcri"},
-    {"pressure", "quarter thick cylinder under internal pressure (Lame, Hill)", MakePressureScene, "-pressure_",
-     ReadPressureOptions, CheckPressureOptions},
-    {"shear", "simple shear of a block (Jaumann objectivity)", MakeShearScene, "-shear_", ReadShearOptions,
-     CheckShearOptions},
-    {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene, "-rotation_", ReadRotationOptions,
-     CheckRotationOptions},
-    {"column", "a bowed strip shortened past its Euler load (geometric stiffness)", MakeColumnScene, "-column_",
-     ReadColumnOptions, CheckColumnOptions},
-    {"tension", "plane-strain tension or compression of a block (flow curve)", MakeTensionScene, "-tension_",
-     ReadTensionOptions, CheckTensionOptions},
-    {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene, "-bending_",
-     ReadBendingOptions, CheckBendingOptions},
+     ScenePress::Die, "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge -friction_mu -friction_vcri"},
+    {"flattening", "quarter ring crushed by a flat plate", MakeFlatteningScene, ScenePress::Plate,
+     "-friction_mu -friction_vcri"},
+    {"pressure", "quarter thick cylinder under internal pressure (Lame, Hill)", MakePressureScene, ScenePress::None,
+     "-pressure_", ReadPressureOptions, CheckPressureOptions},
+    {"shear", "simple shear of a block (Jaumann objectivity)", MakeShearScene, ScenePress::None, "-shear_",
+     ReadShearOptions, CheckShearOptions},
+    {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene, ScenePress::None, "-rotation_",
+     ReadRotationOptions, CheckRotationOptions},
+    {"column", "a bowed strip shortened past its Euler load (geometric stiffness)", MakeColumnScene, ScenePress::None,
+     "-column_", ReadColumnOptions, CheckColumnOptions},
+    {"tension", "plane-strain tension or compression of a block (flow curve)", MakeTensionScene, ScenePress::None,
+     "-tension_", ReadTensionOptions, CheckTensionOptions},
+    {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene, ScenePress::None,
+     "-bending_", ReadBendingOptions, CheckBendingOptions},
     {"slide", "a block pushed along a floor, or a ring turned in a cylinder (-slide_tool arc): Coulomb friction",
-     MakeAnySlideScene, "-slide_ -friction_mu -friction_vcri", ReadSlideOptions, CheckSlideOptions},
+     MakeAnySlideScene, ScenePress::None, "-slide_ -friction_mu -friction_vcri", ReadSlideOptions, CheckSlideOptions},
   };
   return scenes;
 }
@@ -73,7 +74,7 @@ std::vector<std::string> SceneNames()
 std::vector<SceneOptions> SceneReaders()
 {
   std::vector<SceneOptions> scenes;
-  for (const auto &s : SceneRegistry()) scenes.push_back({s.name, s.read, s.check});
+  for (const auto &s : SceneRegistry()) scenes.push_back({s.name, s.press, s.read, s.check});
   return scenes;
 }
 

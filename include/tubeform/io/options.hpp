@@ -30,8 +30,14 @@ struct KnownOption {
   std::string name, help, reader;
 };
 
+// What a scene presses the tube with (its entry's in the scene registry, scenes/registry.hpp; Options::press once
+// -scene chose it): no tools (pressure, shear, ...), an upper die over a lower one (squaring: -die_offset, -die_path,
+// -full_hold rotation and the later passes' -pass<N>_die_profile are its) or a flat plate (flattening).
+enum class ScenePress { None, Die, Plate };
+
 struct Options {
-  std::string scene = "pressure"; // a name of the scene registry (scenes/registry.hpp)
+  std::string scene = "pressure";      // a name of the scene registry (scenes/registry.hpp)
+  ScenePress press = ScenePress::None; // what it presses with (its SceneOptions', set with it; PressesWithTools)
   // Geometry and mesh
   double tube_ro = 17.5, tube_t = 1.5;
   PetscInt mesh_nt = 4, mesh_ntheta = 48;
@@ -84,12 +90,18 @@ struct Options {
   std::vector<KnownOption> known; // every option ReadOptions read (the hints for options nothing reads)
 };
 
+// The scene presses the tube with tools (squaring, flattening: the dies', stroke's and passes' options are its).
+inline bool PressesWithTools(const Options &opt) { return opt.press != ScenePress::None; }
+// Its upper tool is a die (squaring), not a plate (flattening).
+inline bool PressesWithDie(const Options &opt) { return opt.press == ScenePress::Die; }
+
 class OptionReader;
 // A scene -scene accepts, and the reader and checker of its own options (null: it has none): the reader lists them
 // in -help under "tubeform: <name> scene" (between PetscOptionsBegin and PetscOptionsEnd, whose PetscOptionsObject
 // it takes), the checker refuses their bad values in one line naming the option. The scene registry lists them.
 struct SceneOptions {
   std::string name;
+  ScenePress press = ScenePress::None;
   PetscErrorCode (*read)(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt) = nullptr;
   PetscErrorCode (*check)(MPI_Comm comm, const Options &opt) = nullptr;
 };
@@ -199,8 +211,8 @@ inline LowerDieSpec LowerDie(const Options &opt)
   die.spec.direction = {0.0, 1.0};
   return die;
 }
-// Its word is `word` (mirror, fixed, ...).
-inline bool LowerDieMoves(const Options &opt, const char *word) { return opt.lower_motion.word == word; }
+// It goes with the upper die's motion as `move` says (mirror, fixed or its own).
+inline bool LowerDieMoves(const Options &opt, LowerDieMove move) { return opt.lower_motion.move == move; }
 // A pass's upper die's kind is `kind` (`dies`: a pass's, FirstDies(opt), DiesOfPass or the scene's).
 inline bool DieMoves(const DieSet &dies, const char *kind) { return dies.motion.kind == kind; }
 // The first pass's upper die's own path (-die_path with its turns; none unless -die_motion path).
@@ -295,7 +307,7 @@ inline std::string PassLowerDie(const Options &opt, int pass) { return ShapeWord
 // Pass `pass`'s lower die mirrors the upper one in shape and motion.
 inline bool PassMirrored(const Options &opt, int pass)
 {
-  return PassLowerDie(opt, pass) == "mirror" && LowerDieMoves(opt, "mirror");
+  return PassLowerDie(opt, pass) == "mirror" && LowerDieMoves(opt, LowerDieMove::Mirror);
 }
 // The tool scenes model a quarter of the tube where that is exact (or asked for): -model quarter, or auto
 // with lower dies that mirror the upper ones in shape and motion in every pass (each turned by quarter turns);
@@ -303,7 +315,7 @@ inline bool PassMirrored(const Options &opt, int pass)
 // refused after the model is chosen.)
 inline bool QuarterModel(const Options &opt)
 {
-  bool mirror = LowerDieMoves(opt, "mirror"), quarters = true;
+  bool mirror = LowerDieMoves(opt, LowerDieMove::Mirror), quarters = true;
   for (int pass = 0; pass < kMaxPasses; ++pass)
     mirror = mirror && PassLowerDie(opt, pass) == "mirror", quarters = quarters && QuarterTurn(opt, pass);
   const TubeModel part = opt.model.part;

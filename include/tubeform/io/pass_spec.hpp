@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -33,11 +34,29 @@ struct DieMotion {
   MotionSpec spec;             // path: its points, turns, pivot; force: its punch load (N/mm)
 };
 
+// How the lower die's motion goes with the upper die's (-lower_die_motion): it mirrors it (mirror: up by the stroke
+// U), it stays (fixed: the upper die travels 2 U), or it moves as a motion of its own says (any other word: path, or
+// a kind registered after the built-in ones; the upper die travels U). The words of the enumerators before Own, in
+// order (Own has the words of its kinds); each names a kind of the motion registry (MotionKind::lower_word).
+enum class LowerDieMove { Mirror, Fixed, Own };
+inline constexpr const char *kLowerDieMoveWords[] = {"mirror", "fixed"};
+static_assert(std::size(kLowerDieMoveWords) == static_cast<size_t>(LowerDieMove::Own),
+              "a word for each enumerator before Own, in order");
+// The move a -lower_die_motion word says: its enumerator's, Own for a word not listed.
+inline LowerDieMove LowerDieMoveOf(const std::string &word)
+{
+  for (size_t k = 0; k < std::size(kLowerDieMoveWords); ++k)
+    if (word == kLowerDieMoveWords[k]) return static_cast<LowerDieMove>(k);
+  return LowerDieMove::Own;
+}
+
 // The lower die's motion (-lower_die_motion; docs/dies.md): its word (mirror, fixed, path, or a kind registered after
-// the built-in ones: io/die_motion_options.cpp), the kind of the motion registry that word names (mirror: a stroke),
-// and what its options (-lower_die_*) give it, read by the kind. The scenes read it through LowerDie.
+// the built-in ones: io/die_motion_options.cpp), how it goes with the upper die's (LowerDieMoveOf the word), the kind
+// of the motion registry that word names (mirror: a stroke), and what its options (-lower_die_*) give it, read by the
+// kind. The scenes read it through LowerDie.
 struct LowerDieSpec {
-  std::string word = "mirror";
+  std::string word = WordOf(kLowerDieMoveWords, LowerDieMove::Mirror);
+  LowerDieMove move = LowerDieMove::Mirror;
   std::string kind = "stroke";
   MotionSpec spec;
 };

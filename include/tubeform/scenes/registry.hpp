@@ -13,6 +13,7 @@ struct SceneEntry {
   const char *name;
   const char *what; // one line for -help and docs/
   std::unique_ptr<Scene> (*make)(const Options &opt);
+  ScenePress press; // what it presses the tube with (io/options.hpp): none, an upper die or a plate
   // The options it reads that not every scene does (space-separated; a name ending in '_' a prefix): an option of
   // another scene's list, given to this one, is refused naming the scenes that read it (ForeignOption).
   const char *reads = "";
