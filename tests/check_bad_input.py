@@ -127,6 +127,8 @@ cases = [
     (["-scene", "squaring", "-full_hold", "roll"], "-full_hold"),
     (["-scene", "squaring", "-die_offset", "0.5", "-die_force", "100", "-lower_die_motion", "fixed"],
      "the rotation hold (-full_hold, -die_offset, -die_path): not with -die_force"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-pass2_turn", "45", "-pass2_die_force", "100"],
+     "the rotation hold (-full_hold, -die_offset, -die_path): not with -pass2_die_force"),
     (["-scene", "tension", "-die_offset", "0.5"], "presses with no dies"),
     (["-scene", "flattening", "-die_offset", "0.5"], "-die_offset 0.5: the squaring scene's die"),
     (["-scene", "squaring", "-die_path", "0,-1,0.5"], "-die_path: the squaring scene's upper die through x,y pairs"),
@@ -279,7 +281,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 155 and len(selected) == 10, f"{len(cases)} cases on 1 rank (155), {len(selected)} on 2 (10)")
+k.check(len(cases) == 156 and len(selected) == 10, f"{len(cases)} cases on 1 rank (156), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

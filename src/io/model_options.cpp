@@ -3,6 +3,7 @@
 // model takes), and how the full model is held.
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "tubeform/io/press_options.hpp"
 
@@ -59,11 +60,15 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
   PetscCheck(m.full_hold == FullHold::Auto || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
              "-full_hold %s: only the full model is held so (-model full)", WordOf(kFullHoldWords, m.full_hold));
   bool held = false;
-  for (int pass = 0; pass < kMaxPasses; ++pass) held = held || HeldByRotation(opt, pass);
-  PetscCheck(
-    !held || (!AnyPassForced(opt) && FirstDies(opt).side_force == 0), comm, PETSC_ERR_USER_INPUT,
-    "the rotation hold (-full_hold, -die_offset, -die_path): not with -die_force or -side_force (one force-controlled "
-    "unknown in an increment)");
+  std::string forced = "-die_force"; // (the option of the first pass pressed by a force, where one is)
+  for (int pass = kMaxPasses - 1; pass >= 0; --pass) {
+    held = held || HeldByRotation(opt, pass);
+    if (Extent(opt, pass).Forced()) forced = Extent(opt, pass).Option();
+  }
+  PetscCheck(!held || (!AnyPassForced(opt) && FirstDies(opt).side_force == 0), comm, PETSC_ERR_USER_INPUT,
+             "the rotation hold (-full_hold, -die_offset, -die_path): not with %s or -side_force (one "
+             "force-controlled unknown in an increment)",
+             forced.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
