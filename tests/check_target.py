@@ -6,7 +6,9 @@ A. -target_load 0.05: the fast level's estimate passes 5 % (its mesh part), so a
    of CalculiX's converged loads for this tube at U = 1, 2, 3, 4.2 mm (104.93, 124.95, 164.03, 280.11 N/mm: the
    8 x 180 mesh of tools/calculix/converge.py, docs/accuracy.md "Against CalculiX"; its own uncertainty, the
    penalty's, about 0.7 % at the end of the stroke, is added to the tolerance). The first level's copy is removed
-   once the second ends. Planted: no finer level ever follows (NextLevel returns none) -> FAILED.
+   once the second ends. Planted: no finer level ever follows (NextLevel returns none) -> FAILED. Held to the
+   demanded load alone: the estimate lines name only its target, target_c_over_t is 0 (planted: the preset's C/t
+   expectation kept beside the demand, which no level refines for -> FAILED).
 B. -target_levels 1: no second level; the run warns, naming -target_levels, and writes target_met 0.
 C. A second level that stops (-rmin_max_increments between the first level's increments and the second's): the
    first level's complete results are kept as <stem>.level1.h5 (its estimate in it, not stopped), the stopped
@@ -61,6 +63,12 @@ if a:
     k.check(worst <= 0.05 + CCX_UNC, f"A: its load within 5 % of CalculiX's at U = 1, 2, 3, 4.2 (largest "
             f"{100 * worst:.2f} %)")
     k.check(not os.path.exists(h5[:-3] + ".level1.h5"), "A: the first level's copy is gone once the second ended")
+    # Held to what was demanded alone: every level's estimate line names the load's target and no other (the fast
+    # preset's own C/t expectation, 0.05, is not held: no level refines for it, so none may warn of it).
+    said = [l for l in p.stdout.splitlines() if "estimated error" in l]
+    k.check(said and all(l.endswith("(target load 5 %)") for l in said) and a.get("target_c_over_t") == 0,
+            f"A: held to the demanded load alone ({len(said)} estimate line(s), the last ending "
+            f"'{said[-1][-28:] if said else ''}', target_c_over_t {a.get('target_c_over_t')})")
 
 # B. One level allowed: a warning naming -target_levels.
 h5 = fresh("target_b")

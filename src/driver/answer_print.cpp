@@ -51,6 +51,21 @@ std::string Errors(const Answer &a, const PassAnswer &s)
          (a.tool ? Formatted(", C/t %.2g", ct.Total()) + parts(ct, 1, "") : "");
 }
 
+// What the estimate is held against: the demanded targets (only those given) or what the preset expects.
+std::string Targets(const Answer &a)
+{
+  if (!a.demanded)
+    return Formatted(a.mesh_covered ? " (the preset expects %.3g %%, %.3g)"
+                                    : " (the preset expects %.3g %%, %.3g unchecked)",
+                     100 * a.target_load, a.target_ct);
+  std::string named;
+  if (a.target_load > 0) named += Formatted("load %.3g %%", 100 * a.target_load);
+  if (a.tool && a.target_ct > 0) named += (named.empty() ? "" : ", ") + Formatted("C/t %.3g", a.target_ct);
+  if (named.empty()) return "";
+  return Formatted(" (%s %s%s)", a.mesh_covered ? "target" : "the target", named.c_str(),
+                   a.mesh_covered ? "" : " unchecked");
+}
+
 PetscErrorCode PrintPass(MPI_Comm comm, const Answer &a, size_t p)
 {
   const PassAnswer &s = a.passes[p];
@@ -89,9 +104,7 @@ PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, bool finer_follows, c
     line += p == 0 ? "" : "; " + PassOrdinal((int)p) + " pass: ";
     line += s.estimated ? Errors(a, s) : "none (a companion run did not reach it)";
   }
-  if (a.target_load > 0 || a.target_ct > 0)
-    line += Formatted(a.mesh_covered ? " (%s %.3g %%, %.3g)" : " (the %s %.3g %%, %.3g unchecked)",
-                      a.demanded ? "targets" : "the preset expects", 100 * a.target_load, a.target_ct);
+  if (a.target_load > 0 || a.target_ct > 0) line += Targets(a);
   PetscCall(PetscPrintf(comm, "tubeform: %s\n", line.c_str()));
   if (!a.Over()) PetscFunctionReturn(PETSC_SUCCESS);
   if (finer_follows)

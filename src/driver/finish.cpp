@@ -59,10 +59,12 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     a.stroke_name = scene_->StrokeName(), a.load_unit = scene_->LoadUnit();
     TakePassStarts(scene_metrics, a);
     a.mesh_covered = opt_.mesh_file.empty();
-    const AccuracyParams &held = opt_.accuracy; // (the accuracy held to: the one demanded, else the preset's)
-    a.target_load = held.target_load > 0 ? held.target_load : held.expect_load;
-    a.target_ct = held.target_c_over_t > 0 ? held.target_c_over_t : held.expect_c_over_t;
+    // The accuracy held to: what was demanded (only that: the levels refine for it alone, driver/refine.cpp), else
+    // what the preset expects.
+    const AccuracyParams &held = opt_.accuracy;
     a.demanded = held.target_load > 0 || held.target_c_over_t > 0;
+    a.target_load = a.demanded ? held.target_load : held.expect_load;
+    a.target_ct = a.demanded ? held.target_c_over_t : held.expect_c_over_t;
     a.release =
       opt_.release.unload == Unload::Withdraw ? "the dies withdrawn" : "the contact forces reversed, the dies removed";
     return a;
