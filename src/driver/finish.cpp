@@ -16,6 +16,16 @@
 namespace tf {
 
 namespace {
+
+// The accuracy an answer is held to: what was demanded (only that: the levels refine for it alone,
+// driver/refine.cpp), else what the preset expects.
+void HoldTo(const AccuracyParams &held, Answer &a)
+{
+  a.demanded = held.target_load > 0 || held.target_c_over_t > 0;
+  a.target_load = a.demanded ? held.target_load : held.expect_load;
+  a.target_ct = a.demanded ? held.target_c_over_t : held.expect_c_over_t;
+}
+
 // Each later pass's start into the answer: the scene's pass<K>_start_stroke (before the pass's first row).
 void TakePassStarts(const std::vector<std::pair<std::string, double>> &scene_metrics, Answer &a)
 {
@@ -23,6 +33,7 @@ void TakePassStarts(const std::vector<std::pair<std::string, double>> &scene_met
     for (size_t p = 1; p < a.passes.size(); ++p)
       if (name == Formatted("pass%d_start_stroke", (int)p + 1)) a.passes[p].start = value;
 }
+
 } // namespace
 
 PetscErrorCode Problem::PlaceResults(ResultWriter &writer, const std::vector<std::pair<std::string, double>> &metrics,
@@ -59,12 +70,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     a.stroke_name = scene_->StrokeName(), a.load_unit = scene_->LoadUnit();
     TakePassStarts(scene_metrics, a);
     a.mesh_covered = opt_.mesh_file.empty();
-    // The accuracy held to: what was demanded (only that: the levels refine for it alone, driver/refine.cpp), else
-    // what the preset expects.
-    const AccuracyParams &held = opt_.accuracy;
-    a.demanded = held.target_load > 0 || held.target_c_over_t > 0;
-    a.target_load = a.demanded ? held.target_load : held.expect_load;
-    a.target_ct = a.demanded ? held.target_c_over_t : held.expect_c_over_t;
+    HoldTo(opt_.accuracy, a);
     a.release =
       opt_.release.unload == Unload::Withdraw ? "the dies withdrawn" : "the contact forces reversed, the dies removed";
     return a;
