@@ -115,6 +115,20 @@ def smoothed(h5, case, half):
     return us, sl, sc, rload, rct
 
 
+# Each reference's own uncertainty per cell (tools/calculix/README.md's studies of the four cases): the load's
+# (relative) at the reported strokes and C/t's (absolute) at U >= 2 mm and after springback, in the order values()
+# gives them; each the sum of the mesh change 4 x N -> 8 x 2N at that stroke and the contact penalty's one decade
+# (1e6 -> 1e7; the thin case's 1e4 -> 1e5), and on the default case the step's 0.05 -> 0.025 mm. Where a study
+# gives no number for a cell the nearest larger stroke's is taken (the steel's C/t at 4.2 mm from its final C/t;
+# its sprung-back C/t, carried over from 4 x 90, from its loaded mesh change), and none where none was measured
+# (the thick case's C/t, its penalty): those cells are held to the reference alone.
+REF_UNCERTAINTY = {
+    "default": ([0.0066, 0.0045, 0.0045, 0.0049], [0.0006, 0.0041, 0.0258, 0.0259]),
+    "steel": ([0.0025, 0.0065, 0.0030, 0.0058, 0.0150], [0.0001, 0.0005, 0.0350, 0.0350, 0.0350]),
+    "thick": ([0.0062, 0.0062, 0.0062], [0.0, 0.0, 0.0]),
+    "thin": ([0.0057, 0.0022, 0.0011, 0.0220], [0.0007, 0.0108, 0.2828, 0.1341]),
+}
+
 LEVELS = ("run", "M", "S", "A", "T", "R", "Q")
 GCI_ORDERS = []  # every cell's observed order of the three mesh levels (< 0 where they oscillate), for evaluate
 
@@ -192,10 +206,12 @@ def evaluate(cases, presets, cells):
             v.update({f"{k}~{half}": smoothed(f, case, half) for k, f in files.items() for half in (0.2, 0.4)})
             us, load, ct, rload, rct = v["run"]
             err_l, err_c = np.abs(load / rload - 1), np.abs(ct - rct)
+            unc_l, unc_c = (np.array(u) for u in REF_UNCERTAINTY[case])
+            assert len(unc_l) == len(err_l) and len(unc_c) == len(err_c), case
             for name, (el, ec) in candidates(v).items():
                 s = stats.setdefault(name, [])
-                for e, t in list(zip(el, err_l)) + list(zip(ec, err_c)):
-                    s.append((e, t))
+                for e, t, u in list(zip(el, err_l, unc_l)) + list(zip(ec, err_c, unc_c)):
+                    s.append((e, t, u))
                 if cells:
                     print(f"{case} {preset} {name}: load err " + " ".join(f"{100 * t:.2f}/{100 * e:.2f}" for e, t in
                                                                           zip(el, err_l)) +
@@ -205,12 +221,17 @@ def evaluate(cases, presets, cells):
         print(f"three mesh levels: oscillating in {np.sum(p < 0)} of {len(p)} cells; observed orders where monotone "
               f"{p[p > 0].min():.1f} to {p[p > 0].max():.1f}")
     for name, s in stats.items():
-        e, t = np.array(s).T
+        e, t, u = np.array(s).T
         eff = e / np.maximum(t, 1e-12)
         bounded = np.mean(e >= t)
         within3 = np.mean((eff >= 1 / 3) & (eff <= 3))
-        print(f"{name:34s} cells {len(e)}  bounded {100 * bounded:.0f} %  median effectivity "
-              f"{np.median(eff):.2f}  within 3x {100 * within3:.0f} %")
+        # A miss by the reference's own rule: an error above the estimate plus the reference's uncertainty.
+        print(f"{name:34s} cells {len(e)}  bounded {100 * bounded:.0f} % ({100 * np.mean(e + u >= t):.0f} % within "
+              f"the reference's uncertainty)  median effectivity {np.median(eff):.2f}  within 3x {100 * within3:.0f} %")
+        r = t > u  # the cells whose error the reference resolves (above its own uncertainty)
+        if r.any():
+            print(f"{'':34s} resolved {r.sum()}: bounded {100 * np.mean(e[r] >= t[r]):.0f} %  median effectivity "
+                  f"{np.median(eff[r]):.2f}  within 3x {100 * np.mean((eff[r] >= 1 / 3) & (eff[r] <= 3)):.0f} %")
 
 
 def main():
