@@ -75,7 +75,7 @@ double PressScene::ToolStroke(double lambda) const
 {
   if (passes_[pass_].extent.Forced()) return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
   const StrokePath &path = passes_[pass_].path;
-  if (pass_ > 0) return path.Stroke(std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0));
+  if (pass_ > 0) return path.Stroke(PassExtent::Ramp(lambda, PressStage(pass_)));
   if (lambda <= 1.0) return path.Stroke(lambda);
   return opt_.release.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path.Stroke(1.0);
 }
