@@ -45,7 +45,7 @@ PressScene::PressScene(const Options &opt, bool squaring)
     Pass &p = passes_[k];
     p.extent = ExtentOf(opt.passes[k], k, k == 0 ? stroke_ : LaterPass(opt, k).stroke);
     p.turn = PassTurn(opt, k, half_, full_);
-    p.dies = DiesOfPass(opt, k);
+    p.dies = DiesOfPass(opt, k), p.reach = DieReach(opt, p.dies, squaring);
     p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side.kind != "none";
     if (k > 0 && p.dies.motion.kind == "path") { // (its own path: -pass<N>_die_path)
       const ToolPath own = PathOf(p.dies.motion.spec);
@@ -226,8 +226,9 @@ PetscErrorCode PressScene::Load(Model &m, double lambda, double dlambda)
   }
   if (!full_) PetscCall(QuarterSymmetry(m)); // (a full model's mesh file may carry x0 or y0 sets: not held)
   // (inside the increment: its failure writes the results so far)
-  if (passes_[pass_].extent.Forced() && m.contact->active())
-    PetscCall(CheckForceReach(m.comm, opt_, (int)pass_, squaring_, Stroke(m, lambda)));
+  const Pass &p = passes_[pass_];
+  if (p.extent.Forced() && m.contact->active())
+    PetscCall(CheckForceReach(m.comm, p.extent, p.reach, squaring_, Stroke(m, lambda)));
   // (the rotation hold, or released the pins: scenes/support.hpp)
   if (Support *axis = AxisSupport()) PetscCall(axis->Constrain(m, PassMap(pass_)));
   // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
