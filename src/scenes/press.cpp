@@ -40,14 +40,14 @@ PressScene::PressScene(const Options &opt, bool squaring)
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
   lower_motion_ = LowerDieMotion(opt);
   passes_.resize(PassCount(opt));
-  passes_[0].path = DieMoves(FirstDies(opt), "path") ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
+  passes_[0].path = FirstDies(opt).motion.OwnPath() ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
   for (int k = 0; k < (int)passes_.size(); ++k) {
     Pass &p = passes_[k];
     p.extent = ExtentOf(opt.passes[k], k, k == 0 ? stroke_ : LaterPass(opt, k).stroke);
     p.turn = PassTurn(opt, k, half_, full_);
     p.dies = DiesOfPass(opt, k), p.reach = DieReach(opt, p.dies, squaring);
     p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side.kind != "none";
-    if (k > 0 && p.dies.motion.kind == "path") { // (its own path: -pass<N>_die_path)
+    if (k > 0 && p.dies.motion.OwnPath()) { // (its own path: -pass<N>_die_path)
       const ToolPath own = PathOf(p.dies.motion.spec);
       p.path = StrokePath(own), p.rise = -0.5 * own.Motion(0)[1];
     }
@@ -275,7 +275,8 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
     if (d[0] != 0 || d[1] != 0) p.back = std::min(p.back, p.start_back[k]);
   }
   if (p.back == kNever) p.back = 0; // (no die moves)
-  if (p.dies.motion.kind == "stroke") p.path = StrokePath({}, p.extent.stroke + p.back);
+  // By its stroke: straight from where its dies start (on a path of its own: its path; under force: the die's stroke).
+  if (!p.dies.motion.OwnPath() && !p.extent.Forced()) p.path = StrokePath({}, p.extent.stroke + p.back);
   p.start = PassStart();
   if (full_) PetscCall(pins_.Mark(m, Press()));
   if (p.held) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)

@@ -151,7 +151,7 @@ private:
   double PassStart() const { return UpperBack() != 0 ? -UpperBack() : 0.0; }
   double PassEnd() const { return passes_[pass_].extent.stroke + (OwnPath() ? 0.0 : StartBack()) - UpperBack(); }
   // The pass in place's upper die is on a path of its own (-pass<N>_die_path).
-  bool OwnPath() const { return pass_ > 0 && passes_[pass_].dies.motion.kind == "path"; }
+  bool OwnPath() const { return pass_ > 0 && passes_[pass_].dies.motion.OwnPath(); }
   // The rotation hold holds the pass in place (its nodes fixed, holding the slide too, until the dies hold it).
   bool Holding() const { return passes_[pass_].held && !unloading_; }
   // The tube's coordinates into the frame of the press in place (its die moving along -y).
