@@ -240,7 +240,10 @@ void CheckMotions()
   for (const std::string &kind : builtin) {
     MotionHandle m;
     CHECK(MakeMotion(kind, spec, m).empty() && m->Kind() == kind && m->Unknown() == (kind == "force"));
+    // (what the press asks of a kind by its name: the motion's own answer; only the path carries its path)
+    CHECK(MotionStrokeUnknown(kind) == m->Unknown() && MotionOwnsPath(kind) == (kind == "path"));
   }
+  CHECK(!MotionStrokeUnknown("spiral") && !MotionOwnsPath("spiral"));
   MotionHandle m;
   const std::string unknown = MakeMotion("spiral", spec, m);
   CHECK(unknown.find("spiral") != std::string::npos && unknown.find("schedule") != std::string::npos);

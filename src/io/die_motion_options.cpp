@@ -220,7 +220,7 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
     }
     p.dies.motion.spec.tool = "the " + PassOrdinal(pass) + " pass's upper die";
     PetscCall(ReadUpperMotion(comm, read, block, opt.help, p.dies.motion));
-    if (opt.help || p.dies.motion.kind != "path") continue;
+    if (opt.help || !p.dies.motion.OwnPath()) continue;
     // Its stroke: where its path ends (U = -y / 2 of its last point, from where it starts).
     const std::string path = "-" + block.prefix + "path";
     const double y = p.dies.motion.spec.points.back()[1];

@@ -75,7 +75,7 @@ PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckDies(comm, opt));
-  if (DieMoves(FirstDies(opt), "path")) SetDiePathStroke(opt);
+  if (FirstDies(opt).motion.OwnPath()) SetDiePathStroke(opt);
   PetscCall(CheckLowerDieMotion(comm, opt));
   PetscCall(CheckPassesAndHolds(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);

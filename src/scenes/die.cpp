@@ -254,11 +254,9 @@ double DieReach(const Options &o, const DieSet &dies, bool squaring)
   return u_close > 0 ? std::min(closed, u_close) : closed;
 }
 
-PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, int pass, bool squaring, double stroke)
+PetscErrorCode CheckForceReach(MPI_Comm comm, const PassExtent &e, double reach, bool squaring, double stroke)
 {
   PetscFunctionBeginUser;
-  const double reach = DieReach(o, DiesOfPass(o, pass), squaring);
-  const PassExtent e = Extent(o, pass);
   PetscCheck(stroke < reach, comm, PETSC_ERR_NOT_CONVERGED,
              "%s %g: the die has come down to U = %.4g mm, where %s (U = %.4g mm): the tube carries no more "
              "in this model",

@@ -62,7 +62,7 @@ bool LowerDieClosing(const Options &o) { return LowerMotionOf(o).closing; }
 std::vector<double> UpperKinks(const DieMotion &die, double until)
 {
   MotionHandle upper;
-  if (die.kind != "path" || !MakeMotion(die.kind, die.spec, upper).empty()) return {};
+  if (!die.OwnPath() || !MakeMotion(die.kind, die.spec, upper).empty()) return {};
   return upper->Kinks(until);
 }
 

@@ -40,14 +40,14 @@ PressScene::PressScene(const Options &opt, bool squaring)
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
   lower_motion_ = LowerDieMotion(opt);
   passes_.resize(PassCount(opt));
-  passes_[0].path = DieMoves(FirstDies(opt), "path") ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
+  passes_[0].path = FirstDies(opt).motion.OwnPath() ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
   for (int k = 0; k < (int)passes_.size(); ++k) {
     Pass &p = passes_[k];
     p.extent = ExtentOf(opt.passes[k], k, k == 0 ? stroke_ : LaterPass(opt, k).stroke);
     p.turn = PassTurn(opt, k, half_, full_);
-    p.dies = DiesOfPass(opt, k);
+    p.dies = DiesOfPass(opt, k), p.reach = DieReach(opt, p.dies, squaring);
     p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side.kind != "none";
-    if (k > 0 && p.dies.motion.kind == "path") { // (its own path: -pass<N>_die_path)
+    if (k > 0 && p.dies.motion.OwnPath()) { // (its own path: -pass<N>_die_path)
       const ToolPath own = PathOf(p.dies.motion.spec);
       p.path = StrokePath(own), p.rise = -0.5 * own.Motion(0)[1];
     }
@@ -75,7 +75,7 @@ double PressScene::ToolStroke(double lambda) const
 {
   if (passes_[pass_].extent.Forced()) return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
   const StrokePath &path = passes_[pass_].path;
-  if (pass_ > 0) return path.Stroke(std::min(std::max(lambda - PressStage(pass_), 0.0), 1.0));
+  if (pass_ > 0) return path.Stroke(PassExtent::Ramp(lambda, PressStage(pass_)));
   if (lambda <= 1.0) return path.Stroke(lambda);
   return opt_.release.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path.Stroke(1.0);
 }
@@ -226,8 +226,9 @@ PetscErrorCode PressScene::Load(Model &m, double lambda, double dlambda)
   }
   if (!full_) PetscCall(QuarterSymmetry(m)); // (a full model's mesh file may carry x0 or y0 sets: not held)
   // (inside the increment: its failure writes the results so far)
-  if (passes_[pass_].extent.Forced() && m.contact->active())
-    PetscCall(CheckForceReach(m.comm, opt_, (int)pass_, squaring_, Stroke(m, lambda)));
+  const Pass &p = passes_[pass_];
+  if (p.extent.Forced() && m.contact->active())
+    PetscCall(CheckForceReach(m.comm, p.extent, p.reach, squaring_, Stroke(m, lambda)));
   // (the rotation hold, or released the pins: scenes/support.hpp)
   if (Support *axis = AxisSupport()) PetscCall(axis->Constrain(m, PassMap(pass_)));
   // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
@@ -274,7 +275,8 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
     if (d[0] != 0 || d[1] != 0) p.back = std::min(p.back, p.start_back[k]);
   }
   if (p.back == kNever) p.back = 0; // (no die moves)
-  if (p.dies.motion.kind == "stroke") p.path = StrokePath({}, p.extent.stroke + p.back);
+  // By its stroke: straight from where its dies start (on a path of its own: its path; under force: the die's stroke).
+  if (!p.dies.motion.OwnPath() && !p.extent.Forced()) p.path = StrokePath({}, p.extent.stroke + p.back);
   p.start = PassStart();
   if (full_) PetscCall(pins_.Mark(m, Press()));
   if (p.held) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)

@@ -56,7 +56,9 @@ const MotionKind &ForceKind()
                                },
                                nullptr,
                                nullptr,
-                               "force"};
+                               "force",
+                               /*own_path=*/false,
+                               /*unknown_stroke=*/true};
   return kind;
 }
 

@@ -153,7 +153,8 @@ std::unique_ptr<Motion> PathMotion(const ToolPath &path) { return std::make_uniq
 
 const MotionKind &PathKind()
 {
-  static const MotionKind kind{"path", {"path", "path_turn", "pivot"}, ReadPath, MakePath, nullptr, nullptr, "path"};
+  static const MotionKind kind{
+    "path", {"path", "path_turn", "pivot"}, ReadPath, MakePath, nullptr, nullptr, "path", /*own_path=*/true};
   return kind;
 }
 

@@ -22,6 +22,18 @@ const MotionKind *FindMotionKind(const std::string &kind)
   return nullptr;
 }
 
+bool MotionOwnsPath(const std::string &kind)
+{
+  const MotionKind *k = FindMotionKind(kind);
+  return k && k->own_path;
+}
+
+bool MotionStrokeUnknown(const std::string &kind)
+{
+  const MotionKind *k = FindMotionKind(kind);
+  return k && k->unknown_stroke;
+}
+
 std::string MakeMotion(const std::string &kind, const MotionSpec &spec, MotionHandle &m)
 {
   if (const MotionKind *k = FindMotionKind(kind)) {

@@ -218,13 +218,13 @@ inline bool DieMoves(const DieSet &dies, const char *kind) { return dies.motion.
 // The first pass's upper die's own path (-die_path with its turns; none unless -die_motion path).
 inline ToolPath DiePath(const Options &opt)
 {
-  return DieMoves(FirstDies(opt), "path") ? PathOf(UpperDie(opt).spec) : ToolPath();
+  return FirstDies(opt).motion.OwnPath() ? PathOf(UpperDie(opt).spec) : ToolPath();
 }
 // The die's travel over the first pass in units of the stroke U (mm; -output_stroke counts it): along -stroke_path,
 // half -die_path's length (ToolPath: a fixed lower die's U is half the upper one's travel), or -stroke.
 inline double Travel(const Options &opt)
 {
-  if (DieMoves(FirstDies(opt), "path")) return DiePath(opt).end();
+  if (FirstDies(opt).motion.OwnPath()) return DiePath(opt).end();
   double travel = opt.stroke.path.empty() ? opt.stroke.u : 0, at = 0;
   for (double u : opt.stroke.path) travel += std::abs(u - at), at = u;
   return travel;
@@ -232,7 +232,7 @@ inline double Travel(const Options &opt)
 // -die_path moves the first pass's die sideways somewhere.
 inline bool DiePathSideways(const Options &opt)
 {
-  if (!DieMoves(FirstDies(opt), "path")) return false;
+  if (!FirstDies(opt).motion.OwnPath()) return false;
   for (const Vec2 &p : FirstDies(opt).motion.spec.points)
     if (p[0] != 0) return true;
   return false;
@@ -241,7 +241,7 @@ inline bool DiePathSideways(const Options &opt)
 inline bool MotionOffAxis(const DieMotion &m)
 {
   bool off = false;
-  if (m.kind == "path") {
+  if (m.OwnPath()) {
     for (const Vec2 &p : m.spec.points) off = off || p[0] != 0;
     for (double a : m.spec.turns) off = off || a != 0;
   }

@@ -19,8 +19,9 @@ struct PassExtent {
   double stroke = 0;           // where its upper die ends (mm, from -stroke's zero; not under force)
   double force = 0;            // the punch load it presses with at its end (N/mm; force only)
 
-  // Its stroke is the outcome of the force it presses with (the die's own, an unknown of each increment).
-  bool Forced() const { return kind == "force"; }
+  // Its stroke is the outcome of the force it presses with (the die's own, an unknown of each increment: its kind's
+  // MotionKind::unknown_stroke, force).
+  bool Forced() const { return MotionStrokeUnknown(kind); }
   // The pass is pressed: the first always, a later one given its stroke, a path (its stroke) or a force.
   bool Given() const { return pass == 0 || stroke > 0 || Forced(); }
   // What ends it, its word and the option that gives it (-stroke, -die_force, -pass2_stroke, -pass2_die_force;

@@ -32,6 +32,10 @@ constexpr int kMaxPasses = 9;
 struct DieMotion {
   std::string kind = "stroke"; // stroke: down by the stroke U (2 U over a fixed lower die)
   MotionSpec spec;             // path: its points, turns, pivot; force: its punch load (N/mm)
+
+  // The die's stroke goes along a path of its own (its kind's MotionKind::own_path: path), which gives the pass's
+  // stroke path and its end.
+  bool OwnPath() const { return MotionOwnsPath(kind); }
 };
 
 // How the lower die's motion goes with the upper die's (-lower_die_motion): it mirrors it (mirror: up by the stroke

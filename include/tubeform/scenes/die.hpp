@@ -106,9 +106,9 @@ PetscErrorCode NoteCornerRadius(MPI_Comm comm, double stroke, double corner_radi
 // The first stroke CheckDieReach refuses (the dies closing on the tube, their parting faces meeting, the ring's
 // walls meeting); kNever where there is no closed form (a profile, another lower die).
 double DieReach(const Options &o, const DieSet &dies, bool squaring);
-// Collective: pass `pass`'s force-controlled die (-die_force, -pass<N>_die_force) at `stroke` (its U) that has come
-// down to its dies' DieReach stops the run (PETSC_ERR_NOT_CONVERGED: inside an increment, the results so far are
-// written).
-PetscErrorCode CheckForceReach(MPI_Comm comm, const Options &o, int pass, bool squaring, double stroke);
+// Collective: a pass's force-controlled die (-die_force, -pass<N>_die_force; `e` the pass's extent) at `stroke` (its
+// U) that has come down to `reach`, its dies' DieReach, stops the run (PETSC_ERR_NOT_CONVERGED: inside an increment,
+// the results so far are written).
+PetscErrorCode CheckForceReach(MPI_Comm comm, const PassExtent &e, double reach, bool squaring, double stroke);
 
 } // namespace tf

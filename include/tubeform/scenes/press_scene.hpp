@@ -88,6 +88,7 @@ private:
     double rise = 1;                // U per unit of its upper die's start_back: 1 by the stroke; on a path of its
                                     // own, -y / 2 per unit stroke along its first piece
     DieSet dies;                    // its dies (DiesOfPass: the upper one's shape and motion, lower, side)
+    double reach = kNever;          // where they close on the tube (DieReach; pressed by a force: CheckForceReach)
     bool held = false;              // the full model's pass held by the rotation hold (not its pins) while pressing
     bool side_dies = false;         // it has side dies (-side_die, -pass<N>_side_die)
     std::vector<double> start_back; // how far back along its motion each die starts (StartOnTube; a later pass)
@@ -150,7 +151,7 @@ private:
   double PassStart() const { return UpperBack() != 0 ? -UpperBack() : 0.0; }
   double PassEnd() const { return passes_[pass_].extent.stroke + (OwnPath() ? 0.0 : StartBack()) - UpperBack(); }
   // The pass in place's upper die is on a path of its own (-pass<N>_die_path).
-  bool OwnPath() const { return pass_ > 0 && passes_[pass_].dies.motion.kind == "path"; }
+  bool OwnPath() const { return pass_ > 0 && passes_[pass_].dies.motion.OwnPath(); }
   // The rotation hold holds the pass in place (its nodes fixed, holding the slide too, until the dies hold it).
   bool Holding() const { return passes_[pass_].held && !unloading_; }
   // The tube's coordinates into the frame of the press in place (its die moving along -y).

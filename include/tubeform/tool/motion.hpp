@@ -122,8 +122,11 @@ using MotionFactory = std::string (*)(const MotionSpec &spec, MotionHandle &m);
 // A kind in the registry: its name, its options' names under a prefix (without the dash), its reader (none: it
 // reads nothing) and its factory; the word -lower_die_motion offers it under (none: the lower die does not take it)
 // and what the lower die then does in -help's words (none: "moves as its motion <word> says"); the word
-// -die_motion and -pass<N>_die_motion offer it under (none: the upper die does not take it). Each kind's file
-// defines its own (FixedKind(), ..., the registry lists them).
+// -die_motion and -pass<N>_die_motion offer it under (none: the upper die does not take it); and what the press asks
+// of a kind before its motion is made (by the kind's name: MotionOwnsPath, MotionStrokeUnknown), so that no one
+// compares names: own_path, the tool's stroke goes along a path the motion carries (path: a pass's stroke path and
+// end are the path's), and unknown_stroke, its stroke is an unknown found from a force (force, as its
+// Motion::Unknown says). Each kind's file defines its own (FixedKind(), ..., the registry lists them).
 struct MotionKind {
   const char *name;
   std::vector<std::string> options;
@@ -132,6 +135,8 @@ struct MotionKind {
   const char *lower_word = nullptr;
   const char *lower_help = nullptr;
   const char *upper_word = nullptr;
+  bool own_path = false;
+  bool unknown_stroke = false;
 };
 
 // The registry: a motion of the kind named `kind` from `spec` into `m`; "" or why not (an unknown kind names the
@@ -141,6 +146,10 @@ std::string MakeMotion(const std::string &kind, const MotionSpec &spec, MotionHa
 std::vector<std::string> MotionKinds();
 // The kind named `kind`, or nullptr.
 const MotionKind *FindMotionKind(const std::string &kind);
+// The kind named `kind` carries the path its tool's stroke goes along (MotionKind::own_path; no such kind: false).
+bool MotionOwnsPath(const std::string &kind);
+// The kind named `kind`'s stroke is an unknown found from a force (MotionKind::unknown_stroke; no such kind: false).
+bool MotionStrokeUnknown(const std::string &kind);
 // Reads the options of the kind named `kind` (a registered one) into `spec` (MotionReader).
 PetscErrorCode ReadMotion(PetscOptionItems *PetscOptionsObject, const std::string &kind, MotionSpec &spec);
 
