@@ -37,7 +37,7 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
   const ModelParams &m = opt.model;
   PetscFunctionBeginUser;
   bool mirror = LowerDieMoves(opt, LowerDieMove::Mirror);
-  for (int pass = 0; pass < kMaxPasses; ++pass) mirror = mirror && PassLowerDie(opt, pass) == "mirror";
+  for (int pass = 0; pass < kMaxPasses; ++pass) mirror = mirror && DiesOfPass(opt, pass).lower.Is(DieFrom::Mirror);
   PetscCheck(m.part != TubeModel::Quarter || mirror, comm, PETSC_ERR_USER_INPUT,
              "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
              "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");

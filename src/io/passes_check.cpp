@@ -18,10 +18,11 @@ std::string PassExtent::Option() const
 }
 
 // Side dies (`name`: -side_die, -pass<N>_side_die): none, or with what side dies press with.
-PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const std::string &value)
+PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side)
 {
+  const std::string value = ShapeWord(side);
   PetscFunctionBeginUser;
-  if (value == "none") PetscFunctionReturn(PETSC_SUCCESS);
+  if (side.Is(DieFrom::None)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
   PetscCheck(!AnyPassForced(opt) && opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
              "%s %s: side dies press by the stroke: not with -die_force, -pass<N>_die_force or -unload withdraw",
@@ -50,12 +51,11 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(!e.Given() || pass == 1 || Extent(opt, pass - 1).Given(), comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", given.c_str(), e.Target(), ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
-  PetscCheck(e.Given() || (p.dies.upper.kind.empty() && p.dies.lower.kind.empty() && p.dies.side.kind.empty()), comm,
+  PetscCheck(e.Given() || (p.dies.upper.kind.empty() && !p.dies.lower.Given() && !p.dies.side.Given()), comm,
              PETSC_ERR_USER_INPUT, "%s, %s, %s: give %s for the %s pass", PassOption(pass, "die_profile").c_str(),
              PassOption(pass, "lower_die").c_str(), PassOption(pass, "side_die").c_str(), stroke.c_str(),
              ordinal.c_str());
-  if (!p.dies.side.kind.empty())
-    PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), ShapeWord(p.dies.side)));
+  if (p.dies.side.Given()) PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), p.dies.side));
   PetscCall(CheckUpperMotion(comm, opt, pass)); // (its motion kind's check: motion_checks.hpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -127,8 +127,8 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt);
 // range or that do not go together with the others' options.
 PetscErrorCode CheckPassStrokesAndDies(MPI_Comm comm, const Options &opt);
 PetscErrorCode CheckPassTurns(MPI_Comm comm, const Options &opt);
-// Collective: side dies (`name`: -side_die, -pass<N>_side_die; "none" or a shape) go with the other options.
-PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const std::string &value);
+// Collective: side dies (`name`: -side_die, -pass<N>_side_die; none or a shape) go with the other options.
+PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side);
 // The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
 std::string PassOption(int pass, const char *what);
 // Collective: refuses material constants out of range or not in MPa (called by CheckOptions).
@@ -296,8 +296,8 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
   if (pass == 0) return dies;
   const DieSet &given = LaterPass(opt, pass).dies;
   if (!given.upper.kind.empty()) dies.upper.kind = given.upper.kind, dies.upper.spec.file = given.upper.spec.file;
-  if (!given.lower.kind.empty()) dies.lower = given.lower;
-  if (!given.side.kind.empty()) dies.side = given.side;
+  if (given.lower.Given()) dies.lower = given.lower;
+  if (given.side.Given()) dies.side = given.side;
   dies.motion = given.motion, dies.motion.spec.reach = opt.tube_ro;
   dies.side_force = given.side_force;
   return dies;
@@ -307,7 +307,7 @@ inline std::string PassLowerDie(const Options &opt, int pass) { return ShapeWord
 // Pass `pass`'s lower die mirrors the upper one in shape and motion.
 inline bool PassMirrored(const Options &opt, int pass)
 {
-  return PassLowerDie(opt, pass) == "mirror" && LowerDieMoves(opt, LowerDieMove::Mirror);
+  return DiesOfPass(opt, pass).lower.Is(DieFrom::Mirror) && LowerDieMoves(opt, LowerDieMove::Mirror);
 }
 // The tool scenes model a quarter of the tube where that is exact (or asked for): -model quarter, or auto
 // with lower dies that mirror the upper ones in shape and motion in every pass (each turned by quarter turns);
@@ -317,7 +317,7 @@ inline bool QuarterModel(const Options &opt)
 {
   bool mirror = LowerDieMoves(opt, LowerDieMove::Mirror), quarters = true;
   for (int pass = 0; pass < kMaxPasses; ++pass)
-    mirror = mirror && PassLowerDie(opt, pass) == "mirror", quarters = quarters && QuarterTurn(opt, pass);
+    mirror = mirror && DiesOfPass(opt, pass).lower.Is(DieFrom::Mirror), quarters = quarters && QuarterTurn(opt, pass);
   const TubeModel part = opt.model.part;
   return part == TubeModel::Quarter ||
          (part == TubeModel::Auto && mirror && !OffAxisBy(opt, kMaxPasses - 1) && quarters);
