@@ -65,11 +65,12 @@ PetscErrorCode CheckPassTurn(MPI_Comm comm, const Options &opt, int pass)
 {
   const PassSpec &p = LaterPass(opt, pass);
   const std::string turn = PassOption(pass, "turn");
-  const int quarters = PassQuarters(opt, pass);
+  const ModelChoice model = ModelOf(opt);
+  const int quarters = model.passes[pass].quarters;
   PetscFunctionBeginUser;
   PetscCheck(std::isfinite(p.turn) && std::abs(p.turn) <= 360, comm, PETSC_ERR_USER_INPUT,
              "%s %g: the tube turns by -360 to 360 degrees", turn.c_str(), p.turn);
-  PetscCheck(QuarterTurn(opt, pass) || (FullModel(opt) && opt.model.full_hold != FullHold::Pins), comm,
+  PetscCheck(model.passes[pass].quarter_turn || (model.part == TubeModel::Full && model.hold != FullHold::Pins), comm,
              PETSC_ERR_USER_INPUT,
              "%s %g: a turn that is no multiple of 90 degrees needs the full model held by the rotation hold "
              "(-model full or auto, -full_hold rotation or auto)",
@@ -77,9 +78,9 @@ PetscErrorCode CheckPassTurn(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(Extent(opt, pass).Given() || p.turn == 0, comm, PETSC_ERR_USER_INPUT, "%s %g: give %s for the %s pass",
              turn.c_str(), p.turn, PassOption(pass, "stroke").c_str(), PassOrdinal(pass).c_str());
   for (int before = 0; before < pass; ++before) {
-    const bool odd = (quarters - PassQuarters(opt, before)) % 2 != 0;
+    const bool odd = (quarters - model.passes[before].quarters) % 2 != 0;
     const std::string lower = before == 0 ? "-lower_die" : PassOption(before, "lower_die");
-    PetscCheck(!odd || PassMirrored(opt, before) || opt.model.full_hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(!odd || model.passes[before].mirrored || model.hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
                "%s %g with -full_hold pins: the %s pass's dies (%s %s, -lower_die_motion %s) leave the tube symmetric "
                "about the y axis only; a quarter turn presses it off that axis, which the pins would hold it against "
                "(use -full_hold rotation or auto)",

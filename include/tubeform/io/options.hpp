@@ -258,7 +258,7 @@ inline bool PassOffAxis(const Options &opt, int pass)
   return pass == 0 ? DieOffAxis(opt) : MotionOffAxis(LaterPass(opt, pass).dies.motion);
 }
 // Pass `pass`'s upper die or an earlier pass's leaves its press's axis (the tube is then pressed off its mirror
-// symmetry from that pass on). Every pass's options count, given or not, as in QuarterModel below.
+// symmetry from that pass on). Every pass's options count, given or not, as in ModelOf below.
 inline bool OffAxisBy(const Options &opt, int pass)
 {
   bool off = false;
@@ -304,46 +304,41 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
 }
 // Pass `pass`'s lower die's word (-lower_die, -pass<N>_lower_die: the first pass's where not given).
 inline std::string PassLowerDie(const Options &opt, int pass) { return ShapeWord(DiesOfPass(opt, pass).lower); }
-// Pass `pass`'s lower die mirrors the upper one in shape and motion.
-inline bool PassMirrored(const Options &opt, int pass)
-{
-  return DiesOfPass(opt, pass).lower.Is(DieFrom::Mirror) && LowerDieMoves(opt, LowerDieMove::Mirror);
-}
-// The tool scenes model a quarter of the tube where that is exact (or asked for): -model quarter, or auto
-// with lower dies that mirror the upper ones in shape and motion in every pass (each turned by quarter turns);
-// the half (x >= 0) otherwise. (Every pass's options count, given or not: a pass given without its stroke is
-// refused after the model is chosen.)
-inline bool QuarterModel(const Options &opt)
-{
-  bool mirror = LowerDieMoves(opt, LowerDieMove::Mirror), quarters = true;
-  for (int pass = 0; pass < kMaxPasses; ++pass)
-    mirror = mirror && DiesOfPass(opt, pass).lower.Is(DieFrom::Mirror), quarters = quarters && QuarterTurn(opt, pass);
-  const TubeModel part = opt.model.part;
-  return part == TubeModel::Quarter ||
-         (part == TubeModel::Auto && mirror && !OffAxisBy(opt, kMaxPasses - 1) && quarters);
-}
-// The whole tube (-model full), or auto where neither the quarter nor the half is exact: the half's plane x = 0
-// is not a symmetry plane of a press turned by an odd number of quarter turns, or by another angle, or of a die
-// off its press's axis in any pass.
-inline bool FullModel(const Options &opt)
-{
-  bool turned = false;
-  for (int pass = 1; pass < kMaxPasses; ++pass)
-    turned = turned || PassQuarters(opt, pass) % 2 != 0 || !QuarterTurn(opt, pass);
-  return opt.model.part == TubeModel::Full ||
-         (opt.model.part == TubeModel::Auto && !QuarterModel(opt) && (turned || OffAxisBy(opt, kMaxPasses - 1)));
-}
-// A pass (0 the first) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked,
-// or (auto) where the pins would hold the tube's slide against the dies: a pass with a die off the axis, and every
-// pass after it; a pass turned by an angle that is no quarter turn, or turned by an odd number of quarter turns
-// from an earlier pass not symmetric about its press's x axis (a lower die that does not mirror the upper one).
-inline bool HeldByRotation(const Options &opt, int pass)
-{
-  bool off_axis = OffAxisBy(opt, pass) || !QuarterTurn(opt, pass);
-  for (int before = 0; before < pass; ++before)
-    off_axis =
-      off_axis || ((PassQuarters(opt, pass) - PassQuarters(opt, before)) % 2 != 0 && !PassMirrored(opt, before));
-  const FullHold hold = opt.model.full_hold;
-  return FullModel(opt) && (hold == FullHold::Rotation || (hold == FullHold::Auto && off_axis));
-}
+// What the choice of the model reads of a pass's tools (ModelOf; every pass's, given or not: a pass given without
+// its stroke is refused after the model is chosen). Side dies press both sides alike: they choose nothing.
+struct PassSymmetry {
+  bool mirrored = true;     // its lower die mirrors the upper one in shape and motion (its press symmetric about x)
+  bool off_axis = false;    // its upper die or an earlier pass's leaves its press's y axis (OffAxisBy)
+  int quarters = 0;         // its turn from the first pass's press in quarter turns, rounded (PassQuarters)
+  bool quarter_turn = true; // that turn is whole quarter turns (QuarterTurn)
+};
+// The part of the tube the tool scenes model and how the full model is held, from every pass's dies and turns
+// (ModelOf: the options check and the scenes' set-up read it alike).
+struct ModelChoice {
+  std::vector<PassSymmetry> passes; // every pass's (kMaxPasses)
+  TubeModel part = TubeModel::Auto; // -model's, or the one auto picks: the quarter where exact, else the half where
+                                    // exact, else the full (never Auto)
+  FullHold hold = FullHold::Auto;   // -full_hold
+  // Every pass's lower die mirrors the upper one in shape and motion (what -model quarter needs).
+  bool Mirrored() const;
+  // The quarter is exact: mirrored, every die on its press's axis, every pass turned by whole quarter turns.
+  bool QuarterExact() const;
+  // The half (x >= 0) is exact: every die on its press's axis, every pass turned by an even number of quarter turns
+  // (its plane x = 0 a symmetry plane of each press).
+  bool HalfExact() const;
+  // Pass `pass` (0 the first) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins:
+  // asked, or (auto) where the pins would hold the tube's slide against the dies: a pass with a die off the axis,
+  // and every pass after it; a pass turned by an angle that is no quarter turn, or turned by an odd number of quarter
+  // turns from an earlier pass not symmetric about its press's x axis (a lower die that does not mirror the upper
+  // one).
+  bool HeldByRotation(int pass) const;
+};
+// The model the options and the passes' tools choose (model_options.cpp).
+ModelChoice ModelOf(const Options &opt);
+// The tool scenes model a quarter of the tube: -model quarter, or auto where it is exact.
+inline bool QuarterModel(const Options &opt) { return ModelOf(opt).part == TubeModel::Quarter; }
+// The whole tube: -model full, or auto where neither the quarter nor the half is exact.
+inline bool FullModel(const Options &opt) { return ModelOf(opt).part == TubeModel::Full; }
+// Pass `pass` of the full model is held by the rotation hold (ModelChoice::HeldByRotation).
+inline bool HeldByRotation(const Options &opt, int pass) { return ModelOf(opt).HeldByRotation(pass); }
 } // namespace tf
