@@ -59,7 +59,7 @@ DieChoice ShapeChoice(const std::string &word, bool none)
 {
   DieChoice shape(EnumOfWord(kDieFromWords, word, DieFrom::Drawing));
   if (shape.Is(DieFrom::None) && !none) shape.from = DieFrom::Drawing; // (a lower die's none: a file so named)
-  if (shape.Is(DieFrom::Plate)) shape.kind = "flat";                   // (the flat kind draws it)
+  if (shape.Is(DieFrom::Plate)) shape.kind = kFlatShape;               // (the flat kind draws it)
   if (shape.Is(DieFrom::Drawing)) shape.kind = DrawingKind(word), shape.spec.file = word;
   return shape;
 }
@@ -73,7 +73,7 @@ std::string ShapeWord(const DieChoice &shape)
 PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 {
   DieShape &die = opt.passes[0].dies.upper;
-  const ShapeKind *v = FindShapeKind("v");
+  const ShapeKind *v = FindShapeKind(kVShape);
   std::string help = "squaring: the upper die's right half from a DXF file (*.dxf) or a text profile of lines and arcs "
                      "(docs/dies.md) in place of the V-die of ";
   for (size_t k = 0; k < v->options.size(); ++k) help += (k == 0 ? "-die_" : ", -die_") + v->options[k].name;
@@ -89,10 +89,10 @@ PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt
   PetscCall(PetscStrncpy(file, die.spec.file.c_str(), sizeof(file)));
   PetscCall(PetscOptionsString("-profile", help.c_str(), "tubeform", file, file, sizeof(file), &set));
   if (set) die.spec.file = file;
-  PetscCall(ReadShape(PetscOptionsObject, "v", die.spec));
+  PetscCall(ReadShape(PetscOptionsObject, kVShape, die.spec));
   block.Release();
   PetscOptionsEnd();
-  die.kind = die.spec.file.empty() ? "v" : DrawingChoice(die.spec.file).kind;
+  die.kind = die.spec.file.empty() ? kVShape : DrawingChoice(die.spec.file).kind;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

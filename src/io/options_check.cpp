@@ -118,9 +118,9 @@ PetscErrorCode CheckLoads(MPI_Comm comm, Options &opt)
   PetscFunctionBeginUser;
   PetscCall(CheckMaterial(comm, opt.material));
   PetscCall(CheckDiesAndPasses(comm, opt));
-  PetscCall(CheckShape(comm, "v", "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
-  PetscCall(CheckFrictionOptions(comm, opt.friction));               // (friction_options.cpp)
-  PetscCall(CheckStrokeOptions(comm, opt));                          // (stroke_options.cpp; after -die_path's)
+  PetscCall(CheckShape(comm, kVShape, "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
+  PetscCall(CheckFrictionOptions(comm, opt.friction));                   // (friction_options.cpp)
+  PetscCall(CheckStrokeOptions(comm, opt));                              // (stroke_options.cpp; after -die_path's)
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -54,7 +54,7 @@ PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::str
 // 2 U as mirror and fixed do), no side dies.
 bool ClosedForm(const Options &o, const DieSet &dies)
 {
-  return dies.upper.kind == "v" && dies.lower.Is(DieFrom::Mirror) && LowerDieClosing(o) && dies.side.Is(DieFrom::None);
+  return dies.upper.VDie() && dies.lower.Is(DieFrom::Mirror) && LowerDieClosing(o) && dies.side.Is(DieFrom::None);
 }
 
 } // namespace
@@ -62,7 +62,7 @@ bool ClosedForm(const Options &o, const DieSet &dies)
 PetscErrorCode BuildDie(MPI_Comm comm, const DieShape &shape, Die &die)
 {
   PetscFunctionBeginUser;
-  if (shape.kind == "v") {
+  if (shape.VDie()) {
     const ShapeSpec &v = shape.spec;
     const std::string error = MakeShape(shape.kind, v, die.tool);
     PetscCheck(error.empty(), comm, PETSC_ERR_USER_INPUT,
@@ -115,7 +115,7 @@ PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, DieChoice shape, con
     ShapeSpec &spec = shape.spec;
     spec.y = o.tube_ro, spec.x1 = (1 + kPlateReach) * o.tube_ro, spec.floor = false;
     spec.x0 = half ? -(1 + kPlateReach) * o.tube_ro : -kPlateOverhang * o.tube_ro;
-    MakeShape("flat", spec, drawn); // (the flat kind draws any plate; the flattening scene's mirror too)
+    MakeShape(kFlatShape, spec, drawn); // (the flat kind draws any plate; the flattening scene's mirror too)
   } else if (shape.Is(DieFrom::Mirror)) {
     drawn = half ? BothSides(upper_right) : upper_right;
   } else {

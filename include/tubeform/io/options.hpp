@@ -203,7 +203,7 @@ inline DieShape UpperDieShape(const Options &opt)
   return die;
 }
 // It is the V-die (not drawn from a file).
-inline bool VDie(const Options &opt) { return FirstDies(opt).upper.kind == "v"; }
+inline bool VDie(const Options &opt) { return FirstDies(opt).upper.VDie(); }
 // The lower die's motion as the scenes take it: its word, kind and spec, the spec moving up (y) by the stroke.
 inline LowerDieSpec LowerDie(const Options &opt)
 {

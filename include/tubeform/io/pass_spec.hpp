@@ -79,8 +79,9 @@ inline ShapeSpec PaperVDie()
 // by the V kind under the prefix die_ (-die_angle, -die_r_apex, -die_u_close, -die_r_edge; read with a file too), and
 // the file (io/die_shape_options.cpp). The scenes read it through UpperDieShape.
 struct DieShape {
-  std::string kind = "v";
+  std::string kind = kVShape;
   ShapeSpec spec = PaperVDie(); // (ro: the tube's, set by UpperDieShape)
+  bool VDie() const { return kind == kVShape; }
 };
 // What a lower or side die is (docs/dies.md), as its word chose it (ShapeChoice): the upper die's mirror image
 // (mirror: a relation between the tools, not a kind), a plate (flat: the flat kind, a floor below the tube or a plate
