@@ -49,30 +49,31 @@ PetscErrorCode ReadDrawingChoice(PetscOptionItems *PetscOptionsObject, OptionRea
 
 DieChoice DrawingChoice(const std::string &file)
 {
-  DieChoice shape(file.empty() ? "" : DrawingKind(file).c_str());
+  DieChoice shape(file.empty() ? DieFrom::Unset : DieFrom::Drawing);
+  if (!file.empty()) shape.kind = DrawingKind(file);
   shape.spec.file = file;
   return shape;
 }
 
 DieChoice ShapeChoice(const std::string &word, bool none)
 {
-  DieChoice shape;
-  if (word == "mirror" || word == "flat" || (none && word == "none"))
-    shape.kind = word;
-  else
-    shape.kind = DrawingKind(word), shape.spec.file = word;
+  DieChoice shape(EnumOfWord(kDieFromWords, word, DieFrom::Drawing));
+  if (shape.Is(DieFrom::None) && !none) shape.from = DieFrom::Drawing; // (a lower die's none: a file so named)
+  if (shape.Is(DieFrom::Plate)) shape.kind = kFlatShape;               // (the flat kind draws it)
+  if (shape.Is(DieFrom::Drawing)) shape.kind = DrawingKind(word), shape.spec.file = word;
   return shape;
 }
 
 std::string ShapeWord(const DieChoice &shape)
 {
-  return shape.kind == "profile" || shape.kind == "dxf" ? shape.spec.file : shape.kind;
+  if (shape.Is(DieFrom::Drawing)) return shape.spec.file;
+  return shape.Given() ? WordOf(kDieFromWords, shape.from) : "";
 }
 
 PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 {
   DieShape &die = opt.passes[0].dies.upper;
-  const ShapeKind *v = FindShapeKind("v");
+  const ShapeKind *v = FindShapeKind(kVShape);
   std::string help = "squaring: the upper die's right half from a DXF file (*.dxf) or a text profile of lines and arcs "
                      "(docs/dies.md) in place of the V-die of ";
   for (size_t k = 0; k < v->options.size(); ++k) help += (k == 0 ? "-die_" : ", -die_") + v->options[k].name;
@@ -88,10 +89,10 @@ PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt
   PetscCall(PetscStrncpy(file, die.spec.file.c_str(), sizeof(file)));
   PetscCall(PetscOptionsString("-profile", help.c_str(), "tubeform", file, file, sizeof(file), &set));
   if (set) die.spec.file = file;
-  PetscCall(ReadShape(PetscOptionsObject, "v", die.spec));
+  PetscCall(ReadShape(PetscOptionsObject, kVShape, die.spec));
   block.Release();
   PetscOptionsEnd();
-  die.kind = die.spec.file.empty() ? "v" : DrawingChoice(die.spec.file).kind;
+  die.kind = die.spec.file.empty() ? kVShape : DrawingChoice(die.spec.file).kind;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -131,11 +132,11 @@ PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt)
 {
   const DieSet &dies = FirstDies(opt);
   PetscFunctionBeginUser;
-  PetscCall(CheckSideDies(comm, opt, "-side_die", ShapeWord(dies.side))); // (passes_check.cpp)
+  PetscCall(CheckSideDies(comm, opt, "-side_die", dies.side)); // (passes_check.cpp)
   PetscCheck(dies.side_force >= 0 && std::isfinite(dies.side_force), comm, PETSC_ERR_USER_INPUT,
              "-side_force %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",
              dies.side_force);
-  PetscCheck(dies.side_force == 0 || (dies.side.kind != "none" && PassCount(opt) == 1), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(dies.side_force == 0 || (!dies.side.Is(DieFrom::None) && PassCount(opt) == 1), comm, PETSC_ERR_USER_INPUT,
              "-side_force %g: force-controlled side dies need -side_die (mirror, flat or a file) and one pass (not "
              "with -pass2_stroke)",
              dies.side_force);

@@ -1,6 +1,7 @@
 // The model's options: read into Options::model (in the loading block of -help, where they always were) and checked,
 // one line naming the option: the part of the tube modelled, the first pass's die off the axis (which only the full
-// model takes), and how the full model is held.
+// model takes), and how the full model is held. The model they and the passes' tools choose (ModelOf), which the
+// checks and the scenes' set-up read alike.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -32,13 +33,58 @@ PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionRead
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+bool ModelChoice::Mirrored() const
+{
+  bool mirrored = true;
+  for (const PassSymmetry &p : passes) mirrored = mirrored && p.mirrored;
+  return mirrored;
+}
+
+bool ModelChoice::QuarterExact() const
+{
+  bool exact = Mirrored();
+  for (const PassSymmetry &p : passes) exact = exact && !p.off_axis && p.quarter_turn;
+  return exact;
+}
+
+bool ModelChoice::HalfExact() const
+{
+  bool exact = true;
+  for (const PassSymmetry &p : passes) exact = exact && !p.off_axis && p.quarter_turn && p.quarters % 2 == 0;
+  return exact;
+}
+
+bool ModelChoice::HeldByRotation(int pass) const
+{
+  const PassSymmetry &p = passes[pass];
+  bool off_axis = p.off_axis || !p.quarter_turn;
+  for (int before = 0; before < pass; ++before)
+    off_axis = off_axis || ((p.quarters - passes[before].quarters) % 2 != 0 && !passes[before].mirrored);
+  return part == TubeModel::Full && (hold == FullHold::Rotation || (hold == FullHold::Auto && off_axis));
+}
+
+ModelChoice ModelOf(const Options &opt)
+{
+  ModelChoice model;
+  model.passes.resize(kMaxPasses);
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    PassSymmetry &p = model.passes[pass];
+    p.mirrored = DiesOfPass(opt, pass).lower.Is(DieFrom::Mirror) && LowerDieMoves(opt, LowerDieMove::Mirror);
+    p.off_axis = OffAxisBy(opt, pass);
+    p.quarters = PassQuarters(opt, pass), p.quarter_turn = QuarterTurn(opt, pass);
+  }
+  model.part = opt.model.part, model.hold = opt.model.full_hold;
+  if (model.part == TubeModel::Auto)
+    model.part = model.QuarterExact() ? TubeModel::Quarter : model.HalfExact() ? TubeModel::Half : TubeModel::Full;
+  return model;
+}
+
 PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
 {
   const ModelParams &m = opt.model;
+  const ModelChoice model = ModelOf(opt);
   PetscFunctionBeginUser;
-  bool mirror = LowerDieMoves(opt, LowerDieMove::Mirror);
-  for (int pass = 0; pass < kMaxPasses; ++pass) mirror = mirror && PassLowerDie(opt, pass) == "mirror";
-  PetscCheck(m.part != TubeModel::Quarter || mirror, comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(m.part != TubeModel::Quarter || model.Mirrored(), comm, PETSC_ERR_USER_INPUT,
              "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
              "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
   // The rotation hold: the full model; one extra unknown in a solve (scenes/hold.hpp).
@@ -49,7 +95,7 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
   char off_axis[64] = "-die_path"; // (what puts the die off the axis, named in the errors)
   if (m.die_offset != 0) std::snprintf(off_axis, sizeof off_axis, "-die_offset %g", m.die_offset);
   if (m.die_offset == 0 && !DiePathSideways(opt)) std::snprintf(off_axis, sizeof off_axis, "-die_path_turn");
-  PetscCheck(!DieOffAxis(opt) || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(!DieOffAxis(opt) || model.part == TubeModel::Full, comm, PETSC_ERR_USER_INPUT,
              "%s: a die off the axis breaks the tube's mirror symmetry; use -model full (or auto)", off_axis);
   PetscCheck(m.full_hold != FullHold::Rotation || PressesWithDie(opt), comm, PETSC_ERR_USER_INPUT,
              "-full_hold rotation: the %s scene's plates do not hold the tube's slide; use pins", opt.scene.c_str());
@@ -57,12 +103,12 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
              "%s with -full_hold pins: the pins would hold the tube's slide against the die; use -full_hold rotation "
              "(or auto)",
              off_axis);
-  PetscCheck(m.full_hold == FullHold::Auto || FullModel(opt), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(m.full_hold == FullHold::Auto || model.part == TubeModel::Full, comm, PETSC_ERR_USER_INPUT,
              "-full_hold %s: only the full model is held so (-model full)", WordOf(kFullHoldWords, m.full_hold));
   bool held = false;
   std::string forced = "-die_force"; // (the option of the first pass pressed by a force, where one is)
   for (int pass = kMaxPasses - 1; pass >= 0; --pass) {
-    held = held || HeldByRotation(opt, pass);
+    held = held || model.HeldByRotation(pass);
     if (Extent(opt, pass).Forced()) forced = Extent(opt, pass).Option();
   }
   PetscCheck(!held || (!AnyPassForced(opt) && FirstDies(opt).side_force == 0), comm, PETSC_ERR_USER_INPUT,

@@ -44,7 +44,7 @@ PetscErrorCode CheckFirstPath(MPI_Comm comm, const Options &opt)
   PetscFunctionBeginUser;
   PetscCall(CheckUpperPath(comm, opt, FirstDies(opt).motion.spec, "-die_path"));
   PetscCheck(opt.stroke.path.empty() && opt.stroke.corner_radius <= 0 && PassCount(opt) == 1 &&
-               FirstDies(opt).side.kind == "none" && opt.release.unload != Unload::Withdraw &&
+               FirstDies(opt).side.Is(DieFrom::None) && opt.release.unload != Unload::Withdraw &&
                opt.model.die_offset == 0,
              comm, PETSC_ERR_USER_INPUT,
              "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, "
@@ -62,7 +62,7 @@ PetscErrorCode CheckPassPath(MPI_Comm comm, const Options &opt, int pass)
   bool side = false;
   PetscFunctionBeginUser;
   PetscCall(CheckUpperPath(comm, opt, path, name));
-  for (int k = 0; k < PassCount(opt); ++k) side = side || DiesOfPass(opt, k).side.kind != "none";
+  for (int k = 0; k < PassCount(opt); ++k) side = side || !DiesOfPass(opt, k).side.Is(DieFrom::None);
   PetscCheck(!side, comm, PETSC_ERR_USER_INPUT,
              "%s: not with side dies (-side_die, -pass<N>_side_die), which press by the stroke", name.c_str());
   PetscCheck(!PassOffAxis(opt, pass) || HeldByRotation(opt, pass), comm, PETSC_ERR_USER_INPUT,

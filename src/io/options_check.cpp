@@ -22,13 +22,13 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   PetscFunctionBeginUser;
   const bool press = PressesWithTools(opt);
   const DieSet &first = FirstDies(opt);
-  bool asked = first.lower.kind != "mirror" || !LowerDieMoves(opt, LowerDieMove::Mirror) ||
-               opt.model.part != TubeModel::Auto || !DieMoves(first, "stroke") || first.side.kind != "none" ||
+  bool asked = !first.lower.Is(DieFrom::Mirror) || !LowerDieMoves(opt, LowerDieMove::Mirror) ||
+               opt.model.part != TubeModel::Auto || !DieMoves(first, "stroke") || !first.side.Is(DieFrom::None) ||
                first.side_force != 0 || opt.model.die_offset != 0 || opt.model.full_hold != FullHold::Auto;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     const PassSpec &p = LaterPass(opt, pass);
-    asked = asked || p.stroke != 0 || p.turn != 0 || !p.dies.upper.kind.empty() || !p.dies.lower.kind.empty() ||
-            !p.dies.side.kind.empty();
+    asked = asked || p.stroke != 0 || p.turn != 0 || !p.dies.upper.kind.empty() || p.dies.lower.Given() ||
+            p.dies.side.Given();
   }
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
@@ -118,9 +118,9 @@ PetscErrorCode CheckLoads(MPI_Comm comm, Options &opt)
   PetscFunctionBeginUser;
   PetscCall(CheckMaterial(comm, opt.material));
   PetscCall(CheckDiesAndPasses(comm, opt));
-  PetscCall(CheckShape(comm, "v", "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
-  PetscCall(CheckFrictionOptions(comm, opt.friction));               // (friction_options.cpp)
-  PetscCall(CheckStrokeOptions(comm, opt));                          // (stroke_options.cpp; after -die_path's)
+  PetscCall(CheckShape(comm, kVShape, "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
+  PetscCall(CheckFrictionOptions(comm, opt.friction));                   // (friction_options.cpp)
+  PetscCall(CheckStrokeOptions(comm, opt));                              // (stroke_options.cpp; after -die_path's)
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);
   PetscFunctionReturn(PETSC_SUCCESS);

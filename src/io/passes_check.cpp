@@ -18,10 +18,11 @@ std::string PassExtent::Option() const
 }
 
 // Side dies (`name`: -side_die, -pass<N>_side_die): none, or with what side dies press with.
-PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const std::string &value)
+PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side)
 {
+  const std::string value = ShapeWord(side);
   PetscFunctionBeginUser;
-  if (value == "none") PetscFunctionReturn(PETSC_SUCCESS);
+  if (side.Is(DieFrom::None)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
   PetscCheck(!AnyPassForced(opt) && opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
              "%s %s: side dies press by the stroke: not with -die_force, -pass<N>_die_force or -unload withdraw",
@@ -50,12 +51,11 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(!e.Given() || pass == 1 || Extent(opt, pass - 1).Given(), comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", given.c_str(), e.Target(), ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
-  PetscCheck(e.Given() || (p.dies.upper.kind.empty() && p.dies.lower.kind.empty() && p.dies.side.kind.empty()), comm,
+  PetscCheck(e.Given() || (p.dies.upper.kind.empty() && !p.dies.lower.Given() && !p.dies.side.Given()), comm,
              PETSC_ERR_USER_INPUT, "%s, %s, %s: give %s for the %s pass", PassOption(pass, "die_profile").c_str(),
              PassOption(pass, "lower_die").c_str(), PassOption(pass, "side_die").c_str(), stroke.c_str(),
              ordinal.c_str());
-  if (!p.dies.side.kind.empty())
-    PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), ShapeWord(p.dies.side)));
+  if (p.dies.side.Given()) PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), p.dies.side));
   PetscCall(CheckUpperMotion(comm, opt, pass)); // (its motion kind's check: motion_checks.hpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -65,11 +65,12 @@ PetscErrorCode CheckPassTurn(MPI_Comm comm, const Options &opt, int pass)
 {
   const PassSpec &p = LaterPass(opt, pass);
   const std::string turn = PassOption(pass, "turn");
-  const int quarters = PassQuarters(opt, pass);
+  const ModelChoice model = ModelOf(opt);
+  const int quarters = model.passes[pass].quarters;
   PetscFunctionBeginUser;
   PetscCheck(std::isfinite(p.turn) && std::abs(p.turn) <= 360, comm, PETSC_ERR_USER_INPUT,
              "%s %g: the tube turns by -360 to 360 degrees", turn.c_str(), p.turn);
-  PetscCheck(QuarterTurn(opt, pass) || (FullModel(opt) && opt.model.full_hold != FullHold::Pins), comm,
+  PetscCheck(model.passes[pass].quarter_turn || (model.part == TubeModel::Full && model.hold != FullHold::Pins), comm,
              PETSC_ERR_USER_INPUT,
              "%s %g: a turn that is no multiple of 90 degrees needs the full model held by the rotation hold "
              "(-model full or auto, -full_hold rotation or auto)",
@@ -77,9 +78,9 @@ PetscErrorCode CheckPassTurn(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(Extent(opt, pass).Given() || p.turn == 0, comm, PETSC_ERR_USER_INPUT, "%s %g: give %s for the %s pass",
              turn.c_str(), p.turn, PassOption(pass, "stroke").c_str(), PassOrdinal(pass).c_str());
   for (int before = 0; before < pass; ++before) {
-    const bool odd = (quarters - PassQuarters(opt, before)) % 2 != 0;
+    const bool odd = (quarters - model.passes[before].quarters) % 2 != 0;
     const std::string lower = before == 0 ? "-lower_die" : PassOption(before, "lower_die");
-    PetscCheck(!odd || PassMirrored(opt, before) || opt.model.full_hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(!odd || model.passes[before].mirrored || model.hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
                "%s %g with -full_hold pins: the %s pass's dies (%s %s, -lower_die_motion %s) leave the tube symmetric "
                "about the y axis only; a quarter turn presses it off that axis, which the pins would hold it against "
                "(use -full_hold rotation or auto)",

@@ -54,7 +54,7 @@ PetscErrorCode CheckStrokeOptions(MPI_Comm comm, Options &opt)
              "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
              s.corner_radius);
   PetscCheck(
-    FirstDies(opt).lower.kind == "mirror" || s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+    FirstDies(opt).lower.Is(DieFrom::Mirror) || s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
     "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
     s.corner_radius, ShapeWord(FirstDies(opt).lower).c_str());
   if (!s.path.empty()) PetscCall(CheckStrokePath(comm, opt));

@@ -54,7 +54,7 @@ PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::str
 // 2 U as mirror and fixed do), no side dies.
 bool ClosedForm(const Options &o, const DieSet &dies)
 {
-  return dies.upper.kind == "v" && dies.lower.kind == "mirror" && LowerDieClosing(o) && dies.side.kind == "none";
+  return dies.upper.VDie() && dies.lower.Is(DieFrom::Mirror) && LowerDieClosing(o) && dies.side.Is(DieFrom::None);
 }
 
 } // namespace
@@ -62,7 +62,7 @@ bool ClosedForm(const Options &o, const DieSet &dies)
 PetscErrorCode BuildDie(MPI_Comm comm, const DieShape &shape, Die &die)
 {
   PetscFunctionBeginUser;
-  if (shape.kind == "v") {
+  if (shape.VDie()) {
     const ShapeSpec &v = shape.spec;
     const std::string error = MakeShape(shape.kind, v, die.tool);
     PetscCheck(error.empty(), comm, PETSC_ERR_USER_INPUT,
@@ -85,9 +85,9 @@ PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape,
                              Tool &lower)
 {
   PetscFunctionBeginUser;
-  if (shape.kind == "mirror") {
+  if (shape.Is(DieFrom::Mirror)) {
     lower = MirrorY(upper);
-  } else if (shape.kind == "flat") {
+  } else if (shape.Is(DieFrom::Plate)) {
     // A floor under the tube, reaching past its widening on the outside.
     ShapeSpec &spec = shape.spec;
     spec.y = floor_y, spec.x1 = (1 + kFloorReach) * opt.tube_ro, spec.floor = true;
@@ -99,7 +99,7 @@ PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape,
     lower = full ? BothSides(MirrorY(drawn)) : MirrorY(drawn);
   }
   // Its name in errors and in the results (/tools/<name>): no spaces.
-  lower.name = shape.kind == "flat" ? "floor" : shape.kind == "mirror" ? "lower-" + upper.name : "lower-die";
+  lower.name = shape.Is(DieFrom::Plate) ? "floor" : shape.Is(DieFrom::Mirror) ? "lower-" + upper.name : "lower-die";
   PetscCall(SetLowerMotion(comm, opt, upper, lower)); // (-lower_die_motion: die_motion.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -109,21 +109,21 @@ PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, DieChoice shape, con
 {
   Tool drawn; // drawn as an upper die (its right half), then turned to the side by the reflection about y = x
   PetscFunctionBeginUser;
-  const bool plate = shape.kind == "flat" || (shape.kind == "mirror" && !squaring);
+  const bool plate = shape.Is(DieFrom::Plate) || (shape.Is(DieFrom::Mirror) && !squaring);
   if (plate) {
     // (the whole plate in the half and full models, which reach below the x axis)
     ShapeSpec &spec = shape.spec;
     spec.y = o.tube_ro, spec.x1 = (1 + kPlateReach) * o.tube_ro, spec.floor = false;
     spec.x0 = half ? -(1 + kPlateReach) * o.tube_ro : -kPlateOverhang * o.tube_ro;
-    MakeShape("flat", spec, drawn); // (the flat kind draws any plate; the flattening scene's mirror too)
-  } else if (shape.kind == "mirror") {
+    MakeShape(kFlatShape, spec, drawn); // (the flat kind draws any plate; the flattening scene's mirror too)
+  } else if (shape.Is(DieFrom::Mirror)) {
     drawn = half ? BothSides(upper_right) : upper_right;
   } else {
     PetscCall(ReadProfileTool(comm, option, shape.kind, shape.spec.file, drawn));
     drawn = half ? BothSides(drawn) : drawn;
   }
   Tool right = Transform(drawn, {true, 1}); // (x, y) -> (y, x): moving along -x by the stroke
-  right.name = "side-" + std::string(plate ? "plate" : shape.kind == "mirror" ? tools[0].name : "die");
+  right.name = "side-" + std::string(plate ? "plate" : shape.Is(DieFrom::Mirror) ? tools[0].name : "die");
   MotionSpec in;
   in.direction = {-1.0, 0.0};
   PetscCall(SetMotion(comm, option, "stroke", in, right));
@@ -158,7 +158,7 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
     PetscCall(BuildLowerDie(comm, opt, dies.lower, tools[0], floor_y, full, lower));
     tools.push_back(lower);
   }
-  if (dies.side.kind != "none")
+  if (!dies.side.Is(DieFrom::None))
     PetscCall(AddSideDies(comm, opt, dies.side, pass > 0 ? PassOption(pass, "side_die").c_str() : "-side_die", squaring,
                           right_half, half, full, tools));
   // Its upper die's own motion (a path, a force: the first pass's -die_motion, a later one's), after the stroke its

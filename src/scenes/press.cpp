@@ -46,7 +46,7 @@ PressScene::PressScene(const Options &opt, bool squaring)
     p.extent = ExtentOf(opt.passes[k], k, k == 0 ? stroke_ : LaterPass(opt, k).stroke);
     p.turn = PassTurn(opt, k, half_, full_);
     p.dies = DiesOfPass(opt, k), p.reach = DieReach(opt, p.dies, squaring);
-    p.held = HeldByRotation(opt, k), p.side_dies = p.dies.side.kind != "none";
+    p.held = HeldByRotation(opt, k), p.side_dies = !p.dies.side.Is(DieFrom::None);
     if (k > 0 && p.dies.motion.OwnPath()) { // (its own path: -pass<N>_die_path)
       const ToolPath own = PathOf(p.dies.motion.spec);
       p.path = StrokePath(own), p.rise = -0.5 * own.Motion(0)[1];

@@ -18,7 +18,7 @@ Tool BuildFlatPlate(double y0, double x0, double x1, bool floor)
 
 const ShapeKind &FlatKind()
 {
-  static const ShapeKind kind{"flat", {}, nullptr, nullptr, [](const ShapeSpec &s, Tool &t) {
+  static const ShapeKind kind{kFlatShape, {}, nullptr, nullptr, [](const ShapeSpec &s, Tool &t) {
                                 return t = BuildFlatPlate(s.y, s.x0, s.x1, s.floor), std::string();
                               }};
   return kind;

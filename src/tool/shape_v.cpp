@@ -48,9 +48,10 @@ PetscErrorCode CheckV(MPI_Comm comm, const char *prefix, const ShapeSpec &s)
 
 const ShapeKind &VKind()
 {
-  static const ShapeKind kind{"v", {kAngle, kRApex, kUClose, kREdge}, ReadV, CheckV, [](const ShapeSpec &s, Tool &t) {
-                                return MakeVDie(s.ro, s.r_apex, s.u_close, s.r_edge, s.angle, t);
-                              }};
+  static const ShapeKind kind{
+    kVShape, {kAngle, kRApex, kUClose, kREdge}, ReadV, CheckV, [](const ShapeSpec &s, Tool &t) {
+      return MakeVDie(s.ro, s.r_apex, s.u_close, s.r_edge, s.angle, t);
+    }};
   return kind;
 }
 

@@ -127,8 +127,8 @@ PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt);
 // range or that do not go together with the others' options.
 PetscErrorCode CheckPassStrokesAndDies(MPI_Comm comm, const Options &opt);
 PetscErrorCode CheckPassTurns(MPI_Comm comm, const Options &opt);
-// Collective: side dies (`name`: -side_die, -pass<N>_side_die; "none" or a shape) go with the other options.
-PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const std::string &value);
+// Collective: side dies (`name`: -side_die, -pass<N>_side_die; none or a shape) go with the other options.
+PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side);
 // The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
 std::string PassOption(int pass, const char *what);
 // Collective: refuses material constants out of range or not in MPa (called by CheckOptions).
@@ -203,7 +203,7 @@ inline DieShape UpperDieShape(const Options &opt)
   return die;
 }
 // It is the V-die (not drawn from a file).
-inline bool VDie(const Options &opt) { return FirstDies(opt).upper.kind == "v"; }
+inline bool VDie(const Options &opt) { return FirstDies(opt).upper.VDie(); }
 // The lower die's motion as the scenes take it: its word, kind and spec, the spec moving up (y) by the stroke.
 inline LowerDieSpec LowerDie(const Options &opt)
 {
@@ -258,7 +258,7 @@ inline bool PassOffAxis(const Options &opt, int pass)
   return pass == 0 ? DieOffAxis(opt) : MotionOffAxis(LaterPass(opt, pass).dies.motion);
 }
 // Pass `pass`'s upper die or an earlier pass's leaves its press's axis (the tube is then pressed off its mirror
-// symmetry from that pass on). Every pass's options count, given or not, as in QuarterModel below.
+// symmetry from that pass on). Every pass's options count, given or not, as in ModelOf below.
 inline bool OffAxisBy(const Options &opt, int pass)
 {
   bool off = false;
@@ -296,54 +296,49 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
   if (pass == 0) return dies;
   const DieSet &given = LaterPass(opt, pass).dies;
   if (!given.upper.kind.empty()) dies.upper.kind = given.upper.kind, dies.upper.spec.file = given.upper.spec.file;
-  if (!given.lower.kind.empty()) dies.lower = given.lower;
-  if (!given.side.kind.empty()) dies.side = given.side;
+  if (given.lower.Given()) dies.lower = given.lower;
+  if (given.side.Given()) dies.side = given.side;
   dies.motion = given.motion, dies.motion.spec.reach = opt.tube_ro;
   dies.side_force = given.side_force;
   return dies;
 }
 // Pass `pass`'s lower die's word (-lower_die, -pass<N>_lower_die: the first pass's where not given).
 inline std::string PassLowerDie(const Options &opt, int pass) { return ShapeWord(DiesOfPass(opt, pass).lower); }
-// Pass `pass`'s lower die mirrors the upper one in shape and motion.
-inline bool PassMirrored(const Options &opt, int pass)
-{
-  return PassLowerDie(opt, pass) == "mirror" && LowerDieMoves(opt, LowerDieMove::Mirror);
-}
-// The tool scenes model a quarter of the tube where that is exact (or asked for): -model quarter, or auto
-// with lower dies that mirror the upper ones in shape and motion in every pass (each turned by quarter turns);
-// the half (x >= 0) otherwise. (Every pass's options count, given or not: a pass given without its stroke is
-// refused after the model is chosen.)
-inline bool QuarterModel(const Options &opt)
-{
-  bool mirror = LowerDieMoves(opt, LowerDieMove::Mirror), quarters = true;
-  for (int pass = 0; pass < kMaxPasses; ++pass)
-    mirror = mirror && PassLowerDie(opt, pass) == "mirror", quarters = quarters && QuarterTurn(opt, pass);
-  const TubeModel part = opt.model.part;
-  return part == TubeModel::Quarter ||
-         (part == TubeModel::Auto && mirror && !OffAxisBy(opt, kMaxPasses - 1) && quarters);
-}
-// The whole tube (-model full), or auto where neither the quarter nor the half is exact: the half's plane x = 0
-// is not a symmetry plane of a press turned by an odd number of quarter turns, or by another angle, or of a die
-// off its press's axis in any pass.
-inline bool FullModel(const Options &opt)
-{
-  bool turned = false;
-  for (int pass = 1; pass < kMaxPasses; ++pass)
-    turned = turned || PassQuarters(opt, pass) % 2 != 0 || !QuarterTurn(opt, pass);
-  return opt.model.part == TubeModel::Full ||
-         (opt.model.part == TubeModel::Auto && !QuarterModel(opt) && (turned || OffAxisBy(opt, kMaxPasses - 1)));
-}
-// A pass (0 the first) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins: asked,
-// or (auto) where the pins would hold the tube's slide against the dies: a pass with a die off the axis, and every
-// pass after it; a pass turned by an angle that is no quarter turn, or turned by an odd number of quarter turns
-// from an earlier pass not symmetric about its press's x axis (a lower die that does not mirror the upper one).
-inline bool HeldByRotation(const Options &opt, int pass)
-{
-  bool off_axis = OffAxisBy(opt, pass) || !QuarterTurn(opt, pass);
-  for (int before = 0; before < pass; ++before)
-    off_axis =
-      off_axis || ((PassQuarters(opt, pass) - PassQuarters(opt, before)) % 2 != 0 && !PassMirrored(opt, before));
-  const FullHold hold = opt.model.full_hold;
-  return FullModel(opt) && (hold == FullHold::Rotation || (hold == FullHold::Auto && off_axis));
-}
+// What the choice of the model reads of a pass's tools (ModelOf; every pass's, given or not: a pass given without
+// its stroke is refused after the model is chosen). Side dies press both sides alike: they choose nothing.
+struct PassSymmetry {
+  bool mirrored = true;     // its lower die mirrors the upper one in shape and motion (its press symmetric about x)
+  bool off_axis = false;    // its upper die or an earlier pass's leaves its press's y axis (OffAxisBy)
+  int quarters = 0;         // its turn from the first pass's press in quarter turns, rounded (PassQuarters)
+  bool quarter_turn = true; // that turn is whole quarter turns (QuarterTurn)
+};
+// The part of the tube the tool scenes model and how the full model is held, from every pass's dies and turns
+// (ModelOf: the options check and the scenes' set-up read it alike).
+struct ModelChoice {
+  std::vector<PassSymmetry> passes; // every pass's (kMaxPasses)
+  TubeModel part = TubeModel::Auto; // -model's, or the one auto picks: the quarter where exact, else the half where
+                                    // exact, else the full (never Auto)
+  FullHold hold = FullHold::Auto;   // -full_hold
+  // Every pass's lower die mirrors the upper one in shape and motion (what -model quarter needs).
+  bool Mirrored() const;
+  // The quarter is exact: mirrored, every die on its press's axis, every pass turned by whole quarter turns.
+  bool QuarterExact() const;
+  // The half (x >= 0) is exact: every die on its press's axis, every pass turned by an even number of quarter turns
+  // (its plane x = 0 a symmetry plane of each press).
+  bool HalfExact() const;
+  // Pass `pass` (0 the first) of the full model held by the rotation hold (scenes/hold.hpp) rather than its pins:
+  // asked, or (auto) where the pins would hold the tube's slide against the dies: a pass with a die off the axis,
+  // and every pass after it; a pass turned by an angle that is no quarter turn, or turned by an odd number of quarter
+  // turns from an earlier pass not symmetric about its press's x axis (a lower die that does not mirror the upper
+  // one).
+  bool HeldByRotation(int pass) const;
+};
+// The model the options and the passes' tools choose (model_options.cpp).
+ModelChoice ModelOf(const Options &opt);
+// The tool scenes model a quarter of the tube: -model quarter, or auto where it is exact.
+inline bool QuarterModel(const Options &opt) { return ModelOf(opt).part == TubeModel::Quarter; }
+// The whole tube: -model full, or auto where neither the quarter nor the half is exact.
+inline bool FullModel(const Options &opt) { return ModelOf(opt).part == TubeModel::Full; }
+// Pass `pass` of the full model is held by the rotation hold (ModelChoice::HeldByRotation).
+inline bool HeldByRotation(const Options &opt, int pass) { return ModelOf(opt).HeldByRotation(pass); }
 } // namespace tf

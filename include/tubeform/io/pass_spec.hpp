@@ -20,6 +20,14 @@ constexpr const char *WordOf(const char *const (&words)[N], E value)
 {
   return words[static_cast<size_t>(value)];
 }
+// The enumerator a word names among an enum's words (its enumerators' order), `otherwise` for a word not listed.
+template <class E, size_t N>
+E EnumOfWord(const char *const (&words)[N], const std::string &word, E otherwise)
+{
+  for (size_t k = 0; k < N; ++k)
+    if (word == words[k]) return static_cast<E>(k);
+  return otherwise;
+}
 
 // The most passes a press takes (-pass2_* to -pass9_*): one digit in the options' names, and a press line's
 // stations are a handful.
@@ -49,9 +57,7 @@ static_assert(std::size(kLowerDieMoveWords) == static_cast<size_t>(LowerDieMove:
 // The move a -lower_die_motion word says: its enumerator's, Own for a word not listed.
 inline LowerDieMove LowerDieMoveOf(const std::string &word)
 {
-  for (size_t k = 0; k < std::size(kLowerDieMoveWords); ++k)
-    if (word == kLowerDieMoveWords[k]) return static_cast<LowerDieMove>(k);
-  return LowerDieMove::Own;
+  return EnumOfWord(kLowerDieMoveWords, word, LowerDieMove::Own);
 }
 
 // The lower die's motion (-lower_die_motion; docs/dies.md): its word (mirror, fixed, path, or a kind registered after
@@ -77,34 +83,46 @@ inline ShapeSpec PaperVDie()
 // by the V kind under the prefix die_ (-die_angle, -die_r_apex, -die_u_close, -die_r_edge; read with a file too), and
 // the file (io/die_shape_options.cpp). The scenes read it through UpperDieShape.
 struct DieShape {
-  std::string kind = "v";
+  std::string kind = kVShape;
   ShapeSpec spec = PaperVDie(); // (ro: the tube's, set by UpperDieShape)
+  bool VDie() const { return kind == kVShape; }
 };
-// A lower or side die's shape (docs/dies.md), as its word chose it (ShapeChoice): none (no side dies), mirror (the
-// upper die's shape: a relation between the tools, not a kind), flat (the flat kind), or else a file drawn as an
-// upper die (the kind for its name, DrawingKind: profile or dxf; the file in spec.file). The scenes place and size
+// What a lower or side die is (docs/dies.md), as its word chose it (ShapeChoice): the upper die's mirror image
+// (mirror: a relation between the tools, not a kind), a plate (flat: the flat kind, a floor below the tube or a plate
+// at its side), no die (none: the side dies' only) or a drawing (a file drawn as an upper die). The words of the
+// enumerators before Drawing, in order (a drawing's word is its file). Unset: a later pass's, not given (the first
+// pass's then: DiesOfPass).
+enum class DieFrom { Mirror, Plate, None, Drawing, Unset };
+inline constexpr const char *kDieFromWords[] = {"mirror", "flat", "none"};
+static_assert(std::size(kDieFromWords) == static_cast<size_t>(DieFrom::Drawing),
+              "a word for each enumerator before Drawing, in order");
+// A lower or side die's shape: what it is, and for a plate or a drawing the kind of the shape registry that draws it
+// (flat; the kind for a file's name, DrawingKind: profile or dxf; the file in spec.file). The scenes place and size
 // the flat plate and read the file (scenes/die.cpp); these kinds read no options of their own.
 struct DieChoice {
-  explicit DieChoice(const char *k = "") : kind(k) {}
-  std::string kind;
+  explicit DieChoice(DieFrom f = DieFrom::Unset) : from(f) {}
+  DieFrom from;
+  std::string kind; // (none for mirror and none)
   ShapeSpec spec;
+  bool Is(DieFrom f) const { return from == f; }
+  bool Given() const { return from != DieFrom::Unset; }
 };
 // The shape a word names (-lower_die, -side_die and their passes'): mirror, flat, none where `none` (the side dies),
 // else a file. (die_shape_options.cpp)
 DieChoice ShapeChoice(const std::string &word, bool none = false);
-// The word back (the messages name it): the kind's, or the file.
+// The word back (the messages name it): its enumerator's, the file, or none ("") where unset.
 std::string ShapeWord(const DieChoice &shape);
 // The upper die's drawing a file names (-die_profile, -pass<N>_die_profile): its kind by the file's name
-// (DrawingKind: profile, or dxf for *.dxf), the file in spec.file; none ("") for no file. (die_shape_options.cpp)
+// (DrawingKind: profile, or dxf for *.dxf), the file in spec.file; unset for no file. (die_shape_options.cpp)
 DieChoice DrawingChoice(const std::string &file);
 
 // A pass's dies, the first's and a later one's alike (DiesOfPass): the upper one's shape and motion (with its path or
 // force), the lower and the side dies' shapes and the side dies' force. (The lower die's motion, -lower_die_motion,
 // is every pass's.)
 struct DieSet {
-  DieShape upper;                          // -die_profile, -die_angle, ... (UpperDieShape); -pass<N>_die_profile
-  DieMotion motion;                        // -die_motion (UpperDie); -pass<N>_die_motion (ReadPassMotions)
-  DieChoice lower{"mirror"}, side{"none"}; // -lower_die, -side_die (ShapeChoice); -pass<N>_lower_die, _side_die
+  DieShape upper;   // -die_profile, -die_angle, ... (UpperDieShape); -pass<N>_die_profile
+  DieMotion motion; // -die_motion (UpperDie); -pass<N>_die_motion (ReadPassMotions)
+  DieChoice lower{DieFrom::Mirror}, side{DieFrom::None}; // -lower_die, -side_die (ShapeChoice); their passes
   double side_force = 0; // -side_force: side dies pressing with this force (N/mm, each), their travel unknown (0: by
                          // the stroke; the first pass's only)
 };
@@ -112,19 +130,19 @@ struct DieSet {
 // A pass of the press (Options::passes: the first, then each after the springback of the one before): its stroke,
 // its turn and its dies, read under the pass's prefix (the first's -die_*, -lower_die, -side_die; a later one's
 // -pass<N>_*). A later pass's shapes where given, each chosen as the first pass's is (DrawingChoice, ShapeChoice),
-// else of kind "" (the first pass's: DiesOfPass).
+// else unset (an upper die of kind "", a lower or side die Unset: the first pass's, DiesOfPass).
 struct PassSpec {
   double stroke = 0; // where its upper die ends (mm, from the same zero as -stroke; 0: no such pass, or one pressed
                      // by a force: PassExtent); the first pass's is -stroke (Options::stroke), 0 here
   double turn = 0;   // the tube turned counter-clockwise before it (degrees, from the pass before's press; 0 the first)
   DieSet dies;       // its dies; its upper die's motion by the stroke, or a path of its own (ReadPassMotions)
 };
-// The passes before any option is read: the first with the default dies, the later ones with none given (kind "").
+// The passes before any option is read: the first with the default dies, the later ones with none given (unset).
 inline std::vector<PassSpec> DefaultPasses()
 {
   std::vector<PassSpec> passes(kMaxPasses);
   for (int k = 1; k < kMaxPasses; ++k)
-    passes[k].dies.upper.kind = passes[k].dies.lower.kind = passes[k].dies.side.kind = "";
+    passes[k].dies.upper.kind = "", passes[k].dies.lower = passes[k].dies.side = DieChoice();
   return passes;
 }
 

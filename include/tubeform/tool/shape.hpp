@@ -91,6 +91,10 @@ PetscErrorCode CheckShape(MPI_Comm comm, const std::string &kind, const char *pr
 // For a kind's reader: its option `o`, a number, into `value` (its default), under the block's prefix; a value
 // that is not a number refused ("-die_angle abc: not a number").
 PetscErrorCode ReadShapeReal(PetscOptionItems *PetscOptionsObject, const ShapeOption &o, double &value);
+// The names of the V-die's kind (shape_v.cpp: the upper die's shape unless a file is named) and the flat plate's
+// (shape_flat.cpp: a lower die's floor, a side die's plate), which the tools' options choose without a file.
+inline constexpr const char *kVShape = "v";
+inline constexpr const char *kFlatShape = "flat";
 // The kind of a drawing file by its name: dxf for .dxf (.DXF), else profile (tubeform's own format).
 std::string DrawingKind(const std::string &file);
 
