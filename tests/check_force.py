@@ -80,7 +80,7 @@ def follows(ref, h, P, bound, label):
 
 
 # A. The ring between plates.
-ref, _ = press("flattening", "force_ring_u.h5", ["-stroke", 0.6])
+ring_ref = ref = press("flattening", "force_ring_u.h5", ["-stroke", 0.6])[0]
 P = ref["load"][-1]
 ring, _ = press("flattening", "force_ring_f.h5", ["-die_force", P])
 end = follows(ref, ring, P, 1e-2, "ring, force-controlled plate")
@@ -119,9 +119,8 @@ follows(ref, sq, P, 1e-2, "V-dies, mu 0.2, force-controlled die")
 k.check(1 in set(sq["stage"].astype(int)) and sq["load"][-1] == 0,
         "V-dies, force-controlled: the springback follows (stage 1, the die's load released)")
 
-# C. Equilibrium: the half ring between a force-controlled plate and a fixed floor.
-ref, _ = press("flattening", "force_ring_u.h5", ["-stroke", 0.6])
-P = ref["load"][-1]
+# C. Equilibrium: the half ring between a force-controlled plate and a fixed floor (A's stroke run's load).
+P = ring_ref["load"][-1]
 HALF = ["-model", "half", "-lower_die_motion", "fixed", "-equilibrium_tol", 1e-6, "-die_force", P]
 halves = {n: press("flattening", f"force_half_np{n}.h5", HALF, n)[0] for n in (1, 2)}
 h = halves[1]
