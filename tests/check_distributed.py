@@ -93,7 +93,8 @@ def same_path(a, b):
     return ": " + ", ".join(differ) + " differ" if differ else ""
 
 
-run_all(tf, mpirun, [opts(c, v, e) for c in CASES for v, e in VARIANTS.items()])
+# (the squaring cases first: the longest, 6 times a pressure case's; the pool's cores end together)
+run_all(tf, mpirun, [opts(c, v, e) for c in reversed(CASES) for v, e in VARIANTS.items()])
 two = {c: run(tf, mpirun, 2, opts(c, "np2")) for c in CASES}
 for case in CASES:
     line = next((l for l in (two[case].stdout + two[case].stderr).splitlines() if "linear solver:" in l), "")

@@ -133,17 +133,17 @@ def squaring(name, opts):
 base = ["-options_file", f"{src}/options/squaring.opts", "-unload", "none"]
 thin = ["-options_file", f"{src}/options/squaring_al_37_mu0.35.opts", "-unload", "none", "-stroke", 2, "-increments", 143, "-dynamics", "implicit"]
 fine = ["-options_file", f"{src}/options/squaring_al_37_mu0.35.opts", "-unload", "none", "-mesh_ntheta", 96, "-stroke", 0.2, "-increments", 15]
-jobs = {
-    "qs": base + ["-stroke", 1, "-increments", 72, "-dynamics", "quasistatic"],
-    "slow": base + ["-stroke", 1, "-increments", 72, "-dynamics", "implicit", "-punch_speed", 1],
-    "thin1": thin + ["-punch_speed", 1],
-    "thin01": thin + ["-punch_speed", 0.1],
-    "fine_qs": fine + ["-dynamics", "quasistatic"],
-    "fine_dyn": fine + ["-dynamics", "implicit"],
-    "snap": ["-options_file", f"{src}/options/squaring_al_37_mu0.05.opts", "-options_file", f"{src}/options/preset-fast.opts",
-             "-unload", "none", "-error_estimate", 0],
+jobs = {  # (the longest first, the fold and the snap: the pool's two cores end together)
     "fold": ["-options_file", f"{src}/options/squaring_cu_29_mu0.20.opts", "-options_file", f"{src}/options/preset-fast.opts",
              "-error_estimate", 0],
+    "snap": ["-options_file", f"{src}/options/squaring_al_37_mu0.05.opts", "-options_file", f"{src}/options/preset-fast.opts",
+             "-unload", "none", "-error_estimate", 0],
+    "thin1": thin + ["-punch_speed", 1],
+    "thin01": thin + ["-punch_speed", 0.1],
+    "qs": base + ["-stroke", 1, "-increments", 72, "-dynamics", "quasistatic"],
+    "slow": base + ["-stroke", 1, "-increments", 72, "-dynamics", "implicit", "-punch_speed", 1],
+    "fine_qs": fine + ["-dynamics", "quasistatic"],
+    "fine_dyn": fine + ["-dynamics", "implicit"],
 }
 with ThreadPoolExecutor(max_workers=2) as pool:
     S = dict(pool.map(lambda kv: squaring(*kv), jobs.items()))

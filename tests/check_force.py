@@ -40,6 +40,8 @@ E. A later pass pressed by a force (-pass2_die_force; the paper's tube in the V-
    not shifted to -stroke's zero (its die's own stroke from where it started) -> ends at U = 0.50 mm (FAILED).
    -pass2_die_force with -pass2_stroke, and a third pass after it, are refused in one line naming the option.
 """
+from concurrent.futures import ThreadPoolExecutor
+
 import h5py
 import numpy as np
 
@@ -79,10 +81,42 @@ def follows(ref, h, P, bound, label):
     return abs(h["load"][s][-1] / P - 1)
 
 
+def together(*calls):
+    """press() calls (each a function of none) two at a time, the machine's two cores; their results in order."""
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        return list(pool.map(lambda call: call(), calls))
+
+
+# The single-rank runs two at a time, in rounds (the runs pressed by a force take it from the round before: A's and
+# B's stroke runs, the checkpoint from A's force run), the longest first; then C's 2-rank run. The checks read them.
+PAPER = ["-equilibrium_tol", 0, "-rmin_yield", "onset"]
+FRICTION = ["-friction_mu", 0.2]
+F, FIRST = 120.0, ["-stroke", 1.5]
+(pass2_ref, _), (pass2_h, _), (lim, p_lim), (closed, p_closed), (sq_ref, _), (ring_ref, _), (ref0, _) = together(
+    lambda: press("squaring", "force_pass2_u.h5", FIRST + ["-pass2_stroke", 2.0]),
+    lambda: press("squaring", "force_pass2_f.h5", FIRST + ["-pass2_die_force", F]),
+    lambda: press("squaring", "force_limit.h5", ["-die_force", 200, "-unload", "none"], check=False),
+    lambda: press("squaring", "force_closed.h5", ["-die_force", 200, "-die_u_close", 1.0, "-unload", "none"],
+                  check=False),
+    lambda: press("squaring", "force_sq_u.h5", FRICTION + ["-stroke", 1.0, "-unload", "none"]),
+    lambda: press("flattening", "force_ring_u.h5", ["-stroke", 0.6]),
+    lambda: press("flattening", "force_ring_u0.h5", PAPER + ["-stroke", 0.6]))
+P = ring_ref["load"][-1]
+HALF = ["-model", "half", "-lower_die_motion", "fixed", "-equilibrium_tol", 1e-6, "-die_force", P]
+# (-stroke sets the press's duration at -punch_speed: options/squaring.opts's inertia then matches the stroke run's)
+(sq, _), (half1, _), (ring, _), (ring0, _) = together(
+    lambda: press("squaring", "force_sq_f.h5", FRICTION + ["-die_force", sq_ref["load"][-1], "-stroke", 1.0]),
+    lambda: press("flattening", "force_half_np1.h5", HALF),
+    lambda: press("flattening", "force_ring_f.h5", ["-die_force", P]),
+    lambda: press("flattening", "force_ring_f0.h5", PAPER + ["-die_force", ref0["load"][-1]]))
+ck = out("force_ring_ck.h5")
+every = 2 * len(ring["load"]) // 3  # (not a divisor of the increments: the last checkpoint is inside the press)
+press("flattening", "force_ring_part.h5", ["-die_force", P], checkpoint=(ck, every))
+part, _ = press("flattening", "force_ring_part.h5", ["-die_force", P, "-restart", ck])
+halves = {1: half1, 2: press("flattening", "force_half_np2.h5", HALF, 2)[0]}
+
 # A. The ring between plates.
-ref, _ = press("flattening", "force_ring_u.h5", ["-stroke", 0.6])
-P = ref["load"][-1]
-ring, _ = press("flattening", "force_ring_f.h5", ["-die_force", P])
+ref = ring_ref
 end = follows(ref, ring, P, 1e-2, "ring, force-controlled plate")
 # The equilibrium iterations accept a state whose force misses by at most -equilibrium_tol (the fast preset's
 # 5e-3) x the mean nodal force q_avg, of the model's force (half the punch load).
@@ -91,18 +125,11 @@ k.check(end <= accept, f"ring: the press ends at the force asked within {end:.1e
         f"-equilibrium_tol x q_avg)")
 # The paper's method (no equilibrium iterations, r1 at the yield onset): a step cut by r_min is the trial's
 # solution scaled, the die's motion with it.
-PAPER = ["-equilibrium_tol", 0, "-rmin_yield", "onset"]
-ref0, _ = press("flattening", "force_ring_u0.h5", PAPER + ["-stroke", 0.6])
-ring0, _ = press("flattening", "force_ring_f0.h5", PAPER + ["-die_force", ref0["load"][-1]])
 end = follows(ref0, ring0, ref0["load"][-1], 1e-2, "ring, the paper's method (steps scaled by r_min)")
 k.check(end < 1e-9, f"ring, the paper's method: the press ends at the force asked within {end:.1e} (1e-9: each "
         f"step meets its force exactly)")
-ck = out("force_ring_ck.h5")
-every = 2 * len(ring["load"]) // 3  # (not a divisor of the increments: the last checkpoint is inside the press)
-press("flattening", "force_ring_part.h5", ["-die_force", P], checkpoint=(ck, every))
 with h5py.File(ck, "r") as c:
     lam = c["/run/lambda"][0]
-part, _ = press("flattening", "force_ring_part.h5", ["-die_force", P, "-restart", ck])
 same = all(part[c].shape == ring[c].shape for c in ring)
 worst = max(np.abs(part[c] - ring[c]).max() / max(np.abs(ring[c]).max(), 1e-300) for c in ring) if same else 1
 k.check(same and worst <= 1e-12 and 0 < lam < 1,
@@ -110,20 +137,14 @@ k.check(same and worst <= 1e-12 and 0 < lam < 1,
         f"{worst:.1e} (1e-12)")
 
 # B. The V-dies with friction, then the springback.
-FRICTION = ["-friction_mu", 0.2]
-ref, _ = press("squaring", "force_sq_u.h5", FRICTION + ["-stroke", 1.0, "-unload", "none"])
+ref = sq_ref
 P = ref["load"][-1]
-# (-stroke sets the press's duration at -punch_speed: options/squaring.opts's inertia then matches the stroke run's)
-sq, _ = press("squaring", "force_sq_f.h5", FRICTION + ["-die_force", P, "-stroke", 1.0])
 follows(ref, sq, P, 1e-2, "V-dies, mu 0.2, force-controlled die")
 k.check(1 in set(sq["stage"].astype(int)) and sq["load"][-1] == 0,
         "V-dies, force-controlled: the springback follows (stage 1, the die's load released)")
 
-# C. Equilibrium: the half ring between a force-controlled plate and a fixed floor.
-ref, _ = press("flattening", "force_ring_u.h5", ["-stroke", 0.6])
-P = ref["load"][-1]
-HALF = ["-model", "half", "-lower_die_motion", "fixed", "-equilibrium_tol", 1e-6, "-die_force", P]
-halves = {n: press("flattening", f"force_half_np{n}.h5", HALF, n)[0] for n in (1, 2)}
+# C. Equilibrium: the half ring between a force-controlled plate and a fixed floor (A's stroke run's load).
+P = ring_ref["load"][-1]
 h = halves[1]
 s = h["stage"] == 0
 end = abs(h["load"][s][-1] / P - 1)
@@ -137,7 +158,7 @@ worst = max(np.abs(a[c] - b[c]).max() / np.abs(a[c]).max() for c in ("load", "st
 k.check(worst < 1.3e-8, f"half ring over a floor, 1 vs 2 ranks: every row within {worst:.1e} (1.3e-8)")
 
 # D. Past a maximum of the load.
-lim, p = press("squaring", "force_limit.h5", ["-die_force", 200, "-unload", "none"], check=False)
+p = p_lim
 lines = [line for line in (p.stdout + p.stderr).splitlines() if "error" in line]
 k.check(p.returncode == 1 and len(lines) == 1 and "force control cannot pass it" in lines[0]
         and len(lim["load"]) > 10 and lim["load"].max() < 200,
@@ -145,17 +166,14 @@ k.check(p.returncode == 1 and len(lines) == 1 and "force control cannot pass it"
         f"{len(lim['load'])} rows written up to U = {lim['stroke'][-1]:.3f} mm, the largest load "
         f"{lim['load'].max():.1f} N/mm")
 # A force the dies cannot reach: parting faces at U = 1 mm (-die_u_close), below where the tube would carry 200.
-closed, p = press("squaring", "force_closed.h5", ["-die_force", 200, "-die_u_close", 1.0, "-unload", "none"],
-                  check=False)
+p = p_closed
 lines = [line for line in (p.stdout + p.stderr).splitlines() if "error" in line]
 k.check(p.returncode == 1 and len(lines) == 1 and "where the dies close on the tube or meet" in lines[0]
         and 1.0 <= closed["stroke"][-1] < 1.1,
         f"a force the dies cannot reach (parting faces at U = 1 mm): exit {p.returncode}, one line, results written "
         f"up to U = {closed['stroke'][-1]:.3f} mm")
 # E. A later pass pressed by a force: where the same pass pressed by its stroke reaches that force.
-F, FIRST = 120.0, ["-stroke", 1.5]
-ref, _ = press("squaring", "force_pass2_u.h5", FIRST + ["-pass2_stroke", 2.0])
-h, _ = press("squaring", "force_pass2_f.h5", FIRST + ["-pass2_die_force", F])
+ref, h = pass2_ref, pass2_h
 r, s = ref["stage"] == 2, h["stage"] == 2
 U, L = ref["stroke"][r], ref["load"][r]
 i = int(np.argmax(L >= F))  # (the first row at F or above)

@@ -26,7 +26,7 @@ import sys
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, out, run
+from tfcheck import Checks, args, out, run, run_all
 
 sys.path.insert(0, os.path.join(sys.argv[3], "python"))  # the helper package (python/README.md)
 from tubeform_py.analysis import hill_errors  # noqa: E402
@@ -39,11 +39,13 @@ k_ = Checks("hill")
 RANKS = {"load": 1.2e-9, "stroke": 7e-10, "w_ext": 7e-10, "n_plastic": 0.0, "rmin": 7e-8}
 hist = {}
 base = ["-options_file", f"{src}/options/pressure_plastic.opts", "-mesh_nt", 80, "-output_every", 1]
+# (the two single-rank runs side by side, then the 2-rank one)
+run_all(tf, mpirun, [base + ["-equilibrium_tol", 0, "-output", out("hill_np1.h5")],
+                     base + ["-output", out("hill_equilibrium.h5")]])
+run(tf, mpirun, 2, base + ["-equilibrium_tol", 0, "-output", out("hill_np2.h5")])
 for n in (1, 2):
-    run(tf, mpirun, n, base + ["-equilibrium_tol", 0, "-output", out(f"hill_np{n}.h5")])
     with h5py.File(out(f"hill_np{n}.h5"), "r") as h:
         hist[n] = {c: h["/history"][c][:] for c in h["/history"]}
-run(tf, mpirun, 1, base + ["-output", out("hill_equilibrium.h5")])
 for name, path in (("paper's increments", "hill_np1.h5"), ("equilibrium", "hill_equilibrium.h5")):
     e = hill_errors(out(path))
     if name != "equilibrium":

@@ -66,6 +66,7 @@ H. A second pass (U = 2 mm, not turned) after the die off the axis (`-die_offset
    the history within 1e-12 (E's bound).
 """
 import re
+from concurrent.futures import ThreadPoolExecutor
 
 import h5py
 import numpy as np
@@ -95,6 +96,24 @@ def history(name):
 
 procs = dict(zip(RUNS, run_all(tf, mpirun, [RUNS[n] + ["-output", out(f"{n}.h5")] for n in RUNS], timeout=600)))
 right, left = history("right.h5"), history("left.h5")
+
+
+def stop_and_continue(name, every):
+    """RUNS[name] run to increment `every`, its checkpoint written there, then continued from it (E, H)."""
+    opts, ck = RUNS[name] + ["-output", out(f"{name}_part.h5")], out(f"{name}_ck.h5")
+    checkpoint_at(tf, mpirun, 1, opts, ck, every, timeout=600)
+    run(tf, mpirun, 1, opts + ["-restart", ck], timeout=600)
+
+
+# E's and H's single-rank pairs of runs side by side (before the 2-rank runs): E's checkpoint a few increments before
+# the press's end (the press takes most of the run's increments); H's in the second pass, 0.2 mm after the dies took
+# the slide (the last row with the hold's nodes fixed).
+o2 = history("offset2.h5")
+o2_pinned = (o2["stage"] == 2) & (o2["hold_moment"] == 0) & (o2["hold_friction"] == 0)  # (as H below)
+o2_last = o2["stroke"][o2_pinned].max() if o2_pinned.any() else -1.0
+with ThreadPoolExecutor(max_workers=2) as pool:
+    list(pool.map(lambda a: stop_and_continue(*a), (("right", int(np.sum(right["stage"] == 0)) - 5),
+                                                    ("offset2", int(np.where(o2["stroke"] > o2_last + 0.2)[0][0])))))
 
 # A. Where the die starts.
 m = re.search(r"starts ([0-9.e+-]+) mm back", procs["right"].stdout)
@@ -162,13 +181,8 @@ same = two["stroke"].shape == U.shape
 worst = max(np.abs(two[c] - right[c]).max() / np.abs(right[c]).max() for c in ("load", "hold_moment", "tool_fx",
                                                                                "x_max")) if same else 1.0
 k.check(same and worst <= 1e-6, f"E. 1 vs 2 ranks within {worst:.1e} (1e-6)")
-ck = out("right_ck.h5")
-opts = RUNS["right"] + ["-output", out("right_part.h5")]
-# (one checkpoint, a few increments before the press's end: the press takes most of the run's increments)
-checkpoint_at(tf, mpirun, 1, opts, ck, int(np.sum(right["stage"] == 0)) - 5, timeout=600)
-with h5py.File(ck, "r") as c:
+with h5py.File(out("right_ck.h5"), "r") as c:  # (the pair of runs made after the single-rank runs)
     lam = c["/run/lambda"][0]
-run(tf, mpirun, 1, opts + ["-restart", ck], timeout=600)
 part = history("right_part.h5")
 same = all(part[c].shape == right[c].shape for c in right)
 worst = max(np.abs(part[c] - right[c]).max() / max(np.abs(right[c]).max(), 1e-300) for c in right) if same else 1
@@ -262,11 +276,8 @@ k.check(n2 < 1000 and said is not None and abs(float(said.group(1)) - last) <= d
         f"H. the pass takes {n2} increments (1000; a crawl of stick-limited steps took 3,534 with the slide free from "
         f"the pass's start), the hold's nodes fixed up to U = {last:.5f} mm, where the run says the dies hold the "
         f"slide ({said.group(1) if said else '-'} mm, 4 digits)")
-# (a checkpoint in the second pass after the dies took the slide, continued: the state of the hold's nodes kept)
-ck = out("offset2_ck.h5")
-opts = RUNS["offset2"] + ["-output", out("offset2_part.h5")]
-checkpoint_at(tf, mpirun, 1, opts, ck, int(np.where(t["stroke"] > last + 0.2)[0][0]), timeout=600)
-run(tf, mpirun, 1, opts + ["-restart", ck], timeout=600)
+# (a checkpoint in the second pass after the dies took the slide, continued: the state of the hold's nodes kept; the
+# pair of runs made after the single-rank runs)
 part = history("offset2_part.h5")
 same = all(part[c].shape == t[c].shape for c in t)
 worst = max(np.abs(part[c] - t[c]).max() / max(np.abs(t[c]).max(), 1e-300) for c in t) if same else 1

@@ -22,7 +22,7 @@ C. Refusals, one line each naming the option: strokes that do not rise, a path w
 """
 import numpy as np
 
-from tfcheck import Checks, args, lower_die_steps, out, ran_to_end, run, self_checks
+from tfcheck import Checks, args, lower_die_steps, out, ran_to_end, run, run_all, self_checks
 
 tf, mpirun, src = args()
 k = Checks("lower_path")
@@ -30,14 +30,22 @@ BASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src
         "-stroke", 2, "-progress", 0, "-error_estimate", 0]
 
 
-def press(name, opts, n=1):
-    """The run's history and tools (its results up to a stop too); a check that it ran to its end."""
-    return ran_to_end(k, tf, mpirun, n, BASE + opts, out(name), " ".join(map(str, opts)))
+def press(name, opts, n=1, p=None):
+    """The run's history and tools (its results up to a stop too); a check that it ran to its end (`p`: the run,
+    made already)."""
+    return ran_to_end(k, tf, mpirun, n, BASE + opts, out(name), " ".join(map(str, opts)), p)
 
+
+# A's and B's single-rank presses side by side (the machine's two cores), before B's 2-rank one; press() checks each.
+ONE = {"lower_straight.h5": ["-lower_die_motion", "path", "-lower_die_path", "2,2"],
+       "lower_wait.h5": ["-lower_die_motion", "path", "-lower_die_path", "1,0,2,1"],
+       "lower_mirror.h5": ["-model", "half"]}
+made = dict(zip(ONE, run_all(tf, mpirun, [BASE + o + ["-output", out(n)] for n, o in ONE.items()], check=False,
+                             timeout=600)))
 
 # A. Straight up by U: the mirror's motion.
-mirror = press("lower_mirror.h5", ["-model", "half"])
-path = press("lower_straight.h5", ["-lower_die_motion", "path", "-lower_die_path", "2,2"])
+mirror = press("lower_mirror.h5", ONE["lower_mirror.h5"], p=made["lower_mirror.h5"])
+path = press("lower_straight.h5", ONE["lower_straight.h5"], p=made["lower_straight.h5"])
 cols = [c for c in mirror if c != "tools"]
 same = all(path[c].shape == mirror[c].shape for c in cols)
 worst = max(np.abs(path[c] - mirror[c]).max() / max(np.abs(mirror[c]).max(), 1e-300) for c in cols) if same else 1
@@ -45,7 +53,7 @@ k.check(same and worst <= 1e-12, f"a lower die's path straight up by U gives the
         f"within {worst:.1e} of their largest values (1e-12)")
 
 # B. It waits, then rises.
-h = press("lower_wait.h5", ["-lower_die_motion", "path", "-lower_die_path", "1,0,2,1"])
+h = press("lower_wait.h5", ONE["lower_wait.h5"], p=made["lower_wait.h5"])
 U = h["stroke"]
 lam, disp = lower_die_steps(out("lower_wait.h5"), h)
 press_steps = np.flatnonzero(lam <= 1)

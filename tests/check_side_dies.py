@@ -68,6 +68,7 @@ E. Force-controlled side dies (-side_force F: each side plate presses with a for
      to there written.
 """
 import math
+from concurrent.futures import ThreadPoolExecutor
 
 import h5py
 import numpy as np
@@ -98,15 +99,38 @@ RUNS = {"side_four.h5": RING + ["-stroke", 3], "side_half.h5": RING + ["-stroke"
 run_all(tf, mpirun, [opts + ["-output", out(name)] for name, opts in RUNS.items()], timeout=600)
 
 
-def continued(name, whole, every, inside, label):
-    """RUNS[name] checkpointed every `every` increments and continued from its last checkpoint, which must lie
-    inside the load factors `inside` (a checkpoint at the run's end would restart nothing), against `whole`."""
+def stop_and_continue(name, every):
+    """RUNS[name] run to increment `every`, its checkpoint written there, then continued from it."""
     ck = out(f"{name}_ck.h5")
     opts = RUNS[f"{name}.h5"] + ["-output", out(f"{name}_part.h5")]
     checkpoint_at(tf, mpirun, 1, opts, ck, every, timeout=600)
-    with h5py.File(ck, "r") as c:
-        lam = c["/run/lambda"][0]
     run(tf, mpirun, 1, opts + ["-restart", ck], timeout=600)
+
+
+def limit_run():
+    """A side force the tube cannot carry (E's last check)."""
+    return run(tf, mpirun, 1, SQ + ["-side_die", "flat", "-side_force", 500, "-output", out("side_force_limit.h5")],
+               check=False, timeout=600)
+
+
+# The single-rank runs that read the pool's results, two at a time before any 2-rank run: D's and E's checkpoints
+# (inside the turned second pass; inside the force-controlled press, before U = 1.5 mm), each continued, and E's
+# side force the tube cannot carry.
+turned, held = history_and_tools(out("side_pass2_turned.h5")), history_and_tools(out("side_force.h5"))
+with ThreadPoolExecutor(max_workers=2) as pool:
+    pairs = [pool.submit(stop_and_continue, "side_pass2_turned",
+                         int(np.sum(turned["stage"] <= 1)) + int(np.sum(turned["stage"] == 2)) // 2),
+             pool.submit(stop_and_continue, "side_force", int(np.sum(held["stroke"] < 1.5)))]
+    limit = pool.submit(limit_run)
+    [f.result() for f in pairs]
+    limit = limit.result()
+
+
+def continued(name, whole, inside, label):
+    """RUNS[name] continued from its checkpoint (stop_and_continue), which must lie inside the load factors `inside`
+    (a checkpoint at the run's end would restart nothing), against `whole`."""
+    with h5py.File(out(f"{name}_ck.h5"), "r") as c:
+        lam = c["/run/lambda"][0]
     part = history_and_tools(out(f"{name}_part.h5"))
     cols = [c for c in whole if c != "tools"]
     same = all(part[c].shape == whole[c].shape for c in cols)
@@ -189,8 +213,7 @@ k.check(e < 5e-3, f"a V-die over a floor rising with it, side plates: energy bal
 
 # D. Side dies in a second pass, drawn turned and not.
 turned, plain = press("side_pass2_turned.h5"), press("side_pass2_plain.h5")
-continued("side_pass2_turned", turned, int(np.sum(turned["stage"] <= 1)) + int(np.sum(turned["stage"] == 2)) // 2,
-          (2, 3), "side dies in the turned second pass (more tools than the first pass's), continued from a "
+continued("side_pass2_turned", turned, (2, 3), "side dies in the turned second pass (more tools than the first pass's), continued from a "
           "checkpoint inside it")
 s2 = turned["stage"] == 2
 same = len(turned["stage"]) == len(plain["stage"]) and (turned["stage"] == plain["stage"]).all()
@@ -236,10 +259,8 @@ full = press("side_force_full.h5")
 end = max(abs(full[c][-1] / held[c][-1] - 1) for c in ("load", "side_load", "side_stroke", "x_max"))
 k.check(end < 1e-3, f"force-controlled side plates, the full model (two plates sharing one travel) against the "
         f"quarter at the end of the press: within {end:.1e} (1e-3, as B)")
-continued("side_force", held, int(np.sum(held["stroke"] < 1.5)), (0, 1),
-          "force-controlled side plates, continued from a checkpoint inside the press")
-p = run(tf, mpirun, 1, SQ + ["-side_die", "flat", "-side_force", 500, "-output", out("side_force_limit.h5")],
-        check=False, timeout=600)
+continued("side_force", held, (0, 1), "force-controlled side plates, continued from a checkpoint inside the press")
+p = limit
 lines = [line for line in (p.stdout + p.stderr).splitlines() if "error" in line]
 with h5py.File(out("side_force_limit.h5"), "r") as h:
     rows, stopped = len(h["/history/stroke"]), h["/history"].attrs["stopped"]

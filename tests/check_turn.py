@@ -52,7 +52,7 @@ from concurrent.futures import ThreadPoolExecutor
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, history_and_tools, out, run, run_all
+from tfcheck import Checks, args, checkpoint_at, history_and_tools, out, run, run_all
 
 tf, mpirun, src = args()
 k = Checks("turn")
@@ -160,8 +160,8 @@ def stop_and_continue(opts, whole, name):
     """The run of `opts` checkpointed half way through its second press (as `whole` counts increments), continued."""
     ck = out(f"{name}_ck.h5")
     every = int(np.sum(whole["stage"] <= 1)) + int(np.sum(whole["stage"] == 2)) // 2
-    run(tf, mpirun, 1, opts + ["-output", out(f"{name}.h5"), "-checkpoint", ck, "-checkpoint_every", every],
-        timeout=600)
+    # (stopped there: the rest, which the restart computes, is not run twice)
+    checkpoint_at(tf, mpirun, 1, opts + ["-output", out(f"{name}.h5")], ck, every, timeout=600)
     run(tf, mpirun, 1, opts + ["-output", out(f"{name}.h5"), "-restart", ck], timeout=600)
 
 

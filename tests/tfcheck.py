@@ -149,10 +149,12 @@ def history_and_tools(path):
     return r
 
 
-def ran_to_end(k, tf, mpirun, n, opts, path, label):
+def ran_to_end(k, tf, mpirun, n, opts, path, label, p=None):
     """Runs tubeform on n ranks with opts writing `path`; checks (in k) that it ran to its end, named by `label`
-    and the run's first error line; returns its history and tools (history_and_tools; its results up to a stop)."""
-    p = run(tf, mpirun, n, list(opts) + ["-output", path], check=False, timeout=600)
+    and the run's first error line; returns its history and tools (history_and_tools; its results up to a stop).
+    `p`: that run made already (its CompletedProcess, run with check=False: run_all's side by side)."""
+    if p is None:
+        p = run(tf, mpirun, n, list(opts) + ["-output", path], check=False, timeout=600)
     why = [x for x in p.stdout.splitlines() + p.stderr.splitlines() if "error:" in x][:1]
     k.check(p.returncode == 0, f"{label}{' (2 ranks)' if n > 1 else ''}: ran to its end (exit {p.returncode}) "
             f"{''.join(why)}")
