@@ -106,15 +106,16 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
   PetscCheck(m.full_hold == FullHold::Auto || model.part == TubeModel::Full, comm, PETSC_ERR_USER_INPUT,
              "-full_hold %s: only the full model is held so (-model full)", WordOf(kFullHoldWords, m.full_hold));
   bool held = false;
-  std::string forced = "-die_force"; // (the option of the first pass pressed by a force, where one is)
+  std::string forced; // (the option of the first pass pressed by a force; none: "")
   for (int pass = kMaxPasses - 1; pass >= 0; --pass) {
+    const PassExtent e = Extent(opt, pass);
     held = held || model.HeldByRotation(pass);
-    if (Extent(opt, pass).Forced()) forced = Extent(opt, pass).Option();
+    if (e.Forced()) forced = e.Option();
   }
-  PetscCheck(!held || (!AnyPassForced(opt) && FirstDies(opt).side_force == 0), comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(!held || (forced.empty() && FirstDies(opt).side_force == 0), comm, PETSC_ERR_USER_INPUT,
              "the rotation hold (-full_hold, -die_offset, -die_path): not with %s or -side_force (one "
              "force-controlled unknown in an increment)",
-             forced.c_str());
+             forced.empty() ? "-die_force" : forced.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -14,14 +14,13 @@
 namespace tf {
 
 struct PassExtent {
-  int pass = 0;                // 0 the first
-  std::string kind = "stroke"; // its upper die's motion (DieMotion::kind)
-  double stroke = 0;           // where its upper die ends (mm, from -stroke's zero; not under force)
-  double force = 0;            // the punch load it presses with at its end (N/mm; force only)
+  int pass = 0;        // 0 the first
+  bool forced = false; // its upper die's motion kind's MotionKind::unknown_stroke (force), read once by ExtentOf
+  double stroke = 0;   // where its upper die ends (mm, from -stroke's zero; not under force)
+  double force = 0;    // the punch load it presses with at its end (N/mm; force only)
 
-  // Its stroke is the outcome of the force it presses with (the die's own, an unknown of each increment: its kind's
-  // MotionKind::unknown_stroke, force).
-  bool Forced() const { return MotionStrokeUnknown(kind); }
+  // Its stroke is the outcome of the force it presses with (the die's own, an unknown of each increment).
+  bool Forced() const { return forced; }
   // The pass is pressed: the first always, a later one given its stroke, a path (its stroke) or a force.
   bool Given() const { return pass == 0 || stroke > 0 || Forced(); }
   // What ends it, its word and the option that gives it (-stroke, -die_force, -pass2_stroke, -pass2_die_force;
@@ -40,7 +39,7 @@ struct PassExtent {
 inline PassExtent ExtentOf(const PassSpec &p, int pass, double stroke)
 {
   PassExtent e;
-  e.pass = pass, e.kind = p.dies.motion.kind, e.stroke = stroke;
+  e.pass = pass, e.forced = MotionStrokeUnknown(p.dies.motion.kind), e.stroke = stroke;
   e.force = e.Forced() ? p.dies.motion.spec.force : 0.0;
   return e;
 }
