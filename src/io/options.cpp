@@ -198,14 +198,20 @@ PetscErrorCode ReadOutput(PetscOptionItems *PetscOptionsObject, OptionReader &re
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The loading and output block (one group in -help).
+// The loading (the tools' scenes' stroke, model, passes and release) and the output: a group each in -help.
 PetscErrorCode ReadLoading(MPI_Comm comm, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  TF_OPTIONS_BEGIN(comm, "tubeform: loading and output");
-  PetscCall(ReadLoads(PetscOptionsObject, read, opt));
-  PetscCall(ReadOutput(PetscOptionsObject, read, opt));
-  TF_OPTIONS_END();
+  {
+    TF_OPTIONS_BEGIN(comm, "tubeform: loading (stroke, model, passes, springback)");
+    PetscCall(ReadLoads(PetscOptionsObject, read, opt));
+    TF_OPTIONS_END();
+  }
+  {
+    TF_OPTIONS_BEGIN(comm, "tubeform: output, checkpoints and stops");
+    PetscCall(ReadOutput(PetscOptionsObject, read, opt));
+    TF_OPTIONS_END();
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
