@@ -40,13 +40,14 @@ PressScene::PressScene(const Options &opt, bool squaring)
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
   lower_motion_ = LowerDieMotion(opt);
   passes_.resize(PassCount(opt));
+  const ModelChoice model = ModelOf(opt); // (each pass's hold; half_ and full_ read the same choice)
   passes_[0].path = FirstDies(opt).motion.OwnPath() ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
   for (int k = 0; k < (int)passes_.size(); ++k) {
     Pass &p = passes_[k];
     p.extent = ExtentOf(opt.passes[k], k, k == 0 ? stroke_ : LaterPass(opt, k).stroke);
     p.turn = PassTurn(opt, k, half_, full_);
     p.dies = DiesOfPass(opt, k), p.reach = DieReach(opt, p.dies, squaring);
-    p.held = HeldByRotation(opt, k), p.side_dies = !p.dies.side.Is(DieFrom::None);
+    p.held = model.HeldByRotation(k), p.side_dies = !p.dies.side.Is(DieFrom::None);
     if (k > 0 && p.dies.motion.OwnPath()) { // (its own path: -pass<N>_die_path)
       const ToolPath own = PathOf(p.dies.motion.spec);
       p.path = StrokePath(own), p.rise = -0.5 * own.Motion(0)[1];
