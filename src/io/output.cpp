@@ -323,7 +323,12 @@ PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std
   PetscCall(PetscFree(all_options));
   PetscCall(PetscViewerPopFormat(viewer_));
   FreeReserve(); // (its room for the metadata the file's close writes)
-  PetscCall(PetscViewerDestroy(&viewer_));
+  // As Flush: a close that fails (the disk filled by another writer) is every rank's, and names the file.
+  int mine = PetscViewerDestroy(&viewer_) != PETSC_SUCCESS, any = 0;
+  PetscCallMPI(MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, mesh_->comm));
+  PetscCheck(!any, mesh_->comm, PETSC_ERR_FILE_WRITE,
+             "-output %s: closing %s.partial failed (HDF5; a full disk?); nothing is renamed into place", path_.c_str(),
+             path_.c_str());
 
   // The ParaView index beside it, written by rank 0 as <name>.xmf.partial;
   // every rank learns how that went before any raises it (one rank returning
