@@ -66,7 +66,8 @@ PetscErrorCode ReadIncrements(PetscOptionItems *PetscOptionsObject, OptionReader
                       "Scale plastic stresses back onto the yield surface after each update", d.drift_correction));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-plastic_update",
                        "tangent (the rate form with the start's flow direction), radial (radial return: the elastic "
-                       "trial projected back onto the yield surface; isotropic J2 only)",
+                       "trial projected back onto the yield surface; isotropic J2 only), auto (radial where the "
+                       "material has it and the increments are in equilibrium, tangent elsewhere)",
                        kPlasticUpdateWords, d.plastic_update));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -160,7 +161,7 @@ PetscErrorCode CheckDriverOptions(MPI_Comm comm, const Options &opt)
              "-max_energy_error %g: must be a positive fraction (e.g. 0.25)", d.max_energy_error);
   PetscCheck(d.unload_increments >= 0, comm, PETSC_ERR_USER_INPUT,
              "-unload_increments %d: must be at least 1 (or 0: as -increments)", (int)d.unload_increments);
-  PetscCheck(d.plastic_update == PlasticUpdate::Tangent || LawOf(opt.material) == LawKind::Elastic ||
+  PetscCheck(d.plastic_update != PlasticUpdate::Radial || LawOf(opt.material) == LawKind::Elastic ||
                LawOf(opt.material) == LawKind::IsotropicJ2,
              comm, PETSC_ERR_USER_INPUT,
              "-plastic_update radial: isotropic J2 only (not with -hardening chaboche, -material_r, -material_hill)");

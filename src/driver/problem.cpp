@@ -31,7 +31,11 @@ BodyParams MakeBodyParams(const Options &opt)
   b.yield_inside = opt.driver.rmin_yield == RminYield::Inside || opt.driver.equilibrium_tol > 0;
   b.yield_tol = opt.driver.rmin_yield_tol;
   b.drift_correction = opt.driver.drift_correction;
-  b.plastic_update = opt.driver.plastic_update;
+  // auto: the law's radial return with equilibrium iterations; with the paper's forward increments the tangent update,
+  // which is what K linearizes there (docs/theory.md, section 1, "Radial return").
+  const bool forward = opt.driver.equilibrium_tol == 0;
+  b.plastic_update =
+    opt.driver.plastic_update == PlasticUpdate::Auto && forward ? PlasticUpdate::Tangent : opt.driver.plastic_update;
   b.state_from_strain = opt.driver.equilibrium_tol > 0;
   b.kinematics = opt.driver.kinematics;
   return b;

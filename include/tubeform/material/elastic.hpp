@@ -38,11 +38,13 @@ struct UpdateInfo {
   double drift = 0; // sbar / sigma_y - 1 after the update (before any correction; round-off after a radial return)
 };
 
-// How a plastic point's stress is integrated over an increment (-plastic_update; isotropic J2 only): the tangent
-// update (the rate form with the start's flow direction, docs/theory.md (T2)) or the radial return (backward Euler:
-// the elastic trial projected back onto the yield surface along its own deviator).
-enum class PlasticUpdate { Tangent, Radial };
-inline constexpr const char *kPlasticUpdateWords[] = {"tangent", "radial"};
+// How a plastic point's stress is integrated over an increment (-plastic_update): the tangent update (the rate form
+// with the start's flow direction, docs/theory.md (T2)), the radial return (isotropic J2 only; backward Euler: the
+// elastic trial projected back onto the yield surface along its own deviator), or auto: the return where the law
+// has it and the increments are in equilibrium, the tangent update elsewhere (resolved by the driver and the
+// material factory).
+enum class PlasticUpdate { Tangent, Radial, Auto };
+inline constexpr const char *kPlasticUpdateWords[] = {"tangent", "radial", "auto"};
 
 // The flow curve (-material_law), the hardening rule (-hardening) and where the anisotropy's radial axis points
 // (-material_axes), each with its words in its enumerators' order.

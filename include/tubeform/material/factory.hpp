@@ -22,7 +22,8 @@ std::unique_ptr<Hardening> MakeHardening(const MaterialParams &m);
 // -rmin_deps); `drift_correction` scales plastic stresses back onto the yield
 // surface after each update. With hardening "chaboche" the backstresses of
 // m.kinematic take their share of the flow curve (material/kinematic.hpp). `update`: the isotropic J2 law's
-// plastic update (the kinematic and Hill laws have the tangent update only: the options refuse radial with them).
+// plastic update, auto its radial return (the kinematic and Hill laws have the tangent update only: the options
+// refuse radial with them, auto takes the tangent update there).
 std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, bool drift_correction,
                                        PlasticUpdate update = PlasticUpdate::Tangent);
 // The law MakeMaterial builds for `m`: the one place that tells them apart.
