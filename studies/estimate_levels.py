@@ -15,6 +15,10 @@ reads another checkout's cache: eval, show and shipped start no run).
     /usr/bin/python3 studies/estimate_levels.py shipped --tubes ...         # the runs' own estimate (plan preset)
     /usr/bin/python3 studies/estimate_levels.py demand --tubes ... [--target 0.005]   # accuracy on demand
 
+--update radial runs the level runs and the references with the radial return (cached apart, `_radial`; its
+reference's step ladder is s 1, 2, the return being converged in the step there); --presets-update radial (or
+tangent, auto) adds that -plastic_update to the preset runs (cached apart, `preset_<preset>_<update>`).
+
 Plans: `directions` runs each preset level's directional companions at s 1 (half the cells through the wall, twice
 them where half would be under 2; half the cells around), `orders` the third level of each direction (twice the
 run's, or four times through the wall from 2 cells) for an observed order; `preset` runs the tube with
@@ -66,8 +70,19 @@ def tube(name):
     return validation.case_options(name), ro, t, stroke
 
 
+# The plastic update of the level runs (--update): the tangent update (the option's default, what the study ran
+# until the presets took the radial return) or the radial return, whose runs are cached under their own names.
+UPDATE = "tangent"
+# The preset runs' plastic update (--presets-update): "" the preset file's own, else added after it (cached apart).
+PRESET_UPDATE = ""
+
+
+def preset_tag(preset):
+    return f"preset_{preset}" + (f"_{PRESET_UPDATE}" if PRESET_UPDATE else "")
+
+
 def label(nt, d, s, element):
-    return f"n{nt}_d{d:g}_s{s:g}_{element}"
+    return f"n{nt}_d{d:g}_s{s:g}_{element}" + ("_radial" if UPDATE == "radial" else "")
 
 
 def run(name, nt, d, s, element):
@@ -76,7 +91,7 @@ def run(name, nt, d, s, element):
     extra = ["-mesh_nt", nt, "-mesh_ntheta", 0, "-mesh_density", d, "-element", element, "-increments",
              round(100 * s), "-rmin_deps", 0.002 / s, "-rmin_domega", 0.01 / s, "-rmin_yield", "inside",
              "-friction_vcri", VCRI_OF_BENDING_LENGTH * math.sqrt(ro * t), "-unload_increments", 10,
-             "-error_estimate", 0, "-rmin_deps_yield", 2 / s]
+             "-error_estimate", 0, "-rmin_deps_yield", 2 / s, "-plastic_update", UPDATE]
     return cached_run(name, label(nt, d, s, element), [str(o) for o in extra], lambda line: False)
 
 
@@ -120,7 +135,8 @@ def cached_run(name, tag, extra, keep):
 
 def run_preset(name, preset):
     """The tube's run with a preset, its error estimate on (cached): its meta and file."""
-    return cached_run(name, f"preset_{preset}", ["-options_file", f"options/preset-{preset}.opts"],
+    extra = ["-plastic_update", PRESET_UPDATE] if PRESET_UPDATE else []
+    return cached_run(name, preset_tag(preset), ["-options_file", f"options/preset-{preset}.opts"] + extra,
                       lambda line: "companion runs" in line)
 
 
@@ -154,8 +170,8 @@ def plan(name, which):
         return [("preset", p) for p in PRESETS]
     if which == "reference":
         nt = max(4, default_nt)
-        return [(2 * nt, 48, 1, element), (2 * nt, 48, 2, element), (2 * nt, 48, 4, element),
-                (3 * nt, 68, 1, element)]
+        ladder = (1, 2) if UPDATE == "radial" else (1, 2, 4)
+        return [(2 * nt, 48, s, element) for s in ladder] + [(3 * nt, 68, 1, element)]
     raise SystemExit(f"estimate_levels.py: unknown plan {which} (grid, estimate, reference, directions, orders)")
 
 
@@ -171,21 +187,24 @@ def done(path):
 
 def reference(name):
     """The tube's converged answer: the step ladder on the mesh (2 nt, 48) extrapolated as a first-order method's
-    limit (2 f(4) - f(2)), with the mesh's remaining error from (3 nt, 68) at s 1 against (2 nt, 48) at s 1; its
-    uncertainty the larger of the two corrections (per value). None until its runs exist."""
+    limit (2 f(4) - f(2); with the radial return, converged in the step at s 1, 2 f(2) - f(1)), with the mesh's
+    remaining error from (3 nt, 68) at s 1 against (2 nt, 48) at s 1; its uncertainty the larger of the two
+    corrections (per value; the step's: |f(4) - f(2)|, or |f(2) - f(1)|). None until its runs exist."""
     nt = max(4, preset_nt(name, 0.022, 4))
     element = "qm6bar" if preset_nt(name, 0.022, 4) >= 5 else "qm6"
+    ladder = (1, 2) if UPDATE == "radial" else (1, 2, 4)
     got = []
-    for n, d, s in [(2 * nt, 48, 1), (2 * nt, 48, 2), (2 * nt, 48, 4), (3 * nt, 68, 1)]:
+    for n, d, s in [(2 * nt, 48, s) for s in ladder] + [(3 * nt, 68, 1)]:
         path = os.path.join(OUT, name, label(n, d, s, element))
         if not done(path):
             return None
         P, C, S, _ = values(path + ".h5", strokes(name))
         got.append(np.array(P + C + [S]))
-    f1, f2, f4, fine = got
-    step = 2 * f4 - f2 - f1          # the step's correction at s 1 on the mesh (2 nt, 48)
+    f1, fine = got[0], got[-1]
+    fa, fb = got[-3], got[-2]        # the ladder's last two: s (2, 4), or (1, 2) with the radial return
+    step = 2 * fb - fa - f1          # the step's correction at s 1 on the mesh (2 nt, 48)
     mesh = fine - f1                 # the mesh's correction from 48 to 68 around (and 3/2 through the wall)
-    return {"value": f1 + step + mesh, "unc": np.maximum(np.abs(f4 - f2), np.abs(mesh))}
+    return {"value": f1 + step + mesh, "unc": np.maximum(np.abs(fb - fa), np.abs(mesh))}
 
 
 # The levels of a preset's run the candidates read: divisors of its cells through the wall and around, step level.
@@ -340,7 +359,7 @@ def shipped(tubes, misses=False):
     for t in tubes:
         ref = reference(t)
         for preset in PRESETS:
-            h5 = os.path.join(OUT, t, f"preset_{preset}.h5")
+            h5 = os.path.join(OUT, t, preset_tag(preset) + ".h5")
             if ref is None or not done(h5[:-3]):
                 print(f"{t} {preset}: no reference or no preset run cached")
                 continue
@@ -386,7 +405,7 @@ def demand(tubes, target):
 
 
 def main():
-    global OUT
+    global OUT, UPDATE, PRESET_UPDATE
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("what", choices=("run", "show", "eval", "shipped", "demand"))
     ap.add_argument("--target", type=float, default=0.005, help="demand: the -target_load")
@@ -394,9 +413,13 @@ def main():
     ap.add_argument("--plan", default="estimate,reference")
     ap.add_argument("-j", type=int, default=1)
     ap.add_argument("--misses", action="store_true", help="eval, shipped: list the unbounded cells")
+    ap.add_argument("--update", choices=("tangent", "radial"), default="tangent",
+                    help="the level runs' and references' plastic update")
+    ap.add_argument("--presets-update", choices=("", "tangent", "radial", "auto"), default="",
+                    help="the preset runs' plastic update (default: the preset file's own)")
     ap.add_argument("--cache", default=OUT, help="the folder of the cached runs (default $TF_LEVELS or results/levels)")
     a = ap.parse_args()
-    OUT = a.cache
+    OUT, UPDATE, PRESET_UPDATE = a.cache, a.update, a.presets_update
     tubes = a.tubes.split(",")
     if a.what in ("eval", "shipped"):
         return (evaluate if a.what == "eval" else shipped)(tubes, a.misses)
@@ -407,7 +430,7 @@ def main():
         one = lambda j: run_preset(j[0], j[2]) if j[1] == "preset" else run(*j)  # noqa: E731
         with concurrent.futures.ThreadPoolExecutor(a.j) as ex:
             for (t, *r), (m, _) in zip(jobs, ex.map(one, jobs)):
-                tag = f"preset_{r[1]}" if r[0] == "preset" else label(*r)
+                tag = preset_tag(r[1]) if r[0] == "preset" else label(*r)
                 print(f"{t:22s} {tag:24s} {m['status']:8s} {m['wall']:7.1f} s {m['increments']:6d} incr "
                       f"{m['factorizations']:7d} fact", flush=True)
         return
