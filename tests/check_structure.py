@@ -9,6 +9,11 @@ source tree:
   - no function defined in a .cpp file of src/ over 80 lines (the project
     aims at functions under about 80 lines, and the guard is that aim itself:
     a function that grows past it is split into named steps, not let pass);
+  - no option's word is compared as a string literal in src/ or include/
+    (`kind == "stroke"`): a choice is an enum or a named constant beside its
+    registry (kVShape, kStrokeMotion, kCustomMaterial), so that a word is
+    spelled once; a profile file's own tokens (tool/profile.cpp) are allowed.
+    Planted: `name == "custom"` back in material_library.cpp -> FAILED;
   - the code is formatted by .clang-format (clang-format --dry-run --Werror),
     which also bounds lines at 120 columns;
   - the project stands alone: no file of the project's own folders (src,
@@ -187,6 +192,15 @@ k.check(not upward, f"no include runs upward ({len(files)} files)" + "".join("\n
 k.check(not long_files, "no file over 450 lines" + "".join("\n         " + u for u in long_files))
 k.check(not long_functions, f"no function over {MAX_FUNCTION_LINES} lines ({n_functions} functions in src/*.cpp)"
         + "".join("\n         " + u for u in long_functions))
+# Choices are enums or named constants beside their registries (kVShape, kStrokeMotion, kCustomMaterial), not words
+# compared where they are used. Allowed: the tokens of a profile file's own format (tool/profile.cpp).
+WORD_COMPARED = re.compile(r'(==|!=)\s*"[A-Za-z_]+"')
+FILE_TOKENS = {os.path.join("src", "tool", "profile.cpp")}
+compared = [f"{os.path.relpath(f, src)}:{i}: {line.strip()}" for f in sorted(files)
+            if os.path.relpath(f, src) not in FILE_TOKENS
+            for i, line in enumerate(open(f).read().splitlines(), 1) if WORD_COMPARED.search(line)]
+k.check(not compared, "no option's word compared as a string literal in src/ and include/"
+        + "".join("\n         " + c for c in compared))
 tests = os.path.join(src, "tests")
 code = files + [os.path.join(tests, n) for n in os.listdir(tests) if n.endswith((".cpp", ".hpp"))]
 p = subprocess.run(["clang-format", "--dry-run", "--Werror", f"--style=file:{src}/.clang-format"] + code,

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/io/material_library.hpp"
 #include "tubeform/io/options.hpp"
 #include "tubeform/material/factory.hpp"
 #include "tubeform/material/kinematic.hpp"
@@ -93,7 +94,7 @@ std::string ModulusAgainstYield(const MaterialParams &m, const Hardening &curve)
     (!hill            ? ""
      : m.hill.empty() ? ", -material_r"
                       : ", -material_hill") +
-    (m.name == "custom" ? std::string() : ", -material " + m.name);
+    (m.name == kCustomMaterial ? std::string() : ", -material " + m.name);
   // sigma_eq of unit tension along the axes (1 axial, 2 hoop, 3 radial): Hill's sqrt(G + H), ...; von Mises 1.
   std::array<double, 3> unit = {1, 1, 1};
   if (const auto h = HillCoefficients(m))

@@ -134,7 +134,7 @@ std::vector<std::string> LibraryMaterials(const std::string &dir)
 PetscErrorCode LoadMaterial(MPI_Comm comm, const std::string &name, const std::string &dir, MaterialParams &p)
 {
   PetscFunctionBeginUser;
-  if (name == "custom") {
+  if (name == kCustomMaterial) {
     p.name = name;
     PetscFunctionReturn(PETSC_SUCCESS);
   }

@@ -23,7 +23,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   const bool press = PressesWithTools(opt);
   const DieSet &first = FirstDies(opt);
   bool asked = !first.lower.Is(DieFrom::Mirror) || !LowerDieMoves(opt, LowerDieMove::Mirror) ||
-               opt.model.part != TubeModel::Auto || !DieMoves(first, "stroke") || !first.side.Is(DieFrom::None) ||
+               opt.model.part != TubeModel::Auto || !DieMoves(first, kStrokeMotion) || !first.side.Is(DieFrom::None) ||
                first.side_force != 0 || opt.model.die_offset != 0 || opt.model.full_hold != FullHold::Auto;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     const PassSpec &p = LaterPass(opt, pass);

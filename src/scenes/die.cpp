@@ -126,7 +126,7 @@ PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, DieChoice shape, con
   right.name = "side-" + std::string(plate ? "plate" : shape.Is(DieFrom::Mirror) ? tools[0].name : "die");
   MotionSpec in;
   in.direction = {-1.0, 0.0};
-  PetscCall(SetMotion(comm, option, "stroke", in, right));
+  PetscCall(SetMotion(comm, option, kStrokeMotion, in, right));
   tools.push_back(right);
   if (full) {
     Tool left = MirrorX(right);

@@ -43,7 +43,7 @@ PetscErrorCode SetLowerMotion(MPI_Comm comm, const Options &o, Tool &upper, Tool
   PetscCall(SetMotion(comm, "-lower_die_motion", die.kind, die.spec, lower));
   MotionSpec spec;
   spec.direction = LowerMotionOf(o).upper;
-  PetscCall(SetMotion(comm, "-lower_die_motion", "stroke", spec, upper));
+  PetscCall(SetMotion(comm, "-lower_die_motion", kStrokeMotion, spec, upper));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -79,7 +79,7 @@ std::vector<double> PressKinks(const Options &opt, double until)
 PetscErrorCode SetUpperMotion(MPI_Comm comm, const char *option, const DieMotion &die, Tool &upper)
 {
   PetscFunctionBeginUser;
-  if (die.kind != "stroke") { // (the stroke: the lower die's word's, SetLowerMotion)
+  if (die.kind != kStrokeMotion) { // (the stroke: the lower die's word's, SetLowerMotion)
     MotionSpec spec = die.spec;
     spec.direction = upper.Direction(); // (force: along the stroke's)
     PetscCall(SetMotion(comm, option, die.kind, spec, upper));

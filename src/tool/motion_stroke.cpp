@@ -9,7 +9,7 @@ class Stroke : public StraightMotion {
 public:
   using StraightMotion::StraightMotion;
   std::unique_ptr<Motion> Clone() const override { return std::make_unique<Stroke>(*this); }
-  std::string Kind() const override { return "stroke"; }
+  std::string Kind() const override { return kStrokeMotion; }
 };
 } // namespace
 
@@ -17,7 +17,7 @@ std::unique_ptr<Motion> StrokeMotion(const Vec2 &direction) { return std::make_u
 
 const MotionKind &StrokeKind()
 {
-  static const MotionKind kind{"stroke",
+  static const MotionKind kind{kStrokeMotion,
                                {},
                                nullptr,
                                [](const MotionSpec &s, MotionHandle &m) {

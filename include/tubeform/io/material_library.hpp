@@ -21,6 +21,9 @@ std::string MaterialLibraryDir(const std::string &dir);
 // The library's material names (its *.opts files, sorted), "" where it cannot be read.
 std::vector<std::string> LibraryMaterials(const std::string &dir);
 
+// The -material that keeps the built-in values for the user to set (LoadMaterial).
+inline constexpr const char *kCustomMaterial = "custom";
+
 // Fills `p` for -material `name`: "custom" keeps the built-in values for the
 // user to override; a name with a '/' or ending in .opts is a file; any other
 // name is a file of the library. Collective on comm; a one-line error naming

@@ -77,8 +77,10 @@ private:
 // The kinds, one file each.
 // fixed: stays where it is drawn (motion_fixed.cpp).
 std::unique_ptr<Motion> FixedMotion();
-// stroke: moves by the stroke along `direction` per unit stroke (motion_stroke.cpp).
+// stroke: moves by the stroke along `direction` per unit stroke (motion_stroke.cpp); its kind's name, the upper
+// die's motion unless another is chosen.
 std::unique_ptr<Motion> StrokeMotion(const Vec2 &direction);
+inline constexpr const char *kStrokeMotion = "stroke";
 // path: along a path of its own, turning about its frame's origin as the path says (motion_path.cpp: the upper
 // die's -die_motion path; the lower die's -lower_die_motion path is the schedule below).
 std::unique_ptr<Motion> PathMotion(const ToolPath &path);
