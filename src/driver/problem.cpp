@@ -8,6 +8,7 @@
 #include "tubeform/core/signals.hpp"
 #include "tubeform/driver/output_schedule.hpp"
 #include "tubeform/driver/progress.hpp"
+#include "tubeform/material/factory.hpp"
 #include "tubeform/scenes/registry.hpp"
 #include "tubeform/scenes/tool_columns.hpp"
 
@@ -31,11 +32,7 @@ BodyParams MakeBodyParams(const Options &opt)
   b.yield_inside = opt.driver.rmin_yield == RminYield::Inside || opt.driver.equilibrium_tol > 0;
   b.yield_tol = opt.driver.rmin_yield_tol;
   b.drift_correction = opt.driver.drift_correction;
-  // auto: the law's radial return with equilibrium iterations; with the paper's forward increments the tangent update,
-  // which is what K linearizes there (docs/theory.md, section 1, "Radial return").
-  const bool forward = opt.driver.equilibrium_tol == 0;
-  b.plastic_update =
-    opt.driver.plastic_update == PlasticUpdate::Auto && forward ? PlasticUpdate::Tangent : opt.driver.plastic_update;
+  b.plastic_update = UpdateFor(opt.driver.plastic_update, LawOf(opt.material), opt.driver.equilibrium_tol > 0);
   b.state_from_strain = opt.driver.equilibrium_tol > 0;
   b.kinematics = opt.driver.kinematics;
   return b;

@@ -53,8 +53,13 @@ std::unique_ptr<Material> MakeMaterial(const MaterialParams &m, double dep_ref, 
   }
   if (kind == LawKind::Hill)
     return std::make_unique<HillPlasticity>(m.E, m.nu, std::move(h), *HillCoefficients(m), dep_ref, drift_correction);
-  if (update == PlasticUpdate::Auto) update = PlasticUpdate::Radial;
   return std::make_unique<J2Plasticity>(m.E, m.nu, std::move(h), dep_ref, drift_correction, update);
+}
+
+PlasticUpdate UpdateFor(PlasticUpdate asked, LawKind law, bool equilibrium)
+{
+  if (asked != PlasticUpdate::Auto) return asked;
+  return law == LawKind::IsotropicJ2 && equilibrium ? PlasticUpdate::Radial : PlasticUpdate::Tangent;
 }
 
 } // namespace tf

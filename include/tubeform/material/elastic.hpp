@@ -41,8 +41,7 @@ struct UpdateInfo {
 // How a plastic point's stress is integrated over an increment (-plastic_update): the tangent update (the rate form
 // with the start's flow direction, docs/theory.md (T2)), the radial return (isotropic J2 only; backward Euler: the
 // elastic trial projected back onto the yield surface along its own deviator), or auto: the return where the law
-// has it and the increments are in equilibrium, the tangent update elsewhere (resolved by the driver and the
-// material factory).
+// has it and the increments are in equilibrium, the tangent update elsewhere (factory.hpp, UpdateFor).
 enum class PlasticUpdate { Tangent, Radial, Auto };
 inline constexpr const char *kPlasticUpdateWords[] = {"tangent", "radial", "auto"};
 
