@@ -70,11 +70,17 @@ def tube(name):
     return validation.case_options(name), ro, t, stroke
 
 
-# The plastic update of the level runs (--update): the tangent update (the option's default, what the study ran
-# until the presets took the radial return) or the radial return, whose runs are cached under their own names.
+# The plastic update of the level runs and references (--update): the tangent update (the option's default and the
+# presets') or the radial return, whose runs are cached under their own names.
 UPDATE = "tangent"
 # The preset runs' plastic update (--presets-update): "" the preset file's own, else added after it (cached apart).
 PRESET_UPDATE = ""
+
+
+def ladder():
+    """The reference's step levels s: the tangent update's first-order ladder, or the return's (converged in the
+    step at s 1: its s 2 measures that)."""
+    return (1, 2) if UPDATE == "radial" else (1, 2, 4)
 
 
 def preset_tag(preset):
@@ -170,8 +176,7 @@ def plan(name, which):
         return [("preset", p) for p in PRESETS]
     if which == "reference":
         nt = max(4, default_nt)
-        ladder = (1, 2) if UPDATE == "radial" else (1, 2, 4)
-        return [(2 * nt, 48, s, element) for s in ladder] + [(3 * nt, 68, 1, element)]
+        return [(2 * nt, 48, s, element) for s in ladder()] + [(3 * nt, 68, 1, element)]
     raise SystemExit(f"estimate_levels.py: unknown plan {which} (grid, estimate, reference, directions, orders)")
 
 
@@ -192,9 +197,8 @@ def reference(name):
     corrections (per value; the step's: |f(4) - f(2)|, or |f(2) - f(1)|). None until its runs exist."""
     nt = max(4, preset_nt(name, 0.022, 4))
     element = "qm6bar" if preset_nt(name, 0.022, 4) >= 5 else "qm6"
-    ladder = (1, 2) if UPDATE == "radial" else (1, 2, 4)
     got = []
-    for n, d, s in [(2 * nt, 48, s) for s in ladder] + [(3 * nt, 68, 1)]:
+    for n, d, s in [(2 * nt, 48, s) for s in ladder()] + [(3 * nt, 68, 1)]:
         path = os.path.join(OUT, name, label(n, d, s, element))
         if not done(path):
             return None

@@ -17,7 +17,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(
 from tubeform_py import tfruns  # noqa: E402
 
 OUT = os.path.join(tfruns.root, "results", "plastic_update")
-UPDATES = {"tangent": ["-plastic_update", "tangent"], "radial": ["-plastic_update", "radial"], "drift": ["-drift_correction", "1"]}
+UPDATES = {"tangent": ["-plastic_update", "tangent"], "radial": ["-plastic_update", "radial"],
+           "drift": ["-drift_correction", "1"]}
 
 
 def run(case, update, s):
