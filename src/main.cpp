@@ -29,13 +29,26 @@ static const char help[] =
   "tubeform: updated-Lagrangian elasto-plastic FE analysis of tube squaring (plane strain).\n"
   "Usage: mpirun -n 2 build/tubeform -options_file options/<scene>.opts [-option value ...]\n\n";
 
-// A finer level of accuracy on demand (driver/refine.hpp), its options `level`, on comm: the last level's complete
-// results kept as <output stem>.level<k-1>.h5 while it runs into -output (removed once it ends; a stop or failure
-// leaves them), `next` what follows it.
-static PetscErrorCode RunFinerLevel(MPI_Comm comm, const tf::Options &level, const tf::Problem::CompanionRun &companion,
-                                    tf::Refinement &next)
+// The estimate of a level that takes the last one as its mesh companion (tf::Refinement::reuse): no runs.
+static tf::Problem::CompanionRun Reused(MPI_Comm comm, const tf::Refinement &last)
+{
+  return [comm, c = last.companions](const tf::Options &, tf::Companions &out) {
+    PetscFunctionBeginUser;
+    out = c;
+    PetscCall(PetscPrintf(
+      comm, "tubeform: the error estimate from level %d's run and its companions: no companion runs\n", c.level));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  };
+}
+
+// A finer level of accuracy on demand (driver/refine.hpp), `next.next` its options, on comm: the last level's
+// complete results kept as <output stem>.level<k-1>.h5 while it runs into -output (removed once it ends; a stop or
+// failure leaves them); `next` then what follows it.
+static PetscErrorCode RunFinerLevel(MPI_Comm comm, const tf::Problem::CompanionRun &companions, tf::Refinement &next)
 {
   std::string kept, why;
+  const tf::Options level = next.next;
+  const tf::Problem::CompanionRun companion = next.reuse && companions ? Reused(comm, next) : companions;
   PetscFunctionBeginUser;
   if (!level.output.empty()) {
     kept = tf::Formatted("%s.level%d.h5", tf::ResultStem(level.output).c_str(), (int)level.level - 1);
@@ -72,7 +85,7 @@ static PetscErrorCode RunLevels(MPI_Comm comm, const tf::Options &opt, const tf:
   PetscCall(tf::RunOnce(comm, opt, false, companion, nullptr, &next));
   if (after) PetscCall(after(next));
   while (next.follows) {
-    PetscCall(RunFinerLevel(comm, next.next, companion, next));
+    PetscCall(RunFinerLevel(comm, companion, next));
     if (after) PetscCall(after(next));
   }
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -17,7 +17,7 @@ reads another checkout's cache: eval, show and shipped start no run).
 
 --update radial runs the level runs and the references with the radial return (cached apart, `_radial`; its
 reference's step ladder is s 1, 2, the return being converged in the step there); --presets-update radial (or
-tangent, auto) adds that -plastic_update to the preset runs (cached apart, `preset_<preset>_<update>`).
+tangent, auto) adds that -plastic_update to the preset runs and to `demand`'s (cached apart, `preset_<preset>_<update>`).
 
 Plans: `directions` runs each preset level's directional companions at s 1 (half the cells through the wall, twice
 them where half would be under 2; half the cells around), `orders` the third level of each direction (twice the
@@ -390,8 +390,9 @@ def demand(tubes, target):
     print("|---|---|---|---|---|---|---|---|")
     for t in tubes:
         ref = reference(t)
-        m, h5 = cached_run(t, f"demand_{target:g}", ["-options_file", "options/preset-default.opts", "-target_load",
-                                                     str(target)],
+        update = ["-plastic_update", PRESET_UPDATE] if PRESET_UPDATE else []
+        m, h5 = cached_run(t, f"demand_{target:g}" + "".join(f"_{u}" for u in update[1:]),
+                           ["-options_file", "options/preset-default.opts", "-target_load", str(target)] + update,
                            lambda l: "level" in l or "estimated error" in l or "mesh " in l[:16])
         if m["status"] != "done" or ref is None:
             print(f"| {t} | {target:g} | {m['status']} | | | | | |")

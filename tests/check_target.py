@@ -13,7 +13,18 @@ B. -target_levels 1: no second level; the run warns, naming -target_levels, and 
 C. A second level that stops (-rmin_max_increments between the first level's increments and the second's): the
    first level's complete results are kept as <stem>.level1.h5 (its estimate in it, not stopped), the stopped
    level's results so far in -output, exit non-zero. Planted: no copy kept -> FAILED.
+D. A level that keeps the last one's increments takes that level as its estimate's mesh companion (driver/refine.hpp,
+   kReuseRatio): the radial return (converged in the step, so the first level's increments part is small and no
+   increments are refined) with -target_load 0.05 on 2 ranks, the companions beside the run. Level 2 prints that no
+   companion runs, and its estimate at each reported stroke u lies between D(u) = |P1(u) - P2(u)| / P2(u) / (r - 1)
+   (P1 level 1's load, read from a separate run with -target_levels 1; r the ratio of the two levels' cells, from
+   their printed meshes) and D(u) plus level 1's whole estimate there (which holds the increments' part it carries,
+   rescaled by P1 / P2): exact arithmetic on the two histories, 1e-9 for the interpolation's round-off. The 2-rank
+   job's results and estimate are the 1-rank job's (the run on half the ranks: the same run), within 1e-9.
+   -target_load 0.06 makes level 2 1.76 times finer around, not 2, so that the 1 / (r - 1) is seen. Planted: the
+   mesh part's 1 / (r - 1) dropped -> FAILED; no reuse (level 2 runs companions of its own) -> FAILED.
 """
+import re
 import os
 
 import h5py
@@ -90,4 +101,35 @@ k.check(p.returncode != 0 and c.get("stopped") == 0 and "error_load" in c and c.
         stopped.get("stopped") == 1 and stopped.get("accuracy_level") == 2,
         f"C: level 2 stopped (exit {p.returncode}, -rmin_max_increments {first + 20}): level 1's complete results "
         f"kept in {os.path.basename(kept)} ({'present' if c else 'absent'}), level 2's so far in -output")
+# D. Level 2 from level 1: no companion runs, the estimate from the two levels.
+RADIAL = BASE + ["-plastic_update", "radial", "-target_load", 0.06]
+h5 = fresh("target_d1")
+p1 = run(tf, mpirun, 1, RADIAL + ["-target_levels", 1, "-output", h5], check=False)
+l1 = attrs(h5) if p1.returncode == 0 else {}
+got = {}
+for n in (1, 2):
+    h5 = fresh(f"target_d_np{n}")
+    p = run(tf, mpirun, n, RADIAL + ["-output", h5], check=False, timeout=600)
+    meshes = [tuple(map(int, m)) for m in re.findall(r"-mesh_nt (\d+) through the wall x -mesh_ntheta (\d+)", p.stdout)]
+    reused = [l for l in p.stdout.splitlines() if "no companion runs" in l]
+    a = attrs(h5) if p.returncode == 0 else {}
+    k.check(p.returncode == 0 and a.get("accuracy_level") == 2 and len(reused) == 1 and len(meshes) == 2,
+            f"D ({n} rank(s)): level 2 follows and takes level 1 as its estimate's companion ({len(reused)} line(s) "
+            f"'no companion runs', exit {p.returncode}, accuracy_level {a.get('accuracy_level')})")
+    got[n] = (a, meshes)
+a, meshes = got[2]
+if l1 and a and len(meshes) == 2:
+    r = min(meshes[1][0] / meshes[0][0], meshes[1][1] / meshes[0][1])
+    for value, error in [(f"load_at_{u}", f"error_load_at_{u}") for u in (1, 2, 3)] + [("loaded_load",
+                                                                                        "error_loaded_load")]:
+        p1_, p2_, e1, e2 = l1[value], a[value], l1[error], a[error]
+        d = abs(p1_ - p2_) / abs(p2_) / (r - 1)
+        lo, hi = d - 1e-9, d + e1 * abs(p1_ / p2_) + 1e-9
+        k.check(lo <= e2 <= hi, f"D: level 2's {error} {100 * e2:.4f} % within level 1's difference {100 * d:.4f} % "
+                f"and that plus level 1's estimate, {100 * hi:.4f} % (cells {r:g} times as large)")
+if got[1][0] and a:
+    keys = [x for x in a if x.startswith("error_") or x in ("loaded_load", "loaded_c_over_t")]
+    off = max(abs(got[1][0][x] - a[x]) / max(abs(a[x]), 1e-12) for x in keys)
+    k.check(off <= 1e-9, f"D: 1 and 2 ranks (the companions beside) give the same level 2 and estimate "
+            f"(largest relative difference {off:.2g} over {len(keys)} values)")
 k.done()

@@ -81,25 +81,47 @@ PassAnswer SummarizePass(const std::vector<HistoryRow> &rows, bool tool, int p)
 // Strokes this close (mm) are one: the companions end where the run ends, up to round-off.
 constexpr double kStrokeMatch = 1e-9;
 
-// The estimate of a value from the run's and the companions' (kStepShare), its parts apart; relative to `scale`.
-ErrorParts Estimate(double run, double mesh, double steps, double scale = 1)
+// The companions' values of one quantity at one stroke: the mesh companion's, the steps companion's and the one
+// that companion's difference is taken against.
+struct CompanionValues {
+  double mesh = 0, steps = 0, base = 0;
+};
+
+// The estimate of a value from the run's and the companions' (kStepShare, Companions), its parts apart; relative
+// to `scale`.
+ErrorParts Estimate(double run, const CompanionValues &v, double mesh_ratio, double scale = 1)
 {
-  return {kMeshShare * std::abs(mesh - run) / scale, kStepShare * std::abs(steps - mesh) / scale};
+  return {kMeshShare * std::abs(v.mesh - run) / (mesh_ratio - 1) / scale,
+          kStepShare * std::abs(v.steps - v.base) / scale};
 }
+
+// The stage's rows of each companion (the mesh's: the run's own with a mesh file).
+struct StageRows {
+  std::vector<const HistoryRow *> mesh, steps, base;
+  StageRows(const std::vector<HistoryRow> &rows, const Companions &c, double stage)
+  {
+    const std::vector<HistoryRow> &m = c.mesh.empty() ? rows : c.mesh;
+    mesh = Stage(m, stage), steps = Stage(c.steps, stage), base = Stage(c.steps_base.empty() ? m : c.steps_base, stage);
+  }
+  bool Empty() const { return mesh.empty() || steps.empty() || base.empty(); }
+  // The stroke to which every companion reached.
+  double Reach() const { return std::min({mesh.back()->stroke, steps.back()->stroke, base.back()->stroke}); }
+  CompanionValues At(double HistoryRow::*f, double u) const
+  {
+    return {tf::At(mesh, f, u), tf::At(steps, f, u), tf::At(base, f, u)};
+  }
+};
 
 // The pass's estimate from the companions' same pass (none when a companion did not reach it).
 void EstimatePass(PassAnswer &a, const std::vector<HistoryRow> &rows, const Companions &c, bool tool, int p)
 {
-  const std::vector<HistoryRow> &mesh = c.mesh.empty() ? rows : c.mesh;
-  const auto coarse = Stage(mesh, 2 * p), stepped = Stage(c.steps, 2 * p);
-  if (coarse.empty() || stepped.empty() || a.strokes.empty()) return;
+  const StageRows at(rows, c, 2 * p);
+  if (at.Empty() || a.strokes.empty()) return;
   a.estimated = true;
   for (size_t k = 0; k < a.strokes.size(); ++k) {
     const double u = a.strokes[k], load = a.loads[k];
-    a.load_parts.push_back(Estimate(load, At(coarse, &HistoryRow::load, u), At(stepped, &HistoryRow::load, u),
-                                    std::max(std::abs(load), kTiny)));
-    a.ct_parts.push_back(
-      Estimate(a.c_over_t[k], At(coarse, &HistoryRow::c_over_t, u), At(stepped, &HistoryRow::c_over_t, u)));
+    a.load_parts.push_back(Estimate(load, at.At(&HistoryRow::load, u), c.mesh_ratio, std::max(std::abs(load), kTiny)));
+    a.ct_parts.push_back(Estimate(a.c_over_t[k], at.At(&HistoryRow::c_over_t, u), c.mesh_ratio));
     a.load_error.push_back(a.load_parts.back().Total());
     a.ct_error.push_back(a.ct_parts.back().Total());
   }
@@ -107,7 +129,9 @@ void EstimatePass(PassAnswer &a, const std::vector<HistoryRow> &rows, const Comp
     return (tool ? LastUpTo(h, 2 * p + 1) : h.back()).c_over_t;
   };
   if (a.springback) {
-    a.ct_unloaded_parts = Estimate(a.unloaded.c_over_t, end(mesh), end(c.steps));
+    const std::vector<HistoryRow> &mesh = c.mesh.empty() ? rows : c.mesh;
+    const CompanionValues v{end(mesh), end(c.steps), end(c.steps_base.empty() ? mesh : c.steps_base)};
+    a.ct_unloaded_parts = Estimate(a.unloaded.c_over_t, v, c.mesh_ratio);
     a.ct_unloaded_error = a.ct_unloaded_parts.Total();
   }
 }
@@ -118,6 +142,7 @@ Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const Companion
 {
   Answer a;
   a.tool = tool;
+  if (companions) a.estimate_level = companions->level, a.estimate_ratio = companions->mesh_ratio;
   if (rows.empty()) return a;
   int passes = 1; // (a tool scene's pass k presses in stage 2k: the passes the history reached)
   for (const HistoryRow &r : rows) passes = tool ? std::max(passes, (int)(r.stage / 2) + 1) : 1;
@@ -183,10 +208,9 @@ std::vector<std::pair<std::string, double>> AnswerAttributes(const Answer &a)
 std::vector<std::pair<std::string, std::vector<double>>> ErrorColumns(const std::vector<HistoryRow> &rows,
                                                                       const Companions &c, const Answer &a)
 {
-  const std::vector<HistoryRow> &mesh = c.mesh.empty() ? rows : c.mesh;
   std::vector<double> load(rows.size(), kNoEstimate), ct(rows.size(), kNoEstimate);
   double stage = -1; // the companions' rows of the stage of the rows at hand
-  std::vector<const HistoryRow *> coarse, stepped;
+  StageRows at(rows, c, stage);
   for (size_t k = 0; k < rows.size(); ++k) {
     const HistoryRow &r = rows[k];
     const size_t p = (size_t)(r.stage / 2);
@@ -197,16 +221,11 @@ std::vector<std::pair<std::string, std::vector<double>>> ErrorColumns(const std:
       }
       continue;
     }
-    if (r.stage != stage) stage = r.stage, coarse = Stage(mesh, stage), stepped = Stage(c.steps, stage);
-    if (coarse.empty() || stepped.empty() ||
-        r.stroke > std::min(coarse.back()->stroke, stepped.back()->stroke) + kStrokeMatch)
-      continue; // (past where a companion reached)
-    load[k] = Estimate(r.load, At(coarse, &HistoryRow::load, r.stroke), At(stepped, &HistoryRow::load, r.stroke),
-                       std::max(std::abs(r.load), kTiny))
-                .Total();
-    ct[k] =
-      Estimate(r.c_over_t, At(coarse, &HistoryRow::c_over_t, r.stroke), At(stepped, &HistoryRow::c_over_t, r.stroke))
-        .Total();
+    if (r.stage != stage) stage = r.stage, at = StageRows(rows, c, stage);
+    if (at.Empty() || r.stroke > at.Reach() + kStrokeMatch) continue; // (past where a companion reached)
+    load[k] =
+      Estimate(r.load, at.At(&HistoryRow::load, r.stroke), c.mesh_ratio, std::max(std::abs(r.load), kTiny)).Total();
+    ct[k] = Estimate(r.c_over_t, at.At(&HistoryRow::c_over_t, r.stroke), c.mesh_ratio).Total();
   }
   return {{"error_load", load}, {"error_c_over_t", ct}};
 }

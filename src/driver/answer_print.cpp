@@ -96,9 +96,13 @@ PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, bool finer_follows, c
   PetscFunctionBeginUser;
   for (size_t p = 0; p < a.passes.size(); ++p) PetscCall(PrintPass(comm, a, p));
   if (!a.estimated) PetscFunctionReturn(PETSC_SUCCESS);
-  std::string line = a.mesh_covered ? "estimated error (the mesh's part and the increments' from two companion runs): "
-                                    : "estimated error of the increments alone (the mesh is -mesh_file's, whose "
-                                      "error this run does not estimate): ";
+  std::string line =
+    !a.mesh_covered        ? "estimated error of the increments alone (the mesh is -mesh_file's, whose error this run "
+                             "does not estimate): "
+    : a.estimate_level > 0 ? Formatted("estimated error (the mesh's part from level %d, its cells %.2g times as large, "
+                                       "the increments' from its companions): ",
+                                       a.estimate_level, a.estimate_ratio)
+                           : "estimated error (the mesh's part and the increments' from two companion runs): ";
   for (size_t p = 0; p < a.passes.size(); ++p) {
     const PassAnswer &s = a.passes[p];
     line += p == 0 ? "" : "; " + PassOrdinal((int)p) + " pass: ";

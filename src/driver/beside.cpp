@@ -18,7 +18,7 @@ constexpr int kTagCompanions = 1, kTagLevel = 2;
 // What follows a level, as the companions need it (plain data); or the run's error, which the companions' ranks
 // then end with too (the job's error is one, said once).
 struct LevelStep {
-  int follows = 0;
+  int follows = 0, reuse = 0; // (reuse: the level's estimate is the run's own, Refinement::reuse)
   LevelChange change;
   PetscErrorCode run_failed = 0;
   char why[PETSC_MAX_PATH_LEN] = "";
@@ -89,16 +89,16 @@ PetscErrorCode Serve(MPI_Comm half, MPI_Comm link, int run_root, Options level)
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(half, &rank));
-  for (;;) {
+  for (bool reuse = false;;) {
     Outcome o;
-    PetscCall(LevelCompanions(half, level, o));
+    if (!reuse) PetscCall(LevelCompanions(half, level, o));
     if (rank == 0) PetscCall(Send(link, run_root, o));
     LevelStep step;
     if (rank == 0) PetscCallMPI(MPI_Recv(&step, sizeof(step), MPI_BYTE, run_root, kTagLevel, link, MPI_STATUS_IGNORE));
     PetscCallMPI(MPI_Bcast(&step, sizeof(step), MPI_BYTE, 0, half));
     PetscCheck(!step.run_failed, half, step.run_failed, "%s", step.why);
     if (!step.follows) break;
-    level = step.change.Applied(level);
+    level = step.change.Applied(level), reuse = step.reuse;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -131,7 +131,7 @@ struct RunSide {
   {
     PetscFunctionBeginUser;
     LevelStep step;
-    step.follows = r.follows, step.change = r.change;
+    step.follows = r.follows, step.reuse = r.reuse, step.change = r.change;
     if (run_failed) {
       step.run_failed = run_failed;
       PetscCall(PetscStrncpy(step.why, ErrorText(run_failed).c_str(), sizeof(step.why)));

@@ -34,6 +34,16 @@ void TakePassStarts(const std::vector<std::pair<std::string, double>> &scene_met
       if (name == Formatted("pass%d_start_stroke", (int)p + 1)) a.passes[p].start = value;
 }
 
+// The next level's companions (Refinement::reuse): this level's run as its mesh companion, at `ratio` times its cell
+// size, and this level's increments' part (its steps companion, against the rows that part was taken against).
+Companions ForNextLevel(const std::vector<HistoryRow> &rows, const Companions &c, double ratio, int level)
+{
+  Companions next;
+  next.mesh = rows, next.mesh_ratio = ratio, next.level = level;
+  next.steps = c.steps, next.steps_base = c.steps_base.empty() ? c.mesh : c.steps_base;
+  return next;
+}
+
 } // namespace
 
 PetscErrorCode Problem::PlaceResults(ResultWriter &writer, const std::vector<std::pair<std::string, double>> &metrics,
@@ -120,6 +130,8 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     double seconds[2] = {MPI_Wtime() - started_, MPI_Wtime() - opt_.job_started}; // (rank 0's: one decision)
     PetscCallMPI(MPI_Bcast(seconds, 2, MPI_DOUBLE, 0, comm_));
     refinement_ = NextLevel(opt_, answer, seconds[0], seconds[1]);
+    if (refinement_.follows && refinement_.reuse)
+      refinement_.companions = ForNextLevel(history_.rows(), companions, refinement_.reuse_ratio, (int)opt_.level);
     PetscCall(PrintAnswer(comm_, answer, refinement_.follows, refinement_.why));
     PetscCall(PrintReleases(comm_, releases, all_points));
     PetscCall(PetscPrintf(comm_,

@@ -89,6 +89,8 @@ struct Answer {
   ErrorParts worst_load, worst_ct;       // the largest's parts
   double target_load = 0, target_ct = 0; // the accuracy held to (0: none)
   bool demanded = false;                 // by -target_load or -target_c_over_t, not the preset's expectation
+  int estimate_level = 0;                // the level whose run is the estimate's mesh companion (0: companion runs)
+  double estimate_ratio = 2;             // that companion's cell size over the run's (Companions::mesh_ratio)
   // The estimate passes a target (with a mesh file, whose error it does not cover, it is held to none).
   bool Over() const
   {
@@ -98,9 +100,15 @@ struct Answer {
   }
 };
 
-// The estimate's two companions' histories (see kStepShare); `mesh` empty when the run's mesh is kept (a mesh file).
+// The estimate's companions' histories (see kStepShare); `mesh` empty when the run's mesh is kept (a mesh file).
+// The mesh's part is |mesh - run| / (mesh_ratio - 1), Richardson at first order for `mesh`'s cells mesh_ratio
+// times the run's in size; the increments' part |steps - steps_base| (steps_base empty: `mesh`). A finer level of
+// accuracy on demand that keeps the last level's increments takes that level as its `mesh` and the last level's
+// increments' part as its own (driver/refine.hpp, Refinement::reuse): no companion runs.
 struct Companions {
-  std::vector<HistoryRow> mesh, steps;
+  std::vector<HistoryRow> mesh, steps, steps_base;
+  double mesh_ratio = 2;
+  int level = 0; // the level whose run is `mesh` (0: companion runs)
   bool Ran() const { return !steps.empty(); }
 };
 

@@ -24,6 +24,12 @@ constexpr double kTargetAim = 0.7;
 // mesh, and each level costs about 8 x the last.
 constexpr double kMaxRatio = 2.0;
 
+// A finer level that keeps the last level's increments and whose cells are at least this ratio finer takes the
+// last level as its estimate's mesh companion (Companions::mesh_ratio): Richardson's 1 / (r - 1) then multiplies the
+// difference's noise (the two meshes' contact phases) at most 2 times; a level refined less, or in its increments
+// too, runs companions of its own.
+constexpr double kReuseRatio = 1.5;
+
 // What a finer level changes in the options of the last (plain data: it also travels to the ranks of the
 // estimate's companions, driver/beside.hpp).
 struct LevelChange {
@@ -40,6 +46,11 @@ struct Refinement {
   double step_ratio = 1; // the increment limits' divisor
   LevelChange change;    // the next level's (follows)
   Options next;          // its options: change.Applied(the last level's)
+  // The next level's estimate from this level (kReuseRatio) at the cells' ratio reuse_ratio, and this level's
+  // increments' part; `companions` as the next level takes them (filled once this level's estimate is made).
+  bool reuse = false;
+  double reuse_ratio = 1;
+  Companions companions;
 };
 
 // What comes after a level that ended with `a` (its estimate, targets and parts), which took `level_seconds`,
