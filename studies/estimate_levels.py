@@ -391,7 +391,7 @@ def demand(tubes, target):
     for t in tubes:
         ref = reference(t)
         update = ["-plastic_update", PRESET_UPDATE] if PRESET_UPDATE else []
-        m, h5 = cached_run(t, f"demand_{target:g}" + "".join(f"_{u}" for u in update[1:]),
+        m, h5 = cached_run(t, f"demand_{target:g}" + (f"_{PRESET_UPDATE}" if PRESET_UPDATE else ""),
                            ["-options_file", "options/preset-default.opts", "-target_load", str(target)] + update,
                            lambda l: "level" in l or "estimated error" in l or "mesh " in l[:16])
         if m["status"] != "done" or ref is None:

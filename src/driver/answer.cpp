@@ -100,8 +100,7 @@ struct StageRows {
   std::vector<const HistoryRow *> mesh, steps, base;
   StageRows(const std::vector<HistoryRow> &rows, const Companions &c, double stage)
   {
-    const std::vector<HistoryRow> &m = c.mesh.empty() ? rows : c.mesh;
-    mesh = Stage(m, stage), steps = Stage(c.steps, stage), base = Stage(c.steps_base.empty() ? m : c.steps_base, stage);
+    mesh = Stage(c.MeshRows(rows), stage), steps = Stage(c.steps, stage), base = Stage(c.BaseRows(rows), stage);
   }
   bool Empty() const { return mesh.empty() || steps.empty() || base.empty(); }
   // The stroke to which every companion reached.
@@ -129,8 +128,7 @@ void EstimatePass(PassAnswer &a, const std::vector<HistoryRow> &rows, const Comp
     return (tool ? LastUpTo(h, 2 * p + 1) : h.back()).c_over_t;
   };
   if (a.springback) {
-    const std::vector<HistoryRow> &mesh = c.mesh.empty() ? rows : c.mesh;
-    const CompanionValues v{end(mesh), end(c.steps), end(c.steps_base.empty() ? mesh : c.steps_base)};
+    const CompanionValues v{end(c.MeshRows(rows)), end(c.steps), end(c.BaseRows(rows))};
     a.ct_unloaded_parts = Estimate(a.unloaded.c_over_t, v, c.mesh_ratio);
     a.ct_unloaded_error = a.ct_unloaded_parts.Total();
   }

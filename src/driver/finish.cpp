@@ -40,7 +40,7 @@ Companions ForNextLevel(const std::vector<HistoryRow> &rows, const Companions &c
 {
   Companions next;
   next.mesh = rows, next.mesh_ratio = ratio, next.level = level;
-  next.steps = c.steps, next.steps_base = c.steps_base.empty() ? c.mesh : c.steps_base;
+  next.steps = c.steps, next.steps_base = c.BaseRows(rows);
   return next;
 }
 
@@ -131,7 +131,8 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     PetscCallMPI(MPI_Bcast(seconds, 2, MPI_DOUBLE, 0, comm_));
     refinement_ = NextLevel(opt_, answer, seconds[0], seconds[1]);
     if (refinement_.follows && refinement_.reuse)
-      refinement_.companions = ForNextLevel(history_.rows(), companions, refinement_.reuse_ratio, (int)opt_.level);
+      refinement_.companions =
+        ForNextLevel(history_.rows(), companions, CellRatio(opt_, refinement_.next), (int)opt_.level);
     PetscCall(PrintAnswer(comm_, answer, refinement_.follows, refinement_.why));
     PetscCall(PrintReleases(comm_, releases, all_points));
     PetscCall(PetscPrintf(comm_,

@@ -33,6 +33,11 @@ PetscInt Scaled(PetscInt n, double r, PetscInt multiple)
 
 } // namespace
 
+double CellRatio(const Options &last, const Options &next)
+{
+  return std::min((double)next.mesh_nt / last.mesh_nt, (double)next.mesh_ntheta / last.mesh_ntheta);
+}
+
 Options LevelChange::Applied(const Options &last) const
 {
   Options n = last;
@@ -82,8 +87,7 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
   r.next = c.Applied(level);
   const Options &n = r.next;
   r.follows = true;
-  r.reuse_ratio = std::min((double)n.mesh_nt / level.mesh_nt, (double)n.mesh_ntheta / level.mesh_ntheta);
-  r.reuse = r.step_ratio == 1 && r.reuse_ratio >= kReuseRatio;
+  r.reuse = r.step_ratio == 1 && CellRatio(level, n) >= kReuseRatio;
   r.why =
     Formatted("level %d follows: %d x %d cells, %d trial increments, increment limits / %.2g (about %.0f s)",
               (int)n.level, (int)n.mesh_nt, (int)n.mesh_ntheta, (int)n.driver.increments, r.step_ratio, predicted);

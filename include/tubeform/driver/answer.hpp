@@ -110,6 +110,16 @@ struct Companions {
   double mesh_ratio = 2;
   int level = 0; // the level whose run is `mesh` (0: companion runs)
   bool Ran() const { return !steps.empty(); }
+  // The rows the mesh's part is taken against (the run's own, `run`, with a mesh file), and those the increments'
+  // part is.
+  const std::vector<HistoryRow> &MeshRows(const std::vector<HistoryRow> &run) const
+  {
+    return mesh.empty() ? run : mesh;
+  }
+  const std::vector<HistoryRow> &BaseRows(const std::vector<HistoryRow> &run) const
+  {
+    return steps_base.empty() ? MeshRows(run) : steps_base;
+  }
 };
 
 // The answer of a history (companions: the estimate's, or null).

@@ -46,12 +46,14 @@ struct Refinement {
   double step_ratio = 1; // the increment limits' divisor
   LevelChange change;    // the next level's (follows)
   Options next;          // its options: change.Applied(the last level's)
-  // The next level's estimate from this level (kReuseRatio) at the cells' ratio reuse_ratio, and this level's
-  // increments' part; `companions` as the next level takes them (filled once this level's estimate is made).
+  // The next level's estimate from this level (kReuseRatio) and this level's increments' part; `companions` as the
+  // next level takes them (filled once this level's estimate is made).
   bool reuse = false;
-  double reuse_ratio = 1;
   Companions companions;
 };
+
+// The ratio of a level's cell size to a finer level's: the smaller of the two directions' (through the wall, around).
+double CellRatio(const Options &last, const Options &next);
 
 // What comes after a level that ended with `a` (its estimate, targets and parts), which took `level_seconds`,
 // `job_seconds` since the job started.
