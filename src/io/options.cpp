@@ -5,10 +5,9 @@
 
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/friction_options.hpp"
+#include "tubeform/io/loading_options.hpp"
 #include "tubeform/io/material_library.hpp"
 #include "tubeform/io/option_reader.hpp"
-#include "tubeform/io/press_options.hpp"
-#include "tubeform/io/tool_options.hpp"
 
 namespace tf {
 
@@ -147,13 +146,11 @@ PetscErrorCode ReadMaterial(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Inside the loading block: the loads, the tools and their friction, the release.
+// Inside the loading block: the stroke and the release.
 PetscErrorCode ReadLoads(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(ReadStrokeOptions(PetscOptionsObject, read, opt.stroke));   // (stroke_options.cpp)
-  PetscCall(ReadModelOptions(PetscOptionsObject, read, opt.model));     // (model_options.cpp)
-  PetscCall(ReadToolOptions(PetscOptionsObject, read, opt));            // (tool_options.cpp)
   PetscCall(ReadReleaseOptions(PetscOptionsObject, read, opt.release)); // (release_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -198,12 +195,12 @@ PetscErrorCode ReadOutput(PetscOptionItems *PetscOptionsObject, OptionReader &re
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The loading (the tools' scenes' stroke, model, passes and release) and the output: a group each in -help.
+// The loading (the stroke and the release) and the output: a group each in -help.
 PetscErrorCode ReadLoading(MPI_Comm comm, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
   {
-    TF_OPTIONS_BEGIN(comm, "tubeform: loading (stroke, model, passes, springback)");
+    TF_OPTIONS_BEGIN(comm, "tubeform: loading (stroke, springback)");
     PetscCall(ReadLoads(PetscOptionsObject, read, opt));
     TF_OPTIONS_END();
   }
@@ -244,34 +241,30 @@ PetscErrorCode ReadSceneOptions(MPI_Comm comm, const std::vector<SceneOptions> &
 
 } // namespace
 
-PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups,
-                           const std::vector<SceneOptions> &scenes, Options &opt)
+PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups, const SceneOptionReaders &scenes,
+                           Options &opt)
 {
   OptionReader read; // every option's name, for the check of unknown ones
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasHelp(nullptr, &opt.help));
-  PetscCall(ReadScene(comm, scenes, read, opt));
+  PetscCall(ReadScene(comm, scenes.scenes, read, opt));
   PetscCall(ReadMaterial(comm, read, opt));
   for (const OptionGroup &group : groups) PetscCall(ReadGroup(comm, group, read, opt));
   PetscCall(ReadLoading(comm, read, opt));
   PetscCall(ReadFrictionOptions(comm, read, opt)); // (friction_options.cpp)
-  PetscCall(ReadSceneOptions(comm, scenes, read, opt));
-  PetscCall(ReadLowerDieShape(comm, read, opt));  // (die_shape_options.cpp)
-  PetscCall(ReadLowerDieMotion(comm, read, opt)); // (die_motion_options.cpp)
-  PetscCall(ReadUpperDieShape(comm, read, opt));  // (die_shape_options.cpp)
-  PetscCall(ReadUpperDieMotion(comm, read, opt));
-  PetscCall(ReadSideDieShape(comm, read, opt));
-  PetscCall(ReadPassMotions(comm, read, opt)); // (die_motion_options.cpp)
+  PetscCall(ReadSceneOptions(comm, scenes.scenes, read, opt));
+  if (scenes.tools.read) PetscCall(scenes.tools.read(comm, read, opt)); // (for every scene: a stray one is refused)
 
   opt.known = read.known();
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
   if (!opt.allow_unused) PetscCall(read.CheckUnknown(comm));
 
-  PetscCall(CheckOptions(comm, opt));
+  PetscCall(CheckOptions(comm, scenes.tools, opt));
   for (const OptionGroup &group : groups)
     if (group.check) PetscCall(group.check(comm, opt));
-  for (const SceneOptions &s : scenes) // (every scene's, given or not: a value out of range is refused all the same)
+  for (const SceneOptions &s :
+       scenes.scenes) // (every scene's, given or not: a value out of range is refused all the same)
     if (s.check) PetscCall(s.check(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

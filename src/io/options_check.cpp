@@ -2,11 +2,9 @@
 // problem, naming the option and the range it allows.
 #include "tubeform/core/core.hpp"
 #include "tubeform/io/friction_options.hpp"
-#include "tubeform/io/motion_checks.hpp"
+#include "tubeform/io/loading_options.hpp"
 #include "tubeform/io/option_reader.hpp"
 #include "tubeform/io/options.hpp"
-#include "tubeform/io/press_options.hpp"
-#include "tubeform/io/tool_options.hpp"
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -15,71 +13,6 @@
 namespace tf {
 
 namespace {
-
-// The dies: which dies, forces and side dies go together.
-PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
-{
-  PetscFunctionBeginUser;
-  const bool press = PressesWithTools(opt);
-  const DieSet &first = FirstDies(opt);
-  bool asked = !first.lower.Is(DieFrom::Mirror) || !LowerDieMoves(opt, LowerDieMove::Mirror) ||
-               opt.model.part != TubeModel::Auto || !DieMoves(first, kStrokeMotion) || !first.side.Is(DieFrom::None) ||
-               first.side_force != 0 || opt.model.die_offset != 0 || opt.model.full_hold != FullHold::Auto;
-  for (int pass = 1; pass < kMaxPasses; ++pass) {
-    const PassSpec &p = LaterPass(opt, pass);
-    asked = asked || p.stroke != 0 || p.turn != 0 || !p.dies.upper.kind.empty() || p.dies.lower.Given() ||
-            p.dies.side.Given();
-  }
-  PetscCheck(
-    press || !asked, comm, PETSC_ERR_USER_INPUT,
-    "-lower_die, -lower_die_motion, -model, -pass<N>_*, -die_motion, -die_force, -die_offset, -die_path, -side_die, "
-    "-side_force, -full_hold: "
-    "the %s scene presses with no dies (these are the squaring and flattening scenes' options)",
-    opt.scene.c_str());
-  PetscCall(CheckUpperMotion(comm, opt, 0));     // (its motion kind's check; a later pass's with its stroke)
-  PetscCall(CheckPassStrokesAndDies(comm, opt)); // (passes_check.cpp)
-  PetscCall(CheckSideDieOptions(comm, opt));     // (die_shape_options.cpp)
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// -die_motion path (checked by the path motion's check, motion_check_path.cpp): the stroke U where the path ends.
-void SetDiePathStroke(Options &opt) { opt.stroke.u = -0.5 * FirstDies(opt).motion.spec.points.back()[1]; }
-
-// A lower die on a motion of its own (neither mirror nor fixed: a path, or another kind; its options are its
-// kind's own reader's, tool/motion.hpp): one pass, the stroke rising.
-PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
-{
-  PetscFunctionBeginUser;
-  const bool own = LowerDieMoves(opt, LowerDieMove::Own);
-  PetscCheck(!own || (opt.stroke.path.empty() && opt.release.unload != Unload::Withdraw && PassCount(opt) == 1 &&
-                      opt.stroke.corner_radius <= 0),
-             comm, PETSC_ERR_USER_INPUT,
-             "-lower_die_motion %s: the lower die follows its motion as the stroke rises, in one pass: not with "
-             "-stroke_path, -unload withdraw, -pass2_stroke or -stroke_corner_radius",
-             opt.lower_motion.word.c_str());
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// The later passes' turns, the model (a die off the axis, the rotation hold) and the release.
-PetscErrorCode CheckPassesAndHolds(MPI_Comm comm, Options &opt)
-{
-  PetscFunctionBeginUser;
-  PetscCall(CheckPassTurns(comm, opt));      // (passes_check.cpp)
-  PetscCall(CheckModelOptions(comm, opt));   // (model_options.cpp)
-  PetscCall(CheckReleaseOptions(comm, opt)); // (release_options.cpp)
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// The lower die, the model and the second pass (the tool scenes').
-PetscErrorCode CheckDiesAndPasses(MPI_Comm comm, Options &opt)
-{
-  PetscFunctionBeginUser;
-  PetscCall(CheckDies(comm, opt));
-  if (FirstDies(opt).motion.OwnPath()) SetDiePathStroke(opt);
-  PetscCall(CheckLowerDieMotion(comm, opt));
-  PetscCall(CheckPassesAndHolds(comm, opt));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
 
 // The tube, its mesh and element (the counts a preset leaves at 0 derived here).
 PetscErrorCode CheckTubeAndMesh(MPI_Comm comm, Options &opt)
@@ -112,15 +45,14 @@ PetscErrorCode CheckTubeAndMesh(MPI_Comm comm, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The material, the tools and passes, the loads.
-PetscErrorCode CheckLoads(MPI_Comm comm, Options &opt)
+// The material, the tool scenes' options (`tools`), the loads.
+PetscErrorCode CheckLoads(MPI_Comm comm, const ToolSceneReaders &tools, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckMaterial(comm, opt.material));
-  PetscCall(CheckDiesAndPasses(comm, opt));
-  PetscCall(CheckShape(comm, kVShape, "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
-  PetscCall(CheckFrictionOptions(comm, opt.friction));                   // (friction_options.cpp)
-  PetscCall(CheckStrokeOptions(comm, opt));                              // (stroke_options.cpp; after -die_path's)
+  if (tools.check) PetscCall(tools.check(comm, opt));  // (the tool scenes': the dies, passes, model and release)
+  PetscCall(CheckFrictionOptions(comm, opt.friction)); // (friction_options.cpp)
+  PetscCall(CheckStrokeOptions(comm, opt));            // (stroke_options.cpp; after -die_path's)
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -158,11 +90,11 @@ PetscErrorCode CheckOutputAndStops(MPI_Comm comm, Options &opt)
 
 } // namespace
 
-PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt)
+PetscErrorCode CheckOptions(MPI_Comm comm, const ToolSceneReaders &tools, Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckTubeAndMesh(comm, opt));
-  PetscCall(CheckLoads(comm, opt));
+  PetscCall(CheckLoads(comm, tools, opt));
   PetscCall(CheckOutputAndStops(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

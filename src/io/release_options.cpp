@@ -1,6 +1,6 @@
 // The release's options: read into Options::release (in the loading block of -help, where they always were) and
 // checked, one line naming the option: how the press lets the tube go and the springback's law.
-#include "tubeform/io/press_options.hpp"
+#include "tubeform/io/loading_options.hpp"
 
 namespace tf {
 

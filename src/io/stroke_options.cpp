@@ -3,7 +3,7 @@
 // rule is for.
 #include <cmath>
 
-#include "tubeform/io/press_options.hpp"
+#include "tubeform/io/loading_options.hpp"
 
 namespace tf {
 

@@ -1,7 +1,7 @@
 // The press's dies' motions from the options, made by the motion registry (tool/motion.hpp): the lower die's of
-// -lower_die_motion (its kind and options read by the kind, io/die_motion_options.cpp), with the upper die's stroke
-// that goes with it; the upper die's own motion (its path or its force: the first pass's -die_motion, UpperDie, and
-// a later pass's alike, DiesOfPass); the side dies' force control (-side_force).
+// -lower_die_motion (its kind and options read by the kind, scenes/options/die_motion_options.cpp), with the upper
+// die's stroke that goes with it; the upper die's own motion (its path or its force: the first pass's -die_motion,
+// UpperDie, and a later pass's alike, DiesOfPass); the side dies' force control (-side_force).
 #include "tubeform/scenes/die.hpp"
 
 #include <iterator>
@@ -10,9 +10,9 @@ namespace tf {
 
 namespace {
 // How a lower die's motion goes with the upper die's (LowerDieMove; its kind and options: LowerDie, read by the kind,
-// io/die_motion_options.cpp): the upper die's motion that goes with it (U: half the dies' closing either way), and
-// whether the dies close as the closed forms of their reach say (CheckDieReach). A motion of its own: the upper die
-// travels U, the lower one moves as its motion says.
+// scenes/options/die_motion_options.cpp): the upper die's motion that goes with it (U: half the dies' closing either
+// way), and whether the dies close as the closed forms of their reach say (CheckDieReach). A motion of its own: the
+// upper die travels U, the lower one moves as its motion says.
 struct LowerMotion {
   Vec2 upper;
   bool closing;

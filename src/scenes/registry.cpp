@@ -1,6 +1,7 @@
 #include "tubeform/scenes/registry.hpp"
 
 #include "tubeform/io/option_reader.hpp"
+#include "tubeform/scenes/tool_options.hpp"
 
 #include <cctype>
 #include <sstream>
@@ -71,11 +72,12 @@ std::vector<std::string> SceneNames()
   return names;
 }
 
-std::vector<SceneOptions> SceneReaders()
+SceneOptionReaders SceneReaders()
 {
-  std::vector<SceneOptions> scenes;
-  for (const auto &s : SceneRegistry()) scenes.push_back({s.name, s.press, s.read, s.check});
-  return scenes;
+  SceneOptionReaders readers;
+  for (const auto &s : SceneRegistry()) readers.scenes.push_back({s.name, s.press, s.read, s.check});
+  readers.tools = {ReadToolSceneOptions, CheckToolSceneOptions};
+  return readers;
 }
 
 namespace {

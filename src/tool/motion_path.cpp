@@ -7,8 +7,8 @@
 // Two kinds answer to a user's "path": this one, a path in space that may turn (the upper die's), and the schedule
 // (motion_schedule.cpp), distances along the tool's direction at given strokes (the lower die's -lower_die_motion
 // path, -lower_die_path U,y,...). The registry names each kind once by what it is; each tool lists the words it
-// takes and the kind each names (io/die_motion_options.cpp), so "path" stays the user's word on both dies and
-// neither kind reads the other's numbers.
+// takes and the kind each names (scenes/options/die_motion_options.cpp), so "path" stays the user's word on both dies
+// and neither kind reads the other's numbers.
 #include <cmath>
 
 #include "tubeform/tool/motion.hpp"

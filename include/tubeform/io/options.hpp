@@ -116,19 +116,26 @@ struct OptionGroup {
   PetscErrorCode (*check)(MPI_Comm comm, const Options &opt) = nullptr;
 };
 
+// The reader and checker of the tool scenes' options (squaring, flattening: the model, the passes, the dies), the
+// scenes layer's (scenes/tool_options.hpp): read for every scene, each block its own in -help; the check also
+// settles what they derive (a -die_path's end is the stroke) before the loading's checks read it.
+struct ToolSceneReaders {
+  PetscErrorCode (*read)(MPI_Comm comm, OptionReader &read, Options &opt) = nullptr;
+  PetscErrorCode (*check)(MPI_Comm comm, Options &opt) = nullptr;
+};
+// What the scene registry hands ReadOptions: the scenes -scene accepts with their own options, and the tool scenes'.
+struct SceneOptionReaders {
+  std::vector<SceneOptions> scenes;
+  ToolSceneReaders tools;
+};
+
 // Collective: reads and validates the options; `groups` the driver's own (each its group in -help, in turn), `scenes`
-// the scenes -scene accepts, with their own options. Errors are PETSC_ERR_USER_INPUT with a message naming the option
-// and what is allowed.
-PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups,
-                           const std::vector<SceneOptions> &scenes, Options &opt);
-// Collective: refuses values out of range (called by ReadOptions).
-PetscErrorCode CheckOptions(MPI_Comm comm, Options &opt);
-// Collective: refuses a later pass's stroke, dies (called by CheckOptions, passes_check.cpp) and turns out of
-// range or that do not go together with the others' options.
-PetscErrorCode CheckPassStrokesAndDies(MPI_Comm comm, const Options &opt);
-PetscErrorCode CheckPassTurns(MPI_Comm comm, const Options &opt);
-// Collective: side dies (`name`: -side_die, -pass<N>_side_die; none or a shape) go with the other options.
-PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side);
+// the scenes -scene accepts, with their own options, and the tool scenes'. Errors are PETSC_ERR_USER_INPUT with a
+// message naming the option and what is allowed.
+PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups, const SceneOptionReaders &scenes,
+                           Options &opt);
+// Collective: refuses values out of range (called by ReadOptions; `tools` the tool scenes' check, in its turn).
+PetscErrorCode CheckOptions(MPI_Comm comm, const ToolSceneReaders &tools, Options &opt);
 // The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
 std::string PassOption(int pass, const char *what);
 // Collective: refuses material constants out of range or not in MPa (called by CheckOptions).

@@ -35,8 +35,8 @@ constexpr int kMaxPasses = 9;
 
 // The upper die's motion (-die_motion; docs/dies.md): the name of a kind of the motion registry (tool/motion.hpp)
 // that offers the upper die a word (MotionKind::upper_word: stroke, path, force), and what its options (-die_path,
-// -die_path_turn, -die_pivot; -die_force) give it, read by the kind (io/die_motion_options.cpp). The scenes read it
-// through UpperDie.
+// -die_path_turn, -die_pivot; -die_force) give it, read by the kind (scenes/options/die_motion_options.cpp). The scenes
+// read it through UpperDie.
 struct DieMotion {
   std::string kind = "stroke"; // stroke: down by the stroke U (2 U over a fixed lower die)
   MotionSpec spec;             // path: its points, turns, pivot; force: its punch load (N/mm)
@@ -61,9 +61,9 @@ inline LowerDieMove LowerDieMoveOf(const std::string &word)
 }
 
 // The lower die's motion (-lower_die_motion; docs/dies.md): its word (mirror, fixed, path, or a kind registered after
-// the built-in ones: io/die_motion_options.cpp), how it goes with the upper die's (LowerDieMoveOf the word), the kind
-// of the motion registry that word names (mirror: a stroke), and what its options (-lower_die_*) give it, read by the
-// kind. The scenes read it through LowerDie.
+// the built-in ones: scenes/options/die_motion_options.cpp), how it goes with the upper die's (LowerDieMoveOf the
+// word), the kind of the motion registry that word names (mirror: a stroke), and what its options (-lower_die_*) give
+// it, read by the kind. The scenes read it through LowerDie.
 struct LowerDieSpec {
   std::string word = WordOf(kLowerDieMoveWords, LowerDieMove::Mirror);
   LowerDieMove move = LowerDieMove::Mirror;
@@ -81,7 +81,7 @@ inline ShapeSpec PaperVDie()
 // The upper die's shape (docs/dies.md): a kind of the shape registry (tool/shape.hpp), the V-die unless -die_profile
 // names a file (then profile, or dxf for *.dxf: DrawingKind), and its spec: the V-die's numbers, read and checked
 // by the V kind under the prefix die_ (-die_angle, -die_r_apex, -die_u_close, -die_r_edge; read with a file too), and
-// the file (io/die_shape_options.cpp). The scenes read it through UpperDieShape.
+// the file (scenes/options/die_shape_options.cpp). The scenes read it through UpperDieShape.
 struct DieShape {
   std::string kind = kVShape;
   ShapeSpec spec = PaperVDie(); // (ro: the tube's, set by UpperDieShape)

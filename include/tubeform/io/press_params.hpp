@@ -1,8 +1,9 @@
 // The press's own parameters as the options give them, one struct per group (docs/dies.md): how far it presses (the
 // stroke; also the column's end shortening), how it is released (also the bending scene's springback) and the part of
 // the tube it models, with the full model's support. Options holds
-// one of each (so that they travel with the run's options to its levels and companions); io reads and checks each in
-// its own file (io/press_options.hpp), and the scenes take them from there.
+// one of each (so that they travel with the run's options to its levels and companions); io reads and checks the stroke
+// and the release (io/loading_options.hpp), the tool scenes the model (scenes/tool_options.hpp); the scenes take them
+// from there.
 #pragma once
 
 #include <petscsys.h>

@@ -24,8 +24,9 @@ struct SceneEntry {
 
 const std::vector<SceneEntry> &SceneRegistry();
 std::vector<std::string> SceneNames();
-// The scenes with the readers and checkers of their own options, for ReadOptions.
-std::vector<SceneOptions> SceneReaders();
+// The scenes with the readers and checkers of their own options, and the tool scenes' (scenes/tool_options.hpp),
+// for ReadOptions.
+SceneOptionReaders SceneReaders();
 // "" or why the option named `option` (with its dash) is not for the scene `scene`: the scenes whose `reads` list
 // it, where `scene`'s does not.
 std::string ForeignOption(const std::string &scene, const std::string &option);

@@ -1,13 +1,13 @@
-// The dies' motions, each die's in its own options block under its prefix (include/tubeform/io/tool_options.hpp):
+// The dies' motions, each die's in its own options block under its prefix (include/tubeform/scenes/tool_options.hpp):
 // -<prefix>motion names a kind of the motion registry (tool/motion.hpp) by one of the die's words, and the kind
 // reads its own options, -<prefix>*, refusing what it cannot move by; an option of another of the die's words'
 // kinds given is refused, naming it. The lower die: -lower_die_motion (mirror, fixed, path: the schedule, and the
 // kinds registered after the built-in ones); the upper die: -die_motion (stroke, path, force: each its kind's own
-// name). Combinations with the scene's other options are each kind's check (io/motion_checks.hpp) and the scene's.
+// name). Combinations with the scene's other options are each kind's check (scenes/motion_checks.hpp) and the scene's.
 #include <algorithm>
 #include <iterator>
 
-#include "tubeform/io/tool_options.hpp"
+#include "tubeform/scenes/tool_options.hpp"
 
 namespace tf {
 

@@ -1,5 +1,6 @@
-// The tool scenes' options (squaring, flattening): the dies and the passes (the stroke, the model of the tube and the
-// release: io/press_options.hpp).
+// The tool scenes' own options (squaring, flattening): the model of the tube, the passes, each die's shape and
+// motion, read and checked here in the scenes layer (src/scenes/options/) and handed to io's ReadOptions by the scene
+// registry (ToolSceneOptions). The stroke and the release are the loading's: io/loading_options.hpp.
 #pragma once
 
 #include <petscsys.h>
@@ -9,6 +10,25 @@
 
 namespace tf {
 
+// The tool scenes' options, read for every scene (given to a scene without tools, they are refused by name): the
+// model and the later passes in their block of -help, then each die's shape and motion in its own block
+// (press_options.cpp). The registry hands these two to ReadOptions (SceneReaders).
+PetscErrorCode ReadToolSceneOptions(MPI_Comm comm, OptionReader &read, Options &opt);
+// Collective: refuses what the dies, the passes, the model and the release cannot take together, in one line naming
+// the option, and settles what they derive (a -die_path's end is the stroke U) before the loading's checks read it.
+PetscErrorCode CheckToolSceneOptions(MPI_Comm comm, Options &opt);
+// -model, -die_offset, -full_hold into opt.model (model_options.cpp).
+PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ModelParams &m);
+// Collective: refuses a model the dies cannot take (the quarter without mirrored dies, a die off the axis without the
+// full model), the die's offset out of range and a support the model or the forces cannot take (after the passes'
+// turns).
+PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt);
+// Collective: refuses a later pass's stroke, dies and turns out of range or that do not go together with the others'
+// options (passes_check.cpp).
+PetscErrorCode CheckPassStrokesAndDies(MPI_Comm comm, const Options &opt);
+PetscErrorCode CheckPassTurns(MPI_Comm comm, const Options &opt);
+// Collective: side dies (`name`: -side_die, -pass<N>_side_die; none or a shape) go with the other options.
+PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side);
 // The passes after the first (-pass<N>_*), between PetscOptionsBegin and PetscOptionsEnd (it needs their
 // PetscOptionsObject).
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt);

@@ -1,8 +1,8 @@
 // What an upper die's motion cannot do with the other options (docs/dies.md): each kind of the motion registry
-// (tool/motion.hpp) that refuses combinations has its check in its own file (src/io/motion_check_*.cpp: it needs the
-// options, which the tool layer cannot see), named by the kind's name in the checks' registry
-// (src/io/motion_checks.cpp). The options' checks ask the registry for each pass's kind (CheckUpperMotion); a kind
-// with no entry refuses nothing here. Its own numbers are its reader's (tool/motion_*.cpp).
+// (tool/motion.hpp) that refuses combinations has its check in its own file (src/scenes/options/motion_check_*.cpp: it
+// needs the options, which the tool layer cannot see), named by the kind's name in the checks' registry
+// (src/scenes/options/motion_checks.cpp). The options' checks ask the registry for each pass's kind (CheckUpperMotion);
+// a kind with no entry refuses nothing here. Its own numbers are its reader's (tool/motion_*.cpp).
 #pragma once
 
 #include <petscsys.h>

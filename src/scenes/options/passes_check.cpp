@@ -3,19 +3,10 @@
 #include <cmath>
 
 #include "tubeform/core/core.hpp"
-#include "tubeform/io/motion_checks.hpp"
 #include "tubeform/io/options.hpp"
+#include "tubeform/scenes/motion_checks.hpp"
 
 namespace tf {
-
-// The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
-std::string PassOption(int pass, const char *what) { return Formatted("-pass%d_%s", pass + 1, what); }
-
-std::string PassExtent::Option() const
-{
-  const char *what = Forced() ? "die_force" : "stroke";
-  return pass == 0 ? std::string("-") + what : PassOption(pass, what);
-}
 
 // Side dies (`name`: -side_die, -pass<N>_side_die): none, or with what side dies press with.
 PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side)

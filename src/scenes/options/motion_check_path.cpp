@@ -1,13 +1,13 @@
-// The path motion's check (io/motion_checks.hpp): an upper die on a path of its own (-die_motion path, -die_path;
+// The path motion's check (scenes/motion_checks.hpp): an upper die on a path of its own (-die_motion path, -die_path;
 // -pass<N>_die_motion path, -pass<N>_die_path; its points, turns and pivot checked by the path kind's reader,
-// tool/motion_path.cpp; a later pass's stroke set where its path ends, io/die_motion_options.cpp): the squaring
-// scene's upper die, within a quarter turn, ending below its start, over a lower die that stays. The first pass's in
-// place of -stroke and -stroke_path, in one pass, with no side dies, withdrawal or -die_offset (its U where its path
-// ends: options_check.cpp); a later pass's with no side dies pressing by the stroke in any pass and, off its press's
-// axis (sideways or turned), held by the rotation hold in the full model (the first pass's: model_options.cpp).
+// tool/motion_path.cpp; a later pass's stroke set where its path ends, scenes/options/die_motion_options.cpp): the
+// squaring scene's upper die, within a quarter turn, ending below its start, over a lower die that stays. The first
+// pass's in place of -stroke and -stroke_path, in one pass, with no side dies, withdrawal or -die_offset (its U where
+// its path ends: options_check.cpp); a later pass's with no side dies pressing by the stroke in any pass and, off its
+// press's axis (sideways or turned), held by the rotation hold in the full model (the first pass's: model_options.cpp).
 #include <cmath>
 
-#include "tubeform/io/motion_checks.hpp"
+#include "tubeform/scenes/motion_checks.hpp"
 
 namespace tf {
 

@@ -1,4 +1,4 @@
-// The upper die's shape, its own options block under its prefix die_ (include/tubeform/io/tool_options.hpp): the
+// The upper die's shape, its own options block under its prefix die_ (include/tubeform/scenes/tool_options.hpp): the
 // V-die of the shape registry (tool/shape.hpp) unless -die_profile names a file, a drawing of the registry's kind
 // for the file's name (DrawingKind; its text read when the die is drawn). The V kind reads its own options,
 // -die_angle, -die_r_apex, -die_u_close, -die_r_edge, with a file too (a scene file's V-die stays allowed under a
@@ -8,7 +8,7 @@
 // its name); these kinds read no options. The scenes place and size them (scenes/die.cpp).
 #include <cmath>
 
-#include "tubeform/io/tool_options.hpp"
+#include "tubeform/scenes/tool_options.hpp"
 
 namespace tf {
 
@@ -45,29 +45,6 @@ PetscErrorCode ReadDrawingChoice(PetscOptionItems *PetscOptionsObject, OptionRea
   PetscCall(read.String(PetscOptionsObject, option, help, file));
   if (file != shape.spec.file) shape.kind = DrawingChoice(file).kind, shape.spec.file = file;
   PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-DieChoice DrawingChoice(const std::string &file)
-{
-  DieChoice shape(file.empty() ? DieFrom::Unset : DieFrom::Drawing);
-  if (!file.empty()) shape.kind = DrawingKind(file);
-  shape.spec.file = file;
-  return shape;
-}
-
-DieChoice ShapeChoice(const std::string &word, bool none)
-{
-  DieChoice shape(EnumOfWord(kDieFromWords, word, DieFrom::Drawing));
-  if (shape.Is(DieFrom::None) && !none) shape.from = DieFrom::Drawing; // (a lower die's none: a file so named)
-  if (shape.Is(DieFrom::Plate)) shape.kind = kFlatShape;               // (the flat kind draws it)
-  if (shape.Is(DieFrom::Drawing)) shape.kind = DrawingKind(word), shape.spec.file = word;
-  return shape;
-}
-
-std::string ShapeWord(const DieChoice &shape)
-{
-  if (shape.Is(DieFrom::Drawing)) return shape.spec.file;
-  return shape.Given() ? WordOf(kDieFromWords, shape.from) : "";
 }
 
 PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt)

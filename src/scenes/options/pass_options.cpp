@@ -1,5 +1,5 @@
-// The later passes' options (include/tubeform/io/tool_options.hpp); checked in passes_check.cpp.
-#include "tubeform/io/tool_options.hpp"
+// The later passes' options (include/tubeform/scenes/tool_options.hpp); checked in passes_check.cpp.
+#include "tubeform/scenes/tool_options.hpp"
 
 namespace tf {
 

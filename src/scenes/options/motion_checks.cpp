@@ -1,7 +1,7 @@
-// The registry of the upper die's motion checks (io/motion_checks.hpp): each kind's name and its check, defined in
+// The registry of the upper die's motion checks (scenes/motion_checks.hpp): each kind's name and its check, defined in
 // the kind's own file. A new motion that refuses combinations is its check's file (motion_check_*.cpp) and a line
 // here, beside its kind's file and line in the motion registry (src/tool/motion_registry.cpp).
-#include "tubeform/io/motion_checks.hpp"
+#include "tubeform/scenes/motion_checks.hpp"
 
 namespace tf {
 

@@ -1,12 +1,12 @@
-// The model's options: read into Options::model (in the loading block of -help, where they always were) and checked,
+// The model's options: read into Options::model (in the block "tube model and passes" of -help) and checked,
 // one line naming the option: the part of the tube modelled, the first pass's die off the axis (which only the full
-// model takes), and how the full model is held. The model they and the passes' tools choose (ModelOf), which the
-// checks and the scenes' set-up read alike.
+// model takes), and how the full model is held (the model they and the passes' tools choose: ModelOf,
+// io/model_choice.cpp).
 #include <cmath>
 #include <cstdio>
 #include <string>
 
-#include "tubeform/io/press_options.hpp"
+#include "tubeform/scenes/tool_options.hpp"
 
 namespace tf {
 
@@ -31,52 +31,6 @@ PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionRead
                "another angle; else pins)",
                kFullHoldWords, m.full_hold));
   PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-bool ModelChoice::Mirrored() const
-{
-  bool mirrored = true;
-  for (const PassSymmetry &p : passes) mirrored = mirrored && p.mirrored;
-  return mirrored;
-}
-
-bool ModelChoice::QuarterExact() const
-{
-  bool exact = Mirrored();
-  for (const PassSymmetry &p : passes) exact = exact && !p.off_axis && p.quarter_turn;
-  return exact;
-}
-
-bool ModelChoice::HalfExact() const
-{
-  bool exact = true;
-  for (const PassSymmetry &p : passes) exact = exact && !p.off_axis && p.quarter_turn && p.quarters % 2 == 0;
-  return exact;
-}
-
-bool ModelChoice::HeldByRotation(int pass) const
-{
-  const PassSymmetry &p = passes[pass];
-  bool off_axis = p.off_axis || !p.quarter_turn;
-  for (int before = 0; before < pass; ++before)
-    off_axis = off_axis || ((p.quarters - passes[before].quarters) % 2 != 0 && !passes[before].mirrored);
-  return part == TubeModel::Full && (hold == FullHold::Rotation || (hold == FullHold::Auto && off_axis));
-}
-
-ModelChoice ModelOf(const Options &opt)
-{
-  ModelChoice model;
-  model.passes.resize(kMaxPasses);
-  for (int pass = 0; pass < kMaxPasses; ++pass) {
-    PassSymmetry &p = model.passes[pass];
-    p.mirrored = DiesOfPass(opt, pass).lower.Is(DieFrom::Mirror) && LowerDieMoves(opt, LowerDieMove::Mirror);
-    p.off_axis = OffAxisBy(opt, pass);
-    p.quarters = PassQuarters(opt, pass), p.quarter_turn = QuarterTurn(opt, pass);
-  }
-  model.part = opt.model.part, model.hold = opt.model.full_hold;
-  if (model.part == TubeModel::Auto)
-    model.part = model.QuarterExact() ? TubeModel::Quarter : model.HalfExact() ? TubeModel::Half : TubeModel::Full;
-  return model;
 }
 
 PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)

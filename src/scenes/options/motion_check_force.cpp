@@ -1,9 +1,9 @@
-// The force motion's check (io/motion_checks.hpp): a pass pressed with a force (-die_motion force, -die_force;
+// The force motion's check (scenes/motion_checks.hpp): a pass pressed with a force (-die_motion force, -die_force;
 // -pass<N>_die_motion force, -pass<N>_die_force; PassExtent::Forced; the force itself checked by the force kind's
 // reader, tool/motion_force.cpp) goes with the other options: a press scene's die, a lower die that stays in the half
 // and full models, the last pass, not withdrawn, in place of the pass's stroke; the first pass's not with
 // -stroke_corner_radius.
-#include "tubeform/io/motion_checks.hpp"
+#include "tubeform/scenes/motion_checks.hpp"
 
 namespace tf {
 

@@ -1,0 +1,26 @@
+// The loading's own options (io/press_params.hpp), read by every scene that loads by a stroke (the tool scenes, the
+// column) or releases (the tool scenes, the bending): each reader lists its options in -help inside the loading
+// block (between PetscOptionsBegin and PetscOptionsEnd, whose PetscOptionsObject it takes), each checker refuses a
+// bad value or a combination its options cannot take, in one line naming the option. The tool scenes' own options
+// (the model, the passes, the dies) are theirs: scenes/tool_options.hpp.
+#pragma once
+
+#include <petscsys.h>
+
+#include "tubeform/io/option_reader.hpp"
+#include "tubeform/io/options.hpp"
+
+namespace tf {
+
+// -stroke, -stroke_corner_radius, -stroke_path into opt.stroke (stroke_options.cpp).
+PetscErrorCode ReadStrokeOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, StrokeParams &s);
+// Collective: refuses the stroke's values and the dies the corner-radius rule is not for; a -stroke_path sets the
+// final stroke (after the tool scenes' checks: a -die_path sets it too, CheckOptions).
+PetscErrorCode CheckStrokeOptions(MPI_Comm comm, Options &opt);
+// -unload, -springback into opt.release (release_options.cpp).
+PetscErrorCode ReadReleaseOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ReleaseParams &r);
+// Collective: refuses a release the model cannot take (called by the tool scenes' check after their dies' and
+// passes' checks).
+PetscErrorCode CheckReleaseOptions(MPI_Comm comm, const Options &opt);
+
+} // namespace tf

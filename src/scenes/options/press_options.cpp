@@ -1,0 +1,99 @@
+// The tool scenes' options as one (include/tubeform/scenes/tool_options.hpp): read in their blocks of -help (the
+// model and the later passes, then each die's shape and motion under its own prefix) and checked in turn: which dies,
+// forces and side dies go together, a -die_path's stroke, the lower die's own motion, the passes' turns, the model
+// and the release, the V-die's numbers. Read and checked for every scene, so that a tool scene's option given to a
+// scene without tools is refused by name.
+#include "tubeform/io/loading_options.hpp"
+#include "tubeform/scenes/motion_checks.hpp"
+#include "tubeform/scenes/tool_options.hpp"
+
+namespace tf {
+
+namespace {
+
+// The dies: which dies, forces and side dies go together.
+PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
+{
+  PetscFunctionBeginUser;
+  const bool press = PressesWithTools(opt);
+  const DieSet &first = FirstDies(opt);
+  bool asked = !first.lower.Is(DieFrom::Mirror) || !LowerDieMoves(opt, LowerDieMove::Mirror) ||
+               opt.model.part != TubeModel::Auto || !DieMoves(first, kStrokeMotion) || !first.side.Is(DieFrom::None) ||
+               first.side_force != 0 || opt.model.die_offset != 0 || opt.model.full_hold != FullHold::Auto;
+  for (int pass = 1; pass < kMaxPasses; ++pass) {
+    const PassSpec &p = LaterPass(opt, pass);
+    asked = asked || p.stroke != 0 || p.turn != 0 || !p.dies.upper.kind.empty() || p.dies.lower.Given() ||
+            p.dies.side.Given();
+  }
+  PetscCheck(
+    press || !asked, comm, PETSC_ERR_USER_INPUT,
+    "-lower_die, -lower_die_motion, -model, -pass<N>_*, -die_motion, -die_force, -die_offset, -die_path, -side_die, "
+    "-side_force, -full_hold: "
+    "the %s scene presses with no dies (these are the squaring and flattening scenes' options)",
+    opt.scene.c_str());
+  PetscCall(CheckUpperMotion(comm, opt, 0));     // (its motion kind's check; a later pass's with its stroke)
+  PetscCall(CheckPassStrokesAndDies(comm, opt)); // (passes_check.cpp)
+  PetscCall(CheckSideDieOptions(comm, opt));     // (die_shape_options.cpp)
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// -die_motion path (checked by the path motion's check, motion_check_path.cpp): the stroke U where the path ends.
+void SetDiePathStroke(Options &opt) { opt.stroke.u = -0.5 * FirstDies(opt).motion.spec.points.back()[1]; }
+
+// A lower die on a motion of its own (neither mirror nor fixed: a path, or another kind; its options are its
+// kind's own reader's, tool/motion.hpp): one pass, the stroke rising.
+PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
+{
+  PetscFunctionBeginUser;
+  const bool own = LowerDieMoves(opt, LowerDieMove::Own);
+  PetscCheck(!own || (opt.stroke.path.empty() && opt.release.unload != Unload::Withdraw && PassCount(opt) == 1 &&
+                      opt.stroke.corner_radius <= 0),
+             comm, PETSC_ERR_USER_INPUT,
+             "-lower_die_motion %s: the lower die follows its motion as the stroke rises, in one pass: not with "
+             "-stroke_path, -unload withdraw, -pass2_stroke or -stroke_corner_radius",
+             opt.lower_motion.word.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The later passes' turns, the model (a die off the axis, the rotation hold) and the release.
+PetscErrorCode CheckPassesAndHolds(MPI_Comm comm, Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckPassTurns(comm, opt));      // (passes_check.cpp)
+  PetscCall(CheckModelOptions(comm, opt));   // (model_options.cpp)
+  PetscCall(CheckReleaseOptions(comm, opt)); // (release_options.cpp)
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace
+
+PetscErrorCode ReadToolSceneOptions(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  {
+    TF_OPTIONS_BEGIN(comm, "tubeform: tube model and passes");
+    PetscCall(ReadModelOptions(PetscOptionsObject, read, opt.model)); // (model_options.cpp)
+    PetscCall(ReadToolOptions(PetscOptionsObject, read, opt));        // (pass_options.cpp)
+    TF_OPTIONS_END();
+  }
+  PetscCall(ReadLowerDieShape(comm, read, opt));  // (die_shape_options.cpp)
+  PetscCall(ReadLowerDieMotion(comm, read, opt)); // (die_motion_options.cpp)
+  PetscCall(ReadUpperDieShape(comm, read, opt));  // (die_shape_options.cpp)
+  PetscCall(ReadUpperDieMotion(comm, read, opt));
+  PetscCall(ReadSideDieShape(comm, read, opt));
+  PetscCall(ReadPassMotions(comm, read, opt)); // (die_motion_options.cpp)
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckToolSceneOptions(MPI_Comm comm, Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckDies(comm, opt));
+  if (FirstDies(opt).motion.OwnPath()) SetDiePathStroke(opt);
+  PetscCall(CheckLowerDieMotion(comm, opt));
+  PetscCall(CheckPassesAndHolds(comm, opt));
+  PetscCall(CheckShape(comm, kVShape, "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+} // namespace tf
