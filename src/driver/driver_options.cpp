@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "tubeform/core/core.hpp"
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
 #include "tubeform/material/factory.hpp"
 #include "tubeform/step/rmin.hpp"
 

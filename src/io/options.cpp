@@ -3,11 +3,11 @@
 #include <cmath>
 #include <fstream>
 
+#include "tubeform/contact/friction_options.hpp"
 #include "tubeform/core/core.hpp"
-#include "tubeform/io/friction_options.hpp"
+#include "tubeform/core/option_reader.hpp"
 #include "tubeform/io/loading_options.hpp"
-#include "tubeform/io/material_library.hpp"
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/material/material_options.hpp"
 
 namespace tf {
 
@@ -83,65 +83,6 @@ PetscErrorCode ReadScene(MPI_Comm comm, const std::vector<SceneOptions> &scenes,
              "With -element auto: qm6bar from this many cells through the wall on, qm6 below (docs/accuracy.md, "
              "\"The element through the wall\")",
              opt.element_bar_nt));
-  TF_OPTIONS_END();
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// The material: named or its constants, its law and hardening.
-PetscErrorCode ReadMaterial(MPI_Comm comm, OptionReader &read, Options &opt)
-{
-  PetscFunctionBeginUser;
-  TF_OPTIONS_BEGIN(comm, "tubeform: material");
-  {
-    std::string dir, name = opt.material.name;
-    PetscCall(read.String(PetscOptionsObject, "-material_library",
-                          "Folder of the named materials (default: the source tree's options/materials)", dir));
-    dir = MaterialLibraryDir(dir);
-    std::string help = "Material: a name from the library (";
-    for (const auto &m : LibraryMaterials(dir)) help += m + ", ";
-    help += "docs/options.md \"Materials\"), a material file (path.opts), or custom (-material_e, ... given)";
-    PetscCall(read.String(PetscOptionsObject, "-material", help.c_str(), name));
-    PetscCall(LoadMaterial(comm, name, dir, opt.material));
-  }
-  PetscCall(read.Real(PetscOptionsObject, "-material_e", "Young's modulus E (MPa)", opt.material.E));
-  PetscCall(read.Real(PetscOptionsObject, "-material_nu", "Poisson's ratio", opt.material.nu));
-  PetscCall(read.Real(PetscOptionsObject, "-material_sy", "Initial yield stress (MPa)", opt.material.sy));
-  PetscCall(read.Real(PetscOptionsObject, "-material_k", "Hardening coefficient K (MPa)", opt.material.K));
-  PetscCall(read.Real(PetscOptionsObject, "-material_n", "Hardening exponent n", opt.material.n));
-  PetscCall(read.Real(PetscOptionsObject, "-material_density",
-                      "Mass density (t/mm^3; aluminum 2.70e-9), used by -dynamics implicit", opt.material.density));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-material_law",
-                       "Flow curve: elastic (no yield), ludwik sy+K ep^n, swift K(ep0+ep)^n, table", kFlowLawWords,
-                       opt.material.law));
-  PetscCall(RealList(PetscOptionsObject, read, "-material_table",
-                     "Flow curve for -material_law table: ep0,sy0,ep1,sy1,... (ep0 = 0, ep increasing)",
-                     kMaxTableNumbers, opt.material.table));
-  PetscCall(RealList(PetscOptionsObject, read, "-material_kinematic",
-                     "Backstresses for -hardening chaboche: C1,gamma1[,C2,gamma2[,C3,gamma3]] (MPa, -; gamma 0: "
-                     "linear); their share of the flow curve moves to the kinematic part",
-                     2 * kMaxBackstresses, opt.material.kinematic));
-  PetscCall(RealList(PetscOptionsObject, read, "-material_r",
-                     "Hill 1948 yield from the Lankford coefficients r0,r45,r90 (0: along the tube, 90: across; r45 "
-                     "does not act in plane strain); 1,1,1: von Mises",
-                     3, opt.material.lankford));
-  PetscCall(RealList(PetscOptionsObject, read, "-material_hill",
-                     "Hill 1948 yield from F,G,H,L in the tube's axes (1 axial, 2 hoop, 3 radial; von Mises: "
-                     "0.5,0.5,0.5,1.5)",
-                     4, opt.material.hill));
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-material_axes",
-                       "The material's radial axis for -material_r/-material_hill: tube (from the tube's centre to "
-                       "the point, turning with the material) or fixed (at -material_axes_angle)",
-                       kMaterialAxesWords, opt.material.axes));
-  {
-    double degrees = opt.material.axes_angle * 180 / M_PI;
-    PetscCall(read.Real(PetscOptionsObject, "-material_axes_angle",
-                        "With -material_axes fixed: the radial axis's angle from x (degrees)", degrees));
-    opt.material.axes_angle = degrees * M_PI / 180;
-  }
-  PetscCall(ChooseWord(PetscOptionsObject, read, "-hardening",
-                       "isotropic (the flow curve expands the yield surface), or chaboche (the backstresses of "
-                       "-material_kinematic move it; the same monotonic flow curve)",
-                       kHardeningWords, opt.material.hardening));
   TF_OPTIONS_END();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -224,17 +165,31 @@ PetscErrorCode ReadGroup(MPI_Comm comm, const OptionGroup &group, OptionReader &
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Each scene's own options, read by the scene (one group in -help per scene that has any).
+// Each scene's own options, read by the scene into `own` (one group in -help per scene that has any).
 PetscErrorCode ReadSceneOptions(MPI_Comm comm, const std::vector<SceneOptions> &scenes, OptionReader &read,
-                                Options &opt)
+                                std::vector<std::any> &own)
 {
   PetscFunctionBeginUser;
-  for (const SceneOptions &s : scenes) {
-    if (!s.read) continue;
-    const std::string title = "tubeform: " + s.name + " scene";
+  own.assign(scenes.size(), std::any());
+  for (size_t k = 0; k < scenes.size(); ++k) {
+    if (!scenes[k].read) continue;
+    const std::string title = "tubeform: " + scenes[k].name + " scene";
     TF_OPTIONS_BEGIN(comm, title.c_str());
-    PetscCall(s.read(PetscOptionsObject, read, opt));
+    PetscCall(scenes[k].read(PetscOptionsObject, read, own[k]));
     TF_OPTIONS_END();
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Every scene's own options checked (given or not: a value out of range is refused all the same); the chosen scene's
+// kept in opt.scene_params.
+PetscErrorCode CheckSceneOptions(MPI_Comm comm, const std::vector<SceneOptions> &scenes,
+                                 const std::vector<std::any> &own, Options &opt)
+{
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < scenes.size(); ++k) {
+    if (scenes[k].check) PetscCall(scenes[k].check(comm, own[k]));
+    if (scenes[k].name == opt.scene) opt.scene_params = own[k];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -244,16 +199,17 @@ PetscErrorCode ReadSceneOptions(MPI_Comm comm, const std::vector<SceneOptions> &
 PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups, const SceneOptionReaders &scenes,
                            Options &opt)
 {
-  OptionReader read; // every option's name, for the check of unknown ones
+  OptionReader read;         // every option's name, for the check of unknown ones
+  std::vector<std::any> own; // each scene's own parameters
 
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasHelp(nullptr, &opt.help));
   PetscCall(ReadScene(comm, scenes.scenes, read, opt));
-  PetscCall(ReadMaterial(comm, read, opt));
+  PetscCall(ReadMaterialOptions(comm, read, opt.material)); // (material/material_options.cpp)
   for (const OptionGroup &group : groups) PetscCall(ReadGroup(comm, group, read, opt));
   PetscCall(ReadLoading(comm, read, opt));
-  PetscCall(ReadFrictionOptions(comm, read, opt)); // (friction_options.cpp)
-  PetscCall(ReadSceneOptions(comm, scenes.scenes, read, opt));
+  PetscCall(ReadFrictionOptions(comm, read, opt.friction)); // (contact/friction_options.cpp)
+  PetscCall(ReadSceneOptions(comm, scenes.scenes, read, own));
   if (scenes.tools.read) PetscCall(scenes.tools.read(comm, read, opt)); // (for every scene: a stray one is refused)
 
   opt.known = read.known();
@@ -263,9 +219,7 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups
   PetscCall(CheckOptions(comm, scenes.tools, opt));
   for (const OptionGroup &group : groups)
     if (group.check) PetscCall(group.check(comm, opt));
-  for (const SceneOptions &s :
-       scenes.scenes) // (every scene's, given or not: a value out of range is refused all the same)
-    if (s.check) PetscCall(s.check(comm, opt));
+  PetscCall(CheckSceneOptions(comm, scenes.scenes, own, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,10 +1,11 @@
 // The validation of the options ReadOptions has read: one message per
 // problem, naming the option and the range it allows.
+#include "tubeform/contact/friction_options.hpp"
 #include "tubeform/core/core.hpp"
-#include "tubeform/io/friction_options.hpp"
+#include "tubeform/core/option_reader.hpp"
 #include "tubeform/io/loading_options.hpp"
-#include "tubeform/io/option_reader.hpp"
 #include "tubeform/io/options.hpp"
+#include "tubeform/material/material_options.hpp"
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -51,7 +52,7 @@ PetscErrorCode CheckLoads(MPI_Comm comm, const ToolSceneReaders &tools, Options 
   PetscFunctionBeginUser;
   PetscCall(CheckMaterial(comm, opt.material));
   if (tools.check) PetscCall(tools.check(comm, opt));  // (the tool scenes': the dies, passes, model and release)
-  PetscCall(CheckFrictionOptions(comm, opt.friction)); // (friction_options.cpp)
+  PetscCall(CheckFrictionOptions(comm, opt.friction)); // (contact/friction_options.cpp)
   PetscCall(CheckStrokeOptions(comm, opt));            // (stroke_options.cpp; after -die_path's)
   PetscCheck(opt.output_every >= 1, comm, PETSC_ERR_USER_INPUT, "-output_every %d: must be at least 1",
              (int)opt.output_every);

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <vector>
 
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
 
 namespace tf {
 

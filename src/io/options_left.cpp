@@ -6,7 +6,7 @@
 
 #include "tubeform/assembly/linear_solver.hpp"
 #include "tubeform/core/core.hpp"
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
 
 namespace tf {
 

@@ -13,9 +13,10 @@
 // elastic, or the material's law).
 #include <cmath>
 
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
 #include "tubeform/mesh/generator.hpp"
 #include "tubeform/scenes/common.hpp"
+#include "tubeform/scenes/scene_params.hpp"
 #include "tubeform/scenes/strain_path.hpp"
 
 namespace tf {
@@ -31,8 +32,11 @@ constexpr double kLength = 0.25;
 class BendingScene : public Scene {
 public:
   explicit BendingScene(const Options &opt)
-      : strain_(opt.bending.strain, opt.bending.cycle), elastic_release_(opt.release.springback == Springback::Elastic),
-        reversal_(!opt.bending.cycle.empty() && (opt.bending.cycle[0] - opt.bending.strain) * opt.bending.strain < 0)
+      : BendingScene(OwnParams<BendingParams>(opt), opt.release.springback == Springback::Elastic)
+  {}
+  BendingScene(const BendingParams &b, bool elastic_release)
+      : strain_(b.strain, b.cycle), elastic_release_(elastic_release),
+        reversal_(!b.cycle.empty() && (b.cycle[0] - b.strain) * b.strain < 0)
   {}
   std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
@@ -117,23 +121,23 @@ private:
 
 std::unique_ptr<Scene> MakeBendingScene(const Options &opt) { return std::make_unique<BendingScene>(opt); }
 
-PetscErrorCode ReadBendingOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+PetscErrorCode ReadBendingOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, BendingParams &own)
 {
   PetscFunctionBeginUser;
   PetscCall(read.Real(PetscOptionsObject, "-bending_strain",
                       "bending scene: the outer fibre's nominal strain at the end of the first stage (y > 0; "
                       "negative: bent the other way)",
-                      opt.bending.strain));
+                      own.strain));
   PetscCall(RealList(PetscOptionsObject, read, "-bending_cycle",
                      "bending scene: outer-fibre strains the strip is then taken to in turn, each over "
                      "-unload_increments trial increments (bend and unbend: -bending_strain 0.01 -bending_cycle 0)",
-                     kMaxStrainCycle, opt.bending.cycle));
+                     kMaxStrainCycle, own.cycle));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode CheckBendingOptions(MPI_Comm comm, const Options &opt)
+PetscErrorCode CheckBendingOptions(MPI_Comm comm, const BendingParams &own)
 {
-  const double e = opt.bending.strain;
+  const double e = own.strain;
   PetscFunctionBeginUser;
   PetscCheck(std::isfinite(e) && e != 0 && std::fabs(e) < 0.2, comm, PETSC_ERR_USER_INPUT,
              "-bending_strain %g: must be non-zero with |strain| < 0.2", e);

@@ -4,9 +4,10 @@
 // History: stroke = end shortening (mm), load = axial force (N/mm).
 #include <cmath>
 
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
 #include "tubeform/mesh/generator.hpp"
 #include "tubeform/scenes/common.hpp"
+#include "tubeform/scenes/scene_params.hpp"
 
 namespace tf {
 
@@ -21,10 +22,11 @@ public:
     if (opt.mesh_nt % 2)
       return "-mesh_nt " + std::to_string(opt.mesh_nt) +
              ": the column needs an even number of elements through the thickness (a node on the axis)";
-    mesh = GenerateRectangle(opt.column.t, opt.column.l, (int)opt.mesh_nt, (int)opt.mesh_ntheta);
+    const ColumnParams &c = OwnParams<ColumnParams>(opt);
+    mesh = GenerateRectangle(c.t, c.l, (int)opt.mesh_nt, (int)opt.mesh_ntheta);
     for (int n = 0; n < mesh.num_nodes(); ++n) {
       const double y = mesh.xy[2 * n + 1];
-      mesh.xy[2 * n] += -0.5 * opt.column.t + opt.column.imperfection * std::sin(M_PI * y / opt.column.l);
+      mesh.xy[2 * n] += -0.5 * c.t + c.imperfection * std::sin(M_PI * y / c.l);
     }
     return "";
   }
@@ -77,9 +79,8 @@ private:
 
 std::unique_ptr<Scene> MakeColumnScene(const Options &opt) { return std::make_unique<ColumnScene>(opt); }
 
-PetscErrorCode ReadColumnOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+PetscErrorCode ReadColumnOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ColumnParams &c)
 {
-  ColumnParams &c = opt.column;
   PetscFunctionBeginUser;
   PetscCall(read.Real(PetscOptionsObject, "-column_l", "column scene: length between the pins (mm)", c.l));
   PetscCall(read.Real(PetscOptionsObject, "-column_t", "column scene: thickness (mm)", c.t));
@@ -88,9 +89,8 @@ PetscErrorCode ReadColumnOptions(PetscOptionItems *PetscOptionsObject, OptionRea
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode CheckColumnOptions(MPI_Comm comm, const Options &opt)
+PetscErrorCode CheckColumnOptions(MPI_Comm comm, const ColumnParams &c)
 {
-  const ColumnParams &c = opt.column;
   PetscFunctionBeginUser;
   PetscCheck(c.l > 0 && c.t > 0 && c.t < c.l, comm, PETSC_ERR_USER_INPUT, "-column_l %g, -column_t %g: need 0 < t < L",
              c.l, c.t);

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "tubeform/contact/contact.hpp"
-#include "tubeform/io/text_file.hpp"
+#include "tubeform/core/text_file.hpp"
 #include "tubeform/tool/profile.hpp"
 #include "tubeform/tool/shape.hpp"
 

@@ -7,8 +7,9 @@
 //   load = the pressure it takes: radial reaction / current inner arc length.
 #include <cmath>
 
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
 #include "tubeform/scenes/common.hpp"
+#include "tubeform/scenes/scene_params.hpp"
 
 namespace tf {
 
@@ -17,7 +18,7 @@ namespace {
 class PressureScene : public Scene {
 public:
   explicit PressureScene(const Options &opt)
-      : opt_(opt), displacement_(opt.pressure.control == PressureControl::Displacement)
+      : opt_(opt), displacement_(OwnParams<PressureParams>(opt).control == PressureControl::Displacement)
   {}
   std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
@@ -36,9 +37,11 @@ public:
   {
     PetscFunctionBeginUser;
     if (displacement_)
-      for (PetscInt n : m.mesh.node_sets["inner"]) m.system.Prescribe(n, 0, dlambda * opt_.pressure.u);
+      for (PetscInt n : m.mesh.node_sets["inner"])
+        m.system.Prescribe(n, 0, dlambda * OwnParams<PressureParams>(opt_).u);
     else
-      PetscCall(AddEdgePressure(m, "inner", dlambda * opt_.pressure.p, nullptr, true, lambda * opt_.pressure.p));
+      PetscCall(AddEdgePressure(m, "inner", dlambda * OwnParams<PressureParams>(opt_).p, nullptr, true,
+                                lambda * OwnParams<PressureParams>(opt_).p));
     PetscCall(QuarterSymmetry(m));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -47,7 +50,7 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
-    if (!displacement_) PetscCall(AddEdgePressure(m, "inner", lambda * opt_.pressure.p, f, false));
+    if (!displacement_) PetscCall(AddEdgePressure(m, "inner", lambda * OwnParams<PressureParams>(opt_).p, f, false));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
@@ -79,7 +82,7 @@ public:
       PetscCall(SetForce(m, "inner", f_int, radial, fr));
       row.load = fr / g[2];
     } else
-      row.load = lambda * opt_.pressure.p;
+      row.load = lambda * OwnParams<PressureParams>(opt_).p;
     PetscCall(OuterExtents(m, row));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -93,9 +96,8 @@ private:
 
 std::unique_ptr<Scene> MakePressureScene(const Options &opt) { return std::make_unique<PressureScene>(opt); }
 
-PetscErrorCode ReadPressureOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+PetscErrorCode ReadPressureOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, PressureParams &p)
 {
-  PressureParams &p = opt.pressure;
   PetscFunctionBeginUser;
   PetscCall(read.Real(PetscOptionsObject, "-pressure_p",
                       "pressure scene: final internal pressure (MPa), -pressure_control load", p.p));
@@ -107,9 +109,8 @@ PetscErrorCode ReadPressureOptions(PetscOptionItems *PetscOptionsObject, OptionR
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode CheckPressureOptions(MPI_Comm comm, const Options &opt)
+PetscErrorCode CheckPressureOptions(MPI_Comm comm, const PressureParams &p)
 {
-  const PressureParams &p = opt.pressure;
   PetscFunctionBeginUser;
   PetscCheck(p.u > 0, comm, PETSC_ERR_USER_INPUT, "-pressure_u %g: must be positive (mm)", p.u);
   PetscCheck(std::isfinite(p.p), comm, PETSC_ERR_USER_INPUT, "-pressure_p %g: must be a finite pressure (MPa)", p.p);

@@ -1,6 +1,7 @@
 #include "tubeform/scenes/registry.hpp"
 
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
+#include "tubeform/scenes/scene_params.hpp"
 #include "tubeform/scenes/tool_options.hpp"
 
 #include <cctype>
@@ -21,8 +22,8 @@ std::unique_ptr<Scene> MakeSlideScene(const Options &opt);
 std::unique_ptr<Scene> MakeArcSlideScene(const Options &opt);
 // The readers and checkers of the scenes' own options, each in its scene's file.
 #define TF_SCENE_OPTIONS(Name)                                                                                         \
-  PetscErrorCode Read##Name##Options(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt);          \
-  PetscErrorCode Check##Name##Options(MPI_Comm comm, const Options &opt);
+  PetscErrorCode Read##Name##Options(PetscOptionItems *PetscOptionsObject, OptionReader &read, Name##Params &own);     \
+  PetscErrorCode Check##Name##Options(MPI_Comm comm, const Name##Params &own);
 TF_SCENE_OPTIONS(Pressure)
 TF_SCENE_OPTIONS(Shear)
 TF_SCENE_OPTIONS(Rotation)
@@ -33,9 +34,29 @@ TF_SCENE_OPTIONS(Slide)
 #undef TF_SCENE_OPTIONS
 
 namespace {
+// A scene's reader and checker of its own parameters' struct P, as the registry hands them to ReadOptions: P's
+// built-in values changed by the options given, kept in `own`.
+template <class P, PetscErrorCode (*Read)(PetscOptionItems *, OptionReader &, P &)>
+PetscErrorCode ReadOwn(PetscOptionItems *PetscOptionsObject, OptionReader &read, std::any &own)
+{
+  P params;
+  PetscFunctionBeginUser;
+  PetscCall(Read(PetscOptionsObject, read, params));
+  own = params;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+template <class P, PetscErrorCode (*Check)(MPI_Comm, const P &)>
+PetscErrorCode CheckOwn(MPI_Comm comm, const std::any &own)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Check(comm, std::any_cast<const P &>(own)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+#define TF_OWN(Name) ReadOwn<Name##Params, Read##Name##Options>, CheckOwn<Name##Params, Check##Name##Options>
+
 std::unique_ptr<Scene> MakeAnySlideScene(const Options &opt)
 {
-  return opt.slide.tool == SlideTool::Arc ? MakeArcSlideScene(opt) : MakeSlideScene(opt);
+  return OwnParams<SlideParams>(opt).tool == SlideTool::Arc ? MakeArcSlideScene(opt) : MakeSlideScene(opt);
 }
 } // namespace
 
@@ -48,22 +69,23 @@ const std::vector<SceneEntry> &SceneRegistry()
     {"flattening", "quarter ring crushed by a flat plate", MakeFlatteningScene, ScenePress::Plate,
      "-friction_mu -friction_vcri"},
     {"pressure", "quarter thick cylinder under internal pressure (Lame, Hill)", MakePressureScene, ScenePress::None,
-     "-pressure_", ReadPressureOptions, CheckPressureOptions},
+     "-pressure_", TF_OWN(Pressure)},
     {"shear", "simple shear of a block (Jaumann objectivity)", MakeShearScene, ScenePress::None, "-shear_",
-     ReadShearOptions, CheckShearOptions},
+     TF_OWN(Shear)},
     {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene, ScenePress::None, "-rotation_",
-     ReadRotationOptions, CheckRotationOptions},
+     TF_OWN(Rotation)},
     {"column", "a bowed strip shortened past its Euler load (geometric stiffness)", MakeColumnScene, ScenePress::None,
-     "-column_", ReadColumnOptions, CheckColumnOptions},
+     "-column_", TF_OWN(Column)},
     {"tension", "plane-strain tension or compression of a block (flow curve)", MakeTensionScene, ScenePress::None,
-     "-tension_", ReadTensionOptions, CheckTensionOptions},
+     "-tension_", TF_OWN(Tension)},
     {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene, ScenePress::None,
-     "-bending_", ReadBendingOptions, CheckBendingOptions},
+     "-bending_", TF_OWN(Bending)},
     {"slide", "a block pushed along a floor, or a ring turned in a cylinder (-slide_tool arc): Coulomb friction",
-     MakeAnySlideScene, ScenePress::None, "-slide_ -friction_mu -friction_vcri", ReadSlideOptions, CheckSlideOptions},
+     MakeAnySlideScene, ScenePress::None, "-slide_ -friction_mu -friction_vcri", TF_OWN(Slide)},
   };
   return scenes;
 }
+#undef TF_OWN
 
 std::vector<std::string> SceneNames()
 {

@@ -4,8 +4,9 @@
 // History: stroke = rotation angle so far (degrees), load = mean von Mises stress.
 #include <cmath>
 
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
 #include "tubeform/scenes/block.hpp"
+#include "tubeform/scenes/scene_params.hpp"
 
 namespace tf {
 
@@ -18,10 +19,10 @@ public:
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     if (lambda < kStretch - kLambdaTol) {
-      const double de = dlambda / kStretch * opt_.rotation.strain;
+      const double de = dlambda / kStretch * OwnParams<RotationParams>(opt_).strain;
       PrescribeBoundary(m, [&](PetscInt n, double d[2]) { d[0] = de * m.mesh.x0[2 * n], d[1] = 0; });
     } else {
-      const double dth = dlambda / (1 - kStretch) * opt_.rotation.angle * M_PI / 180;
+      const double dth = dlambda / (1 - kStretch) * OwnParams<RotationParams>(opt_).angle * M_PI / 180;
       const double c = std::cos(dth), s = std::sin(dth);
       PrescribeBoundary(m, [&](PetscInt n, double d[2]) {
         const double x = m.body.position()[2 * n], y = m.body.position()[2 * n + 1];
@@ -35,7 +36,8 @@ public:
   PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
-    row.stroke = lambda <= kStretch ? 0.0 : (lambda - kStretch) / (1 - kStretch) * opt_.rotation.angle;
+    row.stroke =
+      lambda <= kStretch ? 0.0 : (lambda - kStretch) / (1 - kStretch) * OwnParams<RotationParams>(opt_).angle;
     PetscCall(PointAverage(
       m, [](const PointState &s) { return VonMises(s.sigma); }, row.load));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -49,21 +51,21 @@ private:
 
 std::unique_ptr<Scene> MakeRotationScene(const Options &opt) { return std::make_unique<RotationScene>(opt); }
 
-PetscErrorCode ReadRotationOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+PetscErrorCode ReadRotationOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, RotationParams &own)
 {
   PetscFunctionBeginUser;
   PetscCall(read.Real(PetscOptionsObject, "-rotation_angle",
-                      "rotation scene: rigid rotation after the prestretch (degrees)", opt.rotation.angle));
+                      "rotation scene: rigid rotation after the prestretch (degrees)", own.angle));
   PetscCall(read.Real(PetscOptionsObject, "-rotation_strain",
-                      "rotation scene: uniaxial prestretch strain in x before the rotation", opt.rotation.strain));
+                      "rotation scene: uniaxial prestretch strain in x before the rotation", own.strain));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode CheckRotationOptions(MPI_Comm comm, const Options &opt)
+PetscErrorCode CheckRotationOptions(MPI_Comm comm, const RotationParams &own)
 {
   PetscFunctionBeginUser;
-  PetscCheck(std::fabs(opt.rotation.angle) <= 3600, comm, PETSC_ERR_USER_INPUT,
-             "-rotation_angle %g: must lie within +-3600 degrees", opt.rotation.angle);
+  PetscCheck(std::fabs(own.angle) <= 3600, comm, PETSC_ERR_USER_INPUT,
+             "-rotation_angle %g: must lie within +-3600 degrees", own.angle);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,8 +1,9 @@
 // Simple shear x = X + gamma Y to -shear_gamma (docs/verification.md, "Scenes against closed forms").
 // History: stroke = gamma, load = mean sigma_xy (MPa). Hypoelastic Jaumann
 // reference: sigma_xy = G sin(gamma), sigma_xx = -sigma_yy = G (1 - cos(gamma)).
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
 #include "tubeform/scenes/block.hpp"
+#include "tubeform/scenes/scene_params.hpp"
 
 namespace tf {
 
@@ -13,7 +14,7 @@ public:
   using BlockScene::BlockScene;
   PetscErrorCode Load(Model &m, double, double dlambda) override
   {
-    const double dgamma = dlambda * opt_.shear.gamma;
+    const double dgamma = dlambda * OwnParams<ShearParams>(opt_).gamma;
     PrescribeBoundary(m, [&](PetscInt n, double d[2]) { d[0] = dgamma * m.body.position()[2 * n + 1], d[1] = 0; });
     return 0;
   }
@@ -22,7 +23,7 @@ public:
   PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
-    row.stroke = lambda * opt_.shear.gamma;
+    row.stroke = lambda * OwnParams<ShearParams>(opt_).gamma;
     PetscCall(PointAverage(
       m, [](const PointState &s) { return s.sigma[3]; }, row.load));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -33,16 +34,16 @@ public:
 
 std::unique_ptr<Scene> MakeShearScene(const Options &opt) { return std::make_unique<ShearScene>(opt); }
 
-PetscErrorCode ReadShearOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+PetscErrorCode ReadShearOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ShearParams &own)
 {
   PetscFunctionBeginUser;
-  PetscCall(read.Real(PetscOptionsObject, "-shear_gamma", "shear scene: final shear strain gamma", opt.shear.gamma));
+  PetscCall(read.Real(PetscOptionsObject, "-shear_gamma", "shear scene: final shear strain gamma", own.gamma));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode CheckShearOptions(MPI_Comm comm, const Options &opt)
+PetscErrorCode CheckShearOptions(MPI_Comm comm, const ShearParams &own)
 {
-  const double gamma = opt.shear.gamma;
+  const double gamma = own.gamma;
   PetscFunctionBeginUser;
   PetscCheck(std::isfinite(gamma) && gamma != 0, comm, PETSC_ERR_USER_INPUT,
              "-shear_gamma %g: must be a finite non-zero shear strain", gamma);

@@ -6,11 +6,12 @@
 // History: stroke = top displacement (mm), load = tangential force T (N/mm);
 // slip = mean slip of the bottom on the floor, tool_fx / tool_fy = the
 // block's force on the floor.
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
 #include "tubeform/mesh/generator.hpp"
 #include "tubeform/scenes/common.hpp"
 #include "tubeform/scenes/contact_params.hpp"
 #include "tubeform/scenes/die_columns.hpp"
+#include "tubeform/scenes/scene_params.hpp"
 #include "tubeform/tool/shape.hpp"
 
 namespace tf {
@@ -33,7 +34,7 @@ public:
   }
   LoadPath Path(const Options &opt) const override
   {
-    if (opt.slide.back > 0) return {3.0, opt.driver.dynamics_time, {1.0, 2.0}, {}};
+    if (OwnParams<SlideParams>(opt).back > 0) return {3.0, opt.driver.dynamics_time, {1.0, 2.0}, {}};
     return {2.0, opt.driver.dynamics_time, {1.0}, {}};
   }
   // While the top is pushed, T and its displacement are work-conjugate.
@@ -48,8 +49,10 @@ public:
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     PetscFunctionBeginUser;
-    const double dn = lambda < 1.0 ? dlambda * opt_.slide.n : 0.0;
-    const double push = lambda < 1.0 ? 0.0 : lambda < 2.0 ? dlambda * opt_.slide.push : -dlambda * opt_.slide.back;
+    const double dn = lambda < 1.0 ? dlambda * OwnParams<SlideParams>(opt_).n : 0.0;
+    const double push = lambda < 1.0   ? 0.0
+                        : lambda < 2.0 ? dlambda * OwnParams<SlideParams>(opt_).push
+                                       : -dlambda * OwnParams<SlideParams>(opt_).back;
     PetscCall(TopLoad(m, -dn, nullptr, true));
     for (PetscInt n : m.mesh.node_sets["top"]) m.system.Prescribe(n, 0, push);
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -58,7 +61,7 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
-    PetscCall(TopLoad(m, -std::min(lambda, 1.0) * opt_.slide.n, f, false));
+    PetscCall(TopLoad(m, -std::min(lambda, 1.0) * OwnParams<SlideParams>(opt_).n, f, false));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   const char *StrokeName() const override { return "push (mm)"; }
@@ -87,8 +90,8 @@ private:
   double Top(double lambda) const
   {
     if (lambda <= 1.0) return 0.0;
-    if (lambda <= 2.0) return (lambda - 1.0) * opt_.slide.push;
-    return opt_.slide.push - (lambda - 2.0) * opt_.slide.back;
+    if (lambda <= 2.0) return (lambda - 1.0) * OwnParams<SlideParams>(opt_).push;
+    return OwnParams<SlideParams>(opt_).push - (lambda - 2.0) * OwnParams<SlideParams>(opt_).back;
   }
   static constexpr double kWidth = 10.0, kHeight = 2.0; // block (mm)
   static constexpr double kFloorHalfLength = 1e3;       // the floor reaches far past the block (mm)
@@ -118,9 +121,8 @@ private:
 
 std::unique_ptr<Scene> MakeSlideScene(const Options &opt) { return std::make_unique<SlideScene>(opt); }
 
-PetscErrorCode ReadSlideOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+PetscErrorCode ReadSlideOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, SlideParams &s)
 {
-  SlideParams &s = opt.slide;
   PetscFunctionBeginUser;
   PetscCall(read.Real(PetscOptionsObject, "-slide_n", "slide scene: normal force pressing the block (N/mm)", s.n));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-slide_tool",
@@ -135,9 +137,8 @@ PetscErrorCode ReadSlideOptions(PetscOptionItems *PetscOptionsObject, OptionRead
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode CheckSlideOptions(MPI_Comm comm, const Options &opt)
+PetscErrorCode CheckSlideOptions(MPI_Comm comm, const SlideParams &s)
 {
-  const SlideParams &s = opt.slide;
   PetscFunctionBeginUser;
   PetscCheck(s.n > 0 && s.push > 0, comm, PETSC_ERR_USER_INPUT, "-slide_n %g, -slide_push %g: must be positive", s.n,
              s.push);

@@ -10,6 +10,7 @@
 
 #include "tubeform/scenes/common.hpp"
 #include "tubeform/scenes/contact_params.hpp"
+#include "tubeform/scenes/scene_params.hpp"
 
 namespace tf {
 
@@ -50,8 +51,9 @@ public:
   {
     PetscFunctionBeginUser;
     if (lambda < 1.0)
-      PetscCall(AddEdgePressure(m, "inner", dlambda * opt_.slide.n, nullptr, true, lambda * opt_.slide.n));
-    const double turn = lambda < 1.0 ? 0.0 : dlambda * opt_.slide.push / opt_.tube_ro;
+      PetscCall(AddEdgePressure(m, "inner", dlambda * OwnParams<SlideParams>(opt_).n, nullptr, true,
+                                lambda * OwnParams<SlideParams>(opt_).n));
+    const double turn = lambda < 1.0 ? 0.0 : dlambda * OwnParams<SlideParams>(opt_).push / opt_.tube_ro;
     // A rigid turn of the inner surface: tangential (frame n; l is radial)
     // displacement = turn x current radius, so the moment and the turn are
     // work-conjugate.
@@ -63,7 +65,7 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
-    PetscCall(AddEdgePressure(m, "inner", std::min(lambda, 1.0) * opt_.slide.n, f, false));
+    PetscCall(AddEdgePressure(m, "inner", std::min(lambda, 1.0) * OwnParams<SlideParams>(opt_).n, f, false));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   const char *StrokeName() const override { return "turn (rad)"; }
@@ -71,7 +73,7 @@ public:
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
-    row.stroke = lambda <= 1.0 ? 0.0 : (lambda - 1.0) * opt_.slide.push / opt_.tube_ro;
+    row.stroke = lambda <= 1.0 ? 0.0 : (lambda - 1.0) * OwnParams<SlideParams>(opt_).push / opt_.tube_ro;
     // Moment about the centre of the internal forces at the inner nodes (their supports).
     const auto &x = m.body.position();
     PetscCall(SetForce(

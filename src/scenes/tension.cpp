@@ -3,8 +3,9 @@
 // e(lambda): -tension_strain at lambda 1, then each -tension_cycle strain one
 // unit of lambda later (piecewise linear, scenes/strain_path.hpp).
 // History: stroke = nominal strain, load = mean sigma_xx (MPa).
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
 #include "tubeform/scenes/block.hpp"
+#include "tubeform/scenes/scene_params.hpp"
 #include "tubeform/scenes/strain_path.hpp"
 
 namespace tf {
@@ -13,7 +14,9 @@ namespace {
 
 class TensionScene : public BlockScene {
 public:
-  explicit TensionScene(const Options &opt) : BlockScene(opt), strain_(opt.tension.strain, opt.tension.cycle) {}
+  explicit TensionScene(const Options &opt)
+      : BlockScene(opt), strain_(OwnParams<TensionParams>(opt).strain, OwnParams<TensionParams>(opt).cycle)
+  {}
   LoadPath Path(const Options &opt) const override { return strain_.Path(opt.driver.dynamics_time); }
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
@@ -42,22 +45,22 @@ private:
 
 std::unique_ptr<Scene> MakeTensionScene(const Options &opt) { return std::make_unique<TensionScene>(opt); }
 
-PetscErrorCode ReadTensionOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
+PetscErrorCode ReadTensionOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, TensionParams &own)
 {
   PetscFunctionBeginUser;
   PetscCall(read.Real(PetscOptionsObject, "-tension_strain",
-                      "tension scene: final nominal strain in x (negative: compression)", opt.tension.strain));
+                      "tension scene: final nominal strain in x (negative: compression)", own.strain));
   PetscCall(RealList(PetscOptionsObject, read, "-tension_cycle",
                      "tension scene: nominal strains the block is then taken to in turn, each over "
                      "-unload_increments trial increments (a tension-compression cycle: -tension_strain 0.02 "
                      "-tension_cycle -0.02,0.02)",
-                     kMaxStrainCycle, opt.tension.cycle));
+                     kMaxStrainCycle, own.cycle));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode CheckTensionOptions(MPI_Comm comm, const Options &opt)
+PetscErrorCode CheckTensionOptions(MPI_Comm comm, const TensionParams &own)
 {
-  const double e = opt.tension.strain;
+  const double e = own.strain;
   PetscFunctionBeginUser;
   PetscCheck(std::isfinite(e) && e != 0 && std::fabs(e) < 1, comm, PETSC_ERR_USER_INPUT,
              "-tension_strain %g: must be non-zero with |strain| < 1", e);

@@ -7,7 +7,7 @@
 
 #include <petscsys.h>
 
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
 #include "tubeform/io/options.hpp"
 
 namespace tf {

@@ -5,30 +5,25 @@
 #include <petscsys.h>
 
 #include <algorithm>
+#include <any>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "tubeform/body/body.hpp"
 #include "tubeform/contact/contact.hpp"
+#include "tubeform/contact/friction_params.hpp"
+#include "tubeform/core/option_reader.hpp"
 #include "tubeform/fe/quad.hpp"
 #include "tubeform/io/driver_params.hpp"
-#include "tubeform/io/friction_params.hpp"
 #include "tubeform/io/pass_extent.hpp"
 #include "tubeform/io/pass_spec.hpp"
 #include "tubeform/io/press_params.hpp"
-#include "tubeform/io/scene_params.hpp"
 #include "tubeform/material/elastic.hpp"
 #include "tubeform/tool/motion.hpp"
 #include "tubeform/tool/shape.hpp"
 
 namespace tf {
-
-// An option tubeform reads: its name (with the dash), its -help text and the title of the -help block that reads it
-// ("tubeform: upper die shape"; empty where it is noted outside a block).
-struct KnownOption {
-  std::string name, help, reader;
-};
 
 // What a scene presses the tube with (its entry's in the scene registry, scenes/registry.hpp; Options::press once
 // -scene chose it): no tools (pressure, shear, ...), an upper die over a lower one (squaring: -die_offset, -die_path,
@@ -62,14 +57,10 @@ struct Options {
   std::vector<PassSpec> passes = DefaultPasses();
   FrictionParams friction; // the contact and friction options (io/friction_params.hpp; read and checked by io)
   ReleaseParams release; // the release after loading (io/press_params.hpp; read and checked by io, release_options.cpp)
-  // The scenes without tools' own parameters (io/scene_params.hpp; each read and checked by its scene).
-  PressureParams pressure;
-  ShearParams shear;
-  RotationParams rotation;
-  ColumnParams column;
-  TensionParams tension;
-  BendingParams bending;
-  SlideParams slide;
+  // The chosen scene's own parameters where it has any (a scene without tools: its struct of scenes/scene_params.hpp,
+  // read and checked by the scene, SceneOptions), kept here so that they travel with the run's options to its levels
+  // and companions; the scene reads them back with OwnParams.
+  std::any scene_params;
   // Output
   std::string output = "results/tubeform.h5";
   std::string history_csv;
@@ -98,12 +89,14 @@ inline bool PressesWithDie(const Options &opt) { return opt.press == ScenePress:
 class OptionReader;
 // A scene -scene accepts, and the reader and checker of its own options (null: it has none): the reader lists them
 // in -help under "tubeform: <name> scene" (between PetscOptionsBegin and PetscOptionsEnd, whose PetscOptionsObject
-// it takes), the checker refuses their bad values in one line naming the option. The scene registry lists them.
+// it takes) and puts them in `own` (its parameters' struct), the checker refuses their bad values in one line naming
+// the option. Every scene's are read and checked, whichever runs (a bad value is refused all the same); the chosen
+// scene's become Options::scene_params. The scene registry lists them.
 struct SceneOptions {
   std::string name;
   ScenePress press = ScenePress::None;
-  PetscErrorCode (*read)(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt) = nullptr;
-  PetscErrorCode (*check)(MPI_Comm comm, const Options &opt) = nullptr;
+  PetscErrorCode (*read)(PetscOptionItems *PetscOptionsObject, OptionReader &read, std::any &own) = nullptr;
+  PetscErrorCode (*check)(MPI_Comm comm, const std::any &own) = nullptr;
 };
 
 // The reader and checker of the options of a layer above io (the driver's: driver/driver_options.hpp), handed to
@@ -138,8 +131,6 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups
 PetscErrorCode CheckOptions(MPI_Comm comm, const ToolSceneReaders &tools, Options &opt);
 // The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
 std::string PassOption(int pass, const char *what);
-// Collective: refuses material constants out of range or not in MPa (called by CheckOptions).
-PetscErrorCode CheckMaterial(MPI_Comm comm, const MaterialParams &m);
 
 // Elements around the quarter tube for `density` elements per bending length
 // sqrt(Ro t): the wall between the die's contacts bends over that length (the

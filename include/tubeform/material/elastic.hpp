@@ -63,7 +63,7 @@ static_assert(std::size(kFlowLawWords) == static_cast<size_t>(FlowLaw::Table) + 
 inline constexpr int kMaxTableNumbers = 200;
 
 // Material constants: the paper's aluminum (its Table 1, docs/scenes.md) until a
-// material file (options/materials/, io/material_library.hpp) or options set them.
+// material file (options/materials/, material/library.hpp) or options set them.
 struct MaterialParams {
   std::string name = "aluminum";
   FlowLaw law = FlowLaw::Ludwik;

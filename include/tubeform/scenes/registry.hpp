@@ -17,9 +17,10 @@ struct SceneEntry {
   // The options it reads that not every scene does (space-separated; a name ending in '_' a prefix): an option of
   // another scene's list, given to this one, is refused naming the scenes that read it (ForeignOption).
   const char *reads = "";
-  // The reader and checker of its own options (SceneOptions; null: none), defined in its file.
-  PetscErrorCode (*read)(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt) = nullptr;
-  PetscErrorCode (*check)(MPI_Comm comm, const Options &opt) = nullptr;
+  // The reader and checker of its own options (SceneOptions; null: none): its file's, on its parameters' struct
+  // (scenes/scene_params.hpp), handed over by the registry.
+  PetscErrorCode (*read)(PetscOptionItems *PetscOptionsObject, OptionReader &read, std::any &own) = nullptr;
+  PetscErrorCode (*check)(MPI_Comm comm, const std::any &own) = nullptr;
 };
 
 const std::vector<SceneEntry> &SceneRegistry();

@@ -1,11 +1,23 @@
-// The parameters of the scenes without tools, one struct per scene (Options holds one of each, so that they travel
-// with the run's options to its levels and companions). Each scene reads and checks its own (its Read*Options and
-// Check*Options in src/scenes/<scene>.cpp, listed in the scene registry).
+// The parameters of the scenes without tools, one struct per scene. Each scene reads and checks its own (its
+// Read*Options and Check*Options in src/scenes/<scene>.cpp, listed in the scene registry); the chosen scene's travel
+// with the run's options to its levels and companions (Options::scene_params), read back with OwnParams.
 #pragma once
 
 #include <vector>
 
+#include "tubeform/io/options.hpp"
+
 namespace tf {
+
+// The run's scene's own parameters, P its struct (Options::scene_params, set by ReadOptions for the chosen scene), or
+// P's built-in values where the options hold none of P (a scene made from options built in code).
+template <class P>
+const P &OwnParams(const Options &opt)
+{
+  static const P built_in;
+  const P *own = std::any_cast<P>(&opt.scene_params);
+  return own ? *own : built_in;
+}
 
 // What the pressure scene ramps (-pressure_control): the pressure, or the inner radial displacement.
 enum class PressureControl { Load, Displacement };

@@ -1,12 +1,11 @@
-// The contact and friction options: read into Options::friction (their own group in -help) and checked, one line
+// The contact and friction options: read into a FrictionParams (their own group in -help) and checked, one line
 // naming the option.
-#include "tubeform/io/friction_options.hpp"
+#include "tubeform/contact/friction_options.hpp"
 
 namespace tf {
 
-PetscErrorCode ReadFrictionOptions(MPI_Comm comm, OptionReader &read, Options &opt)
+PetscErrorCode ReadFrictionOptions(MPI_Comm comm, OptionReader &read, FrictionParams &f)
 {
-  FrictionParams &f = opt.friction;
 
   PetscFunctionBeginUser;
   TF_OPTIONS_BEGIN(comm, "tubeform: contact and friction");

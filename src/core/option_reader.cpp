@@ -1,4 +1,4 @@
-#include "tubeform/io/option_reader.hpp"
+#include "tubeform/core/option_reader.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -10,9 +10,15 @@
 #include <string>
 #include <vector>
 
-#include "tubeform/io/options.hpp"
+#include "tubeform/core/core.hpp"
 
 namespace tf {
+
+// An option tubeform reads: its name (with the dash), its -help text and the title of the -help block that reads it
+// ("tubeform: upper die shape"; empty where it is noted outside a block).
+struct KnownOption {
+  std::string name, help, reader;
+};
 
 // Edits (insertions, deletions, substitutions) between two words.
 size_t EditDistance(const std::string &a, const std::string &b);

@@ -1,7 +1,7 @@
 // The tools' contact and friction parameters as the options give them (docs/theory.md, section 6): the tanh-Coulomb
 // law's coefficient and quasi-stick slip, the friction iterations' tolerance and r6's bounds. Options holds one (so
-// that they travel with the run's options to its levels and companions); io reads and checks them
-// (io/friction_options.hpp), and the scenes with tools hand them to the contact set as its ContactParams
+// that they travel with the run's options to its levels and companions); the contact layer reads and checks them
+// (contact/friction_options.hpp), and the scenes with tools hand them to the contact set as its ContactParams
 // (scenes/contact_params.hpp).
 #pragma once
 

@@ -1,11 +1,11 @@
-#include "tubeform/io/material_library.hpp"
+#include "tubeform/material/library.hpp"
 
 #include <dirent.h>
 
 #include <algorithm>
 #include <sstream>
 
-#include "tubeform/io/text_file.hpp"
+#include "tubeform/core/text_file.hpp"
 
 namespace tf {
 

@@ -7,10 +7,10 @@
 #include <string>
 
 #include "tubeform/core/core.hpp"
-#include "tubeform/io/material_library.hpp"
-#include "tubeform/io/options.hpp"
 #include "tubeform/material/factory.hpp"
 #include "tubeform/material/kinematic.hpp"
+#include "tubeform/material/library.hpp"
+#include "tubeform/material/material_options.hpp"
 
 namespace tf {
 

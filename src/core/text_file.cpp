@@ -1,4 +1,4 @@
-#include "tubeform/io/text_file.hpp"
+#include "tubeform/core/text_file.hpp"
 
 #include <fstream>
 
