@@ -293,7 +293,13 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
   dies.upper.spec.ro = opt.tube_ro, dies.motion.spec.reach = opt.tube_ro; // (UpperDieShape, UpperDie)
   if (pass == 0) return dies;
   const DieSet &given = LaterPass(opt, pass).dies;
-  if (!given.upper.kind.empty()) dies.upper.kind = given.upper.kind, dies.upper.spec.file = given.upper.spec.file;
+  if (given.upper.kind == kVShape) { // (its own V numbers: ReadPassShapes)
+    const ShapeSpec &v = given.upper.spec;
+    dies.upper.kind = kVShape, dies.upper.spec.angle = v.angle, dies.upper.spec.r_apex = v.r_apex;
+    dies.upper.spec.u_close = v.u_close, dies.upper.spec.r_edge = v.r_edge;
+  } else if (!given.upper.kind.empty()) {
+    dies.upper.kind = given.upper.kind, dies.upper.spec.file = given.upper.spec.file;
+  }
   if (given.lower.Given()) dies.lower = given.lower;
   if (given.side.Given()) dies.side = given.side;
   dies.motion = given.motion, dies.motion.spec.reach = opt.tube_ro;

@@ -64,6 +64,11 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt);
 // -die_u_close, -die_r_edge read by the V kind of tool/shape.hpp (and checked by it in CheckOptions), unless
 // -die_profile names a file: the first pass's dies' upper (opt.passes[0].dies; die_shape_options.cpp).
 PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
+// A later pass's own V-die numbers, each pass's block under the prefix pass<N>_die_ (-pass2_die_angle, _r_apex,
+// _u_close, _r_edge, read by the V kind; the first pass's numbers their defaults): where one is given the pass's upper
+// die is a V-die of its numbers (its -pass<N>_die_profile, where given too, the die, as the first pass's). Pass 2's
+// listed by -help; a later one's where given (die_shape_options.cpp).
+PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt);
 // The first pass's lower die's and side dies' shapes (opt.passes[0].dies), each its own block: -lower_die (mirror,
 // flat or a file) into its lower, -side_die (none, mirror, flat or a file) into its side (ShapeChoice; both in
 // die_shape_options.cpp, refused where they do not go with the other options by CheckOptions), and in the side dies'

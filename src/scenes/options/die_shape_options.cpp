@@ -8,6 +8,8 @@
 // its name); these kinds read no options. The scenes place and size them (scenes/die.cpp).
 #include <cmath>
 
+#include "tubeform/core/core.hpp"
+
 #include "tubeform/scenes/tool_options.hpp"
 
 namespace tf {
@@ -70,6 +72,37 @@ PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt
   block.Release();
   PetscOptionsEnd();
   die.kind = die.spec.file.empty() ? kVShape : DrawingChoice(die.spec.file).kind;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  const ShapeKind *v = FindShapeKind(kVShape);
+  PetscFunctionBeginUser;
+  for (int pass = 1; pass < kMaxPasses; ++pass) {
+    DieShape &die = opt.passes[pass].dies.upper;
+    const std::string prefix = Formatted("pass%d_die_", pass + 1);
+    const std::string title = Formatted("tubeform: pass %d upper die shape", pass + 1);
+    bool given = false;
+    for (const ShapeOption &o : v->options) {
+      PetscBool set;
+      PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), ("-" + o.name).c_str(), &set));
+      given = given || set;
+      read.Note(("-" + prefix + o.name).c_str(), ("squaring: the pass's V-die, as -die_" + o.name).c_str(),
+                title.c_str());
+    }
+    if (!given && pass > 1) continue;           // (pass 2's listed by -help always; a later one's where given)
+    ShapeSpec spec = FirstDies(opt).upper.spec; // (the first pass's numbers its defaults)
+    PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "tubeform");
+    OptionsBlock block(PetscOptionsObject);
+    PetscCall(ReadShape(PetscOptionsObject, kVShape, spec));
+    block.Release();
+    PetscOptionsEnd();
+    if (!given) continue;
+    die.spec.angle = spec.angle, die.spec.r_apex = spec.r_apex, die.spec.u_close = spec.u_close;
+    die.spec.r_edge = spec.r_edge;
+    if (die.kind.empty()) die.kind = kVShape; // (under a -pass<N>_die_profile, as the first pass's, the file's)
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -31,8 +31,8 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   const std::string stroke = PassOption(pass, "stroke"), ordinal = PassOrdinal(pass), given = e.Option();
   PetscFunctionBeginUser;
   PetscCheck(PressesWithDie(opt) || p.dies.upper.kind.empty(), comm, PETSC_ERR_USER_INPUT,
-             "%s: the %s scene presses with plates, not dies", PassOption(pass, "die_profile").c_str(),
-             opt.scene.c_str());
+             "%s, %s: the %s scene presses with plates, not dies", PassOption(pass, "die_profile").c_str(),
+             PassOption(pass, "die_angle").c_str(), opt.scene.c_str());
   PetscCheck(p.stroke >= 0 && std::isfinite(p.stroke), comm, PETSC_ERR_USER_INPUT,
              "%s %g: must be non-negative (0: %s)", stroke.c_str(), p.stroke,
              pass == 1 ? "one pass" : ("the " + PassOrdinal(pass - 1) + " pass the last").c_str());
@@ -43,9 +43,9 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
              "%s %g: the %s pass follows the %s; give %s", given.c_str(), e.Target(), ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
   PetscCheck(e.Given() || (p.dies.upper.kind.empty() && !p.dies.lower.Given() && !p.dies.side.Given()), comm,
-             PETSC_ERR_USER_INPUT, "%s, %s, %s: give %s for the %s pass", PassOption(pass, "die_profile").c_str(),
-             PassOption(pass, "lower_die").c_str(), PassOption(pass, "side_die").c_str(), stroke.c_str(),
-             ordinal.c_str());
+             PETSC_ERR_USER_INPUT, "%s (or its V-die's numbers), %s, %s: give %s for the %s pass",
+             PassOption(pass, "die_profile").c_str(), PassOption(pass, "lower_die").c_str(),
+             PassOption(pass, "side_die").c_str(), stroke.c_str(), ordinal.c_str());
   if (p.dies.side.Given()) PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), p.dies.side));
   PetscCall(CheckUpperMotion(comm, opt, pass)); // (its motion kind's check: motion_checks.hpp)
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -80,6 +80,7 @@ PetscErrorCode ReadToolSceneOptions(MPI_Comm comm, OptionReader &read, Options &
   PetscCall(ReadLowerDieMotion(comm, read, opt)); // (die_motion_options.cpp)
   PetscCall(ReadUpperDieShape(comm, read, opt));  // (die_shape_options.cpp)
   PetscCall(ReadUpperDieMotion(comm, read, opt));
+  PetscCall(ReadPassShapes(comm, read, opt)); // (die_shape_options.cpp; after the first pass's, their defaults)
   PetscCall(ReadSideDieShape(comm, read, opt));
   PetscCall(ReadPassMotions(comm, read, opt)); // (die_motion_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -93,6 +94,10 @@ PetscErrorCode CheckToolSceneOptions(MPI_Comm comm, Options &opt)
   PetscCall(CheckLowerDieMotion(comm, opt));
   PetscCall(CheckPassesAndHolds(comm, opt));
   PetscCall(CheckShape(comm, kVShape, "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
+  for (int pass = 1; pass < kMaxPasses; ++pass)                          // (a later pass's own V numbers)
+    if (LaterPass(opt, pass).dies.upper.kind == kVShape)
+      PetscCall(
+        CheckShape(comm, kVShape, Formatted("pass%d_die_", pass + 1).c_str(), DiesOfPass(opt, pass).upper.spec));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
