@@ -45,7 +45,7 @@ ModelChoice ModelOf(const Options &opt)
     p.off_axis = OffAxisBy(opt, pass);
     p.quarters = PassQuarters(opt, pass), p.quarter_turn = QuarterTurn(opt, pass);
   }
-  model.part = opt.model.part, model.hold = opt.model.full_hold;
+  model.part = opt.tools.model.part, model.hold = opt.tools.model.full_hold;
   if (model.part == TubeModel::Auto)
     model.part = model.QuarterExact() ? TubeModel::Quarter : model.HalfExact() ? TubeModel::Half : TubeModel::Full;
   return model;

@@ -24,7 +24,10 @@ const LowerMotion kLowerMotions[] = {
 };
 static_assert(std::size(kLowerMotions) == static_cast<size_t>(LowerDieMove::Own) + 1, "one for each LowerDieMove");
 
-const LowerMotion &LowerMotionOf(const Options &o) { return kLowerMotions[static_cast<size_t>(o.lower_motion.move)]; }
+const LowerMotion &LowerMotionOf(const Options &o)
+{
+  return kLowerMotions[static_cast<size_t>(o.tools.lower_motion.move)];
+}
 } // namespace
 
 PetscErrorCode SetMotion(MPI_Comm comm, const char *option, const std::string &kind, const MotionSpec &spec, Tool &t)

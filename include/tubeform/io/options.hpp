@@ -30,6 +30,19 @@ namespace tf {
 // -full_hold rotation and the later passes' -pass<N>_die_profile are its) or a flat plate (flattening).
 enum class ScenePress { None, Die, Plate };
 
+// The tool scenes' own parameters (squaring, flattening; docs/dies.md), read and checked by them
+// (scenes/tool_options.hpp): the model, the passes and the lower die's motion.
+struct ToolSceneParams {
+  ModelParams model;         // the part modelled, its support (io/press_params.hpp)
+  LowerDieSpec lower_motion; // the lower die's motion, every pass's (-lower_die_motion; LowerDie)
+  // The passes: the first (-stroke, -die_*, -lower_die, -side_die), then each after the springback of the one before
+  // (-pass2_* to -pass9_*; a stroke of 0: no such pass). FirstPass, LaterPass, DiesOfPass.
+  std::vector<PassSpec> passes = DefaultPasses();
+};
+
+// What a run is told: the run-wide options (the scene, the tube, its mesh and element, the material, the driver, the
+// estimate, the output), the loading's (the stroke, the release; more than one scene's), the friction, the tool
+// scenes' own, and the chosen scene's own parameters.
 struct Options {
   std::string scene = "pressure";      // a name of the scene registry (scenes/registry.hpp)
   ScenePress press = ScenePress::None; // what it presses with (its SceneOptions', set with it; PressesWithTools)
@@ -48,15 +61,10 @@ struct Options {
   MaterialParams material;
   // The incremental driver's (io/driver_params.hpp; read and checked by the driver).
   DriverParams driver;
-  StrokeParams stroke; // the stroke and its path (io/press_params.hpp; read and checked by io, stroke_options.cpp)
-  // Tools, contact, friction (docs/dies.md; docs/theory.md, section 6)
-  LowerDieSpec lower_motion; // the lower die's motion, every pass's (-lower_die_motion; LowerDie)
-  ModelParams model; // the part modelled, its support (io/press_params.hpp; read and checked by io, model_options.cpp)
-  // The passes: the first (-stroke, -die_*, -lower_die, -side_die), then each after the springback of the one before
-  // (-pass2_* to -pass9_*; a stroke of 0: no such pass). FirstPass, LaterPass, DiesOfPass.
-  std::vector<PassSpec> passes = DefaultPasses();
-  FrictionParams friction; // the contact and friction options (io/friction_params.hpp; read and checked by io)
-  ReleaseParams release; // the release after loading (io/press_params.hpp; read and checked by io, release_options.cpp)
+  StrokeParams stroke;     // the stroke and its path (io/press_params.hpp; the tool scenes' and the column's)
+  ToolSceneParams tools;   // the tool scenes' own (read and checked by them; the driver's answer reads the passes)
+  FrictionParams friction; // contact and friction (contact/friction_params.hpp; the tool scenes' and the slide's)
+  ReleaseParams release;   // the release after loading (io/press_params.hpp; the tool scenes' and the bending's)
   // The chosen scene's own parameters where it has any (a scene without tools: its struct of scenes/scene_params.hpp,
   // read and checked by the scene, SceneOptions), kept here so that they travel with the run's options to its levels
   // and companions; the scene reads them back with OwnParams.
@@ -168,13 +176,13 @@ inline void ChooseElement(Options &opt)
 
 // The first pass (-stroke, -die_*, -lower_die, -side_die) and its dies as given; pass `pass` (1 the second, ...) of
 // the passes after it: its -pass<pass + 1>_* options.
-inline const PassSpec &FirstPass(const Options &opt) { return opt.passes[0]; }
-inline const DieSet &FirstDies(const Options &opt) { return opt.passes[0].dies; }
-inline const PassSpec &LaterPass(const Options &opt, int pass) { return opt.passes[pass]; }
+inline const PassSpec &FirstPass(const Options &opt) { return opt.tools.passes[0]; }
+inline const DieSet &FirstDies(const Options &opt) { return opt.tools.passes[0].dies; }
+inline const PassSpec &LaterPass(const Options &opt, int pass) { return opt.tools.passes[pass]; }
 // How far pass `pass` presses (io/pass_extent.hpp): the first pass's stroke -stroke, a later one's its own.
 inline PassExtent Extent(const Options &opt, int pass)
 {
-  return ExtentOf(opt.passes[pass], pass, pass == 0 ? opt.stroke.u : opt.passes[pass].stroke);
+  return ExtentOf(opt.tools.passes[pass], pass, pass == 0 ? opt.stroke.u : opt.tools.passes[pass].stroke);
 }
 // Some pass presses with a force (its stroke the outcome).
 inline bool AnyPassForced(const Options &opt)
@@ -205,12 +213,12 @@ inline bool VDie(const Options &opt) { return FirstDies(opt).upper.VDie(); }
 // The lower die's motion as the scenes take it: its word, kind and spec, the spec moving up (y) by the stroke.
 inline LowerDieSpec LowerDie(const Options &opt)
 {
-  LowerDieSpec die = opt.lower_motion;
+  LowerDieSpec die = opt.tools.lower_motion;
   die.spec.direction = {0.0, 1.0};
   return die;
 }
 // It goes with the upper die's motion as `move` says (mirror, fixed or its own).
-inline bool LowerDieMoves(const Options &opt, LowerDieMove move) { return opt.lower_motion.move == move; }
+inline bool LowerDieMoves(const Options &opt, LowerDieMove move) { return opt.tools.lower_motion.move == move; }
 // A pass's upper die's kind is `kind` (`dies`: a pass's, FirstDies(opt), DiesOfPass or the scene's).
 inline bool DieMoves(const DieSet &dies, const char *kind) { return dies.motion.kind == kind; }
 // The first pass's upper die's own path (-die_path with its turns; none unless -die_motion path).
@@ -247,7 +255,10 @@ inline bool MotionOffAxis(const DieMotion &m)
 }
 // The first pass's upper die leaves the press's y axis: -die_offset, or a -die_path with a sideways motion or a
 // turn.
-inline bool DieOffAxis(const Options &opt) { return opt.model.die_offset != 0 || MotionOffAxis(FirstDies(opt).motion); }
+inline bool DieOffAxis(const Options &opt)
+{
+  return opt.tools.model.die_offset != 0 || MotionOffAxis(FirstDies(opt).motion);
+}
 
 // Pass `pass`'s upper die leaves its press's y axis: the first pass's as DieOffAxis says, a later one's on a path
 // of its own with a sideways point or a turn.

@@ -1,6 +1,6 @@
-// A pass of the press and its dies as the options give them (Options::passes; docs/dies.md): the upper die's shape
-// and motion, the lower and side dies' shapes, the side dies' force, the pass's stroke and turn. io reads them under
-// the pass's prefix (-die_*, -lower_die, -side_die; -pass<N>_*: tool_options.hpp), the scenes take them through
+// A pass of the press and its dies as the options give them (Options::tools.passes; docs/dies.md): the upper die's
+// shape and motion, the lower and side dies' shapes, the side dies' force, the pass's stroke and turn. io reads them
+// under the pass's prefix (-die_*, -lower_die, -side_die; -pass<N>_*: tool_options.hpp), the scenes take them through
 // io/options.hpp (DiesOfPass, UpperDie, ...).
 #pragma once
 
@@ -127,7 +127,7 @@ struct DieSet {
                          // the stroke; the first pass's only)
 };
 
-// A pass of the press (Options::passes: the first, then each after the springback of the one before): its stroke,
+// A pass of the press (Options::tools.passes: the first, then each after the springback of the one before): its stroke,
 // its turn and its dies, read under the pass's prefix (the first's -die_*, -lower_die, -side_die; a later one's
 // -pass<N>_*). A later pass's shapes where given, each chosen as the first pass's is (DrawingChoice, ShapeChoice),
 // else unset (an upper die of kind "", a lower or side die Unset: the first pass's, DiesOfPass).

@@ -22,7 +22,8 @@ MotionCheck FindMotionCheck(const std::string &kind)
 PetscErrorCode CheckUpperMotion(MPI_Comm comm, const Options &opt, int pass)
 {
   PetscFunctionBeginUser;
-  if (const MotionCheck check = FindMotionCheck(opt.passes[pass].dies.motion.kind)) PetscCall(check(comm, opt, pass));
+  if (const MotionCheck check = FindMotionCheck(opt.tools.passes[pass].dies.motion.kind))
+    PetscCall(check(comm, opt, pass));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

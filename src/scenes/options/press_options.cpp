@@ -18,8 +18,9 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   const bool press = PressesWithTools(opt);
   const DieSet &first = FirstDies(opt);
   bool asked = !first.lower.Is(DieFrom::Mirror) || !LowerDieMoves(opt, LowerDieMove::Mirror) ||
-               opt.model.part != TubeModel::Auto || !DieMoves(first, kStrokeMotion) || !first.side.Is(DieFrom::None) ||
-               first.side_force != 0 || opt.model.die_offset != 0 || opt.model.full_hold != FullHold::Auto;
+               opt.tools.model.part != TubeModel::Auto || !DieMoves(first, kStrokeMotion) ||
+               !first.side.Is(DieFrom::None) || first.side_force != 0 || opt.tools.model.die_offset != 0 ||
+               opt.tools.model.full_hold != FullHold::Auto;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     const PassSpec &p = LaterPass(opt, pass);
     asked = asked || p.stroke != 0 || p.turn != 0 || !p.dies.upper.kind.empty() || p.dies.lower.Given() ||
@@ -51,7 +52,7 @@ PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
              comm, PETSC_ERR_USER_INPUT,
              "-lower_die_motion %s: the lower die follows its motion as the stroke rises, in one pass: not with "
              "-stroke_path, -unload withdraw, -pass2_stroke or -stroke_corner_radius",
-             opt.lower_motion.word.c_str());
+             opt.tools.lower_motion.word.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -72,8 +73,8 @@ PetscErrorCode ReadToolSceneOptions(MPI_Comm comm, OptionReader &read, Options &
   PetscFunctionBeginUser;
   {
     TF_OPTIONS_BEGIN(comm, "tubeform: tube model and passes");
-    PetscCall(ReadModelOptions(PetscOptionsObject, read, opt.model)); // (model_options.cpp)
-    PetscCall(ReadToolOptions(PetscOptionsObject, read, opt));        // (pass_options.cpp)
+    PetscCall(ReadModelOptions(PetscOptionsObject, read, opt.tools.model)); // (model_options.cpp)
+    PetscCall(ReadToolOptions(PetscOptionsObject, read, opt));              // (pass_options.cpp)
     TF_OPTIONS_END();
   }
   PetscCall(ReadLowerDieShape(comm, read, opt));  // (die_shape_options.cpp)
