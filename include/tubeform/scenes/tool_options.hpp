@@ -61,7 +61,7 @@ PetscErrorCode ReadUpperMotion(MPI_Comm comm, OptionReader &read, const UpperMot
 PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt);
 // (both in die_motion_options.cpp)
 // The upper die's shape, its own block under the options prefix die_: the V-die, its options -die_angle, -die_r_apex,
-// -die_u_close, -die_r_edge read by the V kind of tool/shape.hpp (and checked by it in CheckOptions), unless
+// -die_u_close, -die_r_edge read by the V kind of tool/shape.hpp (and checked by it in CheckToolSceneOptions), unless
 // -die_profile names a file: the first pass's dies' upper (opt.tools.passes[0].dies; die_shape_options.cpp).
 PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 // A later pass's own V-die numbers, each pass's block under the prefix pass<N>_die_ (-pass2_die_angle, _r_apex,
@@ -71,9 +71,9 @@ PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt
 PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt);
 // The first pass's lower die's and side dies' shapes (opt.tools.passes[0].dies), each its own block: -lower_die
 // (mirror, flat or a file) into its lower, -side_die (none, mirror, flat or a file) into its side (ShapeChoice; both in
-// die_shape_options.cpp, refused where they do not go with the other options by CheckOptions), and in the side dies'
-// block their force, -side_force, into its side_force. Collective: CheckSideDieOptions refuses -side_die and
-// -side_force where they do not go with the other options, one line naming the option (called by CheckOptions).
+// die_shape_options.cpp, refused where they do not go with the other options by CheckToolSceneOptions), and in the side
+// dies' block their force, -side_force, into its side_force. Collective: CheckSideDieOptions refuses -side_die and
+// -side_force where they do not go with the other options, one line naming the option (CheckToolSceneOptions).
 PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt);
 PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt);

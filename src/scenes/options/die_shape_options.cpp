@@ -2,14 +2,14 @@
 // V-die of the shape registry (tool/shape.hpp) unless -die_profile names a file, a drawing of the registry's kind
 // for the file's name (DrawingKind; its text read when the die is drawn). The V kind reads its own options,
 // -die_angle, -die_r_apex, -die_u_close, -die_r_edge, with a file too (a scene file's V-die stays allowed under a
-// -die_profile given after it), and its checker refuses their values (CheckOptions).
+// -die_profile given after it), and its checker refuses their values (CheckToolSceneOptions); a later pass's own V
+// numbers likewise under its prefix pass<N>_die_ (ReadPassShapes).
 // The lower die's and the side dies' shapes, each its own block: a word (-lower_die, -side_die) choosing mirror (the
 // upper die's shape, a relation between the tools), flat (the flat kind), none (no side dies) or a file (its kind by
 // its name); these kinds read no options. The scenes place and size them (scenes/die.cpp).
 #include <cmath>
 
 #include "tubeform/core/core.hpp"
-
 #include "tubeform/scenes/tool_options.hpp"
 
 namespace tf {
