@@ -11,6 +11,7 @@
 #include "tubeform/material/factory.hpp"
 #include "tubeform/scenes/registry.hpp"
 #include "tubeform/scenes/tool_columns.hpp"
+#include "tubeform/scenes/tool_scene.hpp"
 
 namespace tf {
 

@@ -21,12 +21,4 @@ PetscErrorCode ReadReleaseOptions(PetscOptionItems *PetscOptionsObject, OptionRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode CheckReleaseOptions(MPI_Comm comm, const Options &opt)
-{
-  PetscFunctionBeginUser;
-  PetscCheck(QuarterModel(opt) || opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
-             "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 } // namespace tf

@@ -39,8 +39,7 @@ PetscErrorCode CheckStrokePath(MPI_Comm comm, Options &opt)
   }
   PetscCheck(s.path.back() > 0, comm, PETSC_ERR_USER_INPUT,
              "-stroke_path: the last stroke is the press's final one and must be positive");
-  PetscCheck(!Extent(opt, 0).Forced() && s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-             "-stroke_path: not with -die_force or -stroke_corner_radius");
+  PetscCheck(s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT, "-stroke_path: not with -stroke_corner_radius");
   s.u = s.path.back();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -50,13 +49,6 @@ PetscErrorCode CheckStrokeOptions(MPI_Comm comm, Options &opt)
 {
   StrokeParams &s = opt.stroke;
   PetscFunctionBeginUser;
-  PetscCheck(VDie(opt) || s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-             "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
-             s.corner_radius);
-  PetscCheck(
-    FirstDies(opt).lower.Is(DieFrom::Mirror) || s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-    "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
-    s.corner_radius, ShapeWord(FirstDies(opt).lower).c_str());
   if (!s.path.empty()) PetscCall(CheckStrokePath(comm, opt));
   PetscCheck(s.corner_radius >= 0, comm, PETSC_ERR_USER_INPUT, "-stroke_corner_radius %g: must be non-negative",
              s.corner_radius);

@@ -26,7 +26,7 @@ static_assert(std::size(kLowerMotions) == static_cast<size_t>(LowerDieMove::Own)
 
 const LowerMotion &LowerMotionOf(const Options &o)
 {
-  return kLowerMotions[static_cast<size_t>(o.tools.lower_motion.move)];
+  return kLowerMotions[static_cast<size_t>(ToolsOf(o).lower_motion.move)];
 }
 } // namespace
 

@@ -44,7 +44,7 @@ PressScene::PressScene(const Options &opt, bool squaring)
   passes_[0].path = FirstDies(opt).motion.OwnPath() ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
   for (int k = 0; k < (int)passes_.size(); ++k) {
     Pass &p = passes_[k];
-    p.extent = ExtentOf(opt.tools.passes[k], k, k == 0 ? stroke_ : LaterPass(opt, k).stroke);
+    p.extent = ExtentOf(ToolsOf(opt).passes[k], k, k == 0 ? stroke_ : LaterPass(opt, k).stroke);
     p.turn = PassTurn(opt, k, half_, full_);
     p.dies = DiesOfPass(opt, k), p.reach = DieReach(opt, p.dies, squaring);
     p.held = model.HeldByRotation(k), p.side_dies = !p.dies.side.Is(DieFrom::None);
@@ -104,7 +104,7 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   // (-side_force: die_motion.cpp; the upper die's own motion, -die_motion path or force, set with its dies: a path
   // of its own to move back along before the offset)
   PetscCall(SetSideForces(m.comm, opt_, SideDie(), tools.tools));
-  const double offset = opt_.tools.model.die_offset; // (-die_offset)
+  const double offset = ToolsOf(opt_).model.die_offset; // (-die_offset)
   if (offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, offset, tools.tools[kUpper]));
   tools.candidates = "outer";
   for (int pass = (int)passes_.size() - 1; full_ && pass >= 0; --pass) { // (the later passes' axes checked now)

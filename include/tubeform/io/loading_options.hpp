@@ -14,13 +14,10 @@ namespace tf {
 
 // -stroke, -stroke_corner_radius, -stroke_path into opt.stroke (stroke_options.cpp).
 PetscErrorCode ReadStrokeOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, StrokeParams &s);
-// Collective: refuses the stroke's values and the dies the corner-radius rule is not for; a -stroke_path sets the
-// final stroke (after the tool scenes' checks: a -die_path sets it too, CheckOptions).
+// Collective: refuses the stroke's values; a -stroke_path sets the final stroke (after the tool scenes' checks,
+// which refuse what the stroke cannot do with their dies; a -die_path sets it too: CheckOptions).
 PetscErrorCode CheckStrokeOptions(MPI_Comm comm, Options &opt);
 // -unload, -springback into opt.release (release_options.cpp).
 PetscErrorCode ReadReleaseOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ReleaseParams &r);
-// Collective: refuses a release the model cannot take (called by the tool scenes' check after their dies' and
-// passes' checks).
-PetscErrorCode CheckReleaseOptions(MPI_Comm comm, const Options &opt);
 
 } // namespace tf

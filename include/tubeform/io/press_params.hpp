@@ -38,21 +38,4 @@ struct ReleaseParams {
   Springback springback = Springback::Auto;
 };
 
-// The part of the tube the tool scenes model (-model): the quarter where it is exact (auto: ModelOf, which picks
-// the half or the full otherwise), or the one asked for.
-enum class TubeModel { Auto, Quarter, Half, Full };
-inline constexpr const char *kModelWords[] = {"auto", "quarter", "half", "full"};
-// The full model's support (-full_hold): auto (ModelChoice::HeldByRotation), its axis pins, or the rotation hold.
-enum class FullHold { Auto, Pins, Rotation };
-inline constexpr const char *kFullHoldWords[] = {"auto", "pins", "rotation"};
-
-// The model (-model, -die_offset, -full_hold): the part of the tube modelled, the first pass's upper die off the axis
-// (which only the full model takes, held by the rotation hold: it chooses the model and its support with the dies'
-// paths and the passes' turns: ModelOf), and the full model's support.
-struct ModelParams {
-  TubeModel part = TubeModel::Auto;    // quarter, half, full, or auto: the quarter where it is exact
-  double die_offset = 0;               // the first pass's upper die off the y axis along the press's x (mm; full model)
-  FullHold full_hold = FullHold::Auto; // the full model's support: pins, rotation (the rotation hold), auto
-};
-
 } // namespace tf

@@ -4,8 +4,8 @@
 // and the lower one of -lower_die.
 #pragma once
 
-#include "tubeform/io/options.hpp"
 #include "tubeform/metrics/shape.hpp"
+#include "tubeform/scenes/tool_scene.hpp"
 #include "tubeform/tool/tool.hpp"
 
 namespace tf {

@@ -7,7 +7,7 @@
 
 #include <petscsys.h>
 
-#include "tubeform/io/options.hpp"
+#include "tubeform/scenes/tool_scene.hpp"
 
 namespace tf {
 

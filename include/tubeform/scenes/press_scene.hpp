@@ -80,7 +80,7 @@ private:
   // A pass: how far it presses, its turn, its dies, its upper die's way, its hold, its side dies and (a later pass)
   // where its dies start; the scene's passes are a list of them, built once from the options.
   struct Pass {
-    PassExtent extent;              // its stroke or force (the first pass's stroke: stroke_; io/pass_extent.hpp)
+    PassExtent extent;              // its stroke or force (the first pass's stroke: stroke_; scenes/pass_extent.hpp)
     TurnMap turn;                   // draws its dies, built in its press's frame, into the tube's (PassTurn)
     StrokePath path;                // its stroke over its press: the first pass's -stroke_path or -die_path; a later
                                     // one's straight by its stroke from where its dies start (PassDies), or its

@@ -7,6 +7,7 @@
 
 #include "tubeform/core/option_reader.hpp"
 #include "tubeform/io/options.hpp"
+#include "tubeform/scenes/tool_scene.hpp"
 
 namespace tf {
 
@@ -17,7 +18,7 @@ PetscErrorCode ReadToolSceneOptions(MPI_Comm comm, OptionReader &read, Options &
 // Collective: refuses what the dies, the passes, the model and the release cannot take together, in one line naming
 // the option, and settles what they derive (a -die_path's end is the stroke U) before the loading's checks read it.
 PetscErrorCode CheckToolSceneOptions(MPI_Comm comm, Options &opt);
-// -model, -die_offset, -full_hold into opt.tools.model (model_options.cpp).
+// -model, -die_offset, -full_hold into ToolsOf(opt).model (model_options.cpp).
 PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ModelParams &m);
 // Collective: refuses a model the dies cannot take (the quarter without mirrored dies, a die off the axis without the
 // full model), the die's offset out of range and a support the model or the forces cannot take (after the passes'
@@ -33,14 +34,14 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
 // PetscOptionsObject).
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt);
 // The lower die's motion, its own block under the options prefix lower_die_ (-lower_die_motion: a word naming a
-// kind of tool/motion.hpp; that kind's options, -lower_die_*, read by the kind): opt.tools.lower_motion (LowerDieSpec).
-// An option of another of its words' kinds given is refused, naming it.
+// kind of tool/motion.hpp; that kind's options, -lower_die_*, read by the kind): ToolsOf(opt).lower_motion
+// (LowerDieSpec). An option of another of its words' kinds given is refused, naming it.
 PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
 // The upper die's motion, its own block under the options prefix die_ (-die_motion: stroke, path or force, each a kind
 // of tool/motion.hpp; that kind's options, -die_path, -die_path_turn, -die_pivot, -die_force, read by the kind):
-// the first pass's dies' motion (opt.tools.passes[0].dies). Without -die_motion the old spellings choose: -die_path (or
-// its turns or pivot) path, -die_force other than 0 force (-die_force 0 is allowed with any word). An option of another
-// word's kind is refused, naming it.
+// the first pass's dies' motion (ToolsOf(opt).passes[0].dies). Without -die_motion the old spellings choose: -die_path
+// (or its turns or pivot) path, -die_force other than 0 force (-die_force 0 is allowed with any word). An option of
+// another word's kind is refused, naming it.
 PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
 // An upper die's motion's block: its options prefix (die_: -die_motion, -die_path, ...), its title in -help, the help
 // of -<prefix>motion, and how many of the upper die's words (the registry's kinds' MotionKind::upper_word, in the
@@ -62,14 +63,14 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt);
 // (both in die_motion_options.cpp)
 // The upper die's shape, its own block under the options prefix die_: the V-die, its options -die_angle, -die_r_apex,
 // -die_u_close, -die_r_edge read by the V kind of tool/shape.hpp (and checked by it in CheckToolSceneOptions), unless
-// -die_profile names a file: the first pass's dies' upper (opt.tools.passes[0].dies; die_shape_options.cpp).
+// -die_profile names a file: the first pass's dies' upper (ToolsOf(opt).passes[0].dies; die_shape_options.cpp).
 PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 // A later pass's own V-die numbers, each pass's block under the prefix pass<N>_die_ (-pass2_die_angle, _r_apex,
 // _u_close, _r_edge, read by the V kind; the first pass's numbers their defaults): where one is given the pass's upper
 // die is a V-die of its numbers (its -pass<N>_die_profile, where given too, the die, as the first pass's). Pass 2's
 // listed by -help; a later one's where given (die_shape_options.cpp).
 PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt);
-// The first pass's lower die's and side dies' shapes (opt.tools.passes[0].dies), each its own block: -lower_die
+// The first pass's lower die's and side dies' shapes (ToolsOf(opt).passes[0].dies), each its own block: -lower_die
 // (mirror, flat or a file) into its lower, -side_die (none, mirror, flat or a file) into its side (ShapeChoice; both in
 // die_shape_options.cpp, refused where they do not go with the other options by CheckToolSceneOptions), and in the side
 // dies' block their force, -side_force, into its side_force. Collective: CheckSideDieOptions refuses -side_die and

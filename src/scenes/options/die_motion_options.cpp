@@ -118,21 +118,21 @@ PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &op
   PetscFunctionBeginUser;
   for (size_t k = 0; k < words.size(); ++k) {
     list.push_back(words[k].word.c_str());
-    if (opt.tools.lower_motion.word == words[k].word) choice = (PetscInt)k;
+    if (ToolsOf(opt).lower_motion.word == words[k].word) choice = (PetscInt)k;
     for (const std::string &name : FindMotionKind(words[k].kind)->options) read.Note(("-lower_die_" + name).c_str());
   }
   read.Note("-lower_die_motion", help.c_str());
-  opt.tools.lower_motion.spec.tool = "the lower die";
+  ToolsOf(opt).lower_motion.spec.tool = "the lower die";
   PetscOptionsBegin(comm, "lower_die_", "tubeform: lower die motion", "tubeform");
   OptionsBlock block(PetscOptionsObject);
   PetscCall(PetscOptionsEList("-motion", help.c_str(), "tubeform", list.data(), (PetscInt)list.size(), list[choice],
                               &choice, nullptr));
-  opt.tools.lower_motion.word = words[choice].word, opt.tools.lower_motion.kind = words[choice].kind;
-  opt.tools.lower_motion.move = LowerDieMoveOf(opt.tools.lower_motion.word);
+  ToolsOf(opt).lower_motion.word = words[choice].word, ToolsOf(opt).lower_motion.kind = words[choice].kind;
+  ToolsOf(opt).lower_motion.move = LowerDieMoveOf(ToolsOf(opt).lower_motion.word);
   if (opt.help)
-    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, opt.tools.lower_motion.spec));
+    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, ToolsOf(opt).lower_motion.spec));
   else
-    PetscCall(ReadMotion(PetscOptionsObject, opt.tools.lower_motion.kind, opt.tools.lower_motion.spec));
+    PetscCall(ReadMotion(PetscOptionsObject, ToolsOf(opt).lower_motion.kind, ToolsOf(opt).lower_motion.spec));
   block.Release();
   PetscOptionsEnd();
   if (!opt.help) PetscCall(RefuseOthers(comm, "lower_die_", words, words[choice]));
@@ -181,7 +181,7 @@ PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &op
     "-die_path (or its turns or pivot) means path, -die_force other than 0 force (docs/dies.md)",
     UpperWords().size()};
   PetscFunctionBeginUser;
-  DieMotion &motion = opt.tools.passes[0].dies.motion;
+  DieMotion &motion = ToolsOf(opt).passes[0].dies.motion;
   motion.spec.tool = "the " + opt.scene + " scene's upper die";
   PetscCall(ReadUpperMotion(comm, read, block, opt.help, motion));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -194,7 +194,7 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
     for (const std::string &name : FindMotionKind(w.kind)->options) names.push_back(name);
   PetscFunctionBeginUser;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
-    PassSpec &p = opt.tools.passes[pass];
+    PassSpec &p = ToolsOf(opt).passes[pass];
     const UpperMotionBlock block{
       Formatted("pass%d_die_", pass + 1), Formatted("tubeform: pass %d upper die motion", pass + 1),
       pass > 1 ? Formatted("squaring: pass %d's, as -pass2_die_motion", pass + 1)

@@ -51,7 +51,7 @@ PetscErrorCode ReadDrawingChoice(PetscOptionItems *PetscOptionsObject, OptionRea
 
 PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 {
-  DieShape &die = opt.tools.passes[0].dies.upper;
+  DieShape &die = ToolsOf(opt).passes[0].dies.upper;
   const ShapeKind *v = FindShapeKind(kVShape);
   std::string help = "squaring: the upper die's right half from a DXF file (*.dxf) or a text profile of lines and arcs "
                      "(docs/dies.md) in place of the V-die of ";
@@ -80,7 +80,7 @@ PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt)
   const ShapeKind *v = FindShapeKind(kVShape);
   PetscFunctionBeginUser;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
-    DieShape &die = opt.tools.passes[pass].dies.upper;
+    DieShape &die = ToolsOf(opt).passes[pass].dies.upper;
     const std::string prefix = Formatted("pass%d_die_", pass + 1);
     const std::string title = Formatted("tubeform: pass %d upper die shape", pass + 1);
     bool given = false;
@@ -112,13 +112,13 @@ PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt
   PetscCall(ReadWordShape(comm, read, "-lower_die",
                           "tool scenes: the lower die: mirror (of the upper one), flat (a floor at y = -Ro), or a "
                           "profile file (*.dxf or text) drawn as an upper die, mirrored below the tube",
-                          "tubeform: lower die shape", false, opt.tools.passes[0].dies.lower));
+                          "tubeform: lower die shape", false, ToolsOf(opt).passes[0].dies.lower));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 {
-  DieSet &dies = opt.tools.passes[0].dies;
+  DieSet &dies = ToolsOf(opt).passes[0].dies;
 
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "tubeform: side die shape", "tubeform");

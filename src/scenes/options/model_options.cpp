@@ -1,7 +1,7 @@
-// The model's options: read into Options::tools.model (in the block "tube model and passes" of -help) and checked,
+// The model's options: read into ToolSceneParams::model (in the block "tube model and passes" of -help) and checked,
 // one line naming the option: the part of the tube modelled, the first pass's die off the axis (which only the full
 // model takes), and how the full model is held (the model they and the passes' tools choose: ModelOf,
-// io/model_choice.cpp).
+// scenes/options/model_choice.cpp).
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -35,7 +35,7 @@ PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionRead
 
 PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
 {
-  const ModelParams &m = opt.tools.model;
+  const ModelParams &m = ToolsOf(opt).model;
   const ModelChoice model = ModelOf(opt);
   PetscFunctionBeginUser;
   PetscCheck(m.part != TubeModel::Quarter || model.Mirrored(), comm, PETSC_ERR_USER_INPUT,

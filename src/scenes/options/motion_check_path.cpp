@@ -45,7 +45,7 @@ PetscErrorCode CheckFirstPath(MPI_Comm comm, const Options &opt)
   PetscCall(CheckUpperPath(comm, opt, FirstDies(opt).motion.spec, "-die_path"));
   PetscCheck(opt.stroke.path.empty() && opt.stroke.corner_radius <= 0 && PassCount(opt) == 1 &&
                FirstDies(opt).side.Is(DieFrom::None) && opt.release.unload != Unload::Withdraw &&
-               opt.tools.model.die_offset == 0,
+               ToolsOf(opt).model.die_offset == 0,
              comm, PETSC_ERR_USER_INPUT,
              "-die_path: in place of -stroke and -stroke_path, in one pass: not with -stroke_path, "
              "-stroke_corner_radius, -pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways is "

@@ -22,7 +22,7 @@ MotionCheck FindMotionCheck(const std::string &kind)
 PetscErrorCode CheckUpperMotion(MPI_Comm comm, const Options &opt, int pass)
 {
   PetscFunctionBeginUser;
-  if (const MotionCheck check = FindMotionCheck(opt.tools.passes[pass].dies.motion.kind))
+  if (const MotionCheck check = FindMotionCheck(ToolsOf(opt).passes[pass].dies.motion.kind))
     PetscCall(check(comm, opt, pass));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

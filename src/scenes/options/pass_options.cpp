@@ -71,9 +71,9 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(ReadSecondPass(PetscOptionsObject, read, opt.tools.passes[1]));
+  PetscCall(ReadSecondPass(PetscOptionsObject, read, ToolsOf(opt).passes[1]));
   for (int number = 3; number <= kMaxPasses; ++number)
-    PetscCall(ReadLaterPass(PetscOptionsObject, read, number, opt.tools.passes[number - 1]));
+    PetscCall(ReadLaterPass(PetscOptionsObject, read, number, ToolsOf(opt).passes[number - 1]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "tubeform/core/core.hpp"
-#include "tubeform/io/options.hpp"
 #include "tubeform/scenes/motion_checks.hpp"
+#include "tubeform/scenes/tool_scene.hpp"
 
 namespace tf {
 
@@ -76,9 +76,9 @@ PetscErrorCode CheckPassTurn(MPI_Comm comm, const Options &opt, int pass)
                "about the y axis only; a quarter turn presses it off that axis, which the pins would hold it against "
                "(use -full_hold rotation or auto)",
                turn.c_str(), p.turn, PassOrdinal(before).c_str(), lower.c_str(), PassLowerDie(opt, before).c_str(),
-               opt.tools.lower_motion.word.c_str());
+               ToolsOf(opt).lower_motion.word.c_str());
   }
-  PetscCheck(opt.tools.model.part != TubeModel::Half || quarters % 2 == 0, comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(ToolsOf(opt).model.part != TubeModel::Half || quarters % 2 == 0, comm, PETSC_ERR_USER_INPUT,
              "%s %g with -model half: the half model's plane x = 0 is no symmetry plane of a press turned by 90 "
              "degrees; use -model full (or auto)",
              turn.c_str(), p.turn);

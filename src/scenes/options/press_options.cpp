@@ -18,9 +18,9 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   const bool press = PressesWithTools(opt);
   const DieSet &first = FirstDies(opt);
   bool asked = !first.lower.Is(DieFrom::Mirror) || !LowerDieMoves(opt, LowerDieMove::Mirror) ||
-               opt.tools.model.part != TubeModel::Auto || !DieMoves(first, kStrokeMotion) ||
-               !first.side.Is(DieFrom::None) || first.side_force != 0 || opt.tools.model.die_offset != 0 ||
-               opt.tools.model.full_hold != FullHold::Auto;
+               ToolsOf(opt).model.part != TubeModel::Auto || !DieMoves(first, kStrokeMotion) ||
+               !first.side.Is(DieFrom::None) || first.side_force != 0 || ToolsOf(opt).model.die_offset != 0 ||
+               ToolsOf(opt).model.full_hold != FullHold::Auto;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     const PassSpec &p = LaterPass(opt, pass);
     asked = asked || p.stroke != 0 || p.turn != 0 || !p.dies.upper.kind.empty() || p.dies.lower.Given() ||
@@ -52,7 +52,34 @@ PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
              comm, PETSC_ERR_USER_INPUT,
              "-lower_die_motion %s: the lower die follows its motion as the stroke rises, in one pass: not with "
              "-stroke_path, -unload withdraw, -pass2_stroke or -stroke_corner_radius",
-             opt.tools.lower_motion.word.c_str());
+             ToolsOf(opt).lower_motion.word.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The release the model cannot take: the dies withdrawn from the half model would let the tube come free of both.
+PetscErrorCode CheckRelease(MPI_Comm comm, const Options &opt)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(QuarterModel(opt) || opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
+             "-unload withdraw: not with the half model (the tube would come free of both dies); use -unload reverse");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The stroke's rules the dies cannot take: the corner-radius rule is two equal V-dies'; a path of strokes is not a
+// force's.
+PetscErrorCode CheckStrokeWithDies(MPI_Comm comm, const Options &opt)
+{
+  const StrokeParams &s = opt.stroke;
+  PetscFunctionBeginUser;
+  PetscCheck(VDie(opt) || s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+             "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
+             s.corner_radius);
+  PetscCheck(
+    FirstDies(opt).lower.Is(DieFrom::Mirror) || s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
+    "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
+    s.corner_radius, ShapeWord(FirstDies(opt).lower).c_str());
+  PetscCheck(s.path.empty() || !Extent(opt, 0).Forced(), comm, PETSC_ERR_USER_INPUT,
+             "-stroke_path: not with -die_force");
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -60,9 +87,9 @@ PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 PetscErrorCode CheckPassesAndHolds(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(CheckPassTurns(comm, opt));      // (passes_check.cpp)
-  PetscCall(CheckModelOptions(comm, opt));   // (model_options.cpp)
-  PetscCall(CheckReleaseOptions(comm, opt)); // (release_options.cpp)
+  PetscCall(CheckPassTurns(comm, opt));    // (passes_check.cpp)
+  PetscCall(CheckModelOptions(comm, opt)); // (model_options.cpp)
+  PetscCall(CheckRelease(comm, opt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -73,8 +100,8 @@ PetscErrorCode ReadToolSceneOptions(MPI_Comm comm, OptionReader &read, Options &
   PetscFunctionBeginUser;
   {
     TF_OPTIONS_BEGIN(comm, "tubeform: tube model and passes");
-    PetscCall(ReadModelOptions(PetscOptionsObject, read, opt.tools.model)); // (model_options.cpp)
-    PetscCall(ReadToolOptions(PetscOptionsObject, read, opt));              // (pass_options.cpp)
+    PetscCall(ReadModelOptions(PetscOptionsObject, read, ToolsOf(opt).model)); // (model_options.cpp)
+    PetscCall(ReadToolOptions(PetscOptionsObject, read, opt));                 // (pass_options.cpp)
     TF_OPTIONS_END();
   }
   PetscCall(ReadLowerDieShape(comm, read, opt));  // (die_shape_options.cpp)
@@ -94,6 +121,7 @@ PetscErrorCode CheckToolSceneOptions(MPI_Comm comm, Options &opt)
   if (FirstDies(opt).motion.OwnPath()) SetDiePathStroke(opt);
   PetscCall(CheckLowerDieMotion(comm, opt));
   PetscCall(CheckPassesAndHolds(comm, opt));
+  PetscCall(CheckStrokeWithDies(comm, opt));
   PetscCall(CheckShape(comm, kVShape, "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
   for (int pass = 1; pass < kMaxPasses; ++pass)                          // (a later pass's own V numbers)
     if (LaterPass(opt, pass).dies.upper.kind == kVShape)

@@ -1,7 +1,7 @@
-// The words of a pass's dies (include/tubeform/io/pass_spec.hpp) and its options' names: what the options' readers
+// The words of a pass's dies (include/tubeform/scenes/pass_spec.hpp) and its options' names: what the options' readers
 // and checks (scenes/tool_options.hpp), the stroke's check and the scenes' messages spell alike.
 #include "tubeform/core/core.hpp"
-#include "tubeform/io/options.hpp"
+#include "tubeform/scenes/tool_scene.hpp"
 
 namespace tf {
 

@@ -1,7 +1,7 @@
-// A pass of the press and its dies as the options give them (Options::tools.passes; docs/dies.md): the upper die's
-// shape and motion, the lower and side dies' shapes, the side dies' force, the pass's stroke and turn. io reads them
-// under the pass's prefix (-die_*, -lower_die, -side_die; -pass<N>_*: tool_options.hpp), the scenes take them through
-// io/options.hpp (DiesOfPass, UpperDie, ...).
+// A pass of the press and its dies as the options give them (ToolSceneParams::passes; docs/dies.md): the upper die's
+// shape and motion, the lower and side dies' shapes, the side dies' force, the pass's stroke and turn. The tool scenes
+// read them under the pass's prefix (-die_*, -lower_die, -side_die; -pass<N>_*: tool_options.hpp) and take them
+// through tool_scene.hpp (DiesOfPass, UpperDie, ...).
 #pragma once
 
 #include <cstddef>
@@ -127,8 +127,8 @@ struct DieSet {
                          // the stroke; the first pass's only)
 };
 
-// A pass of the press (Options::tools.passes: the first, then each after the springback of the one before): its stroke,
-// its turn and its dies, read under the pass's prefix (the first's -die_*, -lower_die, -side_die; a later one's
+// A pass of the press (ToolSceneParams::passes: the first, then each after the springback of the one before): its
+// stroke, its turn and its dies, read under the pass's prefix (the first's -die_*, -lower_die, -side_die; a later one's
 // -pass<N>_*). A later pass's shapes where given, each chosen as the first pass's is (DrawingChoice, ShapeChoice),
 // else unset (an upper die of kind "", a lower or side die Unset: the first pass's, DiesOfPass).
 struct PassSpec {

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <string>
 
-#include "tubeform/io/pass_spec.hpp"
+#include "tubeform/scenes/pass_spec.hpp"
 
 namespace tf {
 

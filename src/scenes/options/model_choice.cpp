@@ -1,7 +1,7 @@
-// The model the tool scenes' options choose (ModelOf, include/tubeform/io/options.hpp): the quarter where the
+// The model the tool scenes' options choose (ModelOf, include/tubeform/scenes/tool_scene.hpp): the quarter where the
 // passes' tools keep its mirror symmetries, else the half or the full, and how the full one is held. The options'
 // checks (scenes/tool_options.hpp) and the scenes' set-up read it alike.
-#include "tubeform/io/options.hpp"
+#include "tubeform/scenes/tool_scene.hpp"
 
 namespace tf {
 
@@ -45,7 +45,7 @@ ModelChoice ModelOf(const Options &opt)
     p.off_axis = OffAxisBy(opt, pass);
     p.quarters = PassQuarters(opt, pass), p.quarter_turn = QuarterTurn(opt, pass);
   }
-  model.part = opt.tools.model.part, model.hold = opt.tools.model.full_hold;
+  model.part = ToolsOf(opt).model.part, model.hold = ToolsOf(opt).model.full_hold;
   if (model.part == TubeModel::Auto)
     model.part = model.QuarterExact() ? TubeModel::Quarter : model.HalfExact() ? TubeModel::Half : TubeModel::Full;
   return model;
