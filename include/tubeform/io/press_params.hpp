@@ -1,9 +1,8 @@
-// The press's own parameters as the options give them, one struct per group (docs/dies.md): how far it presses (the
-// stroke; also the column's end shortening), how it is released (also the bending scene's springback) and the part of
-// the tube it models, with the full model's support. Options holds
-// one of each (so that they travel with the run's options to its levels and companions); io reads and checks the stroke
-// and the release (io/loading_options.hpp), the tool scenes the model (scenes/tool_options.hpp); the scenes take them
-// from there.
+// The loading's parameters as the options give them, one struct per group (docs/dies.md): how far a scene presses
+// (the stroke; also the column's end shortening) and how it is released (also the bending scene's springback).
+// Options holds one of each (so that they travel with the run's options to its levels and companions); io reads and
+// checks them (io/loading_options.hpp), and the scenes take them from there. The tool scenes' own model and passes
+// are theirs: scenes/tool_scene.hpp.
 #pragma once
 
 #include <petscsys.h>
