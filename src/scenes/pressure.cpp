@@ -18,7 +18,7 @@ namespace {
 class PressureScene : public Scene {
 public:
   explicit PressureScene(const Options &opt)
-      : opt_(opt), displacement_(OwnParams<PressureParams>(opt).control == PressureControl::Displacement)
+      : opt_(opt), own_(OwnParams<PressureParams>(opt)), displacement_(own_.control == PressureControl::Displacement)
   {}
   std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
@@ -37,11 +37,9 @@ public:
   {
     PetscFunctionBeginUser;
     if (displacement_)
-      for (PetscInt n : m.mesh.node_sets["inner"])
-        m.system.Prescribe(n, 0, dlambda * OwnParams<PressureParams>(opt_).u);
+      for (PetscInt n : m.mesh.node_sets["inner"]) m.system.Prescribe(n, 0, dlambda * own_.u);
     else
-      PetscCall(AddEdgePressure(m, "inner", dlambda * OwnParams<PressureParams>(opt_).p, nullptr, true,
-                                lambda * OwnParams<PressureParams>(opt_).p));
+      PetscCall(AddEdgePressure(m, "inner", dlambda * own_.p, nullptr, true, lambda * own_.p));
     PetscCall(QuarterSymmetry(m));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -50,7 +48,7 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
-    if (!displacement_) PetscCall(AddEdgePressure(m, "inner", lambda * OwnParams<PressureParams>(opt_).p, f, false));
+    if (!displacement_) PetscCall(AddEdgePressure(m, "inner", lambda * own_.p, f, false));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
@@ -82,13 +80,14 @@ public:
       PetscCall(SetForce(m, "inner", f_int, radial, fr));
       row.load = fr / g[2];
     } else
-      row.load = lambda * OwnParams<PressureParams>(opt_).p;
+      row.load = lambda * own_.p;
     PetscCall(OuterExtents(m, row));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 
 private:
   Options opt_;
+  PressureParams own_; // (-pressure_*)
   bool displacement_;
 };
 

@@ -14,15 +14,15 @@ namespace {
 
 class RotationScene : public BlockScene {
 public:
-  using BlockScene::BlockScene;
+  explicit RotationScene(const Options &opt) : BlockScene(opt), own_(OwnParams<RotationParams>(opt)) {}
   LoadPath Path(const Options &opt) const override { return {1.0, opt.driver.dynamics_time, {kStretch}, {}}; }
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     if (lambda < kStretch - kLambdaTol) {
-      const double de = dlambda / kStretch * OwnParams<RotationParams>(opt_).strain;
+      const double de = dlambda / kStretch * own_.strain;
       PrescribeBoundary(m, [&](PetscInt n, double d[2]) { d[0] = de * m.mesh.x0[2 * n], d[1] = 0; });
     } else {
-      const double dth = dlambda / (1 - kStretch) * OwnParams<RotationParams>(opt_).angle * M_PI / 180;
+      const double dth = dlambda / (1 - kStretch) * own_.angle * M_PI / 180;
       const double c = std::cos(dth), s = std::sin(dth);
       PrescribeBoundary(m, [&](PetscInt n, double d[2]) {
         const double x = m.body.position()[2 * n], y = m.body.position()[2 * n + 1];
@@ -36,8 +36,7 @@ public:
   PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
-    row.stroke =
-      lambda <= kStretch ? 0.0 : (lambda - kStretch) / (1 - kStretch) * OwnParams<RotationParams>(opt_).angle;
+    row.stroke = lambda <= kStretch ? 0.0 : (lambda - kStretch) / (1 - kStretch) * own_.angle;
     PetscCall(PointAverage(
       m, [](const PointState &s) { return VonMises(s.sigma); }, row.load));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -45,6 +44,7 @@ public:
 
 private:
   static constexpr double kStretch = 0.1; // the share of the load path that stretches the block
+  RotationParams own_;                    // (-rotation_*)
 };
 
 } // namespace

@@ -11,10 +11,10 @@ namespace {
 
 class ShearScene : public BlockScene {
 public:
-  using BlockScene::BlockScene;
+  explicit ShearScene(const Options &opt) : BlockScene(opt), own_(OwnParams<ShearParams>(opt)) {}
   PetscErrorCode Load(Model &m, double, double dlambda) override
   {
-    const double dgamma = dlambda * OwnParams<ShearParams>(opt_).gamma;
+    const double dgamma = dlambda * own_.gamma;
     PrescribeBoundary(m, [&](PetscInt n, double d[2]) { d[0] = dgamma * m.body.position()[2 * n + 1], d[1] = 0; });
     return 0;
   }
@@ -23,11 +23,14 @@ public:
   PetscErrorCode Measure(Model &m, double lambda, Vec, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
-    row.stroke = lambda * OwnParams<ShearParams>(opt_).gamma;
+    row.stroke = lambda * own_.gamma;
     PetscCall(PointAverage(
       m, [](const PointState &s) { return s.sigma[3]; }, row.load));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+
+private:
+  ShearParams own_; // (-shear_*)
 };
 
 } // namespace

@@ -20,7 +20,7 @@ namespace {
 
 class SlideScene : public Scene {
 public:
-  explicit SlideScene(const Options &opt) : opt_(opt) {}
+  explicit SlideScene(const Options &opt) : opt_(opt), own_(OwnParams<SlideParams>(opt)) {}
   std::vector<std::string> BoundarySets() const override { return {"left", "right", "bottom", "top"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override
   {
@@ -49,10 +49,8 @@ public:
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     PetscFunctionBeginUser;
-    const double dn = lambda < 1.0 ? dlambda * OwnParams<SlideParams>(opt_).n : 0.0;
-    const double push = lambda < 1.0   ? 0.0
-                        : lambda < 2.0 ? dlambda * OwnParams<SlideParams>(opt_).push
-                                       : -dlambda * OwnParams<SlideParams>(opt_).back;
+    const double dn = lambda < 1.0 ? dlambda * own_.n : 0.0;
+    const double push = lambda < 1.0 ? 0.0 : lambda < 2.0 ? dlambda * own_.push : -dlambda * own_.back;
     PetscCall(TopLoad(m, -dn, nullptr, true));
     for (PetscInt n : m.mesh.node_sets["top"]) m.system.Prescribe(n, 0, push);
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -61,7 +59,7 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
-    PetscCall(TopLoad(m, -std::min(lambda, 1.0) * OwnParams<SlideParams>(opt_).n, f, false));
+    PetscCall(TopLoad(m, -std::min(lambda, 1.0) * own_.n, f, false));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   const char *StrokeName() const override { return "push (mm)"; }
@@ -90,14 +88,15 @@ private:
   double Top(double lambda) const
   {
     if (lambda <= 1.0) return 0.0;
-    if (lambda <= 2.0) return (lambda - 1.0) * OwnParams<SlideParams>(opt_).push;
-    return OwnParams<SlideParams>(opt_).push - (lambda - 2.0) * OwnParams<SlideParams>(opt_).back;
+    if (lambda <= 2.0) return (lambda - 1.0) * own_.push;
+    return own_.push - (lambda - 2.0) * own_.back;
   }
   static constexpr double kWidth = 10.0, kHeight = 2.0; // block (mm)
   static constexpr double kFloorHalfLength = 1e3;       // the floor reaches far past the block (mm)
   static constexpr double kVcri = 1e-3;                 // default quasi-stick slip (mm)
   static constexpr double kOnEnd = 1e-9;                // a top node this close to an end (of the width) is an end node
   Options opt_;
+  SlideParams own_; // (-slide_*)
   // A uniform vertical traction on the top edge with resultant fy (end nodes
   // half weight), into f (if given) and the system (with to_system).
   PetscErrorCode TopLoad(Model &m, double fy, Vec f, bool to_system)

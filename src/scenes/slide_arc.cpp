@@ -18,7 +18,7 @@ namespace {
 
 class ArcSlideScene : public Scene {
 public:
-  explicit ArcSlideScene(const Options &opt) : opt_(opt) {}
+  explicit ArcSlideScene(const Options &opt) : opt_(opt), own_(OwnParams<SlideParams>(opt)) {}
   std::vector<std::string> BoundarySets() const override { return {"inner", "outer", "x0", "y0"}; }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh); }
   LoadPath Path(const Options &opt) const override { return {2.0, opt.driver.dynamics_time, {1.0}, {}}; }
@@ -50,10 +50,8 @@ public:
   PetscErrorCode Load(Model &m, double lambda, double dlambda) override
   {
     PetscFunctionBeginUser;
-    if (lambda < 1.0)
-      PetscCall(AddEdgePressure(m, "inner", dlambda * OwnParams<SlideParams>(opt_).n, nullptr, true,
-                                lambda * OwnParams<SlideParams>(opt_).n));
-    const double turn = lambda < 1.0 ? 0.0 : dlambda * OwnParams<SlideParams>(opt_).push / opt_.tube_ro;
+    if (lambda < 1.0) PetscCall(AddEdgePressure(m, "inner", dlambda * own_.n, nullptr, true, lambda * own_.n));
+    const double turn = lambda < 1.0 ? 0.0 : dlambda * own_.push / opt_.tube_ro;
     // A rigid turn of the inner surface: tangential (frame n; l is radial)
     // displacement = turn x current radius, so the moment and the turn are
     // work-conjugate.
@@ -65,7 +63,7 @@ public:
   {
     PetscFunctionBeginUser;
     PetscCall(VecZeroEntries(f));
-    PetscCall(AddEdgePressure(m, "inner", std::min(lambda, 1.0) * OwnParams<SlideParams>(opt_).n, f, false));
+    PetscCall(AddEdgePressure(m, "inner", std::min(lambda, 1.0) * own_.n, f, false));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   const char *StrokeName() const override { return "turn (rad)"; }
@@ -73,7 +71,7 @@ public:
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override
   {
     PetscFunctionBeginUser;
-    row.stroke = lambda <= 1.0 ? 0.0 : (lambda - 1.0) * OwnParams<SlideParams>(opt_).push / opt_.tube_ro;
+    row.stroke = lambda <= 1.0 ? 0.0 : (lambda - 1.0) * own_.push / opt_.tube_ro;
     // Moment about the centre of the internal forces at the inner nodes (their supports).
     const auto &x = m.body.position();
     PetscCall(SetForce(
@@ -85,6 +83,7 @@ public:
 private:
   static constexpr double kVcri = 1e-3; // default quasi-stick slip (mm)
   Options opt_;
+  SlideParams own_; // (-slide_*)
 };
 
 } // namespace

@@ -77,6 +77,16 @@ struct Options {
   std::vector<KnownOption> known; // every option ReadOptions read (the hints for options nothing reads)
 };
 
+// The P held in `held` (Options::tools, Options::scene_params), or P's built-in values where it holds none (options
+// built in code).
+template <class P>
+const P &HeldOr(const std::any &held)
+{
+  static const P built_in;
+  const P *own = std::any_cast<P>(&held);
+  return own ? *own : built_in;
+}
+
 // The scene presses the tube with tools (squaring, flattening: the dies', stroke's and passes' options are its).
 inline bool PressesWithTools(const Options &opt) { return opt.press != ScenePress::None; }
 // Its upper tool is a die (squaring), not a plate (flattening).

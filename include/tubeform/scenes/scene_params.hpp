@@ -14,9 +14,7 @@ namespace tf {
 template <class P>
 const P &OwnParams(const Options &opt)
 {
-  static const P built_in;
-  const P *own = std::any_cast<P>(&opt.scene_params);
-  return own ? *own : built_in;
+  return HeldOr<P>(opt.scene_params);
 }
 
 // What the pressure scene ramps (-pressure_control): the pressure, or the inner radial displacement.

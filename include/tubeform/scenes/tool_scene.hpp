@@ -44,12 +44,7 @@ struct ToolSceneParams {
 
 // The run's tool scenes' parameters (Options::tools), or the built-in ones where the options hold none (options built
 // in code); the writable one makes them first where they are not there yet (their readers).
-inline const ToolSceneParams &ToolsOf(const Options &opt)
-{
-  static const ToolSceneParams built_in;
-  const ToolSceneParams *own = std::any_cast<ToolSceneParams>(&opt.tools);
-  return own ? *own : built_in;
-}
+inline const ToolSceneParams &ToolsOf(const Options &opt) { return HeldOr<ToolSceneParams>(opt.tools); }
 inline ToolSceneParams &ToolsOf(Options &opt)
 {
   if (!std::any_cast<ToolSceneParams>(&opt.tools)) opt.tools = ToolSceneParams{};
@@ -189,13 +184,10 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
   dies.upper.spec.ro = opt.tube_ro, dies.motion.spec.reach = opt.tube_ro; // (UpperDieShape, UpperDie)
   if (pass == 0) return dies;
   const DieSet &given = LaterPass(opt, pass).dies;
-  if (given.upper.kind == kVShape) { // (its own V numbers: ReadPassShapes)
-    const ShapeSpec &v = given.upper.spec;
-    dies.upper.kind = kVShape, dies.upper.spec.angle = v.angle, dies.upper.spec.r_apex = v.r_apex;
-    dies.upper.spec.u_close = v.u_close, dies.upper.spec.r_edge = v.r_edge;
-  } else if (!given.upper.kind.empty()) {
+  if (given.upper.kind == kVShape) // (its own V-die: the first pass's numbers and its own, ReadPassShapes)
+    dies.upper = given.upper, dies.upper.spec.ro = opt.tube_ro;
+  else if (!given.upper.kind.empty())
     dies.upper.kind = given.upper.kind, dies.upper.spec.file = given.upper.spec.file;
-  }
   if (given.lower.Given()) dies.lower = given.lower;
   if (given.side.Given()) dies.side = given.side;
   dies.motion = given.motion, dies.motion.spec.reach = opt.tube_ro;

@@ -98,10 +98,7 @@ PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt)
     PetscCall(ReadShape(PetscOptionsObject, kVShape, spec));
     block.Release();
     PetscOptionsEnd();
-    if (!given) continue;
-    die.spec.angle = spec.angle, die.spec.r_apex = spec.r_apex, die.spec.u_close = spec.u_close;
-    die.spec.r_edge = spec.r_edge;
-    if (die.kind.empty()) die.kind = kVShape; // (under a -pass<N>_die_profile, as the first pass's, the file's)
+    if (given && die.kind.empty()) die.kind = kVShape, die.spec = spec; // (a -pass<N>_die_profile: the file's)
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
