@@ -1,8 +1,8 @@
 // A force-controlled tool: moved along a direction by a stroke that is an unknown of each increment, found from the
 // force it presses with (the contact set's extra unknown, contact/pad.cpp). Its option under its tool's prefix:
 // -<prefix>force F (> 0, the force it presses with at the end, rising from 0 over the press; its scene says per
-// what). The upper die's: -die_motion force, -die_force (docs/dies.md); the side dies' force is their scene's
-// -side_force.
+// what). The upper die's: -die_motion force, -die_force (docs/dies.md), and what it goes with in a press (its press
+// check); the side dies' force is their scene's -side_force.
 #include <cmath>
 
 #include "tubeform/tool/motion_straight.hpp"
@@ -41,6 +41,31 @@ PetscErrorCode ReadForce(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
   spec.force = f;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+// In a press (MotionKind::press_check): a scene's tools, a lower die that stays in the half and full models (force
+// control drives one die), the last pass, not withdrawn, in place of the pass's stroke; the first pass's not with
+// -stroke_corner_radius (the force's own number is its reader's).
+std::string CheckForceInPress(const MotionSpec &spec, const MotionPress &press)
+{
+  const std::string name = Formatted("%sforce %g", press.prefix.c_str(), spec.force);
+  const std::string stroke = Formatted("-pass%d_stroke", press.pass + 1);
+  if (!press.tools)
+    return name + ": the " + press.scene + " scene presses with no dies (the squaring and flattening scenes' option)";
+  if (!press.quarter && !press.lower_stays)
+    return name + ": with the half or full model the lower die must stay (-lower_die_motion fixed); a lower die "
+                  "moving by the upper one's unknown stroke is not available";
+  if (press.passes != press.pass + 1)
+    return name +
+           Formatted(": not with a %s pass (-pass%d_stroke); ", PassOrdinal(press.pass + 1).c_str(), press.pass + 2) +
+           (press.pass == 0 ? "press one pass by force" : "a pass by force is the last");
+  if (press.withdraw) return name + ": -unload withdraw moves the die back by its stroke; use -unload reverse or none";
+  if (press.stroke_given)
+    return name + ": in place of " + stroke +
+           " (the pass ends at that punch load, its stroke the outcome); give one "
+           "of them";
+  if (press.corner_radius) return name + ": the stroke is its outcome; -stroke_corner_radius sets a stroke";
+  return "";
+}
 } // namespace
 
 std::unique_ptr<Motion> ForceMotion(const Vec2 &direction) { return std::make_unique<Force>(direction); }
@@ -58,7 +83,8 @@ const MotionKind &ForceKind()
                                nullptr,
                                "force",
                                /*own_path=*/false,
-                               /*unknown_stroke=*/true};
+                               /*unknown_stroke=*/true,
+                               CheckForceInPress};
   return kind;
 }
 

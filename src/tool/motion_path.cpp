@@ -2,7 +2,8 @@
 // Its options under its tool's prefix: -<prefix>path x1,y1,x2,y2,... (its points in turn, mm, from where it
 // starts), -<prefix>path_turn a1,a2,... (its turn at each point, degrees, counter-clockwise; none: it does not
 // turn), -<prefix>pivot x,y (the point it turns about, where it starts; needs turns). The upper die's:
-// -die_motion path, -die_path, -die_path_turn, -die_pivot (docs/dies.md).
+// -die_motion path, -die_path, -die_path_turn, -die_pivot (docs/dies.md), and what it goes with in a press (its press
+// check).
 //
 // Two kinds answer to a user's "path": this one, a path in space that may turn (the upper die's), and the schedule
 // (motion_schedule.cpp), distances along the tool's direction at given strokes (the lower die's -lower_die_motion
@@ -132,6 +133,43 @@ PetscErrorCode ReadPath(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// An upper die's turns along its path (degrees): a die turned by more than a quarter turn no longer presses along
+// its press's y, along which its punch load is read.
+constexpr double kMaxDieTurn = 90;
+
+// In a press (MotionKind::press_check), any pass's: the squaring scene's die, within a quarter turn, ending below its
+// start, over a lower die that stays. The first pass's in place of -stroke and -stroke_path, in one pass, with no side
+// dies, withdrawal or -die_offset (off its axis the model's choice decides its hold: scenes/options/model_options.cpp);
+// a later pass's with no side dies in any pass (they press by the stroke) and, off its press's axis, held by the
+// rotation hold.
+std::string CheckPathInPress(const MotionSpec &spec, const MotionPress &press)
+{
+  const std::string name = press.prefix + "path";
+  const double y = spec.points.back()[1];
+  if (!press.dies)
+    return name + ": the squaring scene's upper die through x,y pairs (mm, from its start), in turn; not the " +
+           press.scene + " scene's";
+  for (double turn : spec.turns)
+    if (std::abs(turn) > kMaxDieTurn)
+      return Formatted("%s_turn %g: each turn must be a number of degrees within +-%g", name.c_str(), turn,
+                       kMaxDieTurn);
+  if (y >= 0)
+    return Formatted("%s: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)",
+                     name.c_str(), y);
+  if (!press.lower_stays)
+    return name + ": the path is the upper die's, relative to a lower die that stays: give -lower_die_motion fixed";
+  if (press.pass == 0 && (press.stroke_path || press.corner_radius || press.passes > 1 || press.side_dies ||
+                          press.withdraw || press.die_offset))
+    return name + ": in place of -stroke and -stroke_path, in one pass: not with -stroke_path, -stroke_corner_radius, "
+                  "-pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways is its own offset)";
+  if (press.pass > 0 && press.any_side_dies)
+    return name + ": not with side dies (-side_die, -pass<N>_side_die), which press by the stroke";
+  if (press.pass > 0 && press.off_axis && !press.held)
+    return name + ": a die off the axis (a sideways point or a turn) breaks the tube's mirror symmetry; use -model "
+                  "full (or auto) -full_hold rotation (or auto)";
+  return "";
+}
+
 std::string MakePath(const MotionSpec &s, MotionHandle &m)
 {
   if (s.points.empty()) return "a path with no points";
@@ -153,8 +191,16 @@ std::unique_ptr<Motion> PathMotion(const ToolPath &path) { return std::make_uniq
 
 const MotionKind &PathKind()
 {
-  static const MotionKind kind{
-    "path", {"path", "path_turn", "pivot"}, ReadPath, MakePath, nullptr, nullptr, "path", /*own_path=*/true};
+  static const MotionKind kind{"path",
+                               {"path", "path_turn", "pivot"},
+                               ReadPath,
+                               MakePath,
+                               nullptr,
+                               nullptr,
+                               "path",
+                               /*own_path=*/true,
+                               /*unknown_stroke=*/false,
+                               CheckPathInPress};
   return kind;
 }
 

@@ -1,5 +1,6 @@
 // The registry of tool motions: each kind's name, the options it reads, its reader and its factory (a MotionKind,
-// defined in the kind's own file). A new motion is its own file (motion_*.cpp) and a line here.
+// defined in the kind's own file, with what it refuses in a press). A new motion is its own file (motion_*.cpp) and a
+// line here.
 #include "tubeform/tool/motion.hpp"
 
 namespace tf {
@@ -32,6 +33,12 @@ bool MotionStrokeUnknown(const std::string &kind)
 {
   const MotionKind *k = FindMotionKind(kind);
   return k && k->unknown_stroke;
+}
+
+std::string CheckMotionInPress(const std::string &kind, const MotionSpec &spec, const MotionPress &press)
+{
+  const MotionKind *k = FindMotionKind(kind);
+  return k && k->press_check ? k->press_check(spec, press) : "";
 }
 
 std::string MakeMotion(const std::string &kind, const MotionSpec &spec, MotionHandle &m)

@@ -38,9 +38,9 @@ using Vec2 = std::array<double, 2>;
 template <class... T>
 std::string Formatted(const char *fmt, T... v)
 {
-  char buf[256];
-  std::snprintf(buf, sizeof(buf), fmt, v...);
-  return buf;
+  std::string s(std::snprintf(nullptr, 0, fmt, v...), '\0');
+  std::snprintf(s.data(), s.size() + 1, fmt, v...);
+  return s;
 }
 
 // A press's pass in words, as its messages name it: "first", "second", ... for pass 0, 1, ... (a press takes at

@@ -1,8 +1,7 @@
-// What an upper die's motion cannot do with the other options (docs/dies.md): each kind of the motion registry
-// (tool/motion.hpp) that refuses combinations has its check in its own file (src/scenes/options/motion_check_*.cpp: it
-// needs the options, which the tool layer cannot see), named by the kind's name in the checks' registry
-// (src/scenes/options/motion_checks.cpp). The options' checks ask the registry for each pass's kind (CheckUpperMotion);
-// a kind with no entry refuses nothing here. Its own numbers are its reader's (tool/motion_*.cpp).
+// What an upper die's motion cannot do with the press's other options (docs/dies.md): each kind of the motion registry
+// (tool/motion.hpp) that refuses some presses says so in its own file (MotionKind::press_check, src/tool/motion_*.cpp),
+// reading the press as a MotionPress; the tool scenes' options' checks describe each pass's press to it here. Its own
+// numbers are its reader's.
 #pragma once
 
 #include <petscsys.h>
@@ -11,19 +10,10 @@
 
 namespace tf {
 
-// A kind's check (collective): pass `pass`'s (0 the first) upper die moving by the kind, refused in one line naming
-// the option and what goes with it where it does not go with the other options.
-using MotionCheck = PetscErrorCode (*)(MPI_Comm comm, const Options &opt, int pass);
-// A kind's entry in the checks' registry: the kind's name (MotionKind::name) and its check. Each kind's file defines
-// its own (PathCheck(), ForceCheck(); the registry lists them).
-struct MotionCheckKind {
-  const char *name;
-  MotionCheck check;
-};
-
-// The check of the kind named `kind`, or nullptr (it refuses nothing).
-MotionCheck FindMotionCheck(const std::string &kind);
-// Collective: pass `pass`'s upper die's motion checked by its kind's check (DieSet::motion; none: nothing refused).
+// Pass `pass`'s (0 the first) press as its upper die's motion kind reads it (MotionPress).
+MotionPress PressOfPass(const Options &opt, int pass);
+// Collective: pass `pass`'s upper die's motion checked by its kind in its press (CheckMotionInPress), refused in one
+// line naming the option and what goes with it; a kind with no press check refuses nothing here.
 PetscErrorCode CheckUpperMotion(MPI_Comm comm, const Options &opt, int pass);
 
 } // namespace tf

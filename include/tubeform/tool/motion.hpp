@@ -106,6 +106,30 @@ struct MotionSpec {
   std::vector<double> own;       // a kind's own numbers, as its reader reads them (its file says which)
 };
 
+// What a kind's press check (MotionKind::press_check) reads of the press whose upper die it moves: the tool scenes
+// fill it from their options (scenes/motion_checks.hpp); the kind refuses there what it cannot do.
+struct MotionPress {
+  std::string prefix;         // its options' prefix, dashed: "-die_", "-pass2_die_" (-die_path, -pass2_die_force)
+  std::string scene;          // the scene's name
+  bool dies = true;           // the scene presses with dies (squaring), not plates
+  bool tools = true;          // the scene presses with tools, dies or plates (squaring, flattening)
+  int pass = 0;               // the pass (0 the first)
+  int passes = 1;             // how many passes the run presses
+  bool quarter = true;        // the quarter model
+  bool lower_stays = false;   // the lower die stays (-lower_die_motion fixed)
+  bool withdraw = false;      // the dies let go by withdrawal (-unload withdraw)
+  bool stroke_given = false;  // a later pass's stroke given as well (-pass<N>_stroke)
+  bool stroke_path = false;   // the first pass's stroke along -stroke_path
+  bool corner_radius = false; // the first pass's stroke from -stroke_corner_radius
+  bool side_dies = false;     // side dies in the first pass (-side_die)
+  bool any_side_dies = false; // side dies in some pass (-side_die, -pass<N>_side_die)
+  bool die_offset = false;    // the first pass's die off the axis by -die_offset
+  bool off_axis = false;      // the pass's die leaves its press's y axis (a sideways point or a turn)
+  bool held = false;          // the pass is held by the rotation hold (the full model's)
+};
+// A kind's press check: "" or its refusal, one line naming the option and what goes with it.
+using MotionPressCheck = std::string (*)(const MotionSpec &spec, const MotionPress &press);
+
 // The path of a path motion's spec: through its points, turned by its turns (radians in the path) counted at its
 // reach (none where it has turns but no reach > 0) (motion_path.cpp).
 ToolPath PathOf(const MotionSpec &spec);
@@ -128,7 +152,8 @@ using MotionFactory = std::string (*)(const MotionSpec &spec, MotionHandle &m);
 // of a kind before its motion is made (by the kind's name: MotionOwnsPath, MotionStrokeUnknown), so that no one
 // compares names: own_path, the tool's stroke goes along a path the motion carries (path: a pass's stroke path and
 // end are the path's), and unknown_stroke, its stroke is an unknown found from a force (force, as its
-// Motion::Unknown says). Each kind's file defines its own (FixedKind(), ..., the registry lists them).
+// Motion::Unknown says); and its press check (none: it goes with every press). Each kind's file defines its own
+// (FixedKind(), ..., the registry lists them).
 struct MotionKind {
   const char *name;
   std::vector<std::string> options;
@@ -139,6 +164,7 @@ struct MotionKind {
   const char *upper_word = nullptr;
   bool own_path = false;
   bool unknown_stroke = false;
+  MotionPressCheck press_check = nullptr;
 };
 
 // The registry: a motion of the kind named `kind` from `spec` into `m`; "" or why not (an unknown kind names the
@@ -152,6 +178,8 @@ const MotionKind *FindMotionKind(const std::string &kind);
 bool MotionOwnsPath(const std::string &kind);
 // The kind named `kind`'s stroke is an unknown found from a force (MotionKind::unknown_stroke; no such kind: false).
 bool MotionStrokeUnknown(const std::string &kind);
+// The kind named `kind`'s press check of `spec` in `press` (MotionKind::press_check): "" or its refusal.
+std::string CheckMotionInPress(const std::string &kind, const MotionSpec &spec, const MotionPress &press);
 // Reads the options of the kind named `kind` (a registered one) into `spec` (MotionReader).
 PetscErrorCode ReadMotion(PetscOptionItems *PetscOptionsObject, const std::string &kind, MotionSpec &spec);
 

@@ -1,29 +1,33 @@
-// The registry of the upper die's motion checks (scenes/motion_checks.hpp): each kind's name and its check, defined in
-// the kind's own file. A new motion that refuses combinations is its check's file (motion_check_*.cpp) and a line
-// here, beside its kind's file and line in the motion registry (src/tool/motion_registry.cpp).
+// Each pass's press as its upper die's motion kind reads it, and the kind's refusal (scenes/motion_checks.hpp). A new
+// motion that refuses some presses says so in its own file (src/tool/motion_*.cpp); nothing here names a kind.
 #include "tubeform/scenes/motion_checks.hpp"
 
 namespace tf {
 
-const MotionCheckKind &PathCheck();  // motion_check_path.cpp
-const MotionCheckKind &ForceCheck(); // motion_check_force.cpp
-
-namespace {
-const MotionCheckKind &(*const kChecks[])() = {PathCheck, ForceCheck};
-} // namespace
-
-MotionCheck FindMotionCheck(const std::string &kind)
+MotionPress PressOfPass(const Options &opt, int pass)
 {
-  for (const auto &k : kChecks)
-    if (kind == k().name) return k().check;
-  return nullptr;
+  MotionPress press;
+  press.prefix = pass == 0 ? "-die_" : PassOption(pass, "die_");
+  press.scene = opt.scene;
+  press.dies = PressesWithDie(opt), press.tools = PressesWithTools(opt);
+  press.pass = pass, press.passes = PassCount(opt);
+  press.quarter = QuarterModel(opt), press.lower_stays = LowerDieMoves(opt, LowerDieMove::Fixed);
+  press.withdraw = opt.release.unload == Unload::Withdraw;
+  press.stroke_given = pass > 0 && LaterPass(opt, pass).stroke != 0;
+  press.stroke_path = !opt.stroke.path.empty(), press.corner_radius = opt.stroke.corner_radius > 0;
+  press.side_dies = !FirstDies(opt).side.Is(DieFrom::None);
+  for (int k = 0; k < PassCount(opt); ++k) press.any_side_dies |= !DiesOfPass(opt, k).side.Is(DieFrom::None);
+  press.die_offset = ToolsOf(opt).model.die_offset != 0;
+  press.off_axis = PassOffAxis(opt, pass), press.held = HeldByRotation(opt, pass);
+  return press;
 }
 
 PetscErrorCode CheckUpperMotion(MPI_Comm comm, const Options &opt, int pass)
 {
+  const DieMotion &motion = ToolsOf(opt).passes[pass].dies.motion;
+  const std::string why = CheckMotionInPress(motion.kind, motion.spec, PressOfPass(opt, pass));
   PetscFunctionBeginUser;
-  if (const MotionCheck check = FindMotionCheck(ToolsOf(opt).passes[pass].dies.motion.kind))
-    PetscCall(check(comm, opt, pass));
+  PetscCheck(why.empty(), comm, PETSC_ERR_USER_INPUT, "%s", why.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -32,13 +32,13 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
     "-side_force, -full_hold: "
     "the %s scene presses with no dies (these are the squaring and flattening scenes' options)",
     opt.scene.c_str());
-  PetscCall(CheckUpperMotion(comm, opt, 0));     // (its motion kind's check; a later pass's with its stroke)
+  PetscCall(CheckUpperMotion(comm, opt, 0));     // (its kind's press check; a later pass's with its stroke)
   PetscCall(CheckPassStrokesAndDies(comm, opt)); // (passes_check.cpp)
   PetscCall(CheckSideDieOptions(comm, opt));     // (die_shape_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// -die_motion path (checked by the path motion's check, motion_check_path.cpp): the stroke U where the path ends.
+// -die_motion path (checked by the path kind in its press, tool/motion_path.cpp): the stroke U where the path ends.
 void SetDiePathStroke(Options &opt) { opt.stroke.u = -0.5 * FirstDies(opt).motion.spec.points.back()[1]; }
 
 // A lower die on a motion of its own (neither mirror nor fixed: a path, or another kind; its options are its
