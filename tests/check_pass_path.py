@@ -38,6 +38,10 @@ G. C's press with neither -model nor -full_hold: `auto` chooses the full model (
    (-material_e 75000.00000000975), and 5e-4 is about ten times that, as tests/check_die_path.py E bounds its
    mirror image (measured 1.1e-6 on Haswell, 4.7e-5 on Prescott). Before `auto` looked at a later pass's path it
    refused the run.
+H. The first pass on a path of its own, then a later pass: `-die_path 0,-3 -pass2_stroke 1.5` is A's `-stroke 1.5
+   -pass2_stroke 1.5`, every /history dataset and attribute the same bit for bit (the first pass's path straight down
+   is its stroke by the same construction as A's; a later pass after it starts from where the first pass's springback
+   left the tube, as after any first pass).
 """
 import os
 
@@ -55,7 +59,8 @@ SIDE = [0.0, -2.6, 0.5, -2.6, 0.5, -3.0]
 RUNS = {"stroke": ["-pass2_stroke", U], "path": ["-pass2_die_path", f"0,{-2 * U}"],
         "turned_stroke": ["-pass2_turn", 90, "-pass2_stroke", U],
         "side": ["-stroke", 1, "-model", "full", "-full_hold", "rotation", "-pass2_die_path", ",".join(map(str, SIDE))],
-        "side_auto": ["-stroke", 1, "-pass2_die_path", ",".join(map(str, SIDE))]}
+        "side_auto": ["-stroke", 1, "-pass2_die_path", ",".join(map(str, SIDE))],
+        "first_path": ["-die_path", f"0,{-2 * U}", "-pass2_stroke", U]}
 done = run_all(tf, mpirun, [BASE + RUNS[n] + ["-output", out(f"pp_{n}.h5")] for n in RUNS], timeout=600,
                check=False)
 for n, p in zip(RUNS, done):
@@ -164,4 +169,10 @@ if auto.returncode == 0:
             col = "the rows"
 k.check(auto.returncode == 0 and full and gap <= 5e-4, f"G. neither -model nor -full_hold: exit {auto.returncode}, "
         f"the full model {'said' if full else 'not said'}, C's history within {gap:.1e} ({col}; 5e-4)")
+
+# H. A first pass on a path, then a later pass.
+w = same_bits(out("pp_stroke.h5"), out("pp_first_path.h5"))
+k.check(done[list(RUNS).index("first_path")].returncode == 0 and not w, f"H. -die_path 0,{-2 * U:g} then "
+        f"-pass2_stroke {U:g} is -stroke {U:g} then -pass2_stroke {U:g}: every history dataset and attribute the same "
+        f"bit for bit ({w or 'none differs'})")
 k.done()

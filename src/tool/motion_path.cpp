@@ -158,10 +158,10 @@ std::string CheckPathInPress(const MotionSpec &spec, const MotionPress &press)
                      name.c_str(), y);
   if (!press.lower_stays)
     return name + ": the path is the upper die's, relative to a lower die that stays: give -lower_die_motion fixed";
-  if (press.pass == 0 && (press.stroke_path || press.corner_radius || press.passes > 1 || press.side_dies ||
-                          press.withdraw || press.die_offset))
-    return name + ": in place of -stroke and -stroke_path, in one pass: not with -stroke_path, -stroke_corner_radius, "
-                  "-pass2_stroke, -side_die, -unload withdraw or -die_offset (a path sideways is its own offset)";
+  if (press.pass == 0 && (press.stroke_path || press.corner_radius || press.side_dies || press.withdraw ||
+                          press.die_offset))
+    return name + ": in place of -stroke and -stroke_path: not with -stroke_path, -stroke_corner_radius, -side_die, "
+                  "-unload withdraw or -die_offset (a path sideways is its own offset)";
   if (press.pass > 0 && press.any_side_dies)
     return name + ": not with side dies (-side_die, -pass<N>_side_die), which press by the stroke";
   if (press.pass > 0 && press.off_axis && !press.held)

@@ -31,7 +31,8 @@ public:
     travel_ = die.end();
   }
   // The press's U at stroke s (the die's own path: half its depth, -y / 2) and the die's sideways displacement.
-  double U(double s) const { return die_.empty() ? s : -0.5 * die_.At(s)[1]; }
+  // (0 - y / 2: at the start +0, as the stroke's, not -0)
+  double U(double s) const { return die_.empty() ? s : 0.0 - 0.5 * die_.At(s)[1]; }
   double Sideways(double s) const { return die_.empty() ? 0.0 : die_.At(s)[0]; }
   // And its turn (degrees, counter-clockwise).
   double Turn(double s) const { return die_.empty() ? 0.0 : die_.Turn(s) * (180 / M_PI); }
