@@ -81,8 +81,8 @@ PetscErrorCode BuildDie(MPI_Comm comm, const DieShape &shape, Die &die)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape, Tool &upper, double floor_y, bool full,
-                             Tool &lower)
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape, Tool &upper, double floor_y,
+                             TubePart part, Tool &lower)
 {
   PetscFunctionBeginUser;
   if (shape.Is(DieFrom::Mirror)) {
@@ -91,12 +91,12 @@ PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape,
     // A floor under the tube, reaching past its widening on the outside.
     ShapeSpec &spec = shape.spec;
     spec.y = floor_y, spec.x1 = (1 + kFloorReach) * opt.tube_ro, spec.floor = true;
-    spec.x0 = full ? -(1 + kFloorReach) * opt.tube_ro : -kFloorOverhang * opt.tube_ro;
+    spec.x0 = WholeTube(part) ? -(1 + kFloorReach) * opt.tube_ro : -kFloorOverhang * opt.tube_ro;
     MakeShape(shape.kind, spec, lower); // (the flat kind draws any plate)
   } else {
     Tool drawn;
     PetscCall(ReadProfileTool(comm, "-lower_die", shape.kind, shape.spec.file, drawn));
-    lower = full ? BothSides(MirrorY(drawn)) : MirrorY(drawn);
+    lower = WholeTube(part) ? BothSides(MirrorY(drawn)) : MirrorY(drawn);
   }
   // Its name in errors and in the results (/tools/<name>): no spaces.
   lower.name = shape.Is(DieFrom::Plate) ? "floor" : shape.Is(DieFrom::Mirror) ? "lower-" + upper.name : "lower-die";
@@ -105,7 +105,7 @@ PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape,
 }
 
 PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, DieChoice shape, const char *option, bool squaring,
-                           const Tool &upper_right, bool half, bool full, std::vector<Tool> &tools)
+                           const Tool &upper_right, TubePart part, std::vector<Tool> &tools)
 {
   Tool drawn; // drawn as an upper die (its right half), then turned to the side by the reflection about y = x
   PetscFunctionBeginUser;
@@ -114,13 +114,13 @@ PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, DieChoice shape, con
     // (the whole plate in the half and full models, which reach below the x axis)
     ShapeSpec &spec = shape.spec;
     spec.y = o.tube_ro, spec.x1 = (1 + kPlateReach) * o.tube_ro, spec.floor = false;
-    spec.x0 = half ? -(1 + kPlateReach) * o.tube_ro : -kPlateOverhang * o.tube_ro;
+    spec.x0 = BothDies(part) ? -(1 + kPlateReach) * o.tube_ro : -kPlateOverhang * o.tube_ro;
     MakeShape(kFlatShape, spec, drawn); // (the flat kind draws any plate; the flattening scene's mirror too)
   } else if (shape.Is(DieFrom::Mirror)) {
-    drawn = half ? BothSides(upper_right) : upper_right;
+    drawn = BothDies(part) ? BothSides(upper_right) : upper_right;
   } else {
     PetscCall(ReadProfileTool(comm, option, shape.kind, shape.spec.file, drawn));
-    drawn = half ? BothSides(drawn) : drawn;
+    drawn = BothDies(part) ? BothSides(drawn) : drawn;
   }
   Tool right = Transform(drawn, {true, 1}); // (x, y) -> (y, x): moving along -x by the stroke
   right.name = "side-" + std::string(plate ? "plate" : shape.Is(DieFrom::Mirror) ? tools[0].name : "die");
@@ -128,7 +128,7 @@ PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, DieChoice shape, con
   in.direction = {-1.0, 0.0};
   PetscCall(SetMotion(comm, option, kStrokeMotion, in, right));
   tools.push_back(right);
-  if (full) {
+  if (WholeTube(part)) {
     Tool left = MirrorX(right);
     left.name = "left-" + right.name;
     tools.push_back(left);
@@ -136,8 +136,8 @@ PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, DieChoice shape, con
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, bool full,
-                             double floor_y, std::vector<Tool> &tools, int &flank, int &apex)
+PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, TubePart part, double floor_y,
+                             std::vector<Tool> &tools, int &flank, int &apex)
 {
   const DieSet dies = DiesOfPass(opt, pass);
   Tool upper, right_half; // (the upper die, and its right half as drawn: the side dies' mirror)
@@ -145,22 +145,22 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
   if (squaring) {
     Die die;
     PetscCall(BuildDie(comm, dies.upper, die));
-    upper = full ? BothSides(die.tool) : die.tool; // (the right half's segments first: flank and apex stay)
+    upper = WholeTube(part) ? BothSides(die.tool) : die.tool; // (the right half's segments first: flank and apex stay)
     right_half = die.tool;
     flank = die.flank, apex = die.apex;
   } else {
-    const double from = full ? -(1 + kPlateReach) * opt.tube_ro : -kPlateOverhang * opt.tube_ro;
+    const double from = WholeTube(part) ? -(1 + kPlateReach) * opt.tube_ro : -kPlateOverhang * opt.tube_ro;
     upper = BuildFlatPlate(opt.tube_ro, from, (1 + kPlateReach) * opt.tube_ro);
   }
   tools = {upper};
-  if (half) {
+  if (BothDies(part)) {
     Tool lower;
-    PetscCall(BuildLowerDie(comm, opt, dies.lower, tools[0], floor_y, full, lower));
+    PetscCall(BuildLowerDie(comm, opt, dies.lower, tools[0], floor_y, part, lower));
     tools.push_back(lower);
   }
   if (!dies.side.Is(DieFrom::None))
     PetscCall(AddSideDies(comm, opt, dies.side, pass > 0 ? PassOption(pass, "side_die").c_str() : "-side_die", squaring,
-                          right_half, half, full, tools));
+                          right_half, part, tools));
   // Its upper die's own motion (a path, a force: the first pass's -die_motion, a later one's), after the stroke its
   // lower die's motion gives it.
   PetscCall(
@@ -222,12 +222,12 @@ PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-TurnMap PassTurn(const Options &opt, int pass, bool half, bool full)
+TurnMap PassTurn(const Options &opt, int pass, TubePart part)
 {
   const int k = PassQuarters(opt, pass), q = ((k % 4) + 4) % 4;
-  if (full && !QuarterTurn(opt, pass)) return TurnMap::TurnBy(-PassTurnDegrees(opt, pass) * M_PI / 180);
-  if (full) return TurnMap::Turn(-k);
-  if (half) return q == 2 ? TurnMap{true, 0} : TurnMap{};
+  if (WholeTube(part) && !QuarterTurn(opt, pass)) return TurnMap::TurnBy(-PassTurnDegrees(opt, pass) * M_PI / 180);
+  if (WholeTube(part)) return TurnMap::Turn(-k);
+  if (BothDies(part)) return q == 2 ? TurnMap{true, 0} : TurnMap{};
   return q % 2 ? TurnMap{true, 1} : TurnMap{};
 }
 

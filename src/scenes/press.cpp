@@ -32,7 +32,9 @@
 namespace tf {
 
 PressScene::PressScene(const Options &opt, bool squaring)
-    : opt_(opt), squaring_(squaring), half_(!QuarterModel(opt)), full_(FullModel(opt))
+    : opt_(opt), squaring_(squaring), part_(FullModel(opt)      ? TubePart::Full
+                                            : QuarterModel(opt) ? TubePart::Quarter
+                                                                : TubePart::Half)
 {
   stroke_ = opt.stroke.corner_radius > 0
               ? StrokeForCornerRadius(opt.tube_ro, opt.stroke.corner_radius, FirstDies(opt).upper.spec.angle)
@@ -40,12 +42,12 @@ PressScene::PressScene(const Options &opt, bool squaring)
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
   lower_motion_ = LowerDieMotion(opt);
   passes_.resize(PassCount(opt));
-  const ModelChoice model = ModelOf(opt); // (each pass's hold; half_ and full_ read the same choice)
+  const ModelChoice model = ModelOf(opt); // (each pass's hold; part_ reads the same choice)
   passes_[0].path = FirstDies(opt).motion.OwnPath() ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
   for (int k = 0; k < (int)passes_.size(); ++k) {
     Pass &p = passes_[k];
     p.extent = ExtentOf(ToolsOf(opt).passes[k], k, k == 0 ? stroke_ : LaterPass(opt, k).stroke);
-    p.turn = PassTurn(opt, k, half_, full_);
+    p.turn = PassTurn(opt, k, part_);
     p.dies = DiesOfPass(opt, k), p.reach = DieReach(opt, p.dies, squaring);
     p.held = model.HeldByRotation(k), p.side_dies = !p.dies.side.Is(DieFrom::None);
     if (k > 0 && p.dies.motion.OwnPath()) { // (its own path: -pass<N>_die_path)
@@ -107,7 +109,8 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   const double offset = ToolsOf(opt_).model.die_offset; // (-die_offset)
   if (offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, offset, tools.tools[kUpper]));
   tools.candidates = "outer";
-  for (int pass = (int)passes_.size() - 1; full_ && pass >= 0; --pass) { // (the later passes' axes checked now)
+  for (int pass = (int)passes_.size() - 1; WholeTube(part_) && pass >= 0;
+       --pass) { // (the later passes' axes checked now)
     PetscCall(pins_.Mark(m, PassMap(pass).Inverse()));
     if (passes_[pass].held) PetscCall(hold_.Mark(m, PassMap(pass).Inverse()));
   }
@@ -115,7 +118,7 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   tools.symmetry = Symmetry();
   // The wall meets its mirror image on the quarter's and the half model's symmetry planes: frictionless walls.
   tools.surfaces = {"outer", "inner"};
-  if (!full_)
+  if (!WholeTube(part_))
     for (const auto &s : tools.symmetry) tools.walls.push_back(s.first);
   // Default VCRI: 2 % of the mean distance between the outer surface's nodes
   // (of the mesh actually used: generated or read from a file).
@@ -143,16 +146,17 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
   }
   if (!m.quiet) PetscCall(WarnUntouched(m.comm, *m.contact, pass_, passes_[pass_].extent.stroke));
   // The paper's unloading: contact forces become loads, tools go (every point elastic by default: ElasticRelease).
-  if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
-  PetscCall(VecZeroEntries(reversed_));
-  PetscCall(m.contact->AddContactForces(reversed_, true)); // (a symmetry wall's force stays: it is the tube's own)
-  if (passes_[pass_].held) PetscCall(hold_.AddForces(m, reversed_)); // (its couple falls with them)
-  PetscCall(m.contact->TotalForce(kUpper, reversed_total_, &reversed_moment_));
+  if (!reversed_.forces) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_.forces));
+  PetscCall(VecZeroEntries(reversed_.forces));
+  PetscCall(
+    m.contact->AddContactForces(reversed_.forces, true)); // (a symmetry wall's force stays: it is the tube's own)
+  if (passes_[pass_].held) PetscCall(hold_.AddForces(m, reversed_.forces)); // (its couple falls with them)
+  PetscCall(m.contact->TotalForce(kUpper, reversed_.total, &reversed_.moment));
   PetscCall(m.contact->Remove());
   m.system.ClearFrames();
   m.body.BeginRelease(elastic, true);
   unloading_ = true;
-  if (half_) PetscCall(pin_.Mark(m, Press()));
+  if (BothDies(part_)) PetscCall(pin_.Mark(m, Press()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -173,7 +177,7 @@ PetscErrorCode PressScene::StartPass(Model &m)
   if (next > 1) passes_[next].side_from = before.side_from + before.extent.stroke + before.back;
   unloading_ = false;
   // (the pin stays until the next pass's dies hold the half model's tube: Load)
-  reversed_total_[0] = reversed_total_[1] = reversed_moment_ = 0;
+  reversed_.total[0] = reversed_.total[1] = reversed_.moment = 0;
   m.body.EndRelease();
   pass_ = next;
   ContactSpec spec = spec_;
@@ -217,15 +221,15 @@ PetscErrorCode PressScene::Load(Model &m, double lambda, double dlambda)
   if (unloading_) {
     // Reversed contact forces: from F at the release's start to 0 at its end (ReleaseEnd).
     const PetscScalar *f;
-    PetscCall(VecGetArrayRead(reversed_, &f));
+    PetscCall(VecGetArrayRead(reversed_.forces, &f));
     for (PetscInt n = 0; n < m.mesh.num_nodes; ++n) {
       const double fx = -dlambda * PetscRealPart(f[m.mesh.node_dof[n]]);
       const double fy = -dlambda * PetscRealPart(f[m.mesh.node_dof[n] + 1]);
       if (fx != 0 || fy != 0) m.system.AddForce(n, fx, fy);
     }
-    PetscCall(VecRestoreArrayRead(reversed_, &f));
+    PetscCall(VecRestoreArrayRead(reversed_.forces, &f));
   }
-  if (!full_) PetscCall(QuarterSymmetry(m)); // (a full model's mesh file may carry x0 or y0 sets: not held)
+  if (!WholeTube(part_)) PetscCall(QuarterSymmetry(m)); // (a full model's mesh file may carry x0 or y0 sets: not held)
   // (inside the increment: its failure writes the results so far)
   const Pass &p = passes_[pass_];
   if (p.extent.Forced() && m.contact->active())
@@ -243,7 +247,7 @@ PetscErrorCode PressScene::ExternalForce(Model &m, double lambda, Vec f)
 {
   PetscFunctionBeginUser;
   PetscCall(VecZeroEntries(f));
-  if (unloading_) PetscCall(VecAXPY(f, ReleaseEnd() - lambda, reversed_));
+  if (unloading_) PetscCall(VecAXPY(f, ReleaseEnd() - lambda, reversed_.forces));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -258,7 +262,7 @@ PetscErrorCode PressScene::PassTools(Model &m, int pass, std::vector<Tool> &tool
 PetscErrorCode PressScene::PassTools(Model &m, int pass, double floor_y, std::vector<Tool> &tools)
 {
   PetscFunctionBeginUser;
-  PetscCall(BuildPassDies(m.comm, opt_, pass, squaring_, half_, full_, floor_y, tools, flank_, apex_));
+  PetscCall(BuildPassDies(m.comm, opt_, pass, squaring_, part_, floor_y, tools, flank_, apex_));
   for (Tool &t : tools) t = Transform(t, PassMap(pass));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -279,7 +283,7 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
   // By its stroke: straight from where its dies start (on a path of its own: its path; under force: the die's stroke).
   if (!p.dies.motion.OwnPath() && !p.extent.Forced()) p.path = StrokePath({}, p.extent.stroke + p.back);
   p.start = PassStart();
-  if (full_) PetscCall(pins_.Mark(m, Press()));
+  if (WholeTube(part_)) PetscCall(pins_.Mark(m, Press()));
   if (p.held) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)
   symmetry = Symmetry();
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -293,9 +297,9 @@ double PressScene::Stroke(Model &m, double lambda) const
 
 std::vector<std::pair<std::string, Vec2>> PressScene::Symmetry() const
 {
-  if (full_ && passes_[pass_].held) return {};
-  if (full_) return {{"axis", AxisHeld()}};
-  if (half_) return {{"x0", {1, 0}}};
+  if (WholeTube(part_) && passes_[pass_].held) return {};
+  if (WholeTube(part_)) return {{"axis", AxisHeld()}};
+  if (BothDies(part_)) return {{"x0", {1, 0}}};
   return {{"x0", {1, 0}}, {"y0", {0, 1}}};
 }
 

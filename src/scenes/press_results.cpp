@@ -27,8 +27,8 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   path(row, kDieX) = passes_[pass_].path.Sideways(ToolStroke(lambda)); // (-die_path; 0 without)
   path(row, kDieTurn) = passes_[pass_].path.Turn(ToolStroke(lambda));
   if (unloading_) {
-    for (int k = 0; k < 2; ++k) force[k] = (ReleaseEnd() - lambda) * reversed_total_[k];
-    moment = (ReleaseEnd() - lambda) * reversed_moment_;
+    for (int k = 0; k < 2; ++k) force[k] = (ReleaseEnd() - lambda) * reversed_.total[k];
+    moment = (ReleaseEnd() - lambda) * reversed_.moment;
   } else
     PetscCall(m.contact->TotalForce(kUpper, force, &moment));
   // (in the press's frame: a turned pass's die presses along its -y)
@@ -46,9 +46,9 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
     // (the right side die: whole in the half and full models, its upper half in the quarter)
     // (its force along the press's x: a turned pass's side die presses along the press's -x)
     PetscCall(m.contact->TotalForce(SideDie(), force, nullptr));
-    side(row, kSideLoad) = -(half_ ? 1.0 : 2.0) * Press()({force[0], force[1]})[0];
+    side(row, kSideLoad) = -(BothDies(part_) ? 1.0 : 2.0) * Press()({force[0], force[1]})[0];
   }
-  if (half_ && !unloading_) {
+  if (BothDies(part_) && !unloading_) {
     PetscCall(m.contact->TotalForce(kLower, force, &moment));
     f = Press()({force[0], force[1]});
     const ToolColumns &lower = LowerDieColumns();
@@ -57,7 +57,7 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   hold_.SeeLoad(row.load); // (the warning's floor: the largest load so far)
   if (Holding() && !hold_.pins()) PetscCall(hold_.Measure(m, f_int, Press().det(), opt_.tube_ro, row));
   if (passes_[pass_].held && unloading_) // (what the springback's pins carry; scenes/hold.hpp)
-    PetscCall(hold_.SupportMoment(m, f_int, reversed_, ReleaseEnd() - lambda, pin_.node(),
+    PetscCall(hold_.SupportMoment(m, f_int, reversed_.forces, ReleaseEnd() - lambda, pin_.node(),
                                   RotationHold::Columns()(row, RotationHold::kMoment)));
   PetscCall(OuterExtents(m, row, Part(), Press()));
   PetscCall(Shape(m, lambda, row));
@@ -112,34 +112,34 @@ PetscErrorCode PressScene::Persist(Model &m, Archive &ar)
     if (!symmetry.empty()) m.contact->SetSymmetry(symmetry);
   }
   // The springback's total force and moment and the side C is measured on (from the loading).
-  std::vector<double> pairs = {reversed_total_[0], reversed_total_[1], (double)side_ends_[0], (double)side_ends_[1],
-                               reversed_moment_};
+  std::vector<double> pairs = {reversed_.total[0], reversed_.total[1], (double)side_ends_[0], (double)side_ends_[1],
+                               reversed_.moment};
   PetscCall(ar.Values("reversed_total_side_ends_moment", pairs));
   PetscCheck(pairs.size() == 5, m.comm, PETSC_ERR_USER_INPUT,
              "%s: /scene/reversed_total_side_ends_moment is not 5 numbers", ar.path().c_str());
-  reversed_total_[0] = pairs[0], reversed_total_[1] = pairs[1];
+  reversed_.total[0] = pairs[0], reversed_.total[1] = pairs[1];
   side_ends_[0] = (long)pairs[2], side_ends_[1] = (long)pairs[3];
-  reversed_moment_ = pairs[4];
+  reversed_.moment = pairs[4];
   PetscCall(pin_.Persist(m, ar, Press()));
   if (!unloading_) PetscFunctionReturn(PETSC_SUCCESS);
   // The reversed contact forces: contributions of the owned nodes.
-  if (!reversed_) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_));
+  if (!reversed_.forces) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_.forces));
   std::vector<double> f(2 * m.mesh.num_nodes);
   PetscScalar *a;
-  PetscCall(VecGetArray(reversed_, &a));
+  PetscCall(VecGetArray(reversed_.forces, &a));
   for (PetscInt n = 0; n < m.mesh.num_nodes && !ar.reading(); ++n)
     for (int k = 0; k < 2; ++k) f[2 * n + k] = PetscRealPart(a[m.mesh.node_dof[n] + k]);
   PetscCall(ar.NodeData("reversed", f, 2, true));
   for (PetscInt n = 0; n < m.mesh.num_nodes && ar.reading(); ++n)
     for (int k = 0; k < 2; ++k) a[m.mesh.node_dof[n] + k] = f[2 * n + k];
-  PetscCall(VecRestoreArray(reversed_, &a));
+  PetscCall(VecRestoreArray(reversed_.forces, &a));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode PressScene::Shape(Model &m, double lambda, HistoryRow &row)
 {
   const bool release = (int)StageOf(lambda) % 2 == 1; // (whatever releases the tube: reversed loads, a withdrawal)
-  const PressShapeState state{squaring_, half_, release, pass_ > 0, flank_, apex_, opt_.tube_t, Press()};
+  const PressShapeState state{squaring_, BothDies(part_), release, pass_ > 0, flank_, apex_, opt_.tube_t, Press()};
   return PressShape(m, state, side_ends_, row);
 }
 

@@ -22,6 +22,10 @@ PetscErrorCode HoldAlong(Model &m, const std::string &set, double dx, double dy)
 PetscErrorCode QuarterSymmetry(Model &m);
 // The part of the tube a tool scene models: the quarter x, y >= 0, the half x >= 0, or the whole tube.
 enum class TubePart { Quarter, Half, Full };
+// It models both dies, above and below the tube (the half and the full model).
+inline bool BothDies(TubePart part) { return part != TubePart::Quarter; }
+// It models the whole tube, its dies across the y axis (the full model).
+inline bool WholeTube(TubePart part) { return part == TubePart::Full; }
 // The side dies' force in the model per side die's force on the whole tube: the quarter carries the upper half
 // of one, the half model one, the full model two (-side_die).
 inline double SideDiesInModel(TubePart part)

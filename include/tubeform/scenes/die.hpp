@@ -5,6 +5,7 @@
 #pragma once
 
 #include "tubeform/metrics/shape.hpp"
+#include "tubeform/scenes/common.hpp"
 #include "tubeform/scenes/tool_scene.hpp"
 #include "tubeform/tool/tool.hpp"
 
@@ -25,9 +26,9 @@ PetscErrorCode BuildDie(MPI_Comm comm, const DieShape &shape, Die &die);
 constexpr double kFloorOverhang = 0.1, kFloorReach = 0.6;
 // Collective: the lower die of `shape` (a pass's -lower_die: the upper die's mirror, a flat floor at y = floor_y, or
 // a profile file drawn as an upper die and mirrored below the tube) with its motion of -lower_die_motion, the upper
-// die's motion with it; `full`: both sides of the y axis (the full model).
-PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape, Tool &upper, double floor_y, bool full,
-                             Tool &lower);
+// die's motion with it; in the full model (`part`) on both sides of the y axis.
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape, Tool &upper, double floor_y,
+                             TubePart part, Tool &lower);
 
 // Collective: tool t's motion of the registry's kind `kind` made from `spec` (tool/motion.hpp), or an error on
 // every rank naming `option`.
@@ -56,11 +57,11 @@ PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, size_t first_sid
 // much less than half its radius.
 constexpr double kPlateOverhang = 0.1, kPlateReach = 0.5;
 // Collective: the dies of a pass (DiesOfPass: the first pass's and a later one's alike): the upper one (the squaring
-// scene's die, or the flattening scene's plate) on its own motion and, in the half (and full) model, the lower one
-// (a floor at floor_y); in the full model both reaching across the y axis; its side dies; a later pass's named
+// scene's die, or the flattening scene's plate) on its own motion and, in the half (and full) model `part`, the lower
+// one (a floor at floor_y); in the full model both reaching across the y axis; its side dies; a later pass's named
 // pass<N>-<name>. `flank` and `apex`: the upper die's segments the shape metrics use (of its right half).
-PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, bool half, bool full,
-                             double floor_y, std::vector<Tool> &tools, int &flank, int &apex);
+PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, TubePart part, double floor_y,
+                             std::vector<Tool> &tools, int &flank, int &apex);
 // A later pass's dies start where the first pass's started (on the round tube's circle) or,
 // where that is inside the tube's outer surface `outer` as the springback of pass `before` left it (wider than round
 // along their motion: an oval, a turned square), moved back along their motion until they touch it (`back`: how far, in
@@ -76,17 +77,17 @@ PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint
 // Collective: a pass's side dies (`shape`, read from `option`: -side_die or -pass<N>_side_die) appended to
 // `tools`: the right one (for mirror the squaring scene's upper die, whose right half is `upper_right`, or the
 // flattening scene's plate; a plate; or a profile drawn as an upper die), turned to the side by the reflection
-// about y = x, moving along -x by the stroke; whole in the half and full models; in the full model, its mirror on
-// the left too.
+// about y = x, moving along -x by the stroke; whole in the half and full models (`part`); in the full model, its
+// mirror on the left too.
 PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, DieChoice shape, const char *option, bool squaring,
-                           const Tool &upper_right, bool half, bool full, std::vector<Tool> &tools);
+                           const Tool &upper_right, TubePart part, std::vector<Tool> &tools);
 // The map that draws a pass's dies, built in its press's frame, into the tube's: -pass2_turn turns the tube
 // before the second pass, -pass3_turn on from there before the third, ..., so its dies turn the other way about
 // the tube's centre by the turns summed (PassTurnDegrees; the full model: by any angle,
 // TurnMap::TurnBy, unless a whole number of quarter turns). The quarter and the half model
 // draw the turned dies by the reflection that keeps their symmetry planes (the same press, by the tube's
 // symmetry): the quarter's quarter turn is the reflection about y = x, the half's half turn y -> -y.
-TurnMap PassTurn(const Options &opt, int pass, bool half, bool full);
+TurnMap PassTurn(const Options &opt, int pass, TubePart part);
 
 // Collective: refuses a stroke the dies `dies` of a pass (DiesOfPass) cannot take, naming `option`: past the parting
 // faces, past the point where the cavity between two V-dies is smaller than the tube's cross-section (plane strain

@@ -21,16 +21,16 @@ public:
 
   std::vector<std::string> BoundarySets() const override
   {
-    if (full_) return {"inner", "outer"};
-    if (half_) return {"inner", "outer", "x0"};
+    if (WholeTube(part_)) return {"inner", "outer"};
+    if (BothDies(part_)) return {"inner", "outer", "x0"};
     return {"inner", "outer", "x0", "y0"};
   }
   std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh, Part()); }
   std::string MeshLayout(const Options &opt) const override
   {
-    return Scene::MeshLayout(opt) + (full_   ? " (the full model: four times that around)"
-                                     : half_ ? " (the half model: twice that around)"
-                                             : "");
+    return Scene::MeshLayout(opt) + (WholeTube(part_)  ? " (the full model: four times that around)"
+                                     : BothDies(part_) ? " (the half model: twice that around)"
+                                                       : "");
   }
   LoadPath Path(const Options &opt) const override;
   // Stages by the lambda an increment starts at: 0 press, 1 release, 2 press (the second pass), 3 release, ...:
@@ -43,7 +43,10 @@ public:
   // die. The reversed loads of the paper's unloading do no work along the stroke.
   double LoadWorkShare(double lambda) const override
   {
-    return Unloading(lambda) && opt_.release.unload == Unload::Reverse ? 0.0 : full_ ? 2.0 : half_ ? 1.0 : 0.5;
+    return Unloading(lambda) && opt_.release.unload == Unload::Reverse ? 0.0
+           : WholeTube(part_)                                          ? 2.0
+           : BothDies(part_)                                           ? 1.0
+                                                                       : 0.5;
   }
   // Each die's force over its own travel (scenes/common.cpp); a later pass's dies from where they start.
   double ToolWork(const HistoryRow &prev, const HistoryRow &row, double) const override;
@@ -61,7 +64,7 @@ public:
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override;
   std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const override;
   PetscErrorCode Persist(Model &m, Archive &ar) override;
-  ~PressScene() override { (void)VecDestroy(&reversed_); }
+  ~PressScene() override { (void)VecDestroy(&reversed_.forces); }
 
 private:
   // VCRI as a fraction of the outer nodes' spacing: a micro-slip far below an
@@ -72,11 +75,10 @@ private:
   // The tools' places in the contact set.
   static constexpr int kUpper = 0, kLower = 1;
   // The right side die's place (-side_die): after the lower die of the half and full models.
-  int SideDie() const { return half_ ? kLower + 1 : kLower; }
+  int SideDie() const { return BothDies(part_) ? kLower + 1 : kLower; }
   Options opt_;
   bool squaring_;
-  bool half_; // the half model x >= 0 with both dies (or the full model)
-  bool full_; // the full model: the whole tube, both dies across the y axis
+  TubePart part_; // the quarter, the half model x >= 0 with both dies, or the whole tube (ModelOf)
   // A pass: how far it presses, its turn, its dies, its upper die's way, its hold, its side dies and (a later pass)
   // where its dies start; the scene's passes are a list of them, built once from the options.
   struct Pass {
@@ -107,9 +109,13 @@ private:
   MotionHandle lower_motion_; // its lower die's motion (-lower_die_motion) at the stroke U, for the tools' work
   int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
   bool unloading_ = false;
-  Vec reversed_ = nullptr;
-  double reversed_total_[2] = {0, 0};
-  double reversed_moment_ = 0;   // of the reversed forces about the tool frame's origin (TotalForce)
+  // The contact forces a release reverses (the paper's unloading): nodal, their total on the upper die and its moment
+  // about the tool frame's origin (TotalForce).
+  struct Reversed {
+    Vec forces = nullptr;
+    double total[2] = {0, 0};
+    double moment = 0;
+  } reversed_;
   long side_ends_[2] = {-1, -1}; // input node numbers of the side's ends (latest loading state)
 
   // The end of the release stage under way (the load path: press 0-1, release 1-2, press 2-3, release 3-4, ...):
@@ -160,14 +166,14 @@ private:
   Vec2 AxisHeld() const { return PassMap(pass_)({1, 0}); }
   // What holds the full model's tube along the press's x in place of a symmetry plane: the rotation hold while
   // it holds the pass, else the pins; none in the quarter and half models.
-  Support *AxisSupport() { return !full_ ? nullptr : Holding() ? static_cast<Support *>(&hold_) : &pins_; }
+  Support *AxisSupport() { return !WholeTube(part_) ? nullptr : Holding() ? static_cast<Support *>(&hold_) : &pins_; }
   // The nodes whose direction the contact set keeps: the quarter's and the half's symmetry planes (the half tube
   // between both dies is mirrored about the y axis only), the full model's pins (the rotation hold's: inner nodes).
   std::vector<std::pair<std::string, Vec2>> Symmetry() const;
 
   // The punch load per vertical force of the model on the upper die: the quarter and the half model carry half.
-  double LoadPerModelForce() const { return full_ ? 1.0 : 2.0; }
-  TubePart Part() const { return full_ ? TubePart::Full : half_ ? TubePart::Half : TubePart::Quarter; }
+  double LoadPerModelForce() const { return WholeTube(part_) ? 1.0 : 2.0; }
+  TubePart Part() const { return part_; }
 
   PetscErrorCode Shape(Model &m, double, HistoryRow &row);
 };
