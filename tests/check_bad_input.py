@@ -107,7 +107,7 @@ cases = [
     (["-scene", "squaring", "-die_force", "-5"], "-die_force -5"),
     (["-die_force", "100"], "presses with no dies"),
     (["-scene", "squaring", "-die_force", "100", "-model", "half"], "-lower_die_motion fixed"),
-    (["-scene", "squaring", "-die_force", "100", "-pass2_stroke", "2"], "not with a second pass"),
+    (["-scene", "squaring", "-die_force", "100", "-pass2_stroke", "2", "-unload", "none"], "follows the paper's springback"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "400"], "the tube turns by -360 to 360 degrees"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "45", "-model", "half"], "needs the full model"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "45", "-full_hold", "pins"], "needs the full model"),

@@ -43,8 +43,9 @@ PetscErrorCode ReadForce(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
 }
 
 // In a press (MotionKind::press_check): a scene's tools, a lower die that stays in the half and full models (force
-// control drives one die), the last pass, not withdrawn, in place of the pass's stroke; the first pass's not with
-// -stroke_corner_radius (the force's own number is its reader's).
+// control drives one die), not withdrawn, in place of the pass's stroke; the first pass's not with
+// -stroke_corner_radius (the force's own number is its reader's). Later passes may follow it: each starts from
+// where the springback before it left the tube, whatever ended the pass before.
 std::string CheckForceInPress(const MotionSpec &spec, const MotionPress &press)
 {
   const std::string name = Formatted("%sforce %g", press.prefix.c_str(), spec.force);
@@ -54,10 +55,6 @@ std::string CheckForceInPress(const MotionSpec &spec, const MotionPress &press)
   if (!press.quarter && !press.lower_stays)
     return name + ": with the half or full model the lower die must stay (-lower_die_motion fixed); a lower die "
                   "moving by the upper one's unknown stroke is not available";
-  if (press.passes != press.pass + 1)
-    return name +
-           Formatted(": not with a %s pass (-pass%d_stroke); ", PassOrdinal(press.pass + 1).c_str(), press.pass + 2) +
-           (press.pass == 0 ? "press one pass by force" : "a pass by force is the last");
   if (press.withdraw) return name + ": -unload withdraw moves the die back by its stroke; use -unload reverse or none";
   if (press.stroke_given)
     return name + ": in place of " + stroke +

@@ -204,7 +204,7 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
                  "pass ends at U = -y / 2 of its last point; off the axis: the full model under the rotation hold, "
                  "which -model auto and -full_hold auto choose) or presses with a force from where it starts (force: "
                  "-pass2_die_force, as -die_force's; in place of -pass2_stroke: the pass ends at that punch load, its "
-                 "stroke the outcome; the last pass); without it, -pass2_die_path (or its turns or pivot) means path, "
+                 "stroke the outcome); without it, -pass2_die_path (or its turns or pivot) means path, "
                  "-pass2_die_force other than 0 force; a later pass's by its number: -pass3_die_path, ... "
                  "(docs/dies.md)",
       UpperWords().size()};
