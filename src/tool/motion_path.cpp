@@ -107,7 +107,7 @@ PetscErrorCode ReadPath(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
   PetscCall(Numbers(PetscOptionsObject, "-path",
                     "a path motion: the tool's points x,y in turn (mm, from where it starts), straight between them, "
                     "at twice the punch speed along it (-die_motion path: the squaring scene's upper die over a lower "
-                    "die that stays, -lower_die_motion fixed; in place of -stroke, U = -y / 2, one pass; a sideways "
+                    "die that stays, -lower_die_motion fixed; in place of -stroke, U = -y / 2; a sideways "
                     "motion takes the full model and the rotation hold; docs/dies.md)",
                     2 * kMaxPoints, xy, path));
   PetscCall(Numbers(PetscOptionsObject, "-path_turn",
@@ -138,7 +138,7 @@ PetscErrorCode ReadPath(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
 constexpr double kMaxDieTurn = 90;
 
 // In a press (MotionKind::press_check), any pass's: the squaring scene's die, within a quarter turn, ending below its
-// start, over a lower die that stays. The first pass's in place of -stroke and -stroke_path, in one pass, with no side
+// start, over a lower die that stays. The first pass's in place of -stroke and -stroke_path, with no side
 // dies, withdrawal or -die_offset (off its axis the model's choice decides its hold: scenes/options/model_options.cpp);
 // a later pass's with no side dies in any pass (they press by the stroke) and, off its press's axis, held by the
 // rotation hold.
@@ -158,8 +158,8 @@ std::string CheckPathInPress(const MotionSpec &spec, const MotionPress &press)
                      name.c_str(), y);
   if (!press.lower_stays)
     return name + ": the path is the upper die's, relative to a lower die that stays: give -lower_die_motion fixed";
-  if (press.pass == 0 && (press.stroke_path || press.corner_radius || press.side_dies || press.withdraw ||
-                          press.die_offset))
+  if (press.pass == 0 &&
+      (press.stroke_path || press.corner_radius || press.side_dies || press.withdraw || press.die_offset))
     return name + ": in place of -stroke and -stroke_path: not with -stroke_path, -stroke_corner_radius, -side_die, "
                   "-unload withdraw or -die_offset (a path sideways is its own offset)";
   if (press.pass > 0 && press.any_side_dies)

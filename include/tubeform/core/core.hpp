@@ -38,7 +38,9 @@ using Vec2 = std::array<double, 2>;
 template <class... T>
 std::string Formatted(const char *fmt, T... v)
 {
-  std::string s(std::snprintf(nullptr, 0, fmt, v...), '\0');
+  const int n = std::snprintf(nullptr, 0, fmt, v...);
+  if (n <= 0) return "";
+  std::string s(n, '\0');
   std::snprintf(s.data(), s.size() + 1, fmt, v...);
   return s;
 }

@@ -43,10 +43,8 @@ public:
   // die. The reversed loads of the paper's unloading do no work along the stroke.
   double LoadWorkShare(double lambda) const override
   {
-    return Unloading(lambda) && opt_.release.unload == Unload::Reverse ? 0.0
-           : WholeTube(part_)                                          ? 2.0
-           : BothDies(part_)                                           ? 1.0
-                                                                       : 0.5;
+    if (Unloading(lambda) && opt_.release.unload == Unload::Reverse) return 0.0;
+    return WholeTube(part_) ? 2.0 : BothDies(part_) ? 1.0 : 0.5;
   }
   // Each die's force over its own travel (scenes/common.cpp); a later pass's dies from where they start.
   double ToolWork(const HistoryRow &prev, const HistoryRow &row, double) const override;
