@@ -202,6 +202,9 @@ cases = [
     (["-frction_mu", "0.3"], "did you mean -friction_mu, one of the contact and friction options?"),
     (["-rmin_depps", "0.001"], "did you mean -rmin_deps, one of the incremental driver (r_min method) options?"),
     (["-scene", "squaring", "-die_anglee", "80"], "did you mean -die_angle, one of the upper die shape options?"),
+    (["-scene", "squaring", "-die_pth", "0,-1"], "did you mean -die_path, one of the upper die motion options?"),
+    (["-scene", "squaring", "-lower_die_pth", "1,1"], "did you mean -lower_die_path, one of the lower die motion options?"),
+    (["-scene", "squaring", "-pass3_strok", "2"], "did you mean -pass3_stroke, one of the tube model and passes options?"),
     (["-tube_ro", "abc"], "-tube_ro abc: not a number"),
     (["-mesh_nt", "4.5"], "-mesh_nt 4.5: not a whole number"),
     # A die built for a 15 mm tube around a mesh of radius 20: it would start 5 mm inside.
@@ -281,7 +284,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 156 and len(selected) == 10, f"{len(cases)} cases on 1 rank (156), {len(selected)} on 2 (10)")
+k.check(len(cases) == 159 and len(selected) == 10, f"{len(cases)} cases on 1 rank (159), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

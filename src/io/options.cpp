@@ -28,7 +28,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, const std::vector<SceneOptions> &scenes,
     choice = 0;
     for (size_t k = 0; k < scenes.size(); ++k)
       if (scenes[k].name == opt.scene) choice = (PetscInt)k;
-    read.Note("-scene", "Scene to run");
+    read.Note("-scene", "Scene to run", PetscOptionsObject->title);
     PetscCall(PetscOptionsEList("-scene", "Scene to run", "tubeform", names.data(), (PetscInt)names.size(),
                                 names[choice], &choice, &set));
     opt.scene = scenes[choice].name, opt.press = scenes[choice].press;
@@ -65,7 +65,7 @@ PetscErrorCode ReadScene(MPI_Comm comm, const std::vector<SceneOptions> &scenes,
                 "Gmsh 4.1 ASCII quad mesh with physical curves inner, outer, x0, y0 (replaces the structured mesh)",
                 opt.mesh_file));
   choice = 1;
-  read.Note("-element");
+  read.Note("-element", "", PetscOptionsObject->title);
   PetscCall(
     PetscOptionsEList("-element",
                       "Element formulation: q4 (full integration), bbar (mean dilatation), qm6 (incompatible "

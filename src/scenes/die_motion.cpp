@@ -65,7 +65,7 @@ bool LowerDieClosing(const Options &o) { return LowerMotionOf(o).closing; }
 std::vector<double> UpperKinks(const DieMotion &die, double until)
 {
   MotionHandle upper;
-  if (!die.OwnPath() || !MakeMotion(die.kind, die.spec, upper).empty()) return {};
+  if (!MakeMotion(die.kind, die.spec, upper).empty()) return {}; // (any kind's: a path's points, none of a stroke's)
   return upper->Kinks(until);
 }
 
@@ -97,7 +97,7 @@ PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, size_t first_sid
   for (size_t k = first_side; FirstDies(opt).side_force > 0 && k < tools.size(); ++k) {
     MotionSpec spec;
     spec.direction = tools[k].Direction();
-    PetscCall(SetMotion(comm, "-side_force", "force", spec, tools[k]));
+    PetscCall(SetMotion(comm, "-side_force", kForceMotion, spec, tools[k]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -14,7 +14,7 @@ class Force : public StraightMotion {
 public:
   using StraightMotion::StraightMotion;
   std::unique_ptr<Motion> Clone() const override { return std::make_unique<Force>(*this); }
-  std::string Kind() const override { return "force"; }
+  std::string Kind() const override { return kForceMotion; }
   bool Unknown() const override { return true; }
 };
 
@@ -69,7 +69,7 @@ std::unique_ptr<Motion> ForceMotion(const Vec2 &direction) { return std::make_un
 
 const MotionKind &ForceKind()
 {
-  static const MotionKind kind{"force",
+  static const MotionKind kind{kForceMotion,
                                {"force"},
                                ReadForce,
                                [](const MotionSpec &s, MotionHandle &m) {

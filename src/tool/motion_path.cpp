@@ -21,7 +21,7 @@ class Path : public Motion {
 public:
   explicit Path(const ToolPath &path) : path_(path), d_(path.Motion(0)), spin_(path.Spin(0)) {}
   std::unique_ptr<Motion> Clone() const override { return std::make_unique<Path>(*this); }
-  std::string Kind() const override { return "path"; }
+  std::string Kind() const override { return kPathMotion; }
   Vec2 Offset(double s) const override { return path_.At(s); }
   double Turn(double s) const override { return path_.Turn(s); }
   Vec2 Direction() const override { return d_; }
@@ -191,7 +191,7 @@ std::unique_ptr<Motion> PathMotion(const ToolPath &path) { return std::make_uniq
 
 const MotionKind &PathKind()
 {
-  static const MotionKind kind{"path",
+  static const MotionKind kind{kPathMotion,
                                {"path", "path_turn", "pivot"},
                                ReadPath,
                                MakePath,

@@ -41,8 +41,8 @@ MotionHandle LowerDieMotion(const Options &o);
 double UpperTravel(const Options &o);
 // The lower die's motion keeps the dies closing by 2 U (mirror, fixed): the closed forms of their reach hold.
 bool LowerDieClosing(const Options &o);
-// The strokes below `until` where a pass's upper die's own motion `die` turns (its path's points; none by the
-// stroke or a force).
+// The strokes below `until` where a pass's upper die's motion `die` changes piece, as its kind says (Motion::Kinks:
+// a path's points; none by the stroke or a force).
 std::vector<double> UpperKinks(const DieMotion &die, double until);
 // The strokes below `until` where the first pass's dies' motions turn (Motion::Kinks: the upper die's path, the
 // lower die's motion in the half and full models): the load path's kinks (an increment ends there).

@@ -38,8 +38,8 @@ constexpr int kMaxPasses = 9;
 // -die_path_turn, -die_pivot; -die_force) give it, read by the kind (scenes/options/die_motion_options.cpp). The scenes
 // read it through UpperDie.
 struct DieMotion {
-  std::string kind = "stroke"; // stroke: down by the stroke U (2 U over a fixed lower die)
-  MotionSpec spec;             // path: its points, turns, pivot; force: its punch load (N/mm)
+  std::string kind = kStrokeMotion; // stroke: down by the stroke U (2 U over a fixed lower die)
+  MotionSpec spec;                  // path: its points, turns, pivot; force: its punch load (N/mm)
 
   // The die's stroke goes along a path of its own (its kind's MotionKind::own_path: path), which gives the pass's
   // stroke path and its end.
@@ -67,7 +67,7 @@ inline LowerDieMove LowerDieMoveOf(const std::string &word)
 struct LowerDieSpec {
   std::string word = WordOf(kLowerDieMoveWords, LowerDieMove::Mirror);
   LowerDieMove move = LowerDieMove::Mirror;
-  std::string kind = "stroke";
+  std::string kind = kStrokeMotion;
   MotionSpec spec;
 };
 

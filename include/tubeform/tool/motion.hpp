@@ -81,6 +81,10 @@ std::unique_ptr<Motion> FixedMotion();
 // die's motion unless another is chosen.
 std::unique_ptr<Motion> StrokeMotion(const Vec2 &direction);
 inline constexpr const char *kStrokeMotion = "stroke";
+// The path and force kinds' names (what the options' old spellings -die_path and -die_force choose; the side dies'
+// force control).
+inline constexpr const char *kPathMotion = "path";
+inline constexpr const char *kForceMotion = "force";
 // path: along a path of its own, turning about its frame's origin as the path says (motion_path.cpp: the upper
 // die's -die_motion path; the lower die's -lower_die_motion path is the schedule below).
 std::unique_ptr<Motion> PathMotion(const ToolPath &path);
@@ -114,7 +118,6 @@ struct MotionPress {
   bool dies = true;           // the scene presses with dies (squaring), not plates
   bool tools = true;          // the scene presses with tools, dies or plates (squaring, flattening)
   int pass = 0;               // the pass (0 the first)
-  int passes = 1;             // how many passes the run presses
   bool quarter = true;        // the quarter model
   bool lower_stays = false;   // the lower die stays (-lower_die_motion fixed)
   bool withdraw = false;      // the dies let go by withdrawal (-unload withdraw)

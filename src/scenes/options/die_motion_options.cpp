@@ -12,6 +12,8 @@
 namespace tf {
 
 namespace {
+// The lower die's motion's -help block (its options' reader in an unknown option's hint).
+constexpr const char *kLowerMotionTitle = "tubeform: lower die motion";
 // A die's word for its motion and the kind of the registry it names.
 struct MotionWord {
   std::string word, kind;
@@ -94,7 +96,7 @@ PetscErrorCode OldSpelling(MPI_Comm comm, OptionReader &read, const std::string 
   PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-path", &path));
   PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-path_turn", &turn));
   PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-pivot", &pivot));
-  const PetscInt path_at = WordAt(words, "path"), force_at = WordAt(words, "force");
+  const PetscInt path_at = WordAt(words, kPathMotion), force_at = WordAt(words, kForceMotion);
   if (force_at >= 0) {
     PetscCall(read.CheckNumber(comm, ("-" + prefix + "force").c_str(), false));
     PetscCall(PetscOptionsGetReal(nullptr, prefix.c_str(), "-force", &f, &force));
@@ -119,11 +121,12 @@ PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &op
   for (size_t k = 0; k < words.size(); ++k) {
     list.push_back(words[k].word.c_str());
     if (ToolsOf(opt).lower_motion.word == words[k].word) choice = (PetscInt)k;
-    for (const std::string &name : FindMotionKind(words[k].kind)->options) read.Note(("-lower_die_" + name).c_str());
+    for (const std::string &name : FindMotionKind(words[k].kind)->options)
+      read.Note(("-lower_die_" + name).c_str(), "", kLowerMotionTitle);
   }
-  read.Note("-lower_die_motion", help.c_str());
+  read.Note("-lower_die_motion", help.c_str(), kLowerMotionTitle);
   ToolsOf(opt).lower_motion.spec.tool = "the lower die";
-  PetscOptionsBegin(comm, "lower_die_", "tubeform: lower die motion", "tubeform");
+  PetscOptionsBegin(comm, "lower_die_", kLowerMotionTitle, "tubeform");
   OptionsBlock block(PetscOptionsObject);
   PetscCall(PetscOptionsEList("-motion", help.c_str(), "tubeform", list.data(), (PetscInt)list.size(), list[choice],
                               &choice, nullptr));
@@ -153,9 +156,10 @@ PetscErrorCode ReadUpperMotion(MPI_Comm comm, OptionReader &read, const UpperMot
   for (const MotionWord &w : words) {
     if (w.kind == die.kind) choice = (PetscInt)list.size();
     list.push_back(w.word.c_str());
-    for (const std::string &name : FindMotionKind(w.kind)->options) read.Note(("-" + prefix + name).c_str());
+    for (const std::string &name : FindMotionKind(w.kind)->options)
+      read.Note(("-" + prefix + name).c_str(), "", block.title.c_str());
   }
-  read.Note(("-" + prefix + "motion").c_str(), block.help.c_str());
+  read.Note(("-" + prefix + "motion").c_str(), block.help.c_str(), block.title.c_str());
   PetscCall(OldSpelling(comm, read, prefix, words, choice, zero_force));
   PetscOptionsBegin(comm, prefix.c_str(), block.title.c_str(), "tubeform");
   OptionsBlock end(PetscOptionsObject);
@@ -168,7 +172,7 @@ PetscErrorCode ReadUpperMotion(MPI_Comm comm, OptionReader &read, const UpperMot
     PetscCall(ReadMotion(PetscOptionsObject, words[choice].kind, die.spec));
   end.Release();
   PetscOptionsEnd();
-  if (!help) PetscCall(RefuseOthers(comm, prefix.c_str(), words, words[choice], zero_force ? "force" : ""));
+  if (!help) PetscCall(RefuseOthers(comm, prefix.c_str(), words, words[choice], zero_force ? kForceMotion : ""));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -215,7 +219,8 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
       given = given || set;
     }
     if (!given) {
-      for (const std::string &name : names) read.Note(("-" + block.prefix + name).c_str(), block.help.c_str());
+      for (const std::string &name : names)
+        read.Note(("-" + block.prefix + name).c_str(), block.help.c_str(), block.title.c_str());
       continue;
     }
     p.dies.motion.spec.tool = "the " + PassOrdinal(pass) + " pass's upper die";

@@ -10,7 +10,7 @@ MotionPress PressOfPass(const Options &opt, int pass)
   press.prefix = pass == 0 ? "-die_" : PassOption(pass, "die_");
   press.scene = opt.scene;
   press.dies = PressesWithDie(opt), press.tools = PressesWithTools(opt);
-  press.pass = pass, press.passes = PassCount(opt);
+  press.pass = pass;
   press.quarter = QuarterModel(opt), press.lower_stays = LowerDieMoves(opt, LowerDieMove::Fixed);
   press.withdraw = opt.release.unload == Unload::Withdraw;
   press.stroke_given = pass > 0 && LaterPass(opt, pass).stroke != 0;

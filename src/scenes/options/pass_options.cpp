@@ -52,7 +52,7 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
   }
   if (!given) {
     for (const std::string *name : {&stroke, &profile, &lower, &side, &turn})
-      read.Note(name->c_str(), (help + name->substr(pre.size()) + "'s").c_str());
+      read.Note(name->c_str(), (help + name->substr(pre.size()) + "'s").c_str(), PetscOptionsObject->title);
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(read.Real(PetscOptionsObject, stroke.c_str(), (help + "stroke").c_str(), pass.stroke));
