@@ -51,7 +51,7 @@ PressScene::PressScene(const Options &opt, bool squaring)
     p.dies = DiesOfPass(opt, k), p.reach = DieReach(opt, p.dies, squaring);
     p.held = model.HeldByRotation(k), p.side_dies = !p.dies.side.Is(DieFrom::None);
     if (k > 0 && p.dies.motion.OwnPath()) { // (its own path: -pass<N>_die_path)
-      const ToolPath own = PathOf(p.dies.motion.spec);
+      const ToolPath own = MotionPathOf(p.dies.motion.kind, p.dies.motion.spec);
       p.path = StrokePath(own), p.rise = -0.5 * own.Motion(0)[1];
     }
   }

@@ -79,7 +79,7 @@ const MotionKind &ForceKind()
                                nullptr,
                                nullptr,
                                "force",
-                               /*own_path=*/false,
+                               /*path=*/nullptr,
                                /*unknown_stroke=*/true,
                                CheckForceInPress};
   return kind;

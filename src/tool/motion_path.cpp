@@ -170,6 +170,15 @@ std::string CheckPathInPress(const MotionSpec &spec, const MotionPress &press)
   return "";
 }
 
+// Off its press's y axis: a sideways point or a turn (MotionKind::off_axis).
+bool PathOffAxis(const MotionSpec &spec)
+{
+  bool off = false;
+  for (const Vec2 &p : spec.points) off = off || p[0] != 0;
+  for (double a : spec.turns) off = off || a != 0;
+  return off;
+}
+
 std::string MakePath(const MotionSpec &s, MotionHandle &m)
 {
   if (s.points.empty()) return "a path with no points";
@@ -198,9 +207,10 @@ const MotionKind &PathKind()
                                nullptr,
                                nullptr,
                                "path",
-                               /*own_path=*/true,
+                               PathOf,
                                /*unknown_stroke=*/false,
-                               CheckPathInPress};
+                               CheckPathInPress,
+                               PathOffAxis};
   return kind;
 }
 

@@ -26,7 +26,19 @@ const MotionKind *FindMotionKind(const std::string &kind)
 bool MotionOwnsPath(const std::string &kind)
 {
   const MotionKind *k = FindMotionKind(kind);
-  return k && k->own_path;
+  return k && k->path;
+}
+
+ToolPath MotionPathOf(const std::string &kind, const MotionSpec &spec)
+{
+  const MotionKind *k = FindMotionKind(kind);
+  return k && k->path ? k->path(spec) : ToolPath();
+}
+
+bool MotionLeavesAxis(const std::string &kind, const MotionSpec &spec)
+{
+  const MotionKind *k = FindMotionKind(kind);
+  return k && k->off_axis && k->off_axis(spec);
 }
 
 bool MotionStrokeUnknown(const std::string &kind)

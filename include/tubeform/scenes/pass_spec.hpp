@@ -41,7 +41,7 @@ struct DieMotion {
   std::string kind = kStrokeMotion; // stroke: down by the stroke U (2 U over a fixed lower die)
   MotionSpec spec;                  // path: its points, turns, pivot; force: its punch load (N/mm)
 
-  // The die's stroke goes along a path of its own (its kind's MotionKind::own_path: path), which gives the pass's
+  // The die's stroke goes along a path of its own (its kind's MotionKind::path: path), which gives the pass's
   // stroke path and its end.
   bool OwnPath() const { return MotionOwnsPath(kind); }
 };

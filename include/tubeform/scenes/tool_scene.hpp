@@ -102,10 +102,7 @@ inline bool LowerDieMoves(const Options &opt, LowerDieMove move) { return ToolsO
 // A pass's upper die's kind is `kind` (`dies`: a pass's, FirstDies(opt), DiesOfPass or the scene's).
 inline bool DieMoves(const DieSet &dies, const char *kind) { return dies.motion.kind == kind; }
 // The first pass's upper die's own path (-die_path with its turns; none unless -die_motion path).
-inline ToolPath DiePath(const Options &opt)
-{
-  return FirstDies(opt).motion.OwnPath() ? PathOf(UpperDie(opt).spec) : ToolPath();
-}
+inline ToolPath DiePath(const Options &opt) { return MotionPathOf(FirstDies(opt).motion.kind, UpperDie(opt).spec); }
 // The die's travel over the first pass in units of the stroke U (mm; -output_stroke counts it): along -stroke_path,
 // half -die_path's length (ToolPath: a fixed lower die's U is half the upper one's travel), or -stroke.
 inline double Travel(const Options &opt)
@@ -123,16 +120,9 @@ inline bool DiePathSideways(const Options &opt)
     if (p[0] != 0) return true;
   return false;
 }
-// A die motion that leaves its press's y axis: a path with a sideways point or a turn.
-inline bool MotionOffAxis(const DieMotion &m)
-{
-  bool off = false;
-  if (m.OwnPath()) {
-    for (const Vec2 &p : m.spec.points) off = off || p[0] != 0;
-    for (double a : m.spec.turns) off = off || a != 0;
-  }
-  return off;
-}
+// A die motion that leaves its press's y axis, as its kind says (MotionKind::off_axis: a path with a sideways point or
+// a turn).
+inline bool MotionOffAxis(const DieMotion &m) { return MotionLeavesAxis(m.kind, m.spec); }
 // The first pass's upper die leaves the press's y axis: -die_offset, or a -die_path with a sideways motion or a
 // turn.
 inline bool DieOffAxis(const Options &opt)

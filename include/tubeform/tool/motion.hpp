@@ -153,10 +153,11 @@ using MotionFactory = std::string (*)(const MotionSpec &spec, MotionHandle &m);
 // and what the lower die then does in -help's words (none: "moves as its motion <word> says"); the word
 // -die_motion and -pass<N>_die_motion offer it under (none: the upper die does not take it); and what the press asks
 // of a kind before its motion is made (by the kind's name: MotionOwnsPath, MotionStrokeUnknown), so that no one
-// compares names: own_path, the tool's stroke goes along a path the motion carries (path: a pass's stroke path and
-// end are the path's), and unknown_stroke, its stroke is an unknown found from a force (force, as its
-// Motion::Unknown says); and its press check (none: it goes with every press). Each kind's file defines its own
-// (FixedKind(), ..., the registry lists them).
+// compares names: path, the path its tool's stroke goes along, for a kind that carries one (path: a pass's stroke path
+// and end are the path's; none: the tool goes by the scene's stroke), and unknown_stroke, its stroke is an unknown
+// found from a force (force, as its Motion::Unknown says); its press check (none: it goes with every press); and
+// whether the spec takes the tool off its press's y axis (off_axis; none: it stays on it), which chooses the model.
+// Each kind's file defines its own (FixedKind(), ..., the registry lists them).
 struct MotionKind {
   const char *name;
   std::vector<std::string> options;
@@ -165,9 +166,10 @@ struct MotionKind {
   const char *lower_word = nullptr;
   const char *lower_help = nullptr;
   const char *upper_word = nullptr;
-  bool own_path = false;
+  ToolPath (*path)(const MotionSpec &spec) = nullptr;
   bool unknown_stroke = false;
   MotionPressCheck press_check = nullptr;
+  bool (*off_axis)(const MotionSpec &spec) = nullptr;
 };
 
 // The registry: a motion of the kind named `kind` from `spec` into `m`; "" or why not (an unknown kind names the
@@ -177,8 +179,12 @@ std::string MakeMotion(const std::string &kind, const MotionSpec &spec, MotionHa
 std::vector<std::string> MotionKinds();
 // The kind named `kind`, or nullptr.
 const MotionKind *FindMotionKind(const std::string &kind);
-// The kind named `kind` carries the path its tool's stroke goes along (MotionKind::own_path; no such kind: false).
+// The kind named `kind` carries the path its tool's stroke goes along (MotionKind::path; no such kind: false).
 bool MotionOwnsPath(const std::string &kind);
+// That path for `spec` (MotionKind::path), or an empty one (a kind that carries none).
+ToolPath MotionPathOf(const std::string &kind, const MotionSpec &spec);
+// The kind named `kind` moves its tool off its press's y axis by `spec` (MotionKind::off_axis; none: false).
+bool MotionLeavesAxis(const std::string &kind, const MotionSpec &spec);
 // The kind named `kind`'s stroke is an unknown found from a force (MotionKind::unknown_stroke; no such kind: false).
 bool MotionStrokeUnknown(const std::string &kind);
 // The kind named `kind`'s press check of `spec` in `press` (MotionKind::press_check): "" or its refusal.

@@ -38,6 +38,8 @@ public:
   bool empty() const { return to_.size() < 2; }
   // The stroke parameter at the path's end: half its length (mm).
   double end() const { return empty() ? 0.0 : at_.back(); }
+  // The displacement at its last point (where the path ends; 0, 0 for none).
+  Vec2 Last() const { return to_.empty() ? Vec2{0.0, 0.0} : to_.back(); }
   // The displacement at stroke s: on the piece that s is on (going forward), past the end along the last one.
   Vec2 At(double s) const
   {

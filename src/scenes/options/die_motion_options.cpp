@@ -228,7 +228,9 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
     if (opt.help || !p.dies.motion.OwnPath()) continue;
     // Its stroke: where its path ends (U = -y / 2 of its last point, from where it starts).
     const std::string path = "-" + block.prefix + "path";
-    const double y = p.dies.motion.spec.points.back()[1];
+    MotionSpec own = p.dies.motion.spec;
+    own.reach = opt.tube_ro; // (its turns counted at the tube's outer radius, as DiesOfPass takes them)
+    const double y = MotionPathOf(p.dies.motion.kind, own).Last()[1];
     PetscCheck(p.stroke == 0, comm, PETSC_ERR_USER_INPUT,
                "%s: in place of %s (the pass ends at U = -y / 2 of its last point); give one of them", path.c_str(),
                PassOption(pass, "stroke").c_str());

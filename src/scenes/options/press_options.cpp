@@ -39,7 +39,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 }
 
 // -die_motion path (checked by the path kind in its press, tool/motion_path.cpp): the stroke U where the path ends.
-void SetDiePathStroke(Options &opt) { opt.stroke.u = -0.5 * FirstDies(opt).motion.spec.points.back()[1]; }
+void SetDiePathStroke(Options &opt) { opt.stroke.u = -0.5 * DiePath(opt).Last()[1]; }
 
 // A lower die on a motion of its own (neither mirror nor fixed: a path, or another kind; its options are its
 // kind's own reader's, tool/motion.hpp): one pass, the stroke rising.
