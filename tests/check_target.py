@@ -30,7 +30,7 @@ import os
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, out, run
+from tfcheck import Checks, args, out, run, run_all
 
 tf, mpirun, src = args()
 k = Checks("target")
@@ -58,9 +58,19 @@ def fresh(name):
     return path
 
 
+# The single-rank runs two at a time (both cores: PROCESSORS 2 in tests/CMakeLists.txt): B's first, its level's
+# increments set C's stop; then A, C, D's level 1 alone and D on 1 rank, the longest first; D's 2-rank run last.
+RADIAL = BASE + ["-plastic_update", "radial", "-target_load", 0.06]
+H5 = {n: fresh(n) for n in ("target_a", "target_b", "target_c", "target_d1", "target_d_np1", "target_d_np2")}
+p_b = run(tf, mpirun, 1, BASE + ["-target_load", 0.05, "-target_levels", 1, "-output", H5["target_b"]], check=False)
+first = int(next((l.split("done, ")[1].split()[0] for l in p_b.stdout.splitlines() if "done, " in l), 0))
+p_d, p_a, p_c, p_d1 = run_all(tf, mpirun, [
+    RADIAL + ["-output", H5["target_d_np1"]], BASE + ["-target_load", 0.05, "-output", H5["target_a"]],
+    BASE + ["-target_load", 0.05, "-rmin_max_increments", first + 20, "-output", H5["target_c"]],
+    RADIAL + ["-target_levels", 1, "-output", H5["target_d1"]]], check=False, timeout=600)
+
 # A. Two levels meet the target.
-h5 = fresh("target_a")
-p = run(tf, mpirun, 1, BASE + ["-target_load", 0.05, "-output", h5], check=False, timeout=600)
+h5, p = H5["target_a"], p_a
 a = attrs(h5) if p.returncode == 0 else {}
 levels = [l for l in p.stdout.splitlines() if "accuracy on demand, level" in l]
 k.check(p.returncode == 0 and levels and a.get("accuracy_level", 0) >= 2,
@@ -82,18 +92,14 @@ if a:
             f"'{said[-1][-28:] if said else ''}', target_c_over_t {a.get('target_c_over_t')})")
 
 # B. One level allowed: a warning naming -target_levels.
-h5 = fresh("target_b")
-p = run(tf, mpirun, 1, BASE + ["-target_load", 0.05, "-target_levels", 1, "-output", h5], check=False)
+h5, p = H5["target_b"], p_b
 warn = [l for l in p.stdout.splitlines() if "warning" in l and "-target_levels 1" in l]
 b = attrs(h5) if p.returncode == 0 else {}
 k.check(p.returncode == 0 and len(warn) == 1 and b.get("target_met") == 0 and b.get("accuracy_level") == 1,
         f"B: -target_levels 1: one level, one warning naming it ({len(warn)}), target_met {b.get('target_met')}")
 
 # C. The second level stops: the first level's results are kept.
-first = int(next((l.split("done, ")[1].split()[0] for l in p.stdout.splitlines() if "done, " in l), 0))
-h5 = fresh("target_c")
-p = run(tf, mpirun, 1, BASE + ["-target_load", 0.05, "-rmin_max_increments", first + 20, "-output", h5],
-        check=False)
+h5, p = H5["target_c"], p_c
 kept = h5[:-3] + ".level1.h5"
 c = attrs(kept) if os.path.exists(kept) else {}
 stopped = attrs(h5) if os.path.exists(h5) else {}
@@ -102,14 +108,12 @@ k.check(p.returncode != 0 and c.get("stopped") == 0 and "error_load" in c and c.
         f"C: level 2 stopped (exit {p.returncode}, -rmin_max_increments {first + 20}): level 1's complete results "
         f"kept in {os.path.basename(kept)} ({'present' if c else 'absent'}), level 2's so far in -output")
 # D. Level 2 from level 1: no companion runs, the estimate from the two levels.
-RADIAL = BASE + ["-plastic_update", "radial", "-target_load", 0.06]
-h5 = fresh("target_d1")
-p1 = run(tf, mpirun, 1, RADIAL + ["-target_levels", 1, "-output", h5], check=False)
+h5, p1 = H5["target_d1"], p_d1
 l1 = attrs(h5) if p1.returncode == 0 else {}
 got = {}
 for n in (1, 2):
-    h5 = fresh(f"target_d_np{n}")
-    p = run(tf, mpirun, n, RADIAL + ["-output", h5], check=False, timeout=600)
+    h5 = H5[f"target_d_np{n}"]
+    p = p_d if n == 1 else run(tf, mpirun, n, RADIAL + ["-output", h5], check=False, timeout=600)
     meshes = [tuple(map(int, m)) for m in re.findall(r"-mesh_nt (\d+) through the wall x -mesh_ntheta (\d+)", p.stdout)]
     reused = [l for l in p.stdout.splitlines() if "no companion runs" in l]
     a = attrs(h5) if p.returncode == 0 else {}
