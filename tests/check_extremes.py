@@ -34,11 +34,17 @@ HANG_GUARD = 900
 # .partial) with the stop flagged and finite histories.
 # The energy stop on the paper's forward increments (-equilibrium_tol 0), whose drift passes 1e-3 on the fast
 # preset (equilibrium iterations keep it near 1e-4).
-for option, value, rows, extra in (("-rmin_max_increments", 30, 31, []), ("-time_limit", 0.5, None, []),
-                                   ("-max_energy_error", 0.001, None, ["-equilibrium_tol", 0])):
+# The three side by side: each stops within a second or two and then waits ~2 s in mpirun's wind-down after its
+# error exit (a -time_limit stop still writes its state there: 2 field steps even at 0.01 s).
+STOPS = (("-rmin_max_increments", 30, 31, []), ("-time_limit", 0.5, None, []),
+         ("-max_energy_error", 0.001, None, ["-equilibrium_tol", 0]))
+with ThreadPoolExecutor(max_workers=3) as pool:
+    stopped = list(pool.map(lambda c: run(tf, mpirun, 2, ["-options_file", f"{src}/options/squaring.opts",
+                                                          "-options_file", f"{src}/options/preset-fast.opts", c[0],
+                                                          c[1], "-output", out(f"stop{c[0]}.h5")] + c[3],
+                                          check=False), STOPS))
+for (option, value, rows, extra), p in zip(STOPS, stopped):
     f = out(f"stop{option}.h5")
-    p = run(tf, mpirun, 2, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
-                            f"{src}/options/preset-fast.opts", option, value, "-output", f] + extra, check=False)
     lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
     k.check(p.returncode != 0 and len(lines) == 1 and option in lines[0],
             f"{option} {value}: exit {p.returncode}, {len(lines)} error line(s) naming the option")
