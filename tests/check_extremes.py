@@ -20,6 +20,9 @@ import numpy as np
 from tfcheck import Checks, args, out, run
 
 tf, mpirun, src = args()
+# Its 2-rank jobs run two or three at a time (below): each mpirun would bind its first rank to core 0 and its second
+# to core 1, all the runs then on one core; unbound, the kernel spreads them (as scripts/sweep's jobs).
+os.environ["OMPI_MCA_hwloc_base_binding_policy"] = "none"
 sys.path.insert(0, os.path.join(src, "python"))  # the helper package (python/README.md)
 from tubeform_py import extremes  # noqa: E402
 
