@@ -27,7 +27,7 @@ import math
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, out, run
+from tfcheck import Checks, args, out, run, run_all
 
 tf, mpirun, src = args()
 k = Checks("die_angle")
@@ -38,8 +38,20 @@ BASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src
 
 def press(angle, extra, name, np_=2):
     f = out(name)
-    run(tf, mpirun, np_, BASE + ["-die_angle", angle, "-output", f] + list(extra))
+    if np_ > 1:
+        run(tf, mpirun, np_, BASE + ["-die_angle", angle, "-output", f] + list(extra))
+    else:
+        assert name in SINGLE, name  # (run already, SINGLE below)
     return h5py.File(f, "r")
+
+
+# The single-rank presses (items 2, 4 and 5 below) two at a time before the checks read them.
+TWO = ["-friction_mu", 0, "-stroke", 1.0, "-pass2_stroke", 1.5]
+SINGLE = {f"rule_{angle}.h5": [angle, "-stroke_corner_radius", 4 * T, "-friction_mu", 0] for angle in (75, 120)}
+SINGLE.update({"die_90.h5": [90], "pass2_default.h5": [120] + TWO + ["-pass2_die_r_apex", RA],
+               "pass2_none.h5": [120] + TWO})
+run_all(tf, mpirun, [BASE + ["-die_angle", o[0], "-output", out(name)] + o[1:] for name, o in SINGLE.items()] +
+        [BASE + ["-output", out("die_default.h5")]])
 
 
 def outline(V, angle):
@@ -90,13 +102,11 @@ for angle in (75, 120):
 
 # 4. 90 degrees given is the default die.
 press(90, [], "die_90.h5", np_=1).close()
-run(tf, mpirun, 1, BASE + ["-output", out("die_default.h5")])
 with h5py.File(out("die_90.h5"), "r") as a, h5py.File(out("die_default.h5"), "r") as b:
     same = all(np.array_equal(a["/history"][c][:], b["/history"][c][:]) for c in a["/history"])
 k.check(same, "-die_angle 90: the history of the default die, bit for bit")
 
 # 5. A second pass's own V-die.
-TWO = ["-friction_mu", 0, "-stroke", 1.0, "-pass2_stroke", 1.5]
 with press(120, TWO + ["-pass2_die_angle", 75], "pass2_die_75.h5") as h:
     V1, V2, L2 = h["/tools/V-die/vertices"][:], h["/tools/pass2-V-die/vertices"][:], h["/tools/pass2-V-die/lines"][:]
     j = int(np.flatnonzero(h["/time"][:, 0] <= 3 + 1e-12)[-1])  # (the second press: lambda 2 to 3)

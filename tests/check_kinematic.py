@@ -37,11 +37,12 @@ src/material/kinematic.cpp) against references that do not come from it.
 """
 import math
 import os
+from concurrent.futures import ProcessPoolExecutor
 
 import h5py
 import numpy as np
 
-from tfcheck import Checks, args, checkpoint_at, out, run
+from tfcheck import Checks, args, checkpoint_at, out, run, run_all
 from uniaxial import stress_path
 
 tf, mpirun, src = args()
@@ -117,13 +118,10 @@ def pairs(back):
     return ",".join(f"{v:g}" for cg in back for v in cg)
 
 
-def cycle(back, path, n, extra=()):
-    f = out("kinematic.h5")
-    run(tf, mpirun, 1, ["-options_file", f"{src}/options/tension.opts", "-tension_strain", path[0], "-tension_cycle",
-                        ",".join(str(e) for e in path[1:]), "-increments", n, "-unload_increments", n,
-                        "-hardening", "chaboche", "-material_kinematic", pairs(back), "-output", f] + list(extra))
-    with h5py.File(f, "r") as h:
-        return h["/history"]["stroke"][:], h["/history"]["load"][:]
+def cycle_options(back, path, n, extra, f):
+    return ["-options_file", f"{src}/options/tension.opts", "-tension_strain", path[0], "-tension_cycle",
+            ",".join(str(e) for e in path[1:]), "-increments", n, "-unload_increments", n, "-hardening", "chaboche",
+            "-material_kinematic", pairs(back), "-output", f] + list(extra)
 
 
 # (name, backstresses (C MPa, gamma), strain path, bounds at 200 increments per stage: 1.3 x measured with the
@@ -131,13 +129,37 @@ def cycle(back, path, n, extra=()):
 CASES = [("Armstrong-Frederick", [(20000.0, 200.0)], [0.02, -0.02, 0.02], 1.2e-2, 3.5e-3),  # measured 9.0e-3, 2.65e-3
          ("Chaboche, two backstresses (one linear)", [(20000.0, 200.0), (300.0, 0.0)], [0.03, -0.01], 1.5e-2,
           4.0e-3)]  # measured 1.16e-2, 3.04e-3
+PAPER, EQUILIBRIUM = ["-equilibrium_tol", 0], []
+# Items 1 and 2's cycles (their runs two at a time, each its own file), then their references, most of the test's
+# time (pure Python floats: tests/uniaxial.py), two at a time in processes of their own; the checks read them.
+CYCLES = [(back, path, n, extra) for _, back, path, _, _ in CASES for extra in (PAPER, EQUILIBRIUM) for n in (100, 200)]
+CYCLES.append((CASES[0][1], [0.02, -0.02], 200, EQUILIBRIUM))  # (item 2)
+run_all(tf, mpirun, [cycle_options(*c, out(f"kinematic_{i}.h5")) for i, c in enumerate(CYCLES)])
+RAN = []  # (stroke, load) of each cycle
+for i in range(len(CYCLES)):
+    with h5py.File(out(f"kinematic_{i}.h5"), "r") as h:
+        RAN.append((h["/history"]["stroke"][:], h["/history"]["load"][:]))
+CALLS = [(i, sub, True) for i in range(len(CYCLES)) for sub in (SUB, SUB // 2)] + [(len(CYCLES) - 1, SUB, False)]
+with ProcessPoolExecutor(max_workers=2) as pool:
+    done = pool.map(reference, *zip(*[(RAN[i][0], CYCLES[i][0], sub, hard) for i, sub, hard in CALLS]))
+    REF = {(str(CYCLES[i]), sub, hard): r for (i, sub, hard), r in zip(CALLS, done)}
+
+
+def cycle(back, path, n, extra=()):
+    return RAN[[str(c) for c in CYCLES].index(str((back, path, n, extra)))]
+
+
+def cycle_reference(back, path, n, extra=(), sub=SUB, hardening=True):
+    return REF[str((back, path, n, extra)), sub, hardening]
+
+
 for name, back, path, bound_paper, bound in CASES:
-    for label, extra, limit in (("paper's increments", ["-equilibrium_tol", 0], bound_paper),
-                                ("equilibrium increments", [], bound)):
+    for label, extra, limit in (("paper's increments", PAPER, bound_paper),
+                                ("equilibrium increments", EQUILIBRIUM, bound)):
         err = {}
         for n in (100, 200):
             e, s = cycle(back, path, n, extra)
-            ref = 2 * reference(e, back, SUB) - reference(e, back, SUB // 2)
+            ref = 2 * cycle_reference(back, path, n, extra) - cycle_reference(back, path, n, extra, SUB // 2)
             err[n] = np.abs(s[1:] - ref[1:]).max() / np.abs(ref).max()
         ratio = err[100] / err[200]
         # Equilibrium increments converge more slowly over a cycle, isotropic hardening alike (measured with the
@@ -149,9 +171,9 @@ for name, back, path, bound_paper, bound in CASES:
 
 # 2. Bauschinger: the reverse yield stress on the first reversal, kinematic against isotropic (reference and run).
 back, path = CASES[0][1], [0.02, -0.02]
-e, s = cycle(back, path, 200)
-iso = reference(e, back, SUB, hardening=False)
-kin = 2 * reference(e, back, SUB) - reference(e, back, SUB // 2)
+e, s = cycle(back, path, 200, EQUILIBRIUM)
+iso = cycle_reference(back, path, 200, EQUILIBRIUM, hardening=False)
+kin = 2 * cycle_reference(back, path, 200, EQUILIBRIUM) - cycle_reference(back, path, 200, EQUILIBRIUM, SUB // 2)
 peak = int(np.argmax(e))
 
 

@@ -29,6 +29,7 @@ import os
 import shutil
 import sys
 import time
+from concurrent.futures import ThreadPoolExecutor
 
 from tfcheck import Checks, args, crashed, out, run
 
@@ -39,9 +40,12 @@ MESH = os.path.join(src, "tests", "fuzz", "regressions", "gmsh", "boundary_segme
 SMALL = ["-options_file", f"{src}/options/pressure.opts", "-mesh_nt", 2, "-mesh_ntheta", 6, "-increments", 1]
 
 
-def refused(np_, opts, needles, what):
-    """Runs a case that must end with one error line holding every needle, exit 1, no crash or hang."""
-    p = run(tf, mpirun, np_, opts, check=False, timeout=TIMEOUT, report_hang=True)
+def attempt(np_, opts):
+    return run(tf, mpirun, np_, opts, check=False, timeout=TIMEOUT, report_hang=True)
+
+
+def refused(np_, p, needles, what):
+    """Checks a case's run p that must end with one error line holding every needle, exit 1, no crash or hang."""
     lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
     crash = crashed(p)
     ok = p.returncode == 1 and not crash and len(lines) == 1 and all(n in lines[0] for n in needles)
@@ -49,34 +53,51 @@ def refused(np_, opts, needles, what):
             f"{lines[:1]}")
 
 
+# The four runs side by side (each a second's work or less, the 2-rank ones then ~2 s in mpirun's wind-down after
+# the error exit), each its own files (its own -history_csv: options/pressure.opts names one for all).
 for np_ in (2, 1):
-    refused(np_, ["-options_file", f"{src}/options/pressure.opts", "-mesh_file", MESH, "-output",
-                  out(f"badmesh_np{np_}.h5")],
-            ["-mesh_file", "boundary_segment_not_a_cell_side.msh", "'outer'", "not a side of any cell"],
-            "a boundary segment that is no cell side")
-    k.check(not os.path.exists(out(f"badmesh_np{np_}.h5")) and not os.path.exists(out(f"badmesh_np{np_}.h5.partial")),
-            f"np={np_} bad mesh: refused before any result file")
-
     h5, xmf = out(f"xmf_np{np_}.h5"), out(f"xmf_np{np_}.xmf")
     for f in (h5, h5 + ".partial"):
         if os.path.exists(f):
             os.remove(f)
     shutil.rmtree(xmf, ignore_errors=True)
     os.mkdir(xmf)  # the .xmf cannot be written; its directory (the .h5's) can
-    refused(np_, SMALL + ["-output", h5], [h5, ".xmf", "cannot be written"], "the .xmf cannot be written")
+with ThreadPoolExecutor(max_workers=4) as pool:
+    ends = {(what, np_): pool.submit(attempt, np_, opts) for np_ in (2, 1) for what, opts in (
+        ("badmesh", ["-options_file", f"{src}/options/pressure.opts", "-mesh_file", MESH, "-output",
+                     out(f"badmesh_np{np_}.h5")]),
+        ("xmf", SMALL + ["-output", out(f"xmf_np{np_}.h5"), "-history_csv", out(f"xmf_np{np_}.csv")]))}
+for np_ in (2, 1):
+    refused(np_, ends["badmesh", np_].result(),
+            ["-mesh_file", "boundary_segment_not_a_cell_side.msh", "'outer'", "not a side of any cell"],
+            "a boundary segment that is no cell side")
+    k.check(not os.path.exists(out(f"badmesh_np{np_}.h5")) and not os.path.exists(out(f"badmesh_np{np_}.h5.partial")),
+            f"np={np_} bad mesh: refused before any result file")
+
+    h5 = out(f"xmf_np{np_}.h5")
+    refused(np_, ends["xmf", np_].result(), [h5, ".xmf", "cannot be written"], "the .xmf cannot be written")
     k.check(os.path.isfile(h5) and not os.path.exists(h5 + ".partial"),
             f"np={np_} .xmf failed: the results are in place ({os.path.basename(h5)}), no .partial left")
 AGREE = 3  # s a rank with an error waits for the others (tubeform waits 10: kAgreeSeconds)
 agree = sys.argv[4]
-for mode, code, line, aborts in [("every", 1, "tubeform: error: -test_value 3: must be below 2", False),
-                                 ("alone", 2, "tubeform: error on rank 1: -test_file x: only rank 1 read it and "
-                                              "refused it (the other ranks did not stop with it within 3 s", True),
-                                 ("late", 1, "tubeform: error on rank 1: -test_file x: only rank 1 read it and "
-                                             "refused it", False),
-                                 ("none", 0, None, False)]:
+MODES = [("every", 1, "tubeform: error: -test_value 3: must be below 2", False),
+         ("alone", 2, "tubeform: error on rank 1: -test_file x: only rank 1 read it and "
+                      "refused it (the other ranks did not stop with it within 3 s", True),
+         ("late", 1, "tubeform: error on rank 1: -test_file x: only rank 1 read it and refused it", False),
+         ("none", 0, None, False)]
+
+
+def timed(mode):
     t0 = time.time()
     p = run(agree, mpirun, 2, [mode, AGREE], check=False, timeout=TIMEOUT, report_hang=True)
-    took = time.time() - t0
+    return p, time.time() - t0
+
+
+# The four modes side by side: each waits (AGREE s, or mpirun's ~2 s wind-down after an error exit) more than it
+# computes.
+with ThreadPoolExecutor(max_workers=4) as pool:
+    ended = list(pool.map(timed, [m[0] for m in MODES]))
+for (mode, code, line, aborts), (p, took) in zip(MODES, ended):
     lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
     aborted = "MPI_ABORT" in p.stdout + p.stderr
     # Exit code 2 comes only from EndJob's MPI_Abort (it returns 0 or 1 otherwise): it shows the abort.

@@ -26,6 +26,7 @@ D. A level that keeps the last one's increments takes that level as its estimate
 """
 import re
 import os
+from concurrent.futures import ThreadPoolExecutor
 
 import h5py
 import numpy as np
@@ -58,9 +59,27 @@ def fresh(name):
     return path
 
 
+# The runs two at a time (both cores: PROCESSORS 2 in tests/CMakeLists.txt), D's 2-rank run among them: its second
+# rank runs level 1's companions and then waits idle (src/driver/beside.cpp), so it takes about one core. B's first
+# (its level's increments set C's stop), beside D's 2-rank run; then D on 1 rank, A, C and D's level 1 alone. Unbound
+# from cores: mpirun would bind its first rank to the core a single-rank run beside it may be on.
+os.environ["OMPI_MCA_hwloc_base_binding_policy"] = "none"
+RADIAL = BASE + ["-plastic_update", "radial", "-target_load", 0.06]
+H5 = {n: fresh(n) for n in ("target_a", "target_b", "target_c", "target_d1", "target_d_np1", "target_d_np2")}
+with ThreadPoolExecutor(max_workers=2) as pool:
+    go = lambda n, opts: pool.submit(run, tf, mpirun, n, opts, check=False, timeout=600)  # noqa: E731
+    f_d2 = go(2, RADIAL + ["-output", H5["target_d_np2"]])
+    f_b = go(1, BASE + ["-target_load", 0.05, "-target_levels", 1, "-output", H5["target_b"]])
+    f_d, f_a = go(1, RADIAL + ["-output", H5["target_d_np1"]]), go(1, BASE + ["-target_load", 0.05, "-output",
+                                                                             H5["target_a"]])
+    p_b = f_b.result()
+    first = int(next((l.split("done, ")[1].split()[0] for l in p_b.stdout.splitlines() if "done, " in l), 0))
+    f_c = go(1, BASE + ["-target_load", 0.05, "-rmin_max_increments", first + 20, "-output", H5["target_c"]])
+    f_d1 = go(1, RADIAL + ["-target_levels", 1, "-output", H5["target_d1"]])
+    p_d2, p_d, p_a, p_c, p_d1 = (f.result() for f in (f_d2, f_d, f_a, f_c, f_d1))
+
 # A. Two levels meet the target.
-h5 = fresh("target_a")
-p = run(tf, mpirun, 1, BASE + ["-target_load", 0.05, "-output", h5], check=False, timeout=600)
+h5, p = H5["target_a"], p_a
 a = attrs(h5) if p.returncode == 0 else {}
 levels = [l for l in p.stdout.splitlines() if "accuracy on demand, level" in l]
 k.check(p.returncode == 0 and levels and a.get("accuracy_level", 0) >= 2,
@@ -82,18 +101,14 @@ if a:
             f"'{said[-1][-28:] if said else ''}', target_c_over_t {a.get('target_c_over_t')})")
 
 # B. One level allowed: a warning naming -target_levels.
-h5 = fresh("target_b")
-p = run(tf, mpirun, 1, BASE + ["-target_load", 0.05, "-target_levels", 1, "-output", h5], check=False)
+h5, p = H5["target_b"], p_b
 warn = [l for l in p.stdout.splitlines() if "warning" in l and "-target_levels 1" in l]
 b = attrs(h5) if p.returncode == 0 else {}
 k.check(p.returncode == 0 and len(warn) == 1 and b.get("target_met") == 0 and b.get("accuracy_level") == 1,
         f"B: -target_levels 1: one level, one warning naming it ({len(warn)}), target_met {b.get('target_met')}")
 
 # C. The second level stops: the first level's results are kept.
-first = int(next((l.split("done, ")[1].split()[0] for l in p.stdout.splitlines() if "done, " in l), 0))
-h5 = fresh("target_c")
-p = run(tf, mpirun, 1, BASE + ["-target_load", 0.05, "-rmin_max_increments", first + 20, "-output", h5],
-        check=False)
+h5, p = H5["target_c"], p_c
 kept = h5[:-3] + ".level1.h5"
 c = attrs(kept) if os.path.exists(kept) else {}
 stopped = attrs(h5) if os.path.exists(h5) else {}
@@ -102,14 +117,12 @@ k.check(p.returncode != 0 and c.get("stopped") == 0 and "error_load" in c and c.
         f"C: level 2 stopped (exit {p.returncode}, -rmin_max_increments {first + 20}): level 1's complete results "
         f"kept in {os.path.basename(kept)} ({'present' if c else 'absent'}), level 2's so far in -output")
 # D. Level 2 from level 1: no companion runs, the estimate from the two levels.
-RADIAL = BASE + ["-plastic_update", "radial", "-target_load", 0.06]
-h5 = fresh("target_d1")
-p1 = run(tf, mpirun, 1, RADIAL + ["-target_levels", 1, "-output", h5], check=False)
+h5, p1 = H5["target_d1"], p_d1
 l1 = attrs(h5) if p1.returncode == 0 else {}
 got = {}
 for n in (1, 2):
-    h5 = fresh(f"target_d_np{n}")
-    p = run(tf, mpirun, n, RADIAL + ["-output", h5], check=False, timeout=600)
+    h5 = H5[f"target_d_np{n}"]
+    p = p_d if n == 1 else p_d2
     meshes = [tuple(map(int, m)) for m in re.findall(r"-mesh_nt (\d+) through the wall x -mesh_ntheta (\d+)", p.stdout)]
     reused = [l for l in p.stdout.splitlines() if "no companion runs" in l]
     a = attrs(h5) if p.returncode == 0 else {}

@@ -61,9 +61,10 @@ def run_case(name, extra, outdir, np_=2, exe=tfruns.EXE, mpirun="mpirun", time_l
     cmd = [mpirun, "-q", "-n", str(np_), exe, "-options_file", "options/squaring.opts", "-options_file",
            "options/preset-default.opts", "-output", out, "-time_limit", str(time_limit)] + extra
     t0 = time.time()
-    try:
-        p = subprocess.run(cmd, cwd=tfruns.root, env=tfruns.env, capture_output=True, text=True,
-                           timeout=time_limit + 120)
+    try:  # (an Open MPI session directory of its own: tests/check_extremes.py runs two cases at once)
+        with tfruns.session_env() as run_env:
+            p = subprocess.run(cmd, cwd=tfruns.root, env=run_env, capture_output=True, text=True,
+                               timeout=time_limit + 120)
         rc, text = p.returncode, p.stdout + p.stderr
     except subprocess.TimeoutExpired:
         rc, text = None, "hang: no exit within the time limit + 120 s"

@@ -1,5 +1,6 @@
 #include "tubeform/driver/beside.hpp"
 
+#include <ctime>
 #include <string>
 #include <vector>
 
@@ -32,15 +33,35 @@ struct Outcome {
   Companions companions;
 };
 
+// Waits for the n requests, looking every millisecond: the companions' first rank, whose runs end long before the
+// run's level, waits so for the run to take them and say what follows, its core left to other jobs (a blocking MPI
+// call would spin in MPI's progress loop for the rest of the level).
+PetscErrorCode WaitIdle(int n, MPI_Request *requests)
+{
+  const timespec pause = {0, 1000000};
+  PetscFunctionBeginUser;
+  for (int done = 0;;) {
+    PetscCallMPI(MPI_Testall(n, requests, &done, MPI_STATUSES_IGNORE));
+    if (done) break;
+    nanosleep(&pause, nullptr);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Send(MPI_Comm link, int to, const Outcome &o)
 {
+  MPI_Request requests[4];
+  int n = 0;
   PetscFunctionBeginUser;
   const double head[4] = {(double)o.failed, (double)o.companions.mesh.size(), (double)o.companions.steps.size(),
                           (double)o.text.size()};
-  PetscCallMPI(MPI_Send(head, 4, MPI_DOUBLE, to, kTagCompanions, link));
-  if (!o.text.empty()) PetscCallMPI(MPI_Send(o.text.data(), (int)o.text.size(), MPI_CHAR, to, kTagCompanions, link));
+  PetscCallMPI(MPI_Isend(head, 4, MPI_DOUBLE, to, kTagCompanions, link, &requests[n++]));
+  if (!o.text.empty())
+    PetscCallMPI(MPI_Isend(o.text.data(), (int)o.text.size(), MPI_CHAR, to, kTagCompanions, link, &requests[n++]));
   for (const auto *rows : {&o.companions.mesh, &o.companions.steps})
-    if (!rows->empty()) PetscCallMPI(MPI_Send(rows->data(), RowDoubles(*rows), MPI_DOUBLE, to, kTagCompanions, link));
+    if (!rows->empty())
+      PetscCallMPI(MPI_Isend(rows->data(), RowDoubles(*rows), MPI_DOUBLE, to, kTagCompanions, link, &requests[n++]));
+  PetscCall(WaitIdle(n, requests));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -94,7 +115,11 @@ PetscErrorCode Serve(MPI_Comm half, MPI_Comm link, int run_root, Options level)
     if (!reuse) PetscCall(LevelCompanions(half, level, o));
     if (rank == 0) PetscCall(Send(link, run_root, o));
     LevelStep step;
-    if (rank == 0) PetscCallMPI(MPI_Recv(&step, sizeof(step), MPI_BYTE, run_root, kTagLevel, link, MPI_STATUS_IGNORE));
+    if (rank == 0) {
+      MPI_Request request;
+      PetscCallMPI(MPI_Irecv(&step, sizeof(step), MPI_BYTE, run_root, kTagLevel, link, &request));
+      PetscCall(WaitIdle(1, &request));
+    }
     PetscCallMPI(MPI_Bcast(&step, sizeof(step), MPI_BYTE, 0, half));
     PetscCheck(!step.run_failed, half, step.run_failed, "%s", step.why);
     if (!step.follows) break;
