@@ -27,8 +27,8 @@ PetscErrorCode ReadForce(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsReal("-force",
                              "a force motion: the force the tool presses with, rising from 0 to this over the press, "
-                             "its stroke an unknown of each increment (-die_motion force: the upper die's punch load, "
-                             "N/mm, as the history's load; docs/dies.md)",
+                             "its stroke an unknown of each increment (-die_motion force, -pass<N>_die_motion force: "
+                             "the upper die's punch load, N/mm, as the history's load; docs/dies.md)",
                              "tubeform", f, &f, &set));
   if (PetscOptionsObject->printhelp) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(set, PetscOptionsObject->comm, PETSC_ERR_USER_INPUT,

@@ -104,12 +104,14 @@ PetscErrorCode ReadPath(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
   PetscBool path, turned, pivoted;
 
   PetscFunctionBeginUser;
-  PetscCall(Numbers(PetscOptionsObject, "-path",
-                    "a path motion: the tool's points x,y in turn (mm, from where it starts), straight between them, "
-                    "at twice the punch speed along it (-die_motion path: the squaring scene's upper die over a lower "
-                    "die that stays, -lower_die_motion fixed; in place of -stroke, U = -y / 2; a sideways "
-                    "motion takes the full model and the rotation hold; docs/dies.md)",
-                    2 * kMaxPoints, xy, path));
+  PetscCall(
+    Numbers(PetscOptionsObject, "-path",
+            "a path motion: the tool's points x,y in turn (mm, from where it starts), straight between them, "
+            "at twice the punch speed along it (-die_motion path, -pass<N>_die_motion path: the squaring scene's "
+            "upper die over a lower die that stays, -lower_die_motion fixed; in place of the pass's stroke, "
+            "U = -y / 2; a sideways "
+            "motion takes the full model and the rotation hold; docs/dies.md)",
+            2 * kMaxPoints, xy, path));
   PetscCall(Numbers(PetscOptionsObject, "-path_turn",
                     "a path motion: the tool's turn at each point (degrees, counter-clockwise, about its pivot; "
                     "linear between the points; a turn counts in the path's length as the arc of a point at the "
