@@ -11,14 +11,15 @@ MotionPress PressOfPass(const Options &opt, int pass)
   press.scene = opt.scene;
   press.dies = PressesWithDie(opt), press.tools = PressesWithTools(opt);
   press.pass = pass;
-  press.quarter = QuarterModel(opt), press.lower_stays = LowerDieMoves(opt, LowerDieMove::Fixed);
+  const ModelChoice model = ModelOf(opt); // (once: the model and the pass's hold)
+  press.quarter = model.part == TubeModel::Quarter, press.lower_stays = LowerDieMoves(opt, LowerDieMove::Fixed);
   press.withdraw = opt.release.unload == Unload::Withdraw;
   press.stroke_given = pass > 0 && LaterPass(opt, pass).stroke != 0;
   press.stroke_path = !opt.stroke.path.empty(), press.corner_radius = opt.stroke.corner_radius > 0;
   press.side_dies = !FirstDies(opt).side.Is(DieFrom::None);
   for (int k = 0; k < PassCount(opt); ++k) press.any_side_dies |= !DiesOfPass(opt, k).side.Is(DieFrom::None);
   press.die_offset = ToolsOf(opt).model.die_offset != 0;
-  press.off_axis = PassOffAxis(opt, pass), press.held = HeldByRotation(opt, pass);
+  press.off_axis = PassOffAxis(opt, pass), press.held = model.HeldByRotation(pass);
   return press;
 }
 
