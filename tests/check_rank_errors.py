@@ -23,7 +23,9 @@ one line from rank 1 naming itself and the job aborted after AGREE seconds,
 not a hang (decided by the code, rank 1 would have left quietly, taken it for
 every rank's, and rank 0 would wait for ever); raised by rank 1 after the
 last collective call, it is one line from rank 1 and exit 1 on every rank,
-without an abort.
+without an abort. An error whose unwinding meets a second one (a destructor
+closing a result file on the full disk that stopped the run: its close fails
+too) is reported by its own text, not the second's.
 """
 import os
 import shutil
@@ -84,6 +86,7 @@ MODES = [("every", 1, "tubeform: error: -test_value 3: must be below 2", False),
          ("alone", 2, "tubeform: error on rank 1: -test_file x: only rank 1 read it and "
                       "refused it (the other ranks did not stop with it within 3 s", True),
          ("late", 1, "tubeform: error on rank 1: -test_file x: only rank 1 read it and refused it", False),
+         ("cleanup", 1, "tubeform: error: -output x.h5: 0 MB free on its file system", False),
          ("none", 0, None, False)]
 
 
@@ -93,9 +96,9 @@ def timed(mode):
     return p, time.time() - t0
 
 
-# The four modes side by side: each waits (AGREE s, or mpirun's ~2 s wind-down after an error exit) more than it
+# The five modes side by side: each waits (AGREE s, or mpirun's ~2 s wind-down after an error exit) more than it
 # computes.
-with ThreadPoolExecutor(max_workers=4) as pool:
+with ThreadPoolExecutor(max_workers=len(MODES)) as pool:
     ended = list(pool.map(timed, [m[0] for m in MODES]))
 for (mode, code, line, aborts), (p, took) in zip(MODES, ended):
     lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]

@@ -6,6 +6,8 @@
 //   alone  rank 1 alone raises PETSC_ERR_USER_INPUT (a PetscCheck on PETSC_COMM_SELF, or on a value only it holds)
 //          while rank 0 goes on into a collective call that rank 1 will never join
 //   late   rank 1 alone raises it after the last collective call; rank 0 ends without error
+//   cleanup every rank raises an input error; unwinding it, a destructor's clean-up fails with an error of its own
+//          (as a result file closed on the full disk that stopped the run): the first error is the one reported
 //   none   no error
 // SECONDS is how long a rank with an error waits for the others (tubeform: kAgreeSeconds).
 #include <petscsys.h>
@@ -19,11 +21,29 @@
 #define PETSC_SUCCESS 0
 #endif
 
+static PetscErrorCode FailedClose()
+{
+  PetscFunctionBeginUser;
+  SETERRQ(PETSC_COMM_SELF, PETSC_ERR_LIB, "Error in HDF5 call H5Fclose() Status -1");
+}
+
+// Holds something its destructor closes; the close fails.
+struct Closing {
+  ~Closing()
+  {
+    tf::KeepErrorText([] { (void)FailedClose(); });
+  }
+};
+
 static PetscErrorCode Body(const std::string &mode)
 {
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
+  if (mode == "cleanup") {
+    Closing file;
+    SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_FILE_WRITE, "-output x.h5: 0 MB free on its file system");
+  }
   if (mode == "every") SETERRQ(PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-test_value 3: must be below 2");
   if (mode == "alone") {
     PetscCheck(rank != 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-test_file x: only rank 1 read it and refused it");

@@ -51,6 +51,19 @@ std::string ErrorText(PetscErrorCode code)
   return specific && specific[0] ? specific : (text ? text : "unknown error");
 }
 
+void KeepErrorText(const std::function<void()> &cleanup)
+{
+  char *specific = nullptr;
+  (void)PetscErrorMessage(0, nullptr, &specific);
+  const std::string kept = specific ? specific : "";
+  cleanup();
+  (void)PetscErrorMessage(0, nullptr, &specific);
+  // Raised again (silently: errors return codes here), the kept text is the last error's once more.
+  if (!kept.empty() && kept != (specific ? specific : ""))
+    (void)PetscError(PETSC_COMM_SELF, __LINE__, PETSC_FUNCTION_NAME, __FILE__, PETSC_ERR_LIB, PETSC_ERROR_INITIAL, "%s",
+                     kept.c_str());
+}
+
 int EndJob(MPI_Comm agree, PetscErrorCode ierr, double seconds)
 {
   int rank = 0, size = 1;

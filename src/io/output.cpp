@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/core/job_end.hpp"
 #include "tubeform/core/log.hpp"
 #include "tubeform/io/series.hpp"
 #include "tubeform/step/rmin.hpp"
@@ -44,7 +45,8 @@ ResultWriter::~ResultWriter()
 {
   // (an error ended the run: the reserve makes room for closing the file, whatever filled the disk)
   FreeReserve();
-  if (viewer_) (void)PetscViewerDestroy(&viewer_);
+  // (a close that fails too, on the disk that stopped the run, keeps the run's error: KeepErrorText)
+  if (viewer_) KeepErrorText([this] { (void)PetscViewerDestroy(&viewer_); });
 }
 
 PetscErrorCode ResultWriter::Open(const Mesh &mesh, const std::string &path)

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "tubeform/core/core.hpp"
+#include "tubeform/core/job_end.hpp"
 
 namespace tf {
 
@@ -84,7 +85,8 @@ PetscErrorCode Archive::Agree(bool ok, const std::string &path) const
 
 Archive::~Archive()
 {
-  if (viewer_) (void)PetscViewerDestroy(&viewer_);
+  // (a close that fails too, on the disk that stopped the checkpoint, keeps its error: KeepErrorText)
+  if (viewer_) KeepErrorText([this] { (void)PetscViewerDestroy(&viewer_); });
 }
 
 PetscErrorCode Archive::Open(const Mesh &mesh, const std::string &path, bool write, const char *option, double bytes)

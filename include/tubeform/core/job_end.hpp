@@ -9,6 +9,7 @@
 
 #include <petscsys.h>
 
+#include <functional>
 #include <string>
 
 namespace tf {
@@ -36,6 +37,12 @@ ErrorVerdict AgreeOnError(MPI_Comm agree, PetscErrorCode mine, double seconds);
 
 // The one-line text of error `code` on this rank (PETSc's message for it).
 std::string ErrorText(PetscErrorCode code);
+
+// Runs `cleanup` (a destroy in a destructor, reached while an error unwinds)
+// so that the run's error keeps its text: PETSc keeps the text of the last
+// error raised, and a clean-up that fails too (a result file closed on a full
+// disk) would otherwise replace the error the run stopped with by its own.
+void KeepErrorText(const std::function<void()> &cleanup);
 
 // The end of a job whose run returned `ierr` on this rank: agreed with the
 // others (AgreeOnError), reported in one line on standard error, and the exit
