@@ -23,6 +23,11 @@ D. A level that keeps the last one's increments takes that level as its estimate
    job's results and estimate are the 1-rank job's (the run on half the ranks: the same run), within 1e-9.
    -target_load 0.06 makes level 2 1.76 times finer around, not 2, so that the 1 / (r - 1) is seen. Planted: the
    mesh part's 1 / (r - 1) dropped -> FAILED; no reuse (level 2 runs companions of its own) -> FAILED.
+E. A demanded accuracy chooses the plastic update where -plastic_update names none: the radial return (auto), so
+   that A's every level says "radial return" and its level 2 refines the cells alone and takes level 1 as its
+   companion (the tangent update's increments part would refine the increments too and run companions); named, it
+   is kept (-plastic_update tangent with -target_load: no radial return). Planted: the rule removed -> FAILED; the
+   rule overriding a named update -> FAILED.
 """
 import re
 import os
@@ -65,7 +70,8 @@ def fresh(name):
 # from cores: mpirun would bind its first rank to the core a single-rank run beside it may be on.
 os.environ["OMPI_MCA_hwloc_base_binding_policy"] = "none"
 RADIAL = BASE + ["-plastic_update", "radial", "-target_load", 0.06]
-H5 = {n: fresh(n) for n in ("target_a", "target_b", "target_c", "target_d1", "target_d_np1", "target_d_np2")}
+H5 = {n: fresh(n) for n in ("target_a", "target_b", "target_c", "target_d1", "target_d_np1", "target_d_np2",
+                             "target_e")}
 with ThreadPoolExecutor(max_workers=2) as pool:
     go = lambda n, opts: pool.submit(run, tf, mpirun, n, opts, check=False, timeout=600)  # noqa: E731
     f_d2 = go(2, RADIAL + ["-output", H5["target_d_np2"]])
@@ -76,7 +82,9 @@ with ThreadPoolExecutor(max_workers=2) as pool:
     first = int(next((l.split("done, ")[1].split()[0] for l in p_b.stdout.splitlines() if "done, " in l), 0))
     f_c = go(1, BASE + ["-target_load", 0.05, "-rmin_max_increments", first + 20, "-output", H5["target_c"]])
     f_d1 = go(1, RADIAL + ["-target_levels", 1, "-output", H5["target_d1"]])
-    p_d2, p_d, p_a, p_c, p_d1 = (f.result() for f in (f_d2, f_d, f_a, f_c, f_d1))
+    f_e = go(1, BASE + ["-target_load", 0.05, "-target_levels", 1, "-plastic_update", "tangent", "-stroke", 0.5,
+                        "-output", H5["target_e"]])
+    p_d2, p_d, p_a, p_c, p_d1, p_e = (f.result() for f in (f_d2, f_d, f_a, f_c, f_d1, f_e))
 
 # A. Two levels meet the target.
 h5, p = H5["target_a"], p_a
@@ -99,6 +107,16 @@ if a:
     k.check(said and all(l.endswith("(target load 5 %)") for l in said) and a.get("target_c_over_t") == 0,
             f"A: held to the demanded load alone ({len(said)} estimate line(s), the last ending "
             f"'{said[-1][-28:] if said else ''}', target_c_over_t {a.get('target_c_over_t')})")
+
+# E. The plastic update a demanded accuracy chooses, and the one a user names.
+meshes = [l for l in p_a.stdout.splitlines() if l.startswith("tubeform: mesh ")]
+reused = [l for l in p_a.stdout.splitlines() if "no companion runs" in l]
+k.check(len(meshes) >= 2 and all(l.endswith(", radial return") for l in meshes) and len(reused) == len(meshes) - 1,
+        f"E: -target_load without -plastic_update takes the radial return ({sum(l.endswith(', radial return') for l in meshes)}"
+        f" of {len(meshes)} levels say so; {len(reused)} finer level(s) with no companion runs)")
+named = [l for l in p_e.stdout.splitlines() if l.startswith("tubeform: mesh ")]
+k.check(p_e.returncode == 0 and len(named) == 1 and not named[0].endswith("radial return"),
+        f"E: -plastic_update tangent named beside -target_load is kept (exit {p_e.returncode}: {named})")
 
 # B. One level allowed: a warning naming -target_levels.
 h5, p = H5["target_b"], p_b

@@ -67,7 +67,8 @@ PetscErrorCode ReadIncrements(PetscOptionItems *PetscOptionsObject, OptionReader
   PetscCall(ChooseWord(PetscOptionsObject, read, "-plastic_update",
                        "tangent (the rate form with the start's flow direction), radial (radial return: the elastic "
                        "trial projected back onto the yield surface; isotropic J2 only), auto (radial where the "
-                       "material has it and the increments are in equilibrium, tangent elsewhere)",
+                       "material has it and the increments are in equilibrium, tangent elsewhere; the default where "
+                       "-target_load or -target_c_over_t is given)",
                        kPlasticUpdateWords, d.plastic_update));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -205,6 +206,12 @@ PetscErrorCode ReadAccuracyOptions(PetscOptionItems *PetscOptionsObject, OptionR
                       "No finer level whose predicted time would bring the job past this many seconds (0: no "
                       "limit): the run ends with its best level, warned",
                       a.target_time));
+  // A demanded accuracy leaves the discretization to the run, its plastic update with it: the radial return where
+  // the material has it (auto), converged in the step at the presets' increment limits where the tangent update is
+  // first order, so that finer levels refine the cells alone (docs/accuracy.md, "Accuracy on demand").
+  PetscBool update_named = PETSC_FALSE;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-plastic_update", &update_named));
+  if ((a.target_load > 0 || a.target_c_over_t > 0) && !update_named) opt.driver.plastic_update = PlasticUpdate::Auto;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

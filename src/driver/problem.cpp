@@ -123,12 +123,15 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
              "the mesh has %d cells, fewer than the %d MPI ranks: refine it or run on fewer ranks", ncells, (int)size_);
 
   if (!quiet_) {
+    // (the radial return named: a demanded accuracy chooses it where -plastic_update does not)
+    const bool radial = MakeBodyParams(opt).plastic_update == PlasticUpdate::Radial;
     if (opt.mesh_file.empty())
-      PetscCall(PetscPrintf(comm, "tubeform: mesh %d cells (%s), %s elements\n", ncells,
-                            scene_->MeshLayout(opt).c_str(), opt.element_name.c_str()));
+      PetscCall(PetscPrintf(comm, "tubeform: mesh %d cells (%s), %s elements%s\n", ncells,
+                            scene_->MeshLayout(opt).c_str(), opt.element_name.c_str(),
+                            radial ? ", radial return" : ""));
     else
-      PetscCall(PetscPrintf(comm, "tubeform: mesh %d cells from %s, %s elements\n", ncells, opt.mesh_file.c_str(),
-                            opt.element_name.c_str()));
+      PetscCall(PetscPrintf(comm, "tubeform: mesh %d cells from %s, %s elements%s\n", ncells, opt.mesh_file.c_str(),
+                            opt.element_name.c_str(), radial ? ", radial return" : ""));
   }
 
   // 2. Partition and distribute; the global system, the body, inertia.
