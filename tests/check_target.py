@@ -23,6 +23,10 @@ D. A level that keeps the last one's increments takes that level as its estimate
    job's results and estimate are the 1-rank job's (the run on half the ranks: the same run), within 1e-9.
    -target_load 0.06 makes level 2 1.76 times finer around, not 2, so that the 1 / (r - 1) is seen. Planted: the
    mesh part's 1 / (r - 1) dropped -> FAILED; no reuse (level 2 runs companions of its own) -> FAILED.
+   Level 2 differs from level 1 in its cells alone: it keeps level 1's element (qm6, where -element auto would take
+   qm6bar at its 4 cells with -element_bar_nt 4) and friction regularization (the attribute friction_vcri, derived
+   from level 1's node spacing: the same double). Planted: the element chosen again for level 2's cells -> FAILED;
+   level 2's VCRI derived from its own spacing -> FAILED.
 E. A demanded accuracy chooses the plastic update where -plastic_update names none: the radial return (auto), so
    that A's every level says "radial return" and its level 2 refines the cells alone and takes level 1 as its
    companion (the tangent update's increments part would refine the increments too and run companions); named, it
@@ -69,7 +73,7 @@ def fresh(name):
 # (its level's increments set C's stop), beside D's 2-rank run; then D on 1 rank, A, C and D's level 1 alone. Unbound
 # from cores: mpirun would bind its first rank to the core a single-rank run beside it may be on.
 os.environ["OMPI_MCA_hwloc_base_binding_policy"] = "none"
-RADIAL = BASE + ["-plastic_update", "radial", "-target_load", 0.06]
+RADIAL = BASE + ["-plastic_update", "radial", "-target_load", 0.06, "-element_bar_nt", 4]
 H5 = {n: fresh(n) for n in ("target_a", "target_b", "target_c", "target_d1", "target_d_np1", "target_d_np2",
                              "target_e")}
 with ThreadPoolExecutor(max_workers=2) as pool:
@@ -158,6 +162,11 @@ if l1 and a and len(meshes) == 2:
         lo, hi = d - 1e-9, d + e1 * abs(p1_ / p2_) + 1e-9
         k.check(lo <= e2 <= hi, f"D: level 2's {error} {100 * e2:.4f} % within level 1's difference {100 * d:.4f} % "
                 f"and that plus level 1's estimate, {100 * hi:.4f} % (cells {r:g} times as large)")
+if l1 and a and len(meshes) == 2:
+    elements = re.findall(r"cells \(.*\), (\w+) elements", p_d2.stdout)
+    k.check(elements == ["qm6", "qm6"] and a.get("friction_vcri") == l1.get("friction_vcri"),
+            f"D: level 2 keeps level 1's element ({elements}) and friction regularization (friction_vcri "
+            f"{l1.get('friction_vcri')} -> {a.get('friction_vcri')})")
 if got[1][0] and a:
     keys = [x for x in a if x.startswith("error_") or x in ("loaded_load", "loaded_c_over_t")]
     off = max(abs(got[1][0][x] - a[x]) / max(abs(a[x]), 1e-12) for x in keys)

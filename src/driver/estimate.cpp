@@ -36,13 +36,15 @@ PetscErrorCode Problem::CompanionOptions(Options &ran)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+Options Problem::OwnChoices() const { return Kept(opt_, contact_ ? contact_->params().vcri : 0); }
+
 PetscErrorCode Problem::Estimate(Companions &companions, Stop &stop)
 {
   MPI_Comm agree; // (a communicator of its own: a rank that failed alone cannot meet the others' calls)
   char text[PETSC_MAX_PATH_LEN] = "";
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_dup(comm_, &agree));
-  const Options ran = Kept(opt_, contact_ ? contact_->params().vcri : 0);
+  const Options ran = OwnChoices();
   const PetscErrorCode failed = companion_run_(ran, companions);
   const ErrorVerdict v = AgreeOnError(agree, failed, kAgreeSeconds);
   if (!v.all_answered) {

@@ -46,6 +46,23 @@ Companions ForNextLevel(const std::vector<HistoryRow> &rows, const Companions &c
 
 } // namespace
 
+std::vector<std::pair<std::string, double>> Problem::RunMetrics(const Stop &stop, const Answer &answer) const
+{
+  const HistoryRow &last = history_.rows().back();
+  std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke},
+                                                         {"final_load", last.load},
+                                                         {"x_max", last.x_max},
+                                                         {"y_max", last.y_max},
+                                                         {"stalled", stop.stalled ? 1.0 : 0.0},
+                                                         {"stopped", stop.why.empty() ? 0.0 : 1.0},
+                                                         {"interrupted", double(stop.signal)},
+                                                         {"target_load", answer.target_load},
+                                                         {"target_c_over_t", answer.target_ct},
+                                                         {"accuracy_level", double(opt_.level)}};
+  if (contact_) metrics.push_back({"friction_vcri", contact_->params().vcri});
+  return metrics;
+}
+
 PetscErrorCode Problem::PlaceResults(ResultWriter &writer, const std::vector<std::pair<std::string, double>> &metrics,
                                      const std::string &stop_reason)
 {
@@ -72,7 +89,6 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
   Companions companions; // their histories (none: no estimate)
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(Log::output_stage));
-  const HistoryRow &last = history_.rows().back();
   // Shape metrics (C/t, C1/C2, springback) are the press scenes': those with final metrics of their own.
   const auto scene_metrics = scene_->FinalMetrics(history_);
   const auto summarize = [&](const Companions *estimate) {
@@ -86,16 +102,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     return a;
   };
   Answer answer = summarize(nullptr);
-  std::vector<std::pair<std::string, double>> metrics = {{"final_stroke", last.stroke},
-                                                         {"final_load", last.load},
-                                                         {"x_max", last.x_max},
-                                                         {"y_max", last.y_max},
-                                                         {"stalled", stop.stalled ? 1.0 : 0.0},
-                                                         {"stopped", stop.why.empty() ? 0.0 : 1.0},
-                                                         {"interrupted", double(stop.signal)},
-                                                         {"target_load", answer.target_load},
-                                                         {"target_c_over_t", answer.target_ct},
-                                                         {"accuracy_level", double(opt_.level)}};
+  auto metrics = RunMetrics(stop, answer);
   for (const auto &m : scene_metrics) metrics.push_back(m);
   for (const auto &m : AnswerAttributes(answer)) metrics.push_back(m);
   const auto releases = SummarizeReleases(history_.rows());
@@ -129,7 +136,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
                           opt_.scene.c_str(), (int)at_.inc, (int)system_.factorizations(), opt_.output.c_str()));
     double seconds[2] = {MPI_Wtime() - started_, MPI_Wtime() - opt_.job_started}; // (rank 0's: one decision)
     PetscCallMPI(MPI_Bcast(seconds, 2, MPI_DOUBLE, 0, comm_));
-    refinement_ = NextLevel(opt_, answer, seconds[0], seconds[1]);
+    refinement_ = NextLevel(OwnChoices(), answer, seconds[0], seconds[1]);
     if (refinement_.follows && refinement_.reuse)
       refinement_.companions =
         ForNextLevel(history_.rows(), companions, CellRatio(opt_, refinement_.next), (int)opt_.level);

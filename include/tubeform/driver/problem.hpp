@@ -152,12 +152,18 @@ private:
   // closed, renamed into place: PlaceResults), then the estimate added to them
   // (Estimate, src/driver/estimate.cpp); the stop reported last.
   PetscErrorCode Finish(ResultWriter &writer, const Stop &ended);
+  // The run's own attributes of /history: where it ended and how, what it was held to, its level; in tool scenes
+  // its friction regularization (derived from the mesh where -friction_vcri does not give it).
+  std::vector<std::pair<std::string, double>> RunMetrics(const Stop &stop, const Answer &answer) const;
   PetscErrorCode PlaceResults(ResultWriter &writer, const std::vector<std::pair<std::string, double>> &metrics,
                               const std::string &stop_reason);
   // The companion runs, their ranks agreeing on how they ended: their histories
   // in `companions` (empty: no estimate, one line why); a stop signal during them
   // goes into `stop`.
   PetscErrorCode Estimate(Companions &companions, Stop &stop);
+  // The run's options with what it chose for itself kept (its element, its friction regularization): what its
+  // companions and a finer level of accuracy on demand start from, so that they change only what they name.
+  Options OwnChoices() const;
   std::string Where() const; // where the run stands, for a stop's message
   // The forces at the end of an increment (or of a restored state) at lambda:
   // applied, external (with friction), internal (with inertia), out-of-balance.
