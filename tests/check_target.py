@@ -27,6 +27,11 @@ D. A level that keeps the last one's increments takes that level as its estimate
    qm6bar at its 4 cells with -element_bar_nt 4) and friction regularization (the attribute friction_vcri, derived
    from level 1's node spacing: the same double). Planted: the element chosen again for level 2's cells -> FAILED;
    level 2's VCRI derived from its own spacing -> FAILED.
+F. A level that runs companions of its own (the tangent update named, -target_c_over_t 0.003: its increments are
+   refined too, so no reuse), on 2 ranks with the companions beside the run: their ranks start level 2 from level 1's
+   own choices as the run does (its element, its friction regularization), so the 2-rank job's level 2 and its
+   estimate are the 1-rank job's, within 1e-9 (D's bound). Planted: the companions' side applying the change to the
+   options it was given, not to its level's own choices (VCRI derived again from level 2's spacing) -> FAILED.
 E. A demanded accuracy chooses the plastic update where -plastic_update names none: the radial return (auto), so
    that A's every level says "radial return" and its level 2 refines the cells alone and takes level 1 as its
    companion (the tangent update's increments part would refine the increments too and run companions); named, it
@@ -75,7 +80,8 @@ def fresh(name):
 os.environ["OMPI_MCA_hwloc_base_binding_policy"] = "none"
 RADIAL = BASE + ["-plastic_update", "radial", "-target_load", 0.06, "-element_bar_nt", 4]
 H5 = {n: fresh(n) for n in ("target_a", "target_b", "target_c", "target_d1", "target_d_np1", "target_d_np2",
-                             "target_e")}
+                             "target_e", "target_f_np1", "target_f_np2")}
+OWN = BASE + ["-plastic_update", "tangent", "-target_c_over_t", 0.003, "-stroke", 3, "-target_levels", 2]
 with ThreadPoolExecutor(max_workers=2) as pool:
     go = lambda n, opts: pool.submit(run, tf, mpirun, n, opts, check=False, timeout=600)  # noqa: E731
     f_d2 = go(2, RADIAL + ["-output", H5["target_d_np2"]])
@@ -88,7 +94,8 @@ with ThreadPoolExecutor(max_workers=2) as pool:
     f_d1 = go(1, RADIAL + ["-target_levels", 1, "-output", H5["target_d1"]])
     f_e = go(1, BASE + ["-target_load", 0.05, "-target_levels", 1, "-plastic_update", "tangent", "-stroke", 0.5,
                         "-output", H5["target_e"]])
-    p_d2, p_d, p_a, p_c, p_d1, p_e = (f.result() for f in (f_d2, f_d, f_a, f_c, f_d1, f_e))
+    f_f1, f_f2 = go(1, OWN + ["-output", H5["target_f_np1"]]), go(2, OWN + ["-output", H5["target_f_np2"]])
+    p_d2, p_d, p_a, p_c, p_d1, p_e, p_f1, p_f2 = (f.result() for f in (f_d2, f_d, f_a, f_c, f_d1, f_e, f_f1, f_f2))
 
 # A. Two levels meet the target.
 h5, p = H5["target_a"], p_a
@@ -121,6 +128,19 @@ k.check(len(meshes) >= 2 and all(l.endswith(", radial return") for l in meshes) 
 named = [l for l in p_e.stdout.splitlines() if l.startswith("tubeform: mesh ")]
 k.check(p_e.returncode == 0 and len(named) == 1 and not named[0].endswith("radial return"),
         f"E: -plastic_update tangent named beside -target_load is kept (exit {p_e.returncode}: {named})")
+
+# F. A level with companions of its own, on 2 ranks beside the run.
+f = {n: attrs(H5[f"target_f_np{n}"]) if p.returncode == 0 else {} for n, p in ((1, p_f1), (2, p_f2))}
+own = [l for l in p_f2.stdout.splitlines() if "companion runs for the error estimate" in l and "beside" in l]
+if f[1] and f[2]:
+    keys = [x for x in f[2] if x.startswith("error_") or x in ("loaded_load", "loaded_c_over_t", "friction_vcri")]
+    off = max(abs(f[1][x] - f[2][x]) / max(abs(f[2][x]), 1e-12) for x in keys)
+    k.check(f[2].get("accuracy_level") == 2 and len(own) == 2 and off <= 1e-9,
+            f"F: level 2 with its own companions beside the run on 2 ranks ({len(own)} companion line(s) 'beside', "
+            f"accuracy_level {f[2].get('accuracy_level')}) gives the 1-rank estimate (largest relative difference "
+            f"{off:.2g} over {len(keys)} values)")
+else:
+    k.check(False, f"F: the runs ended (exit {p_f1.returncode}, {p_f2.returncode})")
 
 # B. One level allowed: a warning naming -target_levels.
 h5, p = H5["target_b"], p_b

@@ -83,8 +83,9 @@ PetscErrorCode Receive(MPI_Comm link, int from, Outcome &o)
 }
 
 // Collective on half: a level's companions, as the run would hand them over: the options of a set-up of the case
-// of its own (the element and the friction regularization the run takes), then the two runs.
-PetscErrorCode LevelCompanions(MPI_Comm half, const Options &level, Outcome &o)
+// of its own (the element and the friction regularization the run takes, into `own` as the run's
+// Problem::OwnChoices: what a finer level starts from), then the two runs.
+PetscErrorCode LevelCompanions(MPI_Comm half, const Options &level, Outcome &o, Options &own)
 {
   Options ran;
   const Options quiet = CompanionQuiet(level);
@@ -97,6 +98,7 @@ PetscErrorCode LevelCompanions(MPI_Comm half, const Options &level, Outcome &o)
     if (!o.failed) o.failed = p.CompanionOptions(ran);
     if (o.failed) why = ErrorText(o.failed);
   }
+  if (!o.failed) own = ran;
   if (!o.failed) o.failed = RunCompanions(half, ran, o.companions, &o.text);
   if (o.failed && why.empty()) why = ErrorText(o.failed);
   if (o.failed) o.text = why, o.companions = Companions{};
@@ -112,7 +114,8 @@ PetscErrorCode Serve(MPI_Comm half, MPI_Comm link, int run_root, Options level)
   PetscCallMPI(MPI_Comm_rank(half, &rank));
   for (bool reuse = false;;) {
     Outcome o;
-    if (!reuse) PetscCall(LevelCompanions(half, level, o));
+    Options own = level; // (a reused level's choices are the last one's)
+    if (!reuse) PetscCall(LevelCompanions(half, level, o, own));
     if (rank == 0) PetscCall(Send(link, run_root, o));
     LevelStep step;
     if (rank == 0) {
@@ -123,7 +126,7 @@ PetscErrorCode Serve(MPI_Comm half, MPI_Comm link, int run_root, Options level)
     PetscCallMPI(MPI_Bcast(&step, sizeof(step), MPI_BYTE, 0, half));
     PetscCheck(!step.run_failed, half, step.run_failed, "%s", step.why);
     if (!step.follows) break;
-    level = step.change.Applied(level), reuse = step.reuse;
+    level = step.change.Applied(own), reuse = step.reuse;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -122,16 +122,16 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
   PetscCheck(ncells >= size_, comm, PETSC_ERR_USER_INPUT,
              "the mesh has %d cells, fewer than the %d MPI ranks: refine it or run on fewer ranks", ncells, (int)size_);
 
+  const BodyParams body = MakeBodyParams(opt_);
   if (!quiet_) {
     // (the radial return named: a demanded accuracy chooses it where -plastic_update does not)
-    const bool radial = MakeBodyParams(opt).plastic_update == PlasticUpdate::Radial;
+    const char *update = body.plastic_update == PlasticUpdate::Radial ? ", radial return" : "";
     if (opt.mesh_file.empty())
       PetscCall(PetscPrintf(comm, "tubeform: mesh %d cells (%s), %s elements%s\n", ncells,
-                            scene_->MeshLayout(opt).c_str(), opt.element_name.c_str(),
-                            radial ? ", radial return" : ""));
+                            scene_->MeshLayout(opt).c_str(), opt.element_name.c_str(), update));
     else
       PetscCall(PetscPrintf(comm, "tubeform: mesh %d cells from %s, %s elements%s\n", ncells, opt.mesh_file.c_str(),
-                            opt.element_name.c_str(), radial ? ", radial return" : ""));
+                            opt.element_name.c_str(), update));
   }
 
   // 2. Partition and distribute; the global system, the body, inertia.
@@ -140,7 +140,7 @@ PetscErrorCode Problem::Setup(MPI_Comm comm, const Options &opt, std::unique_ptr
   PetscCall(system_.Setup(mesh_, opt_.driver.factorization));
   if ((size_ > 1 || opt_.monitor) && !quiet_)
     PetscCall(PetscPrintf(comm_, "tubeform: linear solver: %s\n", system_.solver().c_str()));
-  PetscCall(body_.Setup(mesh_, MakeBodyParams(opt_)));
+  PetscCall(body_.Setup(mesh_, body));
   if (opt_.driver.dynamics != Dynamics::Quasistatic) {
     inertia_ = std::make_unique<Inertia>();
     PetscCall(inertia_->Setup(body_, opt_.material.density, opt_.driver.dynamics == Dynamics::Implicit));

@@ -43,8 +43,6 @@ Options LevelChange::Applied(const Options &last) const
   Options n = last;
   n.level = level, n.mesh_nt = mesh_nt, n.mesh_ntheta = mesh_ntheta, n.driver.increments = increments;
   n.driver.rmin_deps = rmin_deps, n.driver.rmin_deps_yield = rmin_deps_yield, n.driver.rmin_domega = rmin_domega;
-  n.element_auto = false;
-  if (friction_vcri > 0) n.friction.vcri = friction_vcri;
   return n;
 }
 
@@ -72,9 +70,9 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
     return r;
   }
   LevelChange &c = r.change;
-  c = {level.level + 1,          level.mesh_nt,          level.mesh_ntheta,
-       level.driver.increments,  level.driver.rmin_deps, level.driver.rmin_deps_yield,
-       level.driver.rmin_domega, level.friction.vcri};
+  c = {level.level + 1,         level.mesh_nt,          level.mesh_ntheta,
+       level.driver.increments, level.driver.rmin_deps, level.driver.rmin_deps_yield,
+       level.driver.rmin_domega};
   if (r.mesh_ratio > 1) {
     // (through the wall a multiple of 4, so that the estimate's companion has an even count: odd ones converge
     // unevenly, docs/accuracy.md, "The element through the wall"; around, a multiple of 4 likewise)

@@ -87,7 +87,7 @@ double PressScene::ToolForce(double lambda) const
 {
   const Pass &p = passes_[pass_];
   const double model =
-    p.dies.side_force > 0 ? p.dies.side_force * SideDiesInModel(Part()) : p.extent.force / LoadPerModelForce();
+    p.dies.side_force > 0 ? p.dies.side_force * SideDiesInModel(part_) : p.extent.force / LoadPerModelForce();
   return PassExtent::Ramp(lambda, PressStage(pass_)) * model; // (released: not read)
 }
 

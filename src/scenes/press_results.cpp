@@ -15,7 +15,7 @@ double PressScene::ToolWork(const HistoryRow &prev, const HistoryRow &row, doubl
   // (the lower die's rise by its motion: by U where it mirrors the upper one's, LowerDieMotion)
   const DieTravel travel{UpperTravel(opt_), !LowerDieMoves(opt_, LowerDieMove::Fixed),
                          lower_motion_->Offset(row.stroke)[1] - lower_motion_->Offset(from.stroke)[1]};
-  return PressToolWork(Part(), travel, from, row);
+  return PressToolWork(part_, travel, from, row);
 }
 
 PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRow &row)
@@ -59,7 +59,7 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   if (passes_[pass_].held && unloading_) // (what the springback's pins carry; scenes/hold.hpp)
     PetscCall(hold_.SupportMoment(m, f_int, reversed_.forces, ReleaseEnd() - lambda, pin_.node(),
                                   RotationHold::Columns()(row, RotationHold::kMoment)));
-  PetscCall(OuterExtents(m, row, Part(), Press()));
+  PetscCall(OuterExtents(m, row, part_, Press()));
   PetscCall(Shape(m, lambda, row));
   row.stage = StageOf(lambda);
   PetscFunctionReturn(PETSC_SUCCESS);

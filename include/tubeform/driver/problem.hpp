@@ -152,8 +152,8 @@ private:
   // closed, renamed into place: PlaceResults), then the estimate added to them
   // (Estimate, src/driver/estimate.cpp); the stop reported last.
   PetscErrorCode Finish(ResultWriter &writer, const Stop &ended);
-  // The run's own attributes of /history: where it ended and how, what it was held to, its level; in tool scenes
-  // its friction regularization (derived from the mesh where -friction_vcri does not give it).
+  // The run's own attributes of /history: where it ended and how, what it was held to, its level; in scenes with
+  // contact its friction regularization (the scene's own where -friction_vcri does not give it).
   std::vector<std::pair<std::string, double>> RunMetrics(const Stop &stop, const Answer &answer) const;
   PetscErrorCode PlaceResults(ResultWriter &writer, const std::vector<std::pair<std::string, double>> &metrics,
                               const std::string &stop_reason);

@@ -35,10 +35,10 @@ constexpr double kReuseRatio = 1.5;
 struct LevelChange {
   PetscInt level = 0, mesh_nt = 0, mesh_ntheta = 0, increments = 0;
   double rmin_deps = 0, rmin_deps_yield = 0, rmin_domega = 0;
-  double friction_vcri = 0; // the levels' friction regularization, the first level's (0: no tools)
-  // The options of the level `last` with this change, and with the first level's element and friction
-  // regularization: the levels differ in their cells and increments alone, so that each reads as the last one's
-  // finer discretization (its mesh companion, kReuseRatio), not as another element or friction law.
+  // The options of the level `last`, with its own choices kept (Problem::OwnChoices: its element and friction
+  // regularization, the first level's), with this change: the levels differ in their cells and increments alone,
+  // so that each reads as the last one's finer discretization (its mesh companion, kReuseRatio), not as another
+  // element or friction law.
   Options Applied(const Options &last) const;
 };
 

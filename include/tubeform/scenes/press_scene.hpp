@@ -25,7 +25,7 @@ public:
     if (BothDies(part_)) return {"inner", "outer", "x0"};
     return {"inner", "outer", "x0", "y0"};
   }
-  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh, Part()); }
+  std::string BuildMesh(const Options &opt, SerialMesh &mesh) const override { return TubeMesh(opt, mesh, part_); }
   std::string MeshLayout(const Options &opt) const override
   {
     return Scene::MeshLayout(opt) + (WholeTube(part_)  ? " (the full model: four times that around)"
@@ -171,7 +171,6 @@ private:
 
   // The punch load per vertical force of the model on the upper die: the quarter and the half model carry half.
   double LoadPerModelForce() const { return WholeTube(part_) ? 1.0 : 2.0; }
-  TubePart Part() const { return part_; }
 
   PetscErrorCode Shape(Model &m, double, HistoryRow &row);
 };
