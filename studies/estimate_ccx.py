@@ -234,8 +234,10 @@ def evaluate(cases, presets, cells):
                   f"{np.median(eff[r]):.2f}  within 3x {100 * np.mean((eff[r] >= 1 / 3) & (eff[r] <= 3)):.0f} %")
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+def main(doc=__doc__, run_case=run_case, evaluate=evaluate, out=OUT):
+    """The command line `run | eval` over the cases and presets (this study's, or another's over the same cases:
+    its docstring, its runs, its evaluation, its cache)."""
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("what", choices=("run", "eval"))
     ap.add_argument("--cases", default=",".join(CASES))
     ap.add_argument("--presets", default="fast,default")
@@ -243,7 +245,7 @@ def main():
     ap.add_argument("--cells", action="store_true", help="print each cell: true error / estimate")
     a = ap.parse_args()
     cases, presets = a.cases.split(","), a.presets.split(",")
-    os.makedirs(OUT, exist_ok=True)
+    os.makedirs(out, exist_ok=True)
     if a.what == "run":
         with concurrent.futures.ThreadPoolExecutor(a.j) as pool:
             for f in [pool.submit(run_case, c, p) for c in cases for p in presets]:

@@ -10,8 +10,6 @@ with its steps companion (twice the increment limits); the run's element and fri
 
 Runs are cached under results/estimate_nested/.
 """
-import argparse
-import concurrent.futures
 import math
 import os
 
@@ -85,22 +83,5 @@ def evaluate(cases, presets, show):
               f"{100 * np.mean((eff[r] >= 1/3) & (eff[r] <= 3)):.0f} %")
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("what", choices=("run", "eval"))
-    ap.add_argument("--cases", default=",".join(ec.CASES))
-    ap.add_argument("--presets", default="fast,default")
-    ap.add_argument("-j", type=int, default=1)
-    ap.add_argument("--cells", action="store_true")
-    a = ap.parse_args()
-    cases, presets = a.cases.split(","), a.presets.split(",")
-    os.makedirs(OUT, exist_ok=True)
-    if a.what == "run":
-        with concurrent.futures.ThreadPoolExecutor(a.j) as pool:
-            for f in [pool.submit(run_case, c, p) for c in cases for p in presets]:
-                f.result()
-    evaluate(cases, presets, a.cells)
-
-
 if __name__ == "__main__":
-    main()
+    ec.main(__doc__, run_case, evaluate, OUT)
