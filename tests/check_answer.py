@@ -19,7 +19,9 @@ A. Two passes (options/oval_then_square.opts, fast preset: plates press the pape
 B. A mesh file (meshes/quarter_tube.geo through gmsh, 2 x 24 cells): the companion keeps the mesh, so the
    estimate covers the increments alone; its line says so, no warning weighs it against the preset's targets,
    and the attribute error_covers_mesh is 0 (a generated mesh: 1). Planted: the old line, "an upper bound",
-   and its warning -> FAILED.
+   and its warning -> FAILED. The line names where the largest load and C/t errors are and the largest at the
+   other reported strokes: the file's error_*_at_U and error_loaded_* attributes, to the printed digits (planted:
+   the largest elsewhere taken over every stroke -> FAILED).
 """
 import math
 import os
@@ -121,4 +123,17 @@ for name, extra in (("file", ["-mesh_file", msh]), ("generated", [])):
                 f"warning, error_covers_mesh {A.get('error_covers_mesh')}")
     else:
         k.check(A.get("error_covers_mesh") == 1, f"a generated mesh: error_covers_mesh {A.get('error_covers_mesh')}")
+        # Where the largest estimated error is, and the largest elsewhere, from the file's per-stroke attributes.
+        for name, pattern, unit in (("load", r"load (\S+) % at U = (\S+) \(mesh [^;]*; (\S+) % at most elsewhere\)",
+                                     100), ("c_over_t", r"C/t (\S+) at U = (\S+) \(mesh [^;]*; (\S+) at most "
+                                                        r"elsewhere\)", 1)):
+            at = {u: unit * A[f"error_{name}_at_{u:g}"] for u in (1, 2, 3)}
+            at[4.2] = unit * A[f"error_loaded_{name}"]
+            worst = max(at, key=at.get)
+            rest = max(v for u, v in at.items() if u != worst)
+            m = re.search(pattern, est)
+            got = (float(m.group(1)), float(m.group(2)), float(m.group(3))) if m else None
+            want = (float(f"{at[worst]:.2g}"), worst, float(f"{rest:.2g}"))
+            k.check(got == want, f"the estimate's {name}: printed largest, where, largest elsewhere {got}; the "
+                    f"file's {want}")
 k.done()

@@ -35,20 +35,44 @@ std::string LoadLine(const Answer &a, const PassAnswer &s)
   return out + "; at " + u + " = " + where + ": " + at;
 }
 
-// The pass's largest estimated errors, each with its mesh's part and its increments'.
+// Where a pass's largest error of one quantity is (`errors`: at each reported stroke; `after`: after springback,
+// or null) and the largest at the other places.
+struct Worst {
+  ErrorParts parts;
+  std::string where;    // "at U = 4.2", "after springback"
+  double elsewhere = 0; // the largest total at the other places
+};
+Worst WorstOf(const Answer &a, const PassAnswer &s, const std::vector<ErrorParts> &errors, const ErrorParts *after)
+{
+  Worst w;
+  size_t at = errors.size(); // (after springback)
+  if (after) w.parts = *after;
+  for (size_t k = 0; k < errors.size(); ++k)
+    if (errors[k].Total() > w.parts.Total()) w.parts = errors[k], at = k;
+  for (size_t k = 0; k < errors.size(); ++k)
+    if (k != at) w.elsewhere = std::max(w.elsewhere, errors[k].Total());
+  if (after && at < errors.size()) w.elsewhere = std::max(w.elsewhere, after->Total());
+  w.where = at < errors.size() ? Formatted("at %s = %g", a.stroke_name.c_str(), s.strokes[at]) : "after springback";
+  return w;
+}
+
+// The pass's largest estimated errors, where each is, its mesh's part and its increments', and the largest at the
+// other reported strokes.
 std::string Errors(const Answer &a, const PassAnswer &s)
 {
-  ErrorParts load, ct = s.ct_unloaded_parts;
-  for (size_t k = 0; k < s.strokes.size(); ++k) {
-    if (s.load_parts[k].Total() > load.Total()) load = s.load_parts[k];
-    if (s.ct_parts[k].Total() > ct.Total()) ct = s.ct_parts[k];
-  }
-  const auto parts = [&](const ErrorParts &e, double unit, const char *sign) {
-    return a.mesh_covered ? Formatted(" (mesh %.2g%s, increments %.2g%s)", unit * e.mesh, sign, unit * e.steps, sign)
-                          : std::string();
+  const Worst load = WorstOf(a, s, s.load_parts, nullptr);
+  const Worst ct = WorstOf(a, s, s.ct_parts, s.springback ? &s.ct_unloaded_parts : nullptr);
+  const bool several = s.strokes.size() + (s.springback ? 1 : 0) > 1;
+  const auto parts = [&](const Worst &w, double unit, const char *sign) {
+    std::string in = a.mesh_covered ? Formatted("mesh %.2g%s, increments %.2g%s", unit * w.parts.mesh, sign,
+                                                unit * w.parts.steps, sign)
+                                    : std::string();
+    if (w.parts.Total() <= 0) return in.empty() ? in : " (" + in + ")"; // (nothing to locate)
+    if (several) in += Formatted("%s%.2g%s at most elsewhere", in.empty() ? "" : "; ", unit * w.elsewhere, sign);
+    return " " + w.where + (in.empty() ? "" : " (" + in + ")");
   };
-  return Formatted("load %.2g %%", 100 * load.Total()) + parts(load, 100, " %") +
-         (a.tool ? Formatted(", C/t %.2g", ct.Total()) + parts(ct, 1, "") : "");
+  return Formatted("load %.2g %%", 100 * load.parts.Total()) + parts(load, 100, " %") +
+         (a.tool ? Formatted(", C/t %.2g", ct.parts.Total()) + parts(ct, 1, "") : "");
 }
 
 // What the estimate is held against: the demanded targets (only those given) or what the preset expects.
