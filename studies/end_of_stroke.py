@@ -3,15 +3,15 @@
 default preset's load error at the reported strokes is once the cells through the wall, the cells around (each
 level a family of nearby counts, so that the contact ripple averages out) and the increment limits are refined.
 
-    /usr/bin/python3 studies/end_of_stroke.py run  [--cases default,steel] [-j 1]
-    /usr/bin/python3 studies/end_of_stroke.py eval [--cases default,steel]
+    /usr/bin/python3 studies/end_of_stroke.py run  [--cases default,steel] [--around 1,2,4] [-j 1]
+    /usr/bin/python3 studies/end_of_stroke.py eval [--cases default,steel] [--around 1,2,4]
 
 Every run is the case's loading (options of tests/reference/calculix/<case>.csv's `# case:` line, the default
 preset, no estimate, no unloading) with the element the preset chose on its own mesh kept (-element). For the
 preset's mesh nt x N:
 - through: 1, 1.5, 2, 3 and 4 x nt cells through the wall, N around;
 - phase: N - 8, N - 4, N + 4, N + 8 around (nt and 2 nt through): where the wall's nodes meet the die's flank;
-- around: 2 nt through, 2 N and 4 N around, each with its phase family (+-4, +-8);
+- around: 2 nt through, N, 2 N and 4 N around (--around), each with its phase family (+-4, +-8);
 - steps: 2 nt x 2 N at the increment limits / 2 and / 4 (-rmin_deps, -rmin_deps_yield, -rmin_domega, -increments);
 - update: 2 nt x 2 N with the radial return (-plastic_update radial) in place of the tangent update.
 Runs are cached under results/end_of_stroke/ (delete one to run it again). `eval` prints each level's load at the
@@ -61,16 +61,17 @@ def steps(s):
             "-rmin_deps_yield", repr(dy / s)]
 
 
-def plan(case):
-    """Each level: name -> the runs of its family (name, options)."""
+def plan(case, around=(1, 2, 4)):
+    """Each level: name -> the runs of its family (name, options); `around`: the multiples of the preset's cells
+    around whose families run with 2 nt through the wall."""
     nt, n, element = preset_mesh(case)
     cells = lambda a, b: ["-element", element, "-mesh_nt", str(a), "-mesh_ntheta", str(b)]  # noqa: E731
     family = lambda a, b, more=(): [(f"{a}x{b + d}", cells(a, b + d)) for d in (0,) + PHASE]  # noqa: E731
     levels = {f"through {k}": [(f"{k}x{n}", cells(k, n))] for k in sorted({nt, round(1.5 * nt), 2 * nt, 3 * nt,
                                                                              4 * nt})}
     levels[f"{nt} x {n} family"] = family(nt, n)
-    for m in (n, 2 * n, 4 * n):
-        levels[f"{2 * nt} x {m} family"] = family(2 * nt, m)
+    for m in around:
+        levels[f"{2 * nt} x {m * n} family"] = family(2 * nt, m * n)
     for s in (2, 4):
         levels[f"{2 * nt} x {2 * n}, limits / {s}"] = [(f"{2 * nt}x{2 * n}_s{s}", cells(2 * nt, 2 * n) + steps(s))]
     levels[f"{2 * nt} x {2 * n}, radial return"] = [(f"{2 * nt}x{2 * n}_radial", cells(2 * nt, 2 * n) +
@@ -86,7 +87,7 @@ def reported(case, h5, col):
     return us, np.array([tfruns.at(H, col, u) for u in us]), np.array([tfruns.at(ref, col, u) for u in us])
 
 
-def table(case, col, fmt):
+def table(case, col, fmt, around):
     """Every level's values of `col` (a family: its mean and half its spread), the preset's against the finest
     family's and CalculiX's (the load relative, in %; C/t absolute)."""
     us, preset, ccx = reported(case, run_one(case, "preset", []), col)
@@ -94,7 +95,7 @@ def table(case, col, fmt):
     print(f"{'CalculiX 8 x 180 (tests/reference/calculix)':44s} " + "  ".join(fmt.format(x) for x in ccx))
     print(f"{'the preset':44s} " + "  ".join(fmt.format(x) for x in preset))
     means = {}
-    for name, runs in plan(case).items():
+    for name, runs in plan(case, around).items():
         v = np.array([reported(case, run_one(case, r, extra), col)[1] for r, extra in runs])
         means[name] = v.mean(axis=0)
         spread = (v.max(axis=0) - v.min(axis=0)) / 2
@@ -107,9 +108,9 @@ def table(case, col, fmt):
     print(f"{finest} against CalculiX: " + ", ".join(diff(f, c) for f, c in zip(means[finest], ccx)))
 
 
-def evaluate(case):
-    table(case, "load", "{:8.2f}")
-    table(case, "c_over_t", "{:7.4f}")
+def evaluate(case, around):
+    table(case, "load", "{:8.2f}", around)
+    table(case, "c_over_t", "{:7.4f}", around)
 
 
 def main():
@@ -117,16 +118,18 @@ def main():
     ap.add_argument("what", choices=("run", "eval"))
     ap.add_argument("--cases", default="default,steel")
     ap.add_argument("-j", type=int, default=1)
+    ap.add_argument("--around", default="1,2,4", help="multiples of the preset's cells around run as families "
+                    "(2 x its cells through the wall); 1,2 on a costly case")
     a = ap.parse_args()
     os.makedirs(OUT, exist_ok=True)
-    cases = a.cases.split(",")
+    cases, around = a.cases.split(","), tuple(int(m) for m in a.around.split(","))
     if a.what == "run":
-        jobs = [(c, r, extra) for c in cases for runs in plan(c).values() for r, extra in runs]
+        jobs = [(c, r, extra) for c in cases for runs in plan(c, around).values() for r, extra in runs]
         with concurrent.futures.ThreadPoolExecutor(a.j) as pool:
             for f in [pool.submit(run_one, *job) for job in jobs]:
                 f.result()
     for c in cases:
-        evaluate(c)
+        evaluate(c, around)
 
 
 if __name__ == "__main__":
