@@ -15,8 +15,9 @@ preset's mesh nt x N:
 - steps: 2 nt x 2 N at the increment limits / 2 and / 4 (-rmin_deps, -rmin_deps_yield, -rmin_domega, -increments);
 - update: 2 nt x 2 N with the radial return (-plastic_update radial) in place of the tangent update.
 Runs are cached under results/end_of_stroke/ (delete one to run it again). `eval` prints each level's load at the
-reported strokes (its family's mean and spread where it has one) and the preset's run against the finest level
-and against CalculiX.
+reported strokes (its family's mean and spread where it has one), the preset's run against the finest level
+and against CalculiX, and the shipped estimate of studies/estimate_ccx.py's runs (where its cache has them)
+against the finest level.
 """
 import argparse
 import concurrent.futures
@@ -108,9 +109,35 @@ def table(case, col, fmt, around):
     print(f"{finest} against CalculiX: " + ", ".join(diff(f, c) for f, c in zip(means[finest], ccx)))
 
 
+def finest(case, around, col):
+    """The finest family's mean of `col` at the reported strokes."""
+    runs = [r for k, r in plan(case, around).items() if k.endswith("family")][-1]
+    return np.mean([reported(case, run_one(case, r, extra), col)[1] for r, extra in runs], axis=0)
+
+
+def shipped(case, around):
+    """The shipped estimate of studies/estimate_ccx.py's runs (its cache: the fast and default presets with their
+    companions) against the finest family: each reported load (%) and loaded C/t, error / estimate."""
+    import estimate_ccx  # (beside this file: its runs, its values)
+    ref_l, ref_c = finest(case, around, "load"), finest(case, around, "c_over_t")
+    for preset in ("fast", "default"):
+        f = {k: os.path.join(estimate_ccx.OUT, f"{case}_{preset}_{k}.h5") for k in ("run", "M", "S")}
+        if not all(os.path.exists(p) for p in f.values()):
+            print(f"{case} {preset}: no runs of studies/estimate_ccx.py to compare")
+            continue
+        run, m, s = (estimate_ccx.values(p, case) for p in f.values())
+        est_l = np.abs(s[1] / m[1] - 1) + np.abs(m[1] / run[1] - 1)
+        est_c = (np.abs(s[2] - m[2]) + np.abs(m[2] - run[2]))[:-1]  # (loaded: the ladder has no springback)
+        err_l, err_c = np.abs(run[1] / ref_l - 1), np.abs(run[2][:-1] - ref_c)
+        print(f"{case} {preset}, the shipped estimate against the finest family, error / estimate: load " +
+              ", ".join(f"{100 * e:.2f}/{100 * x:.2f} %" for e, x in zip(err_l, est_l)) + "; C/t " +
+              ", ".join(f"{e:.4f}/{x:.4f}" for e, x in zip(err_c, est_c)))
+
+
 def evaluate(case, around):
     table(case, "load", "{:8.2f}", around)
     table(case, "c_over_t", "{:7.4f}", around)
+    shipped(case, around)
 
 
 def main():
