@@ -67,7 +67,7 @@ def plan(case, around=(1, 2, 4)):
     around whose families run with 2 nt through the wall."""
     nt, n, element = preset_mesh(case)
     cells = lambda a, b: ["-element", element, "-mesh_nt", str(a), "-mesh_ntheta", str(b)]  # noqa: E731
-    family = lambda a, b, more=(): [(f"{a}x{b + d}", cells(a, b + d)) for d in (0,) + PHASE]  # noqa: E731
+    family = lambda a, b: [(f"{a}x{b + d}", cells(a, b + d)) for d in (0,) + PHASE]  # noqa: E731
     levels = {f"through {k}": [(f"{k}x{n}", cells(k, n))] for k in sorted({nt, round(1.5 * nt), 2 * nt, 3 * nt,
                                                                              4 * nt})}
     levels[f"{nt} x {n} family"] = family(nt, n)
@@ -88,7 +88,7 @@ def reported(case, h5, col):
     return us, np.array([tfruns.at(H, col, u) for u in us]), np.array([tfruns.at(ref, col, u) for u in us])
 
 
-def table(case, col, fmt, around):
+def table(case, col, fmt, levels):
     """Every level's values of `col` (a family: its mean and half its spread), the preset's against the finest
     family's and CalculiX's (the load relative, in %; C/t absolute)."""
     us, preset, ccx = reported(case, run_one(case, "preset", []), col)
@@ -96,7 +96,7 @@ def table(case, col, fmt, around):
     print(f"{'CalculiX 8 x 180 (tests/reference/calculix)':44s} " + "  ".join(fmt.format(x) for x in ccx))
     print(f"{'the preset':44s} " + "  ".join(fmt.format(x) for x in preset))
     means = {}
-    for name, runs in plan(case, around).items():
+    for name, runs in levels.items():
         v = np.array([reported(case, run_one(case, r, extra), col)[1] for r, extra in runs])
         means[name] = v.mean(axis=0)
         spread = (v.max(axis=0) - v.min(axis=0)) / 2
@@ -109,25 +109,25 @@ def table(case, col, fmt, around):
     print(f"{finest} against CalculiX: " + ", ".join(diff(f, c) for f, c in zip(means[finest], ccx)))
 
 
-def finest(case, around, col):
+def finest(case, levels, col):
     """The finest family's mean of `col` at the reported strokes."""
-    runs = [r for k, r in plan(case, around).items() if k.endswith("family")][-1]
+    runs = [r for k, r in levels.items() if k.endswith("family")][-1]
     return np.mean([reported(case, run_one(case, r, extra), col)[1] for r, extra in runs], axis=0)
 
 
-def shipped(case, around):
+def shipped(case, levels):
     """The shipped estimate of studies/estimate_ccx.py's runs (its cache: the fast and default presets with their
     companions) against the finest family: each reported load (%) and loaded C/t, error / estimate."""
     import estimate_ccx  # (beside this file: its runs, its values)
-    ref_l, ref_c = finest(case, around, "load"), finest(case, around, "c_over_t")
+    ref_l, ref_c = finest(case, levels, "load"), finest(case, levels, "c_over_t")
     for preset in ("fast", "default"):
         f = {k: os.path.join(estimate_ccx.OUT, f"{case}_{preset}_{k}.h5") for k in ("run", "M", "S")}
         if not all(os.path.exists(p) for p in f.values()):
             print(f"{case} {preset}: no runs of studies/estimate_ccx.py to compare")
             continue
         run, m, s = (estimate_ccx.values(p, case) for p in f.values())
-        est_l = np.abs(s[1] / m[1] - 1) + np.abs(m[1] / run[1] - 1)
-        est_c = (np.abs(s[2] - m[2]) + np.abs(m[2] - run[2]))[:-1]  # (loaded: the ladder has no springback)
+        est_l, est_c = estimate_ccx.shipped(run, m, s)
+        est_c = est_c[:-1]  # (loaded: the ladder has no springback)
         err_l, err_c = np.abs(run[1] / ref_l - 1), np.abs(run[2][:-1] - ref_c)
         print(f"{case} {preset}, the shipped estimate against the finest family, error / estimate: load " +
               ", ".join(f"{100 * e:.2f}/{100 * x:.2f} %" for e, x in zip(err_l, est_l)) + "; C/t " +
@@ -135,9 +135,10 @@ def shipped(case, around):
 
 
 def evaluate(case, around):
-    table(case, "load", "{:8.2f}", around)
-    table(case, "c_over_t", "{:7.4f}", around)
-    shipped(case, around)
+    levels = plan(case, around)
+    table(case, "load", "{:8.2f}", levels)
+    table(case, "c_over_t", "{:7.4f}", levels)
+    shipped(case, levels)
 
 
 def main():
@@ -149,7 +150,13 @@ def main():
                     "(2 x its cells through the wall); 1,2 on a costly case")
     a = ap.parse_args()
     os.makedirs(OUT, exist_ok=True)
-    cases, around = a.cases.split(","), tuple(int(m) for m in a.around.split(","))
+    cases = a.cases.split(",")
+    try:
+        around = tuple(int(m) for m in a.around.split(","))
+    except ValueError:
+        around = ()
+    if not around or min(around) < 1:
+        sys.exit(f"end_of_stroke.py: --around {a.around}: positive whole multiples, comma-separated (1,2,4)")
     if a.what == "run":
         jobs = [(c, r, extra) for c in cases for runs in plan(c, around).values() for r, extra in runs]
         with concurrent.futures.ThreadPoolExecutor(a.j) as pool:

@@ -150,13 +150,18 @@ def gci(f1, f2, f3, r21, r32, fs_ok=1.25, fs_bad=3.0, p_max=2.0):
     return fs_bad * abs(e21) / (r21 - 1), -p
 
 
+def shipped(run, M, S):
+    """The shipped estimate |S - M| + |M - run| from three levels' values(): the load's (relative), C/t's."""
+    return np.abs(S[1] / M[1] - 1) + np.abs(M[1] / run[1] - 1), np.abs(S[2] - M[2]) + np.abs(M[2] - run[2])
+
+
 def candidates(v):
     """Each candidate's estimate of the run's load (relative) and C/t errors from the levels' values."""
     run, M, S, A, T, R = (v[k] for k in ("run", "M", "S", "A", "T", "R"))
     rel = lambda a, b: np.abs(a[1] / b[1] - 1)  # noqa: E731
     absd = lambda a, b: np.abs(a[2] - b[2])  # noqa: E731
     out = {}
-    out["shipped |S-M|+|M-run|"] = (rel(S, M) + rel(M, run), absd(S, M) + absd(M, run))
+    out["shipped |S-M|+|M-run|"] = shipped(run, M, S)
     out["steps on run |R-run|"] = (rel(R, run), absd(R, run))
     out["|R-run| + |A-run|/3 + |T-run|"] = (rel(R, run) + rel(A, run) / 3 + rel(T, run),
                                            absd(R, run) + absd(A, run) / 3 + absd(T, run))
