@@ -131,6 +131,17 @@ cases = [
      "the rotation hold (-full_hold, -die_offset, -die_path): not with -pass2_die_force"),
     (["-scene", "tension", "-die_offset", "0.5"], "presses with no dies"),
     (["-scene", "flattening", "-die_offset", "0.5"], "-die_offset 0.5: the squaring scene's die"),
+    (["-scene", "squaring", "-pass2_die_offset", "0.5"], "-pass2_die_offset: give -pass2_stroke"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "inf"], "-pass2_die_offset inf"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "0.5", "-model", "half"],
+     "-pass2_die_offset 0.5: a die off the axis breaks"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "0.5", "-full_hold", "pins"],
+     "-pass2_die_offset 0.5 with -full_hold pins"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass3_stroke", "2", "-pass3_die_offset", "0.5", "-model",
+      "quarter"], "-pass3_die_offset 0.5: a die off the axis"),
+    (["-scene", "flattening", "-pass2_stroke", "2", "-pass2_die_offset", "0.5"], "-pass2_die_offset 0.5: the squaring"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-pass2_die_motion", "path", "-pass2_die_path", "0,-1",
+      "-pass2_die_offset", "0.5"], "-pass2_die_path: not with -pass2_die_offset"),
     (["-scene", "squaring", "-die_path", "0,-1,0.5"], "-die_path: the squaring scene's upper die through x,y pairs"),
     (["-scene", "flattening", "-die_path", "0,-1"], "-die_path: the squaring scene's upper die"),
     (["-scene", "squaring", "-lower_die_motion", "fixed", "-die_path", "0,0"], "other than the one before it"),
@@ -284,7 +295,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 159 and len(selected) == 10, f"{len(cases)} cases on 1 rank (159), {len(selected)} on 2 (10)")
+k.check(len(cases) == 166 and len(selected) == 10, f"{len(cases)} cases on 1 rank (166), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

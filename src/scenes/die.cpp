@@ -165,6 +165,9 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
   // lower die's motion gives it.
   PetscCall(
     SetUpperMotion(comm, pass > 0 ? PassOption(pass, "die_motion").c_str() : "-die_motion", dies.motion, tools[0]));
+  // Its upper die off its press's axis (-die_offset, -pass<N>_die_offset): where it starts along its motion,
+  // StartOnTube.
+  if (dies.offset != 0) tools[0] = Shifted(tools[0], {dies.offset, 0});
   // A later pass's dies by their own names (errors, and their outlines in the results): pass2-, pass3-, ...
   if (pass > 0)
     for (Tool &t : tools) t.name = Formatted("pass%d-", pass + 1) + t.name;
@@ -207,9 +210,9 @@ PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoi
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, double offset, Tool &die)
+PetscErrorCode StartOffAxis(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, double offset, Tool &die)
 {
-  std::vector<Tool> one = {Shifted(die, {offset, 0})};
+  std::vector<Tool> one = {die};
   std::vector<double> back;
   PetscFunctionBeginUser;
   PetscCall(StartOnTube(comm, false, outer, one, back, 0));

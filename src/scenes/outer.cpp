@@ -14,12 +14,13 @@ static double UpperSegment(const Model &m, PetscInt n)
 }
 
 // Each rank's owned outer nodes (x, y, contact, segment, input number), gathered and sorted by angle.
-PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper, const TurnMap &press)
+// (the nodes at `x`: where they are, or where the mesh put them)
+static PetscErrorCode GatherOuterAt(Model &m, const std::vector<double> &x, std::vector<SurfacePoint> &all, bool upper,
+                                    const TurnMap &press)
 {
   std::vector<double> mine;
   PetscMPIInt size;
   PetscFunctionBeginUser;
-  const auto &x = m.body.position();
   for (PetscInt n : m.mesh.node_sets["outer"]) {
     const Vec2 p = press({x[2 * n], x[2 * n + 1]}), p0 = press({m.mesh.x0[2 * n], m.mesh.x0[2 * n + 1]});
     if (m.mesh.node_owned[n] && (!upper || (p0[1] >= -kAxisPin * std::abs(p0[0]) && p0[0] >= -kAxisPin * p0[1])))
@@ -40,6 +41,20 @@ PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper,
     all.push_back({buf[k], buf[k + 1], (int)buf[k + 2], (int)buf[k + 3], (long)buf[k + 4]});
   std::sort(all.begin(), all.end(),
             [](const SurfacePoint &a, const SurfacePoint &b) { return std::atan2(a.y, a.x) < std::atan2(b.y, b.x); });
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper, const TurnMap &press)
+{
+  PetscFunctionBeginUser;
+  PetscCall(GatherOuterAt(m, m.body.position(), all, upper, press));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode GatherRoundOuter(Model &m, std::vector<SurfacePoint> &all)
+{
+  PetscFunctionBeginUser;
+  PetscCall(GatherOuterAt(m, m.mesh.x0, all, false, {}));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

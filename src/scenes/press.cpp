@@ -106,8 +106,6 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   // (-side_force: die_motion.cpp; the upper die's own motion, -die_motion path or force, set with its dies: a path
   // of its own to move back along before the offset)
   PetscCall(SetSideForces(m.comm, opt_, SideDie(), tools.tools));
-  const double offset = ToolsOf(opt_).model.die_offset; // (-die_offset)
-  if (offset != 0) PetscCall(OffsetDie(m.comm, !m.quiet, outer, offset, tools.tools[kUpper]));
   tools.candidates = "outer";
   for (int pass = (int)passes_.size() - 1; WholeTube(part_) && pass >= 0;
        --pass) { // (the later passes' axes checked now)
@@ -264,6 +262,13 @@ PetscErrorCode PressScene::PassTools(Model &m, int pass, double floor_y, std::ve
   PetscFunctionBeginUser;
   PetscCall(BuildPassDies(m.comm, opt_, pass, squaring_, part_, floor_y, tools, flank_, apex_));
   for (Tool &t : tools) t = Transform(t, PassMap(pass));
+  // Its upper die off the axis (-die_offset, -pass<N>_die_offset): its zero, as every pass's, where it touches the
+  // round tube (the first pass's printed; a later pass's start from there: StartOnTube).
+  const double offset = DiesOfPass(opt_, pass).offset;
+  if (offset == 0) PetscFunctionReturn(PETSC_SUCCESS);
+  std::vector<SurfacePoint> round;
+  PetscCall(GatherRoundOuter(m, round));
+  PetscCall(StartOffAxis(m.comm, pass == 0 && !m.quiet, round, offset, tools[kUpper]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -140,10 +140,10 @@ PetscErrorCode ReadPath(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
 constexpr double kMaxDieTurn = 90;
 
 // In a press (MotionKind::press_check), any pass's: the squaring scene's die, within a quarter turn, ending below its
-// start, over a lower die that stays. The first pass's in place of -stroke and -stroke_path, with no side
-// dies, withdrawal or -die_offset (off its axis the model's choice decides its hold: scenes/options/model_options.cpp);
-// a later pass's with no side dies in any pass (they press by the stroke) and, off its press's axis, held by the
-// rotation hold.
+// start, over a lower die that stays, not moved off the axis by an offset (a path sideways is its own). The first
+// pass's in place of -stroke and -stroke_path, with no side dies or withdrawal (off its axis the model's choice decides
+// its hold: scenes/options/model_options.cpp); a later pass's with no side dies in any pass (they press by the stroke)
+// and, off its press's axis, held by the rotation hold.
 std::string CheckPathInPress(const MotionSpec &spec, const MotionPress &press)
 {
   const std::string name = press.prefix + "path";
@@ -164,6 +164,8 @@ std::string CheckPathInPress(const MotionSpec &spec, const MotionPress &press)
       (press.stroke_path || press.corner_radius || press.side_dies || press.withdraw || press.die_offset))
     return name + ": in place of -stroke and -stroke_path: not with -stroke_path, -stroke_corner_radius, -side_die, "
                   "-unload withdraw or -die_offset (a path sideways is its own offset)";
+  if (press.pass > 0 && press.die_offset)
+    return name + ": not with " + press.prefix + "offset (a path sideways is its own offset)";
   if (press.pass > 0 && press.any_side_dies)
     return name + ": not with side dies (-side_die, -pass<N>_side_die), which press by the stroke";
   if (press.pass > 0 && press.off_axis && !press.held)

@@ -48,6 +48,8 @@ PetscErrorCode OuterExtents(Model &m, HistoryRow &row, TubePart part = TubePart:
 // in the quarter x, y >= 0 (the half and full models' upper right quarter, on which the shape metrics are
 // measured as in the quarter model). Coordinates, and the quarter, in the press's frame (`press`).
 PetscErrorCode GatherOuter(Model &m, std::vector<SurfacePoint> &all, bool upper = false, const TurnMap &press = {});
+// Collective: the same where the mesh put the nodes (the round tube before any pass), in the tube's frame.
+PetscErrorCode GatherRoundOuter(Model &m, std::vector<SurfacePoint> &all);
 // The outer surface `all` in order around the tube from the point opposite the side between the nodes of input
 // numbers ends[0], ends[1] (so that the side lies between its ends in that order, whatever quarter it is in;
 // GatherOuter's order starts at -pi).

@@ -58,8 +58,9 @@ PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, size_t first_sid
 constexpr double kPlateOverhang = 0.1, kPlateReach = 0.5;
 // Collective: the dies of a pass (DiesOfPass: the first pass's and a later one's alike): the upper one (the squaring
 // scene's die, or the flattening scene's plate) on its own motion and, in the half (and full) model `part`, the lower
-// one (a floor at floor_y); in the full model both reaching across the y axis; its side dies; a later pass's named
-// pass<N>-<name>. `flank` and `apex`: the upper die's segments the shape metrics use (of its right half).
+// one (a floor at floor_y); in the full model both reaching across the y axis; its side dies; the upper die moved off
+// the axis by the pass's offset (after the lower and side dies drawn from it); a later pass's named pass<N>-<name>.
+// `flank` and `apex`: the upper die's segments the shape metrics use (of its right half).
 PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool squaring, TubePart part, double floor_y,
                              std::vector<Tool> &tools, int &flank, int &apex);
 // A later pass's dies start where the first pass's started (on the round tube's circle) or,
@@ -70,10 +71,11 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
 // ahead, where it touches it (`back` < 0).
 PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, std::vector<Tool> &tools,
                            std::vector<double> &back, int before);
-// Collective: the first pass's upper die moved off the axis by `offset` along x (-die_offset) and, where that
-// puts it inside the tube's outer surface `outer`, back along its motion until it touches it (with `say`, a line
-// printed); an error on every rank if it cannot be moved clear.
-PetscErrorCode OffsetDie(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, double offset, Tool &die);
+// Collective: a pass's upper die, drawn `offset` off its press's axis (-die_offset, -pass<N>_die_offset:
+// BuildPassDies) and turned with the tube, moved back along its motion until it touches the round tube's outer
+// surface `outer` where it is inside it: the pass's zero (with `say`, a line printed); an error on every rank if it
+// cannot be moved clear.
+PetscErrorCode StartOffAxis(MPI_Comm comm, bool say, const std::vector<SurfacePoint> &outer, double offset, Tool &die);
 // Collective: a pass's side dies (`shape`, read from `option`: -side_die or -pass<N>_side_die) appended to
 // `tools`: the right one (for mirror the squaring scene's upper die, whose right half is `upper_right`, or the
 // flattening scene's plate; a plate; or a profile drawn as an upper die), turned to the side by the reflection

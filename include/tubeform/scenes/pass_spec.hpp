@@ -116,15 +116,17 @@ std::string ShapeWord(const DieChoice &shape);
 // (DrawingKind: profile, or dxf for *.dxf), the file in spec.file; unset for no file. (die_shape_options.cpp)
 DieChoice DrawingChoice(const std::string &file);
 
-// A pass's dies, the first's and a later one's alike (DiesOfPass): the upper one's shape and motion (with its path or
-// force), the lower and the side dies' shapes and the side dies' force. (The lower die's motion, -lower_die_motion,
-// is every pass's.)
+// A pass's dies, the first's and a later one's alike (DiesOfPass): the upper one's shape, motion (with its path or
+// force) and place off the axis, the lower and the side dies' shapes and the side dies' force. (The lower die's motion,
+// -lower_die_motion, is every pass's.)
 struct DieSet {
   DieShape upper;   // -die_profile, -die_angle, ... (UpperDieShape); -pass<N>_die_profile
   DieMotion motion; // -die_motion (UpperDie); -pass<N>_die_motion (ReadPassMotions)
   DieChoice lower{DieFrom::Mirror}, side{DieFrom::None}; // -lower_die, -side_die (ShapeChoice); their passes
   double side_force = 0; // -side_force: side dies pressing with this force (N/mm, each), their travel unknown (0: by
                          // the stroke; the first pass's only)
+  double offset = 0;     // -die_offset, -pass<N>_die_offset: the upper die off its press's y axis along the press's x
+                         // (mm; the full model); a later pass's its own (0: on the axis), not the first pass's
 };
 
 // A pass of the press (ToolSceneParams::passes: the first, then each after the springback of the one before): its

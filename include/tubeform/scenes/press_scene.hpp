@@ -124,7 +124,8 @@ private:
 
   // Collective: the dies of a pass; the floor under the tube's lowest point (kept for a restart).
   PetscErrorCode PassTools(Model &m, int pass, std::vector<Tool> &tools);
-  // (the floor's y in the pass's press frame; the dies drawn there, then turned with the tube: PassMap)
+  // (the floor's y in the pass's press frame; the dies drawn there, then turned with the tube: PassMap; an upper die
+  // off the axis moved back to where it touches the round tube)
   PetscErrorCode PassTools(Model &m, int pass, double floor_y, std::vector<Tool> &tools);
 
   // The later pass in place's dies where they start (drawn on floor_y_, moved back by its start_back) and, in the

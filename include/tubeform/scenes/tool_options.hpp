@@ -18,8 +18,8 @@ PetscErrorCode ReadToolSceneOptions(MPI_Comm comm, OptionReader &read, Options &
 // Collective: refuses what the dies, the passes, the model and the release cannot take together, in one line naming
 // the option, and settles what they derive (a -die_path's end is the stroke U) before the loading's checks read it.
 PetscErrorCode CheckToolSceneOptions(MPI_Comm comm, Options &opt);
-// -model, -die_offset, -full_hold into ToolsOf(opt).model (model_options.cpp).
-PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ModelParams &m);
+// -model, -full_hold into the tools' model, -die_offset into their first pass's dies (model_options.cpp).
+PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ToolSceneParams &tools);
 // Collective: refuses a model the dies cannot take (the quarter without mirrored dies, a die off the axis without the
 // full model), the die's offset out of range and a support the model or the forces cannot take (after the passes'
 // turns).
@@ -28,6 +28,9 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt);
 // options (passes_check.cpp).
 PetscErrorCode CheckPassStrokesAndDies(MPI_Comm comm, const Options &opt);
 PetscErrorCode CheckPassTurns(MPI_Comm comm, const Options &opt);
+// Collective: a pass's upper die moved off its press's axis by `offset` (`name`: -die_offset, -pass<N>_die_offset): a
+// number of mm, the squaring scene's die (model_options.cpp).
+PetscErrorCode CheckDieOffset(MPI_Comm comm, const Options &opt, const std::string &name, double offset);
 // Collective: side dies (`name`: -side_die, -pass<N>_side_die; none or a shape) go with the other options.
 PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side);
 // The passes after the first (-pass<N>_*), between PetscOptionsBegin and PetscOptionsEnd (it needs their

@@ -23,12 +23,11 @@ inline constexpr const char *kModelWords[] = {"auto", "quarter", "half", "full"}
 enum class FullHold { Auto, Pins, Rotation };
 inline constexpr const char *kFullHoldWords[] = {"auto", "pins", "rotation"};
 
-// The model (-model, -die_offset, -full_hold): the part of the tube modelled, the first pass's upper die off the axis
-// (which only the full model takes, held by the rotation hold: it chooses the model and its support with the dies'
-// paths and the passes' turns: ModelOf), and the full model's support.
+// The model (-model, -full_hold): the part of the tube modelled and the full model's support. A die off the axis
+// (DieSet::offset, a sideways path), which only the full model takes, held by the rotation hold, chooses them with the
+// passes' turns (ModelOf).
 struct ModelParams {
   TubeModel part = TubeModel::Auto;    // quarter, half, full, or auto: the quarter where it is exact
-  double die_offset = 0;               // the first pass's upper die off the y axis along the press's x (mm; full model)
   FullHold full_hold = FullHold::Auto; // the full model's support: pins, rotation (the rotation hold), auto
 };
 
@@ -124,17 +123,18 @@ inline bool DiePathSideways(const Options &opt)
 // a turn).
 inline bool MotionOffAxis(const DieMotion &m) { return MotionLeavesAxis(m.kind, m.spec); }
 // The first pass's upper die leaves the press's y axis: -die_offset, or a -die_path with a sideways motion or a
-// turn.
+// turn (PassOffAxis of the first pass).
 inline bool DieOffAxis(const Options &opt)
 {
-  return ToolsOf(opt).model.die_offset != 0 || MotionOffAxis(FirstDies(opt).motion);
+  return FirstDies(opt).offset != 0 || MotionOffAxis(FirstDies(opt).motion);
 }
 
-// Pass `pass`'s upper die leaves its press's y axis: the first pass's as DieOffAxis says, a later one's on a path
+// Pass `pass`'s upper die leaves its press's y axis: moved off it (-die_offset, -pass<N>_die_offset), or on a path
 // of its own with a sideways point or a turn.
 inline bool PassOffAxis(const Options &opt, int pass)
 {
-  return pass == 0 ? DieOffAxis(opt) : MotionOffAxis(LaterPass(opt, pass).dies.motion);
+  const DieSet &dies = ToolsOf(opt).passes[pass].dies;
+  return dies.offset != 0 || MotionOffAxis(dies.motion);
 }
 // Pass `pass`'s upper die or an earlier pass's leaves its press's axis (the tube is then pressed off its mirror
 // symmetry from that pass on). Every pass's options count, given or not, as in ModelOf below.
@@ -167,7 +167,8 @@ inline bool QuarterTurn(const Options &opt, int pass)
 }
 // Pass `pass`'s dies (0 the first; the scene's passes are built from these alike): the first pass's (-die_*,
 // -lower_die, -side_die), a later one's where its -pass<N>_die_profile, _lower_die, _side_die give them and its
-// upper die's motion; the upper die drawn on the tube (UpperDieShape), its motion's reach the tube's outer radius.
+// upper die's motion and offset (its own: 0 where not given); the upper die drawn on the tube (UpperDieShape), its
+// motion's reach the tube's outer radius.
 inline DieSet DiesOfPass(const Options &opt, int pass)
 {
   DieSet dies = FirstDies(opt);
@@ -181,7 +182,7 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
   if (given.lower.Given()) dies.lower = given.lower;
   if (given.side.Given()) dies.side = given.side;
   dies.motion = given.motion, dies.motion.spec.reach = opt.tube_ro;
-  dies.side_force = given.side_force;
+  dies.side_force = given.side_force, dies.offset = given.offset;
   return dies;
 }
 // Pass `pass`'s lower die's word (-lower_die, -pass<N>_lower_die: the first pass's where not given).

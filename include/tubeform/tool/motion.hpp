@@ -126,7 +126,7 @@ struct MotionPress {
   bool corner_radius = false; // the first pass's stroke from -stroke_corner_radius
   bool side_dies = false;     // side dies in the first pass (-side_die)
   bool any_side_dies = false; // side dies in some pass (-side_die, -pass<N>_side_die)
-  bool die_offset = false;    // the first pass's die off the axis by -die_offset
+  bool die_offset = false;    // the pass's die moved off its axis (-die_offset, -pass<N>_die_offset)
   bool off_axis = false;      // the pass's die leaves its press's y axis (a sideways point or a turn)
   bool held = false;          // the pass is held by the rotation hold (the full model's)
 };

@@ -10,8 +10,9 @@
 
 namespace tf {
 
-PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ModelParams &m)
+PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ToolSceneParams &tools)
 {
+  ModelParams &m = tools.model;
   PetscFunctionBeginUser;
   PetscCall(ChooseWord(PetscOptionsObject, read, "-model",
                        "tool scenes: the part of the tube modelled: quarter, half (x >= 0), full (held as "
@@ -20,7 +21,7 @@ PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionRead
   PetscCall(read.Real(PetscOptionsObject, "-die_offset",
                       "squaring: the first pass's upper die moved off the y axis by this along x (mm; the full model, "
                       "held by the rotation hold, a second pass after it too; docs/dies.md)",
-                      m.die_offset));
+                      tools.passes[0].dies.offset));
   PetscCall(
     ChooseWord(PetscOptionsObject, read, "-full_hold",
                "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "
@@ -33,22 +34,29 @@ PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionRead
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode CheckDieOffset(MPI_Comm comm, const Options &opt, const std::string &name, double offset)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(std::isfinite(offset), comm, PETSC_ERR_USER_INPUT, "%s %g: give a number of mm", name.c_str(), offset);
+  PetscCheck(offset == 0 || PressesWithDie(opt), comm, PETSC_ERR_USER_INPUT,
+             "%s %g: the squaring scene's die (a plate off the axis is the same plate)", name.c_str(), offset);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
 {
   const ModelParams &m = ToolsOf(opt).model;
+  const double offset = FirstDies(opt).offset; // (-die_offset)
   const ModelChoice model = ModelOf(opt);
   PetscFunctionBeginUser;
   PetscCheck(m.part != TubeModel::Quarter || model.Mirrored(), comm, PETSC_ERR_USER_INPUT,
              "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
              "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
   // The rotation hold: the full model; one extra unknown in a solve (scenes/hold.hpp).
-  PetscCheck(std::isfinite(m.die_offset), comm, PETSC_ERR_USER_INPUT, "-die_offset %g: give a number of mm",
-             m.die_offset);
-  PetscCheck(m.die_offset == 0 || PressesWithDie(opt), comm, PETSC_ERR_USER_INPUT,
-             "-die_offset %g: the squaring scene's die (a plate off the axis is the same plate)", m.die_offset);
+  PetscCall(CheckDieOffset(comm, opt, "-die_offset", offset));
   char off_axis[64] = "-die_path"; // (what puts the die off the axis, named in the errors)
-  if (m.die_offset != 0) std::snprintf(off_axis, sizeof off_axis, "-die_offset %g", m.die_offset);
-  if (m.die_offset == 0 && !DiePathSideways(opt)) std::snprintf(off_axis, sizeof off_axis, "-die_path_turn");
+  if (offset != 0) std::snprintf(off_axis, sizeof off_axis, "-die_offset %g", offset);
+  if (offset == 0 && !DiePathSideways(opt)) std::snprintf(off_axis, sizeof off_axis, "-die_path_turn");
   PetscCheck(!DieOffAxis(opt) || model.part == TubeModel::Full, comm, PETSC_ERR_USER_INPUT,
              "%s: a die off the axis breaks the tube's mirror symmetry; use -model full (or auto)", off_axis);
   PetscCheck(m.full_hold != FullHold::Rotation || PressesWithDie(opt), comm, PETSC_ERR_USER_INPUT,

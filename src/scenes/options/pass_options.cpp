@@ -32,26 +32,32 @@ PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader
                       "held by the rotation hold; a later pass's -pass<N>_turn turns it on from the pass before's; "
                       "docs/dies.md)",
                       pass.turn));
+  PetscCall(read.Real(PetscOptionsObject, "-pass2_die_offset",
+                      "squaring: the second pass's upper die moved off its press's y axis by this along the press's x "
+                      "(mm; the full model, held by the rotation hold; default 0: on the axis, whatever -die_offset "
+                      "says; docs/dies.md)",
+                      pass.dies.offset));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Pass `number` (3 to kMaxPasses): -pass<number>_stroke, _die_profile, _lower_die, _side_die, _turn, as the second
-// pass's. Read (and listed by -help) where one of them is given; named for the hints on a misspelt option always.
+// Pass `number` (3 to kMaxPasses): -pass<number>_stroke, _die_profile, _lower_die, _side_die, _turn, _die_offset, as
+// the second pass's. Read (and listed by -help) where one of them is given; named for the hints on a misspelt option
+// always.
 PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, int number, PassSpec &pass)
 {
   const std::string pre = "-pass" + std::to_string(number) + "_";
   const std::string stroke = pre + "stroke", profile = pre + "die_profile", lower = pre + "lower_die",
-                    side = pre + "side_die", turn = pre + "turn";
+                    side = pre + "side_die", turn = pre + "turn", offset = pre + "die_offset";
   const std::string help = "squaring: pass " + std::to_string(number) + "'s, as -pass2_";
   bool given = false;
   PetscFunctionBeginUser;
-  for (const std::string *name : {&stroke, &profile, &lower, &side, &turn}) {
+  for (const std::string *name : {&stroke, &profile, &lower, &side, &turn, &offset}) {
     PetscBool set;
     PetscCall(PetscOptionsHasName(nullptr, nullptr, name->c_str(), &set));
     given = given || set;
   }
   if (!given) {
-    for (const std::string *name : {&stroke, &profile, &lower, &side, &turn})
+    for (const std::string *name : {&stroke, &profile, &lower, &side, &turn, &offset})
       read.Note(name->c_str(), (help + name->substr(pre.size()) + "'s").c_str(), PetscOptionsObject->title);
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -63,6 +69,7 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
   PetscCall(ReadDieChoice(PetscOptionsObject, read, side.c_str(), (help + "side_die").c_str(), true, pass.dies.side));
   PetscCall(
     read.Real(PetscOptionsObject, turn.c_str(), (help + "turn (from the pass before's press)").c_str(), pass.turn));
+  PetscCall(read.Real(PetscOptionsObject, offset.c_str(), (help + "die_offset").c_str(), pass.dies.offset));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -4,6 +4,7 @@
 
 #include "tubeform/core/core.hpp"
 #include "tubeform/scenes/motion_checks.hpp"
+#include "tubeform/scenes/tool_options.hpp"
 #include "tubeform/scenes/tool_scene.hpp"
 
 namespace tf {
@@ -22,6 +23,25 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
 }
 
 namespace {
+
+// Pass `pass`'s upper die moved off its press's axis (-pass<N>_die_offset): as the first pass's, in the full model
+// held by the rotation hold (the pins would hold the tube's slide against the die).
+PetscErrorCode CheckPassOffset(MPI_Comm comm, const Options &opt, int pass)
+{
+  const std::string name = PassOption(pass, "die_offset");
+  const double offset = LaterPass(opt, pass).dies.offset;
+  const ModelChoice model = ModelOf(opt);
+  PetscFunctionBeginUser;
+  PetscCall(CheckDieOffset(comm, opt, name, offset));
+  PetscCheck(offset == 0 || model.part == TubeModel::Full, comm, PETSC_ERR_USER_INPUT,
+             "%s %g: a die off the axis breaks the tube's mirror symmetry; use -model full (or auto)", name.c_str(),
+             offset);
+  PetscCheck(offset == 0 || model.HeldByRotation(pass), comm, PETSC_ERR_USER_INPUT,
+             "%s %g with -full_hold pins: the pins would hold the tube's slide against the die; use -full_hold "
+             "rotation (or auto)",
+             name.c_str(), offset);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 // Pass `pass`'s stroke and dies (a pass given: PassExtent).
 PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
@@ -42,11 +62,13 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(!e.Given() || pass == 1 || Extent(opt, pass - 1).Given(), comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", given.c_str(), e.Target(), ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
-  PetscCheck(e.Given() || (p.dies.upper.kind.empty() && !p.dies.lower.Given() && !p.dies.side.Given()), comm,
-             PETSC_ERR_USER_INPUT, "%s (or its V-die's numbers), %s, %s: give %s for the %s pass",
-             PassOption(pass, "die_profile").c_str(), PassOption(pass, "lower_die").c_str(),
-             PassOption(pass, "side_die").c_str(), stroke.c_str(), ordinal.c_str());
+  PetscCheck(
+    e.Given() || (p.dies.upper.kind.empty() && !p.dies.lower.Given() && !p.dies.side.Given() && p.dies.offset == 0),
+    comm, PETSC_ERR_USER_INPUT, "%s (or its V-die's numbers), %s, %s, %s: give %s for the %s pass",
+    PassOption(pass, "die_profile").c_str(), PassOption(pass, "lower_die").c_str(),
+    PassOption(pass, "side_die").c_str(), PassOption(pass, "die_offset").c_str(), stroke.c_str(), ordinal.c_str());
   if (p.dies.side.Given()) PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), p.dies.side));
+  PetscCall(CheckPassOffset(comm, opt, pass));
   PetscCall(CheckUpperMotion(comm, opt, pass)); // (its motion kind's check: motion_checks.hpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -19,12 +19,12 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   const DieSet &first = FirstDies(opt);
   bool asked = !first.lower.Is(DieFrom::Mirror) || !LowerDieMoves(opt, LowerDieMove::Mirror) ||
                ToolsOf(opt).model.part != TubeModel::Auto || !DieMoves(first, kStrokeMotion) ||
-               !first.side.Is(DieFrom::None) || first.side_force != 0 || ToolsOf(opt).model.die_offset != 0 ||
+               !first.side.Is(DieFrom::None) || first.side_force != 0 || first.offset != 0 ||
                ToolsOf(opt).model.full_hold != FullHold::Auto;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     const PassSpec &p = LaterPass(opt, pass);
     asked = asked || p.stroke != 0 || p.turn != 0 || !p.dies.upper.kind.empty() || p.dies.lower.Given() ||
-            p.dies.side.Given();
+            p.dies.side.Given() || p.dies.offset != 0;
   }
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
@@ -100,8 +100,8 @@ PetscErrorCode ReadToolSceneOptions(MPI_Comm comm, OptionReader &read, Options &
   PetscFunctionBeginUser;
   {
     TF_OPTIONS_BEGIN(comm, "tubeform: tube model and passes");
-    PetscCall(ReadModelOptions(PetscOptionsObject, read, ToolsOf(opt).model)); // (model_options.cpp)
-    PetscCall(ReadToolOptions(PetscOptionsObject, read, opt));                 // (pass_options.cpp)
+    PetscCall(ReadModelOptions(PetscOptionsObject, read, ToolsOf(opt))); // (model_options.cpp)
+    PetscCall(ReadToolOptions(PetscOptionsObject, read, opt));           // (pass_options.cpp)
     TF_OPTIONS_END();
   }
   PetscCall(ReadLowerDieShape(comm, read, opt));  // (die_shape_options.cpp)
