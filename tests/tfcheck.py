@@ -192,16 +192,18 @@ def self_checks(H, share=0.5, lower_rise=None):
             plus what the loads at the nodes did (w_ext - w_tool: the paper's unloading, pending release forces),
             less the work of a lower die moving on its own (`lower_rise`: its rise at each row's stroke, against
             its force lower_fy);
-      b:    (w_int - w_plastic - w_elastic) / w_int.
-    Row 0 (no work yet) gives 0."""
+      b:    (w_int - w_plastic - w_elastic) / w_int,
+    each relative to the largest its reference has been up to that row. Row 0 (no work yet) gives 0."""
     U, P = H["stroke"], H["load"]
     dw = share * 0.5 * (P[1:] + P[:-1]) * np.diff(U)
     if lower_rise is not None:
         dw = dw - 0.5 * (H["lower_fy"][1:] + H["lower_fy"][:-1]) * np.diff(lower_rise)
     tool = np.concatenate([[0.0], np.cumsum(dw)])
     w_in = tool + H["w_ext"] - H["w_tool"]
-    a = (w_in - H["w_int"] - H["w_friction"] - H["w_kinetic"] - H["w_damped"]) / np.maximum(np.abs(w_in), 1e-300)
-    b = (H["w_int"] - H["w_plastic"] - H["w_elastic"]) / np.maximum(np.abs(H["w_int"]), 1e-300)
+    def peak(w):
+        return np.maximum(np.maximum.accumulate(np.abs(w)), 1e-300)
+    a = (w_in - H["w_int"] - H["w_friction"] - H["w_kinetic"] - H["w_damped"]) / peak(w_in)
+    b = (H["w_int"] - H["w_plastic"] - H["w_elastic"]) / peak(H["w_int"])
     return a, b, tool
 
 

@@ -180,6 +180,7 @@ PetscErrorCode Problem::EnergyColumns(double lambda0, double lambda, const Commi
   energy_.w_int += done.body.dw_int;
   energy_.w_plastic += done.body.dw_plastic;
   energy_.w_inertia += done.dw_inertia;
+  energy_.TakePeaks();
   row.w_ext = energy_.w_ext;
   row.w_tool = energy_.w_tool;
   row.w_int = energy_.w_int;

@@ -12,6 +12,9 @@
 //   (b) internal work = plastic dissipation + stored elastic energy,
 //       the plastic part from the flow stress and plastic strain increments,
 //       the elastic part from the current stresses.
+// Each relative to the largest its reference (the work put in, the internal
+// work) has been so far: a springback that gives an elastic press's work back
+// leaves them near 0, where the difference relative to them would mean nothing.
 #pragma once
 
 #include <algorithm>
@@ -28,14 +31,15 @@ struct EnergyAccount {
   double w_plastic = 0;  // plastic dissipation, sum sigma_y,mid dep dV
   double w_friction = 0; // friction dissipation, -sum f_l,mid dslip
   double w_inertia = 0;  // work of the inertia forces (trapezoidal) = kinetic + damped energy
+  double ext_peak = 0;   // the largest |w_ext| so far
+  double int_peak = 0;   // the largest |w_int| so far
 
-  // (a) (w_ext - w_int - w_friction - w_inertia) / |w_ext|
-  double BalanceError() const { return (w_ext - w_int - w_friction - w_inertia) / std::max(std::abs(w_ext), kTiny); }
-  // (b) (w_int - w_plastic - w_elastic) / |w_int|
-  double InternalError(double w_elastic) const
-  {
-    return (w_int - w_plastic - w_elastic) / std::max(std::abs(w_int), kTiny);
-  }
+  // The peaks, once the increment's works are added.
+  void TakePeaks() { ext_peak = std::max(ext_peak, std::abs(w_ext)), int_peak = std::max(int_peak, std::abs(w_int)); }
+  // (a) (w_ext - w_int - w_friction - w_inertia) / the largest |w_ext| so far
+  double BalanceError() const { return (w_ext - w_int - w_friction - w_inertia) / std::max(ext_peak, kTiny); }
+  // (b) (w_int - w_plastic - w_elastic) / the largest |w_int| so far
+  double InternalError(double w_elastic) const { return (w_int - w_plastic - w_elastic) / std::max(int_peak, kTiny); }
 };
 
 } // namespace tf
