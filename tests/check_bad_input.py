@@ -117,9 +117,15 @@ cases = [
      "off that axis"),
     (["-scene", "squaring", "-side_die", "flat", "-die_force", "100"], "side dies press by the stroke"),
     (["-scene", "squaring", "-pass2_side_die", "flat"], "give -pass2_stroke"),
-    (["-scene", "squaring", "-side_force", "20"], "need -side_die"),
+    (["-scene", "squaring", "-side_force", "20"], "need the pass's side dies, -side_die"),
     (["-scene", "squaring", "-side_die", "flat", "-side_force", "-1"], "-side_force -1"),
-    (["-scene", "squaring", "-side_die", "flat", "-side_force", "20", "-pass2_stroke", "2"], "one pass"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_force", "20"],
+     "force-controlled side dies need the pass's side dies, -pass2_side_die (or -side_die)"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_die", "flat", "-pass2_side_force", "-3"],
+     "-pass2_side_force -3"),
+    (["-scene", "squaring", "-pass2_side_force", "20"], "-pass2_side_force: give -pass2_stroke"),
+    (["-scene", "squaring", "-side_die", "flat", "-pass2_stroke", "2", "-pass2_side_force", "20", "-pass2_turn", "45"],
+     "not with -die_force or -pass2_side_force"),
     (["-scene", "squaring", "-die_offset", "0.5", "-model", "half"], "-die_offset 0.5: a die off the axis"),
     (["-scene", "squaring", "-die_offset", "nan"], "-die_offset nan"),
     (["-scene", "squaring", "-die_offset", "0.5", "-full_hold", "pins"], "with -full_hold pins"),
@@ -131,7 +137,7 @@ cases = [
      "the rotation hold (-full_hold, -die_offset, -die_path): not with -pass2_die_force"),
     (["-scene", "tension", "-die_offset", "0.5"], "presses with no dies"),
     (["-scene", "flattening", "-die_offset", "0.5"], "-die_offset 0.5: the squaring scene's die"),
-    (["-scene", "squaring", "-pass2_die_offset", "0.5"], "-pass2_die_offset: give -pass2_stroke"),
+    (["-scene", "squaring", "-pass2_die_offset", "0.5"], "-pass2_die_offset, -pass2_side_force: give -pass2_stroke"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "inf"], "-pass2_die_offset inf"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "0.5", "-model", "half"],
      "-pass2_die_offset 0.5: a die off the axis breaks"),
@@ -295,7 +301,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 166 and len(selected) == 10, f"{len(cases)} cases on 1 rank (166), {len(selected)} on 2 (10)")
+k.check(len(cases) == 169 and len(selected) == 10, f"{len(cases)} cases on 1 rank (169), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

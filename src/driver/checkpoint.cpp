@@ -24,8 +24,9 @@ namespace {
 // 6: the second pass's dies moved back to the tube; 7: the side dies' travel, the scene read before the contacts;
 // 8: the rotation hold's columns; 9: die_x; 10: the hold's pins of the slide; 11: die_turn; 12: the springback's
 // law and its measure at the yield surface; 13: the symmetry planes' walls and whether the dies were removed; 14:
-// whether the corrections take their iterate's tangent; 15: the self-checks' peaks of work).
-constexpr double kCheckpointVersion = 15;
+// whether the corrections take their iterate's tangent; 15: the self-checks' peaks of work; 16: the side dies'
+// travel in the second pass).
+constexpr double kCheckpointVersion = 16;
 // Room a checkpoint is given before it is written: 8-byte numbers, fewer than
 // 64 per node, per cell and per history row (the state holds about 30, 48 and
 // 49), and 1 MB for HDF5's own.

@@ -1,7 +1,7 @@
 // The press's dies' motions from the options, made by the motion registry (tool/motion.hpp): the lower die's of
 // -lower_die_motion (its kind and options read by the kind, scenes/options/die_motion_options.cpp), with the upper
 // die's stroke that goes with it; the upper die's own motion (its path or its force: the first pass's -die_motion,
-// UpperDie, and a later pass's alike, DiesOfPass); the side dies' force control (-side_force).
+// UpperDie, and a later pass's alike, DiesOfPass); the side dies' force control (-side_force, -pass<N>_side_force).
 #include "tubeform/scenes/die.hpp"
 
 #include <iterator>
@@ -91,13 +91,14 @@ PetscErrorCode SetUpperMotion(MPI_Comm comm, const char *option, const DieMotion
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, size_t first_side, std::vector<Tool> &tools)
+PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, int pass, size_t first_side, std::vector<Tool> &tools)
 {
+  const std::string option = pass > 0 ? PassOption(pass, "side_force") : "-side_force";
   PetscFunctionBeginUser;
-  for (size_t k = first_side; FirstDies(opt).side_force > 0 && k < tools.size(); ++k) {
+  for (size_t k = first_side; DiesOfPass(opt, pass).side_force > 0 && k < tools.size(); ++k) {
     MotionSpec spec;
     spec.direction = tools[k].Direction();
-    PetscCall(SetMotion(comm, "-side_force", kForceMotion, spec, tools[k]));
+    PetscCall(SetMotion(comm, option.c_str(), kForceMotion, spec, tools[k]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

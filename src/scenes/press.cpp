@@ -103,9 +103,6 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   PetscCall(PassTools(m, 0, tools.tools));
   std::vector<SurfacePoint> outer;
   PetscCall(GatherOuter(m, outer));
-  // (-side_force: die_motion.cpp; the upper die's own motion, -die_motion path or force, set with its dies: a path
-  // of its own to move back along before the offset)
-  PetscCall(SetSideForces(m.comm, opt_, SideDie(), tools.tools));
   tools.candidates = "outer";
   for (int pass = (int)passes_.size() - 1; WholeTube(part_) && pass >= 0;
        --pass) { // (the later passes' axes checked now)
@@ -170,9 +167,12 @@ PetscErrorCode PressScene::StartPass(Model &m)
   std::vector<SurfacePoint> outer;
   PetscCall(GatherOuter(m, outer));
   PetscCall(StartOnTube(m.comm, !m.quiet, outer, drawn, passes_[next].start_back, (int)pass_));
-  // (the side dies' travel goes on from where the pass before left it: through its press and its backing off)
+  // (the side dies' travel goes on from where the pass before left it: through its press and its backing off, or
+  // their own travel where a force drove them; the contact set keeps the pass's tools until its next are set up)
   const Pass &before = passes_[pass_];
-  if (next > 1) passes_[next].side_from = before.side_from + before.extent.stroke + before.back;
+  const double travel =
+    before.dies.side_force > 0 ? m.contact->tool(SideDie()).stroke : before.extent.stroke + before.back;
+  if (next > 1 || before.dies.side_force > 0) passes_[next].side_from = before.side_from + travel;
   unloading_ = false;
   // (the pin stays until the next pass's dies hold the half model's tube: Load)
   reversed_.total[0] = reversed_.total[1] = reversed_.moment = 0;
@@ -262,6 +262,7 @@ PetscErrorCode PressScene::PassTools(Model &m, int pass, double floor_y, std::ve
   PetscFunctionBeginUser;
   PetscCall(BuildPassDies(m.comm, opt_, pass, squaring_, part_, floor_y, tools, flank_, apex_));
   for (Tool &t : tools) t = Transform(t, PassMap(pass));
+  PetscCall(SetSideForces(m.comm, opt_, pass, SideDie(), tools)); // (-side_force, -pass<N>_side_force: die_motion.cpp)
   // Its upper die off the axis (-die_offset, -pass<N>_die_offset): its zero, as every pass's, where it touches the
   // round tube (the first pass's printed; a later pass's start from there: StartOnTube).
   const double offset = DiesOfPass(opt_, pass).offset;

@@ -39,9 +39,10 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   bool side_dies = false;
   for (const Pass &p : passes_) side_dies = side_dies || p.side_dies;
   if (side_dies)
-    side(row, kSideStroke) = passes_[pass_].dies.side_force > 0 ? m.contact->tool(SideDie()).stroke
-                             : pass_ > 0                        ? passes_[pass_].side_from + ToolStroke(lambda)
-                                                                : row.stroke;
+    side(row, kSideStroke) = passes_[pass_].dies.side_force > 0
+                               ? passes_[pass_].side_from + m.contact->tool(SideDie()).stroke
+                             : pass_ > 0 ? passes_[pass_].side_from + ToolStroke(lambda)
+                                         : row.stroke;
   if (passes_[pass_].side_dies && !unloading_) {
     // (the right side die: whole in the half and full models, its upper half in the quarter)
     // (its force along the press's x: a turned pass's side die presses along the press's -x)
@@ -91,9 +92,9 @@ PetscErrorCode PressScene::Persist(Model &m, Archive &ar)
   PetscCall(hold_.Persist(ar));
   PetscCall(ar.Value("floor_y", floor_y_));
   PetscCall(ar.Values("pass2_back", passes_[pass_].start_back)); // (the pass in place's; the name of two passes)
-  if (pass_ >= 2) {
-    // (past the second pass: the side dies' travel where the pass in place began, where each later pass's upper die
-    // started)
+  if (pass_ >= 1) {
+    // (in a later pass: the side dies' travel where the pass in place began, where each later pass before it had its
+    // upper die start)
     std::vector<double> from = {passes_[pass_].side_from};
     for (int k = 1; k < pass_; ++k) from.push_back(passes_[k].start);
     PetscCall(ar.Values("side_from_pass_starts", from));

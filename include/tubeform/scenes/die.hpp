@@ -50,8 +50,9 @@ std::vector<double> PressKinks(const Options &opt, double until);
 // Collective: a pass's upper die on its own motion `die` (a path, turning about its pivot; a force), or an error on
 // every rank naming `option`; by the stroke, the motion its lower die's gives it (SetLowerMotion).
 PetscErrorCode SetUpperMotion(MPI_Comm comm, const char *option, const DieMotion &die, Tool &upper);
-// Collective: the side dies pressing by a force (tools from first_side on, -side_force).
-PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, size_t first_side, std::vector<Tool> &tools);
+// Collective: pass `pass`'s side dies pressing by a force (tools from first_side on; -side_force,
+// -pass<N>_side_force: DiesOfPass), where it has one.
+PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, int pass, size_t first_side, std::vector<Tool> &tools);
 
 // The flattening scene's plate reaches past the ring on both sides (fractions of Ro): a crushed ring widens by
 // much less than half its radius.

@@ -123,8 +123,8 @@ struct DieSet {
   DieShape upper;   // -die_profile, -die_angle, ... (UpperDieShape); -pass<N>_die_profile
   DieMotion motion; // -die_motion (UpperDie); -pass<N>_die_motion (ReadPassMotions)
   DieChoice lower{DieFrom::Mirror}, side{DieFrom::None}; // -lower_die, -side_die (ShapeChoice); their passes
-  double side_force = 0; // -side_force: side dies pressing with this force (N/mm, each), their travel unknown (0: by
-                         // the stroke; the first pass's only)
+  double side_force = 0; // -side_force, -pass<N>_side_force: side dies pressing with this force (N/mm, each), their
+                         // travel unknown (0: by the stroke); a later pass's its own, not the first pass's
   double offset = 0;     // -die_offset, -pass<N>_die_offset: the upper die off its press's y axis along the press's x
                          // (mm; the full model); a later pass's its own (0: on the axis), not the first pass's
 };

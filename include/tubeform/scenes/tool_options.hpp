@@ -79,6 +79,9 @@ PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt);
 // dies' block their force, -side_force, into its side_force. Collective: CheckSideDieOptions refuses -side_die and
 // -side_force where they do not go with the other options, one line naming the option (CheckToolSceneOptions).
 PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt);
+// Collective: pass `pass`'s side dies' force (-side_force, -pass<N>_side_force): a non-negative number of N/mm, with
+// the pass's side dies (die_shape_options.cpp).
+PetscErrorCode CheckSideForce(MPI_Comm comm, const Options &opt, int pass);
 PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 // Inside a block (its PetscOptionsObject): a die's shape by the word of `option` (ShapeChoice: mirror, flat, none where

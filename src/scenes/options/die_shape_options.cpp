@@ -135,18 +135,26 @@ PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode CheckSideForce(MPI_Comm comm, const Options &opt, int pass)
+{
+  const double force = ToolsOf(opt).passes[pass].dies.side_force;
+  const std::string name = pass > 0 ? PassOption(pass, "side_force") : "-side_force";
+  const std::string side = pass > 0 ? PassOption(pass, "side_die") + " (or -side_die)" : "-side_die";
+  PetscFunctionBeginUser;
+  PetscCheck(force >= 0 && std::isfinite(force), comm, PETSC_ERR_USER_INPUT,
+             "%s %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",
+             name.c_str(), force);
+  PetscCheck(force == 0 || !DiesOfPass(opt, pass).side.Is(DieFrom::None), comm, PETSC_ERR_USER_INPUT,
+             "%s %g: force-controlled side dies need the pass's side dies, %s (mirror, flat or a file)", name.c_str(),
+             force, side.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt)
 {
-  const DieSet &dies = FirstDies(opt);
   PetscFunctionBeginUser;
-  PetscCall(CheckSideDies(comm, opt, "-side_die", dies.side)); // (passes_check.cpp)
-  PetscCheck(dies.side_force >= 0 && std::isfinite(dies.side_force), comm, PETSC_ERR_USER_INPUT,
-             "-side_force %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",
-             dies.side_force);
-  PetscCheck(dies.side_force == 0 || (!dies.side.Is(DieFrom::None) && PassCount(opt) == 1), comm, PETSC_ERR_USER_INPUT,
-             "-side_force %g: force-controlled side dies need -side_die (mirror, flat or a file) and one pass (not "
-             "with -pass2_stroke)",
-             dies.side_force);
+  PetscCall(CheckSideDies(comm, opt, "-side_die", FirstDies(opt).side)); // (passes_check.cpp)
+  PetscCall(CheckSideForce(comm, opt, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -68,16 +68,18 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
   PetscCheck(m.full_hold == FullHold::Auto || model.part == TubeModel::Full, comm, PETSC_ERR_USER_INPUT,
              "-full_hold %s: only the full model is held so (-model full)", WordOf(kFullHoldWords, m.full_hold));
   bool held = false;
-  std::string forced; // (the option of the first pass pressed by a force; none: "")
+  std::string forced, side; // (the options of the first pass pressed by a force, of its side dies'; none: "")
   for (int pass = kMaxPasses - 1; pass >= 0; --pass) {
     const PassExtent e = Extent(opt, pass);
     held = held || model.HeldByRotation(pass);
     if (e.Forced()) forced = e.Option();
+    if (ToolsOf(opt).passes[pass].dies.side_force != 0)
+      side = pass > 0 ? PassOption(pass, "side_force") : "-side_force";
   }
-  PetscCheck(!held || (forced.empty() && FirstDies(opt).side_force == 0), comm, PETSC_ERR_USER_INPUT,
-             "the rotation hold (-full_hold, -die_offset, -die_path): not with %s or -side_force (one "
-             "force-controlled unknown in an increment)",
-             forced.empty() ? "-die_force" : forced.c_str());
+  PetscCheck(!held || (forced.empty() && side.empty()), comm, PETSC_ERR_USER_INPUT,
+             "the rotation hold (-full_hold, -die_offset, -die_path): not with %s or %s (one force-controlled "
+             "unknown in an increment)",
+             forced.empty() ? "-die_force" : forced.c_str(), side.empty() ? "-side_force" : side.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -37,27 +37,33 @@ PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader
                       "(mm; the full model, held by the rotation hold; default 0: on the axis, whatever -die_offset "
                       "says; docs/dies.md)",
                       pass.dies.offset));
+  PetscCall(read.Real(PetscOptionsObject, "-pass2_side_force",
+                      "squaring: the second pass's side dies pressing with this force (N/mm, on the whole tube) over "
+                      "its press, their travel an unknown of each increment (default 0: by the stroke, whatever "
+                      "-side_force says)",
+                      pass.dies.side_force));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Pass `number` (3 to kMaxPasses): -pass<number>_stroke, _die_profile, _lower_die, _side_die, _turn, _die_offset, as
-// the second pass's. Read (and listed by -help) where one of them is given; named for the hints on a misspelt option
-// always.
+// Pass `number` (3 to kMaxPasses): -pass<number>_stroke, _die_profile, _lower_die, _side_die, _turn, _die_offset,
+// _side_force, as the second pass's. Read (and listed by -help) where one of them is given; named for the hints on a
+// misspelt option always.
 PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, int number, PassSpec &pass)
 {
   const std::string pre = "-pass" + std::to_string(number) + "_";
   const std::string stroke = pre + "stroke", profile = pre + "die_profile", lower = pre + "lower_die",
-                    side = pre + "side_die", turn = pre + "turn", offset = pre + "die_offset";
+                    side = pre + "side_die", turn = pre + "turn", offset = pre + "die_offset",
+                    side_force = pre + "side_force";
   const std::string help = "squaring: pass " + std::to_string(number) + "'s, as -pass2_";
   bool given = false;
   PetscFunctionBeginUser;
-  for (const std::string *name : {&stroke, &profile, &lower, &side, &turn, &offset}) {
+  for (const std::string *name : {&stroke, &profile, &lower, &side, &turn, &offset, &side_force}) {
     PetscBool set;
     PetscCall(PetscOptionsHasName(nullptr, nullptr, name->c_str(), &set));
     given = given || set;
   }
   if (!given) {
-    for (const std::string *name : {&stroke, &profile, &lower, &side, &turn, &offset})
+    for (const std::string *name : {&stroke, &profile, &lower, &side, &turn, &offset, &side_force})
       read.Note(name->c_str(), (help + name->substr(pre.size()) + "'s").c_str(), PetscOptionsObject->title);
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -70,6 +76,7 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
   PetscCall(
     read.Real(PetscOptionsObject, turn.c_str(), (help + "turn (from the pass before's press)").c_str(), pass.turn));
   PetscCall(read.Real(PetscOptionsObject, offset.c_str(), (help + "die_offset").c_str(), pass.dies.offset));
+  PetscCall(read.Real(PetscOptionsObject, side_force.c_str(), (help + "side_force").c_str(), pass.dies.side_force));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

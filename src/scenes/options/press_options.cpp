@@ -24,7 +24,7 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     const PassSpec &p = LaterPass(opt, pass);
     asked = asked || p.stroke != 0 || p.turn != 0 || !p.dies.upper.kind.empty() || p.dies.lower.Given() ||
-            p.dies.side.Given() || p.dies.offset != 0;
+            p.dies.side.Given() || p.dies.offset != 0 || p.dies.side_force != 0;
   }
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
