@@ -67,9 +67,10 @@ H. A second pass (U = 2 mm, not turned) after the die off the axis (`-die_offset
 I. A second pass's die off the axis (`-pass2_die_offset 0.5`, to U = 0.33 mm) after a first pass on the axis that
    stays elastic (U = 0.02 mm, no Gauss point plastic, its springback leaving the tube round to a few 1e-6 mm): the
    same press as the first pass's die off the axis ("short": D's run), since a pass's zero is where its die
-   touches the round tube. The run says the pass's dies start within 1e-4 mm of that zero; at the end of the press
-   and of its springback load, C1, C2 within 1e-3 of their values, the sideways forces within 1e-3 of the load
-   and the couple within 1e-3 of the load times Ro (G's bounds: the two runs' contact events fall a few 1e-6 mm
+   touches the round tube. The run says the pass's dies start within 1e-4 mm of that zero (the elastic pass leaves
+   the tube round to a few 1e-6 mm; a zero taken from the die on the axis is e tan 45 = 0.5 mm off); at the end of
+   the press (and C1, C2 after its springback) load, C1, C2 within 1e-3 of their values, the sideways forces
+   within 1e-3 of the load and the couple within 1e-3 of the load times Ro (G's bounds: the two runs' contact events fall a few 1e-6 mm
    apart; measured 4e-5). The offset ignored leaves the sideways force about 0.12 of the load; measured from the
    die on the axis touching the round tube, the pass presses 0.5 mm less: O(1). The self-checks through the first
    pass's springback, which gives its work back (the internal work falls to 2e-7 of its largest): (a) and (b), each
@@ -260,8 +261,8 @@ def ends(a, b, sign):
     for stage in (2, 3):
         i, j = (np.where(x["stage"] == stage)[0][-1] for x in (a, b))
         load = abs(a["load"][np.where(a["stage"] == 2)[0][-1]])
-        for c in ("load", "x_max", "y_max", "w_int"):
-            worst = max(worst, abs(b[c][j] - a[c][i]) / max(abs(a[c][i]), 1e-300))
+        for c in ("load", "x_max", "y_max", "w_int") if stage == 2 else ("x_max", "y_max", "w_int"):
+            worst = max(worst, abs(b[c][j] - a[c][i]) / max(abs(a[c][i]), 1e-300))  # (the load is 0 sprung back)
         for c, scale in (("tool_fx", load), ("lower_fx", load), ("hold_moment", load * RO)):
             worst = max(worst, abs(sign * b[c][j] - a[c][i]) / scale)
     return worst
@@ -300,13 +301,14 @@ k.check(same and worst <= 1e-12, f"H. continued from a checkpoint in the second 
 # I. A second pass's die off the axis: the first pass's press.
 later, text = history("offset_later.h5"), procs["offset_later"].stdout
 starts = [float(b) for b in re.findall(r"pass2-\S+ starts at U = [0-9.e+-]+ mm, ([0-9.e+-]+) mm back", text)]
-k.check(np.all(later["n_plastic"][later["stage"] == 0] == 0) and len(starts) == 2 and max(starts) <= 1e-4,
+# (a die the round tube's zero already touches prints no line: 0 back)
+k.check(np.all(later["n_plastic"][later["stage"] == 0] == 0) and max(starts, default=0.0) <= 1e-4,
         f"I. after an elastic first pass the second pass's dies start {starts} mm back from its zero (1e-4)")
 worst = 0.0
 for a_stage, b_stage in ((0, 2), (1, 3)):
     i, j = np.where(short["stage"] == a_stage)[0][-1], np.where(later["stage"] == b_stage)[0][-1]
     load = abs(short["load"][np.where(short["stage"] == 0)[0][-1]])
-    for c in ("load", "x_max", "y_max"):
+    for c in ("load", "x_max", "y_max") if a_stage == 0 else ("x_max", "y_max"):  # (the load is 0 sprung back)
         worst = max(worst, abs(later[c][j] - short[c][i]) / abs(short[c][i]))
     for c, scale in (("tool_fx", load), ("lower_fx", load), ("hold_moment", load * RO)):
         worst = max(worst, abs(later[c][j] - short[c][i]) / scale)

@@ -159,14 +159,13 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
     tools.push_back(lower);
   }
   if (!dies.side.Is(DieFrom::None))
-    PetscCall(AddSideDies(comm, opt, dies.side, pass > 0 ? PassOption(pass, "side_die").c_str() : "-side_die", squaring,
-                          right_half, part, tools));
+    PetscCall(
+      AddSideDies(comm, opt, dies.side, OptionOfPass(pass, "side_die").c_str(), squaring, right_half, part, tools));
   // Its upper die's own motion (a path, a force: the first pass's -die_motion, a later one's), after the stroke its
   // lower die's motion gives it.
-  PetscCall(
-    SetUpperMotion(comm, pass > 0 ? PassOption(pass, "die_motion").c_str() : "-die_motion", dies.motion, tools[0]));
+  PetscCall(SetUpperMotion(comm, OptionOfPass(pass, "die_motion").c_str(), dies.motion, tools[0]));
   // Its upper die off its press's axis (-die_offset, -pass<N>_die_offset): where it starts along its motion,
-  // StartOnTube.
+  // PressScene::PassTools (StartOffAxis).
   if (dies.offset != 0) tools[0] = Shifted(tools[0], {dies.offset, 0});
   // A later pass's dies by their own names (errors, and their outlines in the results): pass2-, pass3-, ...
   if (pass > 0)

@@ -93,7 +93,7 @@ PetscErrorCode SetUpperMotion(MPI_Comm comm, const char *option, const DieMotion
 
 PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, int pass, size_t first_side, std::vector<Tool> &tools)
 {
-  const std::string option = pass > 0 ? PassOption(pass, "side_force") : "-side_force";
+  const std::string option = OptionOfPass(pass, "side_force");
   PetscFunctionBeginUser;
   for (size_t k = first_side; DiesOfPass(opt, pass).side_force > 0 && k < tools.size(); ++k) {
     MotionSpec spec;

@@ -283,9 +283,9 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
   for (size_t k = 0; k < tools.size() && k < p.start_back.size(); ++k) {
     tools[k] = MovedBack(tools[k], p.start_back[k]);
     const Vec2 d = tools[k].Direction();
-    if (d[0] != 0 || d[1] != 0) p.back = std::min(p.back, p.start_back[k]);
+    if ((d[0] != 0 || d[1] != 0) && !tools[k].Unknown()) p.back = std::min(p.back, p.start_back[k]);
   }
-  if (p.back == kNever) p.back = 0; // (no die moves)
+  if (p.back == kNever) p.back = 0; // (no die moves by the stroke)
   // By its stroke: straight from where its dies start (on a path of its own: its path; under force: the die's stroke).
   if (!p.dies.motion.OwnPath() && !p.extent.Forced()) p.path = StrokePath({}, p.extent.stroke + p.back);
   p.start = PassStart();

@@ -141,9 +141,9 @@ private:
   // before it).
   double Stroke(Model &m, double lambda) const;
   // How far back the later pass's dies start to touch the tube where the pass before left it (PassDies; 0 before
-  // they are set up): the least any die that moves is moved back (they travel together until the one furthest
-  // along is at its -pass<N>_stroke: no die passes it, and in a press symmetric top to bottom every die ends
-  // there), and the upper die's.
+  // they are set up): the least any die that moves by the stroke (not by a force) is moved back (they travel together
+  // until the one furthest along is at its -pass<N>_stroke: no die passes it, and in a press symmetric top to bottom
+  // every die ends there), and the upper die's.
   double StartBack() const { return passes_[pass_].back; }
   // (in U: a path of its own moved back along its first piece)
   double UpperBack() const

@@ -52,6 +52,11 @@ inline ToolSceneParams &ToolsOf(Options &opt)
 
 // The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
 std::string PassOption(int pass, const char *what);
+// The same for any pass, the first's without a number: -side_force, -pass2_side_force, ...
+inline std::string OptionOfPass(int pass, const char *what)
+{
+  return pass > 0 ? PassOption(pass, what) : std::string("-") + what;
+}
 
 // The first pass (-stroke, -die_*, -lower_die, -side_die) and its dies as given; pass `pass` (1 the second, ...) of
 // the passes after it: its -pass<pass + 1>_* options.

@@ -138,8 +138,8 @@ PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 PetscErrorCode CheckSideForce(MPI_Comm comm, const Options &opt, int pass)
 {
   const double force = ToolsOf(opt).passes[pass].dies.side_force;
-  const std::string name = pass > 0 ? PassOption(pass, "side_force") : "-side_force";
-  const std::string side = pass > 0 ? PassOption(pass, "side_die") + " (or -side_die)" : "-side_die";
+  const std::string name = OptionOfPass(pass, "side_force");
+  const std::string side = OptionOfPass(pass, "side_die") + (pass > 0 ? " (or -side_die)" : "");
   PetscFunctionBeginUser;
   PetscCheck(force >= 0 && std::isfinite(force), comm, PETSC_ERR_USER_INPUT,
              "%s %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",

@@ -1,7 +1,7 @@
-// The model's options: read into ToolSceneParams::model (in the block "tube model and passes" of -help) and checked,
-// one line naming the option: the part of the tube modelled, the first pass's die off the axis (which only the full
-// model takes), and how the full model is held (the model they and the passes' tools choose: ModelOf,
-// scenes/options/model_choice.cpp).
+// The model's options: read into ToolSceneParams::model, the first pass's die off the axis into its dies (in the block
+// "tube model and passes" of -help) and checked, one line naming the option: the part of the tube modelled, a die
+// off the axis (which only the full model takes), and how the full model is held (the model they and the passes' tools
+// choose: ModelOf, scenes/options/model_choice.cpp).
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -27,7 +27,7 @@ PetscErrorCode ReadModelOptions(PetscOptionItems *PetscOptionsObject, OptionRead
                "the full model's support: pins (the x of its outer nodes on the y axis), rotation (a couple "
                "on its inner nodes there holds its rotation alone, the dies its slide; docs/dies.md), auto "
                "(rotation where the pins would hold the tube's slide against the dies: with -die_offset or a sideways "
-               "-die_path and a second pass after it, and in a "
+               "-die_path and a second pass after it, in a pass with -pass<N>_die_offset and after it, and in a "
                "quarter-turned second pass after a first pass not mirrored top to bottom, and in one turned by "
                "another angle; else pins)",
                kFullHoldWords, m.full_hold));
@@ -73,11 +73,11 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
     const PassExtent e = Extent(opt, pass);
     held = held || model.HeldByRotation(pass);
     if (e.Forced()) forced = e.Option();
-    if (ToolsOf(opt).passes[pass].dies.side_force != 0)
-      side = pass > 0 ? PassOption(pass, "side_force") : "-side_force";
+    if (ToolsOf(opt).passes[pass].dies.side_force != 0) side = OptionOfPass(pass, "side_force");
   }
   PetscCheck(!held || (forced.empty() && side.empty()), comm, PETSC_ERR_USER_INPUT,
-             "the rotation hold (-full_hold, -die_offset, -die_path): not with %s or %s (one force-controlled "
+             "the rotation hold (-full_hold; a die off the axis: -die_offset, -pass<N>_die_offset, -die_path; a turn "
+             "off the quarters) in some pass: not with %s or %s in any pass (one force-controlled "
              "unknown in an increment)",
              forced.empty() ? "-die_force" : forced.c_str(), side.empty() ? "-side_force" : side.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -38,9 +38,9 @@ PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader
                       "says; docs/dies.md)",
                       pass.dies.offset));
   PetscCall(read.Real(PetscOptionsObject, "-pass2_side_force",
-                      "squaring: the second pass's side dies pressing with this force (N/mm, on the whole tube) over "
-                      "its press, their travel an unknown of each increment (default 0: by the stroke, whatever "
-                      "-side_force says)",
+                      "squaring: the second pass's side dies pressing with a force rising from 0 to this (N/mm, on "
+                      "the whole tube) over its press, their travel an unknown of each increment (default 0: by the "
+                      "stroke, whatever -side_force says; docs/dies.md)",
                       pass.dies.side_force));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -9,7 +9,8 @@
 
 namespace tf {
 
-// Side dies (`name`: -side_die, -pass<N>_side_die): none, or with what side dies press with.
+// Side dies (`name`: -side_die, -pass<N>_side_die): none, or with what side dies go with (not an upper die pressed
+// by a force, not withdrawn dies).
 PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side)
 {
   const std::string value = ShapeWord(side);
@@ -17,7 +18,8 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
   if (side.Is(DieFrom::None)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
   PetscCheck(!AnyPassForced(opt) && opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
-             "%s %s: side dies press by the stroke: not with -die_force, -pass<N>_die_force or -unload withdraw",
+             "%s %s: side dies are not with -die_force, -pass<N>_die_force or -unload withdraw (by the stroke or "
+             "by -side_force, -pass<N>_side_force, they hold the tube against the upper die's stroke)",
              name.c_str(), value.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
