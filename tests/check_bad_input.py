@@ -119,8 +119,10 @@ cases = [
     (["-scene", "squaring", "-pass2_side_die", "flat"], "give -pass2_stroke"),
     (["-scene", "squaring", "-side_force", "20"], "need the pass's side dies, -side_die"),
     (["-scene", "squaring", "-side_die", "flat", "-side_force", "-1"], "-side_force -1"),
-    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_force", "20"],
-     "force-controlled side dies need the pass's side dies, -pass2_side_die (or -side_die)"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_force", "20"], "dies, -pass2_side_die (or -side_die)"),
+    (["-scene", "squaring", "-side_die", "flat", "-die_offset", "0.5"], "side dies in the first pass, whose two sides"),
+    (["-scene", "squaring", "-lower_die", "flat", "-pass2_stroke", "2", "-pass2_side_die", "flat", "-pass2_turn", "90"],
+     "-pass2_side_die flat: side dies in the second pass, whose two sides of the tube differ"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_die", "flat", "-pass2_side_force", "-3"], "-3"),
     (["-scene", "squaring", "-pass2_side_force", "20"], "-pass2_side_force: give -pass2_stroke"),
     (["-scene", "squaring", "-side_die", "flat", "-pass2_stroke", "2", "-pass2_side_force", "20", "-pass2_turn", "45"],
@@ -139,8 +141,7 @@ cases = [
     (["-scene", "squaring", "-pass2_die_offset", "0.5"], "-pass2_die_offset, -pass2_side_force: give -pass2_stroke"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "inf"], "-pass2_die_offset inf"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "0.5", "-model", "half"], "0.5: a die off"),
-    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "0.5", "-full_hold", "pins"],
-     "-pass2_die_offset 0.5 with -full_hold pins"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "0.5", "-full_hold", "pins"], "with -full_hold pins"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass3_stroke", "2", "-pass3_die_offset", "0.5", "-model",
       "quarter"], "-pass3_die_offset 0.5: a die off the axis"),
     (["-scene", "flattening", "-pass2_stroke", "2", "-pass2_die_offset", "0.5"], "-pass2_die_offset 0.5: the squaring"),
@@ -299,7 +300,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 169 and len(selected) == 10, f"{len(cases)} cases on 1 rank (169), {len(selected)} on 2 (10)")
+k.check(len(cases) == 171 and len(selected) == 10, f"{len(cases)} cases on 1 rank (171), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

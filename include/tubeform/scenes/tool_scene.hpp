@@ -220,6 +220,14 @@ struct ModelChoice {
   // turns from an earlier pass not symmetric about its press's x axis (a lower die that does not mirror the upper
   // one).
   bool HeldByRotation(int pass) const;
+  // The tube in pass `pass`'s press is not mirrored about the press's y axis (what makes the auto hold the rotation
+  // hold): a die off the axis in it or before it, a turn that is no quarter turn, an odd number of quarter turns from
+  // an earlier pass not mirrored top to bottom.
+  bool OffSymmetry(int pass) const;
+  // Pass `pass`'s two side dies meet the tube alike (their forces equal, which the run reports and counts as one):
+  // the tube mirrored about the press's y axis, or the same under a half turn (every pass up to it mirrored top to
+  // bottom, no die off the axis).
+  bool SidesAlike(int pass) const;
 };
 // The model the options and the passes' tools choose (model_options.cpp).
 ModelChoice ModelOf(const Options &opt);

@@ -26,13 +26,25 @@ bool ModelChoice::HalfExact() const
   return exact;
 }
 
-bool ModelChoice::HeldByRotation(int pass) const
+bool ModelChoice::OffSymmetry(int pass) const
 {
   const PassSymmetry &p = passes[pass];
-  bool off_axis = p.off_axis || !p.quarter_turn;
+  bool off = p.off_axis || !p.quarter_turn;
   for (int before = 0; before < pass; ++before)
-    off_axis = off_axis || ((p.quarters - passes[before].quarters) % 2 != 0 && !passes[before].mirrored);
-  return part == TubeModel::Full && (hold == FullHold::Rotation || (hold == FullHold::Auto && off_axis));
+    off = off || ((p.quarters - passes[before].quarters) % 2 != 0 && !passes[before].mirrored);
+  return off;
+}
+
+bool ModelChoice::SidesAlike(int pass) const
+{
+  bool half_turn = !passes[pass].off_axis;
+  for (int k = 0; k <= pass; ++k) half_turn = half_turn && passes[k].mirrored;
+  return !OffSymmetry(pass) || half_turn;
+}
+
+bool ModelChoice::HeldByRotation(int pass) const
+{
+  return part == TubeModel::Full && (hold == FullHold::Rotation || (hold == FullHold::Auto && OffSymmetry(pass)));
 }
 
 ModelChoice ModelOf(const Options &opt)
