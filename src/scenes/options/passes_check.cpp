@@ -10,7 +10,7 @@
 namespace tf {
 
 // Side dies (`name`: -side_die, -pass<N>_side_die): none, or with what side dies go with (not an upper die pressed
-// by a force, not withdrawn dies).
+// by a force, not withdrawn dies, not where the tube's two sides differ).
 PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side)
 {
   const std::string value = ShapeWord(side);
@@ -25,8 +25,8 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::strin
                "and the run reports and counts one for both",
                name.c_str(), value.c_str(), PassOrdinal(pass).c_str());
   PetscCheck(!AnyPassForced(opt) && opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
-             "%s %s: side dies are not with -die_force, -pass<N>_die_force or -unload withdraw (by the stroke or "
-             "by -side_force, -pass<N>_side_force, they hold the tube against the upper die's stroke)",
+             "%s %s: side dies are not with -die_force or -pass<N>_die_force (one force-controlled motion at a "
+             "time), nor with -unload withdraw",
              name.c_str(), value.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
