@@ -38,6 +38,7 @@ PetscErrorCode ContactSet::Remove()
   std::fill(pending_.begin(), pending_.end(), Vec2{0, 0}); // the scene has taken them over with the contact forces
   removed_ = !walls;
   dies_removed_ = true;
+  pad_step_ = 0; // (no longer the system's unknown, has_pad: the force-controlled die stays where the press left it)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -306,9 +307,8 @@ PetscErrorCode ContactSet::Commit(Vec du, double dU, double r, ContactCommit &re
   PetscCall(PetscLogEventBegin(Log::contact, 0, 0, 0, 0));
   pad_step_ *= r; // (the force-controlled tool's motion in the solution, scaled as du was)
   PetscCall(CommitForces(du, dU, r, report));
-  // The tools have moved by dU with the increment (a force-controlled one by its own step); removed, they stay where
-  // the press left them (a force-controlled one's step then answers no contact: the reversed loads' springback).
-  for (int k = 0; k < (int)tools_.size() && !(dies_removed_ && k < num_dies_); ++k) tools_[k].stroke += Step(k, dU);
+  // The tools have moved by dU with the increment (a force-controlled one by its own step).
+  for (int k = 0; k < (int)tools_.size(); ++k) tools_[k].stroke += Step(k, dU);
   PetscCall(TakeMovedFrames(report));
   PetscCall(PetscLogEventEnd(Log::contact, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);

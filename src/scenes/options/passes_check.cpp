@@ -10,20 +10,13 @@
 namespace tf {
 
 // Side dies (`name`: -side_die, -pass<N>_side_die): none, or with what side dies go with (not an upper die pressed
-// by a force, not withdrawn dies, not where the tube's two sides differ).
+// by a force, not withdrawn dies; where the tube's sides differ: CheckSideDieOptions).
 PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side)
 {
   const std::string value = ShapeWord(side);
   PetscFunctionBeginUser;
   if (side.Is(DieFrom::None)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
-  for (int pass = 0; pass < PassCount(opt); ++pass) // (the side dies of every pass that has them: the first's too)
-    PetscCheck(DiesOfPass(opt, pass).side.Is(DieFrom::None) || ModelOf(opt).SidesAlike(pass), comm,
-               PETSC_ERR_USER_INPUT,
-               "%s %s: side dies in the %s pass, whose two sides of the tube differ (a die off the axis in it or "
-               "before it; a turn that brings a pass not mirrored top to bottom to the sides): their forces differ, "
-               "and the run reports and counts one for both",
-               name.c_str(), value.c_str(), PassOrdinal(pass).c_str());
   PetscCheck(!AnyPassForced(opt) && opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
              "%s %s: side dies are not with -die_force or -pass<N>_die_force (one force-controlled motion at a "
              "time), nor with -unload withdraw",
