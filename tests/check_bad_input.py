@@ -98,7 +98,15 @@ cases = [
     (["-scene", "squaring", "-lower_die", "none"], "-lower_die none: cannot read the file"),
     (["-lower_die_motion", "up"], "-lower_die_motion"),
     (["-springback", "plastic"], "-springback"),
-    (["-scene", "squaring", "-pass2_stroke", "2", "-unload", "withdraw"], "-pass2_stroke"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-unload", "none"], "give -unload reverse or withdraw"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_unload", "none", "-pass3_stroke", "3"],
+     "give -pass2_unload reverse or withdraw"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_unload", "out"], "-pass2_unload"),
+    (["-scene", "squaring", "-pass2_unload", "none"], "give -pass2_stroke"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_unload", "withdraw", "-pass2_lower_die", "flat"],
+     "-pass2_unload withdraw: not with the half model"),
+    (["-scene", "squaring", "-side_die", "flat", "-pass2_stroke", "2", "-pass2_unload", "withdraw"],
+     "-side_die flat: side dies are not"),
     (["-scene", "squaring", "-pass2_lower_die", "flat"], "give -pass2_stroke"),
     (["-lower_die", "flat"], "presses with no dies"),  # the base case is the pressure scene
     (["-scene", "squaring", "-pass2_stroke", "9"], "-pass2_stroke 9"),  # past the closed cavity
@@ -107,7 +115,7 @@ cases = [
     (["-scene", "squaring", "-die_force", "-5"], "-die_force -5"),
     (["-die_force", "100"], "presses with no dies"),
     (["-scene", "squaring", "-die_force", "100", "-model", "half"], "-lower_die_motion fixed"),
-    (["-scene", "squaring", "-die_force", "100", "-pass2_stroke", "2", "-unload", "none"], "follows the paper's springback"),
+    (["-scene", "squaring", "-die_force", "100", "-pass2_stroke", "2", "-unload", "none"], "follows the first pass's release"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "400"], "the tube turns by -360 to 360 degrees"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "45", "-model", "half"], "needs the full model"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "45", "-full_hold", "pins"], "needs the full model"),
@@ -124,7 +132,7 @@ cases = [
     (["-scene", "squaring", "-lower_die", "flat", "-pass2_stroke", "2", "-pass2_side_die", "flat", "-pass2_turn", "90"],
      "-pass2_side_die flat: side dies in the second pass, whose two sides of the tube differ"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_die", "flat", "-pass2_side_force", "-3"], "-3"),
-    (["-scene", "squaring", "-pass2_side_force", "20"], "-pass2_side_force: give -pass2_stroke"),
+    (["-scene", "squaring", "-pass2_side_force", "20"], "-pass2_side_force, -pass2_unload: give -pass2_stroke"),
     (["-scene", "squaring", "-side_die", "flat", "-pass2_stroke", "2", "-pass2_side_force", "20", "-pass2_turn", "45"],
      "not with -die_force or -pass2_side_force in any pass"),
     (["-scene", "squaring", "-die_offset", "0.5", "-model", "half"], "-die_offset 0.5: a die off the axis"),
@@ -138,7 +146,7 @@ cases = [
      "in some pass: not with -pass2_die_force"),
     (["-scene", "tension", "-die_offset", "0.5"], "presses with no dies"),
     (["-scene", "flattening", "-die_offset", "0.5"], "-die_offset 0.5: the squaring scene's die"),
-    (["-scene", "squaring", "-pass2_die_offset", "0.5"], "-pass2_die_offset, -pass2_side_force: give -pass2_stroke"),
+    (["-scene", "squaring", "-pass2_die_offset", "0.5"], "-pass2_die_offset, -pass2_side_force, -pass2_unload: give"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "inf"], "-pass2_die_offset inf"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "0.5", "-model", "half"], "0.5: a die off"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "0.5", "-full_hold", "pins"], "with -full_hold pins"),
@@ -300,7 +308,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 171 and len(selected) == 10, f"{len(cases)} cases on 1 rank (171), {len(selected)} on 2 (10)")
+k.check(len(cases) == 176 and len(selected) == 10, f"{len(cases)} cases on 1 rank (176), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

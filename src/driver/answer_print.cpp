@@ -108,7 +108,7 @@ PetscErrorCode PrintPass(MPI_Comm comm, const Answer &a, size_t p)
   if (!a.tool) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscPrintf(comm, "tubeform: %sloaded: %s\n", pass.c_str(), Shape(s.loaded, nullptr).c_str()));
   if (s.springback)
-    PetscCall(PetscPrintf(comm, "tubeform: %safter springback (%s): %s\n", pass.c_str(), a.release.c_str(),
+    PetscCall(PetscPrintf(comm, "tubeform: %safter springback (%s): %s\n", pass.c_str(), s.release.c_str(),
                           Shape(s.unloaded, &s.loaded).c_str()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

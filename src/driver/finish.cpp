@@ -97,8 +97,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     TakePassStarts(scene_metrics, a);
     a.mesh_covered = opt_.mesh_file.empty();
     HoldTo(opt_.accuracy, a);
-    a.release =
-      opt_.release.unload == Unload::Withdraw ? "the dies withdrawn" : "the contact forces reversed, the dies removed";
+    for (size_t p = 0; p < a.passes.size(); ++p) a.passes[p].release = scene_->ReleaseOf((int)p);
     return a;
   };
   Answer answer = summarize(nullptr);

@@ -48,7 +48,7 @@ PressScene::PressScene(const Options &opt, bool squaring)
     Pass &p = passes_[k];
     p.extent = ExtentOf(ToolsOf(opt).passes[k], k, k == 0 ? stroke_ : LaterPass(opt, k).stroke);
     p.turn = PassTurn(opt, k, part_);
-    p.dies = DiesOfPass(opt, k), p.reach = DieReach(opt, p.dies, squaring);
+    p.dies = DiesOfPass(opt, k), p.reach = DieReach(opt, p.dies, squaring), p.release = ReleaseOfPass(opt, k);
     p.held = model.HeldByRotation(k), p.side_dies = !p.dies.side.Is(DieFrom::None);
     if (k > 0 && p.dies.motion.OwnPath()) { // (its own path: -pass<N>_die_path)
       const ToolPath own = MotionPathOf(p.dies.motion.kind, p.dies.motion.spec);
@@ -63,24 +63,30 @@ LoadPath PressScene::Path(const Options &opt) const
   const StrokePath &path = passes_[0].path;
   const double t = path.travel() / opt.driver.punch_speed;                 // (the press's duration)
   std::vector<double> kinks = path.Kinks(PressKinks(opt_, path.travel())); // (where the dies' motions turn)
-  if (passes_.size() == 1)
-    return {opt_.release.unload == Unload::None ? kFirstRelease : kFirstRelease + 1, t, {kFirstRelease}, kinks};
+  // (the last pass released, or not: -unload none, -pass<N>_unload none)
+  const size_t end = 2 * passes_.size() - (passes_.back().release == Unload::None ? 1 : 0);
+  if (passes_.size() == 1) return {(double)end, t, {kFirstRelease}, kinks};
   std::vector<double> stages; // (where each stage after the first begins)
-  for (size_t k = 1; k < 2 * passes_.size(); ++k) stages.push_back((double)k);
+  for (size_t k = 1; k < end; ++k) stages.push_back((double)k);
   for (size_t k = 1; k < passes_.size(); ++k) { // (a later pass's upper die on its own path: its points)
     const StrokePath &own = passes_[k].path;
     for (double f : own.Kinks(UpperKinks(passes_[k].dies.motion, own.travel()))) kinks.push_back(PressStage(k) + f);
   }
-  return {2.0 * passes_.size(), t, stages, kinks};
+  return {(double)end, t, stages, kinks};
 }
 
 double PressScene::ToolStroke(double lambda) const
 {
   if (passes_[pass_].extent.Forced()) return 0.0; // (the force-controlled die keeps its own stroke; a lower one stays)
   const StrokePath &path = passes_[pass_].path;
-  if (pass_ > 0) return path.Stroke(PassExtent::Ramp(lambda, PressStage(pass_)));
+  const double released = lambda - PressStage((int)pass_) - 1.0; // (> 0: in its release, up to its end)
+  const bool withdraw = passes_[pass_].release == Unload::Withdraw && released > 0;
+  if (pass_ > 0) { // (withdrawn: back along its way to where its dies started)
+    const double end = path.Stroke(1.0);
+    return withdraw ? end - released * end : path.Stroke(PassExtent::Ramp(lambda, PressStage(pass_)));
+  }
   if (lambda <= 1.0) return path.Stroke(lambda);
-  return opt_.release.unload == Unload::Withdraw ? stroke_ - (lambda - 1.0) * back_ : path.Stroke(1.0);
+  return withdraw ? stroke_ - (lambda - 1.0) * back_ : path.Stroke(1.0);
 }
 
 double PressScene::ToolForce(double lambda) const
@@ -132,11 +138,14 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
 PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
 {
   PetscFunctionBeginUser;
-  const bool elastic = ElasticRelease(opt_);
-  if (opt_.release.unload == Unload::Withdraw) m.body.BeginRelease(elastic, false);
-  if (opt_.release.unload != Unload::Reverse) PetscFunctionReturn(PETSC_SUCCESS);
   if (!Unloading(lambda)) { // (the next pass)
     PetscCall(StartPass(m));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  const Unload release = passes_[pass_].release;
+  const bool elastic = ElasticRelease(opt_, release);
+  if (release == Unload::Withdraw) { // (the dies go back along their way: ToolStroke; the nodes leave them by r5)
+    m.body.BeginRelease(elastic, false);
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   if (!m.quiet) PetscCall(WarnUntouched(m.comm, *m.contact, pass_, passes_[pass_].extent.stroke));
@@ -170,6 +179,7 @@ PetscErrorCode PressScene::StartPass(Model &m)
   // (the side dies' travel goes on from where the pass before left it: through its press and its backing off, or
   // their own travel where a force drove them; the contact set keeps the pass's tools until its next are set up)
   const Pass &before = passes_[pass_];
+  if (before.release == Unload::Withdraw) PetscCall(CheckWithdrawn(m, next));
   const double travel =
     before.dies.side_force > 0 ? m.contact->tool(SideDie()).stroke : before.extent.stroke + before.back;
   if (next > 1 || before.dies.side_force > 0) passes_[next].side_from = before.side_from + travel;
@@ -201,6 +211,20 @@ PetscErrorCode PressScene::StartPass(Model &m)
   PetscCall(m.contact->Setup(m.mesh, m.system, m.body.position(), spec));
   m.contact->SetStroke(0.0);
   PetscCall(m.contact->Initialize());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode PressScene::CheckWithdrawn(Model &m, int next) const
+{
+  double force[2];
+  PetscFunctionBeginUser;
+  PetscCall(m.contact->TotalForce(kUpper, force, nullptr));
+  const double load = LoadPerModelForce() * std::hypot(force[0], force[1]);
+  PetscCheck(load <= kWithdrawnLoad * hold_.largest_load(), m.comm, PETSC_ERR_USER_INPUT,
+             "%s %s: the %s pass's dies, withdrawn to where they started, still press the tube with %g N/mm (it "
+             "reaches past their start); let it go by %s reverse",
+             OptionOfPass(next - 1, "unload").c_str(), WordOf(kUnloadWords, Unload::Withdraw),
+             PassOrdinal(next - 1).c_str(), load, OptionOfPass(next - 1, "unload").c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -55,7 +55,9 @@ std::string CheckForceInPress(const MotionSpec &spec, const MotionPress &press)
   if (!press.quarter && !press.lower_stays)
     return name + ": with the half or full model the lower die must stay (-lower_die_motion fixed); a lower die "
                   "moving by the upper one's unknown stroke is not available";
-  if (press.withdraw) return name + ": -unload withdraw moves the die back by its stroke; use -unload reverse or none";
+  const std::string unload = press.pass == 0 ? "-unload" : Formatted("-pass%d_unload", press.pass + 1);
+  if (press.withdraw)
+    return name + ": " + unload + " withdraw moves the die back by its stroke; use " + unload + " reverse or none";
   if (press.stroke_given)
     return name + ": in place of " + stroke +
            " (the pass ends at that punch load, its stroke the outcome); give one "

@@ -60,6 +60,7 @@ struct ErrorParts {
 // One pass: its loading's end, curve and shapes, and their estimated errors.
 struct PassAnswer {
   bool springback = false; // the run went on past the pass's end of loading
+  std::string release;     // what released the tube (a tool scene's springback: Scene::ReleaseOf)
   double start = 0;        // the stroke (die position) the pass's loading starts from
   double stroke = 0;       // at the end of loading
   double load = 0;
@@ -80,7 +81,6 @@ struct PassAnswer {
 struct Answer {
   bool tool = false;                                 // a tool scene: C/t, C1/C2 and springback mean something
   std::string stroke_name = "U", load_unit = "N/mm"; // the scene's, for the printed summary
-  std::string release;                               // what released the tube (a tool scene's springback)
   std::vector<PassAnswer> passes;                    // one, or each of a press's passes
   // The largest estimated errors over the passes (estimated: any pass has an estimate). With a mesh file the
   // companion keeps the mesh: the estimate then covers the increments alone (mesh_covered false).

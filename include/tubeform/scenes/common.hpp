@@ -32,12 +32,12 @@ inline double SideDiesInModel(TubePart part)
 {
   return part == TubePart::Full ? 2.0 : part == TubePart::Half ? 1.0 : 0.5;
 }
-// Whether a press's springback is elastic: -springback elastic, or auto under -unload reverse (the paper's: its
-// dead loads can drive a thin wall into a collapse by the material's law; docs/theory.md, "Unloading").
-inline bool ElasticRelease(const Options &opt)
+// Whether a pass's springback by `release` is elastic: -springback elastic, or auto under the paper's release, reverse
+// (its dead loads can drive a thin wall into a collapse by the material's law; docs/theory.md, "Unloading").
+inline bool ElasticRelease(const Options &opt, Unload release)
 {
   return opt.release.springback == Springback::Elastic ||
-         (opt.release.springback == Springback::Auto && opt.release.unload == Unload::Reverse);
+         (opt.release.springback == Springback::Auto && release == Unload::Reverse);
 }
 // C1 = x_max, C2 = y_max of the outer surface (the half model's C2 half its height, the full model's C1 half
 // its width) and their ratio. A pass that turned the tube measures in its press's frame: `press` maps the

@@ -63,6 +63,7 @@ public:
   PetscErrorCode FreeSlide(Model &m, double stroke);
   // Every history row's load: the warning's floor follows the largest so far.
   void SeeLoad(double load) { largest_load_ = std::max(largest_load_, std::abs(load)); }
+  double largest_load() const { return largest_load_; }
   // Collective: the warning's state (a restart warns as the run it continues would).
   PetscErrorCode Persist(Archive &ar)
   {

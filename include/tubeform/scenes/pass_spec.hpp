@@ -6,9 +6,11 @@
 
 #include <cstddef>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "tubeform/io/press_params.hpp"
 #include "tubeform/tool/motion.hpp"
 #include "tubeform/tool/shape.hpp"
 
@@ -130,14 +132,16 @@ struct DieSet {
 };
 
 // A pass of the press (ToolSceneParams::passes: the first, then each after the springback of the one before): its
-// stroke, its turn and its dies, read under the pass's prefix (the first's -die_*, -lower_die, -side_die; a later one's
-// -pass<N>_*). A later pass's shapes where given, each chosen as the first pass's is (DrawingChoice, ShapeChoice),
-// else unset (an upper die of kind "", a lower or side die Unset: the first pass's, DiesOfPass).
+// stroke, its turn, its dies and its release, read under the pass's prefix (the first's -die_*, -lower_die, -side_die;
+// a later one's -pass<N>_*). A later pass's shapes where given, each chosen as the first pass's is (DrawingChoice,
+// ShapeChoice), else unset (an upper die of kind "", a lower or side die Unset: the first pass's, DiesOfPass).
 struct PassSpec {
   double stroke = 0; // where its upper die ends (mm, from the same zero as -stroke; 0: no such pass, or one pressed
                      // by a force: PassExtent); the first pass's is -stroke (Options::stroke), 0 here
   double turn = 0;   // the tube turned counter-clockwise before it (degrees, from the pass before's press; 0 the first)
   DieSet dies;       // its dies; its upper die's motion by the stroke, or a path of its own (ReadPassMotions)
+  std::optional<Unload> release; // how it lets the tube go after its press (-pass<N>_unload; unset: the first
+                                 // pass's -unload, Options::release; ReleaseOfPass)
 };
 // The passes before any option is read: the first with the default dies, the later ones with none given (unset).
 inline std::vector<PassSpec> DefaultPasses()

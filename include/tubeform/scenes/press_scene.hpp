@@ -43,7 +43,7 @@ public:
   // die. The reversed loads of the paper's unloading do no work along the stroke.
   double LoadWorkShare(double lambda) const override
   {
-    if (Unloading(lambda) && opt_.release.unload == Unload::Reverse) return 0.0;
+    if (Unloading(lambda) && passes_[pass_].release == Unload::Reverse) return 0.0;
     return WholeTube(part_) ? 2.0 : BothDies(part_) ? 1.0 : 0.5;
   }
   // Each die's force over its own travel (scenes/common.cpp); a later pass's dies from where they start.
@@ -61,6 +61,11 @@ public:
   PetscErrorCode ExternalForce(Model &m, double lambda, Vec f) override;
   PetscErrorCode Measure(Model &m, double lambda, Vec f_int, HistoryRow &row) override;
   std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const override;
+  std::string ReleaseOf(int pass) const override
+  {
+    return passes_[pass].release == Unload::Withdraw ? "the dies withdrawn"
+                                                     : "the contact forces reversed, the dies removed";
+  }
   PetscErrorCode Persist(Model &m, Archive &ar) override;
   ~PressScene() override { (void)VecDestroy(&reversed_.forces); }
 
@@ -70,6 +75,11 @@ private:
   static constexpr double kVcriOfSpacing = 0.02;
   // Where the first pass's release begins (lambda): each pass takes one unit of it to press and one to release.
   static constexpr double kFirstRelease = 1.0;
+  // The load the withdrawn dies may still carry before the next pass (their contact set then goes), over the largest
+  // load so far: a node that touched at the start, back there after an elastic press, keeps the equilibrium
+  // iterations' residual (1e-4-2e-4 of it, 0.02 mm on the paper's tube); a die the tube reaches past carries a share
+  // of the press's load, and one released by the withdrawal none.
+  static constexpr double kWithdrawnLoad = 1e-2;
   // The tools' places in the contact set.
   static constexpr int kUpper = 0, kLower = 1;
   // The right side die's place (-side_die): after the lower die of the half and full models.
@@ -80,21 +90,22 @@ private:
   // A pass: how far it presses, its turn, its dies, its upper die's way, its hold, its side dies and (a later pass)
   // where its dies start; the scene's passes are a list of them, built once from the options.
   struct Pass {
-    PassExtent extent;              // its stroke or force (the first pass's stroke: stroke_; scenes/pass_extent.hpp)
-    TurnMap turn;                   // draws its dies, built in its press's frame, into the tube's (PassTurn)
-    StrokePath path;                // its stroke over its press: the first pass's -stroke_path or -die_path; a later
-                                    // one's straight by its stroke from where its dies start (PassDies), or its
-                                    // upper die's path of its own (-pass<N>_die_path)
-    double rise = 1;                // U per unit of its upper die's start_back: 1 by the stroke; on a path of its
-                                    // own, -y / 2 per unit stroke along its first piece
-    DieSet dies;                    // its dies (DiesOfPass: the upper one's shape and motion, lower, side)
-    double reach = kNever;          // where they close on the tube (DieReach; pressed by a force: CheckForceReach)
-    bool held = false;              // the full model's pass held by the rotation hold (not its pins) while pressing
-    bool side_dies = false;         // it has side dies (-side_die, -pass<N>_side_die)
-    std::vector<double> start_back; // how far back along its motion each die starts (StartOnTube; a later pass)
-    double back = 0;                // StartBack(), from start_back and the dies' motions (PassDies)
-    double side_from = 0;           // the side dies' travel where it starts (the passes before it, their backs)
-    double start = 0;               // where its upper die starts (PassStart; once its dies are set up)
+    PassExtent extent;                // its stroke or force (the first pass's stroke: stroke_; scenes/pass_extent.hpp)
+    TurnMap turn;                     // draws its dies, built in its press's frame, into the tube's (PassTurn)
+    StrokePath path;                  // its stroke over its press: the first pass's -stroke_path or -die_path; a later
+                                      // one's straight by its stroke from where its dies start (PassDies), or its
+                                      // upper die's path of its own (-pass<N>_die_path)
+    double rise = 1;                  // U per unit of its upper die's start_back: 1 by the stroke; on a path of its
+                                      // own, -y / 2 per unit stroke along its first piece
+    DieSet dies;                      // its dies (DiesOfPass: the upper one's shape and motion, lower, side)
+    Unload release = Unload::Reverse; // how it lets the tube go (ReleaseOfPass: -unload, -pass<N>_unload)
+    double reach = kNever;            // where they close on the tube (DieReach; pressed by a force: CheckForceReach)
+    bool held = false;                // the full model's pass held by the rotation hold (not its pins) while pressing
+    bool side_dies = false;           // it has side dies (-side_die, -pass<N>_side_die)
+    std::vector<double> start_back;   // how far back along its motion each die starts (StartOnTube; a later pass)
+    double back = 0;                  // StartBack(), from start_back and the dies' motions (PassDies)
+    double side_from = 0;             // the side dies' travel where it starts (the passes before it, their backs)
+    double start = 0;                 // where its upper die starts (PassStart; once its dies are set up)
   };
   std::vector<Pass> passes_;
   PetscInt pass_ = 0;  // the pass whose dies are in place
@@ -134,6 +145,8 @@ private:
   PetscErrorCode PassDies(Model &m, std::vector<Tool> &tools, std::vector<std::pair<std::string, Vec2>> &symmetry);
   // Collective: the next pass's dies set up from where they touch the tube the springback left (BeginStage).
   PetscErrorCode StartPass(Model &m);
+  // Collective: the dies of the pass before `next`, withdrawn (-unload withdraw, -pass<N>_unload), carry no load.
+  PetscErrorCode CheckWithdrawn(Model &m, int next) const;
 
   TurnMap PassMap(int pass) const { return passes_[pass].turn; }
   // The history's U at lambda (PassExtent::U): the force-controlled die's own, -die_path's, a later pass's upper

@@ -98,6 +98,8 @@ public:
   // How the run's summary line names `stroke` and the unit of `load` (docs/scenes.md).
   virtual const char *StrokeName() const { return "U"; }
   virtual const char *LoadUnit() const { return "N/mm"; }
+  // How pass `pass` (0 the first) lets the tube go, for the summary's springback line ("" where nothing does).
+  virtual std::string ReleaseOf(int pass) const { return ""; }
   // Scene metrics written as attributes at the end.
   virtual std::vector<std::pair<std::string, double>> FinalMetrics(const History &h) const { return {}; }
 };

@@ -31,8 +31,10 @@ PetscErrorCode CheckPassTurns(MPI_Comm comm, const Options &opt);
 // Collective: a pass's upper die moved off its press's axis by `offset` (`name`: -die_offset, -pass<N>_die_offset): a
 // number of mm, the squaring scene's die (model_options.cpp).
 PetscErrorCode CheckDieOffset(MPI_Comm comm, const Options &opt, const std::string &name, double offset);
-// Collective: side dies (`name`: -side_die, -pass<N>_side_die; none or a shape) go with the other options.
-PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side);
+// Collective: pass `pass`'s side dies (`name`: -side_die, -pass<N>_side_die; none or a shape) go with the other
+// options and the pass's release.
+PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, int pass, const std::string &name,
+                             const DieChoice &side);
 // The passes after the first (-pass<N>_*), between PetscOptionsBegin and PetscOptionsEnd (it needs their
 // PetscOptionsObject).
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt);

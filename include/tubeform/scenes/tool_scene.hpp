@@ -192,6 +192,18 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
 }
 // Pass `pass`'s lower die's word (-lower_die, -pass<N>_lower_die: the first pass's where not given).
 inline std::string PassLowerDie(const Options &opt, int pass) { return ShapeWord(DiesOfPass(opt, pass).lower); }
+// Pass `pass`'s release after its press (-unload, -pass<N>_unload: the first pass's where not given).
+inline Unload ReleaseOfPass(const Options &opt, int pass)
+{
+  return pass > 0 ? LaterPass(opt, pass).release.value_or(opt.release.unload) : opt.release.unload;
+}
+// A pass in the run lets the tube go by `release` (PassCount: the passes given).
+inline bool AnyPassReleases(const Options &opt, Unload release)
+{
+  for (int k = 0; k < PassCount(opt); ++k)
+    if (ReleaseOfPass(opt, k) == release) return true;
+  return false;
+}
 // What the choice of the model reads of a pass's tools (ModelOf; every pass's, given or not: a pass given without
 // its stroke is refused after the model is chosen). Side dies press both sides alike: they choose nothing.
 struct PassSymmetry {

@@ -153,7 +153,7 @@ PetscErrorCode CheckSideForce(MPI_Comm comm, const Options &opt, int pass)
 PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(CheckSideDies(comm, opt, "-side_die", FirstDies(opt).side)); // (passes_check.cpp)
+  PetscCall(CheckSideDies(comm, opt, 0, "-side_die", FirstDies(opt).side)); // (passes_check.cpp)
   PetscCall(CheckSideForce(comm, opt, 0));
   // Every pass's side dies where the tube's two sides meet them alike (the run reports one for both), named by the
   // option that gives them (a later pass's own, or the first pass's it takes).

@@ -4,6 +4,19 @@
 namespace tf {
 
 namespace {
+// A later pass's release (-pass<N>_unload): unset where not given (the first pass's -unload then: ReleaseOfPass).
+PetscErrorCode ReadPassRelease(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name,
+                               const char *help, std::optional<Unload> &release)
+{
+  PetscBool set;
+  Unload value = Unload::Reverse;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, name, &set));
+  PetscCall(ChooseWord(PetscOptionsObject, read, name, help, kUnloadWords, value));
+  if (set) release = value;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 // The second pass: its stroke, dies and turn (the help's text; a later pass's options read by the same names).
 PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, PassSpec &pass)
 {
@@ -42,28 +55,33 @@ PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader
                       "the whole tube) over its press, their travel an unknown of each increment (default 0: by the "
                       "stroke, whatever -side_force says; docs/dies.md)",
                       pass.dies.side_force));
+  PetscCall(ReadPassRelease(PetscOptionsObject, read, "-pass2_unload",
+                            "squaring: how the second pass lets the tube go: reverse, withdraw (the quarter model) "
+                            "or none (the last pass only: the run ends loaded) (default: the first pass's -unload; "
+                            "docs/dies.md)",
+                            pass.release));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 // Pass `number` (3 to kMaxPasses): -pass<number>_stroke, _die_profile, _lower_die, _side_die, _turn, _die_offset,
-// _side_force, as the second pass's. Read (and listed by -help) where one of them is given; named for the hints on a
-// misspelt option always.
+// _side_force, _unload, as the second pass's. Read (and listed by -help) where one of them is given; named for the
+// hints on a misspelt option always.
 PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, int number, PassSpec &pass)
 {
   const std::string pre = "-pass" + std::to_string(number) + "_";
   const std::string stroke = pre + "stroke", profile = pre + "die_profile", lower = pre + "lower_die",
                     side = pre + "side_die", turn = pre + "turn", offset = pre + "die_offset",
-                    side_force = pre + "side_force";
+                    side_force = pre + "side_force", unload = pre + "unload";
   const std::string help = "squaring: pass " + std::to_string(number) + "'s, as -pass2_";
   bool given = false;
   PetscFunctionBeginUser;
-  for (const std::string *name : {&stroke, &profile, &lower, &side, &turn, &offset, &side_force}) {
+  for (const std::string *name : {&stroke, &profile, &lower, &side, &turn, &offset, &side_force, &unload}) {
     PetscBool set;
     PetscCall(PetscOptionsHasName(nullptr, nullptr, name->c_str(), &set));
     given = given || set;
   }
   if (!given) {
-    for (const std::string *name : {&stroke, &profile, &lower, &side, &turn, &offset, &side_force})
+    for (const std::string *name : {&stroke, &profile, &lower, &side, &turn, &offset, &side_force, &unload})
       read.Note(name->c_str(), (help + name->substr(pre.size()) + "'s").c_str(), PetscOptionsObject->title);
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -77,6 +95,7 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
     read.Real(PetscOptionsObject, turn.c_str(), (help + "turn (from the pass before's press)").c_str(), pass.turn));
   PetscCall(read.Real(PetscOptionsObject, offset.c_str(), (help + "die_offset").c_str(), pass.dies.offset));
   PetscCall(read.Real(PetscOptionsObject, side_force.c_str(), (help + "side_force").c_str(), pass.dies.side_force));
+  PetscCall(ReadPassRelease(PetscOptionsObject, read, unload.c_str(), (help + "unload").c_str(), pass.release));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

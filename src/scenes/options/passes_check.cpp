@@ -9,18 +9,19 @@
 
 namespace tf {
 
-// Side dies (`name`: -side_die, -pass<N>_side_die): none, or with what side dies go with (not an upper die pressed
-// by a force, not withdrawn dies; where the tube's sides differ: CheckSideDieOptions).
-PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, const std::string &name, const DieChoice &side)
+// Pass `pass`'s side dies (`name`: -side_die, -pass<N>_side_die): none, or with what side dies go with (not an upper
+// die pressed by a force, not withdrawn dies; where the tube's sides differ: CheckSideDieOptions).
+PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, int pass, const std::string &name,
+                             const DieChoice &side)
 {
   const std::string value = ShapeWord(side);
   PetscFunctionBeginUser;
   if (side.Is(DieFrom::None)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
-  PetscCheck(!AnyPassForced(opt) && opt.release.unload != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
+  PetscCheck(!AnyPassForced(opt) && ReleaseOfPass(opt, pass) != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
              "%s %s: side dies are not with -die_force or -pass<N>_die_force (one force-controlled motion at a "
-             "time), nor with -unload withdraw",
-             name.c_str(), value.c_str());
+             "time), nor with %s withdraw",
+             name.c_str(), value.c_str(), OptionOfPass(pass, "unload").c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -58,19 +59,23 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(p.stroke >= 0 && std::isfinite(p.stroke), comm, PETSC_ERR_USER_INPUT,
              "%s %g: must be non-negative (0: %s)", stroke.c_str(), p.stroke,
              pass == 1 ? "one pass" : ("the " + PassOrdinal(pass - 1) + " pass the last").c_str());
-  PetscCheck(!e.Given() || opt.release.unload == Unload::Reverse, comm, PETSC_ERR_USER_INPUT,
-             "%s %g: a %s pass follows the paper's springback; use -unload reverse (not %s)", given.c_str(), e.Target(),
-             ordinal.c_str(), WordOf(kUnloadWords, opt.release.unload));
+  const Unload before = ReleaseOfPass(opt, pass - 1);
+  PetscCheck(!e.Given() || before != Unload::None, comm, PETSC_ERR_USER_INPUT,
+             "%s %g: a %s pass follows the %s pass's release; give %s reverse or withdraw (not none)", given.c_str(),
+             e.Target(), ordinal.c_str(), PassOrdinal(pass - 1).c_str(), OptionOfPass(pass - 1, "unload").c_str());
   PetscCheck(!e.Given() || pass == 1 || Extent(opt, pass - 1).Given(), comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", given.c_str(), e.Target(), ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
   PetscCheck(e.Given() || (p.dies.upper.kind.empty() && !p.dies.lower.Given() && !p.dies.side.Given() &&
-                           p.dies.offset == 0 && p.dies.side_force == 0),
-             comm, PETSC_ERR_USER_INPUT, "%s (or its V-die's numbers), %s, %s, %s, %s: give %s for the %s pass",
+                           p.dies.offset == 0 && p.dies.side_force == 0 && !p.release),
+             comm, PETSC_ERR_USER_INPUT, "%s (or its V-die's numbers), %s, %s, %s, %s, %s: give %s for the %s pass",
              PassOption(pass, "die_profile").c_str(), PassOption(pass, "lower_die").c_str(),
              PassOption(pass, "side_die").c_str(), PassOption(pass, "die_offset").c_str(),
-             PassOption(pass, "side_force").c_str(), stroke.c_str(), ordinal.c_str());
-  if (p.dies.side.Given()) PetscCall(CheckSideDies(comm, opt, PassOption(pass, "side_die"), p.dies.side));
+             PassOption(pass, "side_force").c_str(), PassOption(pass, "unload").c_str(), stroke.c_str(),
+             ordinal.c_str());
+  if (p.dies.side.Given() || (p.release && e.Given())) // (its own side dies, or the first pass's)
+    PetscCall(CheckSideDies(comm, opt, pass, OptionOfPass(p.dies.side.Given() ? pass : 0, "side_die"),
+                            DiesOfPass(opt, pass).side));
   PetscCall(CheckPassOffset(comm, opt, pass));
   if (e.Given()) PetscCall(CheckSideForce(comm, opt, pass)); // (die_shape_options.cpp)
   PetscCall(CheckUpperMotion(comm, opt, pass));              // (its motion kind's check: motion_checks.hpp)
