@@ -107,6 +107,10 @@ cases = [
      "-pass2_unload withdraw: not with the half model"),
     (["-scene", "squaring", "-side_die", "flat", "-pass2_stroke", "2", "-pass2_unload", "withdraw"],
      "-side_die flat: side dies are not"),
+    (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_lower_die_motion", "path"], "-pass2_lower_die_motion"),
+    (["-scene", "squaring", "-pass2_lower_die_motion", "fixed"], "-pass2_lower_die_motion, -pass2_side_die"),
+    (["-scene", "squaring", "-model", "quarter", "-pass2_stroke", "2", "-pass2_lower_die_motion", "fixed"],
+     "in every pass"),
     (["-scene", "squaring", "-pass2_lower_die", "flat"], "give -pass2_stroke"),
     (["-lower_die", "flat"], "presses with no dies"),  # the base case is the pressure scene
     (["-scene", "squaring", "-pass2_stroke", "9"], "-pass2_stroke 9"),  # past the closed cavity
@@ -308,7 +312,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 176 and len(selected) == 10, f"{len(cases)} cases on 1 rank (176), {len(selected)} on 2 (10)")
+k.check(len(cases) == 179 and len(selected) == 10, f"{len(cases)} cases on 1 rank (179), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

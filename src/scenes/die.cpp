@@ -52,9 +52,9 @@ PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::str
 
 // The squaring dies' cavity has a closed form: two equal V-dies (the lower one mirroring the upper one, closing by
 // 2 U as mirror and fixed do), no side dies.
-bool ClosedForm(const Options &o, const DieSet &dies)
+bool ClosedForm(const Options &o, int pass, const DieSet &dies)
 {
-  return dies.upper.VDie() && dies.lower.Is(DieFrom::Mirror) && LowerDieClosing(o) && dies.side.Is(DieFrom::None);
+  return dies.upper.VDie() && dies.lower.Is(DieFrom::Mirror) && LowerDieClosing(o, pass) && dies.side.Is(DieFrom::None);
 }
 
 } // namespace
@@ -81,7 +81,7 @@ PetscErrorCode BuildDie(MPI_Comm comm, const DieShape &shape, Die &die)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape, Tool &upper, double floor_y,
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, int pass, DieChoice shape, Tool &upper, double floor_y,
                              TubePart part, Tool &lower)
 {
   PetscFunctionBeginUser;
@@ -100,7 +100,7 @@ PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape,
   }
   // Its name in errors and in the results (/tools/<name>): no spaces.
   lower.name = shape.Is(DieFrom::Plate) ? "floor" : shape.Is(DieFrom::Mirror) ? "lower-" + upper.name : "lower-die";
-  PetscCall(SetLowerMotion(comm, opt, upper, lower)); // (-lower_die_motion: die_motion.cpp)
+  PetscCall(SetLowerMotion(comm, opt, pass, upper, lower)); // (-lower_die_motion, its pass's: die_motion.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -155,7 +155,7 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
   tools = {upper};
   if (BothDies(part)) {
     Tool lower;
-    PetscCall(BuildLowerDie(comm, opt, dies.lower, tools[0], floor_y, part, lower));
+    PetscCall(BuildLowerDie(comm, opt, pass, dies.lower, tools[0], floor_y, part, lower));
     tools.push_back(lower);
   }
   if (!dies.side.Is(DieFrom::None))
@@ -239,16 +239,16 @@ PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring,
   for (int pass = 0; pass < PassCount(opt); ++pass) {
     const PassExtent e = Extent(opt, pass);
     if (!e.Forced())
-      PetscCall(
-        CheckDieReach(comm, opt, DiesOfPass(opt, pass), squaring, pass == 0 ? deepest : e.stroke, e.Option().c_str()));
+      PetscCall(CheckDieReach(comm, opt, pass, DiesOfPass(opt, pass), squaring, pass == 0 ? deepest : e.stroke,
+                              e.Option().c_str()));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-double DieReach(const Options &o, const DieSet &dies, bool squaring)
+double DieReach(const Options &o, int pass, const DieSet &dies, bool squaring)
 {
   const double ro = o.tube_ro, ri = ro - o.tube_t;
-  if (squaring && !ClosedForm(o, dies)) return kNever;
+  if (squaring && !ClosedForm(o, pass, dies)) return kNever;
   if (!squaring) return ro - o.tube_t;
   const VAngle v(dies.upper.spec.angle);
   const double area = M_PI * (ro * ro - ri * ri), closed = ro * v.qs - std::sqrt(0.5 * area * (v.qs / v.qc));
@@ -267,12 +267,12 @@ PetscErrorCode CheckForceReach(MPI_Comm comm, const PassExtent &e, double reach,
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, const DieSet &dies, bool squaring, double stroke,
-                             const char *option)
+PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, int pass, const DieSet &dies, bool squaring,
+                             double stroke, const char *option)
 {
   PetscFunctionBeginUser;
   const double ro = o.tube_ro, ri = ro - o.tube_t;
-  if (squaring && !ClosedForm(o, dies)) {
+  if (squaring && !ClosedForm(o, pass, dies)) {
     // A profile of one's own, side dies: no closed form of the cavity; a stroke that closes it fails in the run.
   } else if (squaring) {
     // The cavity is a rhombus of half-diagonals D = h - U and D tan(half): area 2 D^2 tan(half).

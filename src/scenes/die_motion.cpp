@@ -24,9 +24,9 @@ const LowerMotion kLowerMotions[] = {
 };
 static_assert(std::size(kLowerMotions) == static_cast<size_t>(LowerDieMove::Own) + 1, "one for each LowerDieMove");
 
-const LowerMotion &LowerMotionOf(const Options &o)
+const LowerMotion &LowerMotionOf(const Options &o, int pass)
 {
-  return kLowerMotions[static_cast<size_t>(ToolsOf(o).lower_motion.move)];
+  return kLowerMotions[static_cast<size_t>(LowerDieOfPass(o, pass).move)];
 }
 } // namespace
 
@@ -39,28 +39,29 @@ PetscErrorCode SetMotion(MPI_Comm comm, const char *option, const std::string &k
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode SetLowerMotion(MPI_Comm comm, const Options &o, Tool &upper, Tool &lower)
+PetscErrorCode SetLowerMotion(MPI_Comm comm, const Options &o, int pass, Tool &upper, Tool &lower)
 {
+  const std::string option = OptionOfPass(pass, "lower_die_motion");
   PetscFunctionBeginUser;
-  const LowerDieSpec die = LowerDie(o);
-  PetscCall(SetMotion(comm, "-lower_die_motion", die.kind, die.spec, lower));
+  const LowerDieSpec die = LowerDieOfPass(o, pass);
+  PetscCall(SetMotion(comm, option.c_str(), die.kind, die.spec, lower));
   MotionSpec spec;
-  spec.direction = LowerMotionOf(o).upper;
-  PetscCall(SetMotion(comm, "-lower_die_motion", kStrokeMotion, spec, upper));
+  spec.direction = LowerMotionOf(o, pass).upper;
+  PetscCall(SetMotion(comm, option.c_str(), kStrokeMotion, spec, upper));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-MotionHandle LowerDieMotion(const Options &o)
+MotionHandle LowerDieMotion(const Options &o, int pass)
 {
   MotionHandle lower;
-  const LowerDieSpec die = LowerDie(o);
+  const LowerDieSpec die = LowerDieOfPass(o, pass);
   if (!MakeMotion(die.kind, die.spec, lower).empty()) lower = StrokeMotion({0.0, 1.0});
   return lower;
 }
 
-double UpperTravel(const Options &o) { return -LowerMotionOf(o).upper[1]; }
+double UpperTravel(const Options &o, int pass) { return -LowerMotionOf(o, pass).upper[1]; }
 
-bool LowerDieClosing(const Options &o) { return LowerMotionOf(o).closing; }
+bool LowerDieClosing(const Options &o, int pass) { return LowerMotionOf(o, pass).closing; }
 
 std::vector<double> UpperKinks(const DieMotion &die, double until)
 {

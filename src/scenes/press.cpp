@@ -40,7 +40,6 @@ PressScene::PressScene(const Options &opt, bool squaring)
               ? StrokeForCornerRadius(opt.tube_ro, opt.stroke.corner_radius, FirstDies(opt).upper.spec.angle)
               : opt.stroke.u;
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
-  lower_motion_ = LowerDieMotion(opt);
   passes_.resize(PassCount(opt));
   const ModelChoice model = ModelOf(opt); // (each pass's hold; part_ reads the same choice)
   passes_[0].path = FirstDies(opt).motion.OwnPath() ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
@@ -48,8 +47,9 @@ PressScene::PressScene(const Options &opt, bool squaring)
     Pass &p = passes_[k];
     p.extent = ExtentOf(ToolsOf(opt).passes[k], k, k == 0 ? stroke_ : LaterPass(opt, k).stroke);
     p.turn = PassTurn(opt, k, part_);
-    p.dies = DiesOfPass(opt, k), p.reach = DieReach(opt, p.dies, squaring), p.release = ReleaseOfPass(opt, k);
+    p.dies = DiesOfPass(opt, k), p.reach = DieReach(opt, k, p.dies, squaring), p.release = ReleaseOfPass(opt, k);
     p.held = model.HeldByRotation(k), p.side_dies = !p.dies.side.Is(DieFrom::None);
+    p.lower_motion = LowerDieMotion(opt, k);
     if (k > 0 && p.dies.motion.OwnPath()) { // (its own path: -pass<N>_die_path)
       const ToolPath own = MotionPathOf(p.dies.motion.kind, p.dies.motion.spec);
       p.path = StrokePath(own), p.rise = -0.5 * own.Motion(0)[1];

@@ -13,8 +13,9 @@ double PressScene::ToolWork(const HistoryRow &prev, const HistoryRow &row, doubl
   if (pass_ > 0 && row.stage == PressStage(pass_) && prev.stage < row.stage)
     from.stroke = -UpperBack(), path(from, kDieX) = path(from, kDieTurn) = 0.0;
   // (the lower die's rise by its motion: by U where it mirrors the upper one's, LowerDieMotion)
-  const DieTravel travel{UpperTravel(opt_), !LowerDieMoves(opt_, LowerDieMove::Fixed),
-                         lower_motion_->Offset(row.stroke)[1] - lower_motion_->Offset(from.stroke)[1]};
+  const MotionHandle &lower = passes_[pass_].lower_motion;
+  const DieTravel travel{UpperTravel(opt_, (int)pass_), !LowerDieMoves(opt_, (int)pass_, LowerDieMove::Fixed),
+                         lower->Offset(row.stroke)[1] - lower->Offset(from.stroke)[1]};
   return PressToolWork(part_, travel, from, row);
 }
 

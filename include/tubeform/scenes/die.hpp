@@ -24,23 +24,25 @@ PetscErrorCode BuildDie(MPI_Comm comm, const DieShape &shape, Die &die);
 // The flat lower die reaches this far past the axis and past the tube's outer radius (fractions of Ro): a
 // tube squared on it widens by less than half its radius.
 constexpr double kFloorOverhang = 0.1, kFloorReach = 0.6;
-// Collective: the lower die of `shape` (a pass's -lower_die: the upper die's mirror, a flat floor at y = floor_y, or
-// a profile file drawn as an upper die and mirrored below the tube) with its motion of -lower_die_motion, the upper
+// Collective: pass `pass`'s lower die of `shape` (its -lower_die: the upper die's mirror, a flat floor at y = floor_y,
+// or a profile file drawn as an upper die and mirrored below the tube) with its motion (LowerDieOfPass), the upper
 // die's motion with it; in the full model (`part`) on both sides of the y axis.
-PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, DieChoice shape, Tool &upper, double floor_y,
+PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, int pass, DieChoice shape, Tool &upper, double floor_y,
                              TubePart part, Tool &lower);
 
 // Collective: tool t's motion of the registry's kind `kind` made from `spec` (tool/motion.hpp), or an error on
 // every rank naming `option`.
 PetscErrorCode SetMotion(MPI_Comm comm, const char *option, const std::string &kind, const MotionSpec &spec, Tool &t);
-// Collective: the lower die's motion of -lower_die_motion, and the upper die's that goes with it (die_motion.cpp).
-PetscErrorCode SetLowerMotion(MPI_Comm comm, const Options &o, Tool &upper, Tool &lower);
-// The lower die's motion of -lower_die_motion as drawn (up: y), or the mirror's where the options make none (the
-// run refuses them: SetLowerMotion); and the upper die's travel per unit U that goes with it (2 over a fixed one).
-MotionHandle LowerDieMotion(const Options &o);
-double UpperTravel(const Options &o);
-// The lower die's motion keeps the dies closing by 2 U (mirror, fixed): the closed forms of their reach hold.
-bool LowerDieClosing(const Options &o);
+// Collective: pass `pass`'s lower die's motion (-lower_die_motion, -pass<N>_lower_die_motion: LowerDieOfPass), and
+// the upper die's that goes with it (die_motion.cpp).
+PetscErrorCode SetLowerMotion(MPI_Comm comm, const Options &o, int pass, Tool &upper, Tool &lower);
+// Pass `pass`'s lower die's motion as drawn (up: y), or the mirror's where the options make none (the run refuses
+// them: SetLowerMotion); and the upper die's travel per unit U that goes with it (2 over a fixed one).
+MotionHandle LowerDieMotion(const Options &o, int pass);
+double UpperTravel(const Options &o, int pass);
+// Pass `pass`'s lower die's motion keeps the dies closing by 2 U (mirror, fixed): the closed forms of their reach
+// hold.
+bool LowerDieClosing(const Options &o, int pass);
 // The strokes below `until` where a pass's upper die's motion `die` changes piece, as its kind says (Motion::Kinks:
 // a path's points; none by the stroke or a force).
 std::vector<double> UpperKinks(const DieMotion &die, double until);
@@ -97,8 +99,8 @@ TurnMap PassTurn(const Options &opt, int pass, TubePart part);
 // plasticity keeps the area), or (the flattening plates) past the point where the ring's walls meet (no
 // self-contact is modelled). A profile of one's own or another lower die has no closed form of its cavity: a
 // stroke that closes it fails in the run.
-PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, const DieSet &dies, bool squaring, double stroke,
-                             const char *option);
+PetscErrorCode CheckDieReach(MPI_Comm comm, const Options &o, int pass, const DieSet &dies, bool squaring,
+                             double stroke, const char *option);
 // Collective: CheckDieReach for a press's passes: the first pass's deepest stroke (-stroke, or -stroke_path's) and
 // each later one's; not a pass's pressed with a force, whose stroke is its outcome (PassExtent).
 PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring, double deepest);
@@ -107,9 +109,9 @@ PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring,
 PetscErrorCode WarnUntouched(MPI_Comm comm, const ContactSet &contact, int pass, double stroke);
 // Collective: the note of the paper's stroke rule (-stroke_corner_radius): the stroke a corner radius gives.
 PetscErrorCode NoteCornerRadius(MPI_Comm comm, double stroke, double corner_radius);
-// The first stroke CheckDieReach refuses (the dies closing on the tube, their parting faces meeting, the ring's
-// walls meeting); kNever where there is no closed form (a profile, another lower die).
-double DieReach(const Options &o, const DieSet &dies, bool squaring);
+// The first stroke CheckDieReach refuses for pass `pass`'s dies (the dies closing on the tube, their parting faces
+// meeting, the ring's walls meeting); kNever where there is no closed form (a profile, another lower die).
+double DieReach(const Options &o, int pass, const DieSet &dies, bool squaring);
 // Collective: a pass's force-controlled die (-die_force, -pass<N>_die_force; `e` the pass's extent) at `stroke` (its
 // U) that has come down to `reach`, its dies' DieReach, stops the run (PETSC_ERR_NOT_CONVERGED: inside an increment,
 // the results so far are written).

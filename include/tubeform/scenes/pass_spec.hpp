@@ -119,8 +119,8 @@ std::string ShapeWord(const DieChoice &shape);
 DieChoice DrawingChoice(const std::string &file);
 
 // A pass's dies, the first's and a later one's alike (DiesOfPass): the upper one's shape, motion (with its path or
-// force) and place off the axis, the lower and the side dies' shapes and the side dies' force. (The lower die's motion,
-// -lower_die_motion, is every pass's.)
+// force) and place off the axis, the lower and the side dies' shapes and the side dies' force. (The lower die's motion
+// is the pass's: PassSpec::lower_motion, LowerDieOfPass.)
 struct DieSet {
   DieShape upper;   // -die_profile, -die_angle, ... (UpperDieShape); -pass<N>_die_profile
   DieMotion motion; // -die_motion (UpperDie); -pass<N>_die_motion (ReadPassMotions)
@@ -142,6 +142,8 @@ struct PassSpec {
   DieSet dies;       // its dies; its upper die's motion by the stroke, or a path of its own (ReadPassMotions)
   std::optional<Unload> release; // how it lets the tube go after its press (-pass<N>_unload; unset: the first
                                  // pass's -unload, Options::release; ReleaseOfPass)
+  std::optional<LowerDieSpec> lower_motion; // its lower die's motion, mirror or fixed (-pass<N>_lower_die_motion;
+                                            // unset: the first pass's -lower_die_motion; LowerDieOfPass)
 };
 // The passes before any option is read: the first with the default dies, the later ones with none given (unset).
 inline std::vector<PassSpec> DefaultPasses()

@@ -99,6 +99,7 @@ private:
                                       // own, -y / 2 per unit stroke along its first piece
     DieSet dies;                      // its dies (DiesOfPass: the upper one's shape and motion, lower, side)
     Unload release = Unload::Reverse; // how it lets the tube go (ReleaseOfPass: -unload, -pass<N>_unload)
+    MotionHandle lower_motion;        // its lower die's motion at the stroke U, for the tools' work (LowerDieMotion)
     double reach = kNever;            // where they close on the tube (DieReach; pressed by a force: CheckForceReach)
     bool held = false;                // the full model's pass held by the rotation hold (not its pins) while pressing
     bool side_dies = false;           // it has side dies (-side_die, -pass<N>_side_die)
@@ -115,7 +116,6 @@ private:
   RotationHold hold_;  // or, in their place, the rotation hold (scenes/hold.hpp)
   SpringbackPin pin_;  // the half and full models' springback pin along the press's y
   double stroke_ = 0, back_ = 0;
-  MotionHandle lower_motion_; // its lower die's motion (-lower_die_motion) at the stroke U, for the tools' work
   int flank_ = 0, apex_ = -1; // the die's segments the shape metrics use (scenes/die.hpp)
   bool unloading_ = false;
   // The contact forces a release reverses (the paper's unloading): nodal, their total on the upper die and its moment

@@ -35,7 +35,8 @@ struct ModelParams {
 // (scenes/tool_options.hpp): the model, the passes and the lower die's motion.
 struct ToolSceneParams {
   ModelParams model;         // the part modelled, its support
-  LowerDieSpec lower_motion; // the lower die's motion, every pass's (-lower_die_motion; LowerDie)
+  LowerDieSpec lower_motion; // the lower die's motion, the first pass's and a later one's where it gives none
+                             // (-lower_die_motion; LowerDieOfPass)
   // The passes: the first (-stroke, -die_*, -lower_die, -side_die), then each after the springback of the one before
   // (-pass2_* to -pass9_*; a stroke of 0: no such pass). FirstPass, LaterPass, DiesOfPass.
   std::vector<PassSpec> passes = DefaultPasses();
@@ -94,15 +95,22 @@ inline DieShape UpperDieShape(const Options &opt)
 }
 // It is the V-die (not drawn from a file).
 inline bool VDie(const Options &opt) { return FirstDies(opt).upper.VDie(); }
-// The lower die's motion as the scenes take it: its word, kind and spec, the spec moving up (y) by the stroke.
-inline LowerDieSpec LowerDie(const Options &opt)
+// Pass `pass`'s lower die's motion as the scenes take it: its word, kind and spec (-lower_die_motion, or a later
+// pass's -pass<N>_lower_die_motion where given), the spec moving up (y) by the stroke.
+inline LowerDieSpec LowerDieOfPass(const Options &opt, int pass)
 {
-  LowerDieSpec die = ToolsOf(opt).lower_motion;
+  const std::optional<LowerDieSpec> &own = ToolsOf(opt).passes[pass].lower_motion;
+  LowerDieSpec die = pass > 0 && own ? *own : ToolsOf(opt).lower_motion;
   die.spec.direction = {0.0, 1.0};
   return die;
 }
-// It goes with the upper die's motion as `move` says (mirror, fixed or its own).
-inline bool LowerDieMoves(const Options &opt, LowerDieMove move) { return ToolsOf(opt).lower_motion.move == move; }
+// The first pass's.
+inline LowerDieSpec LowerDie(const Options &opt) { return LowerDieOfPass(opt, 0); }
+// Pass `pass`'s lower die goes with the upper die's motion as `move` says (mirror, fixed or its own).
+inline bool LowerDieMoves(const Options &opt, int pass, LowerDieMove move)
+{
+  return LowerDieOfPass(opt, pass).move == move;
+}
 // A pass's upper die's kind is `kind` (`dies`: a pass's, FirstDies(opt), DiesOfPass or the scene's).
 inline bool DieMoves(const DieSet &dies, const char *kind) { return dies.motion.kind == kind; }
 // The first pass's upper die's own path (-die_path with its turns; none unless -die_motion path).

@@ -110,6 +110,16 @@ PetscErrorCode OldSpelling(MPI_Comm comm, OptionReader &read, const std::string 
 }
 } // namespace
 
+LowerDieSpec LowerDieOfWord(const std::string &word)
+{
+  LowerDieSpec die;
+  for (const MotionWord &w : LowerWords())
+    if (w.word == word) die.word = w.word, die.kind = w.kind;
+  die.move = LowerDieMoveOf(die.word);
+  die.spec.tool = "the lower die";
+  return die;
+}
+
 PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
 {
   const std::vector<MotionWord> words = LowerWords();

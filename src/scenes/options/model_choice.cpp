@@ -53,7 +53,7 @@ ModelChoice ModelOf(const Options &opt)
   model.passes.resize(kMaxPasses);
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     PassSymmetry &p = model.passes[pass];
-    p.mirrored = DiesOfPass(opt, pass).lower.Is(DieFrom::Mirror) && LowerDieMoves(opt, LowerDieMove::Mirror);
+    p.mirrored = DiesOfPass(opt, pass).lower.Is(DieFrom::Mirror) && LowerDieMoves(opt, pass, LowerDieMove::Mirror);
     p.off_axis = OffAxisBy(opt, pass);
     p.quarters = PassQuarters(opt, pass), p.quarter_turn = QuarterTurn(opt, pass);
   }

@@ -51,7 +51,7 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
   PetscFunctionBeginUser;
   PetscCheck(m.part != TubeModel::Quarter || model.Mirrored(), comm, PETSC_ERR_USER_INPUT,
              "-model quarter: the quarter model needs the lower die to mirror the upper one in shape and motion "
-             "(-lower_die mirror -lower_die_motion mirror); use -model half or auto");
+             "in every pass (-lower_die mirror -lower_die_motion mirror, and each pass's); use -model half or auto");
   // The rotation hold: the full model; one extra unknown in a solve (scenes/hold.hpp).
   PetscCall(CheckDieOffset(comm, opt, "-die_offset", offset));
   char off_axis[64] = "-die_path"; // (what puts the die off the axis, named in the errors)

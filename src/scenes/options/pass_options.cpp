@@ -17,6 +17,20 @@ PetscErrorCode ReadPassRelease(PetscOptionItems *PetscOptionsObject, OptionReade
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// A later pass's lower die's motion (-pass<N>_lower_die_motion): mirror or fixed; unset where not given (the first
+// pass's -lower_die_motion then: LowerDieOfPass).
+PetscErrorCode ReadPassLowerMotion(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name,
+                                   const char *help, std::optional<LowerDieSpec> &motion)
+{
+  PetscBool set;
+  LowerDieMove move = LowerDieMove::Mirror;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, name, &set));
+  PetscCall(ChooseWord(PetscOptionsObject, read, name, help, kLowerDieMoveWords, move));
+  if (set) motion = LowerDieOfWord(WordOf(kLowerDieMoveWords, move));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 // The second pass: its stroke, dies and turn (the help's text; a later pass's options read by the same names).
 PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, PassSpec &pass)
 {
@@ -60,28 +74,35 @@ PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader
                             "or none (the last pass only: the run ends loaded) (default: the first pass's -unload; "
                             "docs/dies.md)",
                             pass.release));
+  PetscCall(ReadPassLowerMotion(PetscOptionsObject, read, "-pass2_lower_die_motion",
+                                "squaring: how the second pass's lower die moves: mirror (up by the stroke, the upper "
+                                "die's mirror) or fixed (it stays; the upper die travels 2 U) (default: the first "
+                                "pass's -lower_die_motion; docs/dies.md)",
+                                pass.lower_motion));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 // Pass `number` (3 to kMaxPasses): -pass<number>_stroke, _die_profile, _lower_die, _side_die, _turn, _die_offset,
-// _side_force, _unload, as the second pass's. Read (and listed by -help) where one of them is given; named for the
-// hints on a misspelt option always.
+// _side_force, _unload, _lower_die_motion, as the second pass's. Read (and listed by -help) where one of them is given;
+// named for the hints on a misspelt option always.
 PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, int number, PassSpec &pass)
 {
   const std::string pre = "-pass" + std::to_string(number) + "_";
   const std::string stroke = pre + "stroke", profile = pre + "die_profile", lower = pre + "lower_die",
                     side = pre + "side_die", turn = pre + "turn", offset = pre + "die_offset",
-                    side_force = pre + "side_force", unload = pre + "unload";
+                    side_force = pre + "side_force", unload = pre + "unload", lower_motion = pre + "lower_die_motion";
   const std::string help = "squaring: pass " + std::to_string(number) + "'s, as -pass2_";
   bool given = false;
   PetscFunctionBeginUser;
-  for (const std::string *name : {&stroke, &profile, &lower, &side, &turn, &offset, &side_force, &unload}) {
+  for (const std::string *name :
+       {&stroke, &profile, &lower, &side, &turn, &offset, &side_force, &unload, &lower_motion}) {
     PetscBool set;
     PetscCall(PetscOptionsHasName(nullptr, nullptr, name->c_str(), &set));
     given = given || set;
   }
   if (!given) {
-    for (const std::string *name : {&stroke, &profile, &lower, &side, &turn, &offset, &side_force, &unload})
+    for (const std::string *name :
+         {&stroke, &profile, &lower, &side, &turn, &offset, &side_force, &unload, &lower_motion})
       read.Note(name->c_str(), (help + name->substr(pre.size()) + "'s").c_str(), PetscOptionsObject->title);
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -96,6 +117,8 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
   PetscCall(read.Real(PetscOptionsObject, offset.c_str(), (help + "die_offset").c_str(), pass.dies.offset));
   PetscCall(read.Real(PetscOptionsObject, side_force.c_str(), (help + "side_force").c_str(), pass.dies.side_force));
   PetscCall(ReadPassRelease(PetscOptionsObject, read, unload.c_str(), (help + "unload").c_str(), pass.release));
+  PetscCall(ReadPassLowerMotion(PetscOptionsObject, read, lower_motion.c_str(), (help + "lower_die_motion").c_str(),
+                                pass.lower_motion));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

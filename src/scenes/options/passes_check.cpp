@@ -67,12 +67,12 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
              "%s %g: the %s pass follows the %s; give %s", given.c_str(), e.Target(), ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
   PetscCheck(e.Given() || (p.dies.upper.kind.empty() && !p.dies.lower.Given() && !p.dies.side.Given() &&
-                           p.dies.offset == 0 && p.dies.side_force == 0 && !p.release),
-             comm, PETSC_ERR_USER_INPUT, "%s (or its V-die's numbers), %s, %s, %s, %s, %s: give %s for the %s pass",
+                           p.dies.offset == 0 && p.dies.side_force == 0 && !p.release && !p.lower_motion),
+             comm, PETSC_ERR_USER_INPUT, "%s (or its V-die's numbers), %s, %s, %s, %s, %s, %s: give %s for the %s pass",
              PassOption(pass, "die_profile").c_str(), PassOption(pass, "lower_die").c_str(),
-             PassOption(pass, "side_die").c_str(), PassOption(pass, "die_offset").c_str(),
-             PassOption(pass, "side_force").c_str(), PassOption(pass, "unload").c_str(), stroke.c_str(),
-             ordinal.c_str());
+             PassOption(pass, "lower_die_motion").c_str(), PassOption(pass, "side_die").c_str(),
+             PassOption(pass, "die_offset").c_str(), PassOption(pass, "side_force").c_str(),
+             PassOption(pass, "unload").c_str(), stroke.c_str(), ordinal.c_str());
   if (p.dies.side.Given() || (p.release && e.Given())) // (its own side dies, or the first pass's)
     PetscCall(CheckSideDies(comm, opt, pass, OptionOfPass(p.dies.side.Given() ? pass : 0, "side_die"),
                             DiesOfPass(opt, pass).side));
@@ -103,11 +103,11 @@ PetscErrorCode CheckPassTurn(MPI_Comm comm, const Options &opt, int pass)
     const bool odd = (quarters - model.passes[before].quarters) % 2 != 0;
     const std::string lower = before == 0 ? "-lower_die" : PassOption(before, "lower_die");
     PetscCheck(!odd || model.passes[before].mirrored || model.hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
-               "%s %g with -full_hold pins: the %s pass's dies (%s %s, -lower_die_motion %s) leave the tube symmetric "
+               "%s %g with -full_hold pins: the %s pass's dies (%s %s, %s %s) leave the tube symmetric "
                "about the y axis only; a quarter turn presses it off that axis, which the pins would hold it against "
                "(use -full_hold rotation or auto)",
                turn.c_str(), p.turn, PassOrdinal(before).c_str(), lower.c_str(), PassLowerDie(opt, before).c_str(),
-               ToolsOf(opt).lower_motion.word.c_str());
+               OptionOfPass(before, "lower_die_motion").c_str(), LowerDieOfPass(opt, before).word.c_str());
   }
   PetscCheck(ToolsOf(opt).model.part != TubeModel::Half || quarters % 2 == 0, comm, PETSC_ERR_USER_INPUT,
              "%s %g with -model half: the half model's plane x = 0 is no symmetry plane of a press turned by 90 "

@@ -17,14 +17,14 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   PetscFunctionBeginUser;
   const bool press = PressesWithTools(opt);
   const DieSet &first = FirstDies(opt);
-  bool asked = !first.lower.Is(DieFrom::Mirror) || !LowerDieMoves(opt, LowerDieMove::Mirror) ||
+  bool asked = !first.lower.Is(DieFrom::Mirror) || !LowerDieMoves(opt, 0, LowerDieMove::Mirror) ||
                ToolsOf(opt).model.part != TubeModel::Auto || !DieMoves(first, kStrokeMotion) ||
                !first.side.Is(DieFrom::None) || first.side_force != 0 || first.offset != 0 ||
                ToolsOf(opt).model.full_hold != FullHold::Auto;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     const PassSpec &p = LaterPass(opt, pass);
     asked = asked || p.stroke != 0 || p.turn != 0 || !p.dies.upper.kind.empty() || p.dies.lower.Given() ||
-            p.dies.side.Given() || p.dies.offset != 0 || p.dies.side_force != 0;
+            p.dies.side.Given() || p.dies.offset != 0 || p.dies.side_force != 0 || p.release || p.lower_motion;
   }
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
@@ -46,7 +46,7 @@ void SetDiePathStroke(Options &opt) { opt.stroke.u = -0.5 * DiePath(opt).Last()[
 PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 {
   PetscFunctionBeginUser;
-  const bool own = LowerDieMoves(opt, LowerDieMove::Own);
+  const bool own = LowerDieMoves(opt, 0, LowerDieMove::Own);
   PetscCheck(!own || (opt.stroke.path.empty() && opt.release.unload != Unload::Withdraw && PassCount(opt) == 1 &&
                       opt.stroke.corner_radius <= 0),
              comm, PETSC_ERR_USER_INPUT,
