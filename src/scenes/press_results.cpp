@@ -48,7 +48,12 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
     // (the right side die: whole in the half and full models, its upper half in the quarter)
     // (its force along the press's x: a turned pass's side die presses along the press's -x)
     PetscCall(m.contact->TotalForce(SideDie(), force, nullptr));
-    side(row, kSideLoad) = -(BothDies(part_) ? 1.0 : 2.0) * Press()({force[0], force[1]})[0];
+    double load = -Press()({force[0], force[1]})[0];
+    if (WholeTube(part_)) { // (and the left one, along +x: their mean, which their common travel works over)
+      PetscCall(m.contact->TotalForce(SideDie() + 1, force, nullptr));
+      load = 0.5 * (load + Press()({force[0], force[1]})[0]);
+    }
+    side(row, kSideLoad) = (BothDies(part_) ? 1.0 : 2.0) * load;
   }
   if (BothDies(part_) && !unloading_) {
     PetscCall(m.contact->TotalForce(kLower, force, &moment));

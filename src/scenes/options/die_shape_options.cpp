@@ -155,18 +155,17 @@ PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt)
   PetscFunctionBeginUser;
   PetscCall(CheckSideDies(comm, opt, 0, "-side_die", FirstDies(opt).side)); // (passes_check.cpp)
   PetscCall(CheckSideForce(comm, opt, 0));
-  // Every pass's side dies where the tube's two sides meet them alike (the run reports one for both), named by the
-  // option that gives them (a later pass's own, or the first pass's it takes).
+  // Every pass's side dies pressed by a force where the tube's two sides meet them alike (each travels its own way,
+  // the run follows one), named by the option that gives the force (a later pass's own, or the first pass's).
   const ModelChoice model = ModelOf(opt);
   for (int pass = 0; pass < PassCount(opt); ++pass) {
-    const DieChoice &side = DiesOfPass(opt, pass).side;
-    const std::string name =
-      pass > 0 && LaterPass(opt, pass).dies.side.Given() ? PassOption(pass, "side_die") : "-side_die";
-    PetscCheck(side.Is(DieFrom::None) || model.SidesAlike(pass), comm, PETSC_ERR_USER_INPUT,
-               "%s %s: side dies in the %s pass, whose two sides of the tube differ (a die off the axis in it or "
-               "before it; a turn that brings a pass not mirrored top to bottom to the sides): their forces differ, "
-               "and the run reports and counts one for both",
-               name.c_str(), ShapeWord(side).c_str(), PassOrdinal(pass).c_str());
+    const DieSet dies = DiesOfPass(opt, pass);
+    PetscCheck(dies.side.Is(DieFrom::None) || dies.side_force == 0 || model.SidesAlike(pass), comm,
+               PETSC_ERR_USER_INPUT,
+               "%s %g: side dies pressing by a force in the %s pass, whose two sides of the tube differ (a die off "
+               "the axis in it or before it; a turn that brings a pass not mirrored top to bottom to the sides): "
+               "each would travel its own way, and the run follows one; press them by the stroke",
+               OptionOfPass(pass, "side_force").c_str(), dies.side_force, PassOrdinal(pass).c_str());
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -67,19 +67,16 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
              off_axis);
   PetscCheck(m.full_hold == FullHold::Auto || model.part == TubeModel::Full, comm, PETSC_ERR_USER_INPUT,
              "-full_hold %s: only the full model is held so (-model full)", WordOf(kFullHoldWords, m.full_hold));
-  bool held = false;
-  std::string forced, side; // (the options of the first pass pressed by a force, of its side dies'; none: "")
-  for (int pass = kMaxPasses - 1; pass >= 0; --pass) {
+  for (int pass = 0; pass < kMaxPasses; ++pass) { // (a pass's press: one force-controlled unknown in an increment)
     const PassExtent e = Extent(opt, pass);
-    held = held || model.HeldByRotation(pass);
-    if (e.Forced()) forced = e.Option();
-    if (ToolsOf(opt).passes[pass].dies.side_force != 0) side = OptionOfPass(pass, "side_force");
+    const double side = ToolsOf(opt).passes[pass].dies.side_force;
+    PetscCheck(!model.HeldByRotation(pass) || (!e.Forced() && side == 0), comm, PETSC_ERR_USER_INPUT,
+               "%s %g: the %s pass is held by the rotation hold (-full_hold; a die off the axis in it or before it: "
+               "-die_offset, -pass<N>_die_offset, -die_path; a turn off the quarters), an unknown of each increment "
+               "as a force-controlled die's travel is; one of them in a pass",
+               e.Forced() ? e.Option().c_str() : OptionOfPass(pass, "side_force").c_str(),
+               e.Forced() ? e.Target() : side, PassOrdinal(pass).c_str());
   }
-  PetscCheck(!held || (forced.empty() && side.empty()), comm, PETSC_ERR_USER_INPUT,
-             "the rotation hold (-full_hold; a die off the axis: -die_offset, -pass<N>_die_offset, -die_path; a turn "
-             "off the quarters) in some pass: not with %s or %s in any pass (one force-controlled "
-             "unknown in an increment)",
-             forced.empty() ? "-die_force" : forced.c_str(), side.empty() ? "-side_force" : side.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
