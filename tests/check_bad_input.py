@@ -106,7 +106,7 @@ cases = [
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_unload", "withdraw", "-pass2_lower_die", "flat"],
      "-pass2_unload withdraw: not with the half model"),
     (["-scene", "squaring", "-side_die", "flat", "-pass2_stroke", "2", "-pass2_unload", "withdraw"],
-     "-side_die flat: side dies are not"),
+     "-side_die flat: side dies are not withdrawn (-pass2_unload withdraw)"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_lower_die_motion", "path"], "-pass2_lower_die_motion"),
     (["-scene", "squaring", "-pass2_lower_die_motion", "fixed"], "-pass2_lower_die_motion, -pass2_side_die"),
     (["-scene", "squaring", "-model", "quarter", "-pass2_stroke", "2", "-pass2_lower_die_motion", "fixed"],
@@ -128,6 +128,10 @@ cases = [
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_turn", "90", "-lower_die", "flat", "-full_hold", "pins"],
      "off that axis"),
     (["-scene", "squaring", "-side_die", "flat", "-die_force", "100"], "side dies are not with -die_force"),
+    (["-scene", "squaring", "-side_die", "flat", "-pass2_stroke", "2", "-pass2_die_motion", "force",
+      "-pass2_die_force", "100"], "side dies are not with -pass2_die_force in their pass"),
+    (["-scene", "squaring", "-lower_die_motion", "fixed", "-pass2_side_die", "flat", "-pass2_die_path", "0,-3"],
+     "-pass2_die_path: not with side dies in its pass"),
     (["-scene", "squaring", "-pass2_side_die", "flat"], "give -pass2_stroke"),
     (["-scene", "squaring", "-side_force", "20"], "need the pass's side dies, -side_die"),
     (["-scene", "squaring", "-side_die", "flat", "-side_force", "-1"], "-side_force -1"),
@@ -313,7 +317,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 179 and len(selected) == 10, f"{len(cases)} cases on 1 rank (179), {len(selected)} on 2 (10)")
+k.check(len(cases) == 181 and len(selected) == 10, f"{len(cases)} cases on 1 rank (181), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

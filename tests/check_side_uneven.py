@@ -1,7 +1,8 @@
-"""Side dies on a tube whose two sides differ (-side_die with a die off the axis), and a force-controlled pass before a
-pass held by the rotation hold.
+"""Side dies on a tube whose two sides differ (-side_die with a die off the axis), and side dies beside passes of other
+kinds: a pass pressed by a force before one held by the rotation hold or one with side dies, a pass on its own path
+after one with side dies.
 
-The paper's tube (options/squaring.opts, the fast preset), the full model:
+The paper's tube (options/squaring.opts, the fast preset); RIGHT, LEFT and MIXED on the full model:
   RIGHT: side plates (-side_die flat) beside the V-dies, the upper die 0.5 mm off the axis (-die_offset 0.5, the
          rotation hold), pressed to U = 1.5 mm: the tube leans on one plate more than on the other;
   LEFT:  the same with -die_offset -0.5;
@@ -18,6 +19,11 @@ A. The energy balance from the history's columns: the punch load over the stroke
    second press.
 B. LEFT is RIGHT's mirror image: load, side load, C1, C2, internal work within 1e-6 of each column's largest
    (tests/check_hold.py C's bound), the upper die's sideways force opposite.
+D. Passes of other kinds beside side dies: FORCED, a first pass pressed by a force (-die_force 80, the quarter model)
+   then a second with side plates (-pass2_side_die flat) by the stroke to U = 2 mm; PATH, a first pass with side
+   plates to 1.5 mm then a second on a path of its own (-pass2_die_path 0,-3 over a lower die that stays, the half
+   model) without them. Each press's balance as A's. A second pass's side plates whose travel starts from the first
+   pass's -stroke rather than where its force left the die misses by 0.27 in FORCED's second press.
 C. MIXED's first pass: the plates' force follows the force's ramp, 20 N/mm at its end within 1e-6 N/mm
    (tests/check_side_dies.py E's bound); its second pass held by the rotation hold (hold_moment set in its press).
 """
@@ -32,7 +38,10 @@ BASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src
         "-error_estimate", 0, "-progress", 0, "-max_energy_error", 1, "-side_die", "flat"]
 RUNS = {"uneven_right.h5": BASE + ["-stroke", 1.5, "-die_offset", 0.5],
         "uneven_left.h5": BASE + ["-stroke", 1.5, "-die_offset", -0.5],
-        "uneven_mixed.h5": BASE + ["-side_force", 20, "-stroke", 1.5, "-pass2_stroke", 2, "-pass2_die_offset", 0.5]}
+        "uneven_mixed.h5": BASE + ["-side_force", 20, "-stroke", 1.5, "-pass2_stroke", 2, "-pass2_die_offset", 0.5],
+        "uneven_forced.h5": BASE[:-2] + ["-die_force", 80, "-pass2_stroke", 2, "-pass2_side_die", "flat"],
+        "uneven_path.h5": BASE + ["-stroke", 1.5, "-pass2_side_die", "none", "-pass2_lower_die_motion", "fixed",
+                                  "-pass2_die_path", "0,-3"]}
 run_all(tf, mpirun, [opts + ["-output", out(name)] for name, opts in RUNS.items()], timeout=600)
 H = {name: history_and_tools(out(name)) for name in RUNS}
 for name in RUNS:
@@ -40,16 +49,17 @@ for name in RUNS:
         H[name]["attrs"] = dict(f["/history"].attrs)
 
 
-def balance(h, rows, start):
+def balance(h, rows, start, share=1.0, lower=1.0, sides=2.0):
     """The energy balance's error at each of `rows` (one pass's press, in order), relative to the largest work put in
     so far, from the pass's start (its upper die at `start`, the state the row before it left; the first pass's row
-    0)."""
+    0). The model's share of the punch load, of the lower die's force (0: none modelled) and the side dies in it:
+    the full model's 1, 1, 2 (the quarter's 0.5, 0, 0.5)."""
     r = np.concatenate(([rows[0] - 1], rows)) if rows[0] > 0 else rows
     stroke = h["stroke"][r].copy()
     stroke[0] = start
     dU, dS = np.diff(stroke), np.diff(h["side_stroke"][r])
     mid = {c: 0.5 * (h[c][r][1:] + h[c][r][:-1]) for c in ("load", "lower_fy", "side_load")}
-    put = np.cumsum(mid["load"] * dU - mid["lower_fy"] * dU + 2.0 * mid["side_load"] * dS)
+    put = np.cumsum(share * mid["load"] * dU - lower * mid["lower_fy"] * dU + sides * mid["side_load"] * dS)
     rest = {c: h[c][r][1:] - h[c][r][0] for c in ("w_ext", "w_tool", "w_int", "w_friction", "w_kinetic", "w_damped")}
     w_in = put + rest["w_ext"] - rest["w_tool"]
     err = (w_in - rest["w_int"] - rest["w_friction"] - rest["w_kinetic"] - rest["w_damped"])
@@ -66,6 +76,19 @@ for name, stage in (("uneven_right.h5", 0), ("uneven_mixed.h5", 0), ("uneven_mix
     spread = "" if stage else f", side loads {h['side_load'][rows].min():.3g} to {h['side_load'][rows].max():.3g}"
     k.check(worst <= 5e-3, f"A. {name[:-3]}, press {stage // 2 + 1}: energy balance within {worst:.1e} from 0.1 mm "
             f"past the dies' first load (5e-3){spread}")
+
+# D. Side dies in a pass after one pressed by a force (the quarter model), and a pass on a path of its own after one
+# with side dies (the half model, its lower die staying in the second pass): each press's balance.
+for name, stage, shares in (("uneven_forced.h5", 0, (0.5, 0.0, 0.5)), ("uneven_forced.h5", 2, (0.5, 0.0, 0.5)),
+                            ("uneven_path.h5", 2, (1.0, 0.0, 1.0))):
+    # (the path over a lower die that stays: the half model's half of the load over the upper die's 2 U)
+    h = H[name]
+    rows = np.where(h["stage"] == stage)[0]
+    err, U = balance(h, rows, h["stroke"][0] if stage == 0 else H[name]["attrs"]["pass2_start_stroke"], *shares)
+    touched = U[np.argmax(h["load"][rows] > 0)]
+    worst = err[U - touched >= 0.1].max()
+    k.check(worst <= 5e-3, f"D. {name[:-3]}, press {stage // 2 + 1}: energy balance within {worst:.1e} from 0.1 mm "
+            f"past the dies' first load (5e-3)")
 
 # B. The mirror image.
 right, left = H["uneven_right.h5"], H["uneven_left.h5"]

@@ -55,7 +55,6 @@ PressScene::PressScene(const Options &opt, bool squaring)
       p.path = StrokePath(own), p.rise = -0.5 * own.Motion(0)[1];
     }
   }
-  if (passes_.size() > 1) passes_[1].side_from = stroke_; // (a later one's: StartPass, kept for a restart: Persist)
 }
 
 LoadPath PressScene::Path(const Options &opt) const
@@ -176,13 +175,10 @@ PetscErrorCode PressScene::StartPass(Model &m)
   std::vector<SurfacePoint> outer;
   PetscCall(GatherOuter(m, outer));
   PetscCall(StartOnTube(m.comm, !m.quiet, outer, drawn, passes_[next].start_back, (int)pass_));
-  // (the side dies' travel goes on from where the pass before left it: through its press and its backing off, or
-  // their own travel where a force drove them; the contact set keeps the pass's tools until its next are set up)
-  const Pass &before = passes_[pass_];
-  if (before.release == Unload::Withdraw) PetscCall(CheckWithdrawn(m, next));
-  const double travel =
-    before.dies.side_force > 0 ? m.contact->tool(SideDie()).stroke : before.extent.stroke + before.back;
-  if (next > 1 || before.dies.side_force > 0) passes_[next].side_from = before.side_from + travel;
+  // (the side dies' travel goes on from where the pass before left it, as its last row reported it: SideStroke; the
+  // contact set keeps the pass's tools until its next are set up; kept for a restart: Persist)
+  if (passes_[pass_].release == Unload::Withdraw) PetscCall(CheckWithdrawn(m, next));
+  passes_[next].side_from = SideStroke(m, ReleaseEnd());
   unloading_ = false;
   // (the pin stays until the next pass's dies hold the half model's tube: Load)
   reversed_.total[0] = reversed_.total[1] = reversed_.moment = 0;

@@ -19,6 +19,13 @@ double PressScene::ToolWork(const HistoryRow &prev, const HistoryRow &row, doubl
   return PressToolWork(part_, travel, from, row);
 }
 
+double PressScene::SideStroke(Model &m, double lambda) const
+{
+  const Pass &p = passes_[pass_];
+  if (p.dies.side_force > 0) return p.side_from + m.contact->tool(SideDie()).stroke; // (their own)
+  return pass_ > 0 ? p.side_from + ToolStroke(lambda) : Stroke(m, lambda);
+}
+
 PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRow &row)
 {
   double force[2], moment;
@@ -39,11 +46,7 @@ PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRo
   // (the side dies' travel: the stroke, through the springbacks too, or their own under -side_force)
   bool side_dies = false;
   for (const Pass &p : passes_) side_dies = side_dies || p.side_dies;
-  if (side_dies)
-    side(row, kSideStroke) = passes_[pass_].dies.side_force > 0
-                               ? passes_[pass_].side_from + m.contact->tool(SideDie()).stroke
-                             : pass_ > 0 ? passes_[pass_].side_from + ToolStroke(lambda)
-                                         : row.stroke;
+  if (side_dies) side(row, kSideStroke) = SideStroke(m, lambda);
   if (passes_[pass_].side_dies && !unloading_) {
     // (the right side die: whole in the half and full models, its upper half in the quarter)
     // (its force along the press's x: a turned pass's side die presses along the press's -x)

@@ -142,7 +142,7 @@ constexpr double kMaxDieTurn = 90;
 // In a press (MotionKind::press_check), any pass's: the squaring scene's die, within a quarter turn, ending below its
 // start, over a lower die that stays, not moved off the axis by an offset (a path sideways is its own). The first
 // pass's in place of -stroke and -stroke_path, with no side dies or withdrawal (off its axis the model's choice decides
-// its hold: scenes/options/model_options.cpp); a later pass's with no side dies in any pass (they press by the stroke)
+// its hold: scenes/options/model_options.cpp); a later pass's with no side dies in it (they press by the stroke)
 // and, off its press's axis, held by the rotation hold.
 std::string CheckPathInPress(const MotionSpec &spec, const MotionPress &press)
 {
@@ -166,8 +166,9 @@ std::string CheckPathInPress(const MotionSpec &spec, const MotionPress &press)
                   "-unload withdraw or -die_offset (a path sideways is its own offset)";
   if (press.pass > 0 && press.die_offset)
     return name + ": not with " + press.prefix + "offset (a path sideways is its own offset)";
-  if (press.pass > 0 && press.any_side_dies)
-    return name + ": not with side dies (-side_die, -pass<N>_side_die), which press by the stroke";
+  if (press.pass > 0 && press.side_dies)
+    return name + ": not with side dies in its pass (-side_die, " + press.prefix.substr(0, press.prefix.size() - 4) +
+           "side_die), which press by the stroke";
   if (press.pass > 0 && press.off_axis && !press.held)
     return name + ": a die off the axis (a sideways point or a turn) breaks the tube's mirror symmetry; use -model "
                   "full (or auto) -full_hold rotation (or auto)";

@@ -105,7 +105,7 @@ private:
     bool side_dies = false;           // it has side dies (-side_die, -pass<N>_side_die)
     std::vector<double> start_back;   // how far back along its motion each die starts (StartOnTube; a later pass)
     double back = 0;                  // StartBack(), from start_back and the dies' motions (PassDies)
-    double side_from = 0;             // the side dies' travel where it starts (the passes before it, their backs)
+    double side_from = 0;             // the side dies' travel where it starts (SideStroke at the release before it)
     double start = 0;                 // where its upper die starts (PassStart; once its dies are set up)
   };
   std::vector<Pass> passes_;
@@ -145,6 +145,10 @@ private:
   PetscErrorCode PassDies(Model &m, std::vector<Tool> &tools, std::vector<std::pair<std::string, Vec2>> &symmetry);
   // Collective: the next pass's dies set up from where they touch the tube the springback left (BeginStage).
   PetscErrorCode StartPass(Model &m);
+  // The side dies' travel at `lambda` (the history's side_stroke): by the stroke from where the pass's begins (the
+  // first pass's: its U), or their own under a force; through the releases too, so that a pass's side dies go on
+  // from the row before them (StartPass), whatever moved the pass before.
+  double SideStroke(Model &m, double lambda) const;
   // Collective: the dies of the pass before `next`, withdrawn (-unload withdraw, -pass<N>_unload), carry no load.
   PetscErrorCode CheckWithdrawn(Model &m, int next) const;
 

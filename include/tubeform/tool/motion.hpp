@@ -124,8 +124,7 @@ struct MotionPress {
   bool stroke_given = false;  // a later pass's stroke given as well (-pass<N>_stroke)
   bool stroke_path = false;   // the first pass's stroke along -stroke_path
   bool corner_radius = false; // the first pass's stroke from -stroke_corner_radius
-  bool side_dies = false;     // side dies in the first pass (-side_die)
-  bool any_side_dies = false; // side dies in some pass (-side_die, -pass<N>_side_die)
+  bool side_dies = false;     // side dies in the pass (-side_die, -pass<N>_side_die)
   bool die_offset = false;    // the pass's die moved off its axis (-die_offset, -pass<N>_die_offset)
   bool off_axis = false;      // the pass's die leaves its press's y axis (a sideways point or a turn)
   bool held = false;          // the pass is held by the rotation hold (the full model's)

@@ -16,8 +16,7 @@ MotionPress PressOfPass(const Options &opt, int pass)
   press.withdraw = ReleaseOfPass(opt, pass) == Unload::Withdraw;
   press.stroke_given = pass > 0 && LaterPass(opt, pass).stroke != 0;
   press.stroke_path = !opt.stroke.path.empty(), press.corner_radius = opt.stroke.corner_radius > 0;
-  press.side_dies = !FirstDies(opt).side.Is(DieFrom::None);
-  for (int k = 0; k < PassCount(opt); ++k) press.any_side_dies |= !DiesOfPass(opt, k).side.Is(DieFrom::None);
+  press.side_dies = !DiesOfPass(opt, pass).side.Is(DieFrom::None);
   press.die_offset = ToolsOf(opt).passes[pass].dies.offset != 0;
   press.off_axis = PassOffAxis(opt, pass), press.held = model.HeldByRotation(pass);
   return press;

@@ -18,10 +18,13 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, int pass, const 
   PetscFunctionBeginUser;
   if (side.Is(DieFrom::None)) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
-  PetscCheck(!AnyPassForced(opt) && ReleaseOfPass(opt, pass) != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
-             "%s %s: side dies are not with -die_force or -pass<N>_die_force (one force-controlled motion at a "
-             "time), nor with %s withdraw",
-             name.c_str(), value.c_str(), OptionOfPass(pass, "unload").c_str());
+  PetscCheck(!Extent(opt, pass).Forced(), comm, PETSC_ERR_USER_INPUT,
+             "%s %s: side dies are not with %s in their pass (they press by its stroke, which a force leaves an "
+             "unknown)",
+             name.c_str(), value.c_str(), OptionOfPass(pass, "die_force").c_str());
+  PetscCheck(ReleaseOfPass(opt, pass) != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
+             "%s %s: side dies are not withdrawn (%s withdraw); let them go by reverse", name.c_str(), value.c_str(),
+             OptionOfPass(pass, "unload").c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -73,7 +76,7 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
              PassOption(pass, "lower_die_motion").c_str(), PassOption(pass, "side_die").c_str(),
              PassOption(pass, "die_offset").c_str(), PassOption(pass, "side_force").c_str(),
              PassOption(pass, "unload").c_str(), stroke.c_str(), ordinal.c_str());
-  if (p.dies.side.Given() || (p.release && e.Given())) // (its own side dies, or the first pass's)
+  if (p.dies.side.Given() || e.Given()) // (its own side dies, or the first pass's)
     PetscCall(CheckSideDies(comm, opt, pass, OptionOfPass(p.dies.side.Given() ? pass : 0, "side_die"),
                             DiesOfPass(opt, pass).side));
   PetscCall(CheckPassOffset(comm, opt, pass));
