@@ -62,12 +62,15 @@ std::unique_ptr<Scene> MakeAnySlideScene(const Options &opt)
 
 const std::vector<SceneEntry> &SceneRegistry()
 {
-  // The options only some scenes read (`reads`): the V-die's, friction's where something touches, each scene's own.
+  // The options only some scenes read (`reads`): the V-die's, friction's where something touches, the release's and
+  // the stroke's path where tools let the tube go, each scene's own.
   static const std::vector<SceneEntry> scenes = {
     {"squaring", "quarter tube pressed by the upper 90-degree V-die (the paper's process)", MakeSquaringScene,
-     ScenePress::Die, "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge -friction_mu -friction_vcri"},
+     ScenePress::Die,
+     "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge -friction_mu -friction_vcri -unload -springback "
+     "-stroke_path -stroke_corner_radius"},
     {"flattening", "quarter ring crushed by a flat plate", MakeFlatteningScene, ScenePress::Plate,
-     "-friction_mu -friction_vcri"},
+     "-friction_mu -friction_vcri -unload -springback -stroke_path"},
     {"pressure", "quarter thick cylinder under internal pressure (Lame, Hill)", MakePressureScene, ScenePress::None,
      "-pressure_", TF_OWN(Pressure)},
     {"shear", "simple shear of a block (Jaumann objectivity)", MakeShearScene, ScenePress::None, "-shear_",
@@ -79,7 +82,7 @@ const std::vector<SceneEntry> &SceneRegistry()
     {"tension", "plane-strain tension or compression of a block (flow curve)", MakeTensionScene, ScenePress::None,
      "-tension_", TF_OWN(Tension)},
     {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene, ScenePress::None,
-     "-bending_", TF_OWN(Bending)},
+     "-bending_ -springback", TF_OWN(Bending)},
     {"slide", "a block pushed along a floor, or a ring turned in a cylinder (-slide_tool arc): Coulomb friction",
      MakeAnySlideScene, ScenePress::None, "-slide_ -friction_mu -friction_vcri", TF_OWN(Slide)},
   };
