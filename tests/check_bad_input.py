@@ -109,6 +109,8 @@ cases = [
      "-side_die flat: side dies are not withdrawn (-pass2_unload withdraw)"),
     (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_lower_die_motion", "path"], "-pass2_lower_die_motion"),
     (["-scene", "column", "-unload", "withdraw"], "-unload: read by the squaring and flattening scenes"),
+    (["-scene", "squaring", "-lower_die_motion", "path", "-lower_die_path", "1,0,2,1", "-pass2_stroke", "2"],
+     "give the second pass's, -pass2_lower_die_motion"),
     (["-scene", "tension", "-springback", "elastic"], "-springback: read by the squaring, flattening and bending"),
     (["-scene", "flattening", "-stroke_corner_radius", "3"], "-stroke_corner_radius: read by the squaring scene"),
     (["-scene", "squaring", "-pass2_lower_die_motion", "fixed"], "-pass2_lower_die_motion, -pass2_side_die"),
@@ -320,7 +322,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 184 and len(selected) == 10, f"{len(cases)} cases on 1 rank (184), {len(selected)} on 2 (10)")
+k.check(len(cases) == 185 and len(selected) == 10, f"{len(cases)} cases on 1 rank (185), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

@@ -18,7 +18,12 @@ B. The tools' travel at the end of the second pass (results' /tools displacement
 C. The run's own energy balance (energy_error, the punch load's work over the upper die's travel against the
    internal and friction work) at the end of FIXED within 1e-3: an upper die's work counted over U rather than its 2 U
    leaves half of the second press's work unmatched (the run stops at its own energy check, 25 %).
-Bad input: a word of its own kind (path) or the option without its pass's stroke: tests/check_bad_input.py.
+D. A first pass's lower die on a path of its own (-lower_die_motion path -lower_die_path 1,0,2,1: it waits to U = 1
+   mm, then rises 1 mm by U = 2), then a second pass over one that stays (-pass2_lower_die_motion fixed): the dies'
+   outlines at the ends (1e-12 mm) and the run's energy balance from U = 0.1 mm on within 1e-3 (C's; its first
+   increments' work is too small to judge it by).
+Bad input: a word of its own kind (path) or the option without its pass's stroke, a later pass after a lower die
+on a motion of its own without its own: tests/check_bad_input.py.
 """
 import numpy as np
 
@@ -28,7 +33,9 @@ tf, mpirun, src = args()
 k = Checks("pass_lower_motion")
 BASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src}/options/preset-fast.opts",
         "-error_estimate", 0, "-progress", 0, "-model", "half", "-stroke", 1.5, "-pass2_stroke", 2.5]
-RUNS = {"lower_mirror.h5": BASE, "lower_fixed.h5": BASE + ["-pass2_lower_die_motion", "fixed"]}
+RUNS = {"lower_mirror.h5": BASE, "lower_fixed.h5": BASE + ["-pass2_lower_die_motion", "fixed"],
+        "lower_own.h5": BASE[:-4] + ["-stroke", 2, "-lower_die_motion", "path", "-lower_die_path", "1,0,2,1",
+                                     "-pass2_stroke", 2, "-pass2_lower_die_motion", "fixed"]}
 run_all(tf, mpirun, [opts + ["-output", out(name)] for name, opts in RUNS.items()], timeout=600)
 mirror, fixed = history_and_tools(out("lower_mirror.h5")), history_and_tools(out("lower_fixed.h5"))
 
@@ -59,4 +66,13 @@ for (name, tool), (x, y) in want.items():
 # C. The run's energy balance over the upper die's travel.
 err = abs(fixed["energy_error"][-1])
 k.check(err <= 1e-3, f"C. FIXED's energy balance at its end: {err:.1e} (1e-3)")
+
+# D. A first pass's lower die on a path of its own, a second pass's staying.
+own = history_and_tools(out("lower_own.h5"))
+first = own["tools"]["lower-V-die"][-1][0]
+second = own["tools"]["pass2-lower-V-die"][-1][0]
+err = np.abs(own["energy_error"][(own["stroke"] >= 0.1) | (own["stage"] > 0)]).max()  # (from U = 0.1 mm: its work)
+k.check(max(abs(first[0]), abs(first[1] - 1.0), abs(second[0]), abs(second[1])) <= 1e-12 and err <= 1e-3,
+        f"D. the first pass's lower die risen by ({first[0]:.6g}, {first[1]:.6g}) mm along its path, the second's by "
+        f"({second[0]:.6g}, {second[1]:.6g}) (1e-12); the energy balance within {err:.1e} from U = 0.1 mm (1e-3)")
 k.done()

@@ -42,17 +42,23 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 void SetDiePathStroke(Options &opt) { opt.stroke.u = -0.5 * DiePath(opt).Last()[1]; }
 
 // A lower die on a motion of its own (neither mirror nor fixed: a path, or another kind; its options are its
-// kind's own reader's, tool/motion.hpp): one pass, the stroke rising.
+// kind's own reader's, tool/motion.hpp): the first pass's, the stroke rising; a later pass's lower die moves as its
+// own -pass<N>_lower_die_motion says (the motion's strokes are the first pass's).
 PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 {
+  const char *word = ToolsOf(opt).lower_motion.word.c_str();
   PetscFunctionBeginUser;
-  const bool own = LowerDieMoves(opt, 0, LowerDieMove::Own);
-  PetscCheck(!own || (opt.stroke.path.empty() && opt.release.unload != Unload::Withdraw && PassCount(opt) == 1 &&
-                      opt.stroke.corner_radius <= 0),
-             comm, PETSC_ERR_USER_INPUT,
-             "-lower_die_motion %s: the lower die follows its motion as the stroke rises, in one pass: not with "
-             "-stroke_path, -unload withdraw, -pass2_stroke or -stroke_corner_radius",
-             ToolsOf(opt).lower_motion.word.c_str());
+  if (!LowerDieMoves(opt, 0, LowerDieMove::Own)) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(opt.stroke.path.empty() && opt.release.unload != Unload::Withdraw && opt.stroke.corner_radius <= 0, comm,
+             PETSC_ERR_USER_INPUT,
+             "-lower_die_motion %s: the lower die follows its motion as the stroke rises: not with -stroke_path, "
+             "-unload withdraw or -stroke_corner_radius",
+             word);
+  for (int pass = 1; pass < PassCount(opt); ++pass)
+    PetscCheck(LaterPass(opt, pass).lower_motion, comm, PETSC_ERR_USER_INPUT,
+               "-lower_die_motion %s: the first pass's lower die on a motion of its own; give the %s pass's, %s "
+               "mirror or fixed",
+               word, PassOrdinal(pass).c_str(), PassOption(pass, "lower_die_motion").c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
