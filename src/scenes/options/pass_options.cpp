@@ -31,94 +31,106 @@ PetscErrorCode ReadPassLowerMotion(PetscOptionItems *PetscOptionsObject, OptionR
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The second pass: its stroke, dies and turn (the help's text; a later pass's options read by the same names).
-PetscErrorCode ReadSecondPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, PassSpec &pass)
+// What a later pass reads under its prefix (-pass<N>_<name>), in -help's order: the second pass's help says what
+// each is, a later pass's points at the second's (with `later`, what differs).
+enum class PassValue { Stroke, Profile, Lower, Side, Turn, Offset, SideForce, Release, LowerMotion };
+struct PassOption {
+  const char *name;
+  PassValue value;
+  const char *help;       // the second pass's
+  const char *later = ""; // said of a later pass's besides "as -pass2_<name>'s"
+};
+const PassOption kPassOptions[] = {
+  {"stroke", PassValue::Stroke,
+   "squaring: a second pass after the springback: press again until the upper die is at this stroke (mm, from the "
+   "same zero as -stroke: the die touching the round tube; it starts where it touches the tube; 0: one pass), then "
+   "spring back; a third pass and more (up to 9) by the same options with their number: -pass3_stroke, -pass3_turn, "
+   "... (docs/dies.md)"},
+  {"die_profile", PassValue::Profile,
+   "squaring: the second pass's upper die from a profile file (default: the first pass's die)"},
+  {"lower_die", PassValue::Lower,
+   "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first pass's -lower_die)"},
+  {"side_die", PassValue::Side,
+   "squaring: the second pass's side dies: none, mirror, flat or a profile file (default: the first pass's "
+   "-side_die)"},
+  {"turn", PassValue::Turn,
+   "squaring: the tube turned counter-clockwise by this many degrees (-360 to 360) before the second pass: its dies "
+   "press along the turned axis (not a multiple of 90: the full model, held by the rotation hold; a later pass's "
+   "-pass<N>_turn turns it on from the pass before's; docs/dies.md)",
+   " (from the pass before's press)"},
+  {"die_offset", PassValue::Offset,
+   "squaring: the second pass's upper die moved off its press's y axis by this along the press's x (mm; the full "
+   "model, held by the rotation hold; default 0: on the axis, whatever -die_offset says; docs/dies.md)"},
+  {"side_force", PassValue::SideForce,
+   "squaring: the second pass's side dies pressing with a force rising from 0 to this (N/mm, on the whole tube) "
+   "over its press, their travel an unknown of each increment (default 0: by the stroke, whatever -side_force says; "
+   "docs/dies.md)"},
+  {"unload", PassValue::Release,
+   "squaring: how the second pass lets the tube go: reverse, withdraw (the quarter model) or none (the last pass "
+   "only: the run ends loaded) (default: the first pass's -unload; docs/dies.md)"},
+  {"lower_die_motion", PassValue::LowerMotion,
+   "squaring: how the second pass's lower die moves: mirror (up by the stroke, the upper die's mirror) or fixed (it "
+   "stays; the upper die travels 2 U) (default: the first pass's -lower_die_motion; docs/dies.md)"},
+};
+
+// One of a later pass's options (`name`, with its help) into `pass`.
+PetscErrorCode ReadPassValue(PetscOptionItems *PetscOptionsObject, OptionReader &read, PassValue value,
+                             const std::string &name, const std::string &help, PassSpec &pass)
 {
+  const char *n = name.c_str(), *h = help.c_str();
   PetscFunctionBeginUser;
-  PetscCall(read.Real(PetscOptionsObject, "-pass2_stroke",
-                      "squaring: a second pass after the springback: press again until the upper die is at this "
-                      "stroke (mm, from the same zero as -stroke: the die touching the round tube; it starts where it "
-                      "touches the tube; 0: one pass), then spring back; a third pass and more (up to 9) by the same "
-                      "options with their number: -pass3_stroke, -pass3_turn, ... (docs/dies.md)",
-                      pass.stroke));
-  PetscCall(ReadDrawingChoice(PetscOptionsObject, read, "-pass2_die_profile",
-                              "squaring: the second pass's upper die from a profile file (default: the first pass's "
-                              "die)",
-                              pass.dies.upper));
-  PetscCall(ReadDieChoice(PetscOptionsObject, read, "-pass2_lower_die",
-                          "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first "
-                          "pass's -lower_die)",
-                          false, pass.dies.lower));
-  PetscCall(ReadDieChoice(PetscOptionsObject, read, "-pass2_side_die",
-                          "squaring: the second pass's side dies: none, mirror, flat or a profile file (default: the "
-                          "first pass's -side_die)",
-                          true, pass.dies.side));
-  PetscCall(read.Real(PetscOptionsObject, "-pass2_turn",
-                      "squaring: the tube turned counter-clockwise by this many degrees (-360 to 360) before the "
-                      "second pass: its dies press along the turned axis (not a multiple of 90: the full model, "
-                      "held by the rotation hold; a later pass's -pass<N>_turn turns it on from the pass before's; "
-                      "docs/dies.md)",
-                      pass.turn));
-  PetscCall(read.Real(PetscOptionsObject, "-pass2_die_offset",
-                      "squaring: the second pass's upper die moved off its press's y axis by this along the press's x "
-                      "(mm; the full model, held by the rotation hold; default 0: on the axis, whatever -die_offset "
-                      "says; docs/dies.md)",
-                      pass.dies.offset));
-  PetscCall(read.Real(PetscOptionsObject, "-pass2_side_force",
-                      "squaring: the second pass's side dies pressing with a force rising from 0 to this (N/mm, on "
-                      "the whole tube) over its press, their travel an unknown of each increment (default 0: by the "
-                      "stroke, whatever -side_force says; docs/dies.md)",
-                      pass.dies.side_force));
-  PetscCall(ReadPassRelease(PetscOptionsObject, read, "-pass2_unload",
-                            "squaring: how the second pass lets the tube go: reverse, withdraw (the quarter model) "
-                            "or none (the last pass only: the run ends loaded) (default: the first pass's -unload; "
-                            "docs/dies.md)",
-                            pass.release));
-  PetscCall(ReadPassLowerMotion(PetscOptionsObject, read, "-pass2_lower_die_motion",
-                                "squaring: how the second pass's lower die moves: mirror (up by the stroke, the upper "
-                                "die's mirror) or fixed (it stays; the upper die travels 2 U) (default: the first "
-                                "pass's -lower_die_motion; docs/dies.md)",
-                                pass.lower_motion));
+  switch (value) {
+  case PassValue::Stroke:
+    PetscCall(read.Real(PetscOptionsObject, n, h, pass.stroke));
+    break;
+  case PassValue::Profile:
+    PetscCall(ReadDrawingChoice(PetscOptionsObject, read, n, h, pass.dies.upper));
+    break;
+  case PassValue::Lower:
+    PetscCall(ReadDieChoice(PetscOptionsObject, read, n, h, false, pass.dies.lower));
+    break;
+  case PassValue::Side:
+    PetscCall(ReadDieChoice(PetscOptionsObject, read, n, h, true, pass.dies.side));
+    break;
+  case PassValue::Turn:
+    PetscCall(read.Real(PetscOptionsObject, n, h, pass.turn));
+    break;
+  case PassValue::Offset:
+    PetscCall(read.Real(PetscOptionsObject, n, h, pass.dies.offset));
+    break;
+  case PassValue::SideForce:
+    PetscCall(read.Real(PetscOptionsObject, n, h, pass.dies.side_force));
+    break;
+  case PassValue::Release:
+    PetscCall(ReadPassRelease(PetscOptionsObject, read, n, h, pass.release));
+    break;
+  case PassValue::LowerMotion:
+    PetscCall(ReadPassLowerMotion(PetscOptionsObject, read, n, h, pass.lower_motion));
+    break;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Pass `number` (3 to kMaxPasses): -pass<number>_stroke, _die_profile, _lower_die, _side_die, _turn, _die_offset,
-// _side_force, _unload, _lower_die_motion, as the second pass's. Read (and listed by -help) where one of them is given;
-// named for the hints on a misspelt option always.
-PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, int number, PassSpec &pass)
+// Pass `number` (2 to kMaxPasses): its options of kPassOptions. The second pass's always read (and listed by -help);
+// a later one's where one of them is given, named for the hints on a misspelt option always.
+PetscErrorCode ReadPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, int number, PassSpec &pass)
 {
   const std::string pre = "-pass" + std::to_string(number) + "_";
-  const std::string stroke = pre + "stroke", profile = pre + "die_profile", lower = pre + "lower_die",
-                    side = pre + "side_die", turn = pre + "turn", offset = pre + "die_offset",
-                    side_force = pre + "side_force", unload = pre + "unload", lower_motion = pre + "lower_die_motion";
-  const std::string help = "squaring: pass " + std::to_string(number) + "'s, as -pass2_";
-  bool given = false;
+  const std::string as = "squaring: pass " + std::to_string(number) + "'s, as -pass2_";
+  bool given = number == 2;
   PetscFunctionBeginUser;
-  for (const std::string *name :
-       {&stroke, &profile, &lower, &side, &turn, &offset, &side_force, &unload, &lower_motion}) {
+  for (const PassOption &o : kPassOptions) {
     PetscBool set;
-    PetscCall(PetscOptionsHasName(nullptr, nullptr, name->c_str(), &set));
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, (pre + o.name).c_str(), &set));
     given = given || set;
   }
-  if (!given) {
-    for (const std::string *name :
-         {&stroke, &profile, &lower, &side, &turn, &offset, &side_force, &unload, &lower_motion})
-      read.Note(name->c_str(), (help + name->substr(pre.size()) + "'s").c_str(), PetscOptionsObject->title);
-    PetscFunctionReturn(PETSC_SUCCESS);
+  for (const PassOption &o : kPassOptions) {
+    const std::string name = pre + o.name, help = number == 2 ? o.help : as + o.name + "'s" + o.later;
+    if (given)
+      PetscCall(ReadPassValue(PetscOptionsObject, read, o.value, name, help, pass));
+    else
+      read.Note(name.c_str(), help.c_str(), PetscOptionsObject->title);
   }
-  PetscCall(read.Real(PetscOptionsObject, stroke.c_str(), (help + "stroke").c_str(), pass.stroke));
-  PetscCall(
-    ReadDrawingChoice(PetscOptionsObject, read, profile.c_str(), (help + "die_profile").c_str(), pass.dies.upper));
-  PetscCall(
-    ReadDieChoice(PetscOptionsObject, read, lower.c_str(), (help + "lower_die").c_str(), false, pass.dies.lower));
-  PetscCall(ReadDieChoice(PetscOptionsObject, read, side.c_str(), (help + "side_die").c_str(), true, pass.dies.side));
-  PetscCall(
-    read.Real(PetscOptionsObject, turn.c_str(), (help + "turn (from the pass before's press)").c_str(), pass.turn));
-  PetscCall(read.Real(PetscOptionsObject, offset.c_str(), (help + "die_offset").c_str(), pass.dies.offset));
-  PetscCall(read.Real(PetscOptionsObject, side_force.c_str(), (help + "side_force").c_str(), pass.dies.side_force));
-  PetscCall(ReadPassRelease(PetscOptionsObject, read, unload.c_str(), (help + "unload").c_str(), pass.release));
-  PetscCall(ReadPassLowerMotion(PetscOptionsObject, read, lower_motion.c_str(), (help + "lower_die_motion").c_str(),
-                                pass.lower_motion));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -127,9 +139,8 @@ PetscErrorCode ReadLaterPass(PetscOptionItems *PetscOptionsObject, OptionReader 
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
-  PetscCall(ReadSecondPass(PetscOptionsObject, read, ToolsOf(opt).passes[1]));
-  for (int number = 3; number <= kMaxPasses; ++number)
-    PetscCall(ReadLaterPass(PetscOptionsObject, read, number, ToolsOf(opt).passes[number - 1]));
+  for (int number = 2; number <= kMaxPasses; ++number)
+    PetscCall(ReadPass(PetscOptionsObject, read, number, ToolsOf(opt).passes[number - 1]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
