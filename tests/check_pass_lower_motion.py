@@ -10,8 +10,8 @@ first pass left under it).
 
 A. The second pass of FIXED presses as MIRROR's: load, C1, C2, C/t, internal and friction work at the end of each
    stage within 1e-5 of each column's largest value. The bound: the rigid motion costs only the tube's inertia at the
-   punch speed (measured 1e-7 in C/t, 2e-8 in the load); a lower die that moved as the first pass's, or an upper die
-   travelling U over a die that stays, closes the dies by another amount and moves the end load by O(10 %).
+   punch speed (measured 1e-7 in C/t, 2e-8 in the load). A says the two motions give one press; B that FIXED's
+   lower die did stay (a pass's motion ignored makes the two runs one, which A alone would pass).
 B. The tools' travel at the end of the second pass (results' /tools displacement, exact in floating point: 1e-12
    mm): FIXED's lower die (0, 0), its upper die (0, -2 x 2.5); MIRROR's (0, 2.5) and (0, -2.5). The first pass's
    dies, the same in both runs: (0, 1.5) and (0, -1.5).

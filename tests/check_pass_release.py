@@ -92,9 +92,10 @@ for stage, want in ((1, 0.0), (3, wd_attrs["pass2_start_stroke"])):
 for stage in range(4):
     rows = np.where(wd["stage"] == stage)[0]
     before = rows[0] - 1 if rows[0] > 0 else None
-    # (a press from its first row's stroke, the die touching; a withdrawal from where the press before it ended)
-    stroke = np.concatenate(([0.0] if before is None else
-                             [wd["stroke"][before] if stage % 2 else wd["stroke"][rows[0]]], wd["stroke"][rows]))
+    # (a press from where its dies start, touching the tube: the first's 0, a later one's pass<N>_start_stroke; a
+    # withdrawal from where the press before it ended)
+    start = 0.0 if stage == 0 else wd["stroke"][before] if stage % 2 else wd_attrs[f"pass{stage // 2 + 1}_start_stroke"]
+    stroke = np.concatenate(([start], wd["stroke"][rows]))
     load = np.concatenate(([0.0] if stage % 2 == 0 else [wd["load"][before]], wd["load"][rows]))
     work = 0.5 * np.sum(0.5 * (load[1:] + load[:-1]) * np.diff(stroke))  # (the quarter's half of the load)
     grown = sum(wd[c][rows[-1]] - (0.0 if before is None else wd[c][before]) for c in ("w_int", "w_friction"))

@@ -19,13 +19,15 @@ A. The energy balance from the history's columns: the punch load over the stroke
    second press.
 B. LEFT is RIGHT's mirror image: load, side load, C1, C2, internal work within 1e-6 of each column's largest
    (tests/check_hold.py C's bound), the upper die's sideways force opposite.
+C. MIXED's first pass: the plates' force follows the force's ramp, 20 N/mm at its end within 1e-6 N/mm
+   (tests/check_side_dies.py E's bound); its second pass held by the rotation hold (hold_moment set in its press).
 D. Passes of other kinds beside side dies: FORCED, a first pass pressed by a force (-die_force 80, the quarter model)
    then a second with side plates (-pass2_side_die flat) by the stroke to U = 2 mm; PATH, a first pass with side
    plates to 1.5 mm then a second on a path of its own (-pass2_die_path 0,-3 over a lower die that stays, the half
-   model) without them. Each press's balance as A's. A second pass's side plates whose travel starts from the first
-   pass's -stroke rather than where its force left the die misses by 0.27 in FORCED's second press.
-C. MIXED's first pass: the plates' force follows the force's ramp, 20 N/mm at its end within 1e-6 N/mm
-   (tests/check_side_dies.py E's bound); its second pass held by the rotation hold (hold_moment set in its press).
+   model) without them. FORCED's two presses' balance as A's (its second's side plates start from where the
+   force left the die); PATH's second press's (the rule that let it run is its pass's: it has no side plates). A
+   second pass's side plates whose travel starts from the first pass's -stroke rather than where its force left the
+   die misses by 0.27 in FORCED's second press.
 """
 import h5py
 import numpy as np

@@ -34,7 +34,10 @@ const ToolColumns &LowerDieColumns()
 const ToolColumns &SideDieColumns()
 {
   static const ToolColumns c({
-    {"side_load", "-side_die: each side die's force along its motion, on the whole tube (N/mm; 0 without)", "lower_fy"},
+    {"side_load",
+     "-side_die: each side die's force along its motion, on the whole tube (N/mm; 0 without; the full model: the "
+     "mean of the two)",
+     "lower_fy"},
     {"side_stroke",
      "-side_die: the side dies' travel towards the tube's centre (mm): the stroke, or their own with -side_force",
      "lower_moment"},

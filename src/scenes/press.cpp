@@ -141,7 +141,7 @@ PetscErrorCode PressScene::BeginStage(Model &m, double lambda)
     PetscCall(StartPass(m));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  const Unload release = passes_[pass_].release;
+  const Unload release = passes_[pass_].release; // (none: the run ends before its release, Path)
   const bool elastic = ElasticRelease(opt_, release);
   if (release == Unload::Withdraw) { // (the dies go back along their way: ToolStroke; the nodes leave them by r5)
     m.body.BeginRelease(elastic, false);
@@ -219,8 +219,8 @@ PetscErrorCode PressScene::CheckWithdrawn(Model &m, int next) const
   PetscCheck(load <= kWithdrawnLoad * hold_.largest_load(), m.comm, PETSC_ERR_USER_INPUT,
              "%s %s: the %s pass's dies, withdrawn to where they started, still press the tube with %g N/mm (it "
              "reaches past their start); let it go by %s reverse",
-             OptionOfPass(next - 1, "unload").c_str(), WordOf(kUnloadWords, Unload::Withdraw),
-             PassOrdinal(next - 1).c_str(), load, OptionOfPass(next - 1, "unload").c_str());
+             ReleaseOption(opt_, next - 1).c_str(), WordOf(kUnloadWords, Unload::Withdraw),
+             PassOrdinal(next - 1).c_str(), load, ReleaseOption(opt_, next - 1).c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

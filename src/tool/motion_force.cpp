@@ -52,12 +52,14 @@ std::string CheckForceInPress(const MotionSpec &spec, const MotionPress &press)
   const std::string stroke = Formatted("-pass%d_stroke", press.pass + 1);
   if (!press.tools)
     return name + ": the " + press.scene + " scene presses with no dies (the squaring and flattening scenes' option)";
+  const std::string lower =
+    press.pass == 0 ? "-lower_die_motion" : Formatted("-pass%d_lower_die_motion", press.pass + 1);
   if (!press.quarter && !press.lower_stays)
-    return name + ": with the half or full model the lower die must stay (-lower_die_motion fixed); a lower die "
-                  "moving by the upper one's unknown stroke is not available";
-  const std::string unload = press.pass == 0 ? "-unload" : Formatted("-pass%d_unload", press.pass + 1);
-  if (press.withdraw)
-    return name + ": " + unload + " withdraw moves the die back by its stroke; use " + unload + " reverse or none";
+    return name + ": with the half or full model the lower die must stay (" + lower +
+           " fixed); a lower die moving by the upper one's unknown stroke is not available";
+  if (!press.withdrawn_by.empty())
+    return name + ": " + press.withdrawn_by +
+           " withdraw moves the die back by its stroke; let the pass go by reverse (or none, the last pass)";
   if (press.stroke_given)
     return name + ": in place of " + stroke +
            " (the pass ends at that punch load, its stroke the outcome); give one "

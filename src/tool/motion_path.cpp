@@ -159,9 +159,12 @@ std::string CheckPathInPress(const MotionSpec &spec, const MotionPress &press)
     return Formatted("%s: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)",
                      name.c_str(), y);
   if (!press.lower_stays)
-    return name + ": the path is the upper die's, relative to a lower die that stays: give -lower_die_motion fixed";
+    return name + ": the path is the upper die's, relative to a lower die that stays: give " +
+           (press.pass == 0 ? std::string("-lower_die_motion")
+                            : Formatted("-pass%d_lower_die_motion", press.pass + 1)) +
+           " fixed";
   if (press.pass == 0 &&
-      (press.stroke_path || press.corner_radius || press.side_dies || press.withdraw || press.die_offset))
+      (press.stroke_path || press.corner_radius || press.side_dies || !press.withdrawn_by.empty() || press.die_offset))
     return name + ": in place of -stroke and -stroke_path: not with -stroke_path, -stroke_corner_radius, -side_die, "
                   "-unload withdraw or -die_offset (a path sideways is its own offset)";
   if (press.pass > 0 && press.die_offset)

@@ -205,12 +205,10 @@ inline Unload ReleaseOfPass(const Options &opt, int pass)
 {
   return pass > 0 ? LaterPass(opt, pass).release.value_or(opt.release.unload) : opt.release.unload;
 }
-// A pass in the run lets the tube go by `release` (PassCount: the passes given).
-inline bool AnyPassReleases(const Options &opt, Unload release)
+// The option that gives pass `pass`'s release: its own -pass<N>_unload, or the first pass's -unload it takes.
+inline std::string ReleaseOption(const Options &opt, int pass)
 {
-  for (int k = 0; k < PassCount(opt); ++k)
-    if (ReleaseOfPass(opt, k) == release) return true;
-  return false;
+  return pass > 0 && LaterPass(opt, pass).release ? PassOption(pass, "unload") : "-unload";
 }
 // What the choice of the model reads of a pass's tools (ModelOf; every pass's, given or not: a pass given without
 // its stroke is refused after the model is chosen). Side dies press both sides alike: they choose nothing.

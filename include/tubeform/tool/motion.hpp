@@ -120,7 +120,7 @@ struct MotionPress {
   int pass = 0;               // the pass (0 the first)
   bool quarter = true;        // the quarter model
   bool lower_stays = false;   // the lower die stays (-lower_die_motion fixed)
-  bool withdraw = false;      // the pass's dies let go by withdrawal (-unload withdraw, -pass<N>_unload withdraw)
+  std::string withdrawn_by;   // the option that withdraws the pass's dies (-unload, -pass<N>_unload; "": not so)
   bool stroke_given = false;  // a later pass's stroke given as well (-pass<N>_stroke)
   bool stroke_path = false;   // the first pass's stroke along -stroke_path
   bool corner_radius = false; // the first pass's stroke from -stroke_corner_radius

@@ -13,7 +13,7 @@ MotionPress PressOfPass(const Options &opt, int pass)
   press.pass = pass;
   const ModelChoice model = ModelOf(opt); // (once: the model and the pass's hold)
   press.quarter = model.part == TubeModel::Quarter, press.lower_stays = LowerDieMoves(opt, pass, LowerDieMove::Fixed);
-  press.withdraw = ReleaseOfPass(opt, pass) == Unload::Withdraw;
+  if (ReleaseOfPass(opt, pass) == Unload::Withdraw) press.withdrawn_by = ReleaseOption(opt, pass);
   press.stroke_given = pass > 0 && LaterPass(opt, pass).stroke != 0;
   press.stroke_path = !opt.stroke.path.empty(), press.corner_radius = opt.stroke.corner_radius > 0;
   press.side_dies = !DiesOfPass(opt, pass).side.Is(DieFrom::None);

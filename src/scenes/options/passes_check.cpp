@@ -24,7 +24,7 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, int pass, const 
              name.c_str(), value.c_str(), OptionOfPass(pass, "die_force").c_str());
   PetscCheck(ReleaseOfPass(opt, pass) != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
              "%s %s: side dies are not withdrawn (%s withdraw); let them go by reverse", name.c_str(), value.c_str(),
-             OptionOfPass(pass, "unload").c_str());
+             ReleaseOption(opt, pass).c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -65,7 +65,7 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   const Unload before = ReleaseOfPass(opt, pass - 1);
   PetscCheck(!e.Given() || before != Unload::None, comm, PETSC_ERR_USER_INPUT,
              "%s %g: a %s pass follows the %s pass's release; give %s reverse or withdraw (not none)", given.c_str(),
-             e.Target(), ordinal.c_str(), PassOrdinal(pass - 1).c_str(), OptionOfPass(pass - 1, "unload").c_str());
+             e.Target(), ordinal.c_str(), PassOrdinal(pass - 1).c_str(), ReleaseOption(opt, pass - 1).c_str());
   PetscCheck(!e.Given() || pass == 1 || Extent(opt, pass - 1).Given(), comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", given.c_str(), e.Target(), ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());

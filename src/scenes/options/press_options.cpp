@@ -69,7 +69,7 @@ PetscErrorCode CheckRelease(MPI_Comm comm, const Options &opt)
   for (int k = 0; k < PassCount(opt); ++k)
     PetscCheck(QuarterModel(opt) || ReleaseOfPass(opt, k) != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
                "%s withdraw: not with the half model (the tube would come free of both dies); use %s reverse",
-               OptionOfPass(k, "unload").c_str(), OptionOfPass(k, "unload").c_str());
+               ReleaseOption(opt, k).c_str(), ReleaseOption(opt, k).c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
