@@ -127,7 +127,7 @@ def bad_input_cases(src, out):
         (["-scene", "tension", "-die_offset", "0.5"], "presses with no dies"),
         (["-scene", "flattening", "-die_offset", "0.5"], "-die_offset 0.5: the squaring scene's die"),
         (["-scene", "squaring", "-pass2_die_offset", "0.5"],
-         "-pass2_die_offset, -pass2_side_force, -pass2_unload: give"),
+         "-pass2_die_offset, -pass2_side_force, -pass2_unload: give -pass2_stroke"),
         (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "inf"], "-pass2_die_offset inf"),
         (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "0.5", "-model", "half"], "0.5: a die off"),
         (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_offset", "0.5", "-full_hold", "pins"],

@@ -26,7 +26,7 @@ static_assert(std::size(kLowerMotions) == static_cast<size_t>(LowerDieMove::Own)
 
 const LowerMotion &LowerMotionOf(const Options &o, int pass)
 {
-  return kLowerMotions[static_cast<size_t>(LowerDieOfPass(o, pass).move)];
+  return kLowerMotions[static_cast<size_t>(LowerDieAsGiven(o, pass).move)];
 }
 } // namespace
 

@@ -49,13 +49,11 @@ PetscErrorCode ReadForce(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
 std::string CheckForceInPress(const MotionSpec &spec, const MotionPress &press)
 {
   const std::string name = Formatted("%sforce %g", press.prefix.c_str(), spec.force);
-  const std::string stroke = Formatted("-pass%d_stroke", press.pass + 1);
+  const std::string stroke = press.Option("stroke");
   if (!press.tools)
     return name + ": the " + press.scene + " scene presses with no dies (the squaring and flattening scenes' option)";
-  const std::string lower =
-    press.pass == 0 ? "-lower_die_motion" : Formatted("-pass%d_lower_die_motion", press.pass + 1);
   if (!press.quarter && !press.lower_stays)
-    return name + ": with the half or full model the lower die must stay (" + lower +
+    return name + ": with the half or full model the lower die must stay (" + press.Option("lower_die_motion") +
            " fixed); a lower die moving by the upper one's unknown stroke is not available";
   if (!press.withdrawn_by.empty())
     return name + ": " + press.withdrawn_by +

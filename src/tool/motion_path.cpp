@@ -160,9 +160,7 @@ std::string CheckPathInPress(const MotionSpec &spec, const MotionPress &press)
                      name.c_str(), y);
   if (!press.lower_stays)
     return name + ": the path is the upper die's, relative to a lower die that stays: give " +
-           (press.pass == 0 ? std::string("-lower_die_motion")
-                            : Formatted("-pass%d_lower_die_motion", press.pass + 1)) +
-           " fixed";
+           press.Option("lower_die_motion") + " fixed";
   if (press.pass == 0 &&
       (press.stroke_path || press.corner_radius || press.side_dies || !press.withdrawn_by.empty() || press.die_offset))
     return name + ": in place of -stroke and -stroke_path: not with -stroke_path, -stroke_corner_radius, -side_die, "
@@ -170,8 +168,8 @@ std::string CheckPathInPress(const MotionSpec &spec, const MotionPress &press)
   if (press.pass > 0 && press.die_offset)
     return name + ": not with " + press.prefix + "offset (a path sideways is its own offset)";
   if (press.pass > 0 && press.side_dies)
-    return name + ": not with side dies in its pass (-side_die, " + press.prefix.substr(0, press.prefix.size() - 4) +
-           "side_die), which press by the stroke";
+    return name + ": not with side dies in its pass (-side_die, " + press.Option("side_die") +
+           "), which press by the stroke";
   if (press.pass > 0 && press.off_axis && !press.held)
     return name + ": a die off the axis (a sideways point or a turn) breaks the tube's mirror symmetry; use -model "
                   "full (or auto) -full_hold rotation (or auto)";

@@ -95,12 +95,17 @@ inline DieShape UpperDieShape(const Options &opt)
 }
 // It is the V-die (not drawn from a file).
 inline bool VDie(const Options &opt) { return FirstDies(opt).upper.VDie(); }
-// Pass `pass`'s lower die's motion as the scenes take it: its word, kind and spec (-lower_die_motion, or a later
-// pass's -pass<N>_lower_die_motion where given), the spec moving up (y) by the stroke.
-inline LowerDieSpec LowerDieOfPass(const Options &opt, int pass)
+// Pass `pass`'s lower die's motion as the options give it (-lower_die_motion, or a later pass's
+// -pass<N>_lower_die_motion where given), read without a copy.
+inline const LowerDieSpec &LowerDieAsGiven(const Options &opt, int pass)
 {
   const std::optional<LowerDieSpec> &own = ToolsOf(opt).passes[pass].lower_motion;
-  LowerDieSpec die = pass > 0 && own ? *own : ToolsOf(opt).lower_motion;
+  return pass > 0 && own ? *own : ToolsOf(opt).lower_motion;
+}
+// As the scenes take it: its word, kind and spec, the spec moving up (y) by the stroke.
+inline LowerDieSpec LowerDieOfPass(const Options &opt, int pass)
+{
+  LowerDieSpec die = LowerDieAsGiven(opt, pass);
   die.spec.direction = {0.0, 1.0};
   return die;
 }
@@ -109,7 +114,7 @@ inline LowerDieSpec LowerDie(const Options &opt) { return LowerDieOfPass(opt, 0)
 // Pass `pass`'s lower die goes with the upper die's motion as `move` says (mirror, fixed or its own).
 inline bool LowerDieMoves(const Options &opt, int pass, LowerDieMove move)
 {
-  return LowerDieOfPass(opt, pass).move == move;
+  return LowerDieAsGiven(opt, pass).move == move;
 }
 // A pass's upper die's kind is `kind` (`dies`: a pass's, FirstDies(opt), DiesOfPass or the scene's).
 inline bool DieMoves(const DieSet &dies, const char *kind) { return dies.motion.kind == kind; }
@@ -242,9 +247,9 @@ struct ModelChoice {
   // hold): a die off the axis in it or before it, a turn that is no quarter turn, an odd number of quarter turns from
   // an earlier pass not mirrored top to bottom.
   bool OffSymmetry(int pass) const;
-  // Pass `pass`'s two side dies meet the tube alike (their forces equal, which the run reports and counts as one):
-  // the tube mirrored about the press's y axis, or the same under a half turn (every pass up to it mirrored top to
-  // bottom, no die off the axis).
+  // Pass `pass`'s two side dies meet the tube alike (their forces and travels equal: side dies pressed by a force,
+  // each travelling its own way, need it): the tube mirrored about the press's y axis, or the same under a half turn
+  // (every pass up to it mirrored top to bottom, no die off the axis).
   bool SidesAlike(int pass) const;
 };
 // The model the options and the passes' tools choose (model_options.cpp).

@@ -128,6 +128,11 @@ struct MotionPress {
   bool die_offset = false;    // the pass's die moved off its axis (-die_offset, -pass<N>_die_offset)
   bool off_axis = false;      // the pass's die leaves its press's y axis (a sideways point or a turn)
   bool held = false;          // the pass is held by the rotation hold (the full model's)
+  // The pass's option `what`, the first pass's without a number: -lower_die_motion, -pass2_lower_die_motion, ...
+  std::string Option(const char *what) const
+  {
+    return pass == 0 ? std::string("-") + what : Formatted("-pass%d_%s", pass + 1, what);
+  }
 };
 // A kind's press check: "" or its refusal, one line naming the option and what goes with it.
 using MotionPressCheck = std::string (*)(const MotionSpec &spec, const MotionPress &press);

@@ -4,30 +4,18 @@
 namespace tf {
 
 namespace {
-// A later pass's release (-pass<N>_unload): unset where not given (the first pass's -unload then: ReleaseOfPass).
-PetscErrorCode ReadPassRelease(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name,
-                               const char *help, std::optional<Unload> &release)
+// A later pass's word option (one of an enum's `words`) into `out` as `make` turns it, where given; unset where not
+// (the first pass's then: ReleaseOfPass, LowerDieOfPass).
+template <class E, size_t N, class T, class Make>
+PetscErrorCode ReadGivenWord(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name,
+                             const char *help, const char *const (&words)[N], std::optional<T> &out, Make make)
 {
   PetscBool set;
-  Unload value = Unload::Reverse;
+  E value = static_cast<E>(0); // (-help's default: the first word)
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(nullptr, nullptr, name, &set));
-  PetscCall(ChooseWord(PetscOptionsObject, read, name, help, kUnloadWords, value));
-  if (set) release = value;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// A later pass's lower die's motion (-pass<N>_lower_die_motion): mirror or fixed; unset where not given (the first
-// pass's -lower_die_motion then: LowerDieOfPass).
-PetscErrorCode ReadPassLowerMotion(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *name,
-                                   const char *help, std::optional<LowerDieSpec> &motion)
-{
-  PetscBool set;
-  LowerDieMove move = LowerDieMove::Mirror;
-  PetscFunctionBeginUser;
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, name, &set));
-  PetscCall(ChooseWord(PetscOptionsObject, read, name, help, kLowerDieMoveWords, move));
-  if (set) motion = LowerDieOfWord(WordOf(kLowerDieMoveWords, move));
+  PetscCall(ChooseWord(PetscOptionsObject, read, name, help, words, value));
+  if (set) out = make(value);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -102,10 +90,13 @@ PetscErrorCode ReadPassValue(PetscOptionItems *PetscOptionsObject, OptionReader 
     PetscCall(read.Real(PetscOptionsObject, n, h, pass.dies.side_force));
     break;
   case PassValue::Release:
-    PetscCall(ReadPassRelease(PetscOptionsObject, read, n, h, pass.release));
+    PetscCall(
+      ReadGivenWord<Unload>(PetscOptionsObject, read, n, h, kUnloadWords, pass.release, [](Unload u) { return u; }));
     break;
   case PassValue::LowerMotion:
-    PetscCall(ReadPassLowerMotion(PetscOptionsObject, read, n, h, pass.lower_motion));
+    PetscCall(
+      ReadGivenWord<LowerDieMove>(PetscOptionsObject, read, n, h, kLowerDieMoveWords, pass.lower_motion,
+                                  [](LowerDieMove m) { return LowerDieOfWord(WordOf(kLowerDieMoveWords, m)); }));
     break;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
