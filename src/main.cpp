@@ -99,8 +99,7 @@ static PetscErrorCode Run()
   PetscMPIInt size;
   PetscFunctionBeginUser;
   PetscCall(tf::ReadOptions(PETSC_COMM_WORLD, tf::DriverOptions(), tf::SceneReaders(), opt));
-  if (opt.help) PetscFunctionReturn(tf::PrintSceneHelp(PETSC_COMM_WORLD));
-  PetscCall(tf::RefuseForeignOptions(PETSC_COMM_WORLD, opt));
+  if (opt.help) PetscFunctionReturn(tf::PrintSceneHelp(PETSC_COMM_WORLD, opt.known));
   opt.job_started = MPI_Wtime();
   PetscCallMPI(MPI_Comm_size(PETSC_COMM_WORLD, &size));
   tf::Problem::CompanionRun companion;

@@ -9,8 +9,8 @@ option of the factorization the run does not use), an option only other
 scenes read (naming them: scenes/registry.cpp), values that are not
 numbers and material constants not in MPa (E against the law's initial
 yield stress, however the material is given) are such errors too
-(-allow_unused lets a run go on with an unknown option: checked twice, with
-the warning); options PETSc reads only after the check, the E / sigma_y0
+(-allow_unused lets a run go on with an unknown option or one only other scenes read:
+checked three times, with the warning); options PETSc reads only after the check, the E / sigma_y0
 bounds themselves and the docs' solver options pass, with PETSc's own
 -options_left ("There are no unused options.") as the reference that each
 was read. Also the stall watch
@@ -77,7 +77,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 187 and len(selected) == 10, f"{len(cases)} cases on 1 rank (187), {len(selected)} on 2 (10)")
+k.check(len(cases) == 190 and len(selected) == 10, f"{len(cases)} cases on 1 rank (190), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):
@@ -141,6 +141,11 @@ p = run(tf, mpirun, 1, base + ["-output", out("allow2.h5"), "-allow_unused", "-w
 warned = [l for l in p.stdout.splitlines() if l.startswith("tubeform: warning: -wall_thickness 1.65: no scene")]
 k.check(p.returncode == 0 and os.path.exists("allow2.h5") and len(warned) == 1,
         f"-allow_unused -wall_thickness 1.65: the run goes on (exit {p.returncode}), warning: {warned}")
+p = run(tf, mpirun, 1, base + ["-output", out("allow3.h5"), "-allow_unused", "-target_load", "0.01"], check=False,
+        timeout=60)
+warned = [l for l in p.stdout.splitlines() if l.startswith("tubeform: warning: -target_load: read by the squaring")]
+k.check(p.returncode == 0 and os.path.exists("allow3.h5") and len(warned) == 1,
+        f"-allow_unused -target_load 0.01 (a pressure run): the run goes on (exit {p.returncode}), warning: {warned}")
 
 # Options that are read must pass: the E / sigma_y0 bounds themselves (python/tubeform_py/extremes.py's two ends); the
 # options PETSc reads only after the check (OptionsReadLater in src/io/options_left.cpp: at a solve, when the
@@ -157,18 +162,21 @@ solver = ["-redundant_mat_mumps_icntl_14", 50, "-redundant_mat_mumps_icntl_33", 
           "-redundant_pc_factor_mat_solver_type", "mumps", "-log_view", ":" + out("log_view.txt"), "-malloc_debug",
           "-malloc_dump", "-memory_view", "-ksp_view", "ascii:/dev/null"]
 lu = ["-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps", "-mat_mumps_icntl_14", 50, "-mat_mumps_icntl_33", 1]
-accepted = [(1, ["-material_law", "ludwik", "-material_sy", 1500]), (1, ["-material_law", "ludwik", "-material_sy", 15]),
-            (1, later), (1, viewer), (1, solver), (1, lu), (2, later), (2, solver),
-            (1, ["-die_force", 0])]  # (the old spelling of the stroke: -die_force 0, not by force)
+squaring = ["-options_file", f"{src}/options/squaring.opts", "-stroke", 0.1, "-increments", 5, "-error_estimate", 0,
+            "-unload", "none"]
+accepted = [(1, base, ["-material_law", "ludwik", "-material_sy", 1500]),
+            (1, base, ["-material_law", "ludwik", "-material_sy", 15]), (1, base, later), (1, base, viewer),
+            (1, base, solver), (1, base, lu), (2, base, later), (2, base, solver),
+            (1, squaring, ["-die_force", 0])]  # (the old spelling of the stroke: -die_force 0, not by force)
 # (the single-rank ones two at a time, each its own -output and -history_csv (options/pressure.opts names one for
 # all: two runs at once race to rename it into place); then the 2-rank ones one after another)
-ones = [(i, extra) for i, (np_, extra) in enumerate(accepted) if np_ == 1]
+ones = [(i, b, extra) for i, (np_, b, extra) in enumerate(accepted) if np_ == 1]
 with ThreadPoolExecutor(max_workers=2) as pool:
-    ran = dict(zip([i for i, _ in ones], pool.map(lambda c: run(tf, mpirun, 1, base + [
-        "-output", out(f"accepted_{c[0]}.h5"), "-history_csv", out(f"accepted_{c[0]}.csv"), "-options_left"] + c[1],
+    ran = dict(zip([i for i, _, _ in ones], pool.map(lambda c: run(tf, mpirun, 1, c[1] + [
+        "-output", out(f"accepted_{c[0]}.h5"), "-history_csv", out(f"accepted_{c[0]}.csv"), "-options_left"] + c[2],
         check=False, timeout=60), ones)))
-for i, (np_, extra) in enumerate(accepted):
-    p = ran[i] if np_ == 1 else run(tf, mpirun, np_, base + ["-output", out("accepted.h5"), "-options_left"] + extra,
+for i, (np_, b, extra) in enumerate(accepted):
+    p = ran[i] if np_ == 1 else run(tf, mpirun, np_, b + ["-output", out("accepted.h5"), "-options_left"] + extra,
                                      check=False, timeout=60)
     ok = p.returncode == 0 and "There are no unused options." in p.stdout
     lines = (p.stderr + p.stdout).splitlines()

@@ -17,21 +17,24 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "docs", "options-reference.md")
-SCENE = re.compile(r"^  scene (?P<name>[a-z_]+): (?P<what>.*); reads also: (?P<reads>.*)$")
+SCENE = re.compile(r"^  scene (?P<name>[a-z_]+): (?P<what>.*); reads also: (?P<reads>.*?)(?:; and the blocks: "
+                   r"(?P<blocks>.*))?$")
 LINE = re.compile(r"^  -(?P<name>[a-z0-9_]+):? <(?:now )?(?P<default>.*?)(?: : (?:formerly )?.*?)?>:? (?P<help>.*) "
                   r"\(tubeform\)$")
 
 
 def options(exe):
     """[(section, [(name, default, help, choices)])] and [(scene, what, [the options only some scenes read: a name
-    ending in '_' a prefix])] from -help, run with no options (the built-in defaults)."""
+    ending in '_' a prefix], [the sections only some scenes read])] from -help, run with no options (the built-in
+    defaults)."""
     env = {k: v for k, v in os.environ.items() if k != "PETSC_OPTIONS"}
     p = subprocess.run([os.path.abspath(exe), "-help", "-options_left", "no"], capture_output=True, text=True, env=env, cwd="/")
     sections, current, scenes = [], None, []
     for line in p.stdout.splitlines():
         m = SCENE.match(line)
         if m:
-            scenes.append((m.group("name"), m.group("what"), m.group("reads").split()))
+            scenes.append((m.group("name"), m.group("what"), m.group("reads").split(),
+                           (m.group("blocks") or "").split("; ") if m.group("blocks") else []))
             continue
         m = re.match(r"^tubeform: (.*):$", line)
         if m and m.group(1) == "scenes":  # (the registry's lines follow: SCENE)
@@ -56,13 +59,38 @@ def options(exe):
     return sections, scenes
 
 
-def readers(name, scenes):
-    """The scenes that read option `name` (no dash) where not every scene does; [] where every scene does."""
-    return [s for s, _, reads in scenes if any(name.startswith(r[1:]) if r.endswith("_") else name == r[1:]
-                                                for r in reads)]
+def readers(name, section, scenes):
+    """The scenes that read option `name` (no dash) of `section` where not every scene does: those whose list names
+    it, else those that list its section; [] where every scene does."""
+    listed = [s for s, _, reads, _ in scenes if any(name.startswith(r[1:]) if r.endswith("_") else name == r[1:]
+                                                      for r in reads)]
+    return listed or [s for s, _, _, blocks in scenes if section in blocks]
+
+
+def anchor(title):
+    """The section's anchor as GitHub writes it."""
+    return "#" + re.sub(r"[^a-z0-9_ -]", "", title.lower()).replace(" ", "-")
+
+
+def heading(title):
+    return title[0].upper() + title[1:]
+
+
+def scene_sections(scene, sections, scenes):
+    """The sections `scene` reads, linked: a whole one by its title, one where it reads only some of the options
+    with their names."""
+    parts = []
+    for title, opts in sections:
+        mine = [n for n, *_ in opts if scene in (readers(n, title, scenes) or [scene])]
+        if mine:
+            link = f"[{heading(title)}]({anchor(heading(title))})"
+            parts.append(link if len(mine) == len(opts) else link + ": " + ", ".join(f"`-{n}`" for n in mine))
+    return "; ".join(parts)
 
 
 def markdown(sections, scenes):
+    shown = {t for t, _ in sections}  # (-help lists the later passes' blocks by the second's)
+    scenes = [(n, w, r, [b for b in blocks if b in shown]) for n, w, r, blocks in scenes]
     out = ["# Options reference", "",
            "Generated from `build/tubeform -help` by `/usr/bin/python3 tools/options_doc.py`",
            "(do not edit; the test `docs_options` fails when it is out of date). Defaults are the built-in",
@@ -70,21 +98,20 @@ def markdown(sections, scenes):
            "through the groups and names the doc that explains each; PETSc's own options (solver,",
            "`-log_view`, ...) are listed by `-help` too.", "",
            "## Scenes", "",
-           "An option marked *Only* below is read by the scenes it names: given to another scene it stops the run",
-           "naming them (`-allow_unused` runs anyway). Every scene accepts the others; their meaning says where",
-           "they act (a `squaring:` or `tool scenes:` option acts where a die presses). The scenes and the options",
-           "only some of them read (`-pressure_*`: every option beginning so):", "",
-           "| scene | what | reads also |", "|---|---|---|"]
-    for name, what, reads in scenes:
-        out.append(f"| `{name}` | {what} | " + ", ".join(f"`{r}*`" if r.endswith("_") else f"`{r}`"
-                                                        for r in reads) + " |")
+           "What each scene reads: every option of a section named, or of a section followed by names those",
+           "named. An option marked *Only* below is read by the scenes it names: given to another scene it stops",
+           "the run naming them (`-allow_unused` runs anyway, with a warning). The later passes' options",
+           "(`-pass3_*` to `-pass9_*`) are the second pass's, renamed.", "",
+           "| scene | what | reads |", "|---|---|---|"]
+    for name, what, _, _ in scenes:
+        out.append(f"| `{name}` | {what} | {scene_sections(name, sections, scenes)} |")
     out.append("")
     for title, opts in sections:
-        out += [f"## {title[0].upper() + title[1:]}", "", "| option | default | meaning |", "|---|---|---|"]
+        out += [f"## {heading(title)}", "", "| option | default | meaning |", "|---|---|---|"]
         for name, default, text, choices in opts:
             meaning = text.replace("|", "\\|") + (" (one of: " + ", ".join(f"`{c}`" for c in choices) + ")"
                                                   if choices else "")
-            only = readers(name, scenes)
+            only = readers(name, title, scenes)
             meaning += f" *Only {', '.join(only)}.*" if only else ""
             out.append(f"| `-{name}` | `{default}` | {meaning} |")
         out.append("")

@@ -174,11 +174,22 @@ PetscErrorCode ReadSceneOptions(MPI_Comm comm, const std::vector<SceneOptions> &
   for (size_t k = 0; k < scenes.size(); ++k) {
     if (!scenes[k].read) continue;
     const std::string title = "tubeform: " + scenes[k].name + " scene";
+    read.ReadBy(scenes[k].name);
     TF_OPTIONS_BEGIN(comm, title.c_str());
     PetscCall(scenes[k].read(PetscOptionsObject, read, own[k]));
     TF_OPTIONS_END();
   }
+  read.ReadBy("");
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The scenes that press with tools, space-separated (the tool scenes' options are theirs alone).
+std::string ToolSceneNames(const std::vector<SceneOptions> &scenes)
+{
+  std::string names;
+  for (const auto &s : scenes)
+    if (s.press != ScenePress::None) names += (names.empty() ? "" : " ") + s.name;
+  return names;
 }
 
 // Every scene's own options checked (given or not: a value out of range is refused all the same); the chosen scene's
@@ -210,11 +221,14 @@ PetscErrorCode ReadOptions(MPI_Comm comm, const std::vector<OptionGroup> &groups
   PetscCall(ReadLoading(comm, read, opt));
   PetscCall(ReadFrictionOptions(comm, read, opt.friction)); // (contact/friction_options.cpp)
   PetscCall(ReadSceneOptions(comm, scenes.scenes, read, own));
+  read.ReadBy(ToolSceneNames(scenes.scenes));
   if (scenes.tools.read) PetscCall(scenes.tools.read(comm, read, opt)); // (for every scene: a stray one is refused)
+  read.ReadBy("");
 
   opt.known = read.known();
   if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
   if (!opt.allow_unused) PetscCall(read.CheckUnknown(comm));
+  if (scenes.refuse_foreign) PetscCall(scenes.refuse_foreign(comm, opt)); // (before any check of a value)
 
   PetscCall(CheckOptions(comm, scenes.tools, opt));
   for (const OptionGroup &group : groups)

@@ -33,8 +33,8 @@ const std::vector<KnownOption> &PetscNames()
     for (const char *n : {"-ksp_type", "-ksp_view", "-ksp_monitor", "-pc_type", "-pc_factor_mat_solver_type",
                           "-redundant_pc_factor_mat_solver_type", "-log_view", "-malloc_debug", "-malloc_dump",
                           "-memory_view", "-info", "-help", "-options_file"})
-      v.push_back({n, "", ""});
-    for (const auto &n : OptionsReadLater()) v.push_back({n, "", ""});
+      v.push_back({n, "", "", ""});
+    for (const auto &n : OptionsReadLater()) v.push_back({n, "", "", ""});
     return v;
   }();
   return names;

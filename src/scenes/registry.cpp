@@ -4,6 +4,7 @@
 #include "tubeform/scenes/scene_params.hpp"
 #include "tubeform/scenes/tool_options.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <sstream>
 
@@ -54,6 +55,13 @@ PetscErrorCode CheckOwn(MPI_Comm comm, const std::any &own)
 }
 #define TF_OWN(Name) ReadOwn<Name##Params, Read##Name##Options>, CheckOwn<Name##Params, Check##Name##Options>
 
+// The contact's and friction's options (contact/friction_options.cpp): read where something touches.
+#define TF_CONTACT_OPTIONS "-friction_mu -friction_vcri -friction_tol -rmin_dphi -rmin_dphi_rise"
+// The error estimate's and the accuracy's options (driver/driver_options.cpp): read where the estimate runs.
+#define TF_ESTIMATE_OPTIONS                                                                                            \
+  "-error_estimate -error_estimate_factorization -target_load -target_c_over_t -expect_load -expect_c_over_t "         \
+  "-target_levels -target_time"
+
 std::unique_ptr<Scene> MakeAnySlideScene(const Options &opt)
 {
   return OwnParams<SlideParams>(opt).tool == SlideTool::Arc ? MakeArcSlideScene(opt) : MakeSlideScene(opt);
@@ -62,15 +70,16 @@ std::unique_ptr<Scene> MakeAnySlideScene(const Options &opt)
 
 const std::vector<SceneEntry> &SceneRegistry()
 {
-  // The options only some scenes read (`reads`): the V-die's, friction's where something touches, the release's and
-  // the stroke's path where tools let the tube go, each scene's own.
+  // The options only some scenes read (`reads`): the V-die's, friction's where something touches, the stroke where
+  // something moves by it, the release's and the stroke's path where tools let the tube go, the error estimate's and
+  // the accuracy's where it runs (the tool scenes: main.cpp), each scene's own.
   static const std::vector<SceneEntry> scenes = {
     {"squaring", "quarter tube pressed by the upper 90-degree V-die (the paper's process)", MakeSquaringScene,
      ScenePress::Die,
-     "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge -friction_mu -friction_vcri -unload -springback "
-     "-stroke_path -stroke_corner_radius"},
+     "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge " TF_CONTACT_OPTIONS " -stroke -unload "
+     "-springback -stroke_path -stroke_corner_radius " TF_ESTIMATE_OPTIONS},
     {"flattening", "quarter ring crushed by a flat plate", MakeFlatteningScene, ScenePress::Plate,
-     "-friction_mu -friction_vcri -unload -springback -stroke_path"},
+     TF_CONTACT_OPTIONS " -stroke -unload -springback -stroke_path " TF_ESTIMATE_OPTIONS},
     {"pressure", "quarter thick cylinder under internal pressure (Lame, Hill)", MakePressureScene, ScenePress::None,
      "-pressure_", TF_OWN(Pressure)},
     {"shear", "simple shear of a block (Jaumann objectivity)", MakeShearScene, ScenePress::None, "-shear_",
@@ -78,17 +87,19 @@ const std::vector<SceneEntry> &SceneRegistry()
     {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene, ScenePress::None, "-rotation_",
      TF_OWN(Rotation)},
     {"column", "a bowed strip shortened past its Euler load (geometric stiffness)", MakeColumnScene, ScenePress::None,
-     "-column_", TF_OWN(Column)},
+     "-column_ -stroke", TF_OWN(Column)},
     {"tension", "plane-strain tension or compression of a block (flow curve)", MakeTensionScene, ScenePress::None,
      "-tension_", TF_OWN(Tension)},
     {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene, ScenePress::None,
      "-bending_ -springback", TF_OWN(Bending)},
     {"slide", "a block pushed along a floor, or a ring turned in a cylinder (-slide_tool arc): Coulomb friction",
-     MakeAnySlideScene, ScenePress::None, "-slide_ -friction_mu -friction_vcri", TF_OWN(Slide)},
+     MakeAnySlideScene, ScenePress::None, "-slide_ " TF_CONTACT_OPTIONS, TF_OWN(Slide)},
   };
   return scenes;
 }
 #undef TF_OWN
+#undef TF_ESTIMATE_OPTIONS
+#undef TF_CONTACT_OPTIONS
 
 std::vector<std::string> SceneNames()
 {
@@ -102,6 +113,7 @@ SceneOptionReaders SceneReaders()
   SceneOptionReaders readers;
   for (const auto &s : SceneRegistry()) readers.scenes.push_back({s.name, s.press, s.read, s.check});
   readers.tools = {ReadToolSceneOptions, CheckToolSceneOptions};
+  readers.refuse_foreign = RefuseForeignOptions;
   return readers;
 }
 
@@ -116,13 +128,23 @@ bool Lists(const std::string &reads, const std::string &option)
 }
 } // namespace
 
-std::string ForeignOption(const std::string &scene, const std::string &option)
+std::string ReadersOf(const std::string &option, const std::vector<KnownOption> &known)
+{
+  std::string listed;
+  for (const auto &s : SceneRegistry())
+    if (Lists(s.reads, option)) listed += (listed.empty() ? "" : " ") + std::string(s.name);
+  if (!listed.empty()) return listed;
+  const auto k = std::find_if(known.begin(), known.end(), [&](const KnownOption &o) { return o.name == option; });
+  return k == known.end() ? "" : k->scenes;
+}
+
+std::string ForeignOption(const std::string &scene, const std::string &option, const std::vector<KnownOption> &known)
 {
   std::vector<std::string> readers;
-  for (const auto &s : SceneRegistry()) {
-    if (!Lists(s.reads, option)) continue;
-    if (scene == s.name) return "";
-    readers.push_back(s.name);
+  std::istringstream words(ReadersOf(option, known));
+  for (std::string w; words >> w;) {
+    if (w == scene) return "";
+    readers.push_back(w);
   }
   if (readers.empty()) return "";
   std::string names;
@@ -136,24 +158,49 @@ PetscErrorCode RefuseForeignOptions(MPI_Comm comm, const Options &opt)
 {
   char *all;
   PetscFunctionBeginUser;
-  if (opt.allow_unused || opt.help) PetscFunctionReturn(PETSC_SUCCESS);
+  if (opt.help) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscOptionsGetAll(nullptr, &all));
   std::istringstream words(all);
   PetscCall(PetscFree(all));
   for (std::string w; words >> w;) {
     if (w.size() < 2 || w[0] != '-' || !std::isalpha((unsigned char)w[1])) continue; // (a value)
-    const std::string why = ForeignOption(opt.scene, w);
-    PetscCheck(why.empty(), comm, PETSC_ERR_USER_INPUT, "%s: %s; -allow_unused runs anyway", w.c_str(), why.c_str());
+    const std::string why = ForeignOption(opt.scene, w, opt.known);
+    if (!why.empty() && opt.allow_unused)
+      PetscCall(
+        PetscPrintf(comm, "tubeform: warning: %s: %s; -allow_unused: the run goes on\n", w.c_str(), why.c_str()));
+    else
+      PetscCheck(why.empty(), comm, PETSC_ERR_USER_INPUT, "%s: %s; -allow_unused runs anyway", w.c_str(), why.c_str());
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode PrintSceneHelp(MPI_Comm comm)
+namespace {
+// The titles of the -help blocks of `known` whose options `scene` reads and not every scene does, in their order
+// ("tubeform: " dropped), separated by "; ".
+std::string OwnBlocks(const std::string &scene, const std::vector<KnownOption> &known)
+{
+  std::vector<std::string> titles;
+  const std::string own = "tubeform: ";
+  for (const auto &k : known) {
+    if (k.reader.empty() || (" " + k.scenes + " ").find(" " + scene + " ") == std::string::npos) continue;
+    const std::string t = k.reader.rfind(own, 0) == 0 ? k.reader.substr(own.size()) : k.reader;
+    if (std::find(titles.begin(), titles.end(), t) == titles.end()) titles.push_back(t);
+  }
+  std::string joined;
+  for (const auto &t : titles) joined += (joined.empty() ? "" : "; ") + t;
+  return joined;
+}
+} // namespace
+
+PetscErrorCode PrintSceneHelp(MPI_Comm comm, const std::vector<KnownOption> &known)
 {
   PetscFunctionBeginUser;
   PetscCall((*PetscHelpPrintf)(comm, "tubeform: scenes:\n"));
-  for (const auto &s : SceneRegistry())
-    PetscCall((*PetscHelpPrintf)(comm, "  scene %s: %s; reads also: %s\n", s.name, s.what, s.reads));
+  for (const auto &s : SceneRegistry()) {
+    const std::string blocks = OwnBlocks(s.name, known);
+    PetscCall((*PetscHelpPrintf)(comm, "  scene %s: %s; reads also: %s%s%s\n", s.name, s.what, s.reads,
+                                 blocks.empty() ? "" : "; and the blocks: ", blocks.c_str()));
+  }
   PetscCall((*PetscHelpPrintf)(comm, "----------------------------------------\n"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

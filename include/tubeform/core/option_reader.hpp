@@ -14,10 +14,11 @@
 
 namespace tf {
 
-// An option tubeform reads: its name (with the dash), its -help text and the title of the -help block that reads it
-// ("tubeform: upper die shape"; empty where it is noted outside a block).
+// An option tubeform reads: its name (with the dash), its -help text, the title of the -help block that reads it
+// ("tubeform: upper die shape"; empty where it is noted outside a block) and the scenes that alone read it
+// (space-separated names, "squaring flattening"; empty: every scene).
 struct KnownOption {
-  std::string name, help, reader;
+  std::string name, help, reader, scenes;
 };
 
 // Edits (insertions, deletions, substitutions) between two words.
@@ -42,8 +43,10 @@ public:
   // An option read some other way (a word from a list, a file name); `reader`: the title of the block reading it.
   void Note(const char *name, const char *help = "", const char *reader = "")
   {
-    names_.push_back({name, help, reader ? reader : ""});
+    names_.push_back({name, help, reader ? reader : "", scenes_});
   }
+  // The scenes that alone read the options noted from here on (space-separated names; "": every scene).
+  void ReadBy(const std::string &scenes) { scenes_ = scenes; }
   // Collective, after every tubeform option is read: an option given but not
   // read that is close to one of tubeform's (within 2 edits, or sharing its
   // first word: -tube_*, -rmin_*, ...) is an error naming the nearest (the
@@ -56,6 +59,7 @@ public:
 
 private:
   std::vector<KnownOption> names_; // with the dash
+  std::string scenes_;             // ReadBy's
 };
 
 // One of a list of words for an option whose value is an enum E, `words` its words in its enumerators' order; the

@@ -126,6 +126,10 @@ struct ToolSceneReaders {
 struct SceneOptionReaders {
   std::vector<SceneOptions> scenes;
   ToolSceneReaders tools;
+  // Collective: refuses, in one line naming the scenes that read it, an option given that the run's scene does not
+  // read (KnownOption::scenes, and the options the registry lists as only some scenes'); after the options are read,
+  // before any value is checked. Null: none refused.
+  PetscErrorCode (*refuse_foreign)(MPI_Comm comm, const Options &opt) = nullptr;
 };
 
 // Collective: reads and validates the options; `groups` the driver's own (each its group in -help, in turn), `scenes`

@@ -28,15 +28,21 @@ std::vector<std::string> SceneNames();
 // The scenes with the readers and checkers of their own options, and the tool scenes' (scenes/tool_options.hpp),
 // for ReadOptions.
 SceneOptionReaders SceneReaders();
-// "" or why the option named `option` (with its dash) is not for the scene `scene`: the scenes whose `reads` list
-// it, where `scene`'s does not.
-std::string ForeignOption(const std::string &scene, const std::string &option);
+// The scenes that read option `option` (with its dash) where not every scene does, space-separated: those whose
+// `reads` list it, else those its reader names (KnownOption::scenes: a scene's own, the tool scenes' dies and
+// passes); "" where every scene reads it.
+std::string ReadersOf(const std::string &option, const std::vector<KnownOption> &known);
+// "" or why the option named `option` is not for the scene `scene`: the scenes that read it (ReadersOf), where
+// `scene` is not one of them.
+std::string ForeignOption(const std::string &scene, const std::string &option, const std::vector<KnownOption> &known);
 // Collective: an option given (command line or options files) that only other scenes read stops the run in one
-// line naming them (ForeignOption), once a job, after its options are read; -allow_unused lets it pass.
+// line naming them (ForeignOption; SceneOptionReaders::refuse_foreign), before any value is checked; -allow_unused
+// turns it into a warning line.
 PetscErrorCode RefuseForeignOptions(MPI_Comm comm, const Options &opt);
-// Under -help: each scene, what it is and the options of the `reads` lists it reads, one line each after the
-// heading "tubeform: scenes:" (tools/options_doc.py builds the options reference's scene table from them).
-PetscErrorCode PrintSceneHelp(MPI_Comm comm);
+// Under -help: each scene, what it is, the options of the `reads` lists it reads and the -help blocks only it and
+// other scenes read (`known`: every option read), one line each after the heading "tubeform: scenes:"
+// (tools/options_doc.py builds the options reference's scene tables from them).
+PetscErrorCode PrintSceneHelp(MPI_Comm comm, const std::vector<KnownOption> &known);
 // The scene of opt.scene; null if the name is not registered.
 std::unique_ptr<Scene> CreateScene(const Options &opt);
 
