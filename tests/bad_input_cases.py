@@ -74,10 +74,12 @@ def bad_input_cases(src, out):
          "give the second pass's, -pass2_lower_die_motion"),
         (["-scene", "tension", "-springback", "elastic"], "-springback: read by the squaring, flattening and bending"),
         (["-scene", "flattening", "-stroke_corner_radius", "3"], "-stroke_corner_radius: read by the squaring scene"),
-        # A demanded accuracy where no estimate runs, a stroke where nothing moves by it: refused, not ignored.
+        # A demanded accuracy where no estimate runs, a stroke where nothing moves by it, a tube where the body is a
+        # block: refused, not ignored.
         (["-scene", "tension", "-target_load", "0.01"], "-target_load: read by the squaring and flattening scenes"),
         (["-scene", "column", "-expect_c_over_t", "0.01"], "-expect_c_over_t: read by the squaring and flattening"),
         (["-scene", "bending", "-stroke", "2"], "-stroke: read by the squaring, flattening and column scenes"),
+        (["-scene", "bending", "-tube_t", "2"], "-tube_t: read by the squaring, flattening, pressure and slide"),
         (["-scene", "squaring", "-pass2_lower_die_motion", "fixed"], "-pass2_lower_die_motion, -pass2_side_die"),
         (["-scene", "squaring", "-model", "quarter", "-pass2_stroke", "2", "-pass2_lower_die_motion", "fixed"],
          "in every pass"),

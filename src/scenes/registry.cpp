@@ -55,6 +55,9 @@ PetscErrorCode CheckOwn(MPI_Comm comm, const std::any &own)
 }
 #define TF_OWN(Name) ReadOwn<Name##Params, Read##Name##Options>, CheckOwn<Name##Params, Check##Name##Options>
 
+// The tube's and its automatic mesh's options (io/options.cpp): read where the body is a tube or a ring (a block's
+// cells are -mesh_nt and -mesh_ntheta alone).
+#define TF_TUBE_OPTIONS "-tube_ro -tube_t -mesh_density -mesh_wall_strain -mesh_nt_min"
 // The contact's and friction's options (contact/friction_options.cpp): read where something touches.
 #define TF_CONTACT_OPTIONS "-friction_mu -friction_vcri -friction_tol -rmin_dphi -rmin_dphi_rise"
 // The error estimate's and the accuracy's options (driver/driver_options.cpp): read where the estimate runs.
@@ -70,18 +73,18 @@ std::unique_ptr<Scene> MakeAnySlideScene(const Options &opt)
 
 const std::vector<SceneEntry> &SceneRegistry()
 {
-  // The options only some scenes read (`reads`): the V-die's, friction's where something touches, the stroke where
-  // something moves by it, the release's and the stroke's path where tools let the tube go, the error estimate's and
-  // the accuracy's where it runs (the tool scenes: main.cpp), each scene's own.
+  // The options only some scenes read (`reads`): the V-die's, the tube's where the body is one, friction's where
+  // something touches, the stroke where something moves by it, the release's and the stroke's path where tools let
+  // the tube go, the error estimate's and the accuracy's where it runs (the tool scenes: main.cpp), each scene's own.
   static const std::vector<SceneEntry> scenes = {
     {"squaring", "quarter tube pressed by the upper 90-degree V-die (the paper's process)", MakeSquaringScene,
      ScenePress::Die,
-     "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge " TF_CONTACT_OPTIONS " -stroke -unload "
-     "-springback -stroke_path -stroke_corner_radius " TF_ESTIMATE_OPTIONS},
+     "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS
+     " -stroke -unload -springback -stroke_path -stroke_corner_radius " TF_ESTIMATE_OPTIONS},
     {"flattening", "quarter ring crushed by a flat plate", MakeFlatteningScene, ScenePress::Plate,
-     TF_CONTACT_OPTIONS " -stroke -unload -springback -stroke_path " TF_ESTIMATE_OPTIONS},
+     TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS " -stroke -unload -springback -stroke_path " TF_ESTIMATE_OPTIONS},
     {"pressure", "quarter thick cylinder under internal pressure (Lame, Hill)", MakePressureScene, ScenePress::None,
-     "-pressure_", TF_OWN(Pressure)},
+     "-pressure_ " TF_TUBE_OPTIONS, TF_OWN(Pressure)},
     {"shear", "simple shear of a block (Jaumann objectivity)", MakeShearScene, ScenePress::None, "-shear_",
      TF_OWN(Shear)},
     {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene, ScenePress::None, "-rotation_",
@@ -93,13 +96,14 @@ const std::vector<SceneEntry> &SceneRegistry()
     {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene, ScenePress::None,
      "-bending_ -springback", TF_OWN(Bending)},
     {"slide", "a block pushed along a floor, or a ring turned in a cylinder (-slide_tool arc): Coulomb friction",
-     MakeAnySlideScene, ScenePress::None, "-slide_ " TF_CONTACT_OPTIONS, TF_OWN(Slide)},
+     MakeAnySlideScene, ScenePress::None, "-slide_ " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS, TF_OWN(Slide)},
   };
   return scenes;
 }
 #undef TF_OWN
 #undef TF_ESTIMATE_OPTIONS
 #undef TF_CONTACT_OPTIONS
+#undef TF_TUBE_OPTIONS
 
 std::vector<std::string> SceneNames()
 {
