@@ -211,8 +211,8 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
     PassSpec &p = ToolsOf(opt).passes[pass];
     const UpperMotionBlock block{
       Formatted("pass%d_die_", pass + 1), Formatted("tubeform: pass %d upper die motion", pass + 1),
-      pass > 1 ? Formatted("squaring: pass %d's, as -pass2_die_motion", pass + 1)
-               : "squaring: the second pass's upper die moves by its stroke (stroke: -pass2_stroke), along a path "
+      pass > 1 ? Formatted("tool scenes: pass %d's, as -pass2_die_motion", pass + 1)
+               : "tool scenes: the second pass's upper die moves by its stroke (stroke: -pass2_stroke), along a path "
                  "of its own from where it starts (path: -pass2_die_path, -pass2_die_path_turn, -pass2_die_pivot, as "
                  "-die_path's; over a lower die that stays, -lower_die_motion fixed; in place of -pass2_stroke: the "
                  "pass ends at U = -y / 2 of its last point; off the axis: the full model under the rotation hold, "

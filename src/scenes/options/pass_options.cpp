@@ -30,19 +30,19 @@ struct PassOption {
 };
 const PassOption kPassOptions[] = {
   {"stroke", PassValue::Stroke,
-   "squaring: a second pass after the springback: press again until the upper die is at this stroke (mm, from the "
+   "tool scenes: a second pass after the springback: press again until the upper die is at this stroke (mm, from the "
    "same zero as -stroke: the die touching the round tube; it starts where it touches the tube; 0: one pass), then "
    "spring back; a third pass and more (up to 9) by the same options with their number: -pass3_stroke, -pass3_turn, "
    "... (docs/dies.md)"},
   {"die_profile", PassValue::Profile,
    "squaring: the second pass's upper die from a profile file (default: the first pass's die)"},
   {"lower_die", PassValue::Lower,
-   "squaring: the second pass's lower die: mirror, flat or a profile file (default: the first pass's -lower_die)"},
+   "tool scenes: the second pass's lower die: mirror, flat or a profile file (default: the first pass's -lower_die)"},
   {"side_die", PassValue::Side,
-   "squaring: the second pass's side dies: none, mirror, flat or a profile file (default: the first pass's "
+   "tool scenes: the second pass's side dies: none, mirror, flat or a profile file (default: the first pass's "
    "-side_die)"},
   {"turn", PassValue::Turn,
-   "squaring: the tube turned counter-clockwise by this many degrees (-360 to 360) before the second pass: its dies "
+   "tool scenes: the tube turned counter-clockwise by this many degrees (-360 to 360) before the second pass: its dies "
    "press along the turned axis (not a multiple of 90: the full model, held by the rotation hold; a later pass's "
    "-pass<N>_turn turns it on from the pass before's; docs/dies.md)",
    " (from the pass before's press)"},
@@ -50,14 +50,14 @@ const PassOption kPassOptions[] = {
    "squaring: the second pass's upper die moved off its press's y axis by this along the press's x (mm; the full "
    "model, held by the rotation hold; default 0: on the axis, whatever -die_offset says; docs/dies.md)"},
   {"side_force", PassValue::SideForce,
-   "squaring: the second pass's side dies pressing with a force rising from 0 to this (N/mm, on the whole tube) "
+   "tool scenes: the second pass's side dies pressing with a force rising from 0 to this (N/mm, on the whole tube) "
    "over its press, their travel an unknown of each increment (default 0: by the stroke, whatever -side_force says; "
    "docs/dies.md)"},
   {"unload", PassValue::Release,
-   "squaring: how the second pass lets the tube go: reverse, withdraw (the quarter model) or none (the last pass "
+   "tool scenes: how the second pass lets the tube go: reverse, withdraw (the quarter model) or none (the last pass "
    "only: the run ends loaded) (default: the first pass's -unload; docs/dies.md)"},
   {"lower_die_motion", PassValue::LowerMotion,
-   "squaring: how the second pass's lower die moves: mirror (up by the stroke, the upper die's mirror) or fixed (it "
+   "tool scenes: how the second pass's lower die moves: mirror (up by the stroke, the upper die's mirror) or fixed (it "
    "stays; the upper die travels 2 U) (default: the first pass's -lower_die_motion; docs/dies.md)"},
 };
 
@@ -107,7 +107,7 @@ PetscErrorCode ReadPassValue(PetscOptionItems *PetscOptionsObject, OptionReader 
 PetscErrorCode ReadPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, int number, PassSpec &pass)
 {
   const std::string pre = "-pass" + std::to_string(number) + "_";
-  const std::string as = "squaring: pass " + std::to_string(number) + "'s, as -pass2_";
+  const std::string as = "tool scenes: pass " + std::to_string(number) + "'s, as -pass2_";
   bool given = number == 2;
   PetscFunctionBeginUser;
   for (const PassOption &o : kPassOptions) {
