@@ -65,7 +65,6 @@ std::vector<HistoryColumn> FirstColumns()
      "largest |stored normal force - the normal force the body's nodal forces need| of a contact node (N/mm)"},
     {"stage", &HistoryRow::stage,
      "0 loading, 1 unloading (or the scene's second stage), 2 the slide scene's push back"},
-    {"n_contact_apex", &HistoryRow::n_contact_apex, "contact nodes on the V-die's apex fillet"},
     {"w_kinetic", &HistoryRow::w_kinetic, "kinetic energy (-dynamics implicit; 0 quasi-static)"},
     {"w_inertia", &HistoryRow::w_inertia, "work of the inertia forces (trapezoidal)"},
     {"w_damped", &HistoryRow::w_damped, "energy damped by backward Euler: w_inertia - w_kinetic"},

@@ -15,6 +15,7 @@ const ToolColumns &UpperDieColumns()
      "moment of the model's forces on the tool about the tool frame's origin, which moves with the tool (the "
      "tube's centre at stroke 0; N mm/mm, counter-clockwise positive)",
      "tool_fy"},
+    {"n_contact_apex", "contact nodes on the V-die's apex fillet (the squaring scene's upper die)", "stage"},
   });
   return c;
 }

@@ -5,6 +5,7 @@
 
 #include "tubeform/metrics/shape.hpp"
 #include "tubeform/scenes/common.hpp"
+#include "tubeform/scenes/die_columns.hpp"
 
 namespace tf {
 
@@ -19,7 +20,7 @@ PetscErrorCode PressShape(Model &m, const PressShapeState &s, long side_ends[2],
     row.r_corner_y = AxisCornerRadius(all.back().y, all[all.size() - 2].y, all[all.size() - 2].x);
   }
   if (!s.squaring) PetscFunctionReturn(PETSC_SUCCESS);
-  for (const auto &o : all) row.n_contact_apex += o.contact && s.apex >= 0 && o.segment == s.apex;
+  for (const auto &o : all) UpperDieColumns()(row, kDieApexContacts) += o.contact && s.apex >= 0 && o.segment == s.apex;
   const Tool &tool = m.contact->tool(0);
   const Segment &fl = tool.segments[s.flank];
   const Vec2 a = s.press(tool.Placed(fl.a)), n = s.press(tool.Oriented(fl.n_line));

@@ -24,7 +24,7 @@ struct HistoryRow {
   double w_ext = 0, w_int = 0, w_plastic = 0, w_friction = 0, w_elastic = 0, energy_error = 0;
   double c_over_t = 0, x_max = 0, y_max = 0, deviation_ratio = 1;
   double redo = 0, drift = 0, unsettled = 0, events_inside = 0, inconsistent = 0;
-  double r_corner_x = 0, r_corner_y = 0, penetration = 0, tension = 0, stage = 0, n_contact_apex = 0;
+  double r_corner_x = 0, r_corner_y = 0, penetration = 0, tension = 0, stage = 0;
   double release_force = 0, contact_gap = 0, fn_mismatch = 0;
   double w_kinetic = 0, w_inertia = 0, inertia = 0, w_damped = 0, w_tool = 0, internal_error = 0;
   double slip = 0, fn_sum = 0, det_sign = 0;

@@ -9,8 +9,9 @@
 namespace tf {
 
 // A die's columns: the model's force on it, x and y (N/mm), and its moment about the die frame's origin (N mm/mm),
-// in the press's frame. The upper die's (tool_fx, tool_fy, tool_moment) are the scene's tool's: the slide's floor.
-enum DieColumn { kDieFx, kDieFy, kDieMoment };
+// in the press's frame. The upper die's (tool_fx, tool_fy, tool_moment) are the scene's tool's: the slide's floor;
+// the upper die's also its contact nodes on the V-die's apex fillet (n_contact_apex; the squaring scene's).
+enum DieColumn { kDieFx, kDieFy, kDieMoment, kDieApexContacts };
 const ToolColumns &UpperDieColumns();
 const ToolColumns &LowerDieColumns(); // lower_fx, lower_fy, lower_moment: the half and full models' lower die
 // The side dies' (-side_die): each one's force along its motion on the whole tube, and their travel.
