@@ -38,8 +38,8 @@ FILE_COLUMNS = (
     "fn_mismatch,stage,n_contact_apex,tool_fx,tool_fy,tool_moment,w_kinetic,w_inertia,w_damped,w_tool,internal_error,"
     "inertia,slip,fn_sum,lower_fx,lower_fy,side_load,lower_moment,side_stroke,hold_moment,hold_friction,die_x,die_turn,"
     "release,release_yielded,release_excess,release_dep").split(",")
-TOOL_COLUMNS = ("n_contact_apex tool_fx tool_fy tool_moment lower_fx lower_fy side_load lower_moment side_stroke hold_moment "
-                "hold_friction die_x die_turn").split()
+TOOL_COLUMNS = ("n_contact_apex tool_fx tool_fy tool_moment lower_fx lower_fy side_load lower_moment side_stroke "
+                "hold_moment hold_friction die_x die_turn").split()
 with h5py.File("io.h5", "r") as h:
     datasets = sorted(h["/history"])
     unfilled = [c for c in TOOL_COLUMNS if c not in h["/history"] or np.any(h["/history"][c][:] != 0)]
