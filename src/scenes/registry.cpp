@@ -74,29 +74,32 @@ std::unique_ptr<Scene> MakeAnySlideScene(const Options &opt)
 const std::vector<SceneEntry> &SceneRegistry()
 {
   // The options only some scenes read (`reads`): the V-die's, the tube's where the body is one, friction's where
-  // something touches, the stroke where something moves by it, the release's and the stroke's path where tools let
-  // the tube go, the error estimate's and the accuracy's where it runs (the tool scenes: main.cpp), each scene's own.
+  // something touches, the stroke and the punch speed where something moves by it (-dynamics_time in the scenes
+  // without tools), the release's and the stroke's path where tools let the tube go, the error estimate's and the
+  // accuracy's where it runs (the tool scenes: main.cpp), each scene's own.
   static const std::vector<SceneEntry> scenes = {
     {"squaring", "quarter tube pressed by the upper 90-degree V-die (the paper's process)", MakeSquaringScene,
      ScenePress::Die,
      "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS
-     " -stroke -unload -springback -stroke_path -stroke_corner_radius " TF_ESTIMATE_OPTIONS},
+     " -stroke -punch_speed -unload -springback -stroke_path -stroke_corner_radius " TF_ESTIMATE_OPTIONS},
     {"flattening", "quarter ring crushed by a flat plate", MakeFlatteningScene, ScenePress::Plate,
-     TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS " -stroke -unload -springback -stroke_path " TF_ESTIMATE_OPTIONS},
+     "-stroke -punch_speed -unload -springback -stroke_path " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS
+     " " TF_ESTIMATE_OPTIONS},
     {"pressure", "quarter thick cylinder under internal pressure (Lame, Hill)", MakePressureScene, ScenePress::None,
-     "-pressure_ " TF_TUBE_OPTIONS, TF_OWN(Pressure)},
-    {"shear", "simple shear of a block (Jaumann objectivity)", MakeShearScene, ScenePress::None, "-shear_",
-     TF_OWN(Shear)},
-    {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene, ScenePress::None, "-rotation_",
-     TF_OWN(Rotation)},
+     "-pressure_ -dynamics_time " TF_TUBE_OPTIONS, TF_OWN(Pressure)},
+    {"shear", "simple shear of a block (Jaumann objectivity)", MakeShearScene, ScenePress::None,
+     "-shear_ -dynamics_time", TF_OWN(Shear)},
+    {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene, ScenePress::None,
+     "-rotation_ -dynamics_time", TF_OWN(Rotation)},
     {"column", "a bowed strip shortened past its Euler load (geometric stiffness)", MakeColumnScene, ScenePress::None,
-     "-column_ -stroke", TF_OWN(Column)},
+     "-column_ -dynamics_time -stroke", TF_OWN(Column)},
     {"tension", "plane-strain tension or compression of a block (flow curve)", MakeTensionScene, ScenePress::None,
-     "-tension_", TF_OWN(Tension)},
+     "-tension_ -dynamics_time", TF_OWN(Tension)},
     {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene, ScenePress::None,
-     "-bending_ -springback", TF_OWN(Bending)},
+     "-bending_ -dynamics_time -springback", TF_OWN(Bending)},
     {"slide", "a block pushed along a floor, or a ring turned in a cylinder (-slide_tool arc): Coulomb friction",
-     MakeAnySlideScene, ScenePress::None, "-slide_ " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS, TF_OWN(Slide)},
+     MakeAnySlideScene, ScenePress::None, "-slide_ -dynamics_time " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS,
+     TF_OWN(Slide)},
   };
   return scenes;
 }
