@@ -62,9 +62,15 @@ def options(exe):
 def readers(name, section, scenes):
     """The scenes that read option `name` (no dash) of `section` where not every scene does: those whose list names
     it, else those that list its section; [] where every scene does."""
-    listed = [s for s, _, reads, _ in scenes if any(name.startswith(r[1:]) if r.endswith("_") else name == r[1:]
-                                                      for r in reads)]
+    listed = [s for s, _, reads, _ in scenes if any(names(r, name) for r in reads)]
     return listed or [s for s, _, _, blocks in scenes if section in blocks]
+
+
+def names(word, name):
+    """Whether a `reads` word (with its dash; ending in '_': a prefix; "<N>": a later pass's number, 2 to 9) names
+    option `name` (no dash)."""
+    pattern = re.escape(word[1:]).replace(re.escape("<N>"), "[2-9]") + (".*" if word.endswith("_") else "")
+    return re.fullmatch(pattern, name) is not None
 
 
 def anchor(title):
@@ -78,13 +84,15 @@ def heading(title):
 
 def scene_sections(scene, sections, scenes):
     """The sections `scene` reads, linked: a whole one by its title, one where it reads only some of the options
-    with their names."""
+    with their names (or, where it reads most, the names of those it does not)."""
     parts = []
     for title, opts in sections:
         mine = [n for n, *_ in opts if scene in (readers(n, title, scenes) or [scene])]
         if mine:
             link = f"[{heading(title)}]({anchor(heading(title))})"
-            parts.append(link if len(mine) == len(opts) else link + ": " + ", ".join(f"`-{n}`" for n in mine))
+            others = [n for n, *_ in opts if n not in mine]
+            parts.append(link if not others else link + ": " + ", ".join(f"`-{n}`" for n in mine) if
+                         len(mine) <= len(others) else link + ": all but " + ", ".join(f"`-{n}`" for n in others))
     return "; ".join(parts)
 
 
@@ -99,7 +107,7 @@ def markdown(sections, scenes):
            "`-log_view`, ...) are listed by `-help` too.", "",
            "## Scenes", "",
            "What each scene reads: every option of a section named, or of a section followed by names those",
-           "named. An option marked *Only* below is read by the scenes it names: given to another scene it stops",
+           "named (or all but those named). An option marked *Only* below is read by the scenes it names: given to another scene it stops",
            "the run naming them (`-allow_unused` runs anyway, with a warning). The later passes' options",
            "(`-pass3_*` to `-pass9_*`) are the second pass's, renamed.", "",
            "| scene | what | reads |", "|---|---|---|"]

@@ -131,7 +131,8 @@ PetscErrorCode ReadOutput(PetscOptionItems *PetscOptionsObject, OptionReader &re
                       opt.progress));
   PetscCall(read.Bool(PetscOptionsObject, "-monitor", "Print one line per increment on rank 0", opt.monitor));
   PetscCall(read.Bool(PetscOptionsObject, "-allow_unused",
-                      "Run even when an option given is read by nothing (a warning names it; without this, an error)",
+                      "Run even when an option given is read by nothing or only by other scenes (a warning names "
+                      "it; without this, an error)",
                       opt.allow_unused));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

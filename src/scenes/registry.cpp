@@ -55,9 +55,14 @@ PetscErrorCode CheckOwn(MPI_Comm comm, const std::any &own)
 }
 #define TF_OWN(Name) ReadOwn<Name##Params, Read##Name##Options>, CheckOwn<Name##Params, Check##Name##Options>
 
-// The tube's and its automatic mesh's options (io/options.cpp): read where the body is a tube or a ring (a block's
-// cells are -mesh_nt and -mesh_ntheta alone).
-#define TF_TUBE_OPTIONS "-tube_ro -tube_t -mesh_density -mesh_wall_strain -mesh_nt_min"
+// The squaring scene's upper die's, a V-die or a profile, and its offset, in every pass (the flattening scene's
+// plate has neither).
+#define TF_V_DIE_OPTIONS                                                                                               \
+  "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge -die_offset -pass<N>_die_angle -pass<N>_die_r_apex "   \
+  "-pass<N>_die_profile -pass<N>_die_u_close -pass<N>_die_r_edge -pass<N>_die_offset"
+// The tube's and its mesh's options (io/options.cpp): read where the body is a tube or a ring (a block's cells are
+// -mesh_nt and -mesh_ntheta alone).
+#define TF_TUBE_OPTIONS "-tube_ro -tube_t -mesh_density -mesh_wall_strain -mesh_nt_min -mesh_file"
 // The contact's and friction's options (contact/friction_options.cpp): read where something touches.
 #define TF_CONTACT_OPTIONS "-friction_mu -friction_vcri -friction_tol -rmin_dphi -rmin_dphi_rise"
 // The error estimate's and the accuracy's options (driver/driver_options.cpp): read where the estimate runs.
@@ -80,7 +85,8 @@ const std::vector<SceneEntry> &SceneRegistry()
   static const std::vector<SceneEntry> scenes = {
     {"squaring", "quarter tube pressed by the upper 90-degree V-die (the paper's process)", MakeSquaringScene,
      ScenePress::Die,
-     "-die_angle -die_r_apex -die_profile -die_u_close -die_r_edge " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS
+     TF_V_DIE_OPTIONS
+     " " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS
      " -stroke -punch_speed -unload -springback -stroke_path -stroke_corner_radius " TF_ESTIMATE_OPTIONS},
     {"flattening", "quarter ring crushed by a flat plate", MakeFlatteningScene, ScenePress::Plate,
      "-stroke -punch_speed -unload -springback -stroke_path " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS
@@ -107,6 +113,7 @@ const std::vector<SceneEntry> &SceneRegistry()
 #undef TF_ESTIMATE_OPTIONS
 #undef TF_CONTACT_OPTIONS
 #undef TF_TUBE_OPTIONS
+#undef TF_V_DIE_OPTIONS
 
 std::vector<std::string> SceneNames()
 {
@@ -125,12 +132,17 @@ SceneOptionReaders SceneReaders()
 }
 
 namespace {
-// Whether the space-separated list `reads` names `option` (a name ending in '_' as a prefix).
+// Whether the space-separated list `reads` names `option` (a name ending in '_' as a prefix; "<N>" in a name: any
+// later pass's number, 2 to 9).
 bool Lists(const std::string &reads, const std::string &option)
 {
   std::istringstream words(reads);
-  for (std::string w; words >> w;)
+  for (std::string w; words >> w;) {
+    const size_t n = w.find("<N>");
+    if (n != std::string::npos && option.size() == w.size() - 2 && option[n] >= '2' && option[n] <= '9')
+      w.replace(n, 3, 1, option[n]);
     if (w.back() == '_' ? option.compare(0, w.size(), w) == 0 : option == w) return true;
+  }
   return false;
 }
 } // namespace
@@ -171,6 +183,7 @@ PetscErrorCode RefuseForeignOptions(MPI_Comm comm, const Options &opt)
   PetscCall(PetscFree(all));
   for (std::string w; words >> w;) {
     if (w.size() < 2 || w[0] != '-' || !std::isalpha((unsigned char)w[1])) continue; // (a value)
+    for (char &c : w) c = (char)std::tolower((unsigned char)c);                      // (PETSc's names ignore case)
     const std::string why = ForeignOption(opt.scene, w, opt.known);
     if (!why.empty() && opt.allow_unused)
       PetscCall(
@@ -182,19 +195,24 @@ PetscErrorCode RefuseForeignOptions(MPI_Comm comm, const Options &opt)
 }
 
 namespace {
-// The titles of the -help blocks of `known` whose options `scene` reads and not every scene does, in their order
-// ("tubeform: " dropped), separated by "; ".
+// The titles of the -help blocks of `known` that only some scenes read, `scene` among them (every option of the
+// block read by some scenes only, one of them by `scene`), in their order ("tubeform: " dropped), separated by "; ".
 std::string OwnBlocks(const std::string &scene, const std::vector<KnownOption> &known)
 {
-  std::vector<std::string> titles;
-  const std::string own = "tubeform: ";
+  std::vector<std::string> titles, shared;
   for (const auto &k : known) {
-    if (k.reader.empty() || (" " + k.scenes + " ").find(" " + scene + " ") == std::string::npos) continue;
-    const std::string t = k.reader.rfind(own, 0) == 0 ? k.reader.substr(own.size()) : k.reader;
-    if (std::find(titles.begin(), titles.end(), t) == titles.end()) titles.push_back(t);
+    if (k.reader.empty()) continue;
+    const std::string readers = ReadersOf(k.name, known);
+    if (readers.empty()) shared.push_back(k.reader);
+    if ((" " + readers + " ").find(" " + scene + " ") != std::string::npos &&
+        std::find(titles.begin(), titles.end(), k.reader) == titles.end())
+      titles.push_back(k.reader);
   }
   std::string joined;
-  for (const auto &t : titles) joined += (joined.empty() ? "" : "; ") + t;
+  const std::string own = "tubeform: ";
+  for (const auto &t : titles)
+    if (std::find(shared.begin(), shared.end(), t) == shared.end())
+      joined += (joined.empty() ? "" : "; ") + (t.rfind(own, 0) == 0 ? t.substr(own.size()) : t);
   return joined;
 }
 } // namespace

@@ -128,7 +128,7 @@ struct SceneOptionReaders {
   ToolSceneReaders tools;
   // Collective: refuses, in one line naming the scenes that read it, an option given that the run's scene does not
   // read (KnownOption::scenes, and the options the registry lists as only some scenes'); after the options are read,
-  // before any value is checked. Null: none refused.
+  // before the values' checks of range and combination. Null: none refused.
   PetscErrorCode (*refuse_foreign)(MPI_Comm comm, const Options &opt) = nullptr;
 };
 
