@@ -79,17 +79,16 @@ std::unique_ptr<Scene> MakeAnySlideScene(const Options &opt)
 const std::vector<SceneEntry> &SceneRegistry()
 {
   // The options only some scenes read (`reads`): the V-die's, the tube's where the body is one, friction's where
-  // something touches, the stroke and the punch speed where something moves by it (-dynamics_time in the scenes
-  // without tools), the release's and the stroke's path where tools let the tube go, the error estimate's and the
-  // accuracy's where it runs (the tool scenes: main.cpp), each scene's own.
+  // something touches, the stroke, the punch speed and the output by stroke where something moves by it
+  // (-dynamics_time in the scenes without tools), the release's and the stroke's path where tools let the tube go,
+  // the error estimate's and the accuracy's where it runs (the tool scenes: main.cpp), each scene's own.
   static const std::vector<SceneEntry> scenes = {
     {"squaring", "quarter tube pressed by the upper 90-degree V-die (the paper's process)", MakeSquaringScene,
      ScenePress::Die,
-     TF_V_DIE_OPTIONS
-     " " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS
-     " -stroke -punch_speed -unload -springback -stroke_path -stroke_corner_radius " TF_ESTIMATE_OPTIONS},
+     "-stroke -punch_speed -output_stroke -unload -springback -stroke_path -stroke_corner_radius " TF_V_DIE_OPTIONS
+     " " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS " " TF_ESTIMATE_OPTIONS},
     {"flattening", "quarter ring crushed by a flat plate", MakeFlatteningScene, ScenePress::Plate,
-     "-stroke -punch_speed -unload -springback -stroke_path " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS
+     "-stroke -punch_speed -output_stroke -unload -springback -stroke_path " TF_TUBE_OPTIONS " " TF_CONTACT_OPTIONS
      " " TF_ESTIMATE_OPTIONS},
     {"pressure", "quarter thick cylinder under internal pressure (Lame, Hill)", MakePressureScene, ScenePress::None,
      "-pressure_ -dynamics_time " TF_TUBE_OPTIONS, TF_OWN(Pressure)},
@@ -98,7 +97,7 @@ const std::vector<SceneEntry> &SceneRegistry()
     {"rotation", "a stressed block turned rigidly (objectivity)", MakeRotationScene, ScenePress::None,
      "-rotation_ -dynamics_time", TF_OWN(Rotation)},
     {"column", "a bowed strip shortened past its Euler load (geometric stiffness)", MakeColumnScene, ScenePress::None,
-     "-column_ -dynamics_time -stroke", TF_OWN(Column)},
+     "-column_ -dynamics_time -stroke -output_stroke", TF_OWN(Column)},
     {"tension", "plane-strain tension or compression of a block (flow curve)", MakeTensionScene, ScenePress::None,
      "-tension_ -dynamics_time", TF_OWN(Tension)},
     {"bending", "pure bending and unbending of a plane-strain strip (springback)", MakeBendingScene, ScenePress::None,
