@@ -2,7 +2,8 @@
 docs/options-reference.md, which must be what tools/options_doc.py generates
 from this build's -help; docs/options.md is a guide to the option groups that
 links to it, and docs/guide.md points to it. So:
-  - the reference is up to date (the generator's own --check);
+  - the reference is up to date (the generator's own --check, which also
+    refuses a scene registry line naming no option);
   - the guide names only options tubeform has (a renamed or removed option
     fails here), other than PETSc's own and the misspellings it shows as
     examples of what is refused;

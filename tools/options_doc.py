@@ -3,7 +3,8 @@
 its default and description, by section, and which scenes read the options
 that not every scene does (the scene registry's lines under "tubeform:
 scenes:"), so the reference cannot drift from the code (the test docs_options
-checks it is up to date).
+checks it is up to date). A registry line that names no option of -help (a
+misspelling) stops it.
 
     /usr/bin/python3 tools/options_doc.py [--check] [EXE]
 
@@ -133,7 +134,13 @@ def main():
     a = ap.parse_args()
     if not os.access(a.exe, os.X_OK):
         sys.exit(f"tools/options_doc.py: {a.exe}: not an executable tubeform (build it: scripts/build)")
-    text = markdown(*options(a.exe))
+    sections, scenes = options(a.exe)
+    every = [n for _, opts in sections for n, *_ in opts]
+    stray = sorted({r for _, _, reads, _ in scenes for r in reads if not any(names(r, n) for n in every)})
+    if stray:  # (a registry line that names no option: a misspelling, or an option renamed without its line)
+        sys.exit(f"tools/options_doc.py: the scene registry's lists name no option of -help: {' '.join(stray)} "
+                 "(src/scenes/registry.cpp)")
+    text = markdown(sections, scenes)
     if a.check:
         old = open(OUT).read() if os.path.exists(OUT) else ""
         if old != text:
