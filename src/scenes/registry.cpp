@@ -190,6 +190,13 @@ PetscErrorCode RefuseForeignOptions(MPI_Comm comm, const Options &opt)
     else
       PetscCheck(why.empty(), comm, PETSC_ERR_USER_INPUT, "%s: %s; -allow_unused runs anyway", w.c_str(), why.c_str());
   }
+  // The cells a tube's mesh takes from its wall (-mesh_nt 0, -mesh_ntheta 0) ask for the tube's rules, which a block's
+  // scene does not read: its cells are given.
+  const bool tube = ForeignOption(opt.scene, "-mesh_wall_strain", opt.known).empty();
+  PetscCheck(tube || (opt.mesh_nt > 0 && opt.mesh_ntheta > 0), comm, PETSC_ERR_USER_INPUT,
+             "-mesh_nt %d, -mesh_ntheta %d: 0 takes a tube's cells from its wall (-mesh_wall_strain, -mesh_density); "
+             "the %s scene's body is a block: give its cells (1 or more)",
+             (int)opt.mesh_nt, (int)opt.mesh_ntheta, opt.scene.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -37,7 +37,8 @@ std::string ReadersOf(const std::string &option, const std::vector<KnownOption> 
 std::string ForeignOption(const std::string &scene, const std::string &option, const std::vector<KnownOption> &known);
 // Collective: an option given (command line or options files) that only other scenes read stops the run in one
 // line naming them (ForeignOption; SceneOptionReaders::refuse_foreign), before the values' checks of range and
-// combination; -allow_unused turns it into a warning line. Its name in any case (PETSc's names ignore it).
+// combination; -allow_unused turns it into a warning line. Its name in any case (PETSc's names ignore it). Also the
+// tube's automatic cells (-mesh_nt 0, -mesh_ntheta 0) in a scene whose body is a block.
 PetscErrorCode RefuseForeignOptions(MPI_Comm comm, const Options &opt);
 // Under -help: each scene, what it is, the options of the `reads` lists it reads and the -help blocks only it and
 // other scenes read (`known`: every option read), one line each after the heading "tubeform: scenes:"
