@@ -82,6 +82,11 @@ def bad_input_cases(src, out):
         (["-scene", "column", "-expect_c_over_t", "0.01"], "-expect_c_over_t: read by the squaring and flattening"),
         (["-scene", "bending", "-stroke", "2"], "-stroke: read by the squaring, flattening and column scenes"),
         (["-scene", "bending", "-tube_t", "2"], "-tube_t: read by the squaring, flattening, pressure and slide"),
+        # Under -allow_unused a foreign option only warns; a die's option where there are none is still stopped by the
+        # dies' own checks, which cannot tell it from one that acts.
+        (["-allow_unused", "-side_die", "flat"], "the pressure scene presses with no dies"),
+        (["-scene", "flattening", "-allow_unused", "-pass2_stroke", "2", "-pass2_die_angle", "60"],
+         "presses with plates, not dies"),
         (["-scene", "tension", "-mesh_nt", "0"], "the tension scene's body is a block: give its cells"),
         (["-scene", "squaring", "-pass2_lower_die_motion", "fixed"], "-pass2_lower_die_motion, -pass2_side_die"),
         (["-scene", "squaring", "-model", "quarter", "-pass2_stroke", "2", "-pass2_lower_die_motion", "fixed"],

@@ -107,7 +107,7 @@ PetscErrorCode ReadPassValue(PetscOptionItems *PetscOptionsObject, OptionReader 
 PetscErrorCode ReadPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, int number, PassSpec &pass)
 {
   const std::string pre = "-pass" + std::to_string(number) + "_";
-  const std::string as = "tool scenes: pass " + std::to_string(number) + "'s, as -pass2_";
+  const std::string as = "pass " + std::to_string(number) + "'s, as -pass2_"; // (the scenes: -pass2_<name>'s)
   bool given = number == 2;
   PetscFunctionBeginUser;
   for (const PassOption &o : kPassOptions) {
