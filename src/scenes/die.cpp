@@ -160,10 +160,10 @@ PetscErrorCode BuildPassDies(MPI_Comm comm, const Options &opt, int pass, bool s
   }
   if (!dies.side.Is(DieFrom::None))
     PetscCall(
-      AddSideDies(comm, opt, dies.side, OptionOfPass(pass, "side_die").c_str(), squaring, right_half, part, tools));
+      AddSideDies(comm, opt, dies.side, PassOptionName(pass, "side_die").c_str(), squaring, right_half, part, tools));
   // Its upper die's own motion (a path, a force: the first pass's -die_motion, a later one's), after the stroke its
   // lower die's motion gives it.
-  PetscCall(SetUpperMotion(comm, OptionOfPass(pass, "die_motion").c_str(), dies.motion, tools[0]));
+  PetscCall(SetUpperMotion(comm, PassOptionName(pass, "die_motion").c_str(), dies.motion, tools[0]));
   // Its upper die off its press's axis (-die_offset, -pass<N>_die_offset): where it starts along its motion,
   // PressScene::PassTools (StartOffAxis).
   if (dies.offset != 0) tools[0] = Shifted(tools[0], {dies.offset, 0});

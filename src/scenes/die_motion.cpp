@@ -41,7 +41,7 @@ PetscErrorCode SetMotion(MPI_Comm comm, const char *option, const std::string &k
 
 PetscErrorCode SetLowerMotion(MPI_Comm comm, const Options &o, int pass, Tool &upper, Tool &lower)
 {
-  const std::string option = OptionOfPass(pass, "lower_die_motion");
+  const std::string option = PassOptionName(pass, "lower_die_motion");
   PetscFunctionBeginUser;
   const LowerDieSpec die = LowerDieOfPass(o, pass);
   PetscCall(SetMotion(comm, option.c_str(), die.kind, die.spec, lower));
@@ -94,7 +94,7 @@ PetscErrorCode SetUpperMotion(MPI_Comm comm, const char *option, const DieMotion
 
 PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, int pass, size_t first_side, std::vector<Tool> &tools)
 {
-  const std::string option = OptionOfPass(pass, "side_force");
+  const std::string option = PassOptionName(pass, "side_force");
   PetscFunctionBeginUser;
   for (size_t k = first_side; DiesOfPass(opt, pass).side_force > 0 && k < tools.size(); ++k) {
     MotionSpec spec;

@@ -189,7 +189,7 @@ PetscErrorCode PressScene::StartPass(Model &m)
   PetscCall(PassDies(m, spec.tools, spec.symmetry));
   if (!m.quiet && OwnPath())
     PetscCall(PetscPrintf(m.comm, "tubeform: %s pass: the upper die along its path (%s) from U = %s to %s mm\n",
-                          PassOrdinal(next).c_str(), PassOption(next, "die_path").c_str(),
+                          PassOrdinal(next).c_str(), PassOptionName(next, "die_path").c_str(),
                           Formatted("%.4g", PassStart()).c_str(), Formatted("%.4g", PassEnd()).c_str()));
   else if (!m.quiet && passes_[pass_].extent.Forced())
     PetscCall(PetscPrintf(m.comm, "tubeform: %s pass: the upper die presses with up to %s N/mm (%s) from U = %s mm\n",
@@ -201,7 +201,7 @@ PetscErrorCode PressScene::StartPass(Model &m)
                           "at U = %s mm (%s); the upper die from U = %s to %s mm\n",
                           PassOrdinal(next).c_str(),
                           Formatted("%.4g", passes_[pass_].extent.stroke + StartBack()).c_str(),
-                          Formatted("%g", passes_[pass_].extent.stroke).c_str(), PassOption(next, "stroke").c_str(),
+                          Formatted("%g", passes_[pass_].extent.stroke).c_str(), PassOptionName(next, "stroke").c_str(),
                           Formatted("%.4g", PassStart()).c_str(), Formatted("%.4g", PassEnd()).c_str()));
   if (pin_.holds()) PetscCall(pin_.Mark(m, Press()));
   PetscCall(m.contact->Setup(m.mesh, m.system, m.body.position(), spec));

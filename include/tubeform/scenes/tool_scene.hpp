@@ -51,14 +51,6 @@ inline ToolSceneParams &ToolsOf(Options &opt)
   return *std::any_cast<ToolSceneParams>(&opt.tools);
 }
 
-// The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
-std::string PassOption(int pass, const char *what);
-// The same for any pass, the first's without a number: -side_force, -pass2_side_force, ...
-inline std::string OptionOfPass(int pass, const char *what)
-{
-  return pass > 0 ? PassOption(pass, what) : std::string("-") + what;
-}
-
 // The first pass (-stroke, -die_*, -lower_die, -side_die) and its dies as given; pass `pass` (1 the second, ...) of
 // the passes after it: its -pass<pass + 1>_* options.
 inline const PassSpec &FirstPass(const Options &opt) { return ToolsOf(opt).passes[0]; }
@@ -213,7 +205,7 @@ inline Unload ReleaseOfPass(const Options &opt, int pass)
 // The option that gives pass `pass`'s release: its own -pass<N>_unload, or the first pass's -unload it takes.
 inline std::string ReleaseOption(const Options &opt, int pass)
 {
-  return pass > 0 && LaterPass(opt, pass).release ? PassOption(pass, "unload") : "-unload";
+  return pass > 0 && LaterPass(opt, pass).release ? PassOptionName(pass, "unload") : "-unload";
 }
 // What the choice of the model reads of a pass's tools (ModelOf; every pass's, given or not: a pass given without
 // its stroke is refused after the model is chosen). Side dies press both sides alike: they choose nothing.

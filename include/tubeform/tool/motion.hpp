@@ -110,6 +110,13 @@ struct MotionSpec {
   std::vector<double> own;       // a kind's own numbers, as its reader reads them (its file says which)
 };
 
+// The name of pass `pass`'s option `what` (0 the first pass, whose options carry no number): -side_force,
+// -pass2_side_force, ... (every pass's options are named so, the dies' and the scene's alike).
+inline std::string PassOptionName(int pass, const char *what)
+{
+  return pass == 0 ? std::string("-") + what : Formatted("-pass%d_%s", pass + 1, what);
+}
+
 // What a kind's press check (MotionKind::press_check) reads of the press whose upper die it moves: the tool scenes
 // fill it from their options (scenes/motion_checks.hpp); the kind refuses there what it cannot do.
 struct MotionPress {
@@ -128,11 +135,8 @@ struct MotionPress {
   bool die_offset = false;    // the pass's die moved off its axis (-die_offset, -pass<N>_die_offset)
   bool off_axis = false;      // the pass's die leaves its press's y axis (a sideways point or a turn)
   bool held = false;          // the pass is held by the rotation hold (the full model's)
-  // The pass's option `what`, the first pass's without a number: -lower_die_motion, -pass2_lower_die_motion, ...
-  std::string Option(const char *what) const
-  {
-    return pass == 0 ? std::string("-") + what : Formatted("-pass%d_%s", pass + 1, what);
-  }
+  // The pass's option `what` (PassOptionName).
+  std::string Option(const char *what) const { return PassOptionName(pass, what); }
 };
 // A kind's press check: "" or its refusal, one line naming the option and what goes with it.
 using MotionPressCheck = std::string (*)(const MotionSpec &spec, const MotionPress &press);

@@ -243,7 +243,7 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
     const double y = MotionPathOf(p.dies.motion.kind, own).Last()[1];
     PetscCheck(p.stroke == 0, comm, PETSC_ERR_USER_INPUT,
                "%s: in place of %s (the pass ends at U = -y / 2 of its last point); give one of them", path.c_str(),
-               PassOption(pass, "stroke").c_str());
+               PassOptionName(pass, "stroke").c_str());
     PetscCheck(y < 0, comm, PETSC_ERR_USER_INPUT,
                "%s: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", path.c_str(),
                y);

@@ -138,8 +138,8 @@ PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 PetscErrorCode CheckSideForce(MPI_Comm comm, const Options &opt, int pass)
 {
   const double force = ToolsOf(opt).passes[pass].dies.side_force;
-  const std::string name = OptionOfPass(pass, "side_force");
-  const std::string side = OptionOfPass(pass, "side_die") + (pass > 0 ? " (or -side_die)" : "");
+  const std::string name = PassOptionName(pass, "side_force");
+  const std::string side = PassOptionName(pass, "side_die") + (pass > 0 ? " (or -side_die)" : "");
   PetscFunctionBeginUser;
   PetscCheck(force >= 0 && std::isfinite(force), comm, PETSC_ERR_USER_INPUT,
              "%s %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",
@@ -165,7 +165,7 @@ PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt)
                "%s %g: side dies pressing by a force in the %s pass, whose two sides of the tube differ (a die off "
                "the axis in it or before it; a turn that brings a pass not mirrored top to bottom to the sides): "
                "each would travel its own way, and the run follows one; press them by the stroke",
-               OptionOfPass(pass, "side_force").c_str(), dies.side_force, PassOrdinal(pass).c_str());
+               PassOptionName(pass, "side_force").c_str(), dies.side_force, PassOrdinal(pass).c_str());
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

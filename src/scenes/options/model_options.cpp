@@ -74,7 +74,7 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
                "%s %g: the %s pass is held by the rotation hold (-full_hold; a die off the axis in it or before it: "
                "-die_offset, -pass<N>_die_offset, -die_path; a turn off the quarters), an unknown of each increment "
                "as a force-controlled die's travel is; one of them in a pass",
-               e.Forced() ? e.Option().c_str() : OptionOfPass(pass, "side_force").c_str(),
+               e.Forced() ? e.Option().c_str() : PassOptionName(pass, "side_force").c_str(),
                e.Forced() ? e.Target() : side, PassOrdinal(pass).c_str());
   }
   PetscFunctionReturn(PETSC_SUCCESS);

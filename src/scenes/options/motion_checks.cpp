@@ -7,7 +7,7 @@ namespace tf {
 MotionPress PressOfPass(const Options &opt, int pass)
 {
   MotionPress press;
-  press.prefix = pass == 0 ? "-die_" : PassOption(pass, "die_");
+  press.prefix = pass == 0 ? "-die_" : PassOptionName(pass, "die_");
   press.scene = opt.scene;
   press.dies = PressesWithDie(opt), press.tools = PressesWithTools(opt);
   press.pass = pass;

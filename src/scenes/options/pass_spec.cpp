@@ -29,12 +29,11 @@ std::string ShapeWord(const DieChoice &shape)
 }
 
 // The name of pass `pass`'s (1: the second) option `what`: -pass2_stroke, ...
-std::string PassOption(int pass, const char *what) { return Formatted("-pass%d_%s", pass + 1, what); }
 
 std::string PassExtent::Option() const
 {
   const char *what = Forced() ? "die_force" : "stroke";
-  return pass == 0 ? std::string("-") + what : PassOption(pass, what);
+  return PassOptionName(pass, what);
 }
 
 } // namespace tf

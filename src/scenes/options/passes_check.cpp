@@ -21,7 +21,7 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, int pass, const 
   PetscCheck(!Extent(opt, pass).Forced(), comm, PETSC_ERR_USER_INPUT,
              "%s %s: side dies are not with %s in their pass (they press by its stroke, which a force leaves an "
              "unknown)",
-             name.c_str(), value.c_str(), OptionOfPass(pass, "die_force").c_str());
+             name.c_str(), value.c_str(), PassOptionName(pass, "die_force").c_str());
   PetscCheck(ReleaseOfPass(opt, pass) != Unload::Withdraw, comm, PETSC_ERR_USER_INPUT,
              "%s %s: side dies are not withdrawn (%s withdraw); let them go by reverse", name.c_str(), value.c_str(),
              ReleaseOption(opt, pass).c_str());
@@ -34,7 +34,7 @@ namespace {
 // held by the rotation hold (the pins would hold the tube's slide against the die).
 PetscErrorCode CheckPassOffset(MPI_Comm comm, const Options &opt, int pass)
 {
-  const std::string name = PassOption(pass, "die_offset");
+  const std::string name = PassOptionName(pass, "die_offset");
   const double offset = LaterPass(opt, pass).dies.offset;
   const ModelChoice model = ModelOf(opt);
   PetscFunctionBeginUser;
@@ -54,11 +54,11 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
 {
   const PassSpec &p = LaterPass(opt, pass);
   const PassExtent e = Extent(opt, pass);
-  const std::string stroke = PassOption(pass, "stroke"), ordinal = PassOrdinal(pass), given = e.Option();
+  const std::string stroke = PassOptionName(pass, "stroke"), ordinal = PassOrdinal(pass), given = e.Option();
   PetscFunctionBeginUser;
   PetscCheck(PressesWithDie(opt) || p.dies.upper.kind.empty(), comm, PETSC_ERR_USER_INPUT,
-             "%s, %s: the %s scene presses with plates, not dies", PassOption(pass, "die_profile").c_str(),
-             PassOption(pass, "die_angle").c_str(), opt.scene.c_str());
+             "%s, %s: the %s scene presses with plates, not dies", PassOptionName(pass, "die_profile").c_str(),
+             PassOptionName(pass, "die_angle").c_str(), opt.scene.c_str());
   PetscCheck(p.stroke >= 0 && std::isfinite(p.stroke), comm, PETSC_ERR_USER_INPUT,
              "%s %g: must be non-negative (0: %s)", stroke.c_str(), p.stroke,
              pass == 1 ? "one pass" : ("the " + PassOrdinal(pass - 1) + " pass the last").c_str());
@@ -68,16 +68,16 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
              e.Target(), ordinal.c_str(), PassOrdinal(pass - 1).c_str(), ReleaseOption(opt, pass - 1).c_str());
   PetscCheck(!e.Given() || pass == 1 || Extent(opt, pass - 1).Given(), comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", given.c_str(), e.Target(), ordinal.c_str(),
-             PassOrdinal(pass - 1).c_str(), PassOption(pass - 1, "stroke").c_str());
+             PassOrdinal(pass - 1).c_str(), PassOptionName(pass - 1, "stroke").c_str());
   PetscCheck(e.Given() || (p.dies.upper.kind.empty() && !p.dies.lower.Given() && !p.dies.side.Given() &&
                            p.dies.offset == 0 && p.dies.side_force == 0 && !p.release && !p.lower_motion),
              comm, PETSC_ERR_USER_INPUT, "%s (or its V-die's numbers), %s, %s, %s, %s, %s, %s: give %s for the %s pass",
-             PassOption(pass, "die_profile").c_str(), PassOption(pass, "lower_die").c_str(),
-             PassOption(pass, "lower_die_motion").c_str(), PassOption(pass, "side_die").c_str(),
-             PassOption(pass, "die_offset").c_str(), PassOption(pass, "side_force").c_str(),
-             PassOption(pass, "unload").c_str(), stroke.c_str(), ordinal.c_str());
+             PassOptionName(pass, "die_profile").c_str(), PassOptionName(pass, "lower_die").c_str(),
+             PassOptionName(pass, "lower_die_motion").c_str(), PassOptionName(pass, "side_die").c_str(),
+             PassOptionName(pass, "die_offset").c_str(), PassOptionName(pass, "side_force").c_str(),
+             PassOptionName(pass, "unload").c_str(), stroke.c_str(), ordinal.c_str());
   if (p.dies.side.Given() || e.Given()) // (its own side dies, or the first pass's)
-    PetscCall(CheckSideDies(comm, opt, pass, OptionOfPass(p.dies.side.Given() ? pass : 0, "side_die"),
+    PetscCall(CheckSideDies(comm, opt, pass, PassOptionName(p.dies.side.Given() ? pass : 0, "side_die"),
                             DiesOfPass(opt, pass).side));
   PetscCall(CheckPassOffset(comm, opt, pass));
   if (e.Given()) PetscCall(CheckSideForce(comm, opt, pass)); // (die_shape_options.cpp)
@@ -89,7 +89,7 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
 PetscErrorCode CheckPassTurn(MPI_Comm comm, const Options &opt, int pass)
 {
   const PassSpec &p = LaterPass(opt, pass);
-  const std::string turn = PassOption(pass, "turn");
+  const std::string turn = PassOptionName(pass, "turn");
   const ModelChoice model = ModelOf(opt);
   const int quarters = model.passes[pass].quarters;
   PetscFunctionBeginUser;
@@ -101,16 +101,16 @@ PetscErrorCode CheckPassTurn(MPI_Comm comm, const Options &opt, int pass)
              "(-model full or auto, -full_hold rotation or auto)",
              turn.c_str(), p.turn);
   PetscCheck(Extent(opt, pass).Given() || p.turn == 0, comm, PETSC_ERR_USER_INPUT, "%s %g: give %s for the %s pass",
-             turn.c_str(), p.turn, PassOption(pass, "stroke").c_str(), PassOrdinal(pass).c_str());
+             turn.c_str(), p.turn, PassOptionName(pass, "stroke").c_str(), PassOrdinal(pass).c_str());
   for (int before = 0; before < pass; ++before) {
     const bool odd = (quarters - model.passes[before].quarters) % 2 != 0;
-    const std::string lower = before == 0 ? "-lower_die" : PassOption(before, "lower_die");
+    const std::string lower = before == 0 ? "-lower_die" : PassOptionName(before, "lower_die");
     PetscCheck(!odd || model.passes[before].mirrored || model.hold != FullHold::Pins, comm, PETSC_ERR_USER_INPUT,
                "%s %g with -full_hold pins: the %s pass's dies (%s %s, %s %s) leave the tube symmetric "
                "about the y axis only; a quarter turn presses it off that axis, which the pins would hold it against "
                "(use -full_hold rotation or auto)",
                turn.c_str(), p.turn, PassOrdinal(before).c_str(), lower.c_str(), PassLowerDie(opt, before).c_str(),
-               OptionOfPass(before, "lower_die_motion").c_str(), LowerDieOfPass(opt, before).word.c_str());
+               PassOptionName(before, "lower_die_motion").c_str(), LowerDieOfPass(opt, before).word.c_str());
   }
   PetscCheck(ToolsOf(opt).model.part != TubeModel::Half || quarters % 2 == 0, comm, PETSC_ERR_USER_INPUT,
              "%s %g with -model half: the half model's plane x = 0 is no symmetry plane of a press turned by 90 "

@@ -58,7 +58,7 @@ PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
     PetscCheck(LaterPass(opt, pass).lower_motion, comm, PETSC_ERR_USER_INPUT,
                "-lower_die_motion %s: the first pass's lower die on a motion of its own; give the %s pass's, %s "
                "mirror or fixed",
-               word, PassOrdinal(pass).c_str(), PassOption(pass, "lower_die_motion").c_str());
+               word, PassOrdinal(pass).c_str(), PassOptionName(pass, "lower_die_motion").c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
