@@ -56,14 +56,17 @@ def run_mesh(h5):
     return int(m.group(1)), int(m.group(2)), m.group(3)
 
 
-def run_one(case, preset, level, extra):
+def run_one(case, preset, level, extra, out=OUT):
+    """The run of `case` on `preset` with `extra` options, cached as <out>/<case>_<preset>_<level>.h5 (its log
+    beside it)."""
     opts, _, _, _ = tfruns.calculix_reference(case)
-    h5 = os.path.join(OUT, f"{case}_{preset}_{level}.h5")
+    h5 = os.path.join(out, f"{case}_{preset}_{level}.h5")
     if not os.path.exists(h5):
-        _, _, _, out = tfruns.run("options/squaring.opts", ["-options_file", f"options/preset-{preset}.opts"] + opts +
-                                  ["-error_estimate", "0", "-progress", "0", "-output_every", "100000"] + extra, h5)
+        _, _, _, said = tfruns.run("options/squaring.opts", ["-options_file", f"options/preset-{preset}.opts"] +
+                                   opts + ["-error_estimate", "0", "-progress", "0", "-output_every", "100000"] + extra,
+                                   h5)
         with open(h5[:-3] + ".log", "w") as f:
-            f.write(out)
+            f.write(said)
     return h5
 
 

@@ -22,30 +22,19 @@ OUT = os.path.join(tfruns.root, "results", "estimate_nested")
 SHIFTS = {"n": 0, "o": -2, "p": 2}  # the companion's cells around: N / 2 + shift
 
 
-def run_one(case, preset, level, extra):
-    opts = tfruns.calculix_reference(case)[0]
-    h5 = os.path.join(OUT, f"{case}_{preset}_{level}.h5")
-    if not os.path.exists(h5):
-        _, _, _, out = tfruns.run("options/squaring.opts", ["-options_file", f"options/preset-{preset}.opts"] + opts +
-                                  ["-error_estimate", "0", "-progress", "0", "-output_every", "100000"] + extra, h5)
-        with open(h5[:-3] + ".log", "w") as f:
-            f.write(out)
-    return h5
-
-
 def run_case(case, preset):
     nt, n, element = ec.run_mesh(os.path.join(ec.OUT, f"{case}_{preset}_run.h5"))
     n4 = 4 * math.ceil(n / 4)
     ro = float(tfruns.option(tfruns.calculix_reference(case)[0], "-tube_ro"))
     keep = ["-element", element, "-friction_vcri", repr(ec.VCRI_OF_CELL * (math.pi / 2) * ro / n4)]
-    run_one(case, preset, "run", keep + ["-mesh_nt", str(nt), "-mesh_ntheta", str(n4)])
+    ec.run_one(case, preset, "run", keep + ["-mesh_nt", str(nt), "-mesh_ntheta", str(n4)], OUT)
     inc, deps, dom, dy = ec.LIMITS[preset]
     twice = ["-increments", str(max(1, inc // 2)), "-rmin_deps", str(2 * deps), "-rmin_domega", str(2 * dom),
              "-rmin_deps_yield", str(2 * dy)]
     for tag, shift in SHIFTS.items():
         cells = ["-mesh_nt", str(max(2, nt // 2)), "-mesh_ntheta", str(n4 // 2 + shift)]
-        run_one(case, preset, "M" + tag, keep + cells)
-        run_one(case, preset, "S" + tag, keep + cells + twice)
+        ec.run_one(case, preset, "M" + tag, keep + cells, OUT)
+        ec.run_one(case, preset, "S" + tag, keep + cells + twice, OUT)
 
 
 def evaluate(cases, presets, show):

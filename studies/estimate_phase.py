@@ -23,17 +23,6 @@ SHIFTS = (-2, -1, 1, 2)  # the half-through companions' cells around: N / 2 + k
 A_SHIFTS = (-1, 1)  # the through-kept companions'
 
 
-def run_one(case, preset, level, extra):
-    opts = tfruns.calculix_reference(case)[0]
-    h5 = os.path.join(OUT, f"{case}_{preset}_{level}.h5")
-    if not os.path.exists(h5):
-        _, _, _, out = tfruns.run("options/squaring.opts", ["-options_file", f"options/preset-{preset}.opts"] + opts +
-                                  ["-error_estimate", "0", "-progress", "0", "-output_every", "100000"] + extra, h5)
-        with open(h5[:-3] + ".log", "w") as f:
-            f.write(out)
-    return h5
-
-
 def run_case(case, preset):
     h5 = ec.run_one(case, preset, "run", [])
     nt, n, element = ec.run_mesh(h5)
@@ -44,9 +33,9 @@ def run_case(case, preset):
         ec.run_one(case, preset, k, lv[k] + keep)
     half_nt, half_n = ec.level_cells(nt, n)["M"]
     for k in SHIFTS:
-        run_one(case, preset, f"M{k:+d}", keep + ["-mesh_nt", str(half_nt), "-mesh_ntheta", str(half_n + k)])
+        ec.run_one(case, preset, f"M{k:+d}", keep + ["-mesh_nt", str(half_nt), "-mesh_ntheta", str(half_n + k)], OUT)
     for k in A_SHIFTS:
-        run_one(case, preset, f"A{k:+d}", keep + ["-mesh_nt", str(nt), "-mesh_ntheta", str(half_n + k)])
+        ec.run_one(case, preset, f"A{k:+d}", keep + ["-mesh_nt", str(nt), "-mesh_ntheta", str(half_n + k)], OUT)
 
 
 def add(stats, name, el, ecc, err_l, err_c, unc_l, unc_c):
