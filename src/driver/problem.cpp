@@ -241,7 +241,7 @@ PetscErrorCode Problem::Increments(ResultWriter &writer, OutputSchedule &output,
 {
   PetscFunctionBeginUser;
   const double end = path_.end;
-  const Stages stages = StagesOf(path_);
+  Stages stages = StagesOf(path_ = scene_->Path(opt_)); // (again: a restart inside a later pass, its kinks)
   double &lambda = at_.lambda;
   PetscInt &inc = at_.inc;
   const double dl_load = 1.0 / opt_.driver.increments;
@@ -263,8 +263,10 @@ PetscErrorCode Problem::Increments(ResultWriter &writer, OutputSchedule &output,
     ++inc;
 
     // 2. A stage of the load path (the paper's unloading) begins at its breakpoint.
-    PetscCall(BeginStages(stages.breaks, stop));
+    bool began;
+    PetscCall(BeginStages(stages.breaks, stop, began));
     if (!stop.why.empty()) break;
+    if (began) stages = StagesOf(path_ = scene_->Path(opt_)); // (a later pass's kinks, known once it starts)
     const double next_break =
       *std::find_if(stages.ends.begin(), stages.ends.end(), [&](double b) { return b > lambda + kLambdaTol; });
     const double dl_stage = scene_->Unloading(lambda) ? dl_unload : dl_load;
@@ -307,14 +309,15 @@ PetscErrorCode Problem::Increments(ResultWriter &writer, OutputSchedule &output,
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode Problem::BeginStages(const std::vector<double> &breaks, Stop &stop)
+PetscErrorCode Problem::BeginStages(const std::vector<double> &breaks, Stop &stop, bool &began)
 {
   PetscFunctionBeginUser;
+  began = false;
   // The loads at a stage's start are the new stage's. A stage the scene refuses to start (a second pass's die
   // inside the tube) ends the run as a failed increment does, with the results so far written.
   for (size_t b = 0; b + 1 < breaks.size() && stop.why.empty(); ++b)
     if (!at_.started[b] && at_.lambda >= breaks[b] - kLambdaTol) {
-      at_.started[b] = 1;
+      at_.started[b] = 1, began = true;
       PetscCall(StopOnFailure(scene_->BeginStage(*model_, at_.lambda), stop));
       if (stop.why.empty()) PetscCall(EndForces(at_.lambda));
     }

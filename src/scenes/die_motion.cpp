@@ -70,13 +70,18 @@ std::vector<double> UpperKinks(const DieMotion &die, double until)
   return upper->Kinks(until);
 }
 
+std::vector<double> LowerKinks(const Options &opt, int pass, double until)
+{
+  MotionHandle lower;
+  const LowerDieSpec die = LowerDieOfPass(opt, pass);
+  if (QuarterModel(opt) || !MakeMotion(die.kind, die.spec, lower).empty()) return {};
+  return lower->Kinks(until);
+}
+
 std::vector<double> PressKinks(const Options &opt, double until)
 {
   std::vector<double> kinks = UpperKinks(UpperDie(opt), until);
-  MotionHandle lower;
-  const LowerDieSpec lower_die = LowerDie(opt);
-  if (!QuarterModel(opt) && MakeMotion(lower_die.kind, lower_die.spec, lower).empty())
-    for (double s : lower->Kinks(until)) kinks.push_back(s);
+  for (double s : LowerKinks(opt, 0, until)) kinks.push_back(s);
   return kinks;
 }
 

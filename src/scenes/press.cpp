@@ -70,6 +70,8 @@ LoadPath PressScene::Path(const Options &opt) const
   for (size_t k = 1; k < passes_.size(); ++k) { // (a later pass's upper die on its own path: its points)
     const StrokePath &own = passes_[k].path;
     for (double f : own.Kinks(UpperKinks(passes_[k].dies.motion, own.travel()))) kinks.push_back(PressStage(k) + f);
+    if ((PetscInt)k > pass_) continue; // (its lower die's on a motion of its own: once its travel is known, StartPass)
+    for (double f : own.Kinks(LowerKinks(opt_, (int)k, own.travel()))) kinks.push_back(PressStage(k) + f);
   }
   return {(double)end, t, stages, kinks};
 }
@@ -303,7 +305,8 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
   for (size_t k = 0; k < tools.size() && k < p.start_back.size(); ++k) {
     tools[k] = MovedBack(tools[k], p.start_back[k]);
     const Vec2 d = tools[k].Direction();
-    if ((d[0] != 0 || d[1] != 0) && !tools[k].Unknown()) p.back = std::min(p.back, p.start_back[k]);
+    const bool own = k == kLower && BothDies(part_) && !LowerDieClosing(opt_, (int)pass_); // (its own strokes)
+    if ((d[0] != 0 || d[1] != 0) && !tools[k].Unknown() && !own) p.back = std::min(p.back, p.start_back[k]);
   }
   if (p.back == kNever) p.back = 0; // (no die moves by the stroke)
   // By its stroke: straight from where its dies start (on a path of its own: its path; under force: the die's stroke).

@@ -96,12 +96,11 @@ PetscErrorCode ReadSchedule(PetscOptionItems *PetscOptionsObject, MotionSpec &sp
   const char *prefix = PetscOptionsObject->prefix ? PetscOptionsObject->prefix : "";
 
   PetscFunctionBeginUser;
-  PetscCall(
-    PetscOptionsRealArray("-path",
-                          "the tool's travel y along its motion (mm, from where it starts; the lower die's: up) "
-                          "at strokes U in turn, as U,y pairs (U rising from 0), linear in U between them; it "
-                          "stays after the last (-lower_die_motion path)",
-                          "tubeform", v.data(), &n, &set));
+  const std::string help = std::string("the tool's travel y along its motion (mm, from where it starts; the lower "
+                                       "die's: up) at strokes U in turn, as U,y pairs (U rising from 0), linear in U "
+                                       "between them; it stays after the last (-") +
+                           prefix + "motion path)";
+  PetscCall(PetscOptionsRealArray("-path", help.c_str(), "tubeform", v.data(), &n, &set));
   if (PetscOptionsObject->printhelp) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(set && n > 0 && n % 2 == 0, PetscOptionsObject->comm, PETSC_ERR_USER_INPUT,
              "-%spath: the path of -%smotion path, as U,y pairs (mm), an even count of numbers: give both or neither",
@@ -128,8 +127,7 @@ std::string MakeSchedule(const MotionSpec &s, MotionHandle &m)
 
 const MotionKind &ScheduleKind()
 {
-  static const MotionKind kind{"schedule",   {"path"}, ReadSchedule,
-                               MakeSchedule, "path",   "follows -lower_die_path (path)"};
+  static const MotionKind kind{"schedule", {"path"}, ReadSchedule, MakeSchedule, "path"};
   return kind;
 }
 

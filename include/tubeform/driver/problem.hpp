@@ -209,8 +209,8 @@ private:
   PetscErrorCode WriteFields(ResultWriter &writer, PetscInt step, double t);
   // Steps 1-6 of Run: the increments from where the run stands to the path's end or a stop (`stop`).
   PetscErrorCode Increments(ResultWriter &writer, OutputSchedule &output, Stop &stop);
-  // Step 2: the stages whose breakpoint lambda has reached begin (`breaks`: the stages' ends).
-  PetscErrorCode BeginStages(const std::vector<double> &breaks, Stop &stop);
+  // Step 2: the stages whose breakpoint lambda has reached begin (`breaks`: the stages' ends; `began`: one did).
+  PetscErrorCode BeginStages(const std::vector<double> &breaks, Stop &stop, bool &began);
   // Step 3: the frames of the supports and contact nodes on the current geometry.
   PetscErrorCode BeginIncrement(double lambda);
   // Step 5: the increment committed (stresses, plastic states and geometry; inertia; contact), the compromise

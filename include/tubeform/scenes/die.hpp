@@ -46,6 +46,9 @@ bool LowerDieClosing(const Options &o, int pass);
 // The strokes below `until` where a pass's upper die's motion `die` changes piece, as its kind says (Motion::Kinks:
 // a path's points; none by the stroke or a force).
 std::vector<double> UpperKinks(const DieMotion &die, double until);
+// The strokes below `until` (of the pass's tools, from where its dies start) where pass `pass`'s lower die's motion
+// changes piece, in the half and full models (Motion::Kinks: a path's points; none by the stroke or fixed).
+std::vector<double> LowerKinks(const Options &opt, int pass, double until);
 // The strokes below `until` where the first pass's dies' motions turn (Motion::Kinks: the upper die's path, the
 // lower die's motion in the half and full models): the load path's kinks (an increment ends there).
 std::vector<double> PressKinks(const Options &opt, double until);

@@ -56,6 +56,8 @@ public:
     return "-mesh_nt " + std::to_string(opt.mesh_nt) + " through the wall x -mesh_ntheta " +
            std::to_string(opt.mesh_ntheta) + " around";
   }
+  // The load path; read again at each stage's start (its end, duration and stages the same: a kink a later pass
+  // knows once it starts, as its lower die's strokes from where its dies start) and on a restart.
   virtual LoadPath Path(const Options &opt) const = 0;
 
   // Once, before the first increment: the tools the scene presses against the

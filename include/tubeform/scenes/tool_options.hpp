@@ -42,9 +42,11 @@ PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReade
 // kind of tool/motion.hpp; that kind's options, -lower_die_*, read by the kind): ToolsOf(opt).lower_motion
 // (LowerDieSpec). An option of another of its words' kinds given is refused, naming it.
 PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
-// A lower die's motion that a word of -lower_die_motion names with no options of its own (mirror, fixed: a later
-// pass's -pass<N>_lower_die_motion): its word, how it goes with the upper die's, its kind.
-LowerDieSpec LowerDieOfWord(const std::string &word);
+// A later pass's lower die's motion, each its own block under the prefix pass<N>_lower_die_ (-pass<N>_lower_die_motion:
+// any word of -lower_die_motion; its kind's options, -pass<N>_lower_die_path, ..., read by the kind, its strokes from
+// where the pass's dies start): PassSpec::lower_motion where one of them is given (unset: the first pass's). Pass 2's
+// listed by -help.
+PetscErrorCode ReadPassLowerMotions(MPI_Comm comm, OptionReader &read, Options &opt);
 // The upper die's motion, its own block under the options prefix die_ (-die_motion: stroke, path or force, each a kind
 // of tool/motion.hpp; that kind's options, -die_path, -die_path_turn, -die_pivot, -die_force, read by the kind):
 // the first pass's dies' motion (ToolsOf(opt).passes[0].dies). Without -die_motion the old spellings choose: -die_path

@@ -158,7 +158,8 @@ using MotionReader = PetscErrorCode (*)(PetscOptionItems *PetscOptionsObject, Mo
 using MotionFactory = std::string (*)(const MotionSpec &spec, MotionHandle &m);
 // A kind in the registry: its name, its options' names under a prefix (without the dash), its reader (none: it
 // reads nothing) and its factory; the word -lower_die_motion offers it under (none: the lower die does not take it)
-// and what the lower die then does in -help's words (none: "moves as its motion <word> says"); the word
+// and what the lower die then does in -help's words (none: "moves as its motion <word> says", naming its options
+// under each pass's prefix: a kind that reads options gives none); the word
 // -die_motion and -pass<N>_die_motion offer it under (none: the upper die does not take it); and what the press asks
 // of a kind before its motion is made (by the kind's name: MotionOwnsPath, MotionStrokeUnknown), so that no one
 // compares names: path, the path its tool's stroke goes along, for a kind that carries one (path: a pass's stroke path

@@ -46,10 +46,11 @@ std::vector<MotionWord> LowerWords()
   return words;
 }
 
-// -lower_die_motion's help: what the lower die does under each word (a kind's lower_help, or its options).
-std::string LowerHelp(const std::vector<MotionWord> &words)
+// A lower die's -<prefix>motion help (`die`: "the lower die", "the second pass's lower die"): what it does under each
+// word (a kind's lower_help, or its options under the prefix).
+std::string LowerHelp(const std::vector<MotionWord> &words, const std::string &prefix, const std::string &die)
 {
-  std::string help = "tool scenes: the lower die ";
+  std::string help = "tool scenes: " + die + " ";
   for (size_t k = 0; k < words.size(); ++k) {
     const MotionKind *kind = FindMotionKind(words[k].kind);
     help += k == 0 ? "" : k + 1 < words.size() ? ", " : " or ";
@@ -58,7 +59,7 @@ std::string LowerHelp(const std::vector<MotionWord> &words)
       continue;
     }
     help += "moves as its motion " + words[k].word + " says (";
-    for (const std::string &name : kind->options) help += "-lower_die_" + name + " ";
+    for (const std::string &name : kind->options) help += "-" + prefix + name + ", ";
     help += "docs/dies.md)";
   }
   return help + "; the upper die travels U but with fixed";
@@ -108,47 +109,82 @@ PetscErrorCode OldSpelling(MPI_Comm comm, OptionReader &read, const std::string 
     choice = force_at;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-} // namespace
-
-LowerDieSpec LowerDieOfWord(const std::string &word)
-{
-  LowerDieSpec die;
-  for (const MotionWord &w : LowerWords())
-    if (w.word == word) die.word = w.word, die.kind = w.kind;
-  die.move = LowerDieMoveOf(die.word);
-  die.spec.tool = "the lower die";
-  return die;
-}
-
-PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
+// A lower die's motion read in its own block under `prefix` (lower_die_, pass<N>_lower_die_), titled `title`:
+// -<prefix>motion, one of the lower die's words (`die`'s the default), that kind's options read by the kind (all the
+// words' under `help`, refusing nothing), an option of another word's kind refused, naming it.
+PetscErrorCode ReadLowerMotion(MPI_Comm comm, OptionReader &read, const std::string &prefix, const char *title,
+                               const std::string &text, bool help, LowerDieSpec &die)
 {
   const std::vector<MotionWord> words = LowerWords();
   std::vector<const char *> list;
   PetscInt choice = 0;
-  const std::string help = LowerHelp(words);
 
   PetscFunctionBeginUser;
   for (size_t k = 0; k < words.size(); ++k) {
     list.push_back(words[k].word.c_str());
-    if (ToolsOf(opt).lower_motion.word == words[k].word) choice = (PetscInt)k;
+    if (die.word == words[k].word) choice = (PetscInt)k;
     for (const std::string &name : FindMotionKind(words[k].kind)->options)
-      read.Note(("-lower_die_" + name).c_str(), "", kLowerMotionTitle);
+      read.Note(("-" + prefix + name).c_str(), "", title);
   }
-  read.Note("-lower_die_motion", help.c_str(), kLowerMotionTitle);
-  ToolsOf(opt).lower_motion.spec.tool = "the lower die";
-  PetscOptionsBegin(comm, "lower_die_", kLowerMotionTitle, "tubeform");
+  read.Note(("-" + prefix + "motion").c_str(), text.c_str(), title);
+  PetscOptionsBegin(comm, prefix.c_str(), title, "tubeform");
   OptionsBlock block(PetscOptionsObject);
-  PetscCall(PetscOptionsEList("-motion", help.c_str(), "tubeform", list.data(), (PetscInt)list.size(), list[choice],
+  PetscCall(PetscOptionsEList("-motion", text.c_str(), "tubeform", list.data(), (PetscInt)list.size(), list[choice],
                               &choice, nullptr));
-  ToolsOf(opt).lower_motion.word = words[choice].word, ToolsOf(opt).lower_motion.kind = words[choice].kind;
-  ToolsOf(opt).lower_motion.move = LowerDieMoveOf(ToolsOf(opt).lower_motion.word);
-  if (opt.help)
-    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, ToolsOf(opt).lower_motion.spec));
+  die.word = words[choice].word, die.kind = words[choice].kind, die.move = LowerDieMoveOf(die.word);
+  if (help)
+    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, die.spec));
   else
-    PetscCall(ReadMotion(PetscOptionsObject, ToolsOf(opt).lower_motion.kind, ToolsOf(opt).lower_motion.spec));
+    PetscCall(ReadMotion(PetscOptionsObject, die.kind, die.spec));
   block.Release();
   PetscOptionsEnd();
-  if (!opt.help) PetscCall(RefuseOthers(comm, "lower_die_", words, words[choice]));
+  if (!help) PetscCall(RefuseOthers(comm, prefix.c_str(), words, words[choice]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+} // namespace
+
+PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  LowerDieSpec &die = ToolsOf(opt).lower_motion;
+  PetscFunctionBeginUser;
+  die.spec.tool = "the lower die";
+  PetscCall(ReadLowerMotion(comm, read, "lower_die_", kLowerMotionTitle,
+                            LowerHelp(LowerWords(), "lower_die_", "the lower die"), opt.help, die));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ReadPassLowerMotions(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  std::vector<std::string> names = {"motion"}; // (-<prefix>motion and the lower die's words' kinds' options)
+  for (const MotionWord &w : LowerWords())
+    for (const std::string &name : FindMotionKind(w.kind)->options) names.push_back(name);
+  PetscFunctionBeginUser;
+  for (int pass = 1; pass < kMaxPasses; ++pass) {
+    const std::string prefix = Formatted("pass%d_lower_die_", pass + 1);
+    const std::string title = Formatted("tubeform: pass %d lower die motion", pass + 1);
+    const std::string die = "the " + PassOrdinal(pass) + " pass's lower die";
+    const std::string help =
+      pass > 1 ? Formatted("tool scenes: pass %d's, as -pass2_lower_die_motion", pass + 1)
+               : LowerHelp(LowerWords(), prefix, die) +
+                   "; a motion of its own counts its strokes from where the pass's dies start (default: the first "
+                   "pass's -lower_die_motion where that is mirror or fixed; a later pass's by its number: "
+                   "-pass3_lower_die_motion, ...)";
+    bool given = opt.help && pass == 1; // (a pass's read where one of them is given; the second's listed by -help)
+    for (const std::string &name : names) {
+      PetscBool set;
+      PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), ("-" + name).c_str(), &set));
+      given = given || set;
+    }
+    if (!given) {
+      for (const std::string &name : names) read.Note(("-" + prefix + name).c_str(), help.c_str(), title.c_str());
+      continue;
+    }
+    LowerDieSpec own = ToolsOf(opt).lower_motion; // (its word the default; its spec its own)
+    own.spec = MotionSpec();
+    own.spec.tool = die;
+    PetscCall(ReadLowerMotion(comm, read, prefix, title.c_str(), help, opt.help, own));
+    ToolsOf(opt).passes[pass].lower_motion = own;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

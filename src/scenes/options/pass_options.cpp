@@ -21,7 +21,7 @@ PetscErrorCode ReadGivenWord(PetscOptionItems *PetscOptionsObject, OptionReader 
 
 // What a later pass reads under its prefix (-pass<N>_<name>), in -help's order: the second pass's help says what
 // each is, a later pass's points at the second's (with `later`, what differs).
-enum class PassValue { Stroke, Profile, Lower, Side, Turn, Offset, SideForce, Release, LowerMotion };
+enum class PassValue { Stroke, Profile, Lower, Side, Turn, Offset, SideForce, Release };
 struct PassOption {
   const char *name;
   PassValue value;
@@ -56,9 +56,6 @@ const PassOption kPassOptions[] = {
   {"unload", PassValue::Release,
    "tool scenes: how the second pass lets the tube go: reverse, withdraw (the quarter model) or none (the last pass "
    "only: the run ends loaded) (default: the first pass's -unload; docs/dies.md)"},
-  {"lower_die_motion", PassValue::LowerMotion,
-   "tool scenes: how the second pass's lower die moves: mirror (up by the stroke, the upper die's mirror) or fixed (it "
-   "stays; the upper die travels 2 U) (default: the first pass's -lower_die_motion; docs/dies.md)"},
 };
 
 // One of a later pass's options (`name`, with its help) into `pass`.
@@ -92,11 +89,6 @@ PetscErrorCode ReadPassValue(PetscOptionItems *PetscOptionsObject, OptionReader 
   case PassValue::Release:
     PetscCall(
       ReadGivenWord<Unload>(PetscOptionsObject, read, n, h, kUnloadWords, pass.release, [](Unload u) { return u; }));
-    break;
-  case PassValue::LowerMotion:
-    PetscCall(
-      ReadGivenWord<LowerDieMove>(PetscOptionsObject, read, n, h, kLowerDieMoveWords, pass.lower_motion,
-                                  [](LowerDieMove m) { return LowerDieOfWord(WordOf(kLowerDieMoveWords, m)); }));
     break;
   }
   PetscFunctionReturn(PETSC_SUCCESS);

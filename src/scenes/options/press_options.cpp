@@ -42,22 +42,25 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
 void SetDiePathStroke(Options &opt) { opt.stroke.u = -0.5 * DiePath(opt).Last()[1]; }
 
 // A lower die on a motion of its own (neither mirror nor fixed: a path, or another kind; its options are its
-// kind's own reader's, tool/motion.hpp): the first pass's, the stroke rising; a later pass's lower die moves as its
-// own -pass<N>_lower_die_motion says (the motion's strokes are the first pass's).
+// kind's own reader's, tool/motion.hpp): the first pass's follows it as the stroke rises; a later pass's moves as its
+// own -pass<N>_lower_die_motion says, its strokes from where the pass's dies start (the first pass's motion is not
+// taken for it: its strokes would be another pass's).
 PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 {
   const char *word = ToolsOf(opt).lower_motion.word.c_str();
   PetscFunctionBeginUser;
-  if (!LowerDieMoves(opt, 0, LowerDieMove::Own)) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(opt.stroke.path.empty() && opt.release.unload != Unload::Withdraw && opt.stroke.corner_radius <= 0, comm,
-             PETSC_ERR_USER_INPUT,
-             "-lower_die_motion %s: the lower die follows its motion as the stroke rises: not with -stroke_path, "
-             "-unload withdraw or -stroke_corner_radius",
-             word);
+  if (LowerDieMoves(opt, 0, LowerDieMove::Own))
+    PetscCheck(opt.stroke.path.empty() && opt.release.unload != Unload::Withdraw && opt.stroke.corner_radius <= 0, comm,
+               PETSC_ERR_USER_INPUT,
+               "-lower_die_motion %s: the lower die follows its motion as the stroke rises: not with -stroke_path, "
+               "-unload withdraw or -stroke_corner_radius",
+               word);
+  // (a later pass's withdrawn: CheckRelease refuses it, its model not the quarter)
   for (int pass = 1; pass < PassCount(opt); ++pass)
-    PetscCheck(LaterPass(opt, pass).lower_motion, comm, PETSC_ERR_USER_INPUT,
+    PetscCheck(LaterPass(opt, pass).lower_motion || !LowerDieMoves(opt, 0, LowerDieMove::Own), comm,
+               PETSC_ERR_USER_INPUT,
                "-lower_die_motion %s: the first pass's lower die on a motion of its own; give the %s pass's, %s "
-               "mirror or fixed",
+               "(mirror, fixed or a motion of its own, its strokes from where that pass's dies start)",
                word, PassOrdinal(pass).c_str(), PassOptionName(pass, "lower_die_motion").c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -114,7 +117,8 @@ PetscErrorCode ReadToolSceneOptions(MPI_Comm comm, OptionReader &read, Options &
   }
   PetscCall(ReadLowerDieShape(comm, read, opt));  // (die_shape_options.cpp)
   PetscCall(ReadLowerDieMotion(comm, read, opt)); // (die_motion_options.cpp)
-  PetscCall(ReadUpperDieShape(comm, read, opt));  // (die_shape_options.cpp)
+  PetscCall(ReadPassLowerMotions(comm, read, opt));
+  PetscCall(ReadUpperDieShape(comm, read, opt)); // (die_shape_options.cpp)
   PetscCall(ReadUpperDieMotion(comm, read, opt));
   PetscCall(ReadPassShapes(comm, read, opt)); // (die_shape_options.cpp; after the first pass's, their defaults)
   PetscCall(ReadSideDieShape(comm, read, opt));
