@@ -52,7 +52,7 @@
         docs/notes/where-the-time-went.md).
 
     /usr/bin/python3 scripts/history_stats.py die F.h5 [F.h5 ...]
-        A -die_path press (docs/dies.md): U, load, die_x and die_turn at the
+        A -die_path press (docs/motions.md): U, load, die_x and die_turn at the
         path's points (the loading's rows where the die's motion turns), the
         largest sideways force, die moment (about its pivot) and hold couple,
         the die's sideways work and its turn's work (tool_fx over die_x,

@@ -1,4 +1,4 @@
-"""The answer a run prints, pass by pass, against its own definitions (docs/output.md, docs/dies.md).
+"""The answer a run prints, pass by pass, against its own definitions (docs/output.md, docs/passes.md).
 
 A. Two passes (options/oval_then_square.opts, fast preset: plates press the paper's tube 3 mm into an oval, it
    springs back and turns a quarter turn, the V-dies press it across its long axis to -pass2_stroke 4):

@@ -1,4 +1,4 @@
-"""The upper die's own path (-die_path: a prescribed path in time, piecewise linear; docs/dies.md, "The die's
+"""The upper die's own path (-die_path: a prescribed path in time, piecewise linear; docs/motions.md, "The die's
 own path").
 
 The paper's tube (options/squaring.opts, fast preset), the lower V-die staying (-lower_die_motion fixed), the upper

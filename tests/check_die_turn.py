@@ -1,5 +1,5 @@
 """The upper die turning along its own path (-die_path_turn about -die_pivot: a prescribed path in
-time, translation and rotation, piecewise linear; docs/dies.md, "A die that turns").
+time, translation and rotation, piecewise linear; docs/motions.md, "A die that turns").
 
 The paper's tube (options/squaring.opts, fast preset), the lower V-die staying, the upper one down to U = 1 mm,
 then 0.3 mm to the right while turning 3 degrees counter-clockwise about its apex (the pivot 0,24.75: ro sqrt 2

@@ -1,5 +1,5 @@
 """A later pass's upper die on a path of its own (-pass2_die_path: the first pass's -die_path, read and made by the
-same code under the prefix pass2_die_; docs/dies.md, "A later pass on a path of its own").
+same code under the prefix pass2_die_; docs/passes.md, "A later pass on a path of its own").
 
 The paper's tube (options/squaring.opts, the fast preset), pressed 1.5 mm over a floor that stays (-lower_die flat
 -lower_die_motion fixed: the upper die travels 2 U), sprung back (the paper's unloading), pressed again:

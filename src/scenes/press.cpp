@@ -16,7 +16,7 @@
 // -pass2_turn turns the tube before it (its dies drawn turned the other way, its
 // metrics and forces in its press's frame: die.hpp, PassTurn). -die_motion force presses by a force (the stroke
 // its outcome), -side_die adds dies at the sides, -die_offset and -die_motion path move the die off the axis (the full
-// model under the rotation hold, hold.hpp); docs/dies.md.
+// model under the rotation hold, hold.hpp); docs/dies.md, docs/motions.md and docs/passes.md.
 // History: stroke = tool stroke U (mm; half the dies' closing; in a later
 // pass its upper die's position from the same zero: the die touching the round
 // tube; -pass2_stroke, -pass3_stroke, ... is where it ends), load = punch load on the

@@ -1,7 +1,7 @@
 // A force-controlled tool: moved along a direction by a stroke that is an unknown of each increment, found from the
 // force it presses with (the contact set's extra unknown, contact/pad.cpp). Its option under its tool's prefix:
 // -<prefix>force F (> 0, the force it presses with at the end, rising from 0 over the press; its scene says per
-// what). The upper die's: -die_motion force, -die_force (docs/dies.md), and what it goes with in a press (its press
+// what). The upper die's: -die_motion force, -die_force (docs/motions.md), and what it goes with in a press (its press
 // check); the side dies' force is their scene's -side_force.
 #include <cmath>
 
@@ -28,7 +28,7 @@ PetscErrorCode ReadForce(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
   PetscCall(PetscOptionsReal("-force",
                              "a force motion: the force the tool presses with, rising from 0 to this over the press, "
                              "its stroke an unknown of each increment (-die_motion force, -pass<N>_die_motion force: "
-                             "the upper die's punch load, N/mm, as the history's load; docs/dies.md)",
+                             "the upper die's punch load, N/mm, as the history's load; docs/motions.md)",
                              "tubeform", f, &f, &set));
   if (PetscOptionsObject->printhelp) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(set, PetscOptionsObject->comm, PETSC_ERR_USER_INPUT,

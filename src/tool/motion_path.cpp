@@ -2,8 +2,8 @@
 // Its options under its tool's prefix: -<prefix>path x1,y1,x2,y2,... (its points in turn, mm, from where it
 // starts), -<prefix>path_turn a1,a2,... (its turn at each point, degrees, counter-clockwise; none: it does not
 // turn), -<prefix>pivot x,y (the point it turns about, where it starts; needs turns). The upper die's:
-// -die_motion path, -die_path, -die_path_turn, -die_pivot (docs/dies.md), and what it goes with in a press (its press
-// check).
+// -die_motion path, -die_path, -die_path_turn, -die_pivot (docs/motions.md), and what it goes with in a press (its
+// press check).
 //
 // Two kinds answer to a user's "path": this one, a path in space that may turn (the upper die's), and the schedule
 // (motion_schedule.cpp), distances along the tool's direction at given strokes (the lower die's -lower_die_motion
@@ -110,7 +110,7 @@ PetscErrorCode ReadPath(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
             "at twice the punch speed along it (-die_motion path, -pass<N>_die_motion path: the squaring scene's "
             "upper die over a lower die that stays, -lower_die_motion fixed; in place of the pass's stroke, "
             "U = -y / 2; a sideways "
-            "motion takes the full model and the rotation hold; docs/dies.md)",
+            "motion takes the full model and the rotation hold; docs/motions.md)",
             2 * kMaxPoints, xy, path));
   PetscCall(Numbers(PetscOptionsObject, "-path_turn",
                     "a path motion: the tool's turn at each point (degrees, counter-clockwise, about its pivot; "

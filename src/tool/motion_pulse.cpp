@@ -4,7 +4,7 @@
 // A behind. Its slope is 1 - 2 A / P on the first half (with A > P / 2 it backs off) and 1 + 2 A / P on the second;
 // each half period is a kink (a step runs on one piece: the motion is exact, linear on it). Options under its
 // tool's prefix: -<prefix>pulse_amplitude A (mm, >= 0; 0: the plain stroke, no kinks), -<prefix>pulse_period P
-// (mm of stroke, > 0). The lower die: -lower_die_motion pulse (docs/dies.md).
+// (mm of stroke, > 0). The lower die: -lower_die_motion pulse (docs/motions.md).
 #include <cmath>
 
 #include "tubeform/tool/motion.hpp"

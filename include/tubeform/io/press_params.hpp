@@ -1,4 +1,4 @@
-// The loading's parameters as the options give them, one struct per group (docs/dies.md): how far a scene presses
+// The loading's parameters as the options give them, one struct per group (docs/motions.md): how far a scene presses
 // (the stroke; also the column's end shortening) and how it is released (also the bending scene's springback).
 // Options holds one of each (so that they travel with the run's options to its levels and companions); io reads and
 // checks them (io/loading_options.hpp), and the scenes take them from there. The tool scenes' own model and passes

@@ -1,7 +1,7 @@
-// What an upper die's motion cannot do with the press's other options (docs/dies.md): each kind of the motion registry
-// (tool/motion.hpp) that refuses some presses says so in its own file (MotionKind::press_check, src/tool/motion_*.cpp),
-// reading the press as a MotionPress; the tool scenes' options' checks describe each pass's press to it here. Its own
-// numbers are its reader's.
+// What an upper die's motion cannot do with the press's other options (docs/motions.md): each kind of the motion
+// registry (tool/motion.hpp) that refuses some presses says so in its own file (MotionKind::press_check,
+// src/tool/motion_*.cpp), reading the press as a MotionPress; the tool scenes' options' checks describe each pass's
+// press to it here. Its own numbers are its reader's.
 #pragma once
 
 #include <petscsys.h>

@@ -1,4 +1,4 @@
-// How far a pass presses, as its upper die's motion decides it (docs/dies.md): to the stroke it ends at (stroke:
+// How far a pass presses, as its upper die's motion decides it (docs/motions.md): to the stroke it ends at (stroke:
 // -stroke, -pass<N>_stroke; path: where its own path ends, which its reader sets as its stroke) or with the force it
 // presses with (force: -die_force, -pass<N>_die_force; its stroke the outcome, an unknown of each increment). The
 // one place that says whether a pass is pressed, what ends it, how its load rises over its stage and where its U is

@@ -1,4 +1,4 @@
-// A pass of the press and its dies as the options give them (ToolSceneParams::passes; docs/dies.md): the upper die's
+// A pass of the press and its dies as the options give them (ToolSceneParams::passes; docs/passes.md): the upper die's
 // shape and motion, the lower and side dies' shapes, the side dies' force, the pass's stroke and turn. The tool scenes
 // read them under the pass's prefix (-die_*, -lower_die, -side_die; -pass<N>_*: tool_options.hpp) and take them
 // through tool_scene.hpp (DiesOfPass, UpperDie, ...).
@@ -35,7 +35,7 @@ E EnumOfWord(const char *const (&words)[N], const std::string &word, E otherwise
 // stations are a handful.
 constexpr int kMaxPasses = 9;
 
-// The upper die's motion (-die_motion; docs/dies.md): the name of a kind of the motion registry (tool/motion.hpp)
+// The upper die's motion (-die_motion; docs/motions.md): the name of a kind of the motion registry (tool/motion.hpp)
 // that offers the upper die a word (MotionKind::upper_word: stroke, path, force), and what its options (-die_path,
 // -die_path_turn, -die_pivot; -die_force) give it, read by the kind (scenes/options/die_motion_options.cpp). The scenes
 // read it through UpperDie.
@@ -62,8 +62,8 @@ inline LowerDieMove LowerDieMoveOf(const std::string &word)
   return EnumOfWord(kLowerDieMoveWords, word, LowerDieMove::Own);
 }
 
-// The lower die's motion (-lower_die_motion; docs/dies.md): its word (mirror, fixed, path, or a kind registered after
-// the built-in ones: scenes/options/die_motion_options.cpp), how it goes with the upper die's (LowerDieMoveOf the
+// The lower die's motion (-lower_die_motion; docs/motions.md): its word (mirror, fixed, path, or a kind registered
+// after the built-in ones: scenes/options/die_motion_options.cpp), how it goes with the upper die's (LowerDieMoveOf the
 // word), the kind of the motion registry that word names (mirror: a stroke), and what its options (-lower_die_*) give
 // it, read by the kind. The scenes read it through LowerDie.
 struct LowerDieSpec {

@@ -1,4 +1,4 @@
-// How a rigid tool moves (docs/dies.md): where its stroke has moved it, how far it has turned it, its motion per
+// How a rigid tool moves (docs/motions.md): where its stroke has moved it, how far it has turned it, its motion per
 // unit stroke on the piece it follows, whether its stroke is an unknown found from a force. One kind per file
 // (src/tool/motion_*.cpp): the motion, the options it reads under its tool's options prefix, how it is made;
 // each named in the registry (motion_registry.cpp). Geometry, and PETSc only to read the options.

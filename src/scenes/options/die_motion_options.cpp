@@ -60,7 +60,7 @@ std::string LowerHelp(const std::vector<MotionWord> &words, const std::string &p
     }
     help += "moves as its motion " + words[k].word + " says (";
     for (const std::string &name : kind->options) help += "-" + prefix + name + ", ";
-    help += "docs/dies.md)";
+    help += "docs/motions.md)";
   }
   return help + "; the upper die travels U but with fixed";
 }
@@ -228,7 +228,7 @@ PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &op
     "die_", "tubeform: upper die motion",
     "tool scenes: the upper die moves down by the stroke U (stroke; 2 U over a fixed lower die), along a path of its "
     "own (path: -die_path, -die_path_turn, -die_pivot) or presses with a force (force: -die_force); without it, "
-    "-die_path (or its turns or pivot) means path, -die_force other than 0 force (docs/dies.md)",
+    "-die_path (or its turns or pivot) means path, -die_force other than 0 force (docs/motions.md)",
     UpperWords().size()};
   PetscFunctionBeginUser;
   DieMotion &motion = ToolsOf(opt).passes[0].dies.motion;
@@ -256,7 +256,7 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
                  "-pass2_die_force, as -die_force's; in place of -pass2_stroke: the pass ends at that punch load, its "
                  "stroke the outcome); without it, -pass2_die_path (or its turns or pivot) means path, "
                  "-pass2_die_force other than 0 force; a later pass's by its number: -pass3_die_path, ... "
-                 "(docs/dies.md)",
+                 "(docs/passes.md)",
       UpperWords().size()};
     bool given = pass == 1; // (a later one's read, and listed by -help, where one of them is given)
     for (const std::string &name : names) {

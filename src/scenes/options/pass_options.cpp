@@ -33,7 +33,7 @@ const PassOption kPassOptions[] = {
    "tool scenes: a second pass after the springback: press again until the upper die is at this stroke (mm, from the "
    "same zero as -stroke: the die touching the round tube; it starts where it touches the tube; 0: one pass), then "
    "spring back; a third pass and more (up to 9) by the same options with their number: -pass3_stroke, -pass3_turn, "
-   "... (docs/dies.md)"},
+   "... (docs/passes.md)"},
   {"die_profile", PassValue::Profile,
    "squaring: the second pass's upper die from a profile file (default: the first pass's die)"},
   {"lower_die", PassValue::Lower,
@@ -44,18 +44,18 @@ const PassOption kPassOptions[] = {
   {"turn", PassValue::Turn,
    "tool scenes: the tube turned counter-clockwise by this many degrees (-360 to 360) before the second pass: its dies "
    "press along the turned axis (not a multiple of 90: the full model, held by the rotation hold; a later pass's "
-   "-pass<N>_turn turns it on from the pass before's; docs/dies.md)",
+   "-pass<N>_turn turns it on from the pass before's; docs/passes.md)",
    " (from the pass before's press)"},
   {"die_offset", PassValue::Offset,
    "squaring: the second pass's upper die moved off its press's y axis by this along the press's x (mm; the full "
-   "model, held by the rotation hold; default 0: on the axis, whatever -die_offset says; docs/dies.md)"},
+   "model, held by the rotation hold; default 0: on the axis, whatever -die_offset says; docs/passes.md)"},
   {"side_force", PassValue::SideForce,
    "tool scenes: the second pass's side dies pressing with a force rising from 0 to this (N/mm, on the whole tube) "
    "over its press, their travel an unknown of each increment (default 0: by the stroke, whatever -side_force says; "
-   "docs/dies.md)"},
+   "docs/passes.md)"},
   {"unload", PassValue::Release,
    "tool scenes: how the second pass lets the tube go: reverse, withdraw (the quarter model) or none (the last pass "
-   "only: the run ends loaded) (default: the first pass's -unload; docs/dies.md)"},
+   "only: the run ends loaded) (default: the first pass's -unload; docs/passes.md)"},
 };
 
 // One of a later pass's options (`name`, with its help) into `pass`.
