@@ -1,7 +1,7 @@
 // The press's dies' motions from the options, made by the motion registry (tool/motion.hpp): the lower die's of
 // -lower_die_motion (its kind and options read by the kind, scenes/options/die_motion_options.cpp), with the upper
 // die's stroke that goes with it; the upper die's own motion (its path or its force: the first pass's -die_motion,
-// UpperDie, and a later pass's alike, DiesOfPass); the side dies' force control (-side_force, -pass<N>_side_force).
+// UpperDie, and a later pass's alike, DiesOfPass); the side dies' (-side_motion, -pass<N>_side_motion).
 #include "tubeform/scenes/die.hpp"
 
 #include <iterator>
@@ -70,18 +70,24 @@ std::vector<double> UpperKinks(const DieMotion &die, double until)
   return upper->Kinks(until);
 }
 
-std::vector<double> LowerKinks(const Options &opt, int pass, double until)
+std::vector<double> ToolKinks(const Options &opt, int pass, double until)
 {
-  MotionHandle lower;
+  std::vector<double> kinks;
+  MotionHandle lower, side;
   const LowerDieSpec die = LowerDieOfPass(opt, pass);
-  if (QuarterModel(opt) || !MakeMotion(die.kind, die.spec, lower).empty()) return {};
-  return lower->Kinks(until);
+  if (!QuarterModel(opt) && MakeMotion(die.kind, die.spec, lower).empty()) kinks = lower->Kinks(until);
+  const DieSet dies = DiesOfPass(opt, pass);
+  MotionSpec in = dies.side_motion.spec;
+  in.direction = {-1.0, 0.0}; // (any: its kinks are strokes)
+  if (!dies.side.Is(DieFrom::None) && MakeMotion(dies.side_motion.kind, in, side).empty())
+    for (double s : side->Kinks(until)) kinks.push_back(s);
+  return kinks;
 }
 
 std::vector<double> PressKinks(const Options &opt, double until)
 {
   std::vector<double> kinks = UpperKinks(UpperDie(opt), until);
-  for (double s : LowerKinks(opt, 0, until)) kinks.push_back(s);
+  for (double s : ToolKinks(opt, 0, until)) kinks.push_back(s);
   return kinks;
 }
 
@@ -97,14 +103,15 @@ PetscErrorCode SetUpperMotion(MPI_Comm comm, const char *option, const DieMotion
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, int pass, size_t first_side, std::vector<Tool> &tools)
+PetscErrorCode SetSideMotions(MPI_Comm comm, const Options &opt, int pass, size_t first_side, std::vector<Tool> &tools)
 {
-  const std::string option = PassOptionName(pass, "side_force");
+  const std::string option = PassOptionName(pass, "side_motion");
+  const DieMotion side = DiesOfPass(opt, pass).side_motion;
   PetscFunctionBeginUser;
-  for (size_t k = first_side; DiesOfPass(opt, pass).side_force > 0 && k < tools.size(); ++k) {
-    MotionSpec spec;
-    spec.direction = tools[k].Direction();
-    PetscCall(SetMotion(comm, option.c_str(), kForceMotion, spec, tools[k]));
+  for (size_t k = first_side; !DieMoves(side, kStrokeMotion) && k < tools.size(); ++k) {
+    MotionSpec spec = side.spec;
+    spec.direction = tools[k].Direction(); // (towards the tube's centre, turned with the pass)
+    PetscCall(SetMotion(comm, option.c_str(), side.kind, spec, tools[k]));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -70,8 +70,8 @@ LoadPath PressScene::Path(const Options &opt) const
   for (size_t k = 1; k < passes_.size(); ++k) { // (a later pass's upper die on its own path: its points)
     const StrokePath &own = passes_[k].path;
     for (double f : own.Kinks(UpperKinks(passes_[k].dies.motion, own.travel()))) kinks.push_back(PressStage(k) + f);
-    if ((PetscInt)k > pass_) continue; // (its lower die's on a motion of its own: once its travel is known, StartPass)
-    for (double f : own.Kinks(LowerKinks(opt_, (int)k, own.travel()))) kinks.push_back(PressStage(k) + f);
+    if ((PetscInt)k > pass_) continue; // (its lower and side dies' own motions: once its travel is known, StartPass)
+    for (double f : own.Kinks(ToolKinks(opt_, (int)k, own.travel()))) kinks.push_back(PressStage(k) + f);
   }
   return {(double)end, t, stages, kinks};
 }
@@ -94,7 +94,7 @@ double PressScene::ToolForce(double lambda) const
 {
   const Pass &p = passes_[pass_];
   const double model =
-    p.dies.side_force > 0 ? p.dies.side_force * SideDiesInModel(part_) : p.extent.force / LoadPerModelForce();
+    p.dies.SideForce() > 0 ? p.dies.SideForce() * SideDiesInModel(part_) : p.extent.force / LoadPerModelForce();
   return PassExtent::Ramp(lambda, PressStage(pass_)) * model; // (released: not read)
 }
 
@@ -284,7 +284,8 @@ PetscErrorCode PressScene::PassTools(Model &m, int pass, double floor_y, std::ve
   PetscFunctionBeginUser;
   PetscCall(BuildPassDies(m.comm, opt_, pass, squaring_, part_, floor_y, tools, flank_, apex_));
   for (Tool &t : tools) t = Transform(t, PassMap(pass));
-  PetscCall(SetSideForces(m.comm, opt_, pass, SideDie(), tools)); // (-side_force, -pass<N>_side_force: die_motion.cpp)
+  PetscCall(
+    SetSideMotions(m.comm, opt_, pass, SideDie(), tools)); // (-side_motion, -pass<N>_side_motion: die_motion.cpp)
   // Its upper die off the axis (-die_offset, -pass<N>_die_offset): its zero, as every pass's, where it touches the
   // round tube (the first pass's printed; a later pass's start from there: StartOnTube).
   const double offset = DiesOfPass(opt_, pass).offset;

@@ -22,8 +22,11 @@ double PressScene::ToolWork(const HistoryRow &prev, const HistoryRow &row, doubl
 double PressScene::SideStroke(Model &m, double lambda) const
 {
   const Pass &p = passes_[pass_];
-  if (p.dies.side_force > 0) return p.side_from + m.contact->tool(SideDie()).stroke; // (their own)
-  return pass_ > 0 ? p.side_from + ToolStroke(lambda) : Stroke(m, lambda);
+  if (p.dies.SideForce() > 0) return p.side_from + m.contact->tool(SideDie()).stroke; // (their own)
+  if (DieMoves(p.dies.side_motion, kStrokeMotion))
+    return pass_ > 0 ? p.side_from + ToolStroke(lambda) : Stroke(m, lambda);
+  // (fixed, a path, pulses: how far their motion has taken them in at the pass's stroke)
+  return p.side_from + m.contact->tool(SideDie()).motion->Travel(ToolStroke(lambda));
 }
 
 PetscErrorCode PressScene::Measure(Model &m, double lambda, Vec f_int, HistoryRow &row)

@@ -20,7 +20,8 @@ const MotionKind &FixedKind()
   static const MotionKind kind{
     "fixed", {},
     nullptr, [](const MotionSpec &, MotionHandle &m) { return m = FixedMotion(), std::string(); },
-    "fixed", "stays (fixed; the upper die then travels 2 U, so U is half the dies' closing either way)"};
+    "fixed", "stays (fixed; the upper die then travels 2 U, so U is half the dies' closing either way)",
+    nullptr, "fixed"};
   return kind;
 }
 

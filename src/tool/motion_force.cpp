@@ -2,7 +2,7 @@
 // force it presses with (the contact set's extra unknown, contact/pad.cpp). Its option under its tool's prefix:
 // -<prefix>force F (> 0, the force it presses with at the end, rising from 0 over the press; its scene says per
 // what). The upper die's: -die_motion force, -die_force (docs/motions.md), and what it goes with in a press (its press
-// check); the side dies' force is their scene's -side_force.
+// check); the side dies': -side_motion force, -side_force (each side die's force on the whole tube).
 #include <cmath>
 
 #include "tubeform/tool/motion_straight.hpp"
@@ -27,8 +27,8 @@ PetscErrorCode ReadForce(PetscOptionItems *PetscOptionsObject, MotionSpec &spec)
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsReal("-force",
                              "a force motion: the force the tool presses with, rising from 0 to this over the press, "
-                             "its stroke an unknown of each increment (-die_motion force, -pass<N>_die_motion force: "
-                             "the upper die's punch load, N/mm, as the history's load; docs/motions.md)",
+                             "its stroke an unknown of each increment (N/mm: the upper die's punch load, as the "
+                             "history's load; each side die's on the whole tube; docs/motions.md)",
                              "tubeform", f, &f, &set));
   if (PetscOptionsObject->printhelp) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(set, PetscOptionsObject->comm, PETSC_ERR_USER_INPUT,
@@ -80,6 +80,7 @@ const MotionKind &ForceKind()
                                },
                                nullptr,
                                nullptr,
+                               "force",
                                "force",
                                /*path=*/nullptr,
                                /*unknown_stroke=*/true,

@@ -213,6 +213,7 @@ const MotionKind &PathKind()
                                nullptr,
                                nullptr,
                                "path",
+                               nullptr,
                                PathOf,
                                /*unknown_stroke=*/false,
                                CheckPathInPress,

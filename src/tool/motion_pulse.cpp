@@ -23,9 +23,10 @@ public:
   std::string Kind() const override { return "pulse"; }
   Vec2 Offset(double s) const override
   {
-    const double y = s - a_ * Wave(s); // (a_ 0: s exactly, a plain stroke's)
+    const double y = Travel(s);
     return {y * d_[0], y * d_[1]};
   }
+  double Travel(double s) const override { return s - a_ * Wave(s); } // (a_ 0: s exactly, a plain stroke's)
   Vec2 Direction() const override { return {slope_ * d_[0], slope_ * d_[1]}; }
   void Follow(double s) override
   {
@@ -85,7 +86,8 @@ std::string MakePulse(const MotionSpec &s, MotionHandle &m)
 
 const MotionKind &PulseKind()
 {
-  static const MotionKind kind{"pulse", {"pulse_amplitude", "pulse_period"}, ReadPulse, MakePulse, "pulse"};
+  static const MotionKind kind{
+    "pulse", {"pulse_amplitude", "pulse_period"}, ReadPulse, MakePulse, "pulse", nullptr, nullptr, "pulse"};
   return kind;
 }
 

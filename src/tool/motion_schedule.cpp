@@ -20,7 +20,8 @@ std::string Number(double v)
 
 class Schedule : public Motion {
 public:
-  Schedule(const std::vector<double> &at, const std::vector<Vec2> &to) : at_{0.0}, to_{{0.0, 0.0}}
+  Schedule(const std::vector<double> &at, const std::vector<Vec2> &to, const Vec2 &axis)
+      : at_{0.0}, to_{{0.0, 0.0}}, axis_(axis)
   {
     at_.insert(at_.end(), at.begin(), at.end());
     to_.insert(to_.end(), to.begin(), to.end());
@@ -36,6 +37,11 @@ public:
     return {to_[k][0] + (s - at_[k]) * v[0], to_[k][1] + (s - at_[k]) * v[1]};
   }
   Vec2 Direction() const override { return d_; }
+  double Travel(double s) const override
+  {
+    const Vec2 o = Offset(s);
+    return o[0] * axis_[0] + o[1] * axis_[1];
+  }
   void Follow(double s) override
   {
     const size_t k = Piece(s);
@@ -45,13 +51,14 @@ public:
   void Map(const TurnMap &map) override
   {
     for (Vec2 &p : to_) p = map(p);
-    d_ = map(d_);
+    d_ = map(d_), axis_ = map(axis_);
   }
 
 private:
   std::vector<double> at_; // the strokes, from 0
   std::vector<Vec2> to_;   // the displacements there
   Vec2 d_{};               // the motion per unit stroke on the piece followed
+  Vec2 axis_;              // the unit direction its travel is counted along (Travel)
 
   // A stroke this close to one of the strokes (relative to the last) is at it: a step from there runs on the piece
   // after it (the stroke at a kink is the commits' sum, within round-off of the given one).
@@ -71,7 +78,8 @@ private:
 };
 } // namespace
 
-std::string ScheduleMotion(const std::vector<double> &at, const std::vector<Vec2> &to, MotionHandle &m)
+std::string ScheduleMotion(const std::vector<double> &at, const std::vector<Vec2> &to, MotionHandle &m,
+                           const Vec2 &axis)
 {
   if (at.empty() || at.size() != to.size()) return "give a stroke and a displacement for each point";
   for (size_t k = 0; k < at.size(); ++k) {
@@ -80,7 +88,8 @@ std::string ScheduleMotion(const std::vector<double> &at, const std::vector<Vec2
       return "the strokes must rise from 0 and every number be finite (stroke " + Number(at[k]) + " after " +
              Number(before) + ")";
   }
-  m = MotionHandle(std::make_unique<Schedule>(at, to));
+  const double n = std::hypot(axis[0], axis[1]);
+  m = MotionHandle(std::make_unique<Schedule>(at, to, n > 0 ? Vec2{axis[0] / n, axis[1] / n} : Vec2{0.0, 0.0}));
   return "";
 }
 
@@ -121,13 +130,13 @@ std::string MakeSchedule(const MotionSpec &s, MotionHandle &m)
   std::vector<Vec2> to = s.to;
   if (to.empty())
     for (double d : s.along) to.push_back({d * s.direction[0] + 0.0, d * s.direction[1] + 0.0});
-  return ScheduleMotion(s.at, to, m);
+  return ScheduleMotion(s.at, to, m, s.direction);
 }
 } // namespace
 
 const MotionKind &ScheduleKind()
 {
-  static const MotionKind kind{"schedule", {"path"}, ReadSchedule, MakeSchedule, "path"};
+  static const MotionKind kind{"schedule", {"path"}, ReadSchedule, MakeSchedule, "path", nullptr, nullptr, "path"};
   return kind;
 }
 

@@ -26,6 +26,7 @@ const MotionKind &StrokeKind()
                                },
                                "mirror",
                                "moves up by the stroke U (mirror)",
+                               "stroke",
                                "stroke"};
   return kind;
 }

@@ -46,18 +46,19 @@ bool LowerDieClosing(const Options &o, int pass);
 // The strokes below `until` where a pass's upper die's motion `die` changes piece, as its kind says (Motion::Kinks:
 // a path's points; none by the stroke or a force).
 std::vector<double> UpperKinks(const DieMotion &die, double until);
-// The strokes below `until` (of the pass's tools, from where its dies start) where pass `pass`'s lower die's motion
-// changes piece, in the half and full models (Motion::Kinks: a path's points; none by the stroke or fixed).
-std::vector<double> LowerKinks(const Options &opt, int pass, double until);
+// The strokes below `until` (of the pass's tools, from where its dies start) where pass `pass`'s lower die's motion (in
+// the half and full models) and its side dies' change piece (Motion::Kinks: a path's points, a pulse's half periods;
+// none by the stroke, fixed or a force).
+std::vector<double> ToolKinks(const Options &opt, int pass, double until);
 // The strokes below `until` where the first pass's dies' motions turn (Motion::Kinks: the upper die's path, the
 // lower die's motion in the half and full models): the load path's kinks (an increment ends there).
 std::vector<double> PressKinks(const Options &opt, double until);
 // Collective: a pass's upper die on its own motion `die` (a path, turning about its pivot; a force), or an error on
 // every rank naming `option`; by the stroke, the motion its lower die's gives it (SetLowerMotion).
 PetscErrorCode SetUpperMotion(MPI_Comm comm, const char *option, const DieMotion &die, Tool &upper);
-// Collective: pass `pass`'s side dies pressing by a force (tools from first_side on; -side_force,
-// -pass<N>_side_force: DiesOfPass), where it has one.
-PetscErrorCode SetSideForces(MPI_Comm comm, const Options &opt, int pass, size_t first_side, std::vector<Tool> &tools);
+// Collective: pass `pass`'s side dies (tools from first_side on) on their motion (-side_motion, -pass<N>_side_motion:
+// DiesOfPass), where it is not the stroke they are drawn with; an error on every rank naming the option.
+PetscErrorCode SetSideMotions(MPI_Comm comm, const Options &opt, int pass, size_t first_side, std::vector<Tool> &tools);
 
 // The flattening scene's plate reaches past the ring on both sides (fractions of Ro): a crushed ring widens by
 // much less than half its radius.

@@ -125,10 +125,16 @@ struct DieSet {
   DieShape upper;   // -die_profile, -die_angle, ... (UpperDieShape); -pass<N>_die_profile
   DieMotion motion; // -die_motion (UpperDie); -pass<N>_die_motion (ReadPassMotions)
   DieChoice lower{DieFrom::Mirror}, side{DieFrom::None}; // -lower_die, -side_die (ShapeChoice); their passes
-  double side_force = 0; // -side_force, -pass<N>_side_force: side dies pressing with this force (N/mm, each), their
-                         // travel unknown (0: by the stroke); a later pass's its own, not the first pass's
-  double offset = 0;     // -die_offset, -pass<N>_die_offset: the upper die off its press's y axis along the press's x
-                         // (mm; the full model); a later pass's its own (0: on the axis), not the first pass's
+  DieMotion side_motion; // -side_motion, -pass<N>_side_motion (stroke, fixed, path, pulse, force: each a kind of the
+                         // motion registry offering a side_word), its options -side_path, -side_force, ... read by the
+                         // kind; a later pass's its own (default: by the stroke), not the first pass's
+
+  double offset = 0; // -die_offset, -pass<N>_die_offset: the upper die off its press's y axis along the press's x
+                     // (mm; the full model); a later pass's its own (0: on the axis), not the first pass's
+
+  // The force each side die presses with (N/mm, on the whole tube; -side_motion force) where they press by one, their
+  // travel an unknown; 0 where they move by their motion.
+  double SideForce() const { return MotionStrokeUnknown(side_motion.kind) ? side_motion.spec.force : 0.0; }
 };
 
 // A pass of the press (ToolSceneParams::passes: the first, then each after the springback of the one before): its

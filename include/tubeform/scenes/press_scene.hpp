@@ -146,7 +146,8 @@ private:
   // Collective: the next pass's dies set up from where they touch the tube the springback left (BeginStage).
   PetscErrorCode StartPass(Model &m);
   // The side dies' travel at `lambda` (the history's side_stroke): by the stroke from where the pass's begins (the
-  // first pass's: its U), or their own under a force; through the releases too, so that a pass's side dies go on
+  // first pass's: its U), their own under a force, or as far as their motion has taken them in at the pass's stroke
+  // (fixed, a path, pulses: Motion::Travel); through the releases too, so that a pass's side dies go on
   // from the row before them (StartPass), whatever moved the pass before.
   double SideStroke(Model &m, double lambda) const;
   // Collective: the dies of the pass before `next`, withdrawn (-unload withdraw, -pass<N>_unload), carry no load.

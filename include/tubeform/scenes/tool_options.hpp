@@ -53,23 +53,16 @@ PetscErrorCode ReadPassLowerMotions(MPI_Comm comm, OptionReader &read, Options &
 // (or its turns or pivot) path, -die_force other than 0 force (-die_force 0 is allowed with any word). An option of
 // another word's kind is refused, naming it.
 PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
-// An upper die's motion's block: its options prefix (die_: -die_motion, -die_path, ...), its title in -help, the help
-// of -<prefix>motion, and how many of the upper die's words (the registry's kinds' MotionKind::upper_word, in the
-// registry's order) it offers.
-struct UpperMotionBlock {
-  std::string prefix, title, help;
-  size_t words;
-};
-// An upper die's motion read in its own block (the first pass's: ReadUpperDieMotion): -<prefix>motion, one of the
-// block's words, or an old spelling (-<prefix>path, its turns or pivot: path; -<prefix>force other than 0: force);
-// that kind's options read by the kind (all the words' under `help`, refusing nothing), an option of another word's
-// kind refused, naming it. die.spec.tool names the die in the kinds' refusals.
-PetscErrorCode ReadUpperMotion(MPI_Comm comm, OptionReader &read, const UpperMotionBlock &block, bool help,
-                               DieMotion &die);
-// A later pass's upper die's motion, each its own block under the prefix pass<N>_die_ (ReadUpperMotion: the stroke,
+// A later pass's upper die's motion, each its own block under the prefix pass<N>_die_ (as the first pass's: the stroke,
 // or a path of its own, -pass<N>_die_path, _die_path_turn, _die_pivot, read by the path kind; in place of its
 // -pass<N>_stroke, which it sets to where the path ends). Pass 2's listed by -help; a later one's where given.
 PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt);
+// Each pass's side dies' motion, its own block under the prefix side_ (the first pass's) or pass<N>_side_:
+// -side_motion stroke (by the stroke U), fixed, path (-side_path), pulse (-side_pulse_*) or force (-side_force), each
+// a kind of tool/motion.hpp offering the side dies a word (MotionKind::side_word), its options read by the kind;
+// without it -side_path means path, -side_force other than 0 force. A later pass's where one of its options is given
+// (default: by the stroke).
+PetscErrorCode ReadSideMotions(MPI_Comm comm, OptionReader &read, Options &opt);
 // (both in die_motion_options.cpp)
 // The upper die's shape, its own block under the options prefix die_: the V-die, its options -die_angle, -die_r_apex,
 // -die_u_close, -die_r_edge read by the V kind of tool/shape.hpp (and checked by it in CheckToolSceneOptions), unless
@@ -82,13 +75,13 @@ PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt
 PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt);
 // The first pass's lower die's and side dies' shapes (ToolsOf(opt).passes[0].dies), each its own block: -lower_die
 // (mirror, flat or a file) into its lower, -side_die (none, mirror, flat or a file) into its side (ShapeChoice; both in
-// die_shape_options.cpp, refused where they do not go with the other options by CheckToolSceneOptions), and in the side
-// dies' block their force, -side_force, into its side_force. Collective: CheckSideDieOptions refuses -side_die and
-// -side_force where they do not go with the other options, one line naming the option (CheckToolSceneOptions).
+// die_shape_options.cpp, refused where they do not go with the other options by CheckToolSceneOptions; their motion:
+// ReadSideMotions). Collective: CheckSideDieOptions refuses -side_die and the side dies' motion where they do not go
+// with the other options, one line naming the option (CheckToolSceneOptions).
 PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt);
-// Collective: pass `pass`'s side dies' force (-side_force, -pass<N>_side_force): a non-negative number of N/mm, with
-// the pass's side dies (die_shape_options.cpp).
-PetscErrorCode CheckSideForce(MPI_Comm comm, const Options &opt, int pass);
+// Collective: pass `pass`'s side dies' motion (-side_motion, -pass<N>_side_motion; a force: -side_force, ...) other
+// than the stroke only with the pass's side dies (die_shape_options.cpp).
+PetscErrorCode CheckSideMotion(MPI_Comm comm, const Options &opt, int pass);
 PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 // Inside a block (its PetscOptionsObject): a die's shape by the word of `option` (ShapeChoice: mirror, flat, none where

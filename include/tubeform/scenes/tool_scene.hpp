@@ -110,6 +110,8 @@ inline bool LowerDieMoves(const Options &opt, int pass, LowerDieMove move)
 }
 // A pass's upper die's kind is `kind` (`dies`: a pass's, FirstDies(opt), DiesOfPass or the scene's).
 inline bool DieMoves(const DieSet &dies, const char *kind) { return dies.motion.kind == kind; }
+// A die's motion (a pass's side dies': DieSet::side_motion) is of the kind `kind`.
+inline bool DieMoves(const DieMotion &motion, const char *kind) { return motion.kind == kind; }
 // The first pass's upper die's own path (-die_path with its turns; none unless -die_motion path).
 inline ToolPath DiePath(const Options &opt) { return MotionPathOf(FirstDies(opt).motion.kind, UpperDie(opt).spec); }
 // The die's travel over the first pass in units of the stroke U (mm; -output_stroke counts it): along -stroke_path,
@@ -192,7 +194,7 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
   if (given.lower.Given()) dies.lower = given.lower;
   if (given.side.Given()) dies.side = given.side;
   dies.motion = given.motion, dies.motion.spec.reach = opt.tube_ro;
-  dies.side_force = given.side_force, dies.offset = given.offset;
+  dies.side_motion = given.side_motion, dies.offset = given.offset;
   return dies;
 }
 // Pass `pass`'s lower die's word (-lower_die, -pass<N>_lower_die: the first pass's where not given).

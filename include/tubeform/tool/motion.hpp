@@ -39,6 +39,10 @@ public:
   virtual Vec2 Offset(double s) const = 0;
   // How far the stroke s has turned it about its frame's origin (radians, counter-clockwise).
   virtual double Turn(double /*s*/) const { return 0.0; }
+  // How far the stroke s has moved it along its motion's axis (in units of that axis, as Offset = Travel x axis for
+  // a motion along one line): a stroke's and a force's s, a pulse's s less its wave, a schedule's distance along
+  // its direction, 0 for a tool that stays (the side dies' travel, the history's side_stroke).
+  virtual double Travel(double s) const { return s; }
   // Per unit stroke on the piece it follows: the motion of its frame's origin, and its turn about it.
   virtual Vec2 Direction() const = 0;
   virtual double Spin() const { return 0.0; }
@@ -91,9 +95,10 @@ std::unique_ptr<Motion> PathMotion(const ToolPath &path);
 // force: along `direction`, its stroke an unknown found from the force it presses with (motion_force.cpp).
 std::unique_ptr<Motion> ForceMotion(const Vec2 &direction);
 
-// schedule: through displacements `to` at strokes `at` (rising from 0), standing after the last; "" or why not
-// (motion_schedule.cpp).
-std::string ScheduleMotion(const std::vector<double> &at, const std::vector<Vec2> &to, MotionHandle &m);
+// schedule: through displacements `to` at strokes `at` (rising from 0), standing after the last, its travel counted
+// along `axis` (none: 0); "" or why not (motion_schedule.cpp).
+std::string ScheduleMotion(const std::vector<double> &at, const std::vector<Vec2> &to, MotionHandle &m,
+                           const Vec2 &axis = {0.0, 0.0});
 
 // What a kind of motion is made from (each kind reads what it needs).
 struct MotionSpec {
@@ -160,7 +165,8 @@ using MotionFactory = std::string (*)(const MotionSpec &spec, MotionHandle &m);
 // reads nothing) and its factory; the word -lower_die_motion offers it under (none: the lower die does not take it)
 // and what the lower die then does in -help's words (none: "moves as its motion <word> says", naming its options
 // under each pass's prefix: a kind that reads options gives none); the word
-// -die_motion and -pass<N>_die_motion offer it under (none: the upper die does not take it); and what the press asks
+// -die_motion and -pass<N>_die_motion offer it under (none: the upper die does not take it); the word -side_motion and
+// -pass<N>_side_motion offer it under (none: the side dies do not take it); and what the press asks
 // of a kind before its motion is made (by the kind's name: MotionOwnsPath, MotionStrokeUnknown), so that no one
 // compares names: path, the path its tool's stroke goes along, for a kind that carries one (path: a pass's stroke path
 // and end are the path's; none: the tool goes by the scene's stroke), and unknown_stroke, its stroke is an unknown
@@ -175,6 +181,7 @@ struct MotionKind {
   const char *lower_word = nullptr;
   const char *lower_help = nullptr;
   const char *upper_word = nullptr;
+  const char *side_word = nullptr;
   ToolPath (*path)(const MotionSpec &spec) = nullptr;
   bool unknown_stroke = false;
   MotionPressCheck press_check = nullptr;

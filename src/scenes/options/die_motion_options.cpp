@@ -37,14 +37,20 @@ PetscErrorCode RefuseOthers(MPI_Comm comm, const char *prefix, const std::vector
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The lower die's words (-lower_die_motion): each kind of the registry that offers one (MotionKind::lower_word).
-std::vector<MotionWord> LowerWords()
+// A die's words for its motion: each kind of the registry that offers it one (`word`: MotionKind::lower_word,
+// upper_word or side_word), in the registry's order.
+std::vector<MotionWord> WordsOf(const char *MotionKind::*word)
 {
   std::vector<MotionWord> words;
   for (const std::string &kind : MotionKinds())
-    if (const char *word = FindMotionKind(kind)->lower_word) words.push_back({word, kind});
+    if (const char *w = FindMotionKind(kind)->*word) words.push_back({w, kind});
   return words;
 }
+// The lower die's (-lower_die_motion), the upper die's (-die_motion, -pass<N>_die_motion) and the side dies'
+// (-side_motion, -pass<N>_side_motion).
+std::vector<MotionWord> LowerWords() { return WordsOf(&MotionKind::lower_word); }
+std::vector<MotionWord> UpperWords() { return WordsOf(&MotionKind::upper_word); }
+std::vector<MotionWord> SideWords() { return WordsOf(&MotionKind::side_word); }
 
 // A lower die's -<prefix>motion help (`die`: "the lower die", "the second pass's lower die"): what it does under each
 // word (a kind's lower_help, or its options under the prefix).
@@ -63,16 +69,6 @@ std::string LowerHelp(const std::vector<MotionWord> &words, const std::string &p
     help += "docs/motions.md)";
   }
   return help + "; the upper die travels U but with fixed";
-}
-
-// The upper die's words (-die_motion, -pass<N>_die_motion): each kind of the registry that offers one
-// (MotionKind::upper_word), in the registry's order.
-std::vector<MotionWord> UpperWords()
-{
-  std::vector<MotionWord> words;
-  for (const std::string &kind : MotionKinds())
-    if (const char *word = FindMotionKind(kind)->upper_word) words.push_back({word, kind});
-  return words;
 }
 
 // Where the word `word` is among `words` (-1: not there).
@@ -141,6 +137,49 @@ PetscErrorCode ReadLowerMotion(MPI_Comm comm, OptionReader &read, const std::str
   if (!help) PetscCall(RefuseOthers(comm, prefix.c_str(), words, words[choice]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+// A die's motion's block: its options prefix (die_: -die_motion, -die_path, ...), its title in -help, the help of
+// -<prefix>motion, and the die's words (the registry's kinds that offer it one, in the registry's order).
+struct MotionBlock {
+  std::string prefix, title, help;
+  std::vector<MotionWord> words;
+};
+
+// A die's motion read in its own block: -<prefix>motion, one of the block's words, or an old spelling
+// (-<prefix>path, its turns or pivot: path; -<prefix>force other than 0: force); that kind's options read by the kind
+// (all the words' under `help`, refusing nothing), an option of another word's kind refused, naming it.
+// die.spec.tool names the die in the kinds' refusals.
+PetscErrorCode ReadWordMotion(MPI_Comm comm, OptionReader &read, const MotionBlock &block, bool help, DieMotion &die)
+{
+  const std::vector<MotionWord> &words = block.words;
+  const std::string &prefix = block.prefix;
+  std::vector<const char *> list;
+  PetscInt choice = 0;
+  bool zero_force = false;
+
+  PetscFunctionBeginUser;
+  for (const MotionWord &w : words) {
+    if (w.kind == die.kind) choice = (PetscInt)list.size();
+    list.push_back(w.word.c_str());
+    for (const std::string &name : FindMotionKind(w.kind)->options)
+      read.Note(("-" + prefix + name).c_str(), "", block.title.c_str());
+  }
+  read.Note(("-" + prefix + "motion").c_str(), block.help.c_str(), block.title.c_str());
+  PetscCall(OldSpelling(comm, read, prefix, words, choice, zero_force));
+  PetscOptionsBegin(comm, prefix.c_str(), block.title.c_str(), "tubeform");
+  OptionsBlock end(PetscOptionsObject);
+  PetscCall(PetscOptionsEList("-motion", block.help.c_str(), "tubeform", list.data(), (PetscInt)list.size(),
+                              list[choice], &choice, nullptr));
+  die.kind = words[choice].kind;
+  if (help)
+    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, die.spec));
+  else
+    PetscCall(ReadMotion(PetscOptionsObject, words[choice].kind, die.spec));
+  end.Release();
+  PetscOptionsEnd();
+  if (!help) PetscCall(RefuseOthers(comm, prefix.c_str(), words, words[choice], zero_force ? kForceMotion : ""));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace
 
 PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
@@ -188,52 +227,18 @@ PetscErrorCode ReadPassLowerMotions(MPI_Comm comm, OptionReader &read, Options &
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ReadUpperMotion(MPI_Comm comm, OptionReader &read, const UpperMotionBlock &block, bool help,
-                               DieMotion &die)
-{
-  std::vector<MotionWord> words = UpperWords();
-  words.resize(block.words);
-  const std::string &prefix = block.prefix;
-  std::vector<const char *> list;
-  PetscInt choice = 0;
-  bool zero_force = false;
-
-  PetscFunctionBeginUser;
-  for (const MotionWord &w : words) {
-    if (w.kind == die.kind) choice = (PetscInt)list.size();
-    list.push_back(w.word.c_str());
-    for (const std::string &name : FindMotionKind(w.kind)->options)
-      read.Note(("-" + prefix + name).c_str(), "", block.title.c_str());
-  }
-  read.Note(("-" + prefix + "motion").c_str(), block.help.c_str(), block.title.c_str());
-  PetscCall(OldSpelling(comm, read, prefix, words, choice, zero_force));
-  PetscOptionsBegin(comm, prefix.c_str(), block.title.c_str(), "tubeform");
-  OptionsBlock end(PetscOptionsObject);
-  PetscCall(PetscOptionsEList("-motion", block.help.c_str(), "tubeform", list.data(), (PetscInt)list.size(),
-                              list[choice], &choice, nullptr));
-  die.kind = words[choice].kind;
-  if (help)
-    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, die.spec));
-  else
-    PetscCall(ReadMotion(PetscOptionsObject, words[choice].kind, die.spec));
-  end.Release();
-  PetscOptionsEnd();
-  if (!help) PetscCall(RefuseOthers(comm, prefix.c_str(), words, words[choice], zero_force ? kForceMotion : ""));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
 {
-  const UpperMotionBlock block{
+  const MotionBlock block{
     "die_", "tubeform: upper die motion",
     "tool scenes: the upper die moves down by the stroke U (stroke; 2 U over a fixed lower die), along a path of its "
     "own (path: -die_path, -die_path_turn, -die_pivot) or presses with a force (force: -die_force); without it, "
     "-die_path (or its turns or pivot) means path, -die_force other than 0 force (docs/motions.md)",
-    UpperWords().size()};
+    UpperWords()};
   PetscFunctionBeginUser;
   DieMotion &motion = ToolsOf(opt).passes[0].dies.motion;
   motion.spec.tool = "the " + opt.scene + " scene's upper die";
-  PetscCall(ReadUpperMotion(comm, read, block, opt.help, motion));
+  PetscCall(ReadWordMotion(comm, read, block, opt.help, motion));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -245,7 +250,7 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscFunctionBeginUser;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     PassSpec &p = ToolsOf(opt).passes[pass];
-    const UpperMotionBlock block{
+    const MotionBlock block{
       Formatted("pass%d_die_", pass + 1), Formatted("tubeform: pass %d upper die motion", pass + 1),
       pass > 1 ? Formatted("tool scenes: pass %d's, as -pass2_die_motion", pass + 1)
                : "tool scenes: the second pass's upper die moves by its stroke (stroke: -pass2_stroke), along a path "
@@ -257,7 +262,7 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
                  "stroke the outcome); without it, -pass2_die_path (or its turns or pivot) means path, "
                  "-pass2_die_force other than 0 force; a later pass's by its number: -pass3_die_path, ... "
                  "(docs/passes.md)",
-      UpperWords().size()};
+      UpperWords()};
     bool given = pass == 1; // (a later one's read, and listed by -help, where one of them is given)
     for (const std::string &name : names) {
       PetscBool set;
@@ -270,7 +275,7 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
       continue;
     }
     p.dies.motion.spec.tool = "the " + PassOrdinal(pass) + " pass's upper die";
-    PetscCall(ReadUpperMotion(comm, read, block, opt.help, p.dies.motion));
+    PetscCall(ReadWordMotion(comm, read, block, opt.help, p.dies.motion));
     if (opt.help || !p.dies.motion.OwnPath()) continue;
     // Its stroke: where its path ends (U = -y / 2 of its last point, from where it starts).
     const std::string path = "-" + block.prefix + "path";
@@ -284,6 +289,56 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
                "%s: the last point's y %g must be below the start: the press ends pressing (U = -y / 2)", path.c_str(),
                y);
     p.stroke = -0.5 * y;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+namespace {
+// -<prefix>side_motion's help (`pass`: 0 the first pass's, 1 the second's): the side dies' words, each with its
+// kind's options under the prefix.
+std::string SideHelp(const std::string &prefix, int pass)
+{
+  const std::vector<MotionWord> words = SideWords();
+  std::string help = "tool scenes: how " + std::string(pass == 0 ? "the" : "the second pass's") +
+                     " side dies move towards the tube's centre (a motion of the registry, as the other dies'): ";
+  for (size_t k = 0; k < words.size(); ++k) {
+    help += (k == 0 ? "" : k + 1 < words.size() ? ", " : " or ") + words[k].word;
+    const std::vector<std::string> &options = FindMotionKind(words[k].kind)->options;
+    for (size_t j = 0; j < options.size(); ++j) help += (j == 0 ? " (-" : ", -") + prefix + options[j];
+    help += options.empty() ? "" : ")";
+  }
+  return help + "; stroke: in by the stroke U, force: each pressing with a force on the whole tube (N/mm), its " +
+         "travel an unknown; without it, -" + prefix + "path means path, -" + prefix + "force other than 0 force" +
+         (pass == 0 ? "" : " (default: by the stroke, whatever the first pass's say)") + " (docs/dies.md)";
+}
+} // namespace
+
+PetscErrorCode ReadSideMotions(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  std::vector<std::string> names = {"motion"}; // (-<prefix>motion and the side dies' words' kinds' options)
+  for (const MotionWord &w : SideWords())
+    for (const std::string &name : FindMotionKind(w.kind)->options) names.push_back(name);
+  PetscFunctionBeginUser;
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    const std::string prefix = pass == 0 ? "side_" : Formatted("pass%d_side_", pass + 1);
+    const MotionBlock block{
+      prefix, pass == 0 ? "tubeform: side die motion" : Formatted("tubeform: pass %d side die motion", pass + 1),
+      pass > 1 ? Formatted("tool scenes: pass %d's, as -pass2_side_motion", pass + 1) : SideHelp(prefix, pass),
+      SideWords()};
+    bool given = pass < 2 && opt.help; // (a later pass's read where one of them is given)
+    for (const std::string &name : names) {
+      PetscBool set;
+      PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), ("-" + name).c_str(), &set));
+      given = given || set;
+    }
+    if (!given && pass > 0) {
+      for (const std::string &name : names)
+        read.Note(("-" + prefix + name).c_str(), block.help.c_str(), block.title.c_str());
+      continue;
+    }
+    DieMotion &motion = ToolsOf(opt).passes[pass].dies.side_motion;
+    motion.spec.tool = pass == 0 ? "each side die" : "each of the " + PassOrdinal(pass) + " pass's side dies";
+    PetscCall(ReadWordMotion(comm, read, block, opt.help, motion));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -120,13 +120,9 @@ PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, nullptr, "tubeform: side die shape", "tubeform");
   OptionsBlock block(PetscOptionsObject);
-  PetscCall(read.Real(PetscOptionsObject, "-side_force",
-                      "tool scenes with side dies: force control: each side die presses with a force rising from 0 to "
-                      "this (N/mm, on the whole tube) over the press, its travel an unknown of each increment (0: "
-                      "they move by the stroke)",
-                      dies.side_force));
   PetscCall(ReadDieChoice(PetscOptionsObject, read, "-side_die",
-                          "tool scenes: side dies pressing by the stroke U (or with -side_force): none, mirror (the "
+                          "tool scenes: side dies pressing towards the tube's centre as -side_motion says (by default "
+                          "by the stroke U): none, mirror (the "
                           "upper die turned to the side), flat (a plate), or a profile file drawn as an upper die "
                           "(docs/dies.md)",
                           true, dies.side)); // (as a later pass's -pass<N>_side_die)
@@ -135,18 +131,18 @@ PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode CheckSideForce(MPI_Comm comm, const Options &opt, int pass)
+PetscErrorCode CheckSideMotion(MPI_Comm comm, const Options &opt, int pass)
 {
-  const double force = ToolsOf(opt).passes[pass].dies.side_force;
-  const std::string name = PassOptionName(pass, "side_force");
+  const DieSet dies = DiesOfPass(opt, pass);
   const std::string side = PassOptionName(pass, "side_die") + (pass > 0 ? " (or -side_die)" : "");
+  // (named by the option given: a force by its number, the old spelling's, another motion by its word)
+  const std::string name =
+    dies.SideForce() > 0 ? Formatted("%s %g", PassOptionName(pass, "side_force").c_str(), dies.SideForce())
+                         : PassOptionName(pass, "side_motion") + " " + FindMotionKind(dies.side_motion.kind)->side_word;
   PetscFunctionBeginUser;
-  PetscCheck(force >= 0 && std::isfinite(force), comm, PETSC_ERR_USER_INPUT,
-             "%s %g: the side dies' force must be a non-negative number of N/mm (0: they move by the stroke)",
-             name.c_str(), force);
-  PetscCheck(force == 0 || !DiesOfPass(opt, pass).side.Is(DieFrom::None), comm, PETSC_ERR_USER_INPUT,
-             "%s %g: force-controlled side dies need the pass's side dies, %s (mirror, flat or a file)", name.c_str(),
-             force, side.c_str());
+  PetscCheck(DieMoves(dies.side_motion, kStrokeMotion) || !dies.side.Is(DieFrom::None), comm, PETSC_ERR_USER_INPUT,
+             "%s: side dies on a motion of their own need the pass's side dies, %s (mirror, flat or a file)",
+             name.c_str(), side.c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -154,18 +150,18 @@ PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckSideDies(comm, opt, 0, "-side_die", FirstDies(opt).side)); // (passes_check.cpp)
-  PetscCall(CheckSideForce(comm, opt, 0));
+  PetscCall(CheckSideMotion(comm, opt, 0));
   // Every pass's side dies pressed by a force where the tube's two sides meet them alike (each travels its own way,
   // the run follows one), named by the option that gives the force (a later pass's own, or the first pass's).
   const ModelChoice model = ModelOf(opt);
   for (int pass = 0; pass < PassCount(opt); ++pass) {
     const DieSet dies = DiesOfPass(opt, pass);
-    PetscCheck(dies.side.Is(DieFrom::None) || dies.side_force == 0 || model.SidesAlike(pass), comm,
+    PetscCheck(dies.side.Is(DieFrom::None) || dies.SideForce() == 0 || model.SidesAlike(pass), comm,
                PETSC_ERR_USER_INPUT,
                "%s %g: side dies pressing by a force in the %s pass, whose two sides of the tube differ (a die off "
                "the axis in it or before it; a turn that brings a pass not mirrored top to bottom to the sides): "
                "each would travel its own way, and the run follows one; press them by the stroke",
-               PassOptionName(pass, "side_force").c_str(), dies.side_force, PassOrdinal(pass).c_str());
+               PassOptionName(pass, "side_force").c_str(), dies.SideForce(), PassOrdinal(pass).c_str());
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

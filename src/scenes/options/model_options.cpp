@@ -69,7 +69,7 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt)
              "-full_hold %s: only the full model is held so (-model full)", WordOf(kFullHoldWords, m.full_hold));
   for (int pass = 0; pass < kMaxPasses; ++pass) { // (a pass's press: one force-controlled unknown in an increment)
     const PassExtent e = Extent(opt, pass);
-    const double side = ToolsOf(opt).passes[pass].dies.side_force;
+    const double side = ToolsOf(opt).passes[pass].dies.SideForce();
     PetscCheck(!model.HeldByRotation(pass) || (!e.Forced() && side == 0), comm, PETSC_ERR_USER_INPUT,
                "%s %g: the %s pass is held by the rotation hold (-full_hold; a die off the axis in it or before it: "
                "-die_offset, -pass<N>_die_offset, -die_path; a turn off the quarters), an unknown of each increment "

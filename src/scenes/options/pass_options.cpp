@@ -21,7 +21,7 @@ PetscErrorCode ReadGivenWord(PetscOptionItems *PetscOptionsObject, OptionReader 
 
 // What a later pass reads under its prefix (-pass<N>_<name>), in -help's order: the second pass's help says what
 // each is, a later pass's points at the second's (with `later`, what differs).
-enum class PassValue { Stroke, Profile, Lower, Side, Turn, Offset, SideForce, Release };
+enum class PassValue { Stroke, Profile, Lower, Side, Turn, Offset, Release };
 struct PassOption {
   const char *name;
   PassValue value;
@@ -49,10 +49,6 @@ const PassOption kPassOptions[] = {
   {"die_offset", PassValue::Offset,
    "squaring: the second pass's upper die moved off its press's y axis by this along the press's x (mm; the full "
    "model, held by the rotation hold; default 0: on the axis, whatever -die_offset says; docs/passes.md)"},
-  {"side_force", PassValue::SideForce,
-   "tool scenes: the second pass's side dies pressing with a force rising from 0 to this (N/mm, on the whole tube) "
-   "over its press, their travel an unknown of each increment (default 0: by the stroke, whatever -side_force says; "
-   "docs/passes.md)"},
   {"unload", PassValue::Release,
    "tool scenes: how the second pass lets the tube go: reverse, withdraw (the quarter model) or none (the last pass "
    "only: the run ends loaded) (default: the first pass's -unload; docs/passes.md)"},
@@ -82,9 +78,6 @@ PetscErrorCode ReadPassValue(PetscOptionItems *PetscOptionsObject, OptionReader 
     break;
   case PassValue::Offset:
     PetscCall(read.Real(PetscOptionsObject, n, h, pass.dies.offset));
-    break;
-  case PassValue::SideForce:
-    PetscCall(read.Real(PetscOptionsObject, n, h, pass.dies.side_force));
     break;
   case PassValue::Release:
     PetscCall(

@@ -69,19 +69,21 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(!e.Given() || pass == 1 || Extent(opt, pass - 1).Given(), comm, PETSC_ERR_USER_INPUT,
              "%s %g: the %s pass follows the %s; give %s", given.c_str(), e.Target(), ordinal.c_str(),
              PassOrdinal(pass - 1).c_str(), PassOptionName(pass - 1, "stroke").c_str());
-  PetscCheck(e.Given() || (p.dies.upper.kind.empty() && !p.dies.lower.Given() && !p.dies.side.Given() &&
-                           p.dies.offset == 0 && p.dies.side_force == 0 && !p.release && !p.lower_motion),
-             comm, PETSC_ERR_USER_INPUT, "%s (or its V-die's numbers), %s, %s, %s, %s, %s, %s: give %s for the %s pass",
-             PassOptionName(pass, "die_profile").c_str(), PassOptionName(pass, "lower_die").c_str(),
-             PassOptionName(pass, "lower_die_motion").c_str(), PassOptionName(pass, "side_die").c_str(),
-             PassOptionName(pass, "die_offset").c_str(), PassOptionName(pass, "side_force").c_str(),
-             PassOptionName(pass, "unload").c_str(), stroke.c_str(), ordinal.c_str());
+  PetscCheck(
+    e.Given() || (p.dies.upper.kind.empty() && !p.dies.lower.Given() && !p.dies.side.Given() && p.dies.offset == 0 &&
+                  DieMoves(p.dies.side_motion, kStrokeMotion) && !p.release && !p.lower_motion),
+    comm, PETSC_ERR_USER_INPUT, "%s (or its V-die's numbers), %s, %s, %s, %s, %s, %s, %s: give %s for the %s pass",
+    PassOptionName(pass, "die_profile").c_str(), PassOptionName(pass, "lower_die").c_str(),
+    PassOptionName(pass, "lower_die_motion").c_str(), PassOptionName(pass, "side_die").c_str(),
+    PassOptionName(pass, "side_motion").c_str(), PassOptionName(pass, "die_offset").c_str(),
+    PassOptionName(pass, "side_force").c_str(), PassOptionName(pass, "unload").c_str(), stroke.c_str(),
+    ordinal.c_str());
   if (p.dies.side.Given() || e.Given()) // (its own side dies, or the first pass's)
     PetscCall(CheckSideDies(comm, opt, pass, PassOptionName(p.dies.side.Given() ? pass : 0, "side_die"),
                             DiesOfPass(opt, pass).side));
   PetscCall(CheckPassOffset(comm, opt, pass));
-  if (e.Given()) PetscCall(CheckSideForce(comm, opt, pass)); // (die_shape_options.cpp)
-  PetscCall(CheckUpperMotion(comm, opt, pass));              // (its motion kind's check: motion_checks.hpp)
+  if (e.Given()) PetscCall(CheckSideMotion(comm, opt, pass)); // (die_shape_options.cpp)
+  PetscCall(CheckUpperMotion(comm, opt, pass));               // (its motion kind's check: motion_checks.hpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -19,12 +19,13 @@ PetscErrorCode CheckDies(MPI_Comm comm, Options &opt)
   const DieSet &first = FirstDies(opt);
   bool asked = !first.lower.Is(DieFrom::Mirror) || !LowerDieMoves(opt, 0, LowerDieMove::Mirror) ||
                ToolsOf(opt).model.part != TubeModel::Auto || !DieMoves(first, kStrokeMotion) ||
-               !first.side.Is(DieFrom::None) || first.side_force != 0 || first.offset != 0 ||
+               !first.side.Is(DieFrom::None) || !DieMoves(first.side_motion, kStrokeMotion) || first.offset != 0 ||
                ToolsOf(opt).model.full_hold != FullHold::Auto;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     const PassSpec &p = LaterPass(opt, pass);
     asked = asked || p.stroke != 0 || p.turn != 0 || !p.dies.upper.kind.empty() || p.dies.lower.Given() ||
-            p.dies.side.Given() || p.dies.offset != 0 || p.dies.side_force != 0 || p.release || p.lower_motion;
+            p.dies.side.Given() || p.dies.offset != 0 || !DieMoves(p.dies.side_motion, kStrokeMotion) || p.release ||
+            p.lower_motion;
   }
   PetscCheck(
     press || !asked, comm, PETSC_ERR_USER_INPUT,
@@ -122,6 +123,7 @@ PetscErrorCode ReadToolSceneOptions(MPI_Comm comm, OptionReader &read, Options &
   PetscCall(ReadUpperDieMotion(comm, read, opt));
   PetscCall(ReadPassShapes(comm, read, opt)); // (die_shape_options.cpp; after the first pass's, their defaults)
   PetscCall(ReadSideDieShape(comm, read, opt));
+  PetscCall(ReadSideMotions(comm, read, opt)); // (die_motion_options.cpp)
   PetscCall(ReadPassMotions(comm, read, opt)); // (die_motion_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
