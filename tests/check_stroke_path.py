@@ -19,6 +19,13 @@ B. The paper's tube (options/squaring.opts, fast preset, no unloading) pressed t
    grouped differently on 2 ranks and the collapse takes another path: 1.8e-3 of the load at the end.) A
    checkpoint taken on the way back, continued with -restart: the history of the run never stopped within 1e-12
    (tests/check_restart.py's bound).
+C. A later pass's strokes in turn (-pass2_stroke_path, its strokes from the same zero as -stroke): the paper's tube
+   pressed 2 mm and sprung back (fast preset), then
+   - -pass2_stroke_path 2.5 is -pass2_stroke 2.5: the same history bit for bit (one path, two spellings);
+   - -pass2_stroke_path 2.5,2.4,3: rows at the turns 2.5 and 2.4 mm within 1e-12 (the pass's turns end
+     increments, read when the pass starts), the load at 2.4 more than 10 % below the load at 2.5 (the die backed
+     off unloads the tube), the pass ending at U = 3 mm, and the run's energy balance within B's 5e-3 at every
+     increment of the pass.
 """
 import numpy as np
 
@@ -82,4 +89,24 @@ early = max(r[before].max() if same else 1 for r in rel)
 late = max(r.max() for r in rel)
 k.check(same and early < 1.3e-8 and late < 3e-5, f"the tube's path on 1 vs 2 ranks: every row within {early:.1e} up "
         f"to U = 2.6 mm (1.3e-8), {late:.1e} to the end (3e-5)")
+
+# C. A later pass's strokes in turn.
+PASS2 = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src}/options/preset-fast.opts",
+         "-stroke", 2]
+one = press("path_pass2_stroke.h5", PASS2 + ["-pass2_stroke", 2.5])
+same = press("path_pass2_one.h5", PASS2 + ["-pass2_stroke_path", 2.5])
+worst = max(np.abs(same[c] - one[c]).max() for c in one if c != "tools") \
+    if all(same[c].shape == one[c].shape for c in one if c != "tools") else np.inf
+k.check(worst == 0, f"-pass2_stroke_path 2.5 is -pass2_stroke 2.5: the histories {worst:.1e} apart (0)")
+back = press("path_pass2.h5", PASS2 + ["-pass2_stroke_path", "2.5,2.4,3"])
+pressing = back["stage"] == 2
+u, load = back["stroke"][pressing], back["load"][pressing]
+at = [np.flatnonzero(np.abs(u - x) < 1e-12) for x in (2.5, 2.4)]
+turns = all(len(a) == 1 for a in at)
+fall = 1 - load[at[1][0]] / load[at[0][0]] if turns else 0
+e = np.abs(back["energy_error"][pressing]).max() if pressing.any() else np.inf
+k.check(turns and fall > 0.1 and abs(u[-1] - 3) <= 1e-12 and e < 5e-3,
+        f"the second pass to 2.5, back to 2.4, on to 3 mm: rows at the turns ({'found' if turns else 'missing'}), "
+        f"the load falls by {fall:.1%} on the way back (more than 10 %), it ends at U = {u[-1] if len(u) else 0:g}, "
+        f"the energy balance within {e:.1e} at every increment of the pass (5e-3)")
 k.done()

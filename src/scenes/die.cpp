@@ -17,7 +17,7 @@ namespace {
 // (ContactSet::Initialize). 0 where it would not touch them within the tube's extent.
 double TouchBack(const Tool &t, const std::vector<Vec2> &points, double tol, double extent)
 {
-  const Vec2 d = t.Direction();
+  const Vec2 d = t.Axis();
   const double speed = std::hypot(d[0], d[1]);
   const auto overlaps = [&](double ahead) {
     const Tool moved = MovedBack(t, -ahead);
@@ -187,7 +187,8 @@ PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoi
     double b = ClearanceBack(tools[k], points, tol);
     PetscCheck(b >= 0, comm, PETSC_ERR_USER_INPUT,
                "the %s would start inside the tube as the %s springback left it, and cannot be moved back along "
-               "its motion clear of it (a die that stays in place, -lower_die_motion fixed, is drawn where it is)",
+               "its motion clear of it (a die that stays in place, fixed, is drawn where it is: -lower_die_motion, "
+               "-side_motion and their passes')",
                tools[k].name.c_str(), PassOrdinal(before).c_str());
     if (b == 0 && tools[k].Unknown()) b = TouchBack(tools[k], points, tol, extent); // (ahead: < 0)
     if (b == 0) continue;
@@ -202,9 +203,8 @@ PetscErrorCode StartOnTube(MPI_Comm comm, bool say, const std::vector<SurfacePoi
       PetscCall(PetscPrintf(comm,
                             "tubeform: the %s starts at U = %.4g mm, %.4g mm back along its motion from where it "
                             "would touch the round tube, where it touches the tube as the %s pass left it\n",
-                            tools[k].name.c_str(), -b * std::hypot(tools[k].Direction()[0], tools[k].Direction()[1]),
-                            b * std::hypot(tools[k].Direction()[0], tools[k].Direction()[1]),
-                            PassOrdinal(before).c_str()));
+                            tools[k].name.c_str(), -b * std::hypot(tools[k].Axis()[0], tools[k].Axis()[1]),
+                            b * std::hypot(tools[k].Axis()[0], tools[k].Axis()[1]), PassOrdinal(before).c_str()));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -220,7 +220,7 @@ PetscErrorCode StartOffAxis(MPI_Comm comm, bool say, const std::vector<SurfacePo
     PetscCall(PetscPrintf(comm,
                           "tubeform: the %s is %g mm off the axis; it starts %.4g mm back along its motion, "
                           "where it touches the tube\n",
-                          die.name.c_str(), offset, back[0] * std::hypot(die.Direction()[0], die.Direction()[1])));
+                          die.name.c_str(), offset, back[0] * std::hypot(die.Axis()[0], die.Axis()[1])));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -238,9 +238,12 @@ PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring,
   PetscFunctionBeginUser;
   for (int pass = 0; pass < PassCount(opt); ++pass) {
     const PassExtent e = Extent(opt, pass);
+    const std::vector<double> &path = pass == 0 ? opt.stroke.path : LaterPass(opt, pass).stroke_path;
+    const double deepest_of_pass = pass == 0      ? deepest
+                                   : path.empty() ? e.stroke
+                                                  : *std::max_element(path.begin(), path.end());
     if (!e.Forced())
-      PetscCall(CheckDieReach(comm, opt, pass, DiesOfPass(opt, pass), squaring, pass == 0 ? deepest : e.stroke,
-                              e.Option().c_str()));
+      PetscCall(CheckDieReach(comm, opt, pass, DiesOfPass(opt, pass), squaring, deepest_of_pass, e.Option().c_str()));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -197,7 +197,13 @@ PetscErrorCode PressScene::StartPass(Model &m)
     PetscCall(PetscPrintf(m.comm, "tubeform: %s pass: the upper die presses with up to %s N/mm (%s) from U = %s mm\n",
                           PassOrdinal(next).c_str(), Formatted("%g", passes_[pass_].extent.force).c_str(),
                           passes_[pass_].extent.Option().c_str(), Formatted("%.4g", PassStart()).c_str()));
-  else if (!m.quiet)
+  else if (!m.quiet && !LaterPass(opt_, next).stroke_path.empty()) {
+    std::string strokes;
+    for (double u : LaterPass(opt_, next).stroke_path) strokes += (strokes.empty() ? "" : ", ") + Formatted("%g", u);
+    PetscCall(PetscPrintf(m.comm, "tubeform: %s pass: the upper die from U = %s to %s mm in turn (%s)\n",
+                          PassOrdinal(next).c_str(), Formatted("%.4g", PassStart()).c_str(), strokes.c_str(),
+                          PassOptionName(next, "stroke_path").c_str()));
+  } else if (!m.quiet)
     PetscCall(PetscPrintf(m.comm,
                           "tubeform: %s pass: the dies travel %s mm together until the one furthest along is "
                           "at U = %s mm (%s); the upper die from U = %s to %s mm\n",
@@ -306,12 +312,18 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
   for (size_t k = 0; k < tools.size() && k < p.start_back.size(); ++k) {
     tools[k] = MovedBack(tools[k], p.start_back[k]);
     const Vec2 d = tools[k].Direction();
-    const bool own = k == kLower && BothDies(part_) && !LowerDieClosing(opt_, (int)pass_); // (its own strokes)
+    // (a lower or side die on a motion of its own: its own strokes, not the pass's travel together)
+    const bool own = (k == kLower && BothDies(part_) && !LowerDieClosing(opt_, (int)pass_)) ||
+                     (k >= (size_t)SideDie() && !DieMoves(p.dies.side_motion, kStrokeMotion));
     if ((d[0] != 0 || d[1] != 0) && !tools[k].Unknown() && !own) p.back = std::min(p.back, p.start_back[k]);
   }
   if (p.back == kNever) p.back = 0; // (no die moves by the stroke)
   // By its stroke: straight from where its dies start (on a path of its own: its path; under force: the die's stroke).
-  if (!p.dies.motion.OwnPath() && !p.extent.Forced()) p.path = StrokePath({}, p.extent.stroke + p.back);
+  if (!p.dies.motion.OwnPath() && !p.extent.Forced()) { // (its strokes in turn, where it has them, from there too)
+    std::vector<double> strokes = LaterPass(opt_, (int)pass_).stroke_path;
+    for (double &s : strokes) s += p.back;
+    p.path = StrokePath(strokes, p.extent.stroke + p.back);
+  }
   p.start = PassStart();
   if (WholeTube(part_)) PetscCall(pins_.Mark(m, Press()));
   if (p.held) PetscCall(hold_.Mark(m, Press())); // (the rotation hold's nodes: scenes/hold.hpp)

@@ -12,10 +12,12 @@ double PressScene::ToolWork(const HistoryRow &prev, const HistoryRow &row, doubl
   const ToolColumns &path = DiePathColumns();
   if (pass_ > 0 && row.stage == PressStage(pass_) && prev.stage < row.stage)
     from.stroke = -UpperBack(), path(from, kDieX) = path(from, kDieTurn) = 0.0;
-  // (the lower die's rise by its motion: by U where it mirrors the upper one's, LowerDieMotion)
+  // (the lower die's rise by its motion: by U where it mirrors the upper one's, LowerDieMotion; a motion of its own
+  // at the pass's tool stroke, U plus how far back the upper die started: UpperBack)
   const MotionHandle &lower = passes_[pass_].lower_motion;
+  const double at = LowerDieMoves(opt_, (int)pass_, LowerDieMove::Own) ? UpperBack() : 0.0;
   const DieTravel travel{UpperTravel(opt_, (int)pass_), !LowerDieMoves(opt_, (int)pass_, LowerDieMove::Fixed),
-                         lower->Offset(row.stroke)[1] - lower->Offset(from.stroke)[1]};
+                         lower->Offset(row.stroke + at)[1] - lower->Offset(from.stroke + at)[1]};
   return PressToolWork(part_, travel, from, row);
 }
 

@@ -28,6 +28,7 @@ public:
   }
   double Travel(double s) const override { return s - a_ * Wave(s); } // (a_ 0: s exactly, a plain stroke's)
   Vec2 Direction() const override { return {slope_ * d_[0], slope_ * d_[1]}; }
+  Vec2 Axis() const override { return d_; }
   void Follow(double s) override
   {
     const double half = std::floor(2 * s / p_ + kAtKink);

@@ -37,6 +37,7 @@ public:
     return {to_[k][0] + (s - at_[k]) * v[0], to_[k][1] + (s - at_[k]) * v[1]};
   }
   Vec2 Direction() const override { return d_; }
+  Vec2 Axis() const override { return axis_; }
   double Travel(double s) const override
   {
     const Vec2 o = Offset(s);
@@ -106,8 +107,8 @@ PetscErrorCode ReadSchedule(PetscOptionItems *PetscOptionsObject, MotionSpec &sp
 
   PetscFunctionBeginUser;
   const std::string help = std::string("the tool's travel y along its motion (mm, from where it starts; the lower "
-                                       "die's: up) at strokes U in turn, as U,y pairs (U rising from 0), linear in U "
-                                       "between them; it stays after the last (-") +
+                                       "die's up, the side dies' in) at strokes U in turn, as U,y pairs (U rising "
+                                       "from 0), linear in U between them; it stays after the last (-") +
                            prefix + "motion path)";
   PetscCall(PetscOptionsRealArray("-path", help.c_str(), "tubeform", v.data(), &n, &set));
   if (PetscOptionsObject->printhelp) PetscFunctionReturn(PETSC_SUCCESS);

@@ -217,7 +217,7 @@ double ClearanceBack(const Tool &t, const std::vector<Vec2> &points, double tol)
     return false;
   };
   if (!overlaps(0)) return 0;
-  const Vec2 d = t.Direction();
+  const Vec2 d = t.Axis();
   const double speed = std::hypot(d[0], d[1]);
   if (speed == 0 || overlaps(2 * extent / speed)) return -1;
   double lo = 0, hi = 2 * extent / speed;

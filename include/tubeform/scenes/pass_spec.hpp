@@ -144,8 +144,11 @@ struct DieSet {
 struct PassSpec {
   double stroke = 0; // where its upper die ends (mm, from the same zero as -stroke; 0: no such pass, or one pressed
                      // by a force: PassExtent); the first pass's is -stroke (Options::stroke), 0 here
-  double turn = 0;   // the tube turned counter-clockwise before it (degrees, from the pass before's press; 0 the first)
-  DieSet dies;       // its dies; its upper die's motion by the stroke, or a path of its own (ReadPassMotions)
+  std::vector<double>
+    stroke_path;   // its upper die's strokes in turn (mm, from the same zero), the last its stroke
+                   // (-pass<N>_stroke_path; none: straight to its stroke; the first pass's: -stroke_path)
+  double turn = 0; // the tube turned counter-clockwise before it (degrees, from the pass before's press; 0 the first)
+  DieSet dies;     // its dies; its upper die's motion by the stroke, or a path of its own (ReadPassMotions)
   std::optional<Unload> release; // how it lets the tube go after its press (-pass<N>_unload; unset: the first
                                  // pass's -unload, Options::release; ReleaseOfPass)
   std::optional<LowerDieSpec> lower_motion; // its lower die's motion, mirror or fixed (-pass<N>_lower_die_motion;

@@ -46,6 +46,9 @@ public:
   // Per unit stroke on the piece it follows: the motion of its frame's origin, and its turn about it.
   virtual Vec2 Direction() const = 0;
   virtual double Spin() const { return 0.0; }
+  // The line it is moved back along to start clear of the piece (MovedBack): a schedule's and a pulse's own axis,
+  // whatever piece they start on; else the piece it follows.
+  virtual Vec2 Axis() const { return Direction(); }
   // Takes the piece a step from stroke s runs on (a step never crosses a kink).
   virtual void Follow(double /*s*/) {}
   // The strokes below `until` where it changes piece, rising: an increment ends there (Scene's LoadPath::kinks).

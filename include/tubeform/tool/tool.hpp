@@ -55,6 +55,8 @@ public:
   double Turn() const { return motion->Turn(stroke); }
   // Its motion per unit stroke on the piece it follows, and its turn about the frame's origin.
   Vec2 Direction() const { return motion->Direction(); }
+  // The line it starts back along (Motion::Axis: MovedBack, ClearanceBack).
+  Vec2 Axis() const { return motion->Axis(); }
   double Spin() const { return motion->Spin(); }
   // Force-controlled: its stroke is an unknown of each increment (ContactSet).
   bool Unknown() const { return motion->Unknown(); }
@@ -97,10 +99,10 @@ Outline ToolOutline(const Tool &t);
 Tool Transform(const Tool &t, const TurnMap &map);
 // A tool moved by d (its segments and its frame's origin).
 Tool Shifted(const Tool &t, const Vec2 &d);
-// A tool moved back along its motion by `back` units of stroke (its segments at -back x direction).
+// A tool moved back along its motion by `back` units of stroke (its segments at -back x its axis, Motion::Axis).
 inline Tool MovedBack(const Tool &t, double back)
 {
-  const Vec2 d = t.Direction();
+  const Vec2 d = t.Axis();
   return Shifted(t, {-back * d[0], -back * d[1]});
 }
 // How far back along its motion (units of stroke, >= 0) a tool must start so that none of `points` lies more

@@ -79,27 +79,31 @@ PetscInt WordAt(const std::vector<MotionWord> &words, const char *word)
   return -1;
 }
 
-// An upper die's word where -<prefix>motion is not given, from the old spellings: path where -<prefix>path,
-// -<prefix>path_turn or -<prefix>pivot is given; force (a word of `words`) where -<prefix>force is given other than
-// 0; else the stroke. `zero_force`: -<prefix>force 0 given without -<prefix>motion (the old "not by force", allowed
-// with any word).
+// A die's word where -<prefix>motion is not given, from the old spellings: path where an option of the kind the word
+// path names is given (-<prefix>path; the upper die's -<prefix>path_turn, -<prefix>pivot too); force (a word of
+// `words`) where -<prefix>force is given other than 0; else the stroke. `zero_force`: -<prefix>force 0 given without
+// -<prefix>motion (the old "not by force", allowed with any word).
 PetscErrorCode OldSpelling(MPI_Comm comm, OptionReader &read, const std::string &prefix,
                            const std::vector<MotionWord> &words, PetscInt &choice, bool &zero_force)
 {
-  PetscBool motion, path, turn, pivot, force = PETSC_FALSE;
+  PetscBool motion, force = PETSC_FALSE;
   PetscReal f = 0;
+  bool path = false; // (one of the options of the kind the word path names: the upper die's path, turns, pivot)
+  const PetscInt path_at = WordAt(words, kPathMotion), force_at = WordAt(words, kForceMotion);
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-motion", &motion));
-  PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-path", &path));
-  PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-path_turn", &turn));
-  PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), "-pivot", &pivot));
-  const PetscInt path_at = WordAt(words, kPathMotion), force_at = WordAt(words, kForceMotion);
+  for (size_t k = 0; path_at >= 0 && k < FindMotionKind(words[path_at].kind)->options.size(); ++k) {
+    PetscBool set;
+    PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(),
+                                  ("-" + FindMotionKind(words[path_at].kind)->options[k]).c_str(), &set));
+    path = path || set;
+  }
   if (force_at >= 0) {
     PetscCall(read.CheckNumber(comm, ("-" + prefix + "force").c_str(), false));
     PetscCall(PetscOptionsGetReal(nullptr, prefix.c_str(), "-force", &f, &force));
   }
   zero_force = !motion && force && f == 0;
-  if (!motion && (path || turn || pivot) && path_at >= 0)
+  if (!motion && path)
     choice = path_at;
   else if (!motion && force && f != 0)
     choice = force_at;

@@ -7,6 +7,7 @@
 // The lower die's and the side dies' shapes, each its own block: a word (-lower_die, -side_die) choosing mirror (the
 // upper die's shape, a relation between the tools), flat (the flat kind), none (no side dies) or a file (its kind by
 // its name); these kinds read no options. The scenes place and size them (scenes/die.cpp).
+#include <algorithm>
 #include <cmath>
 
 #include "tubeform/core/core.hpp"
@@ -139,10 +140,22 @@ PetscErrorCode CheckSideMotion(MPI_Comm comm, const Options &opt, int pass)
   const std::string name =
     dies.SideForce() > 0 ? Formatted("%s %g", PassOptionName(pass, "side_force").c_str(), dies.SideForce())
                          : PassOptionName(pass, "side_motion") + " " + FindMotionKind(dies.side_motion.kind)->side_word;
+  // (a motion with kinks within the pass's strokes in turn, a path's points, a pulse's half periods, follows the
+  // stroke as it rises: its kinks end increments where the stroke first reaches them, not where a stroke that backs
+  // off passes them again)
+  const std::vector<double> &path = pass == 0 ? opt.stroke.path : LaterPass(opt, pass).stroke_path;
+  MotionSpec in = dies.side_motion.spec;
+  in.direction = {-1.0, 0.0};
+  MotionHandle motion;
+  const bool kinks = !path.empty() && MakeMotion(dies.side_motion.kind, in, motion).empty() &&
+                     !motion->Kinks(*std::max_element(path.begin(), path.end())).empty();
   PetscFunctionBeginUser;
   PetscCheck(DieMoves(dies.side_motion, kStrokeMotion) || !dies.side.Is(DieFrom::None), comm, PETSC_ERR_USER_INPUT,
              "%s: side dies on a motion of their own need the pass's side dies, %s (mirror, flat or a file)",
              name.c_str(), side.c_str());
+  PetscCheck(!kinks, comm, PETSC_ERR_USER_INPUT,
+             "%s: the side dies follow their motion as the stroke rises: not with %s", name.c_str(),
+             PassOptionName(pass, "stroke_path").c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -21,7 +21,7 @@ PetscErrorCode ReadGivenWord(PetscOptionItems *PetscOptionsObject, OptionReader 
 
 // What a later pass reads under its prefix (-pass<N>_<name>), in -help's order: the second pass's help says what
 // each is, a later pass's points at the second's (with `later`, what differs).
-enum class PassValue { Stroke, Profile, Lower, Side, Turn, Offset, Release };
+enum class PassValue { Stroke, StrokePath, Profile, Lower, Side, Turn, Offset, Release };
 struct PassOption {
   const char *name;
   PassValue value;
@@ -34,6 +34,10 @@ const PassOption kPassOptions[] = {
    "same zero as -stroke: the die touching the round tube; it starts where it touches the tube; 0: one pass), then "
    "spring back; a third pass and more (up to 9) by the same options with their number: -pass3_stroke, -pass3_turn, "
    "... (docs/passes.md)"},
+  {"stroke_path", PassValue::StrokePath,
+   "tool scenes: the second pass's upper die's strokes in turn (mm, >= 0, from the same zero as -stroke), at the "
+   "punch speed: press, back off, press again, in place of -pass2_stroke (the last is its final stroke; "
+   "docs/passes.md)"},
   {"die_profile", PassValue::Profile,
    "squaring: the second pass's upper die from a profile file (default: the first pass's die)"},
   {"lower_die", PassValue::Lower,
@@ -63,6 +67,13 @@ PetscErrorCode ReadPassValue(PetscOptionItems *PetscOptionsObject, OptionReader 
   switch (value) {
   case PassValue::Stroke:
     PetscCall(read.Real(PetscOptionsObject, n, h, pass.stroke));
+    break;
+  case PassValue::StrokePath: // (after its stroke: in place of it, the last stroke; checked in passes_check.cpp)
+    PetscCall(RealList(PetscOptionsObject, read, n, h, kMaxPathPoints, pass.stroke_path));
+    PetscCheck(pass.stroke_path.empty() || pass.stroke == 0, PetscOptionsObject->comm, PETSC_ERR_USER_INPUT,
+               "%s: in place of %s (the last of its strokes is the pass's final one); give one of them", n,
+               name.substr(0, name.size() - 5).c_str());
+    if (!pass.stroke_path.empty()) pass.stroke = pass.stroke_path.back();
     break;
   case PassValue::Profile:
     PetscCall(ReadDrawingChoice(PetscOptionsObject, read, n, h, pass.dies.upper));

@@ -49,6 +49,32 @@ PetscErrorCode CheckPassOffset(MPI_Comm comm, const Options &opt, int pass)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// Pass `pass`'s strokes in turn (-pass<N>_stroke_path, its last the pass's stroke), as the first pass's -stroke_path:
+// each a non-negative number of mm other than the one before (from 0), by its upper die's stroke, over a lower die
+// that mirrors or stays (a motion of its own follows the stroke as it rises).
+PetscErrorCode CheckPassStrokePath(MPI_Comm comm, const Options &opt, int pass)
+{
+  const PassSpec &p = LaterPass(opt, pass);
+  const std::string name = PassOptionName(pass, "stroke_path");
+  double at = 0;
+  PetscFunctionBeginUser;
+  for (double u : p.stroke_path) {
+    PetscCheck(std::isfinite(u) && u >= 0 && u != at, comm, PETSC_ERR_USER_INPUT,
+               "%s: %g after %g: each stroke must be a non-negative number of mm, other than the one before it (from "
+               "0)",
+               name.c_str(), u, at);
+    at = u;
+  }
+  if (p.stroke_path.empty()) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(DieMoves(p.dies, kStrokeMotion), comm, PETSC_ERR_USER_INPUT,
+             "%s: the upper die by the pass's stroke: not with %s %s", name.c_str(),
+             PassOptionName(pass, "die_motion").c_str(), FindMotionKind(p.dies.motion.kind)->upper_word);
+  PetscCheck(!LowerDieMoves(opt, pass, LowerDieMove::Own), comm, PETSC_ERR_USER_INPUT,
+             "%s %s: the lower die follows its motion as the stroke rises: not with %s",
+             PassOptionName(pass, "lower_die_motion").c_str(), LowerDieAsGiven(opt, pass).word.c_str(), name.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 // Pass `pass`'s stroke and dies (a pass given: PassExtent).
 PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
 {
@@ -82,6 +108,7 @@ PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
     PetscCall(CheckSideDies(comm, opt, pass, PassOptionName(p.dies.side.Given() ? pass : 0, "side_die"),
                             DiesOfPass(opt, pass).side));
   PetscCall(CheckPassOffset(comm, opt, pass));
+  PetscCall(CheckPassStrokePath(comm, opt, pass));
   if (e.Given()) PetscCall(CheckSideMotion(comm, opt, pass)); // (die_shape_options.cpp)
   PetscCall(CheckUpperMotion(comm, opt, pass));               // (its motion kind's check: motion_checks.hpp)
   PetscFunctionReturn(PETSC_SUCCESS);
