@@ -2,7 +2,9 @@
   - every relative link [..](path#anchor) of README.md, docs/*.md and
     docs/notes/*.md names a file that exists, and its anchor a heading there;
   - every section cited in the text as `X.md, "Title"` (or `X.md "Title"`)
-    is a heading or a bold paragraph lead ("**Title.**") of X.md, and every
+    is a heading or a bold paragraph lead ("**Title.**") of X.md, whole or cut
+    only before its first " (", ": " or ", " (a number "6." may be left off),
+    and every
     "theory.md, section N" a numbered section of docs/theory.md;
   - every path of the project's folders a user doc names (README.md,
     docs/*.md: `tests/check_turn.py`, options/dies/plate.profile, ...) exists;
@@ -45,9 +47,15 @@ def anchor(heading):
 
 
 def titles(path):
-    """A doc's headings and bold paragraph leads, the sections the text cites."""
+    """A doc's headings and bold paragraph leads, the sections the text cites, each as it may be cited: whole, or
+    up to its first " (", ": " or ", " (the options it is about, a subtitle), a numbered heading without its
+    number: a title cut anywhere else is refused (it may name another section)."""
     t = text(path)
-    return re.findall(r"^#+ (.+)$", t, re.M) + re.findall(r"\*\*([^*]+)\*\*", t)
+    names = set()
+    for h in re.findall(r"^#+ (.+)$", t, re.M) + re.findall(r"\*\*([^*]+)\*\*", t):
+        for full in (h.strip(" ."), re.sub(r"^[0-9]+[a-z]?\. ", "", h.strip(" ."))):
+            names.update({full, full.split(" (")[0], full.split(": ")[0], full.split(", ")[0]})
+    return names
 
 
 def resolve(doc, name):
@@ -79,7 +87,7 @@ for doc in user + notes:
         title = title.strip(" .,")
         if not target:
             bad_cited.append(f'{rel}: {name}, "{title}" (no such file)')
-        elif not any(h.strip().startswith(title) or title in h for h in titles(target)):
+        elif title not in titles(target):
             bad_cited.append(f'{rel}: {name}, "{title}" (no such section)')
     for num in re.findall(r"theory\.md,? sections? ([0-9]+[a-z]?)", flat):
         n_cited += 1
@@ -112,8 +120,7 @@ for rel in sorted(f for f in files if f.split(os.sep)[0] in SOURCES
     for name, title in cite.findall(flat):
         n_cited += 1
         title = title.strip(" .,")
-        if os.path.exists(os.path.join(src, name)) and not any(
-                h.strip().startswith(title) or title in h for h in titles(os.path.join(src, name))):
+        if os.path.exists(os.path.join(src, name)) and title not in titles(os.path.join(src, name)):
             bad_cited.append(f'{rel}: {name}, "{title}" (no such section)')
 k.check(n_links > 50 and not bad_links, f"{n_links} links resolve" + "".join("\n         " + b for b in bad_links))
 k.check(n_cited > 50 and n_sources > 100 and not bad_cited, f"{n_cited} cited sections exist ({n_sources} C++ sources "

@@ -1,8 +1,8 @@
 // The solve of an assembled increment: loads into the node frames, the
 // friction correction rows, the prescribed dofs, the factorization, the
-// reactions. With an iterate (equilibrium iterations, docs/theory.md
-// "Equilibrium") the system is solved for the correction of that iterate, and
-// an iterate already in balance is taken without factoring.
+// reactions. With an iterate (docs/theory.md, "Equilibrium iterations") the
+// system is solved for the correction of that iterate, and an iterate
+// already in balance is taken without factoring.
 #include <algorithm>
 #include <cmath>
 

@@ -1,7 +1,7 @@
 // The state an increment takes the body's points to (AdvanceCell,
 // AdvancePoint: shared by the commit and the trial), and the internal force
 // of a trial increment's state without committing it, which the equilibrium
-// iterations of an increment need (docs/theory.md, "Equilibrium").
+// iterations of an increment need (docs/theory.md, "Equilibrium iterations").
 #include <algorithm>
 #include <cmath>
 

@@ -41,7 +41,7 @@ constexpr double kMeshShare = 1.0; // of |mesh - run|: the mesh's error at the r
 // work is a dynamic transient, not a point of the quasi-static curve: the
 // median row of the validation runs carries 1e-8 to 1e-7 of the work, the rows
 // where a local snap is resolved inside inertia's shortest step 3-5e-4, their
-// punch load 2-5 x the curve's (docs/results.md, "The largest load").
+// punch load 2-5 x the curve's (docs/results.md, "The largest load of a thin tube").
 constexpr double kQuasiStaticKinetic = 1e-5;
 
 // The tube's shape in one state: C/t and the outer half-extents in the press's frame, C1 = x_max across the
