@@ -211,6 +211,13 @@ PetscErrorCode PressScene::StartPass(Model &m)
                           Formatted("%.4g", passes_[pass_].extent.stroke + StartBack()).c_str(),
                           Formatted("%g", passes_[pass_].extent.stroke).c_str(), PassOptionName(next, "stroke").c_str(),
                           Formatted("%.4g", PassStart()).c_str(), Formatted("%.4g", PassEnd()).c_str()));
+  const Pass &p = passes_[pass_]; // (side dies by the stroke where the first pass's move otherwise: say so)
+  if (!m.quiet && p.side_dies && DieMoves(p.dies.side_motion, kStrokeMotion) &&
+      !DieMoves(FirstDies(opt_).side_motion, kStrokeMotion))
+    PetscCall(PetscPrintf(m.comm,
+                          "tubeform: %s pass: its side dies move by the stroke (%s for another; the first pass's "
+                          "-side_motion is its own)\n",
+                          PassOrdinal(next).c_str(), PassOptionName(next, "side_motion").c_str()));
   if (pin_.holds()) PetscCall(pin_.Mark(m, Press()));
   PetscCall(m.contact->Setup(m.mesh, m.system, m.body.position(), spec));
   m.contact->SetStroke(0.0);
