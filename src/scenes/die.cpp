@@ -238,7 +238,7 @@ PetscErrorCode CheckPressReach(MPI_Comm comm, const Options &opt, bool squaring,
   PetscFunctionBeginUser;
   for (int pass = 0; pass < PassCount(opt); ++pass) {
     const PassExtent e = Extent(opt, pass);
-    const std::vector<double> &path = pass == 0 ? opt.stroke.path : LaterPass(opt, pass).stroke_path;
+    const std::vector<double> &path = StrokePathOf(opt, pass);
     const double deepest_of_pass = pass == 0      ? deepest
                                    : path.empty() ? e.stroke
                                                   : *std::max_element(path.begin(), path.end());

@@ -197,9 +197,9 @@ PetscErrorCode PressScene::StartPass(Model &m)
     PetscCall(PetscPrintf(m.comm, "tubeform: %s pass: the upper die presses with up to %s N/mm (%s) from U = %s mm\n",
                           PassOrdinal(next).c_str(), Formatted("%g", passes_[pass_].extent.force).c_str(),
                           passes_[pass_].extent.Option().c_str(), Formatted("%.4g", PassStart()).c_str()));
-  else if (!m.quiet && !LaterPass(opt_, next).stroke_path.empty()) {
+  else if (!m.quiet && !StrokePathOf(opt_, next).empty()) {
     std::string strokes;
-    for (double u : LaterPass(opt_, next).stroke_path) strokes += (strokes.empty() ? "" : ", ") + Formatted("%g", u);
+    for (double u : StrokePathOf(opt_, next)) strokes += (strokes.empty() ? "" : ", ") + Formatted("%g", u);
     PetscCall(PetscPrintf(m.comm, "tubeform: %s pass: the upper die from U = %s to %s mm in turn (%s)\n",
                           PassOrdinal(next).c_str(), Formatted("%.4g", PassStart()).c_str(), strokes.c_str(),
                           PassOptionName(next, "stroke_path").c_str()));
@@ -327,7 +327,7 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
   if (p.back == kNever) p.back = 0; // (no die moves by the stroke)
   // By its stroke: straight from where its dies start (on a path of its own: its path; under force: the die's stroke).
   if (!p.dies.motion.OwnPath() && !p.extent.Forced()) { // (its strokes in turn, where it has them, from there too)
-    std::vector<double> strokes = LaterPass(opt_, (int)pass_).stroke_path;
+    std::vector<double> strokes = StrokePathOf(opt_, (int)pass_);
     for (double &s : strokes) s += p.back;
     p.path = StrokePath(strokes, p.extent.stroke + p.back);
   }

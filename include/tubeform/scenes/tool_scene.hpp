@@ -199,6 +199,11 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
 }
 // Pass `pass`'s lower die's word (-lower_die, -pass<N>_lower_die: the first pass's where not given).
 inline std::string PassLowerDie(const Options &opt, int pass) { return ShapeWord(DiesOfPass(opt, pass).lower); }
+// Pass `pass`'s strokes in turn (-stroke_path, -pass<N>_stroke_path; none: straight to its stroke).
+inline const std::vector<double> &StrokePathOf(const Options &opt, int pass)
+{
+  return pass == 0 ? opt.stroke.path : LaterPass(opt, pass).stroke_path;
+}
 // Pass `pass`'s release after its press (-unload, -pass<N>_unload: the first pass's where not given).
 inline Unload ReleaseOfPass(const Options &opt, int pass)
 {

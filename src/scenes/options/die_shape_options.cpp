@@ -143,7 +143,7 @@ PetscErrorCode CheckSideMotion(MPI_Comm comm, const Options &opt, int pass)
   // (a motion with kinks within the pass's strokes in turn, a path's points, a pulse's half periods, follows the
   // stroke as it rises: its kinks end increments where the stroke first reaches them, not where a stroke that backs
   // off passes them again)
-  const std::vector<double> &path = pass == 0 ? opt.stroke.path : LaterPass(opt, pass).stroke_path;
+  const std::vector<double> &path = StrokePathOf(opt, pass);
   MotionSpec in = dies.side_motion.spec;
   in.direction = {-1.0, 0.0};
   MotionHandle motion;
