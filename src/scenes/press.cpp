@@ -318,11 +318,9 @@ PetscErrorCode PressScene::PassDies(Model &m, std::vector<Tool> &tools,
   p.back = kNever;
   for (size_t k = 0; k < tools.size() && k < p.start_back.size(); ++k) {
     tools[k] = MovedBack(tools[k], p.start_back[k]);
-    const Vec2 d = tools[k].Direction();
-    // (a lower or side die on a motion of its own: its own strokes, not the pass's travel together)
-    const bool own = (k == kLower && BothDies(part_) && !LowerDieClosing(opt_, (int)pass_)) ||
-                     (k >= (size_t)SideDie() && !DieMoves(p.dies.side_motion, kStrokeMotion));
-    if ((d[0] != 0 || d[1] != 0) && !tools[k].Unknown() && !own) p.back = std::min(p.back, p.start_back[k]);
+    // (the dies that travel by the pass's stroke together are those on a stroke motion: not a force's, one that
+    // stays, a lower or side die on a motion of its own, nor an upper die on its own path, whose pass is its path)
+    if (tools[k].motion->Kind() == kStrokeMotion) p.back = std::min(p.back, p.start_back[k]);
   }
   if (p.back == kNever) p.back = 0; // (no die moves by the stroke)
   // By its stroke: straight from where its dies start (on a path of its own: its path; under force: the die's stroke).

@@ -109,43 +109,12 @@ PetscErrorCode OldSpelling(MPI_Comm comm, OptionReader &read, const std::string 
     choice = force_at;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-// A lower die's motion read in its own block under `prefix` (lower_die_, pass<N>_lower_die_), titled `title`:
-// -<prefix>motion, one of the lower die's words (`die`'s the default), that kind's options read by the kind (all the
-// words' under `help`, refusing nothing), an option of another word's kind refused, naming it.
-PetscErrorCode ReadLowerMotion(MPI_Comm comm, OptionReader &read, const std::string &prefix, const char *title,
-                               const std::string &text, bool help, LowerDieSpec &die)
-{
-  const std::vector<MotionWord> words = LowerWords();
-  std::vector<const char *> list;
-  PetscInt choice = 0;
-
-  PetscFunctionBeginUser;
-  for (size_t k = 0; k < words.size(); ++k) {
-    list.push_back(words[k].word.c_str());
-    if (die.word == words[k].word) choice = (PetscInt)k;
-    for (const std::string &name : FindMotionKind(words[k].kind)->options)
-      read.Note(("-" + prefix + name).c_str(), "", title);
-  }
-  read.Note(("-" + prefix + "motion").c_str(), text.c_str(), title);
-  PetscOptionsBegin(comm, prefix.c_str(), title, "tubeform");
-  OptionsBlock block(PetscOptionsObject);
-  PetscCall(PetscOptionsEList("-motion", text.c_str(), "tubeform", list.data(), (PetscInt)list.size(), list[choice],
-                              &choice, nullptr));
-  die.word = words[choice].word, die.kind = words[choice].kind, die.move = LowerDieMoveOf(die.word);
-  if (help)
-    for (const MotionWord &w : words) PetscCall(ReadMotion(PetscOptionsObject, w.kind, die.spec));
-  else
-    PetscCall(ReadMotion(PetscOptionsObject, die.kind, die.spec));
-  block.Release();
-  PetscOptionsEnd();
-  if (!help) PetscCall(RefuseOthers(comm, prefix.c_str(), words, words[choice]));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
 // A die's motion's block: its options prefix (die_: -die_motion, -die_path, ...), its title in -help, the help of
 // -<prefix>motion, and the die's words (the registry's kinds that offer it one, in the registry's order).
 struct MotionBlock {
   std::string prefix, title, help;
   std::vector<MotionWord> words;
+  bool old_spellings = true; // -<prefix>path, -<prefix>force alone choose their words (not the lower die's)
 };
 
 // A die's motion read in its own block: -<prefix>motion, one of the block's words, or an old spelling
@@ -168,7 +137,7 @@ PetscErrorCode ReadWordMotion(MPI_Comm comm, OptionReader &read, const MotionBlo
       read.Note(("-" + prefix + name).c_str(), "", block.title.c_str());
   }
   read.Note(("-" + prefix + "motion").c_str(), block.help.c_str(), block.title.c_str());
-  PetscCall(OldSpelling(comm, read, prefix, words, choice, zero_force));
+  if (block.old_spellings) PetscCall(OldSpelling(comm, read, prefix, words, choice, zero_force));
   PetscOptionsBegin(comm, prefix.c_str(), block.title.c_str(), "tubeform");
   OptionsBlock end(PetscOptionsObject);
   PetscCall(PetscOptionsEList("-motion", block.help.c_str(), "tubeform", list.data(), (PetscInt)list.size(),
@@ -184,6 +153,41 @@ PetscErrorCode ReadWordMotion(MPI_Comm comm, OptionReader &read, const MotionBlo
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// A lower die's motion read in its block (ReadWordMotion, without old spellings): its word (mirror, fixed, path, ...)
+// and how it goes with the upper die's from the kind chosen.
+PetscErrorCode ReadLowerMotion(MPI_Comm comm, OptionReader &read, const MotionBlock &block, bool help,
+                               LowerDieSpec &die)
+{
+  DieMotion motion;
+  motion.kind = die.kind, motion.spec = die.spec;
+  PetscFunctionBeginUser;
+  PetscCall(ReadWordMotion(comm, read, block, help, motion));
+  die.kind = motion.kind, die.spec = motion.spec;
+  for (const MotionWord &w : block.words)
+    if (w.kind == die.kind) die.word = w.word;
+  die.move = LowerDieMoveOf(die.word);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Whether a later pass's block is read: one of its options given (-<prefix>motion, its words' kinds' options), or
+// `listed` (its -help); where not, they are noted (known to the check of unknown options, listed by -help).
+PetscErrorCode BlockGiven(OptionReader &read, const MotionBlock &block, bool listed, bool &given)
+{
+  std::vector<std::string> names = {"motion"};
+  for (const MotionWord &w : block.words)
+    for (const std::string &name : FindMotionKind(w.kind)->options) names.push_back(name);
+  PetscFunctionBeginUser;
+  given = listed;
+  for (const std::string &name : names) {
+    PetscBool set;
+    PetscCall(PetscOptionsHasName(nullptr, block.prefix.c_str(), ("-" + name).c_str(), &set));
+    given = given || set;
+  }
+  for (const std::string &name : names)
+    if (!given) read.Note(("-" + block.prefix + name).c_str(), block.help.c_str(), block.title.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace
 
 PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
@@ -191,41 +195,33 @@ PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &op
   LowerDieSpec &die = ToolsOf(opt).lower_motion;
   PetscFunctionBeginUser;
   die.spec.tool = "the lower die";
-  PetscCall(ReadLowerMotion(comm, read, "lower_die_", kLowerMotionTitle,
-                            LowerHelp(LowerWords(), "lower_die_", "the lower die"), opt.help, die));
+  const MotionBlock block{"lower_die_", kLowerMotionTitle, LowerHelp(LowerWords(), "lower_die_", "the lower die"),
+                          LowerWords(), false};
+  PetscCall(ReadLowerMotion(comm, read, block, opt.help, die));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode ReadPassLowerMotions(MPI_Comm comm, OptionReader &read, Options &opt)
 {
-  std::vector<std::string> names = {"motion"}; // (-<prefix>motion and the lower die's words' kinds' options)
-  for (const MotionWord &w : LowerWords())
-    for (const std::string &name : FindMotionKind(w.kind)->options) names.push_back(name);
   PetscFunctionBeginUser;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     const std::string prefix = Formatted("pass%d_lower_die_", pass + 1);
-    const std::string title = Formatted("tubeform: pass %d lower die motion", pass + 1);
     const std::string die = "the " + PassOrdinal(pass) + " pass's lower die";
-    const std::string help =
+    const MotionBlock block{
+      prefix, Formatted("tubeform: pass %d lower die motion", pass + 1),
       pass > 1 ? Formatted("tool scenes: pass %d's, as -pass2_lower_die_motion", pass + 1)
                : LowerHelp(LowerWords(), prefix, die) +
                    "; a motion of its own counts its strokes from where the pass's dies start (default: the first "
                    "pass's -lower_die_motion where that is mirror or fixed; a later pass's by its number: "
-                   "-pass3_lower_die_motion, ...)";
-    bool given = opt.help && pass == 1; // (a pass's read where one of them is given; the second's listed by -help)
-    for (const std::string &name : names) {
-      PetscBool set;
-      PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), ("-" + name).c_str(), &set));
-      given = given || set;
-    }
-    if (!given) {
-      for (const std::string &name : names) read.Note(("-" + prefix + name).c_str(), help.c_str(), title.c_str());
-      continue;
-    }
+                   "-pass3_lower_die_motion, ...)",
+      LowerWords(), false};
+    bool given;
+    PetscCall(BlockGiven(read, block, opt.help && pass == 1, given)); // (the second's listed by -help)
+    if (!given) continue;
     LowerDieSpec own = ToolsOf(opt).lower_motion; // (its word the default; its spec its own)
     own.spec = MotionSpec();
     own.spec.tool = die;
-    PetscCall(ReadLowerMotion(comm, read, prefix, title.c_str(), help, opt.help, own));
+    PetscCall(ReadLowerMotion(comm, read, block, opt.help, own));
     ToolsOf(opt).passes[pass].lower_motion = own;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -248,9 +244,6 @@ PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &op
 
 PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
 {
-  std::vector<std::string> names = {"motion"}; // (-<prefix>motion and the upper die's words' kinds' options)
-  for (const MotionWord &w : UpperWords())
-    for (const std::string &name : FindMotionKind(w.kind)->options) names.push_back(name);
   PetscFunctionBeginUser;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
     PassSpec &p = ToolsOf(opt).passes[pass];
@@ -267,17 +260,9 @@ PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt)
                  "-pass2_die_force other than 0 force; a later pass's by its number: -pass3_die_path, ... "
                  "(docs/passes.md)",
       UpperWords()};
-    bool given = pass == 1; // (a later one's read, and listed by -help, where one of them is given)
-    for (const std::string &name : names) {
-      PetscBool set;
-      PetscCall(PetscOptionsHasName(nullptr, block.prefix.c_str(), ("-" + name).c_str(), &set));
-      given = given || set;
-    }
-    if (!given) {
-      for (const std::string &name : names)
-        read.Note(("-" + block.prefix + name).c_str(), block.help.c_str(), block.title.c_str());
-      continue;
-    }
+    bool given;
+    PetscCall(BlockGiven(read, block, pass == 1, given)); // (the second's read always, and listed by -help)
+    if (!given) continue;
     p.dies.motion.spec.tool = "the " + PassOrdinal(pass) + " pass's upper die";
     PetscCall(ReadWordMotion(comm, read, block, opt.help, p.dies.motion));
     if (opt.help || !p.dies.motion.OwnPath()) continue;
@@ -319,9 +304,6 @@ std::string SideHelp(const std::string &prefix, int pass)
 
 PetscErrorCode ReadSideMotions(MPI_Comm comm, OptionReader &read, Options &opt)
 {
-  std::vector<std::string> names = {"motion"}; // (-<prefix>motion and the side dies' words' kinds' options)
-  for (const MotionWord &w : SideWords())
-    for (const std::string &name : FindMotionKind(w.kind)->options) names.push_back(name);
   PetscFunctionBeginUser;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     const std::string prefix = pass == 0 ? "side_" : Formatted("pass%d_side_", pass + 1);
@@ -329,17 +311,9 @@ PetscErrorCode ReadSideMotions(MPI_Comm comm, OptionReader &read, Options &opt)
       prefix, pass == 0 ? "tubeform: side die motion" : Formatted("tubeform: pass %d side die motion", pass + 1),
       pass > 1 ? Formatted("tool scenes: pass %d's, as -pass2_side_motion", pass + 1) : SideHelp(prefix, pass),
       SideWords()};
-    bool given = pass < 2 && opt.help; // (a later pass's read where one of them is given)
-    for (const std::string &name : names) {
-      PetscBool set;
-      PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), ("-" + name).c_str(), &set));
-      given = given || set;
-    }
-    if (!given && pass > 0) {
-      for (const std::string &name : names)
-        read.Note(("-" + prefix + name).c_str(), block.help.c_str(), block.title.c_str());
-      continue;
-    }
+    bool given = true; // (the first pass's always read; a later one's where one of them is given)
+    if (pass > 0) PetscCall(BlockGiven(read, block, pass == 1 && opt.help, given));
+    if (!given) continue;
     DieMotion &motion = ToolsOf(opt).passes[pass].dies.side_motion;
     motion.spec.tool = pass == 0 ? "each side die" : "each of the " + PassOrdinal(pass) + " pass's side dies";
     PetscCall(ReadWordMotion(comm, read, block, opt.help, motion));
