@@ -23,10 +23,10 @@ void RotationHold::TakeFrames(Model &m, const TurnMap &to_tube) const
   TurnFrames(m, m.mesh.node_sets["hold"], to_tube);
 }
 
-PetscErrorCode RotationHold::Constrain(Model &m, const TurnMap &to_tube)
+PetscErrorCode RotationHold::Constrain(Model &m, const SupportStep &step)
 {
   PetscFunctionBeginUser;
-  const Vec2 along = to_tube({1, 0}); // (the press's x)
+  const Vec2 along = step.to_tube({1, 0}); // (the press's x)
   m_ = &m, along_ = along;
   // (fixed while they hold the slide too: no unknown, the nodes carry a force with the couple)
   for (PetscInt n : m.mesh.node_sets["hold"])

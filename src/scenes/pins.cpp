@@ -68,10 +68,10 @@ PetscErrorCode AxisPins::Mark(Model &m, const TurnMap &press)
 
 void AxisPins::TakeFrames(Model &m, const TurnMap &to_tube) const { TurnFrames(m, m.mesh.node_sets["axis"], to_tube); }
 
-PetscErrorCode AxisPins::Constrain(Model &m, const TurnMap &to_tube)
+PetscErrorCode AxisPins::Constrain(Model &m, const SupportStep &step)
 {
   PetscFunctionBeginUser;
-  const Vec2 along = to_tube({1, 0}); // (the press's x)
+  const Vec2 along = step.to_tube({1, 0}); // (the press's x)
   PetscCall(HoldAlong(m, "axis", along[0], along[1]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -89,10 +89,11 @@ void SpringbackPin::TakeFrames(Model &m, const TurnMap &to_tube) const
   if (node() >= 0) TurnFrames(m, {node_}, to_tube);
 }
 
-PetscErrorCode SpringbackPin::Constrain(Model &m, const TurnMap &to_tube)
+PetscErrorCode SpringbackPin::Constrain(Model &m, const SupportStep &step)
 {
   PetscFunctionBeginUser;
-  const Vec2 along = to_tube({0, 1}); // (the press's y)
+  if (step.pressing) PetscCall(ReleaseOnTouch(m));
+  const Vec2 along = step.to_tube({0, 1}); // (the press's y)
   if (node() >= 0)
     PetscCheck(m.system.PrescribeAlong(node_, along[0], along[1], 0.0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "the springback's pin is not along a node frame axis");

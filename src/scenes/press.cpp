@@ -242,9 +242,11 @@ PetscErrorCode PressScene::CheckWithdrawn(Model &m, int next) const
 PetscErrorCode PressScene::BeginIncrement(Model &m, double lambda)
 {
   PetscFunctionBeginUser;
-  if (Holding() && hold_.pins()) PetscCall(hold_.FreeSlide(m, Stroke(m, lambda))); // (scenes/hold.hpp)
-  if (Support *axis = AxisSupport()) axis->TakeFrames(m, PassMap(pass_));
-  pin_.TakeFrames(m, PassMap(pass_));
+  const SupportStep step = Step(m, lambda);
+  for (Support *s : Supports()) { // (scenes/support.hpp)
+    PetscCall(s->Settle(m, step));
+    s->TakeFrames(m, step.to_tube);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -267,12 +269,11 @@ PetscErrorCode PressScene::Load(Model &m, double lambda, double dlambda)
   const Pass &p = passes_[pass_];
   if (p.extent.Forced() && m.contact->active())
     PetscCall(CheckForceReach(m.comm, p.extent, p.reach, squaring_, Stroke(m, lambda)));
-  // (the rotation hold, or released the pins: scenes/support.hpp)
-  if (Support *axis = AxisSupport()) PetscCall(axis->Constrain(m, PassMap(pass_)));
-  // The half model without its dies: the reversed loads are in balance (to the method's drift), and one node
-  // holds the tube's rigid motion along the press's y; in a later pass until its dies hold the tube.
-  if (!unloading_) PetscCall(pin_.ReleaseOnTouch(m));
-  PetscCall(pin_.Constrain(m, PassMap(pass_)));
+  // The full model's axis held by the rotation hold or the pins; the half model without its dies: the reversed
+  // loads are in balance (to the method's drift), and one node holds the tube's rigid motion along the press's y, in
+  // a later pass until its dies hold the tube (scenes/support.hpp).
+  const SupportStep step = Step(m, lambda);
+  for (Support *s : Supports()) PetscCall(s->Constrain(m, step));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -26,9 +26,14 @@ class RotationHold : public ExtraUnknown, public Support {
 public:
   // Support (collective): the hold's nodes in the press's frame `press` (node set "hold"), on every pass's start.
   PetscErrorCode Mark(Model &m, const TurnMap &press) override;
+  // Support (collective): while it pins the slide, lets it go once the dies hold it (FreeSlide).
+  PetscErrorCode Settle(Model &m, const SupportStep &step) override
+  {
+    return pins_ ? FreeSlide(m, step.stroke()) : PETSC_SUCCESS;
+  }
   void TakeFrames(Model &m, const TurnMap &to_tube) const override;
   // Support: the increment's constraint: both nodes along the press's x by the system's extra unknown.
-  PetscErrorCode Constrain(Model &m, const TurnMap &to_tube) override;
+  PetscErrorCode Constrain(Model &m, const SupportStep &step) override;
   // ExtraUnknown (collective): minus the sum of the nodes' reactions along `along` (0 for a couple).
   PetscErrorCode Missing(double &missing) override;
   void Moved(double) override {} // (a slide the body keeps: nothing to carry)

@@ -184,6 +184,20 @@ private:
   // What holds the full model's tube along the press's x in place of a symmetry plane: the rotation hold while
   // it holds the pass, else the pins; none in the quarter and half models.
   Support *AxisSupport() { return !WholeTube(part_) ? nullptr : Holding() ? static_cast<Support *>(&hold_) : &pins_; }
+  // The supports at work, in the order they constrain: the axis's (AxisSupport), the springback pin (holding in a
+  // release of the half and full models, nothing otherwise).
+  std::vector<Support *> Supports()
+  {
+    std::vector<Support *> at_work;
+    if (Support *axis = AxisSupport()) at_work.push_back(axis);
+    at_work.push_back(&pin_);
+    return at_work;
+  }
+  // What the supports read of the press at `lambda` (its stroke asked only where one needs it).
+  SupportStep Step(Model &m, double lambda) const
+  {
+    return {PassMap(pass_), !unloading_, [this, &m, lambda] { return Stroke(m, lambda); }};
+  }
   // The nodes whose direction the contact set keeps: the quarter's and the half's symmetry planes (the half tube
   // between both dies is mirrored about the y axis only), the full model's pins (the rotation hold's: inner nodes).
   std::vector<std::pair<std::string, Vec2>> Symmetry() const;

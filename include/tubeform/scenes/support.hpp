@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "tubeform/scenes/scene.hpp"
@@ -12,16 +13,29 @@
 
 namespace tf {
 
+// What a support reads of the press at an increment: the press's frame into the tube's, whether the pass's dies
+// press (not its release), and the history's stroke U (asked only where a support needs it: a release has no die).
+struct SupportStep {
+  TurnMap to_tube;
+  bool pressing = true;
+  std::function<double()> stroke;
+};
+
+// The scene holds its supports at work in a list (PressScene::Supports) and, at each increment, settles, turns and
+// constrains each in turn; each marks its nodes at its own moment (a pass's start, a release's).
 class Support {
 public:
   virtual ~Support() = default;
   // Collective: its nodes, at a pass's start (`press`: the tube's coordinates into the press's frame).
   virtual PetscErrorCode Mark(Model &m, const TurnMap &press) = 0;
+  // Collective, before an increment: what it takes from the press's state before it holds (the rotation hold lets
+  // the tube's slide go once the dies hold it); nothing by default.
+  virtual PetscErrorCode Settle(Model & /*m*/, const SupportStep & /*step*/) { return PETSC_SUCCESS; }
   // Before an increment: its nodes' frames along a press turned by an angle that is no quarter turn (`to_tube`:
   // the press's frame into the tube's); nothing in a press along the global axes.
   virtual void TakeFrames(Model &m, const TurnMap &to_tube) const = 0;
-  // The increment's prescribed motion of its nodes (`to_tube` as in TakeFrames).
-  virtual PetscErrorCode Constrain(Model &m, const TurnMap &to_tube) = 0;
+  // Collective: the increment's prescribed motion of its nodes.
+  virtual PetscErrorCode Constrain(Model &m, const SupportStep &step) = 0;
 
 protected:
   // `nodes`' frames along a press turned by an angle that is no quarter turn (`to_tube` as in
@@ -41,7 +55,7 @@ class AxisPins : public Support {
 public:
   PetscErrorCode Mark(Model &m, const TurnMap &press) override;
   void TakeFrames(Model &m, const TurnMap &to_tube) const override;
-  PetscErrorCode Constrain(Model &m, const TurnMap &to_tube) override;
+  PetscErrorCode Constrain(Model &m, const SupportStep &step) override;
 };
 
 // The half and full models' springback: one inner node holds the tube's rigid motion along the press's y
@@ -50,18 +64,20 @@ class SpringbackPin : public Support {
 public:
   PetscErrorCode Mark(Model &m, const TurnMap &press) override;
   void TakeFrames(Model &m, const TurnMap &to_tube) const override;
-  PetscErrorCode Constrain(Model &m, const TurnMap &to_tube) override;
+  // (it lets go once the dies touch the tube in a pass pressing, not its release: ReleaseOnTouch)
+  PetscErrorCode Constrain(Model &m, const SupportStep &step) override;
   // It holds (every rank alike), and its local node (-1: none here, or not holding).
   bool holds() const { return holds_; }
   PetscInt node() const { return holds_ ? node_ : -1; }
-  // Collective: the pin lets go once the dies touch the tube (a pass pressing, not its release).
-  PetscErrorCode ReleaseOnTouch(Model &m);
   // Collective: whether it holds, for a restart, which marks it again (`press` as in Mark).
   PetscErrorCode Persist(Model &m, Archive &ar, const TurnMap &press);
 
 private:
   PetscInt node_ = -1;
   bool holds_ = false;
+
+  // Collective: the pin lets go once the dies touch the tube.
+  PetscErrorCode ReleaseOnTouch(Model &m);
 };
 
 } // namespace tf
