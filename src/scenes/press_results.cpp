@@ -103,7 +103,6 @@ PetscErrorCode PressScene::Persist(Model &m, Archive &ar)
   PetscCheck(pass_ >= 0 && pass_ < (PetscInt)passes_.size(), m.comm, PETSC_ERR_USER_INPUT,
              "%s: the checkpoint is in pass %d; the options give %d pass(es)", ar.path().c_str(), (int)pass_ + 1,
              (int)passes_.size());
-  PetscCall(hold_.Persist(ar));
   PetscCall(ar.Value("floor_y", floor_y_));
   PetscCall(ar.Values("pass2_back", passes_[pass_].start_back)); // (the pass in place's; the name of two passes)
   if (pass_ >= 1) {
@@ -135,7 +134,8 @@ PetscErrorCode PressScene::Persist(Model &m, Archive &ar)
   reversed_.total[0] = pairs[0], reversed_.total[1] = pairs[1];
   side_ends_[0] = (long)pairs[2], side_ends_[1] = (long)pairs[3];
   reversed_.moment = pairs[4];
-  PetscCall(pin_.Persist(m, ar, Press()));
+  for (Support *s : {static_cast<Support *>(&pins_), static_cast<Support *>(&hold_), static_cast<Support *>(&pin_)})
+    PetscCall(s->Persist(m, ar, Press())); // (scenes/support.hpp)
   if (!unloading_) PetscFunctionReturn(PETSC_SUCCESS);
   // The reversed contact forces: contributions of the owned nodes.
   if (!reversed_.forces) PetscCall(VecDuplicate(m.system.reactions_local(), &reversed_.forces));

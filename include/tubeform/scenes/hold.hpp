@@ -69,8 +69,8 @@ public:
   // Every history row's load: the warning's floor follows the largest so far.
   void SeeLoad(double load) { largest_load_ = std::max(largest_load_, std::abs(load)); }
   double largest_load() const { return largest_load_; }
-  // Collective: the warning's state (a restart warns as the run it continues would).
-  PetscErrorCode Persist(Archive &ar)
+  // Support (collective): the warning's state (a restart warns as the run it continues would) and the slide's pin.
+  PetscErrorCode Persist(Model & /*m*/, Archive &ar, const TurnMap & /*press*/) override
   {
     PetscFunctionBeginUser;
     PetscCall(ar.Value("hold_largest_load", largest_load_));

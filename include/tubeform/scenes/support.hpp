@@ -22,7 +22,8 @@ struct SupportStep {
 };
 
 // The scene holds its supports at work in a list (PressScene::Supports) and, at each increment, settles, turns and
-// constrains each in turn; each marks its nodes at its own moment (a pass's start, a release's).
+// constrains each in turn; each marks its nodes at its own moment (a pass's start, a release's) and keeps its state
+// for a restart. What a support measures for the history is its own (the rotation hold's columns).
 class Support {
 public:
   virtual ~Support() = default;
@@ -36,6 +37,9 @@ public:
   virtual void TakeFrames(Model &m, const TurnMap &to_tube) const = 0;
   // Collective: the increment's prescribed motion of its nodes.
   virtual PetscErrorCode Constrain(Model &m, const SupportStep &step) = 0;
+  // Collective: its state for a restart, written or read back (`press` as in Mark; marked again where it needs);
+  // nothing where its nodes are marked again from the pass (the default).
+  virtual PetscErrorCode Persist(Model & /*m*/, Archive & /*ar*/, const TurnMap & /*press*/) { return PETSC_SUCCESS; }
 
 protected:
   // `nodes`' frames along a press turned by an angle that is no quarter turn (`to_tube` as in
@@ -69,8 +73,8 @@ public:
   // It holds (every rank alike), and its local node (-1: none here, or not holding).
   bool holds() const { return holds_; }
   PetscInt node() const { return holds_ ? node_ : -1; }
-  // Collective: whether it holds, for a restart, which marks it again (`press` as in Mark).
-  PetscErrorCode Persist(Model &m, Archive &ar, const TurnMap &press);
+  // Collective: whether it holds, for a restart, which marks it again.
+  PetscErrorCode Persist(Model &m, Archive &ar, const TurnMap &press) override;
 
 private:
   PetscInt node_ = -1;
