@@ -129,6 +129,8 @@ def bad_input_cases(src, out):
         (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_stroke_path", "2.5"],
          "-pass2_stroke_path: in place of -pass2_stroke"),
         (["-scene", "squaring", "-pass2_stroke_path", "2,2"], "-pass2_stroke_path: 2. after 2."),
+        (["-scene", "squaring", "-pass2_stroke_path", "1,0"],  # (once a silent single pass)
+         "-pass2_stroke_path: the last stroke is the pass's final one and must be positive"),
         (["-scene", "squaring", "-pass2_stroke_path", "2", "-pass2_lower_die_motion", "path", "-pass2_lower_die_path",
           "1,1"], "-pass2_lower_die_motion path: the lower die follows its motion as the stroke rises: not with "
                   "-pass2_stroke_path"),
@@ -218,7 +220,8 @@ def bad_input_cases(src, out):
         (["-scene", "squaring", "-stroke_path", "3,-1,4"], "-stroke_path: -1"),
         (["-scene", "squaring", "-stroke_path", "3,3,4"], "other than the one before"),
         (["-scene", "squaring", "-stroke_path", "3,0"], "must be positive"),
-        (["-scene", "squaring", "-stroke_path", "3,4", "-die_force", "10"], "-stroke_path: not with -die_force"),
+        (["-scene", "squaring", "-stroke_path", "3,4", "-die_force", "10"],
+         "-stroke_path: the upper die by the pass's stroke: not with -die_motion force"),
         (["-scene", "column", "-stroke_path", "1,2"], "-stroke_path: read by the squaring and flattening"),
         (["-scene", "squaring", "-die_force", "100", "-unload", "withdraw"], "-unload withdraw moves the die back"),
         (["-scene", "squaring", "-die_force", "100", "-stroke_corner_radius", "4"], "-stroke_corner_radius"),

@@ -1,5 +1,5 @@
-// The release's options: read into Options::release (in the loading block of -help, where they always were) and
-// checked, one line naming the option: how the press lets the tube go and the springback's law.
+// The release's option: read into Options::release (in the loading block of -help, where it always was): the
+// springback's law. (How a tool scene's pass lets the tube go, -unload, is the pass's: scenes/options/.)
 #include "tubeform/io/loading_options.hpp"
 
 namespace tf {
@@ -7,10 +7,6 @@ namespace tf {
 PetscErrorCode ReadReleaseOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ReleaseParams &r)
 {
   PetscFunctionBeginUser;
-  PetscCall(
-    ChooseWord(PetscOptionsObject, read, "-unload",
-               "Springback: reverse (paper: contact forces reversed, tools removed), withdraw (tools move back), none",
-               kUnloadWords, r.unload));
   PetscCall(ChooseWord(PetscOptionsObject, read, "-springback",
                        "The springback's law: material (the material's own, backstresses and all, as in loading), "
                        "elastic (the paper's: every point elastic; how far that carries points past the yield surface "

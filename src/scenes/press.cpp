@@ -36,13 +36,14 @@ PressScene::PressScene(const Options &opt, bool squaring)
                                             : QuarterModel(opt) ? TubePart::Quarter
                                                                 : TubePart::Half)
 {
-  stroke_ = opt.stroke.corner_radius > 0
-              ? StrokeForCornerRadius(opt.tube_ro, opt.stroke.corner_radius, FirstDies(opt).upper.spec.angle)
-              : opt.stroke.u;
+  const double corner_radius = FirstPass(opt).corner_radius;
+  stroke_ = corner_radius > 0 ? StrokeForCornerRadius(opt.tube_ro, corner_radius, FirstDies(opt).upper.spec.angle)
+                              : opt.stroke.u;
   back_ = stroke_; // withdraw: back to the start, so every node has left the tool (by r5)
   passes_.resize(PassCount(opt));
   const ModelChoice model = ModelOf(opt); // (each pass's hold; part_ reads the same choice)
-  passes_[0].path = FirstDies(opt).motion.OwnPath() ? StrokePath(DiePath(opt)) : StrokePath(opt.stroke.path, stroke_);
+  passes_[0].path =
+    FirstDies(opt).motion.OwnPath() ? StrokePath(DiePath(opt)) : StrokePath(StrokePathOf(opt, 0), stroke_);
   for (int k = 0; k < (int)passes_.size(); ++k) {
     Pass &p = passes_[k];
     p.extent = ExtentOf(ToolsOf(opt).passes[k], k, k == 0 ? stroke_ : LaterPass(opt, k).stroke);
@@ -131,8 +132,8 @@ PetscErrorCode PressScene::Initialize(Model &m, ContactSpec &tools)
   tools.params = MakeContactParams(opt_, kVcriOfSpacing * spacing);
   spec_ = tools; // a later pass's set: the same nodes, supports and law
   spec_.tools.clear();
-  if (opt_.stroke.corner_radius > 0 && !m.quiet)
-    PetscCall(NoteCornerRadius(m.comm, stroke_, opt_.stroke.corner_radius));
+  if (FirstPass(opt_).corner_radius > 0 && !m.quiet)
+    PetscCall(NoteCornerRadius(m.comm, stroke_, FirstPass(opt_).corner_radius));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -2,7 +2,7 @@
 // column) or releases (the tool scenes, the bending): each reader lists its options in -help inside the loading
 // block (between PetscOptionsBegin and PetscOptionsEnd, whose PetscOptionsObject it takes), each checker refuses a
 // bad value or a combination its options cannot take, in one line naming the option. The tool scenes' own options
-// (the model, the passes, the dies) are theirs: scenes/tool_options.hpp.
+// (the model, the passes, the dies, the first pass's path of strokes and release) are theirs: scenes/tool_options.hpp.
 #pragma once
 
 #include <petscsys.h>
@@ -12,12 +12,12 @@
 
 namespace tf {
 
-// -stroke, -stroke_corner_radius, -stroke_path into opt.stroke (stroke_options.cpp).
+// -stroke into opt.stroke (stroke_options.cpp).
 PetscErrorCode ReadStrokeOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, StrokeParams &s);
-// Collective: refuses the stroke's values; a -stroke_path sets the final stroke (after the tool scenes' checks,
-// which refuse what the stroke cannot do with their dies; a -die_path sets it too: CheckOptions).
+// Collective: refuses the stroke's value (after the tool scenes' checks, which set it from the first pass's
+// -stroke_path or -die_path: CheckOptions).
 PetscErrorCode CheckStrokeOptions(MPI_Comm comm, Options &opt);
-// -unload, -springback into opt.release (release_options.cpp).
+// -springback into opt.release (release_options.cpp).
 PetscErrorCode ReadReleaseOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, ReleaseParams &r);
 
 } // namespace tf

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "tubeform/metrics/shape.hpp"
+#include "tubeform/scenes/pass_spec.hpp"
 #include "tubeform/scenes/scene.hpp"
 
 namespace tf {

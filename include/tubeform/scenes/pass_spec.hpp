@@ -31,6 +31,15 @@ E EnumOfWord(const char *const (&words)[N], const std::string &word, E otherwise
   return otherwise;
 }
 
+// The most strokes a pass's path of strokes takes (-stroke_path, -pass<N>_stroke_path: a press's path, not a cycle
+// test: a few dozen).
+constexpr PetscInt kMaxPathPoints = 32;
+
+// How a pass lets the tube go after its press (-unload, -pass<N>_unload): its contact forces reversed and the dies
+// removed (the paper's), the dies moved back, or not at all. The words of the option in the enumerators' order.
+enum class Unload { Reverse, Withdraw, None };
+inline constexpr const char *kUnloadWords[] = {"reverse", "withdraw", "none"};
+
 // The most passes a press takes (-pass2_* to -pass9_*): one digit in the options' names, and a press line's
 // stations are a handful.
 constexpr int kMaxPasses = 9;
@@ -138,26 +147,30 @@ struct DieSet {
 };
 
 // A pass of the press (ToolSceneParams::passes: the first, then each after the springback of the one before): its
-// stroke, its turn, its dies and its release, read under the pass's prefix (the first's -die_*, -lower_die, -side_die;
-// a later one's -pass<N>_*). A later pass's shapes where given, each chosen as the first pass's is (DrawingChoice,
-// ShapeChoice), else unset (an upper die of kind "", a lower or side die Unset: the first pass's, DiesOfPass).
+// stroke, its path of strokes, its turn, its dies, its lower die's motion and its release, read under the pass's
+// prefix (the first's -stroke_path, -die_*, -lower_die*, -side_*, -unload; a later one's -pass<N>_*). The first pass's
+// are all set; a later pass's shapes, release and lower die's motion where given, each chosen as the first pass's is
+// (DrawingChoice, ShapeChoice), else unset (an upper die of kind "", a lower or side die Unset, no release or lower
+// motion: the first pass's, DiesOfPass, ReleaseOfPass, LowerDieOfPass).
 struct PassSpec {
   double stroke = 0; // where its upper die ends (mm, from the same zero as -stroke; 0: no such pass, or one pressed
-                     // by a force: PassExtent); the first pass's is -stroke (Options::stroke), 0 here
-  std::vector<double>
-    stroke_path;   // its upper die's strokes in turn (mm, from the same zero), the last its stroke
-                   // (-pass<N>_stroke_path; none: straight to its stroke; the first pass's: -stroke_path)
-  double turn = 0; // the tube turned counter-clockwise before it (degrees, from the pass before's press; 0 the first)
-  DieSet dies;     // its dies; its upper die's motion by the stroke, or a path of its own (ReadPassMotions)
-  std::optional<Unload> release; // how it lets the tube go after its press (-pass<N>_unload; unset: the first
-                                 // pass's -unload, Options::release; ReleaseOfPass)
-  std::optional<LowerDieSpec> lower_motion; // its lower die's motion, mirror or fixed (-pass<N>_lower_die_motion;
-                                            // unset: the first pass's -lower_die_motion; LowerDieOfPass)
+                     // by a force: PassExtent); the first pass's is -stroke (Options::stroke, shared), 0 here
+  std::vector<double> stroke_path; // its upper die's strokes in turn (mm, from the same zero), the last its stroke
+                                   // (-stroke_path, -pass<N>_stroke_path; none: straight to its stroke)
+  double corner_radius = 0; // the first pass's only (-stroke_corner_radius): > 0, its stroke from the paper's rule
+  double turn = 0;          // the tube turned counter-clockwise before it (degrees, from the pass before's press; 0
+                            // the first)
+  DieSet dies;              // its dies; its upper die's motion by the stroke, or a path of its own (ReadPassMotions)
+  std::optional<Unload> release; // how it lets the tube go after its press (-unload, -pass<N>_unload; ReleaseOfPass)
+  std::optional<LowerDieSpec> lower_motion; // its lower die's motion (-lower_die_motion, -pass<N>_lower_die_motion;
+                                            // LowerDieOfPass)
 };
-// The passes before any option is read: the first with the default dies, the later ones with none given (unset).
+// The passes before any option is read: the first with the default dies, release and lower die's motion, the later
+// ones with none given (unset).
 inline std::vector<PassSpec> DefaultPasses()
 {
   std::vector<PassSpec> passes(kMaxPasses);
+  passes[0].release = Unload::Reverse, passes[0].lower_motion = LowerDieSpec{};
   for (int k = 1; k < kMaxPasses; ++k)
     passes[k].dies.upper.kind = "", passes[k].dies.lower = passes[k].dies.side = DieChoice();
   return passes;

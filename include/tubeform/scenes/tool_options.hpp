@@ -27,6 +27,11 @@ PetscErrorCode CheckModelOptions(MPI_Comm comm, const Options &opt);
 // Collective: refuses a later pass's stroke, dies and turns out of range or that do not go together with the others'
 // options (passes_check.cpp).
 PetscErrorCode CheckPassStrokesAndDies(MPI_Comm comm, const Options &opt);
+// Collective: pass `pass`'s strokes in turn (-stroke_path, -pass<N>_stroke_path; its last the pass's stroke): each a
+// non-negative number of mm other than the one before (from 0), the last positive, by its upper die's stroke, over a
+// lower die that mirrors or stays (a motion of its own follows the stroke as it rises); the first pass's not with the
+// corner-radius rule, which gives its stroke too (passes_check.cpp).
+PetscErrorCode CheckPassStrokePath(MPI_Comm comm, const Options &opt, int pass);
 PetscErrorCode CheckPassTurns(MPI_Comm comm, const Options &opt);
 // Collective: a pass's upper die moved off its press's axis by `offset` (`name`: -die_offset, -pass<N>_die_offset): a
 // number of mm, the squaring scene's die (model_options.cpp).

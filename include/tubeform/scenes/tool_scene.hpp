@@ -34,11 +34,9 @@ struct ModelParams {
 // The tool scenes' own parameters (squaring, flattening; docs/dies.md), read and checked by them
 // (scenes/tool_options.hpp): the model, the passes and the lower die's motion.
 struct ToolSceneParams {
-  ModelParams model;         // the part modelled, its support
-  LowerDieSpec lower_motion; // the lower die's motion, the first pass's and a later one's where it gives none
-                             // (-lower_die_motion; LowerDieOfPass)
-  // The passes: the first (-stroke, -die_*, -lower_die, -side_die), then each after the springback of the one before
-  // (-pass2_* to -pass9_*; a stroke of 0: no such pass). FirstPass, LaterPass, DiesOfPass.
+  ModelParams model; // the part modelled, its support
+  // The passes: the first (-stroke, -stroke_path, -die_*, -lower_die*, -side_*, -unload), then each after the
+  // springback of the one before (-pass2_* to -pass9_*; a stroke of 0: no such pass). FirstPass, LaterPass, DiesOfPass.
   std::vector<PassSpec> passes = DefaultPasses();
 };
 
@@ -92,7 +90,7 @@ inline bool VDie(const Options &opt) { return FirstDies(opt).upper.VDie(); }
 inline const LowerDieSpec &LowerDieAsGiven(const Options &opt, int pass)
 {
   const std::optional<LowerDieSpec> &own = ToolsOf(opt).passes[pass].lower_motion;
-  return pass > 0 && own ? *own : ToolsOf(opt).lower_motion;
+  return own ? *own : *FirstPass(opt).lower_motion;
 }
 // As the scenes take it: its word, kind and spec, the spec moving up (y) by the stroke.
 inline LowerDieSpec LowerDieOfPass(const Options &opt, int pass)
@@ -119,8 +117,9 @@ inline ToolPath DiePath(const Options &opt) { return MotionPathOf(FirstDies(opt)
 inline double Travel(const Options &opt)
 {
   if (FirstDies(opt).motion.OwnPath()) return DiePath(opt).end();
-  double travel = opt.stroke.path.empty() ? opt.stroke.u : 0, at = 0;
-  for (double u : opt.stroke.path) travel += std::abs(u - at), at = u;
+  const std::vector<double> &path = FirstPass(opt).stroke_path;
+  double travel = path.empty() ? opt.stroke.u : 0, at = 0;
+  for (double u : path) travel += std::abs(u - at), at = u;
   return travel;
 }
 // -die_path moves the first pass's die sideways somewhere.
@@ -202,12 +201,12 @@ inline std::string PassLowerDie(const Options &opt, int pass) { return ShapeWord
 // Pass `pass`'s strokes in turn (-stroke_path, -pass<N>_stroke_path; none: straight to its stroke).
 inline const std::vector<double> &StrokePathOf(const Options &opt, int pass)
 {
-  return pass == 0 ? opt.stroke.path : LaterPass(opt, pass).stroke_path;
+  return ToolsOf(opt).passes[pass].stroke_path;
 }
 // Pass `pass`'s release after its press (-unload, -pass<N>_unload: the first pass's where not given).
 inline Unload ReleaseOfPass(const Options &opt, int pass)
 {
-  return pass > 0 ? LaterPass(opt, pass).release.value_or(opt.release.unload) : opt.release.unload;
+  return ToolsOf(opt).passes[pass].release.value_or(*FirstPass(opt).release);
 }
 // The option that gives pass `pass`'s release: its own -pass<N>_unload, or the first pass's -unload it takes.
 inline std::string ReleaseOption(const Options &opt, int pass)

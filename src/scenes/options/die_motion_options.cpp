@@ -192,7 +192,7 @@ PetscErrorCode BlockGiven(OptionReader &read, const MotionBlock &block, bool lis
 
 PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt)
 {
-  LowerDieSpec &die = ToolsOf(opt).lower_motion;
+  LowerDieSpec &die = *ToolsOf(opt).passes[0].lower_motion;
   PetscFunctionBeginUser;
   die.spec.tool = "the lower die";
   const MotionBlock block{"lower_die_", kLowerMotionTitle, LowerHelp(LowerWords(), "lower_die_", "the lower die"),
@@ -218,7 +218,7 @@ PetscErrorCode ReadPassLowerMotions(MPI_Comm comm, OptionReader &read, Options &
     bool given;
     PetscCall(BlockGiven(read, block, opt.help && pass == 1, given)); // (the second's listed by -help)
     if (!given) continue;
-    LowerDieSpec own = ToolsOf(opt).lower_motion; // (its word the default; its spec its own)
+    LowerDieSpec own = *FirstPass(opt).lower_motion; // (its word the default; its spec its own)
     own.spec = MotionSpec();
     own.spec.tool = die;
     PetscCall(ReadLowerMotion(comm, read, block, opt.help, own));

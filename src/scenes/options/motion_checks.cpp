@@ -15,7 +15,7 @@ MotionPress PressOfPass(const Options &opt, int pass)
   press.quarter = model.part == TubeModel::Quarter, press.lower_stays = LowerDieMoves(opt, pass, LowerDieMove::Fixed);
   if (ReleaseOfPass(opt, pass) == Unload::Withdraw) press.withdrawn_by = ReleaseOption(opt, pass);
   press.stroke_given = pass > 0 && LaterPass(opt, pass).stroke != 0;
-  press.stroke_path = !opt.stroke.path.empty(), press.corner_radius = opt.stroke.corner_radius > 0;
+  press.stroke_path = !StrokePathOf(opt, 0).empty(), press.corner_radius = FirstPass(opt).corner_radius > 0;
   press.side_dies = !DiesOfPass(opt, pass).side.Is(DieFrom::None);
   press.die_offset = ToolsOf(opt).passes[pass].dies.offset != 0;
   press.off_axis = PassOffAxis(opt, pass), press.held = model.HeldByRotation(pass);

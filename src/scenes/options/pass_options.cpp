@@ -1,4 +1,5 @@
-// The later passes' options (include/tubeform/scenes/tool_options.hpp); checked in passes_check.cpp.
+// The first pass's stroke rule, path of strokes and release, and the later passes' options
+// (include/tubeform/scenes/tool_options.hpp); checked in passes_check.cpp.
 #include "tubeform/scenes/tool_options.hpp"
 
 namespace tf {
@@ -121,11 +122,34 @@ PetscErrorCode ReadPass(PetscOptionItems *PetscOptionsObject, OptionReader &read
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// The first pass's own: its stroke by the paper's rule or its strokes in turn (its stroke -stroke is shared with the
+// column: io), and how it lets the tube go.
+PetscErrorCode ReadFirstPass(PetscOptionItems *PetscOptionsObject, OptionReader &read, PassSpec &pass)
+{
+  Unload release = *pass.release;
+  PetscFunctionBeginUser;
+  PetscCall(read.Real(PetscOptionsObject, "-stroke_corner_radius",
+                      "tool scenes: the first pass's stroke by the paper's rule: the rounded square's corner (mm)",
+                      pass.corner_radius));
+  PetscCall(RealList(PetscOptionsObject, read, "-stroke_path",
+                     "tool scenes: the die's strokes in turn (mm, >= 0), at the punch speed: press, back off, press "
+                     "again (in place of -stroke: the last is the final stroke)",
+                     kMaxPathPoints, pass.stroke_path));
+  PetscCall(
+    ChooseWord(PetscOptionsObject, read, "-unload",
+               "tool scenes: how the first pass lets the tube go: reverse (the paper's: contact forces reversed, "
+               "tools removed), withdraw (the dies move back), none (the run ends loaded)",
+               kUnloadWords, release));
+  pass.release = release;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace
 
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
+  PetscCall(ReadFirstPass(PetscOptionsObject, read, ToolsOf(opt).passes[0]));
   for (int number = 2; number <= kMaxPasses; ++number)
     PetscCall(ReadPass(PetscOptionsObject, read, number, ToolsOf(opt).passes[number - 1]));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -49,15 +49,17 @@ PetscErrorCode CheckPassOffset(MPI_Comm comm, const Options &opt, int pass)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Pass `pass`'s strokes in turn (-pass<N>_stroke_path, its last the pass's stroke), as the first pass's -stroke_path:
-// each a non-negative number of mm other than the one before (from 0), by its upper die's stroke, over a lower die
-// that mirrors or stays (a motion of its own follows the stroke as it rises).
+} // namespace
+
 PetscErrorCode CheckPassStrokePath(MPI_Comm comm, const Options &opt, int pass)
 {
-  const PassSpec &p = LaterPass(opt, pass);
+  const PassSpec &p = ToolsOf(opt).passes[pass];
   const std::string name = PassOptionName(pass, "stroke_path");
   double at = 0;
   PetscFunctionBeginUser;
+  if (p.stroke_path.empty()) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(PressesWithTools(opt), comm, PETSC_ERR_USER_INPUT, "%s: the %s scene presses with no dies", name.c_str(),
+             opt.scene.c_str());
   for (double u : p.stroke_path) {
     PetscCheck(std::isfinite(u) && u >= 0 && u != at, comm, PETSC_ERR_USER_INPUT,
                "%s: %g after %g: each stroke must be a non-negative number of mm, other than the one before it (from "
@@ -65,7 +67,9 @@ PetscErrorCode CheckPassStrokePath(MPI_Comm comm, const Options &opt, int pass)
                name.c_str(), u, at);
     at = u;
   }
-  if (p.stroke_path.empty()) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(at > 0, comm, PETSC_ERR_USER_INPUT, "%s: the last stroke is the pass's final one and must be positive",
+             name.c_str());
+  PetscCheck(p.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT, "%s: not with -stroke_corner_radius", name.c_str());
   PetscCheck(DieMoves(p.dies, kStrokeMotion), comm, PETSC_ERR_USER_INPUT,
              "%s: the upper die by the pass's stroke: not with %s %s", name.c_str(),
              PassOptionName(pass, "die_motion").c_str(), FindMotionKind(p.dies.motion.kind)->upper_word);
@@ -75,6 +79,7 @@ PetscErrorCode CheckPassStrokePath(MPI_Comm comm, const Options &opt, int pass)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+namespace {
 // Pass `pass`'s stroke and dies (a pass given: PassExtent).
 PetscErrorCode CheckPassStroke(MPI_Comm comm, const Options &opt, int pass)
 {

@@ -48,11 +48,12 @@ void SetDiePathStroke(Options &opt) { opt.stroke.u = -0.5 * DiePath(opt).Last()[
 // taken for it: its strokes would be another pass's).
 PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 {
-  const char *word = ToolsOf(opt).lower_motion.word.c_str();
+  const char *word = FirstPass(opt).lower_motion->word.c_str();
   PetscFunctionBeginUser;
   if (LowerDieMoves(opt, 0, LowerDieMove::Own))
-    PetscCheck(opt.stroke.path.empty() && opt.release.unload != Unload::Withdraw && opt.stroke.corner_radius <= 0, comm,
-               PETSC_ERR_USER_INPUT,
+    PetscCheck(StrokePathOf(opt, 0).empty() && ReleaseOfPass(opt, 0) != Unload::Withdraw &&
+                 FirstPass(opt).corner_radius <= 0,
+               comm, PETSC_ERR_USER_INPUT,
                "-lower_die_motion %s: the lower die follows its motion as the stroke rises: not with -stroke_path, "
                "-unload withdraw or -stroke_corner_radius",
                word);
@@ -77,21 +78,20 @@ PetscErrorCode CheckRelease(MPI_Comm comm, const Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The stroke's rules the dies cannot take: the corner-radius rule is two equal V-dies'; a path of strokes is not a
-// force's.
+// The first pass's stroke rules the dies cannot take: the corner-radius rule is two equal V-dies'; a path of strokes
+// is not a force's.
 PetscErrorCode CheckStrokeWithDies(MPI_Comm comm, const Options &opt)
 {
-  const StrokeParams &s = opt.stroke;
+  const double radius = FirstPass(opt).corner_radius;
   PetscFunctionBeginUser;
-  PetscCheck(VDie(opt) || s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-             "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke",
-             s.corner_radius);
+  PetscCheck(radius >= 0, comm, PETSC_ERR_USER_INPUT, "-stroke_corner_radius %g: must be non-negative", radius);
+  PetscCheck(VDie(opt) || radius <= 0, comm, PETSC_ERR_USER_INPUT,
+             "-stroke_corner_radius %g: the corner-radius rule is the V-die's; with -die_profile give -stroke", radius);
   PetscCheck(
-    FirstDies(opt).lower.Is(DieFrom::Mirror) || s.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT,
-    "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke",
-    s.corner_radius, ShapeWord(FirstDies(opt).lower).c_str());
-  PetscCheck(s.path.empty() || !Extent(opt, 0).Forced(), comm, PETSC_ERR_USER_INPUT,
-             "-stroke_path: not with -die_force");
+    FirstDies(opt).lower.Is(DieFrom::Mirror) || radius <= 0, comm, PETSC_ERR_USER_INPUT,
+    "-stroke_corner_radius %g: the corner-radius rule is for two equal V-dies; with -lower_die %s give -stroke", radius,
+    ShapeWord(FirstDies(opt).lower).c_str());
+  PetscCall(CheckPassStrokePath(comm, opt, 0)); // (passes_check.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -136,6 +136,7 @@ PetscErrorCode CheckToolSceneOptions(MPI_Comm comm, Options &opt)
   PetscCall(CheckLowerDieMotion(comm, opt));
   PetscCall(CheckPassesAndHolds(comm, opt));
   PetscCall(CheckStrokeWithDies(comm, opt));
+  if (!StrokePathOf(opt, 0).empty()) opt.stroke.u = StrokePathOf(opt, 0).back(); // (its last stroke: the press's)
   PetscCall(CheckShape(comm, kVShape, "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
   for (int pass = 1; pass < kMaxPasses; ++pass)                          // (a later pass's own V numbers)
     if (LaterPass(opt, pass).dies.upper.kind == kVShape)
