@@ -50,6 +50,22 @@ PetscErrorCode ReadProfileTool(MPI_Comm comm, const char *option, const std::str
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// Collective: a lower or side die given as a file or a shape of its own (`option` names it), drawn as an upper die
+// on the tube of outer radius `ro` (its right half).
+PetscErrorCode DrawnDie(MPI_Comm comm, const char *option, const DieChoice &shape, double ro, Tool &drawn)
+{
+  PetscFunctionBeginUser;
+  if (shape.Is(DieFrom::Drawing)) {
+    PetscCall(ReadProfileTool(comm, option, shape.kind, shape.spec.file, drawn));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  ShapeSpec spec = shape.spec;
+  spec.ro = ro;
+  const std::string error = MakeShape(shape.kind, spec, drawn); // (its numbers checked: CheckDieShapes)
+  PetscCheck(error.empty(), comm, PETSC_ERR_USER_INPUT, "%s %s: %s", option, shape.kind.c_str(), error.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 // The squaring dies' cavity has a closed form: two equal V-dies (the lower one mirroring the upper one, closing by
 // 2 U as mirror and fixed do), no side dies.
 bool ClosedForm(const Options &o, int pass, const DieSet &dies)
@@ -95,7 +111,7 @@ PetscErrorCode BuildLowerDie(MPI_Comm comm, const Options &opt, int pass, DieCho
     MakeShape(shape.kind, spec, lower); // (the flat kind draws any plate)
   } else {
     Tool drawn;
-    PetscCall(ReadProfileTool(comm, "-lower_die", shape.kind, shape.spec.file, drawn));
+    PetscCall(DrawnDie(comm, "-lower_die", shape, opt.tube_ro, drawn));
     lower = WholeTube(part) ? BothSides(MirrorY(drawn)) : MirrorY(drawn);
   }
   // Its name in errors and in the results (/tools/<name>): no spaces.
@@ -119,7 +135,7 @@ PetscErrorCode AddSideDies(MPI_Comm comm, const Options &o, DieChoice shape, con
   } else if (shape.Is(DieFrom::Mirror)) {
     drawn = BothDies(part) ? BothSides(upper_right) : upper_right;
   } else {
-    PetscCall(ReadProfileTool(comm, option, shape.kind, shape.spec.file, drawn));
+    PetscCall(DrawnDie(comm, option, shape, o.tube_ro, drawn));
     drawn = BothDies(part) ? BothSides(drawn) : drawn;
   }
   Tool right = Transform(drawn, {true, 1}); // (x, y) -> (y, x): moving along -x by the stroke

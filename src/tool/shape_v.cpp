@@ -15,8 +15,7 @@ namespace {
 // beyond the squared side over it).
 constexpr double kAngleMin = 60, kAngleMax = 150;
 
-const ShapeOption kAngle{"angle",
-                         "V-die: the angle between its flanks (degrees; the paper's 90), the lower die its mirror"};
+const ShapeOption kAngle{"angle", "V-die: the angle between its flanks (degrees; the paper's 90)"};
 const ShapeOption kRApex{"r_apex", "V-die apex fillet radius (mm)"};
 const ShapeOption kUClose{"u_close",
                           "V-die parting face at y = u_close - U: the dies close at stroke u_close (mm; 0: no parting "

@@ -100,16 +100,18 @@ struct DieShape {
 };
 // What a lower or side die is (docs/dies.md), as its word chose it (ShapeChoice): the upper die's mirror image
 // (mirror: a relation between the tools, not a kind), a plate (flat: the flat kind, a floor below the tube or a plate
-// at its side), no die (none: the side dies' only) or a drawing (a file drawn as an upper die). The words of the
-// enumerators before Drawing, in order (a drawing's word is its file). Unset: a later pass's, not given (the first
-// pass's then: DiesOfPass).
-enum class DieFrom { Mirror, Plate, None, Drawing, Unset };
+// at its side), no die (none: the side dies' only), a drawing (a file drawn as an upper die) or a shape of its own (a
+// kind of the shape registry that reads options, named by its word: v, its numbers under the die's prefix,
+// -lower_die_angle, ...). The words of the enumerators before Drawing, in order (a drawing's word is its file, a
+// shape's its kind). Unset: a later pass's, not given (the first pass's then: DiesOfPass).
+enum class DieFrom { Mirror, Plate, None, Drawing, Shape, Unset };
 inline constexpr const char *kDieFromWords[] = {"mirror", "flat", "none"};
 static_assert(std::size(kDieFromWords) == static_cast<size_t>(DieFrom::Drawing),
               "a word for each enumerator before Drawing, in order");
-// A lower or side die's shape: what it is, and for a plate or a drawing the kind of the shape registry that draws it
-// (flat; the kind for a file's name, DrawingKind: profile or dxf; the file in spec.file). The scenes place and size
-// the flat plate and read the file (scenes/die.cpp); these kinds read no options of their own.
+// A lower or side die's shape: what it is, and for a plate, a drawing or a shape of its own the kind of the shape
+// registry that draws it (flat; the kind for a file's name, DrawingKind: profile or dxf, the file in spec.file; the
+// kind its word names, its numbers in spec, read by the kind under the die's prefix: ReadDieShapeOptions). The scenes
+// place and size the flat plate, read the file and draw the shape on the tube (scenes/die.cpp).
 struct DieChoice {
   explicit DieChoice(DieFrom f = DieFrom::Unset) : from(f) {}
   DieFrom from;
@@ -119,9 +121,10 @@ struct DieChoice {
   bool Given() const { return from != DieFrom::Unset; }
 };
 // The shape a word names (-lower_die, -side_die and their passes'): mirror, flat, none where `none` (the side dies),
-// else a file. (die_shape_options.cpp)
+// a kind of the shape registry that reads options (v: the paper's die its numbers until its options change them),
+// else a file. (pass_spec.cpp)
 DieChoice ShapeChoice(const std::string &word, bool none = false);
-// The word back (the messages name it): its enumerator's, the file, or none ("") where unset.
+// The word back (the messages name it): its enumerator's, the file, the kind, or none ("") where unset.
 std::string ShapeWord(const DieChoice &shape);
 // The upper die's drawing a file names (-die_profile, -pass<N>_die_profile): its kind by the file's name
 // (DrawingKind: profile, or dxf for *.dxf), the file in spec.file; unset for no file. (die_shape_options.cpp)

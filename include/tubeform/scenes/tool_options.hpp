@@ -89,6 +89,22 @@ PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt);
 PetscErrorCode CheckSideMotion(MPI_Comm comm, const Options &opt, int pass);
 PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
+// A lower or side die whose shape of its own is read (ReadDieShapeOptions): its numbers' options prefix (lower_die_,
+// pass2_side_die_), its block's title in -help, the option whose word chooses the shape (-lower_die), the die in
+// messages ("the lower die"), and whether -help lists the block where the shape is not chosen (the first and second
+// passes').
+struct DieOwnShape {
+  std::string prefix, title, word, what;
+  bool list = false;
+};
+// Collective: the numbers of a die's shape of its own (a kind of the shape registry that reads options, chosen by its
+// word: v) into `shape`, read by the kind in its own block under the die's prefix (the paper's die its defaults); a
+// number given where the die is not that kind refused, naming the option and the word that chooses it
+// (die_shape_options.cpp).
+PetscErrorCode ReadDieShapeOptions(MPI_Comm comm, OptionReader &read, const DieOwnShape &die, DieChoice &shape);
+// Collective: every pass's lower and side dies' shapes of their own, their numbers refused by their kind's check
+// against the tube, one line naming the option (die_shape_options.cpp).
+PetscErrorCode CheckDieShapes(MPI_Comm comm, const Options &opt);
 // Inside a block (its PetscOptionsObject): a die's shape by the word of `option` (ShapeChoice: mirror, flat, none where
 // `none`, or a file; kept where the word is the shape's own), and the upper die's drawing by the file of `option`
 // (DrawingChoice; kept where the file is its own): the first pass's dies and a later one's alike

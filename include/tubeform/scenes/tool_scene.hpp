@@ -184,6 +184,7 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
 {
   DieSet dies = FirstDies(opt);
   dies.upper.spec.ro = opt.tube_ro, dies.motion.spec.reach = opt.tube_ro; // (UpperDieShape, UpperDie)
+  dies.lower.spec.ro = dies.side.spec.ro = opt.tube_ro;                   // (a shape of its own drawn on the tube)
   if (pass == 0) return dies;
   const DieSet &given = LaterPass(opt, pass).dies;
   if (given.upper.kind == kVShape) // (its own V-die: the first pass's numbers and its own, ReadPassShapes)
@@ -194,6 +195,7 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
   if (given.side.Given()) dies.side = given.side;
   dies.motion = given.motion, dies.motion.spec.reach = opt.tube_ro;
   dies.side_motion = given.side_motion, dies.offset = given.offset;
+  dies.lower.spec.ro = dies.side.spec.ro = opt.tube_ro; // (a shape of its own drawn on the tube)
   return dies;
 }
 // Pass `pass`'s lower die's word (-lower_die, -pass<N>_lower_die: the first pass's where not given).

@@ -5,8 +5,10 @@
 // -die_profile given after it), and its checker refuses their values (CheckToolSceneOptions); a later pass's own V
 // numbers likewise under its prefix pass<N>_die_ (ReadPassShapes).
 // The lower die's and the side dies' shapes, each its own block: a word (-lower_die, -side_die) choosing mirror (the
-// upper die's shape, a relation between the tools), flat (the flat kind), none (no side dies) or a file (its kind by
-// its name); these kinds read no options. The scenes place and size them (scenes/die.cpp).
+// upper die's shape, a relation between the tools), flat (the flat kind), none (no side dies), a shape of its own (a
+// kind of the registry that reads options, v: its numbers read by the kind in a block under the die's prefix,
+// -lower_die_angle, -side_die_r_apex, -pass2_lower_die_angle, ...: ReadDieShapeOptions) or a file (its kind by its
+// name). The scenes place, size and draw them (scenes/die.cpp).
 #include <algorithm>
 #include <cmath>
 
@@ -29,6 +31,50 @@ PetscErrorCode ReadWordShape(MPI_Comm comm, OptionReader &read, const char *opti
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 } // namespace
+
+PetscErrorCode ReadDieShapeOptions(MPI_Comm comm, OptionReader &read, const DieOwnShape &die, DieChoice &shape)
+{
+  PetscFunctionBeginUser;
+  for (const std::string &name : ShapeKinds()) {
+    const ShapeKind *k = FindShapeKind(name);
+    const bool own = shape.Is(DieFrom::Shape) && shape.kind == name;
+    std::string given;
+    for (const ShapeOption &o : k->options) {
+      const std::string option = "-" + die.prefix + o.name;
+      PetscBool set;
+      PetscCall(PetscOptionsHasName(nullptr, die.prefix.c_str(), ("-" + o.name).c_str(), &set));
+      if (set && given.empty()) given = option;
+      read.Note(option.c_str(), (die.word + " " + name + ": " + o.help).c_str(), die.title.c_str());
+    }
+    PetscCheck(own || given.empty(), comm, PETSC_ERR_USER_INPUT, "%s: a number of %s's own %s shape; give %s %s",
+               given.c_str(), die.what.c_str(), name.c_str(), die.word.c_str(), name.c_str());
+    if (k->options.empty() || !(own || die.list)) continue; // (-help lists a pass's first block of each kind)
+    ShapeSpec spec = own ? shape.spec : PaperVDie();
+    PetscOptionsBegin(comm, die.prefix.c_str(), die.title.c_str(), "tubeform");
+    OptionsBlock block(PetscOptionsObject);
+    PetscCall(ReadShape(PetscOptionsObject, name, spec));
+    block.Release();
+    PetscOptionsEnd();
+    if (own) shape.spec = spec;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckDieShapes(MPI_Comm comm, const Options &opt)
+{
+  PetscFunctionBeginUser;
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    const DieSet &dies = ToolsOf(opt).passes[pass].dies;
+    for (const DieChoice *shape : {&dies.lower, &dies.side}) {
+      if (!shape->Is(DieFrom::Shape)) continue;
+      ShapeSpec spec = shape->spec;
+      spec.ro = opt.tube_ro;
+      const std::string prefix = PassOptionName(pass, shape == &dies.lower ? "lower_die_" : "side_die_").substr(1);
+      PetscCall(CheckShape(comm, shape->kind, prefix.c_str(), spec));
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 PetscErrorCode ReadDieChoice(PetscOptionItems *PetscOptionsObject, OptionReader &read, const char *option,
                              const char *help, bool none, DieChoice &shape)
@@ -81,7 +127,17 @@ PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt)
   const ShapeKind *v = FindShapeKind(kVShape);
   PetscFunctionBeginUser;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
-    DieShape &die = ToolsOf(opt).passes[pass].dies.upper;
+    DieSet &dies = ToolsOf(opt).passes[pass].dies;
+    for (const bool lower : {true, false}) { // (its lower and side dies' shapes of their own, where chosen)
+      const char *what = lower ? "lower_die" : "side_die";
+      const std::string prefix = Formatted("pass%d_%s_", pass + 1, what);
+      const DieOwnShape own{
+        prefix, Formatted("tubeform: pass %d %s shape of its own", pass + 1, lower ? "lower die" : "side die"),
+        PassOptionName(pass, what), "the " + PassOrdinal(pass) + " pass's " + (lower ? "lower die" : "side dies"),
+        opt.help && pass == 1};
+      PetscCall(ReadDieShapeOptions(comm, read, own, lower ? dies.lower : dies.side));
+    }
+    DieShape &die = dies.upper;
     const std::string prefix = Formatted("pass%d_die_", pass + 1);
     const std::string title = Formatted("tubeform: pass %d upper die shape", pass + 1);
     bool given = false;
@@ -107,10 +163,15 @@ PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt)
 PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
+  DieChoice &lower = ToolsOf(opt).passes[0].dies.lower;
   PetscCall(ReadWordShape(comm, read, "-lower_die",
-                          "tool scenes: the lower die: mirror (of the upper one), flat (a floor at y = -Ro), or a "
-                          "profile file (*.dxf or text) drawn as an upper die, mirrored below the tube",
-                          "tubeform: lower die shape", false, ToolsOf(opt).passes[0].dies.lower));
+                          "tool scenes: the lower die: mirror (of the upper one), flat (a floor at y = -Ro), v (a "
+                          "V-die of its own: -lower_die_angle, ...), or a profile file (*.dxf or text) drawn as an "
+                          "upper die, mirrored below the tube",
+                          "tubeform: lower die shape", false, lower));
+  PetscCall(ReadDieShapeOptions(
+    comm, read, {"lower_die_", "tubeform: lower die shape of its own", "-lower_die", "the lower die", opt.help},
+    lower));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -123,12 +184,15 @@ PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
   OptionsBlock block(PetscOptionsObject);
   PetscCall(ReadDieChoice(PetscOptionsObject, read, "-side_die",
                           "tool scenes: side dies pressing towards the tube's centre as -side_motion says (by default "
-                          "by the stroke U): none, mirror (the "
-                          "upper die turned to the side), flat (a plate), or a profile file drawn as an upper die "
+                          "by the stroke U): none, mirror (the upper die turned to the side), flat (a plate), v (a "
+                          "V-die of its own: -side_die_angle, ...), or a profile file drawn as an upper die "
                           "(docs/dies.md)",
                           true, dies.side)); // (as a later pass's -pass<N>_side_die)
   block.Release();
   PetscOptionsEnd();
+  PetscCall(ReadDieShapeOptions(
+    comm, read, {"side_die_", "tubeform: side die shape of its own", "-side_die", "the side dies", opt.help},
+    dies.side));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -42,10 +42,11 @@ const PassOption kPassOptions[] = {
   {"die_profile", PassValue::Profile,
    "squaring: the second pass's upper die from a profile file (default: the first pass's die)"},
   {"lower_die", PassValue::Lower,
-   "tool scenes: the second pass's lower die: mirror, flat or a profile file (default: the first pass's -lower_die)"},
+   "tool scenes: the second pass's lower die: mirror, flat, v (its numbers -pass2_lower_die_angle, ...) or a profile "
+   "file (default: the first pass's -lower_die)"},
   {"side_die", PassValue::Side,
-   "tool scenes: the second pass's side dies: none, mirror, flat or a profile file (default: the first pass's "
-   "-side_die)"},
+   "tool scenes: the second pass's side dies: none, mirror, flat, v (its numbers -pass2_side_die_angle, ...) or a "
+   "profile file (default: the first pass's -side_die)"},
   {"turn", PassValue::Turn,
    "tool scenes: the tube turned counter-clockwise by this many degrees (-360 to 360) before the second pass: its dies "
    "press along the turned axis (not a multiple of 90: the full model, held by the rotation hold; a later pass's "

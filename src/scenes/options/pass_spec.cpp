@@ -18,6 +18,9 @@ DieChoice ShapeChoice(const std::string &word, bool none)
   DieChoice shape(EnumOfWord(kDieFromWords, word, DieFrom::Drawing));
   if (shape.Is(DieFrom::None) && !none) shape.from = DieFrom::Drawing; // (a lower die's none: a file so named)
   if (shape.Is(DieFrom::Plate)) shape.kind = kFlatShape;               // (the flat kind draws it)
+  const ShapeKind *kind = FindShapeKind(word);
+  if (shape.Is(DieFrom::Drawing) && kind && !kind->options.empty()) // (a shape of its own: v)
+    shape.from = DieFrom::Shape, shape.kind = word, shape.spec = PaperVDie();
   if (shape.Is(DieFrom::Drawing)) shape.kind = DrawingKind(word), shape.spec.file = word;
   return shape;
 }
@@ -25,6 +28,7 @@ DieChoice ShapeChoice(const std::string &word, bool none)
 std::string ShapeWord(const DieChoice &shape)
 {
   if (shape.Is(DieFrom::Drawing)) return shape.spec.file;
+  if (shape.Is(DieFrom::Shape)) return shape.kind;
   return shape.Given() ? WordOf(kDieFromWords, shape.from) : "";
 }
 

@@ -17,7 +17,8 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, int pass, const 
   const std::string value = ShapeWord(side);
   PetscFunctionBeginUser;
   if (side.Is(DieFrom::None)) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat or a profile file", name.c_str());
+  PetscCheck(!value.empty(), comm, PETSC_ERR_USER_INPUT, "%s: give none, mirror, flat, v or a profile file",
+             name.c_str());
   PetscCheck(!Extent(opt, pass).Forced(), comm, PETSC_ERR_USER_INPUT,
              "%s %s: side dies are not with %s in their pass (they press by its stroke, which a force leaves an "
              "unknown)",

@@ -138,7 +138,8 @@ PetscErrorCode CheckToolSceneOptions(MPI_Comm comm, Options &opt)
   PetscCall(CheckStrokeWithDies(comm, opt));
   if (!StrokePathOf(opt, 0).empty()) opt.stroke.u = StrokePathOf(opt, 0).back(); // (its last stroke: the press's)
   PetscCall(CheckShape(comm, kVShape, "die_", UpperDieShape(opt).spec)); // (the V-die's options: read with a file too)
-  for (int pass = 1; pass < kMaxPasses; ++pass)                          // (a later pass's own V numbers)
+  PetscCall(CheckDieShapes(comm, opt));         // (the lower and side dies' of their own: die_shape_options.cpp)
+  for (int pass = 1; pass < kMaxPasses; ++pass) // (a later pass's own V numbers)
     if (LaterPass(opt, pass).dies.upper.kind == kVShape)
       PetscCall(
         CheckShape(comm, kVShape, Formatted("pass%d_die_", pass + 1).c_str(), DiesOfPass(opt, pass).upper.spec));
