@@ -26,9 +26,11 @@ namespace tf {
 // -full_hold rotation and the later passes' -pass<N>_die_profile are its) or a flat plate (flattening).
 enum class ScenePress { None, Die, Plate };
 
-// What a run is told: the run-wide options (the scene, the tube, its mesh and element, the material, the driver, the
-// estimate, the output), the loading's (the stroke, the release; more than one scene's), the friction, and, opaque to
-// io, the tool scenes' own and the chosen scene's own parameters.
+// What a run is told: the run-wide options (the scene, the body's mesh and element, the material, the driver, the
+// output), those several scenes share (the tube: the tool scenes', the pressure's and the slide's; the stroke: the tool
+// scenes' and the column's; the springback's law: the tool scenes' and the bending's; the friction: the tool scenes'
+// and the slide's; the estimate: the tool scenes'), and, opaque to io, the tool scenes' own (their model and passes)
+// and the chosen scene's own parameters. Which scene reads which: the scene registry (scenes/registry.cpp).
 struct Options {
   std::string scene = "pressure";      // a name of the scene registry (scenes/registry.hpp)
   ScenePress press = ScenePress::None; // what it presses with (its SceneOptions', set with it; PressesWithTools)
