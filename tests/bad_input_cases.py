@@ -135,7 +135,7 @@ def bad_input_cases(src, out):
           "1,1"], "-pass2_lower_die_motion path: the lower die follows its motion as the stroke rises: not with "
                   "-pass2_stroke_path"),
         (["-scene", "squaring", "-pass2_stroke_path", "2,1,3", "-pass2_die_motion", "force", "-pass2_die_force", "50"],
-         "-pass2_stroke_path: the upper die by the pass's stroke: not with -pass2_die_motion force"),
+         "-pass2_stroke_path: the upper die by the pass's stroke: not with -pass2_die_force"),
         (["-scene", "squaring", "-side_die", "flat", "-side_force", "-1"], "-side_force -1"),
         (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_side_force", "20"],
          "dies, -pass2_side_die (or -side_die)"),
@@ -221,7 +221,7 @@ def bad_input_cases(src, out):
         (["-scene", "squaring", "-stroke_path", "3,3,4"], "other than the one before"),
         (["-scene", "squaring", "-stroke_path", "3,0"], "must be positive"),
         (["-scene", "squaring", "-stroke_path", "3,4", "-die_force", "10"],
-         "-stroke_path: the upper die by the pass's stroke: not with -die_motion force"),
+         "-stroke_path: the upper die by the pass's stroke: not with -die_force"),
         (["-scene", "column", "-stroke_path", "1,2"], "-stroke_path: read by the squaring and flattening"),
         (["-scene", "squaring", "-die_force", "100", "-unload", "withdraw"], "-unload withdraw moves the die back"),
         (["-scene", "squaring", "-die_force", "100", "-stroke_corner_radius", "4"], "-stroke_corner_radius"),

@@ -49,12 +49,12 @@ struct Options {
   MaterialParams material;
   // The incremental driver's (io/driver_params.hpp; read and checked by the driver).
   DriverParams driver;
-  StrokeParams stroke; // the stroke and its path (io/press_params.hpp; the tool scenes' and the column's)
-  // The tool scenes' own (a ToolSceneParams of scenes/tool_scene.hpp: the model, the passes, the lower die's motion),
+  StrokeParams stroke; // the stroke (io/press_params.hpp; the tool scenes' first pass's and the column's)
+  // The tool scenes' own (a ToolSceneParams of scenes/tool_scene.hpp: the model and the passes with their dies),
   // read and checked by them for every scene and read back with ToolsOf; io does not look inside.
   std::any tools;
   FrictionParams friction; // contact and friction (contact/friction_params.hpp; the tool scenes' and the slide's)
-  ReleaseParams release;   // the release after loading (io/press_params.hpp; the tool scenes' and the bending's)
+  ReleaseParams release;   // the springback's law (io/press_params.hpp; the tool scenes' and the bending's)
   // The chosen scene's own parameters where it has any (a scene without tools: its struct of scenes/scene_params.hpp,
   // read and checked by the scene, SceneOptions), kept here so that they travel with the run's options to its levels
   // and companions; the scene reads them back with OwnParams.

@@ -117,6 +117,7 @@ struct DieChoice {
   DieFrom from;
   std::string kind; // (none for mirror and none)
   ShapeSpec spec;
+  std::string stray; // a number of a shape it is not, given: its refusal (CheckDieShapes), "" none
   bool Is(DieFrom f) const { return from == f; }
   bool Given() const { return from != DieFrom::Unset; }
 };

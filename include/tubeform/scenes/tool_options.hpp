@@ -79,10 +79,10 @@ PetscErrorCode ReadUpperDieShape(MPI_Comm comm, OptionReader &read, Options &opt
 // listed by -help; a later one's where given (die_shape_options.cpp).
 PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt);
 // The first pass's lower die's and side dies' shapes (ToolsOf(opt).passes[0].dies), each its own block: -lower_die
-// (mirror, flat or a file) into its lower, -side_die (none, mirror, flat or a file) into its side (ShapeChoice; both in
-// die_shape_options.cpp, refused where they do not go with the other options by CheckToolSceneOptions; their motion:
-// ReadSideMotions). Collective: CheckSideDieOptions refuses -side_die and the side dies' motion where they do not go
-// with the other options, one line naming the option (CheckToolSceneOptions).
+// (mirror, flat, v or a file) into its lower, -side_die (none, mirror, flat, v or a file) into its side (ShapeChoice;
+// both in die_shape_options.cpp, refused where they do not go with the other options by CheckToolSceneOptions; their
+// motion: ReadSideMotions). Collective: CheckSideDieOptions refuses -side_die and the side dies' motion where they do
+// not go with the other options, one line naming the option (CheckToolSceneOptions).
 PetscErrorCode CheckSideDieOptions(MPI_Comm comm, const Options &opt);
 // Collective: pass `pass`'s side dies' motion (-side_motion, -pass<N>_side_motion; a force: -side_force, ...) other
 // than the stroke only with the pass's side dies (die_shape_options.cpp).
@@ -90,20 +90,25 @@ PetscErrorCode CheckSideMotion(MPI_Comm comm, const Options &opt, int pass);
 PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt);
 // A lower or side die whose shape of its own is read (ReadDieShapeOptions): its numbers' options prefix (lower_die_,
-// pass2_side_die_), its block's title in -help, the option whose word chooses the shape (-lower_die), the die in
-// messages ("the lower die"), and whether -help lists the block where the shape is not chosen (the first and second
-// passes').
+// pass2_side_die_), its block's title in -help, the option whose word chooses the shape (-lower_die), and whether
+// -help lists the block where the shape is not chosen (the first and second passes').
 struct DieOwnShape {
-  std::string prefix, title, word, what;
+  std::string prefix, title, word;
   bool list = false;
 };
 // Collective: the numbers of a die's shape of its own (a kind of the shape registry that reads options, chosen by its
-// word: v) into `shape`, read by the kind in its own block under the die's prefix (the paper's die its defaults); a
-// number given where the die is not that kind refused, naming the option and the word that chooses it
-// (die_shape_options.cpp).
-PetscErrorCode ReadDieShapeOptions(MPI_Comm comm, OptionReader &read, const DieOwnShape &die, DieChoice &shape);
-// Collective: every pass's lower and side dies' shapes of their own, their numbers refused by their kind's check
-// against the tube, one line naming the option (die_shape_options.cpp).
+// word: v) into `shape`, read by the kind in its own block under the die's prefix. A later pass's die (`first`: the
+// first pass's, which it takes where its word is not given) takes its numbers as the upper die's do: the first
+// pass's where that die is of the kind, else the paper's die; numbers alone give the pass the first pass's shape
+// with them. A number of a shape the die is not is kept in `shape.stray` for CheckDieShapes (die_shape_options.cpp).
+PetscErrorCode ReadDieShapeOptions(MPI_Comm comm, OptionReader &read, const DieOwnShape &die, const DieChoice *first,
+                                   DieChoice &shape);
+// The later passes' lower and side dies' numbers of their own (-pass<N>_lower_die_angle, ...; pass 2's listed by
+// -help), after the first pass's dies are read (die_shape_options.cpp).
+PetscErrorCode ReadPassOwnShapes(MPI_Comm comm, OptionReader &read, Options &opt);
+// Collective, in a press: every pass's lower and side dies' numbers of a shape the die is not refused (naming the word
+// that chooses it), and of its shape of its own refused by the kind's check against the tube, one line naming the
+// option (die_shape_options.cpp).
 PetscErrorCode CheckDieShapes(MPI_Comm comm, const Options &opt);
 // Inside a block (its PetscOptionsObject): a die's shape by the word of `option` (ShapeChoice: mirror, flat, none where
 // `none`, or a file; kept where the word is the shape's own), and the upper die's drawing by the file of `option`

@@ -32,7 +32,7 @@ struct ModelParams {
 };
 
 // The tool scenes' own parameters (squaring, flattening; docs/dies.md), read and checked by them
-// (scenes/tool_options.hpp): the model, the passes and the lower die's motion.
+// (scenes/tool_options.hpp): the model and the passes (each with its dies, their motions and its release).
 struct ToolSceneParams {
   ModelParams model; // the part modelled, its support
   // The passes: the first (-stroke, -stroke_path, -die_*, -lower_die*, -side_*, -unload), then each after the
@@ -184,7 +184,6 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
 {
   DieSet dies = FirstDies(opt);
   dies.upper.spec.ro = opt.tube_ro, dies.motion.spec.reach = opt.tube_ro; // (UpperDieShape, UpperDie)
-  dies.lower.spec.ro = dies.side.spec.ro = opt.tube_ro;                   // (a shape of its own drawn on the tube)
   if (pass == 0) return dies;
   const DieSet &given = LaterPass(opt, pass).dies;
   if (given.upper.kind == kVShape) // (its own V-die: the first pass's numbers and its own, ReadPassShapes)
@@ -195,7 +194,6 @@ inline DieSet DiesOfPass(const Options &opt, int pass)
   if (given.side.Given()) dies.side = given.side;
   dies.motion = given.motion, dies.motion.spec.reach = opt.tube_ro;
   dies.side_motion = given.side_motion, dies.offset = given.offset;
-  dies.lower.spec.ro = dies.side.spec.ro = opt.tube_ro; // (a shape of its own drawn on the tube)
   return dies;
 }
 // Pass `pass`'s lower die's word (-lower_die, -pass<N>_lower_die: the first pass's where not given).

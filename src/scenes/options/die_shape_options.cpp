@@ -32,12 +32,14 @@ PetscErrorCode ReadWordShape(MPI_Comm comm, OptionReader &read, const char *opti
 }
 } // namespace
 
-PetscErrorCode ReadDieShapeOptions(MPI_Comm comm, OptionReader &read, const DieOwnShape &die, DieChoice &shape)
+PetscErrorCode ReadDieShapeOptions(MPI_Comm comm, OptionReader &read, const DieOwnShape &die, const DieChoice *first,
+                                   DieChoice &shape)
 {
+  const DieChoice &as = shape.Given() || !first ? shape : *first; // (a later pass's not given: the first pass's)
   PetscFunctionBeginUser;
   for (const std::string &name : ShapeKinds()) {
     const ShapeKind *k = FindShapeKind(name);
-    const bool own = shape.Is(DieFrom::Shape) && shape.kind == name;
+    const bool own = as.Is(DieFrom::Shape) && as.kind == name;
     std::string given;
     for (const ShapeOption &o : k->options) {
       const std::string option = "-" + die.prefix + o.name;
@@ -46,16 +48,21 @@ PetscErrorCode ReadDieShapeOptions(MPI_Comm comm, OptionReader &read, const DieO
       if (set && given.empty()) given = option;
       read.Note(option.c_str(), (die.word + " " + name + ": " + o.help).c_str(), die.title.c_str());
     }
-    PetscCheck(own || given.empty(), comm, PETSC_ERR_USER_INPUT, "%s: a number of %s's own %s shape; give %s %s",
-               given.c_str(), die.what.c_str(), name.c_str(), die.word.c_str(), name.c_str());
-    if (k->options.empty() || !(own || die.list)) continue; // (-help lists a pass's first block of each kind)
-    ShapeSpec spec = own ? shape.spec : PaperVDie();
+    if (!own && !given.empty() && shape.stray.empty()) // (refused by CheckDieShapes, in a press)
+      shape.stray = given + ": a number of a " + name + " die of its own; give " + die.word + " " + name;
+    const bool read_own = own && (shape.Given() || !given.empty());
+    if (k->options.empty() || !(read_own || die.list)) continue; // (-help lists a pass's first block of each kind)
+    // (its numbers from the first pass's where that die is of this kind, as the upper die's; else the paper's die)
+    const bool from_first = first && first->Is(DieFrom::Shape) && first->kind == name;
+    ShapeSpec spec = from_first ? first->spec : own ? shape.spec : PaperVDie();
     PetscOptionsBegin(comm, die.prefix.c_str(), die.title.c_str(), "tubeform");
     OptionsBlock block(PetscOptionsObject);
     PetscCall(ReadShape(PetscOptionsObject, name, spec));
     block.Release();
     PetscOptionsEnd();
-    if (own) shape.spec = spec;
+    if (!read_own) continue;
+    if (!shape.Given()) shape = *first; // (its own numbers on the first pass's shape)
+    shape.spec = spec;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -63,9 +70,11 @@ PetscErrorCode ReadDieShapeOptions(MPI_Comm comm, OptionReader &read, const DieO
 PetscErrorCode CheckDieShapes(MPI_Comm comm, const Options &opt)
 {
   PetscFunctionBeginUser;
+  if (!PressesWithTools(opt)) PetscFunctionReturn(PETSC_SUCCESS); // (their names refused, or let go: -allow_unused)
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     const DieSet &dies = ToolsOf(opt).passes[pass].dies;
     for (const DieChoice *shape : {&dies.lower, &dies.side}) {
+      PetscCheck(shape->stray.empty(), comm, PETSC_ERR_USER_INPUT, "%s", shape->stray.c_str());
       if (!shape->Is(DieFrom::Shape)) continue;
       ShapeSpec spec = shape->spec;
       spec.ro = opt.tube_ro;
@@ -127,17 +136,7 @@ PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt)
   const ShapeKind *v = FindShapeKind(kVShape);
   PetscFunctionBeginUser;
   for (int pass = 1; pass < kMaxPasses; ++pass) {
-    DieSet &dies = ToolsOf(opt).passes[pass].dies;
-    for (const bool lower : {true, false}) { // (its lower and side dies' shapes of their own, where chosen)
-      const char *what = lower ? "lower_die" : "side_die";
-      const std::string prefix = Formatted("pass%d_%s_", pass + 1, what);
-      const DieOwnShape own{
-        prefix, Formatted("tubeform: pass %d %s shape of its own", pass + 1, lower ? "lower die" : "side die"),
-        PassOptionName(pass, what), "the " + PassOrdinal(pass) + " pass's " + (lower ? "lower die" : "side dies"),
-        opt.help && pass == 1};
-      PetscCall(ReadDieShapeOptions(comm, read, own, lower ? dies.lower : dies.side));
-    }
-    DieShape &die = dies.upper;
+    DieShape &die = ToolsOf(opt).passes[pass].dies.upper;
     const std::string prefix = Formatted("pass%d_die_", pass + 1);
     const std::string title = Formatted("tubeform: pass %d upper die shape", pass + 1);
     bool given = false;
@@ -160,6 +159,25 @@ PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode ReadPassOwnShapes(MPI_Comm comm, OptionReader &read, Options &opt)
+{
+  PetscFunctionBeginUser;
+  for (int pass = 1; pass < kMaxPasses; ++pass) {
+    DieSet &dies = ToolsOf(opt).passes[pass].dies;
+    for (const bool lower : {true, false}) {
+      const char *what = lower ? "lower_die" : "side_die";
+      const DieOwnShape own{
+        Formatted("pass%d_%s_", pass + 1, what),
+        Formatted("tubeform: pass %d %s shape of its own", pass + 1, lower ? "lower die" : "side die"),
+        PassOptionName(pass, what), opt.help && pass == 1};
+      const DieSet &first = FirstDies(opt);
+      PetscCall(
+        ReadDieShapeOptions(comm, read, own, lower ? &first.lower : &first.side, lower ? dies.lower : dies.side));
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
 {
   PetscFunctionBeginUser;
@@ -170,8 +188,7 @@ PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt
                           "upper die, mirrored below the tube",
                           "tubeform: lower die shape", false, lower));
   PetscCall(ReadDieShapeOptions(
-    comm, read, {"lower_die_", "tubeform: lower die shape of its own", "-lower_die", "the lower die", opt.help},
-    lower));
+    comm, read, {"lower_die_", "tubeform: lower die shape of its own", "-lower_die", opt.help}, nullptr, lower));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -190,9 +207,8 @@ PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
                           true, dies.side)); // (as a later pass's -pass<N>_side_die)
   block.Release();
   PetscOptionsEnd();
-  PetscCall(ReadDieShapeOptions(
-    comm, read, {"side_die_", "tubeform: side die shape of its own", "-side_die", "the side dies", opt.help},
-    dies.side));
+  PetscCall(ReadDieShapeOptions(comm, read, {"side_die_", "tubeform: side die shape of its own", "-side_die", opt.help},
+                                nullptr, dies.side));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

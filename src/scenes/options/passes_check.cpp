@@ -71,9 +71,12 @@ PetscErrorCode CheckPassStrokePath(MPI_Comm comm, const Options &opt, int pass)
   PetscCheck(at > 0, comm, PETSC_ERR_USER_INPUT, "%s: the last stroke is the pass's final one and must be positive",
              name.c_str());
   PetscCheck(p.corner_radius <= 0, comm, PETSC_ERR_USER_INPUT, "%s: not with -stroke_corner_radius", name.c_str());
+  // (a force named by its option, which its old spelling gives alone; another motion by its word)
+  const std::string motion = MotionStrokeUnknown(p.dies.motion.kind) ? PassOptionName(pass, "die_force")
+                                                                     : PassOptionName(pass, "die_motion") + " " +
+                                                                         FindMotionKind(p.dies.motion.kind)->upper_word;
   PetscCheck(DieMoves(p.dies, kStrokeMotion), comm, PETSC_ERR_USER_INPUT,
-             "%s: the upper die by the pass's stroke: not with %s %s", name.c_str(),
-             PassOptionName(pass, "die_motion").c_str(), FindMotionKind(p.dies.motion.kind)->upper_word);
+             "%s: the upper die by the pass's stroke: not with %s", name.c_str(), motion.c_str());
   PetscCheck(!LowerDieMoves(opt, pass, LowerDieMove::Own), comm, PETSC_ERR_USER_INPUT,
              "%s %s: the lower die follows its motion as the stroke rises: not with %s",
              PassOptionName(pass, "lower_die_motion").c_str(), LowerDieAsGiven(opt, pass).word.c_str(), name.c_str());

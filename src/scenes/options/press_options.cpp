@@ -123,8 +123,9 @@ PetscErrorCode ReadToolSceneOptions(MPI_Comm comm, OptionReader &read, Options &
   PetscCall(ReadUpperDieMotion(comm, read, opt));
   PetscCall(ReadPassShapes(comm, read, opt)); // (die_shape_options.cpp; after the first pass's, their defaults)
   PetscCall(ReadSideDieShape(comm, read, opt));
-  PetscCall(ReadSideMotions(comm, read, opt)); // (die_motion_options.cpp)
-  PetscCall(ReadPassMotions(comm, read, opt)); // (die_motion_options.cpp)
+  PetscCall(ReadSideMotions(comm, read, opt));   // (die_motion_options.cpp)
+  PetscCall(ReadPassOwnShapes(comm, read, opt)); // (die_shape_options.cpp; after the first pass's, their defaults)
+  PetscCall(ReadPassMotions(comm, read, opt));   // (die_motion_options.cpp)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
