@@ -131,6 +131,8 @@ def bad_input_cases(src, out):
         (["-scene", "squaring", "-pass2_stroke_path", "2,2"], "-pass2_stroke_path: 2. after 2."),
         (["-scene", "squaring", "-pass2_stroke_path", "1,0"],  # (once a silent single pass)
          "-pass2_stroke_path: the last stroke is the pass's final one and must be positive"),
+        (["-scene", "squaring", "-stroke_path", "2", "-lower_die_motion", "path", "-lower_die_path", "1,1"],
+         "-lower_die_motion path: the lower die follows its motion as the stroke rises: not with -stroke_path"),
         (["-scene", "squaring", "-pass2_stroke_path", "2", "-pass2_lower_die_motion", "path", "-pass2_lower_die_path",
           "1,1"], "-pass2_lower_die_motion path: the lower die follows its motion as the stroke rises: not with "
                   "-pass2_stroke_path"),

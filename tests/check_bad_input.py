@@ -80,7 +80,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
          ["-scene", "squaring", "-die_angle", "abc"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 208 and len(selected) == 10, f"{len(cases)} cases on 1 rank (208), {len(selected)} on 2 (10)")
+k.check(len(cases) == 209 and len(selected) == 10, f"{len(cases)} cases on 1 rank (209), {len(selected)} on 2 (10)")
 
 
 def attempt(np_, extra):

@@ -70,6 +70,16 @@ def v_profile(angle, r_apex):
     return f"arc 0 {cy!r} {r_apex!r} 90 {angle / 2!r}\nline {x0!r} {y0!r} {1.3 * RO!r} {h - 1.3 * RO * (qs / qc)!r}\n"
 
 
+def against_profile(name, base, die, angle, r_apex):
+    """The die option `die` (-lower_die, -side_die, -pass2_lower_die) given v with these numbers, and given the profile
+    of that V written here, each pressed after `base`: both runs and the columns that differ between them."""
+    with open(out(f"{name}.profile"), "w") as f:
+        f.write(v_profile(angle, r_apex))
+    own = press(f"{name}.h5", base + [die, "v", f"{die}_angle", angle, f"{die}_r_apex", r_apex])
+    drawn = press(f"{name}_file.h5", base + [die, out(f"{name}.profile")])
+    return own, drawn, same(own, drawn)
+
+
 # A.
 mirror = press("mirror.h5", LOADED + ["-lower_die", "mirror", "-model", "half"])
 v90 = press("v90.h5", LOADED + ["-lower_die", "v"])
@@ -78,11 +88,7 @@ k.check(not d, f"A: -lower_die v (the paper's numbers) is -lower_die mirror -mod
         f"({len(mirror['load'])} rows; differing: {d[:5]})")
 
 # B.
-with open(out("v80.profile"), "w") as f:
-    f.write(v_profile(80, 2.0))
-v80 = press("v80.h5", LOADED + ["-lower_die", "v", "-lower_die_angle", 80, "-lower_die_r_apex", 2])
-drawn = press("v80_file.h5", LOADED + ["-lower_die", out("v80.profile")])
-d = same(v80, drawn)
+v80, drawn, d = against_profile("v80", LOADED, "-lower_die", 80, 2.0)
 k.check(not d, f"B: -lower_die v -lower_die_angle 80 -lower_die_r_apex 2 is that V-die drawn as a profile here, bit "
         f"for bit (differing: {d[:5]}; end loads {v80['load'][-1]:.6g}, {drawn['load'][-1]:.6g} N/mm)")
 # (lower_fy: the force the tube puts on the lower die, the half model's, downwards; the punch load is twice the upper
@@ -99,11 +105,7 @@ d = same(smirror, sv)
 k.check(not d and np.max(smirror["side_load"]) > 0,
         f"C: -side_die v (the paper's numbers) is -side_die mirror bit for bit (differing: {d[:5]}; side load up to "
         f"{np.max(smirror['side_load']):.4g} N/mm)")
-with open(out("v120.profile"), "w") as f:
-    f.write(v_profile(120, 4.0))
-sv120 = press("side_v120.h5", SIDE + ["-side_die", "v", "-side_die_angle", 120, "-side_die_r_apex", 4])
-sfile = press("side_v120_file.h5", SIDE + ["-side_die", out("v120.profile")])
-d = same(sv120, sfile)
+sv120, _, d = against_profile("side_v120", SIDE, "-side_die", 120, 4.0)
 k.check(not d and sv120["side_load"].tobytes() != sv["side_load"].tobytes(),
         f"C: -side_die v -side_die_angle 120 -side_die_r_apex 4 is that V-die drawn as a profile here, bit for bit "
         f"(differing: {d[:5]}), and not the paper's")
@@ -116,11 +118,8 @@ again = press("pass_again.h5", PASS2 + first80 + ["-pass2_lower_die", "v"])
 d = same(taken, again)
 k.check(not d, f"D: a second pass takes the first pass's lower V with its numbers, as -pass2_lower_die v does "
         f"(differing: {d[:5]})")
-p_v80 = press("pass_v80.h5", PASS2 + ["-pass2_lower_die", "v", "-pass2_lower_die_angle", 80,
-                                      "-pass2_lower_die_r_apex", 2])
-p_file = press("pass_v80_file.h5", PASS2 + ["-pass2_lower_die", out("v80.profile")])
+p_v80, _, d = against_profile("pass_v80", PASS2, "-pass2_lower_die", 80, 2.0)
 p_mirror = press("pass_mirror.h5", PASS2)
-d = same(p_v80, p_file)
 k.check(not d and p_v80["load"].tobytes() != p_mirror["load"].tobytes(),
         f"D: -pass2_lower_die v -pass2_lower_die_angle 80 -pass2_lower_die_r_apex 2 is that V-die drawn as a profile "
         f"for the second pass, bit for bit (differing: {d[:5]}), and not the mirror")

@@ -2,6 +2,8 @@
 // its state for a checkpoint.
 #include "tubeform/scenes/press_scene.hpp"
 
+#include <initializer_list>
+
 #include "tubeform/scenes/press_shape.hpp"
 
 namespace tf {
@@ -134,7 +136,7 @@ PetscErrorCode PressScene::Persist(Model &m, Archive &ar)
   reversed_.total[0] = pairs[0], reversed_.total[1] = pairs[1];
   side_ends_[0] = (long)pairs[2], side_ends_[1] = (long)pairs[3];
   reversed_.moment = pairs[4];
-  for (Support *s : {static_cast<Support *>(&pins_), static_cast<Support *>(&hold_), static_cast<Support *>(&pin_)})
+  for (Support *s : std::initializer_list<Support *>{&pins_, &hold_, &pin_})
     PetscCall(s->Persist(m, ar, Press())); // (scenes/support.hpp)
   if (!unloading_) PetscFunctionReturn(PETSC_SUCCESS);
   // The reversed contact forces: contributions of the owned nodes.

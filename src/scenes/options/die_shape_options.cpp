@@ -30,6 +30,37 @@ PetscErrorCode ReadWordShape(MPI_Comm comm, OptionReader &read, const char *opti
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+// The first of the numbers of the shape kind `k` given under `prefix` into `given` ("" none), each noted (for -help's
+// hints and the check of unknown options) with the help `help_of(option)` in the block titled `title`.
+template <class Help>
+PetscErrorCode NoteShapeNumbers(OptionReader &read, const std::string &prefix, const std::string &title,
+                                const ShapeKind &k, Help help_of, std::string &given)
+{
+  PetscFunctionBeginUser;
+  given.clear();
+  for (const ShapeOption &o : k.options) {
+    const std::string option = "-" + prefix + o.name;
+    PetscBool set;
+    PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), ("-" + o.name).c_str(), &set));
+    if (set && given.empty()) given = option;
+    read.Note(option.c_str(), help_of(o).c_str(), title.c_str());
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The numbers of the shape kind `kind` over `spec`, read by the kind in their own block under `prefix` titled `title`.
+PetscErrorCode ReadShapeBlock(MPI_Comm comm, const std::string &prefix, const std::string &title,
+                              const std::string &kind, ShapeSpec &spec)
+{
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "tubeform");
+  OptionsBlock block(PetscOptionsObject);
+  PetscCall(ReadShape(PetscOptionsObject, kind, spec));
+  block.Release();
+  PetscOptionsEnd();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 } // namespace
 
 PetscErrorCode ReadDieShapeOptions(MPI_Comm comm, OptionReader &read, const DieOwnShape &die, const DieChoice *first,
@@ -41,13 +72,9 @@ PetscErrorCode ReadDieShapeOptions(MPI_Comm comm, OptionReader &read, const DieO
     const ShapeKind *k = FindShapeKind(name);
     const bool own = as.Is(DieFrom::Shape) && as.kind == name;
     std::string given;
-    for (const ShapeOption &o : k->options) {
-      const std::string option = "-" + die.prefix + o.name;
-      PetscBool set;
-      PetscCall(PetscOptionsHasName(nullptr, die.prefix.c_str(), ("-" + o.name).c_str(), &set));
-      if (set && given.empty()) given = option;
-      read.Note(option.c_str(), (die.word + " " + name + ": " + o.help).c_str(), die.title.c_str());
-    }
+    PetscCall(NoteShapeNumbers(
+      read, die.prefix, die.title, *k, [&](const ShapeOption &o) { return die.word + " " + name + ": " + o.help; },
+      given));
     if (!own && !given.empty() && shape.stray.empty()) // (refused by CheckDieShapes, in a press)
       shape.stray = given + ": a number of a " + name + " die of its own; give " + die.word + " " + name;
     const bool read_own = own && (shape.Given() || !given.empty());
@@ -55,11 +82,7 @@ PetscErrorCode ReadDieShapeOptions(MPI_Comm comm, OptionReader &read, const DieO
     // (its numbers from the first pass's where that die is of this kind, as the upper die's; else the paper's die)
     const bool from_first = first && first->Is(DieFrom::Shape) && first->kind == name;
     ShapeSpec spec = from_first ? first->spec : own ? shape.spec : PaperVDie();
-    PetscOptionsBegin(comm, die.prefix.c_str(), die.title.c_str(), "tubeform");
-    OptionsBlock block(PetscOptionsObject);
-    PetscCall(ReadShape(PetscOptionsObject, name, spec));
-    block.Release();
-    PetscOptionsEnd();
+    PetscCall(ReadShapeBlock(comm, die.prefix, die.title, name, spec));
     if (!read_own) continue;
     if (!shape.Given()) shape = *first; // (its own numbers on the first pass's shape)
     shape.spec = spec;
@@ -139,22 +162,14 @@ PetscErrorCode ReadPassShapes(MPI_Comm comm, OptionReader &read, Options &opt)
     DieShape &die = ToolsOf(opt).passes[pass].dies.upper;
     const std::string prefix = Formatted("pass%d_die_", pass + 1);
     const std::string title = Formatted("tubeform: pass %d upper die shape", pass + 1);
-    bool given = false;
-    for (const ShapeOption &o : v->options) {
-      PetscBool set;
-      PetscCall(PetscOptionsHasName(nullptr, prefix.c_str(), ("-" + o.name).c_str(), &set));
-      given = given || set;
-      read.Note(("-" + prefix + o.name).c_str(), ("squaring: the pass's V-die, as -die_" + o.name).c_str(),
-                title.c_str());
-    }
-    if (!given && pass > 1) continue;           // (pass 2's listed by -help always; a later one's where given)
+    std::string given;
+    PetscCall(NoteShapeNumbers(
+      read, prefix, title, *v, [](const ShapeOption &o) { return "squaring: the pass's V-die, as -die_" + o.name; },
+      given));
+    if (given.empty() && pass > 1) continue;    // (pass 2's listed by -help always; a later one's where given)
     ShapeSpec spec = FirstDies(opt).upper.spec; // (the first pass's numbers its defaults)
-    PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "tubeform");
-    OptionsBlock block(PetscOptionsObject);
-    PetscCall(ReadShape(PetscOptionsObject, kVShape, spec));
-    block.Release();
-    PetscOptionsEnd();
-    if (given && die.kind.empty()) die.kind = kVShape, die.spec = spec; // (a -pass<N>_die_profile: the file's)
+    PetscCall(ReadShapeBlock(comm, prefix, title, kVShape, spec));
+    if (!given.empty() && die.kind.empty()) die.kind = kVShape, die.spec = spec; // (a -pass<N>_die_profile: the file's)
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -197,16 +212,12 @@ PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
   DieSet &dies = ToolsOf(opt).passes[0].dies;
 
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, nullptr, "tubeform: side die shape", "tubeform");
-  OptionsBlock block(PetscOptionsObject);
-  PetscCall(ReadDieChoice(PetscOptionsObject, read, "-side_die",
+  PetscCall(ReadWordShape(comm, read, "-side_die",
                           "tool scenes: side dies pressing towards the tube's centre as -side_motion says (by default "
                           "by the stroke U): none, mirror (the upper die turned to the side), flat (a plate), v (a "
                           "V-die of its own: -side_die_angle, ...), or a profile file drawn as an upper die "
                           "(docs/dies.md)",
-                          true, dies.side)); // (as a later pass's -pass<N>_side_die)
-  block.Release();
-  PetscOptionsEnd();
+                          "tubeform: side die shape", true, dies.side)); // (as a later pass's -pass<N>_side_die)
   PetscCall(ReadDieShapeOptions(comm, read, {"side_die_", "tubeform: side die shape of its own", "-side_die", opt.help},
                                 nullptr, dies.side));
   PetscFunctionReturn(PETSC_SUCCESS);

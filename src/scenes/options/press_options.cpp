@@ -50,12 +50,11 @@ PetscErrorCode CheckLowerDieMotion(MPI_Comm comm, const Options &opt)
 {
   const char *word = FirstPass(opt).lower_motion->word.c_str();
   PetscFunctionBeginUser;
-  if (LowerDieMoves(opt, 0, LowerDieMove::Own))
-    PetscCheck(StrokePathOf(opt, 0).empty() && ReleaseOfPass(opt, 0) != Unload::Withdraw &&
-                 FirstPass(opt).corner_radius <= 0,
-               comm, PETSC_ERR_USER_INPUT,
-               "-lower_die_motion %s: the lower die follows its motion as the stroke rises: not with -stroke_path, "
-               "-unload withdraw or -stroke_corner_radius",
+  if (LowerDieMoves(opt, 0, LowerDieMove::Own)) // (nor a path of strokes: CheckPassStrokePath, every pass's)
+    PetscCheck(ReleaseOfPass(opt, 0) != Unload::Withdraw && FirstPass(opt).corner_radius <= 0, comm,
+               PETSC_ERR_USER_INPUT,
+               "-lower_die_motion %s: the lower die follows its motion as the stroke rises: not with -unload withdraw "
+               "or -stroke_corner_radius",
                word);
   // (a later pass's withdrawn: CheckRelease refuses it, its model not the quarter)
   for (int pass = 1; pass < PassCount(opt); ++pass)
