@@ -10,7 +10,8 @@ scenes read (naming them: scenes/registry.cpp), values that are not
 numbers and material constants not in MPa (E against the law's initial
 yield stress, however the material is given) are such errors too
 (-allow_unused lets a run go on with an unknown option or one only other scenes read:
-checked three times, with the warning); options PETSc reads only after the check, the E / sigma_y0
+checked four times, with the warning, once a die's motion option in a scene without
+tools); options PETSc reads only after the check, the E / sigma_y0
 bounds themselves and the docs' solver options pass, with PETSc's own
 -options_left ("There are no unused options.") as the reference that each
 was read. Also the stall watch
@@ -74,13 +75,15 @@ with open(out("incomplete.opts"), "w") as fh:
 cores, why_none = allow_core_dumps()
 print(f"       core dumps looked for in {cores[0]} ({cores[1]}*)" if cores else
       f"       core dumps cannot appear on this machine ({why_none}): the crash check stands for them")
-# On 2 ranks one of each kind: option value, option choice, mesh file, output path, material file, a tool's option.
+# On 2 ranks one of each kind: option value, option choice, mesh file, output path, material file, a tool's option, a
+# die's option of another motion word's kind (refused by the tool scenes' check, not while read).
 kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/options/pressure.opts"],
          ["-output", out("keep.csv/out.h5")], ["-material", out("stray.opts")], ["-wall_thickness", "1.65"],
          ["-mat_mumps_icntl_14", "50"], ["-material", out("sy_pa.opts"), "-material_law", "swift"], ["-friction_mu", "0.1"],
-         ["-scene", "squaring", "-die_angle", "abc"])
+         ["-scene", "squaring", "-die_angle", "abc"],
+         ["-scene", "squaring", "-lower_die_motion", "mirror", "-lower_die_path", "1,1"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 209 and len(selected) == 10, f"{len(cases)} cases on 1 rank (209), {len(selected)} on 2 (10)")
+k.check(len(cases) == 213 and len(selected) == 11, f"{len(cases)} cases on 1 rank (213), {len(selected)} on 2 (11)")
 
 
 def attempt(np_, extra):
@@ -152,6 +155,13 @@ p = run(tf, mpirun, 1, base + ["-output", out("allow3.h5"), "-allow_unused", "-t
 warned = [l for l in p.stdout.splitlines() if l.startswith("tubeform: warning: -target_load: read by the squaring")]
 k.check(p.returncode == 0 and os.path.exists("allow3.h5") and len(warned) == 1,
         f"-allow_unused -target_load 0.01 (a pressure run): the run goes on (exit {p.returncode}), warning: {warned}")
+# A die's option of another motion word's kind in a scene without tools: an option only other scenes read, not the
+# dies' refusal (that is a press's: CheckMotionStrays).
+p = run(tf, mpirun, 1, other + ["-scene", "column", "-output", out("allow4.h5"), "-allow_unused", "-lower_die_path",
+                                "1,1"], check=False, timeout=60)
+warned = [l for l in p.stdout.splitlines() if l.startswith("tubeform: warning: -lower_die_path: read by the squaring")]
+k.check(p.returncode == 0 and os.path.exists("allow4.h5") and len(warned) == 1 and "tubeform: error" not in p.stderr + p.stdout,
+        f"-allow_unused -lower_die_path 1,1 (a column run): the run goes on (exit {p.returncode}), warning: {warned}")
 
 # Options that are read must pass: the E / sigma_y0 bounds themselves (python/tubeform_py/extremes.py's two ends); the
 # options PETSc reads only after the check (OptionsReadLater in src/io/options_left.cpp: at a solve, when the

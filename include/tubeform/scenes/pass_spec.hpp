@@ -51,6 +51,7 @@ constexpr int kMaxPasses = 9;
 struct DieMotion {
   std::string kind = kStrokeMotion; // stroke: down by the stroke U (2 U over a fixed lower die)
   MotionSpec spec;                  // path: its points, turns, pivot; force: its punch load (N/mm)
+  std::string stray; // an option of another of its words' kinds, given: its refusal (CheckMotionStrays), "" none
 
   // The die's stroke goes along a path of its own (its kind's MotionKind::path: path), which gives the pass's
   // stroke path and its end.
@@ -80,6 +81,7 @@ struct LowerDieSpec {
   LowerDieMove move = LowerDieMove::Mirror;
   std::string kind = kStrokeMotion;
   MotionSpec spec;
+  std::string stray; // an option of another of its words' kinds, given: its refusal (CheckMotionStrays), "" none
 };
 
 // The paper's die: 90 degrees between the flanks, an apex fillet of 3 mm, no parting face.

@@ -45,7 +45,8 @@ PetscErrorCode CheckSideDies(MPI_Comm comm, const Options &opt, int pass, const 
 PetscErrorCode ReadToolOptions(PetscOptionItems *PetscOptionsObject, OptionReader &read, Options &opt);
 // The lower die's motion, its own block under the options prefix lower_die_ (-lower_die_motion: a word naming a
 // kind of tool/motion.hpp; that kind's options, -lower_die_*, read by the kind): ToolsOf(opt).lower_motion
-// (LowerDieSpec). An option of another of its words' kinds given is refused, naming it.
+// (LowerDieSpec). An option of another of its words' kinds given is kept in its stray, refused naming it by
+// CheckMotionStrays in a press (motion_checks.hpp).
 PetscErrorCode ReadLowerDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
 // A later pass's lower die's motion, each its own block under the prefix pass<N>_lower_die_ (-pass<N>_lower_die_motion:
 // any word of -lower_die_motion; its kind's options, -pass<N>_lower_die_path, ..., read by the kind, its strokes from
@@ -56,17 +57,18 @@ PetscErrorCode ReadPassLowerMotions(MPI_Comm comm, OptionReader &read, Options &
 // of tool/motion.hpp; that kind's options, -die_path, -die_path_turn, -die_pivot, -die_force, read by the kind):
 // the first pass's dies' motion (ToolsOf(opt).passes[0].dies). Without -die_motion the old spellings choose: -die_path
 // (or its turns or pivot) path, -die_force other than 0 force (-die_force 0 is allowed with any word). An option of
-// another word's kind is refused, naming it.
+// another word's kind is kept in its stray, refused naming it by CheckMotionStrays in a press (motion_checks.hpp).
 PetscErrorCode ReadUpperDieMotion(MPI_Comm comm, OptionReader &read, Options &opt);
 // A later pass's upper die's motion, each its own block under the prefix pass<N>_die_ (as the first pass's: the stroke,
 // or a path of its own, -pass<N>_die_path, _die_path_turn, _die_pivot, read by the path kind; in place of its
-// -pass<N>_stroke, which it sets to where the path ends). Pass 2's listed by -help; a later one's where given.
+// -pass<N>_stroke, which it sets to where the path ends). Pass 2's listed by -help; a later one's where given. An
+// option of another word's kind is kept in its stray (CheckMotionStrays), as the first pass's.
 PetscErrorCode ReadPassMotions(MPI_Comm comm, OptionReader &read, Options &opt);
 // Each pass's side dies' motion, its own block under the prefix side_ (the first pass's) or pass<N>_side_:
 // -side_motion stroke (by the stroke U), fixed, path (-side_path), pulse (-side_pulse_*) or force (-side_force), each
 // a kind of tool/motion.hpp offering the side dies a word (MotionKind::side_word), its options read by the kind;
 // without it -side_path means path, -side_force other than 0 force. A later pass's where one of its options is given
-// (default: by the stroke).
+// (default: by the stroke). An option of another word's kind is kept in its stray (CheckMotionStrays).
 PetscErrorCode ReadSideMotions(MPI_Comm comm, OptionReader &read, Options &opt);
 // (both in die_motion_options.cpp)
 // The upper die's shape, its own block under the options prefix die_: the V-die, its options -die_angle, -die_r_apex,

@@ -1,9 +1,11 @@
 // The dies' motions, each die's in its own options block under its prefix (include/tubeform/scenes/tool_options.hpp):
 // -<prefix>motion names a kind of the motion registry (tool/motion.hpp) by one of the die's words, and the kind
 // reads its own options, -<prefix>*, refusing what it cannot move by; an option of another of the die's words'
-// kinds given is refused, naming it. The lower die: -lower_die_motion (mirror, fixed, path: the schedule, and the
-// kinds registered after the built-in ones); the upper die: -die_motion (stroke, path, force: each its kind's own
-// name). Combinations with the scene's other options are each kind's check (scenes/motion_checks.hpp) and the scene's.
+// kinds given is kept as the die's stray (its refusal, naming it: CheckMotionStrays, in a press; a scene without
+// tools leaves it to the check of options only other scenes read, -allow_unused lets it go). The lower die:
+// -lower_die_motion (mirror, fixed, path: the schedule, and the kinds registered after the built-in ones); the upper
+// die: -die_motion (stroke, path, force: each its kind's own name). Combinations with the scene's other options are
+// each kind's check (scenes/motion_checks.hpp) and the scene's.
 #include <algorithm>
 #include <iterator>
 
@@ -19,20 +21,23 @@ struct MotionWord {
   std::string word, kind;
 };
 
-// -<prefix><name> of the words' kinds other than `chosen`'s, given: one line naming it, the word it belongs to and
-// the word chosen. `spared`: an option the old spellings give with the chosen word (none: "").
-PetscErrorCode RefuseOthers(MPI_Comm comm, const char *prefix, const std::vector<MotionWord> &words,
-                            const MotionWord &chosen, const std::string &spared = "")
+// The first -<prefix><name> of the words' kinds other than `chosen`'s given, as its refusal into `stray` ("" none):
+// one line naming it, the word it belongs to and the word chosen (refused by CheckMotionStrays, in a press only).
+// `spared`: an option the old spellings give with the chosen word (none: "").
+PetscErrorCode StrayOption(const char *prefix, const std::vector<MotionWord> &words, const MotionWord &chosen,
+                           const std::string &spared, std::string &stray)
 {
   PetscFunctionBeginUser;
+  stray.clear();
   const std::vector<std::string> mine = FindMotionKind(chosen.kind)->options;
   for (const MotionWord &w : words)
     for (const std::string &name : FindMotionKind(w.kind)->options) {
       PetscBool given;
       PetscCall(PetscOptionsHasName(nullptr, prefix, ("-" + name).c_str(), &given));
       const bool other = std::find(mine.begin(), mine.end(), name) == mine.end() && name != spared;
-      PetscCheck(!given || !other, comm, PETSC_ERR_USER_INPUT, "-%s%s: an option of -%smotion %s, not of -%smotion %s",
-                 prefix, name.c_str(), prefix, w.word.c_str(), prefix, chosen.word.c_str());
+      if (given && other && stray.empty())
+        stray = Formatted("-%s%s: an option of -%smotion %s, not of -%smotion %s", prefix, name.c_str(), prefix,
+                          w.word.c_str(), prefix, chosen.word.c_str());
     }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -119,8 +124,8 @@ struct MotionBlock {
 
 // A die's motion read in its own block: -<prefix>motion, one of the block's words, or an old spelling
 // (-<prefix>path, its turns or pivot: path; -<prefix>force other than 0: force); that kind's options read by the kind
-// (all the words' under `help`, refusing nothing), an option of another word's kind refused, naming it.
-// die.spec.tool names the die in the kinds' refusals.
+// (all the words' under `help`, refusing nothing), an option of another word's kind kept in die.stray, naming it
+// (refused by CheckMotionStrays, in a press only). die.spec.tool names the die in the kinds' refusals.
 PetscErrorCode ReadWordMotion(MPI_Comm comm, OptionReader &read, const MotionBlock &block, bool help, DieMotion &die)
 {
   const std::vector<MotionWord> &words = block.words;
@@ -149,7 +154,7 @@ PetscErrorCode ReadWordMotion(MPI_Comm comm, OptionReader &read, const MotionBlo
     PetscCall(ReadMotion(PetscOptionsObject, words[choice].kind, die.spec));
   end.Release();
   PetscOptionsEnd();
-  if (!help) PetscCall(RefuseOthers(comm, prefix.c_str(), words, words[choice], zero_force ? kForceMotion : ""));
+  if (!help) PetscCall(StrayOption(prefix.c_str(), words, words[choice], zero_force ? kForceMotion : "", die.stray));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -162,7 +167,7 @@ PetscErrorCode ReadLowerMotion(MPI_Comm comm, OptionReader &read, const MotionBl
   motion.kind = die.kind, motion.spec = die.spec;
   PetscFunctionBeginUser;
   PetscCall(ReadWordMotion(comm, read, block, help, motion));
-  die.kind = motion.kind, die.spec = motion.spec;
+  die.kind = motion.kind, die.spec = motion.spec, die.stray = motion.stray;
   for (const MotionWord &w : block.words)
     if (w.kind == die.kind) die.word = w.word;
   die.move = LowerDieMoveOf(die.word);

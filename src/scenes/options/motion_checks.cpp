@@ -1,5 +1,6 @@
-// Each pass's press as its upper die's motion kind reads it, and the kind's refusal (scenes/motion_checks.hpp). A new
-// motion that refuses some presses says so in its own file (src/tool/motion_*.cpp); nothing here names a kind.
+// Each pass's press as its upper die's motion kind reads it, and the kind's refusal (scenes/motion_checks.hpp); the
+// dies' options of another motion word's kind, refused in a press. A new motion that refuses some presses says so in
+// its own file (src/tool/motion_*.cpp); nothing here names a kind.
 #include "tubeform/scenes/motion_checks.hpp"
 
 namespace tf {
@@ -28,6 +29,21 @@ PetscErrorCode CheckUpperMotion(MPI_Comm comm, const Options &opt, int pass)
   const std::string why = CheckMotionInPress(motion.kind, motion.spec, PressOfPass(opt, pass));
   PetscFunctionBeginUser;
   PetscCheck(why.empty(), comm, PETSC_ERR_USER_INPUT, "%s", why.c_str());
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode CheckMotionStrays(MPI_Comm comm, const Options &opt)
+{
+  const std::vector<PassSpec> &passes = ToolsOf(opt).passes;
+  std::vector<const std::string *> strays; // (in the order the blocks are read: ReadToolSceneOptions)
+  PetscFunctionBeginUser;
+  if (!PressesWithTools(opt)) PetscFunctionReturn(PETSC_SUCCESS); // (their names refused, or let go: -allow_unused)
+  for (const PassSpec &p : passes)
+    if (p.lower_motion) strays.push_back(&p.lower_motion->stray);
+  strays.push_back(&passes.front().dies.motion.stray);
+  for (const PassSpec &p : passes) strays.push_back(&p.dies.side_motion.stray);
+  for (size_t pass = 1; pass < passes.size(); ++pass) strays.push_back(&passes[pass].dies.motion.stray);
+  for (const std::string *stray : strays) PetscCheck(stray->empty(), comm, PETSC_ERR_USER_INPUT, "%s", stray->c_str());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

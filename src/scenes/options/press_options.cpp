@@ -1,8 +1,8 @@
 // The tool scenes' options as one (include/tubeform/scenes/tool_options.hpp): read in their blocks of -help (the
-// model and the later passes, then each die's shape and motion under its own prefix) and checked in turn: which dies,
-// forces and side dies go together, a -die_path's stroke, the lower die's own motion, the passes' turns, the model
-// and the release, the V-die's numbers. Read and checked for every scene, so that a tool scene's option given to a
-// scene without tools is refused by name.
+// model and the later passes, then each die's shape and motion under its own prefix) and checked in turn: a die's
+// option of another motion word's kind, which dies, forces and side dies go together, a -die_path's stroke, the lower
+// die's own motion, the passes' turns, the model and the release, the V-die's numbers. Read and checked for every
+// scene, so that a tool scene's option given to a scene without tools is refused by name.
 #include "tubeform/io/loading_options.hpp"
 #include "tubeform/scenes/motion_checks.hpp"
 #include "tubeform/scenes/tool_options.hpp"
@@ -131,6 +131,7 @@ PetscErrorCode ReadToolSceneOptions(MPI_Comm comm, OptionReader &read, Options &
 PetscErrorCode CheckToolSceneOptions(MPI_Comm comm, Options &opt)
 {
   PetscFunctionBeginUser;
+  PetscCall(CheckMotionStrays(comm, opt)); // (first, as when read: an option of another motion word's kind)
   PetscCall(CheckDies(comm, opt));
   if (FirstDies(opt).motion.OwnPath()) SetDiePathStroke(opt);
   PetscCall(CheckLowerDieMotion(comm, opt));
