@@ -3,8 +3,8 @@
 sharply (docs/notes/estimate-companions.md, "A wall refined at the run's cells around"). For each CalculiX case and
 preset, beside the run and the shipped companions M and S (results/estimate_ccx/) and the phase companions P+k
 (results/estimate_same_level/): T2, twice the run's cells through the wall at its cells around; Th, half of them
-(at least 2) at its cells around; Q, three quarters of the cells both ways, and QS, Q at twice the increment limits
-(a companion nearer the run than M). The run's element and friction regularization are kept. Candidates (load
+(at least 2) at its cells around; A, half the cells around at the run's cells through; Q, three quarters of the
+cells both ways, and QS, Q at twice the increment limits (a companion nearer the run than M). The run's element and friction regularization are kept. Candidates (load
 relative, C/t absolute; r = the run's cells around over Q's):
 
     shipped                    |S - M| + |M - run|
@@ -13,6 +13,9 @@ relative, C/t absolute; r = the run's cells around over Q's):
                                order), 4/3 (second), 1
     the same, signed           |c (T2 - run) + (S - M)| (+ max |P - run|)
     wall from Th               |S - M| + |Th - run| / 3 (+ |M - run| / 3, or their larger)
+    by direction, signed       t + a + s, each at first order with its sign: t = Th - run (T2's -2 (T2 - run) where
+                               the run has 2 cells through), a = A - run, s = S - M; |t + a + s| (+ max |P - run|
+                               over k = +-2), and |t| + |a| + |s|
 
     /usr/bin/python3 studies/estimate_through.py run  [--cases ...] [--presets fast,default] [-j 2]
     /usr/bin/python3 studies/estimate_through.py eval [--cases ...] [--presets ...] [--cells]
@@ -38,12 +41,13 @@ def run_case(case, preset):
     twice = ["-increments", str(max(1, inc // 2)), "-rmin_deps", str(2 * deps), "-rmin_domega", str(2 * dom),
              "-rmin_deps_yield", str(2 * dy)]
     cells = lambda a, b: ["-mesh_nt", str(a), "-mesh_ntheta", str(b)]  # noqa: E731
-    q = cells(*ec.level_cells(nt, n)["Q"])
-    for level, extra in (("T2", cells(2 * nt, n)), ("Th", cells(max(2, nt // 2), n)), ("Q", q), ("QS", q + twice)):
+    q, a = cells(*ec.level_cells(nt, n)["Q"]), cells(*ec.level_cells(nt, n)["A"])
+    for level, extra in (("T2", cells(2 * nt, n)), ("Th", cells(max(2, nt // 2), n)), ("Q", q), ("QS", q + twice),
+                         ("A", a)):
         ec.run_one(case, preset, level, keep + extra, OUT)
 
 
-def candidates(v, r):
+def candidates(v, r, nt):
     """Each candidate's estimate of the run's load (relative) and C/t (absolute) errors."""
     rel = lambda a, b: np.abs(v[a][1] / v[b][1] - 1)  # noqa: E731
     absd = lambda a, b: np.abs(v[a][2] - v[b][2])  # noqa: E731
@@ -58,6 +62,12 @@ def candidates(v, r):
         return np.array([np.abs(load), np.abs(ct)], dtype=object) + phase_part
 
     sm, mr, th, t2 = d("S", "M"), d("M", "run"), d("Th", "run"), d("T2", "run")
+    # By direction with their signs: each part the run's error at first order from a companion twice as coarse (or,
+    # through a wall of 2 cells, twice as fine) in that direction alone.
+    sgn = lambda a, b: np.array([v[a][1] / v[b][1] - 1, v[a][2] - v[b][2]], dtype=object)  # noqa: E731
+    through = sgn("Th", "run") if nt >= 4 else -2 * sgn("T2", "run")
+    net = through + sgn("A", "run") + sgn("S", "M")
+    ab = lambda x: np.array([np.abs(x[0]), np.abs(x[1])], dtype=object)  # noqa: E731
     larger = np.array([np.maximum(th[0], mr[0]), np.maximum(th[1], mr[1])], dtype=object)
     return {
         "shipped |S-M| + |M-run|": sm + mr,
@@ -73,6 +83,9 @@ def candidates(v, r):
         "|S-M| + |Th-run|/3": sm + th / 3,
         "|S-M| + |Th-run|/3 + |M-run|/3": sm + th / 3 + mr / 3,
         "|S-M| + max(|Th-run|, |M-run|)/3": sm + larger / 3,
+        "by direction |t + a + s|": ab(net),
+        "by direction |t + a + s| + maxP+-2": ab(net) + p2,
+        "by direction |t| + |a| + |s|": ab(through) + ab(sgn("A", "run")) + sm,
     }
 
 
@@ -81,7 +94,7 @@ def evaluate(cases, presets, cells):
     for case in cases:
         for preset in presets:
             files = {k: os.path.join(ec.OUT, f"{case}_{preset}_{k}.h5") for k in ("run", "M", "S")}
-            files.update({k: os.path.join(OUT, f"{case}_{preset}_{k}.h5") for k in ("T2", "Th", "Q", "QS")})
+            files.update({k: os.path.join(OUT, f"{case}_{preset}_{k}.h5") for k in ("T2", "Th", "A", "Q", "QS")})
             files.update({f"P{k:+d}": os.path.join(sl.OUT, f"{case}_{preset}_P{k:+d}.h5") for k in sl.SHIFTS})
             if not all(os.path.exists(f) for f in files.values()):
                 print(f"{case} {preset}: not run (the phase companions: studies/estimate_same_level.py run)")
@@ -100,7 +113,7 @@ def evaluate(cases, presets, cells):
                 print(f"  {'CalculiX - run':14s} load {sgn(rload)}  C/t {sgc(rct)}")
                 for k in ("T2", "Th", "Q", "M"):
                     print(f"  {k + ' - run':14s} load {sgn(v[k][1])}  C/t {sgc(v[k][2])}")
-            for name, (el, ecc) in candidates(v, r).items():
+            for name, (el, ecc) in candidates(v, r, nt).items():
                 stats.setdefault((name, preset), []).extend(list(zip(el, err[0], unc[0])) +
                                                             list(zip(ecc, err[1], unc[1])))
     ec_table(stats, presets)

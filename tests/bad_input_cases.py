@@ -213,8 +213,9 @@ def bad_input_cases(src, out):
         (["-scene", "squaring", "-die_motion", "stroke", "-die_pivot", "0,1"],
          "-die_pivot: an option of -die_motion path, not of -die_motion stroke"),
         # A die's option of another motion word's kind, kept while its block is read and refused by the tool scenes'
-        # check (CheckMotionStrays, in a press): the lower die's, a second pass's upper and side dies'; a scene
-        # without tools refuses it as an option only other scenes read (-allow_unused lets it go: below).
+        # check (CheckMotionStrays, in a press): the lower die's, a second pass's upper and side dies', the last
+        # pass's upper die's; a scene without tools refuses it as an option only other scenes read (-allow_unused
+        # lets it go: below).
         (["-scene", "squaring", "-lower_die_motion", "mirror", "-lower_die_path", "1,1"],
          "-lower_die_path: an option of -lower_die_motion path, not of -lower_die_motion mirror"),
         (["-scene", "squaring", "-pass2_stroke", "2", "-pass2_die_motion", "stroke", "-pass2_die_pivot", "0,1"],
@@ -222,6 +223,8 @@ def bad_input_cases(src, out):
         (["-scene", "squaring", "-side_die", "flat", "-pass2_stroke", "2", "-pass2_side_motion", "stroke",
           "-pass2_side_path", "1"], "-pass2_side_path: an option of -pass2_side_motion path, not of -pass2_side_motion "
          "stroke"),
+        (["-scene", "squaring", "-pass9_stroke", "1", "-pass9_die_motion", "stroke", "-pass9_die_pivot", "0,1"],
+         "-pass9_die_pivot: an option of -pass9_die_motion path, not of -pass9_die_motion stroke"),
         (["-scene", "column", "-lower_die_path", "1,1"],
          "-lower_die_path: read by the squaring and flattening scenes, not by this run's column scene"),
         (["-scene", "squaring", "-die_motion", "force"], "-die_force: give the force"),

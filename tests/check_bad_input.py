@@ -83,7 +83,7 @@ kinds = (["-tube_t", "-1"], ["-material_law", "bogus"], ["-mesh_file", f"{src}/o
          ["-scene", "squaring", "-die_angle", "abc"],
          ["-scene", "squaring", "-lower_die_motion", "mirror", "-lower_die_path", "1,1"])
 selected = [c for c in cases if c[0] in kinds]
-k.check(len(cases) == 213 and len(selected) == 11, f"{len(cases)} cases on 1 rank (213), {len(selected)} on 2 (11)")
+k.check(len(cases) == 214 and len(selected) == 11, f"{len(cases)} cases on 1 rank (214), {len(selected)} on 2 (11)")
 
 
 def attempt(np_, extra):

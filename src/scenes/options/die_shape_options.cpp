@@ -203,7 +203,8 @@ PetscErrorCode ReadLowerDieShape(MPI_Comm comm, OptionReader &read, Options &opt
                           "upper die, mirrored below the tube",
                           "tubeform: lower die shape", false, lower));
   PetscCall(ReadDieShapeOptions(
-    comm, read, {"lower_die_", "tubeform: lower die shape of its own", "-lower_die", opt.help}, nullptr, lower));
+    comm, read, {"lower_die_", "tubeform: lower die shape of its own", "-lower_die", opt.help == PETSC_TRUE}, nullptr,
+    lower));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -218,8 +219,9 @@ PetscErrorCode ReadSideDieShape(MPI_Comm comm, OptionReader &read, Options &opt)
                           "V-die of its own: -side_die_angle, ...), or a profile file drawn as an upper die "
                           "(docs/dies.md)",
                           "tubeform: side die shape", true, dies.side)); // (as a later pass's -pass<N>_side_die)
-  PetscCall(ReadDieShapeOptions(comm, read, {"side_die_", "tubeform: side die shape of its own", "-side_die", opt.help},
-                                nullptr, dies.side));
+  PetscCall(ReadDieShapeOptions(
+    comm, read, {"side_die_", "tubeform: side die shape of its own", "-side_die", opt.help == PETSC_TRUE}, nullptr,
+    dies.side));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
