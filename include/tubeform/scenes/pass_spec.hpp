@@ -74,14 +74,11 @@ inline LowerDieMove LowerDieMoveOf(const std::string &word)
 
 // The lower die's motion (-lower_die_motion; docs/motions.md): its word (mirror, fixed, path, or a kind registered
 // after the built-in ones: scenes/options/die_motion_options.cpp), how it goes with the upper die's (LowerDieMoveOf the
-// word), the kind of the motion registry that word names (mirror: a stroke), and what its options (-lower_die_*) give
-// it, read by the kind. The scenes read it through LowerDie.
-struct LowerDieSpec {
+// word), and as a DieMotion the kind of the motion registry that word names (mirror: a stroke), what its options
+// (-lower_die_*) give it, read by the kind, and its stray. The scenes read it through LowerDie.
+struct LowerDieSpec : DieMotion {
   std::string word = WordOf(kLowerDieMoveWords, LowerDieMove::Mirror);
   LowerDieMove move = LowerDieMove::Mirror;
-  std::string kind = kStrokeMotion;
-  MotionSpec spec;
-  std::string stray; // an option of another of its words' kinds, given: its refusal (CheckMotionStrays), "" none
 };
 
 // The paper's die: 90 degrees between the flanks, an apex fillet of 3 mm, no parting face.

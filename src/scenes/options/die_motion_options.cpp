@@ -21,14 +21,13 @@ struct MotionWord {
   std::string word, kind;
 };
 
-// The first -<prefix><name> of the words' kinds other than `chosen`'s given, as its refusal into `stray` ("" none):
-// one line naming it, the word it belongs to and the word chosen (refused by CheckMotionStrays, in a press only).
-// `spared`: an option the old spellings give with the chosen word (none: "").
+// The first -<prefix><name> of the words' kinds other than `chosen`'s given, as its refusal into an empty `stray`
+// (left empty where none is): one line naming it, the word it belongs to and the word chosen (refused by
+// CheckMotionStrays, in a press only). `spared`: an option the old spellings give with the chosen word (none: "").
 PetscErrorCode StrayOption(const char *prefix, const std::vector<MotionWord> &words, const MotionWord &chosen,
                            const std::string &spared, std::string &stray)
 {
   PetscFunctionBeginUser;
-  stray.clear();
   const std::vector<std::string> mine = FindMotionKind(chosen.kind)->options;
   for (const MotionWord &w : words)
     for (const std::string &name : FindMotionKind(w.kind)->options) {
@@ -154,6 +153,7 @@ PetscErrorCode ReadWordMotion(MPI_Comm comm, OptionReader &read, const MotionBlo
     PetscCall(ReadMotion(PetscOptionsObject, words[choice].kind, die.spec));
   end.Release();
   PetscOptionsEnd();
+  die.stray.clear(); // (a later pass's block starts from a copy of the first pass's die)
   if (!help) PetscCall(StrayOption(prefix.c_str(), words, words[choice], zero_force ? kForceMotion : "", die.stray));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -163,11 +163,8 @@ PetscErrorCode ReadWordMotion(MPI_Comm comm, OptionReader &read, const MotionBlo
 PetscErrorCode ReadLowerMotion(MPI_Comm comm, OptionReader &read, const MotionBlock &block, bool help,
                                LowerDieSpec &die)
 {
-  DieMotion motion;
-  motion.kind = die.kind, motion.spec = die.spec;
   PetscFunctionBeginUser;
-  PetscCall(ReadWordMotion(comm, read, block, help, motion));
-  die.kind = motion.kind, die.spec = motion.spec, die.stray = motion.stray;
+  PetscCall(ReadWordMotion(comm, read, block, help, die));
   for (const MotionWord &w : block.words)
     if (w.kind == die.kind) die.word = w.word;
   die.move = LowerDieMoveOf(die.word);
