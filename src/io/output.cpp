@@ -201,17 +201,19 @@ PetscErrorCode ResultWriter::Flush()
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode ResultWriter::NameWriteFailure(PetscErrorCode code, const char *what) const
+{
+  if (code != PETSC_ERR_LIB) return code;
+  return PetscError(PETSC_COMM_SELF, __LINE__, PETSC_FUNCTION_NAME, __FILE__, PETSC_ERR_FILE_WRITE, PETSC_ERROR_INITIAL,
+                    "-output %s: writing %s into %s.partial failed (%s; a full disk?); nothing is renamed into place",
+                    path_.c_str(), what, path_.c_str(), ErrorText(code).c_str());
+}
+
 PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::vector<NodeField> &nodes,
                                        const std::vector<CellField> &cells, const std::vector<ToolShape> &tools)
 {
-  Vec local, global;
-  PetscScalar *a;
-  hid_t file;
-  PetscMPIInt rank;
-
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Log::output, 0, 0, 0, 0));
-  PetscCallMPI(MPI_Comm_rank(mesh_->comm, &rank));
   {
     // Room first: HDF5 does not recover from a write that finds the disk full.
     double values = 1;
@@ -220,6 +222,21 @@ PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::ve
     for (const auto &t : tools) values += (double)t.xy.size();
     PetscCall(CheckRoom(mesh_->comm, path_, "-output", kBytesPerValue * values, "the next field step"));
   }
+  PetscCall(NameWriteFailure(WriteStepValues(step, time, nodes, cells, tools), "a field step"));
+  PetscCall(PetscLogEventEnd(Log::output, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ResultWriter::WriteStepValues(PetscInt step, double time, const std::vector<NodeField> &nodes,
+                                             const std::vector<CellField> &cells, const std::vector<ToolShape> &tools)
+{
+  Vec local, global;
+  PetscScalar *a;
+  hid_t file;
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(mesh_->comm, &rank));
   PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
   times_.push_back(time);
   PetscCall(WriteSeriesValue(file, "/time", time, step, rank == 0));
@@ -271,26 +288,19 @@ PetscErrorCode ResultWriter::WriteStep(PetscInt step, double time, const std::ve
     PetscCall(
       WriteSeriesPairs(file, (base + "/displacement").c_str(), moved.data(), moved.size() / 2, step, rank == 0));
   }
-  PetscCall(PetscLogEventEnd(Log::output, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std::pair<std::string, double>> &metrics,
-                                   const std::string &stop_reason)
+PetscErrorCode ResultWriter::WriteHistory(const History &history,
+                                          const std::vector<std::pair<std::string, double>> &metrics,
+                                          const std::string &stop_reason)
 {
   hid_t file, group;
   PetscMPIInt rank;
   char *all_options;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(Log::output, 0, 0, 0, 0));
   PetscCallMPI(MPI_Comm_rank(mesh_->comm, &rank));
-  {
-    const double index = (double)times_.size() * (node_names_.size() + cell_names_.size() + tools_.size() + 4);
-    PetscCall(CheckRoom(mesh_->comm, path_, "-output",
-                        kBytesPerValue * history.columns().size() * history.rows().size() + kXdmfBytesPerEntry * index,
-                        "the history and the ParaView index"));
-  }
   // /history: one 1-D dataset per column. Dataset creation is collective;
   // every rank holds the same history, rank 0 writes the values.
   PetscCall(PetscViewerHDF5GetFileId(viewer_, &file));
@@ -323,6 +333,24 @@ PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std
   PetscCall(PetscOptionsGetAll(nullptr, &all_options));
   PetscCall(PetscViewerHDF5WriteAttribute(viewer_, "/", "options", PETSC_STRING, all_options));
   PetscCall(PetscFree(all_options));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ResultWriter::Close(const History &history, const std::vector<std::pair<std::string, double>> &metrics,
+                                   const std::string &stop_reason)
+{
+  PetscMPIInt rank;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Log::output, 0, 0, 0, 0));
+  PetscCallMPI(MPI_Comm_rank(mesh_->comm, &rank));
+  {
+    const double index = (double)times_.size() * (node_names_.size() + cell_names_.size() + tools_.size() + 4);
+    PetscCall(CheckRoom(mesh_->comm, path_, "-output",
+                        kBytesPerValue * history.columns().size() * history.rows().size() + kXdmfBytesPerEntry * index,
+                        "the history and the ParaView index"));
+  }
+  PetscCall(NameWriteFailure(WriteHistory(history, metrics, stop_reason), "the history"));
   PetscCall(PetscViewerPopFormat(viewer_));
   FreeReserve(); // (its room for the metadata the file's close writes)
   // As Flush: a close that fails (the disk filled by another writer) is every rank's, and names the file.

@@ -97,6 +97,14 @@ private:
     PetscInt first, last;
   };
   std::vector<ToolEntry> tools_;
+  // WriteStep's and Close's writes once their room is checked.
+  PetscErrorCode WriteStepValues(PetscInt step, double time, const std::vector<NodeField> &nodes,
+                                 const std::vector<CellField> &cells, const std::vector<ToolShape> &tools);
+  PetscErrorCode WriteHistory(const History &history, const std::vector<std::pair<std::string, double>> &metrics,
+                              const std::string &stop_reason);
+  // `code` of a write: a library (HDF5) call that failed after the write's room was checked (another writer
+  // filled the disk since) raised again naming -output, the call's own text kept; any other error stays its own.
+  PetscErrorCode NameWriteFailure(PetscErrorCode code, const char *what) const;
   // At a restart: the tools the file holds, up to the checkpoint's steps.
   PetscErrorCode ReadTools();
   double time_scale_ = 1;
