@@ -3,9 +3,6 @@
 namespace tf::fe {
 
 namespace {
-// The component of each dof (u_x, u_y node by node): its normal strain row (quad.cpp's).
-constexpr int kComponent8[kDofs] = {0, 1, 0, 1, 0, 1, 0, 1};
-
 // The shoelace area of a cell's corners and its gradient dA/dx_a.
 double Area(const double x[2 * kNodes], double grad[kDofs])
 {

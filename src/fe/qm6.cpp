@@ -8,9 +8,6 @@ namespace tf::fe {
 
 namespace {
 constexpr int kModes = 2, kShapes = kNodes + kModes, kAll = kDofs + kInternal;
-const double kG = 1.0 / std::sqrt(3.0);
-// The Gauss points of quad.cpp, in the same order.
-const double kXiGauss[kGauss][2] = {{-kG, -kG}, {kG, -kG}, {kG, kG}, {-kG, kG}};
 
 // Gradients of the 4 nodal shape functions and the 2 corrected modes.
 struct Gradients {

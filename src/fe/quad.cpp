@@ -6,10 +6,6 @@ namespace tf::fe {
 
 namespace {
 constexpr double kXiNode[kNodes][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-const double kG = 1.0 / std::sqrt(3.0);
-const double kXiGauss[kGauss][2] = {{-kG, -kG}, {kG, -kG}, {kG, kG}, {-kG, kG}};
-// The component of each dof (u_x, u_y node by node): its normal strain row.
-constexpr int kComponent8[kDofs] = {0, 1, 0, 1, 0, 1, 0, 1};
 } // namespace
 
 void ShapeFunctions(double xi, double eta, double n[kNodes], double dn[kNodes][2])

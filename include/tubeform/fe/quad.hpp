@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 
 namespace tf::fe {
 
@@ -37,7 +38,14 @@ struct QuadGeometry {
   double inv0[2][2]; // J^{-1} at the centre, dxi_s/dx_r (QM6's corrected modes)
 };
 
-// Gauss point natural coordinates (+-1/sqrt 3) and the shape functions there.
+// The 2x2 Gauss points' natural coordinates (+-1/sqrt 3), in the order of the point states.
+inline const double kGaussXi = 1.0 / std::sqrt(3.0);
+inline const double kXiGauss[kGauss][2] = {
+  {-kGaussXi, -kGaussXi}, {kGaussXi, -kGaussXi}, {kGaussXi, kGaussXi}, {-kGaussXi, kGaussXi}};
+// The component of each dof (u_x, u_y node by node): its normal strain row.
+constexpr int kComponent8[kDofs] = {0, 1, 0, 1, 0, 1, 0, 1};
+
+// The shape functions and their natural gradients at (xi, eta).
 void ShapeFunctions(double xi, double eta, double n[kNodes], double dn[kNodes][2]);
 // The coordinates of a cell's Gauss points (in the order of the point states).
 void GaussPoints(const double xe[2 * kNodes], double xg[kGauss][2]);
