@@ -17,7 +17,7 @@ Mat4 IsotropicElasticMatrix(double e, double nu)
 }
 
 Elastic::Elastic(double e, double nu)
-    : e_(e), nu_(nu), g_(e / (2 * (1 + nu))), k_(e / (3 * (1 - 2 * nu))), d_(IsotropicElasticMatrix(e, nu))
+    : g_(e / (2 * (1 + nu))), k_(e / (3 * (1 - 2 * nu))), d_(IsotropicElasticMatrix(e, nu))
 {}
 
 void JaumannUpdate(const Voigt &dtau, double trace_deps, double omega, Voigt &sigma)

@@ -132,7 +132,7 @@ public:
   const Mat4 &matrix() const { return d_; }
 
 private:
-  double e_, nu_, g_, k_;
+  double g_, k_;
   Mat4 d_;
 };
 
