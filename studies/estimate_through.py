@@ -4,8 +4,8 @@ sharply (docs/notes/estimate-companions.md, "A wall refined at the run's cells a
 preset, beside the run and the shipped companions M and S (results/estimate_ccx/) and the phase companions P+k
 (results/estimate_same_level/): T2, twice the run's cells through the wall at its cells around; Th, half of them
 (at least 2) at its cells around; A, half the cells around at the run's cells through; Q, three quarters of the
-cells both ways, and QS, Q at twice the increment limits (a companion nearer the run than M). The run's element and friction regularization are kept. Candidates (load
-relative, C/t absolute; r = the run's cells around over Q's):
+cells both ways, and QS, Q at twice the increment limits (a companion nearer the run than M). The run's element and
+friction regularization are kept. Candidates (load relative, C/t absolute; r = the run's cells around over Q's):
 
     shipped                    |S - M| + |M - run|
     Q, first / second order    |QS - Q| + |Q - run| / (r - 1), / (r^2 - 1)
