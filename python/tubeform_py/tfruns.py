@@ -106,7 +106,10 @@ class RunFailed(RuntimeError):
 def run(case, extra, out, np_=1, exe=EXE, log_view=False):
     """One run of `case` (an options file) with `extra` options, history and final
     fields to `out`; returns (wall seconds, increments, factorizations, stdout)."""
-    cmd = ["mpirun", "-q", "-n", str(np_), exe, "-options_file", case, "-output", out] + extra
+    # A single rank unbound: mpirun binds a job's first rank to the first core, so two single-rank jobs of a study
+    # side by side would share that core and leave the other idle, each taking twice its time.
+    bind = ["--bind-to", "none"] if np_ == 1 else []
+    cmd = ["mpirun", "-q"] + bind + ["-n", str(np_), exe, "-options_file", case, "-output", out] + extra
     if log_view:
         cmd += ["-log_view", ":" + out[:-3] + "_log.txt"]
     t0 = time.time()
