@@ -74,10 +74,12 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
        level.driver.increments, level.driver.rmin_deps, level.driver.rmin_deps_yield,
        level.driver.rmin_domega};
   if (r.mesh_ratio > 1) {
-    // (through the wall a multiple of 4, so that the estimate's companion has an even count: odd ones converge
-    // unevenly, docs/accuracy.md, "The element through the wall"; around, a multiple of 4 likewise)
-    c.mesh_nt = Scaled(level.mesh_nt, r.mesh_ratio, 4);
-    c.mesh_ntheta = Scaled(level.mesh_ntheta, r.mesh_ratio, 4);
+    // A level that will take this one as its mesh companion (kReuseRatio) runs none: even counts do. Any other runs
+    // a companion of half its cells through the wall and around: multiples of 4, so that the companion's counts are
+    // even (odd ones converge unevenly, docs/accuracy.md, "The element through the wall").
+    const PetscInt multiple = r.step_ratio == 1 && r.mesh_ratio >= kReuseRatio ? 2 : 4;
+    c.mesh_nt = Scaled(level.mesh_nt, r.mesh_ratio, multiple);
+    c.mesh_ntheta = Scaled(level.mesh_ntheta, r.mesh_ratio, multiple);
   }
   if (r.step_ratio > 1) {
     c.increments = Scaled(level.driver.increments, r.step_ratio, 1);
