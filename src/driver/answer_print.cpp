@@ -121,8 +121,12 @@ PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, bool finer_follows, c
   for (size_t p = 0; p < a.passes.size(); ++p) PetscCall(PrintPass(comm, a, p));
   if (!a.estimated) PetscFunctionReturn(PETSC_SUCCESS);
   std::string line =
-    !a.mesh_covered        ? "estimated error of the increments alone (the mesh is -mesh_file's, whose error this run "
-                             "does not estimate): "
+    !a.mesh_covered ? "estimated error of the increments alone (the mesh is -mesh_file's, whose error this run "
+                      "does not estimate): "
+    : !a.wall_covered
+      ? Formatted("estimated error (the mesh's part around the tube and the increments' from two companion runs; not "
+                  "the wall's: its %d cells through are the companions' too): ",
+                  (int)kCompanionMinNt)
     : a.estimate_level > 0 ? Formatted("estimated error (the mesh's part from level %d, its cells %.2g times as large, "
                                        "the increments' from its companions): ",
                                        a.estimate_level, a.estimate_ratio)

@@ -12,10 +12,6 @@ namespace tf {
 
 namespace {
 
-// The companions keep at least 2 cells through the wall: with one, a bending wall's answer is off by an order more
-// than the run's (the fast preset's 2 x 64 case: a load difference of 4 % for a 4 % error, 0.09 in C/t for 0.01).
-constexpr PetscInt kCompanionMinNt = 2;
-
 // One companion run on comm: its history in `rows`, its wall time in `seconds`.
 PetscErrorCode RunCompanion(MPI_Comm comm, const Options &c, std::vector<HistoryRow> &rows, double &seconds)
 {
