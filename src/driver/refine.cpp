@@ -31,6 +31,9 @@ PetscInt Scaled(PetscInt n, double r, PetscInt multiple)
   return (m + multiple - 1) / multiple * multiple;
 }
 
+// Whether a level refined by these ratios takes the last one as its mesh companion (kReuseRatio).
+bool Reuses(double step_ratio, double cell_ratio) { return step_ratio == 1 && cell_ratio >= kReuseRatio; }
+
 } // namespace
 
 double CellRatio(const Options &last, const Options &next)
@@ -77,7 +80,7 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
     // A level that will take this one as its mesh companion (kReuseRatio) runs none: even counts do. Any other runs
     // a companion of half its cells through the wall and around: multiples of 4, so that the companion's counts are
     // even (odd ones converge unevenly, docs/accuracy.md, "The element through the wall").
-    const PetscInt multiple = r.step_ratio == 1 && r.mesh_ratio >= kReuseRatio ? 2 : 4;
+    const PetscInt multiple = Reuses(r.step_ratio, r.mesh_ratio) ? 2 : 4;
     c.mesh_nt = Scaled(level.mesh_nt, r.mesh_ratio, multiple);
     c.mesh_ntheta = Scaled(level.mesh_ntheta, r.mesh_ratio, multiple);
   }
@@ -88,7 +91,7 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
   r.next = c.Applied(level);
   const Options &n = r.next;
   r.follows = true;
-  r.reuse = r.step_ratio == 1 && CellRatio(level, n) >= kReuseRatio;
+  r.reuse = Reuses(r.step_ratio, CellRatio(level, n)); // (the counts as rounded: multiples of 4 may reach it too)
   r.why =
     Formatted("level %d follows: %d x %d cells, %d trial increments, increment limits / %.2g (about %.0f s)",
               (int)n.level, (int)n.mesh_nt, (int)n.mesh_ntheta, (int)n.driver.increments, r.step_ratio, predicted);
