@@ -23,7 +23,8 @@ B. A mesh file (meshes/quarter_tube.geo through gmsh, 2 x 24 cells): the compani
    other reported strokes: the file's error_*_at_U and error_loaded_* attributes, to the printed digits (planted:
    the largest elsewhere taken over every stroke -> FAILED). The generated mesh has the fast preset's 2 cells
    through the wall, which its mesh companion keeps (it halves to no fewer): the line says the wall's part is not
-   in the estimate (planted: the wall always counted as covered -> FAILED).
+   in the estimate and the attribute error_covers_wall is 0 (planted: the wall always counted as covered, or the
+   attribute always 1 -> FAILED).
 """
 import math
 import os
@@ -125,9 +126,10 @@ for name, extra in (("file", ["-mesh_file", msh]), ("generated", [])):
                 f"warning, error_covers_mesh {A.get('error_covers_mesh')}")
     else:
         k.check(A.get("error_covers_mesh") == 1, f"a generated mesh: error_covers_mesh {A.get('error_covers_mesh')}")
-        k.check("not the wall's: its 2 cells through are the companions' too" in est,
+        k.check("not the wall's: its 2 cells through are the companions' too" in est and
+                A.get("error_covers_wall") == 0,
                 f"2 cells through the wall, kept by the mesh companion: the line says its part is not estimated "
-                f"('{est[10:140]}...')")
+                f"('{est[10:140]}...'), error_covers_wall {A.get('error_covers_wall')}")
         # Where the largest estimated error is, and the largest elsewhere, from the file's per-stroke attributes.
         for name, pattern, unit in (("load", r"load (\S+) % at U = (\S+) \(mesh [^;]*; (\S+) % at most elsewhere\)",
                                      100), ("c_over_t", r"C/t (\S+) at U = (\S+) \(mesh [^;]*; (\S+) at most "

@@ -6,6 +6,9 @@ reference is a benchmark (tools/validate, tools/against_ccx; docs/accuracy.md), 
 - the fast preset with its error estimate on 2 ranks: the run on one rank, its companions on the other ("beside
   the run", their line says), every history column (the error columns included) bitwise equal to the 1-rank
   run's: the same computations on the same data;
+- which estimate reads the wall's cells (error_covers_wall): the default preset's 4 cells through, whose mesh
+  companion has 2, yes; the fast preset's 2, which its companion keeps, no (planted: the attribute always 1 ->
+  FAILED, shown in tests/check_answer.py's B);
 - default preset on 1 and 2 ranks (its estimate off, the run on both ranks): load within 3.4e-9, x_max within 2.2e-11
   and C/t within 1e-9 of the largest value (the factorization is redundant,
   so only the summation order of the assembly differs): 100 times the largest
@@ -79,6 +82,7 @@ def read(path):
     with h5py.File(path, "r") as h:
         H = {c: h["/history"][c][:] for c in h["/history"]}
         H["spring"] = float(h["/history"].attrs["unloaded_c_over_t"])
+        H["covers_wall"] = h["/history"].attrs.get("error_covers_wall")
     return H
 
 
@@ -135,13 +139,17 @@ same_on_ranks("fast preset, radial return, 1.5 mm", runs["radial_np1"], runs["ra
 # The companions beside the run: the run is the one-rank run and its estimate that of the one-rank companions, bit
 # for bit (every history column, the error columns included); the run says where they ran.
 F1, F2 = runs["fast"], runs["fast_np2"]
-differ = sorted(c for c in F1 if c != "spring" and (c not in F2 or F1[c].shape != F2[c].shape or
+differ = sorted(c for c in F1 if c not in ("spring", "covers_wall") and (c not in F2 or F1[c].shape != F2[c].shape or
                                                      not np.array_equal(F1[c], F2[c])))
 k.check(not differ and "error_load" in F1, f"fast preset with its estimate, 1 vs 2 ranks (the companions beside the "
         f"run): every history column bitwise equal{'' if not differ else ', not ' + ', '.join(differ)}")
 said = [l for l in beside.stdout.splitlines() if l.startswith("tubeform: companion runs")]
 k.check(len(said) == 1 and said[0].endswith("beside the run"), f"2 ranks: the companions' line says where they ran: "
         f"{said}")
+# Whose estimate reads the wall's cells: the default preset's 4 cells through (its companion has 2), not the fast
+# preset's 2 (its companion keeps them).
+k.check(A["covers_wall"] == 1 and F1["covers_wall"] == 0, f"error_covers_wall: default preset {A['covers_wall']}, "
+        f"fast {F1['covers_wall']} (want 1, 0)")
 A_TOL, B_TOL = 0.005, 0.01  # the work of out-of-balance forces the criterion 0.005 allows; a dissipation 1 % off
 for name in ("default_np1", "fast"):
     H = runs[name]

@@ -199,6 +199,7 @@ std::vector<std::pair<std::string, double>> AnswerAttributes(const Answer &a)
     out.push_back({"error_load", a.worst_load_error});
     out.push_back({"error_c_over_t", a.worst_ct_error});
     out.push_back({"error_covers_mesh", a.mesh_covered ? 1.0 : 0.0});
+    out.push_back({"error_covers_wall", a.mesh_covered && a.wall_covered ? 1.0 : 0.0});
   }
   return out;
 }
