@@ -37,6 +37,11 @@ E. A demanded accuracy chooses the plastic update where -plastic_update names no
    companion (the tangent update's increments part would refine the increments too and run companions); named, it
    is kept (-plastic_update tangent with -target_load: no radial return). Planted: the rule removed -> FAILED; the
    rule overriding a named update -> FAILED.
+G. A demanded accuracy is confirmed only by an estimate that reads the wall: the fast level's 2 cells through the wall
+   are its mesh companion's too (Answer::wall_covered), so with -target_load 0.2, which its estimate meets, level 2
+   follows, saying why, at least kReuseRatio finer (4 cells through), takes level 1 as its companion and meets the
+   target (target_met 1, error_covers_wall 1); with -target_levels 1 the run warns that its estimate does not read
+   the wall and writes target_met 0. Planted: the wall's coverage left out of NextLevel and Answer::Over -> FAILED.
 """
 import re
 import os
@@ -80,7 +85,7 @@ def fresh(name):
 os.environ["OMPI_MCA_hwloc_base_binding_policy"] = "none"
 RADIAL = BASE + ["-plastic_update", "radial", "-target_load", 0.06, "-element_bar_nt", 4]
 H5 = {n: fresh(n) for n in ("target_a", "target_b", "target_c", "target_d1", "target_d_np1", "target_d_np2",
-                             "target_e", "target_f_np1", "target_f_np2")}
+                             "target_e", "target_f_np1", "target_f_np2", "target_g", "target_g1")}
 OWN = BASE + ["-plastic_update", "tangent", "-target_c_over_t", 0.003, "-stroke", 3, "-target_levels", 2]
 with ThreadPoolExecutor(max_workers=2) as pool:
     go = lambda n, opts: pool.submit(run, tf, mpirun, n, opts, check=False, timeout=600)  # noqa: E731
@@ -95,7 +100,10 @@ with ThreadPoolExecutor(max_workers=2) as pool:
     f_e = go(1, BASE + ["-target_load", 0.05, "-target_levels", 1, "-plastic_update", "tangent", "-stroke", 0.5,
                         "-output", H5["target_e"]])
     f_f1, f_f2 = go(1, OWN + ["-output", H5["target_f_np1"]]), go(2, OWN + ["-output", H5["target_f_np2"]])
-    p_d2, p_d, p_a, p_c, p_d1, p_e, p_f1, p_f2 = (f.result() for f in (f_d2, f_d, f_a, f_c, f_d1, f_e, f_f1, f_f2))
+    f_g, f_g1 = (go(1, BASE + ["-target_load", 0.2, "-output", H5["target_g"]]),
+                 go(1, BASE + ["-target_load", 0.2, "-target_levels", 1, "-output", H5["target_g1"]]))
+    p_d2, p_d, p_a, p_c, p_d1, p_e, p_f1, p_f2, p_g, p_g1 = (f.result() for f in (f_d2, f_d, f_a, f_c, f_d1, f_e,
+                                                                                   f_f1, f_f2, f_g, f_g1))
 
 # A. Two levels meet the target.
 h5, p = H5["target_a"], p_a
@@ -148,6 +156,20 @@ warn = [l for l in p.stdout.splitlines() if "warning" in l and "-target_levels 1
 b = attrs(h5) if p.returncode == 0 else {}
 k.check(p.returncode == 0 and len(warn) == 1 and b.get("target_met") == 0 and b.get("accuracy_level") == 1,
         f"B: -target_levels 1: one level, one warning naming it ({len(warn)}), target_met {b.get('target_met')}")
+
+# G. A target the fast level's estimate meets, which does not read its wall of 2 cells: a finer level follows.
+unread = "the estimate does not read the wall's 2 cells through"
+g, g1 = (attrs(H5[n]) if p.returncode == 0 else {} for n, p in (("target_g", p_g), ("target_g1", p_g1)))
+said = [l for l in p_g.stdout.splitlines() if l.startswith(f"tubeform: {unread}: level 2 follows")]
+k.check(len(said) == 1 and g.get("accuracy_level") == 2 and g.get("target_met") == 1 and
+        g.get("error_covers_wall") == 1 and g.get("error_load", 1) <= 0.2,
+        f"G: level 1's estimate within 20 %, its wall unread: level 2 follows ({len(said)} line(s) '{unread}: level 2 "
+        f"follows'), accuracy_level {g.get('accuracy_level')}, its estimate reads the wall (error_covers_wall "
+        f"{g.get('error_covers_wall')}) and meets the target (target_met {g.get('target_met')})")
+warn = [l for l in p_g1.stdout.splitlines() if "warning" in l and unread in l and "-target_levels 1" in l]
+k.check(p_g1.returncode == 0 and len(warn) == 1 and g1.get("target_met") == 0 and g1.get("error_load", 1) <= 0.2,
+        f"G: one level allowed: its estimate within 20 % ({100 * g1.get('error_load', 1):.2f} %), but unread in the "
+        f"wall: one warning saying so ({len(warn)}), target_met {g1.get('target_met')}")
 
 # C. The second level stops: the first level's results are kept.
 h5, p = H5["target_c"], p_c

@@ -139,12 +139,17 @@ PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, bool finer_follows, c
   if (a.target_load > 0 || a.target_ct > 0) line += Targets(a);
   PetscCall(PetscPrintf(comm, "tubeform: %s\n", line.c_str()));
   if (!a.Over()) PetscFunctionReturn(PETSC_SUCCESS);
+  const std::string unread = Formatted("the estimate does not read the wall's %d cells through", (int)kCompanionMinNt);
   if (finer_follows)
-    PetscCall(PetscPrintf(comm, "tubeform: the estimate passes the target: %s (accuracy on demand)\n", why.c_str()));
+    PetscCall(PetscPrintf(comm, "tubeform: %s: %s (accuracy on demand)\n",
+                          a.ErrorOver() ? "the estimate passes the target" : unread.c_str(), why.c_str()));
   else if (a.demanded)
     PetscCall(PetscPrintf(comm,
-                          "tubeform: warning: the estimated error passes the target, which this run therefore cannot "
-                          "confirm (%s): allow more levels or time (-target_levels, -target_time; docs/accuracy.md)\n",
+                          "tubeform: warning: %s (%s): allow more levels or time (-target_levels, -target_time; "
+                          "docs/accuracy.md)\n",
+                          a.ErrorOver()
+                            ? "the estimated error passes the target, which this run therefore cannot confirm"
+                            : (unread + ", so this run cannot confirm the target").c_str(),
                           why.c_str()));
   else
     PetscCall(PetscPrintf(comm, "tubeform: warning: the estimated error passes what the preset expects, which this "

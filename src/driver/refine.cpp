@@ -55,7 +55,7 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
   const AccuracyParams &held = level.accuracy;
   const double load = held.target_load, ct = a.tool ? held.target_c_over_t : 0; // (demanded: 0 none)
   if (!a.estimated || !a.mesh_covered ||
-      !((load > 0 && a.worst_load_error > load) || (ct > 0 && a.worst_ct_error > ct)))
+      !((load > 0 && a.worst_load_error > load) || (ct > 0 && a.worst_ct_error > ct) || a.WallUnread()))
     return r;
   if (level.level >= held.target_levels) {
     r.why = Formatted("this was level %d of -target_levels %d", (int)level.level, (int)held.target_levels);
@@ -63,6 +63,9 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
   }
   Ratios(a.worst_load, load, r.mesh_ratio, r.step_ratio);
   Ratios(a.worst_ct, ct, r.mesh_ratio, r.step_ratio);
+  // A wall the estimate cannot read (Answer::wall_covered): the cells at least kReuseRatio finer, so that the next
+  // level has other cells through the wall than this one, which becomes its mesh companion.
+  if (a.WallUnread()) r.mesh_ratio = std::max(r.mesh_ratio, kReuseRatio);
   if (!level.mesh_file.empty()) r.mesh_ratio = 1; // (a mesh file is as it is)
   r.mesh_ratio = std::min(r.mesh_ratio, kMaxRatio), r.step_ratio = std::min(r.step_ratio, kMaxRatio);
   // The cost of a level: its cells times its increments, the factorization's growing faster than the cells

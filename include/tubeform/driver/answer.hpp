@@ -97,13 +97,17 @@ struct Answer {
   bool demanded = false;                 // by -target_load or -target_c_over_t, not the preset's expectation
   int estimate_level = 0;                // the level whose run is the estimate's mesh companion (0: companion runs)
   double estimate_ratio = 2;             // that companion's cell size over the run's (Companions::mesh_ratio)
-  // The estimate passes a target (with a mesh file, whose error it does not cover, it is held to none).
-  bool Over() const
+  // The estimate passes a target.
+  bool ErrorOver() const
   {
-    return estimated && mesh_covered &&
-           ((target_load > 0 && worst_load_error > target_load) ||
-            (tool && target_ct > 0 && worst_ct_error > target_ct));
+    return (target_load > 0 && worst_load_error > target_load) || (tool && target_ct > 0 && worst_ct_error > target_ct);
   }
+  // A demanded accuracy that the estimate cannot confirm, since it does not read the wall's cells (a finer level
+  // can: driver/refine.cpp).
+  bool WallUnread() const { return demanded && !wall_covered; }
+  // The run cannot confirm the accuracy it is held to (with a mesh file, whose error the estimate does not cover, it
+  // is held to none).
+  bool Over() const { return estimated && mesh_covered && (ErrorOver() || WallUnread()); }
 };
 
 // The estimate's companions' histories (see kStepShare); `mesh` empty when the run's mesh is kept (a mesh file).
