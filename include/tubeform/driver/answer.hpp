@@ -104,7 +104,7 @@ struct Answer {
   }
   // A demanded accuracy that the estimate cannot confirm, since it does not read the wall's cells (a finer level
   // can: driver/refine.cpp).
-  bool WallUnread() const { return demanded && !wall_covered; }
+  bool WallUnread() const { return demanded && (target_load > 0 || (tool && target_ct > 0)) && !wall_covered; }
   // The run cannot confirm the accuracy it is held to (with a mesh file, whose error the estimate does not cover, it
   // is held to none).
   bool Over() const { return estimated && mesh_covered && (ErrorOver() || WallUnread()); }
