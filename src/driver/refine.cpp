@@ -64,7 +64,7 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
   Ratios(a.worst_load, load, r.mesh_ratio, r.step_ratio);
   Ratios(a.worst_ct, ct, r.mesh_ratio, r.step_ratio);
   // A wall the estimate cannot read (Answer::wall_covered): the cells at least kReuseRatio finer, so that the next
-  // level has other cells through the wall than this one, which becomes its mesh companion.
+  // level's mesh companion (this level, or its own companions at half its cells) has other cells through the wall.
   if (a.WallUnread()) r.mesh_ratio = std::max(r.mesh_ratio, kReuseRatio);
   if (!level.mesh_file.empty()) r.mesh_ratio = 1; // (a mesh file is as it is)
   r.mesh_ratio = std::min(r.mesh_ratio, kMaxRatio), r.step_ratio = std::min(r.step_ratio, kMaxRatio);

@@ -3,7 +3,8 @@
 // again at a finer level, chosen from the estimate's parts: each falls in
 // proportion to its cells' size or increment limits (the estimate's first
 // order, driver/answer.hpp), so each is refined by the ratio that brings it
-// within its share of the target. A level at most kMaxRatio finer than the last, at most
+// within its share of the target. A level whose estimate does not read its wall (Answer::WallUnread) runs again
+// too, its cells at least kReuseRatio finer. A level at most kMaxRatio finer than the last, at most
 // -target_levels levels, none that would pass -target_time.
 #pragma once
 
