@@ -116,7 +116,7 @@ PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out,
   PetscCallMPI(MPI_Comm_size(comm, &size));
   const bool coarsen = ran.mesh_file.empty();
   if (coarsen) {
-    mesh.mesh_nt = std::max<PetscInt>(kCompanionMinNt, ran.mesh_nt / 2);
+    mesh.mesh_nt = CompanionNt(ran.mesh_nt);
     mesh.mesh_ntheta = std::max<PetscInt>(4, 2 * (ran.mesh_ntheta / 4));
   }
   Options steps = mesh;

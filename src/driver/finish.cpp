@@ -96,7 +96,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     a.stroke_name = scene_->StrokeName(), a.load_unit = scene_->LoadUnit();
     TakePassStarts(scene_metrics, a);
     a.mesh_covered = opt_.mesh_file.empty();
-    a.wall_covered = a.estimate_level > 0 || opt_.mesh_nt != kCompanionMinNt;
+    a.wall_covered = a.estimate_level > 0 || CompanionNt(opt_.mesh_nt) != opt_.mesh_nt;
     HoldTo(opt_.accuracy, a);
     for (size_t p = 0; p < a.passes.size(); ++p) a.passes[p].release = scene_->ReleaseOf((int)p);
     return a;

@@ -54,9 +54,7 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
   Refinement r;
   const AccuracyParams &held = level.accuracy;
   const double load = held.target_load, ct = a.tool ? held.target_c_over_t : 0; // (demanded: 0 none)
-  if (!a.estimated || !a.mesh_covered ||
-      !((load > 0 && a.worst_load_error > load) || (ct > 0 && a.worst_ct_error > ct) || a.WallUnread()))
-    return r;
+  if (!a.demanded || !a.Over()) return r; // (a demand holds the answer to these alone: finish.cpp, HoldTo)
   if (level.level >= held.target_levels) {
     r.why = Formatted("this was level %d of -target_levels %d", (int)level.level, (int)held.target_levels);
     return r;

@@ -82,6 +82,8 @@ struct PassAnswer {
 // an order more than the run's (the fast preset's 2 x 64 case: a load difference of 4 % for a 4 % error, 0.09 in C/t
 // for 0.01). A run of 2 cells through the wall has its wall's part out of the estimate (Answer::wall_covered).
 constexpr PetscInt kCompanionMinNt = 2;
+// The mesh companion's cells through the wall for a run of run_nt.
+constexpr PetscInt CompanionNt(PetscInt run_nt) { return run_nt / 2 > kCompanionMinNt ? run_nt / 2 : kCompanionMinNt; }
 
 struct Answer {
   bool tool = false;                                 // a tool scene: C/t, C1/C2 and springback mean something
