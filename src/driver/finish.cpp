@@ -92,7 +92,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
   // Shape metrics (C/t, C1/C2, springback) are the press scenes': those with final metrics of their own.
   const auto scene_metrics = scene_->FinalMetrics(history_);
   const auto summarize = [&](const Companions *estimate) {
-    Answer a = Summarize(history_.rows(), !scene_metrics.empty(), estimate);
+    Answer a = Summarize(history_.rows(), !scene_metrics.empty(), estimate, 1.0 / opt_.driver.increments);
     a.stroke_name = scene_->StrokeName(), a.load_unit = scene_->LoadUnit();
     TakePassStarts(scene_metrics, a);
     a.mesh_covered = opt_.mesh_file.empty();

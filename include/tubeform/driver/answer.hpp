@@ -134,8 +134,9 @@ struct Companions {
   }
 };
 
-// The answer of a history (companions: the estimate's, or null).
-Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const Companions *companions);
+// The answer of a history (companions: the estimate's, or null; `trial` the run's trial increment as a fraction of a
+// pass's loading, over whose last one the end of loading's estimate is read).
+Answer Summarize(const std::vector<HistoryRow> &rows, bool tool, const Companions *companions, double trial);
 // The estimate row by row, as /history columns error_load (relative) and error_c_over_t: a loading row's from the
 // companions at its stroke; a release's rows the estimate of the loaded state they release (its load's, and the
 // larger of its C/t's and the sprung-back C/t's); kNoEstimate where a companion did not reach.
