@@ -1,5 +1,5 @@
 """scripts/figures --quick from nothing: runs the fast preset's cases of its
-quick grid into the test directory (22 real runs, about a minute on 2 cores)
+quick grid into the test directory (22 real runs, under a minute on 2 cores)
 and draws every figure as PNG and PDF. Checks that each of the 16 figures
 exists in both formats and is not empty, that every case finished, that the
 two tables (critical R/t, apex radius) were written, and the one claim of
@@ -41,7 +41,7 @@ status = []
 for f in glob.glob(os.path.join(res, "fig_fast_*", "summary.csv")):
     with open(f) as fh:
         status += [r["status"] for r in csv.DictReader(fh)]
-# The --quick grid: 3 paper tubes x 2 mu, 2 R/t x 2 mu (4.2 mm), 3 R/t x 2 mu (the rule), one material, 1 R/t x 2
+# The --quick grid: 3 paper tubes x 2 mu, 2 R/t x 2 mu (3.2 mm), 3 R/t x 2 mu (the rule), one material, 1 R/t x 2
 # apex radii, the 3 paper tubes with a backstress. --quick runs without error estimates, so a finished case is "done"
 # (never "inaccurate").
 expected = 3 * 2 + 2 * 2 + 3 * 2 + 1 + 1 * 2 + 3
