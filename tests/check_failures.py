@@ -26,8 +26,12 @@ fields of the last finite step.
 Friction iterations that never settle stop the run after
 -friction_max_unsettled increments in a row (here 4, with a tolerance no
 iterate can meet).
+
+The 1-rank runs are the `np1` part, the 2-rank ones the `np2` part (tests/CMakeLists.txt: the first on one core
+beside another test, the second with both cores).
 """
 import os
+import sys
 
 import h5py
 import numpy as np
@@ -35,9 +39,11 @@ import numpy as np
 from tfcheck import Checks, args, out, run
 
 tf, mpirun, src = args()
-k = Checks("failures")
-for np_, mesh, option in [(1, (16, 48), "-redundant_mat_mumps_icntl_23"), (2, (16, 48), "-redundant_mat_mumps_icntl_23"),
-                          (2, (40, 300), "-mat_mumps_icntl_23")]:
+part = sys.argv[4] if len(sys.argv) > 4 else "both"
+NPS = {"np1": (1,), "np2": (2,)}.get(part, (1, 2))
+k = Checks("failures" + (f" ({part})" if part != "both" else ""))
+for np_, mesh, option in [c for c in [(1, (16, 48), "-redundant_mat_mumps_icntl_23"), (2, (16, 48), "-redundant_mat_mumps_icntl_23"),
+                          (2, (40, 300), "-mat_mumps_icntl_23")] if c[0] in NPS]:
     f = out(f"mumps_np{np_}_{mesh[0]}.h5")
     p = run(tf, mpirun, np_, ["-options_file", f"{src}/options/pressure.opts", "-mesh_nt", mesh[0], "-mesh_ntheta",
                               mesh[1], "-increments", 2, option, 1, "-output", f], check=False, timeout=120)
@@ -53,7 +59,8 @@ for np_, mesh, option in [(1, (16, 48), "-redundant_mat_mumps_icntl_23"), (2, (1
 
 # MUMPS's workspace cut to half its own estimate (ICNTL(14) = -50 percent): INFOG(1) = -9. The line names the
 # workspace option of the path in use, and that option, raised as the line says, lets the same run through.
-for np_, mesh, option in [(1, (16, 48), "-redundant_mat_mumps_icntl_14"), (2, (40, 300), "-mat_mumps_icntl_14")]:
+for np_, mesh, option in [c for c in [(1, (16, 48), "-redundant_mat_mumps_icntl_14"),
+                                      (2, (40, 300), "-mat_mumps_icntl_14")] if c[0] in NPS]:
     case = ["-options_file", f"{src}/options/pressure.opts", "-mesh_nt", mesh[0], "-mesh_ntheta", mesh[1],
             "-increments", 2, "-output", out(f"workspace_np{np_}.h5")]
     p = run(tf, mpirun, np_, case + [option, -50], check=False, timeout=120)
@@ -64,7 +71,7 @@ for np_, mesh, option in [(1, (16, 48), "-redundant_mat_mumps_icntl_14"), (2, (4
     p = run(tf, mpirun, np_, case + [option, 50], check=False, timeout=120)
     k.check(p.returncode == 0, f"np={np_} with {option} 50, as the line says: exit {p.returncode}")
 
-for np_ in (1, 2):
+for np_ in NPS:
     f = out(f"overflow_np{np_}.h5")
     p = run(tf, mpirun, np_, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
                               f"{src}/options/preset-fast.opts", "-punch_speed", "1e300", "-output", f], check=False)
@@ -92,7 +99,7 @@ for np_ in (1, 2):
 # 1e-6 of a step: twenty of them count as one unsettled step, so it stops
 # after 4 x 20 of them, saying so.
 for np_, case in [(n, c) for c in (["-equilibrium_tol", 0, "-friction_tol", "1e-300"], ["-equilibrium_tol", "1e-12"])
-                  for n in (1, 2)]:
+                  for n in NPS]:
     f = out(f"unsettled_np{np_}_{case[-2][1:]}.h5")
     p = run(tf, mpirun, np_, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
                               f"{src}/options/preset-fast.opts", "-friction_max_iters", "2",
@@ -107,18 +114,20 @@ for np_, case in [(n, c) for c in (["-equilibrium_tol", 0, "-friction_tol", "1e-
             u = h["/history/unsettled"][:]
             ok = h["/history"].attrs["stopped"] == 1 and len(u) >= 5 and bool(np.all(np.diff(u[-5:]) >= 1))
     k.check(ok, f"np={np_} unsettled {case[-2]}: results flagged, the last 4 increments each unsettled")
-f = out("unsettled_inertia.h5")
-p = run(tf, mpirun, 1, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
-                        f"{src}/options/preset-fast.opts", "-friction_max_iters", "2", "-friction_max_unsettled", "4",
-                        "-equilibrium_tol", "1e-12", "-output", f], check=False)
-lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
-k.check(p.returncode != 0 and len(lines) == 1 and "-friction_max_unsettled" in lines[0] and "with inertia" in lines[0],
-        f"inertia, unsettled -equilibrium_tol: exit {p.returncode}, one line naming the option and inertia's halvings "
-        f"({lines})")
-if os.path.exists(f):
-    with h5py.File(f, "r") as h:
-        stopped, rows = h["/history"].attrs["stopped"], h["/history"].attrs["rows"]
-    k.check(stopped == 1 and rows < 4 * 20 + 10,
-            f"inertia: results flagged stopped after {rows:g} rows (4 x 20 steps settled only on inertia's halvings, "
-            f"each a twentieth of an unsettled one; a creep would go on)")
+if 1 in NPS:  # (inertia's halvings: one rank is enough)
+    f = out("unsettled_inertia.h5")
+    p = run(tf, mpirun, 1, ["-options_file", f"{src}/options/squaring.opts", "-options_file",
+                            f"{src}/options/preset-fast.opts", "-friction_max_iters", "2", "-friction_max_unsettled",
+                            "4", "-equilibrium_tol", "1e-12", "-output", f], check=False)
+    lines = [l for l in (p.stdout + p.stderr).splitlines() if l.startswith("tubeform: error")]
+    k.check(p.returncode != 0 and len(lines) == 1 and "-friction_max_unsettled" in lines[0] and
+            "with inertia" in lines[0],
+            f"inertia, unsettled -equilibrium_tol: exit {p.returncode}, one line naming the option and inertia's "
+            f"halvings ({lines})")
+    if os.path.exists(f):
+        with h5py.File(f, "r") as h:
+            stopped, rows = h["/history"].attrs["stopped"], h["/history"].attrs["rows"]
+        k.check(stopped == 1 and rows < 4 * 20 + 10,
+                f"inertia: results flagged stopped after {rows:g} rows (4 x 20 steps settled only on inertia's "
+                f"halvings, each a twentieth of an unsettled one; a creep would go on)")
 k.done()
