@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "tubeform/core/core.hpp"
 
@@ -114,6 +115,13 @@ struct StageRows {
 // The larger of two estimates.
 ErrorParts Larger(const ErrorParts &a, const ErrorParts &b) { return b.Total() > a.Total() ? b : a; }
 
+// A loading row's estimate from the companions at its stroke: its load's (relative) and its C/t's.
+std::pair<ErrorParts, ErrorParts> RowEstimate(const HistoryRow &r, const StageRows &at, double mesh_ratio)
+{
+  return {Estimate(r.load, at.At(&HistoryRow::load, r.stroke), mesh_ratio, std::max(std::abs(r.load), kTiny)),
+          Estimate(r.c_over_t, at.At(&HistoryRow::c_over_t, r.stroke), mesh_ratio)};
+}
+
 // The estimate of the load and C/t at the end of a stage's loading: the largest over the rows of its last trial
 // increment (`window` of stroke before `end`), not at the end's stroke alone. Where the wall locks against the die
 // the load climbs by a quarter in a tenth of a millimetre, and the companions' curves can cross the run's at the last
@@ -125,9 +133,8 @@ void EstimateEnd(const std::vector<const HistoryRow *> &loading, const StageRows
   const double end = loading.back()->stroke;
   for (const HistoryRow *r : loading) {
     if (r->stroke < end - window) continue;
-    const double scale = std::max(std::abs(r->load), kTiny);
-    load = Larger(load, Estimate(r->load, at.At(&HistoryRow::load, r->stroke), mesh_ratio, scale));
-    ct = Larger(ct, Estimate(r->c_over_t, at.At(&HistoryRow::c_over_t, r->stroke), mesh_ratio));
+    const auto [row_load, row_ct] = RowEstimate(*r, at, mesh_ratio);
+    load = Larger(load, row_load), ct = Larger(ct, row_ct);
   }
 }
 
@@ -248,9 +255,8 @@ std::vector<std::pair<std::string, std::vector<double>>> ErrorColumns(const std:
     }
     if (r.stage != stage) stage = r.stage, at = StageRows(rows, c, stage);
     if (at.Empty() || r.stroke > at.Reach() + kStrokeMatch) continue; // (past where a companion reached)
-    load[k] =
-      Estimate(r.load, at.At(&HistoryRow::load, r.stroke), c.mesh_ratio, std::max(std::abs(r.load), kTiny)).Total();
-    ct[k] = Estimate(r.c_over_t, at.At(&HistoryRow::c_over_t, r.stroke), c.mesh_ratio).Total();
+    const auto [row_load, row_ct] = RowEstimate(r, at, c.mesh_ratio);
+    load[k] = row_load.Total(), ct[k] = row_ct.Total();
   }
   return {{"error_load", load}, {"error_c_over_t", ct}};
 }
