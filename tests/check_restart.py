@@ -69,6 +69,10 @@ from tfcheck import Checks, args, out, run
 tf, mpirun, src = args()
 part = sys.argv[4] if len(sys.argv) > 4 else "both"
 k = Checks("restart" + (f" ({part})" if part != "both" else ""))
+# The two parts' files in a folder of their own: the np2 part reads the np1 part's, which a test run between them
+# must not overwrite (tests/check_full_disk.py writes a full_np1.h5 of its own).
+os.makedirs("restart", exist_ok=True)
+os.chdir("restart")
 CASE = ["-options_file", f"{src}/options/squaring.opts", "-options_file", f"{src}/options/preset-fast.opts",
         "-progress", "0"]
 
