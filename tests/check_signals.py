@@ -47,10 +47,9 @@ import os
 import random
 import signal
 import subprocess
+import sys
 import tempfile
 import time
-
-import sys
 
 import h5py
 import numpy as np
