@@ -13,7 +13,7 @@ reads another checkout's cache: eval, show and shipped start no run).
     /usr/bin/python3 studies/estimate_levels.py show --tubes ...            # values at the reported strokes
     /usr/bin/python3 studies/estimate_levels.py eval --tubes ... [--misses] # candidates' effectivity and alarms
     /usr/bin/python3 studies/estimate_levels.py shipped --tubes ...         # the runs' own estimate (plan preset)
-    /usr/bin/python3 studies/estimate_levels.py demand --tubes ... [--target 0.005]   # accuracy on demand
+    /usr/bin/python3 studies/estimate_levels.py demand --tubes ... [--target 0.005] [--target-levels N]   # accuracy on demand
 
 --update radial runs the level runs and the references with the radial return (cached apart, `_radial`; its
 reference's step ladder is s 1, 2, the return being converged in the step there); --presets-update radial (or
@@ -383,16 +383,19 @@ def shipped(tubes, misses=False):
     table("shipped (the preset runs' own)", cells, runs, misses)
 
 
-def demand(tubes, target):
+def demand(tubes, target, levels=0):
     """Accuracy on demand: the tube with the default preset and -target_load `target` (cached as
-    demand_<target>.h5): its levels, wall time, and its largest true load error against the reference."""
+    demand_<target>.h5; with `levels`, -target_levels so many, demand_<target>_L<levels>.h5): its levels, wall time,
+    and its largest true load error against the reference."""
     print(f"| tube | -target_load | levels | wall (s) | final mesh | largest load error | its estimate | C/t error |")
     print("|---|---|---|---|---|---|---|---|")
     for t in tubes:
         ref = reference(t)
         update = ["-plastic_update", PRESET_UPDATE] if PRESET_UPDATE else []
-        m, h5 = cached_run(t, f"demand_{target:g}" + (f"_{PRESET_UPDATE}" if PRESET_UPDATE else ""),
-                           ["-options_file", "options/preset-default.opts", "-target_load", str(target)] + update,
+        bound = ["-target_levels", str(levels)] if levels else []
+        m, h5 = cached_run(t, f"demand_{target:g}" + (f"_{PRESET_UPDATE}" if PRESET_UPDATE else "") +
+                           (f"_L{levels}" if levels else ""),
+                           ["-options_file", "options/preset-default.opts", "-target_load", str(target)] + update + bound,
                            lambda l: "level" in l or "estimated error" in l or "mesh " in l[:16])
         if m["status"] != "done" or ref is None:
             print(f"| {t} | {target:g} | {m['status']} | | | | | |")
@@ -414,6 +417,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("what", choices=("run", "show", "eval", "shipped", "demand"))
     ap.add_argument("--target", type=float, default=0.005, help="demand: the -target_load")
+    ap.add_argument("--target-levels", type=int, default=0, help="demand: the -target_levels (0: the default)")
     ap.add_argument("--tubes", required=True)
     ap.add_argument("--plan", default="estimate,reference")
     ap.add_argument("-j", type=int, default=1)
@@ -429,7 +433,7 @@ def main():
     if a.what in ("eval", "shipped"):
         return (evaluate if a.what == "eval" else shipped)(tubes, a.misses)
     if a.what == "demand":
-        return demand(tubes, a.target)
+        return demand(tubes, a.target, a.target_levels)
     jobs = [(t, *r) for t in tubes for p in a.plan.split(",") for r in plan(t, p)]
     if a.what == "run":
         one = lambda j: run_preset(j[0], j[2]) if j[1] == "preset" else run(*j)  # noqa: E731
