@@ -29,14 +29,21 @@ static const char help[] =
   "tubeform: updated-Lagrangian elasto-plastic FE analysis of tube squaring (plane strain).\n"
   "Usage: mpirun -n 2 build/tubeform -options_file options/<scene>.opts [-option value ...]\n\n";
 
-// The estimate of a level that takes the last one as its mesh companion (tf::Refinement::reuse): no runs.
-static tf::Problem::CompanionRun Reused(MPI_Comm comm, const tf::Refinement &last)
+// The estimate of a level that takes the last one as its mesh companion (tf::Refinement::reuse): the last level's run
+// as its mesh companion, and the increments' part from `companions` asked for it alone, on the last level's cells at
+// twice its increment limits (tf::AccuracyParams::steps_only: run here, or beside the run by the companions' ranks).
+static tf::Problem::CompanionRun Reused(MPI_Comm comm, const tf::Refinement &last,
+                                        const tf::Problem::CompanionRun &companions)
 {
-  return [comm, c = last.companions](const tf::Options &, tf::Companions &out) {
+  return [comm, c = last.companions, level = last.last, companions](const tf::Options &, tf::Companions &out) {
+    tf::Options steps_only = level;
+    tf::Companions steps;
     PetscFunctionBeginUser;
+    steps_only.accuracy.steps_only = true;
+    PetscCall(companions(steps_only, steps));
     out = c;
-    PetscCall(PetscPrintf(
-      comm, "tubeform: the error estimate from level %d's run and its companions: no companion runs\n", c.level));
+    out.steps = std::move(steps.steps), out.steps_base = c.mesh;
+    PetscCall(PetscPrintf(comm, "tubeform: the error estimate's mesh part from level %d's run\n", c.level));
     PetscFunctionReturn(PETSC_SUCCESS);
   };
 }
@@ -48,7 +55,7 @@ static PetscErrorCode RunFinerLevel(MPI_Comm comm, const tf::Problem::CompanionR
 {
   std::string kept, why;
   const tf::Options level = next.next;
-  const tf::Problem::CompanionRun companion = next.reuse && companions ? Reused(comm, next) : companions;
+  const tf::Problem::CompanionRun companion = next.reuse && companions ? Reused(comm, next, companions) : companions;
   PetscFunctionBeginUser;
   if (!level.output.empty()) {
     kept = tf::Formatted("%s.level%d.h5", tf::ResultStem(level.output).c_str(), (int)level.level - 1);

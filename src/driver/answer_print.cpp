@@ -128,7 +128,7 @@ PetscErrorCode PrintAnswer(MPI_Comm comm, const Answer &a, bool finer_follows, c
                   "the wall's: its %d cells through are the companions' too): ",
                   (int)kCompanionMinNt)
     : a.estimate_level > 0 ? Formatted("estimated error (the mesh's part from level %d, its cells %.2g times as large, "
-                                       "the increments' from its companions): ",
+                                       "the increments' from its cells at twice its increment limits): ",
                                        a.estimate_level, a.estimate_ratio)
                            : "estimated error (the mesh's part and the increments' from two companion runs): ";
   for (size_t p = 0; p < a.passes.size(); ++p) {

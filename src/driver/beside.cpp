@@ -105,6 +105,18 @@ PetscErrorCode LevelCompanions(MPI_Comm half, const Options &level, Outcome &o, 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// Collective on half: a reused level's increments' part (AccuracyParams::steps_only), on the cells of the last
+// level (`last`, its own choices), as the run would ask for it (main.cpp).
+PetscErrorCode StepsOfLast(MPI_Comm half, const Options &last, Outcome &o)
+{
+  Options steps_only = last;
+  PetscFunctionBeginUser;
+  steps_only.accuracy.steps_only = true;
+  o.failed = RunCompanions(half, steps_only, o.companions, &o.text);
+  if (o.failed) o.text = ErrorText(o.failed), o.companions = Companions{};
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 // Collective on half (the companions' ranks): level after level, the companions, sent to the run's first rank;
 // then what follows, from it.
 PetscErrorCode Serve(MPI_Comm half, MPI_Comm link, int run_root, Options level)
@@ -112,10 +124,14 @@ PetscErrorCode Serve(MPI_Comm half, MPI_Comm link, int run_root, Options level)
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(half, &rank));
+  Options last; // the last level's own choices: a reused level's increments' part runs on its cells
   for (bool reuse = false;;) {
     Outcome o;
     Options own = level; // (a reused level's choices are the last one's)
-    if (!reuse) PetscCall(LevelCompanions(half, level, o, own));
+    if (!reuse)
+      PetscCall(LevelCompanions(half, level, o, own));
+    else
+      PetscCall(StepsOfLast(half, last, o));
     if (rank == 0) PetscCall(Send(link, run_root, o));
     LevelStep step;
     if (rank == 0) {
@@ -126,6 +142,7 @@ PetscErrorCode Serve(MPI_Comm half, MPI_Comm link, int run_root, Options level)
     PetscCallMPI(MPI_Bcast(&step, sizeof(step), MPI_BYTE, 0, half));
     PetscCheck(!step.run_failed, half, step.run_failed, "%s", step.why);
     if (!step.follows) break;
+    last = own;
     level = step.change.Applied(own), reuse = step.reuse;
   }
   PetscFunctionReturn(PETSC_SUCCESS);

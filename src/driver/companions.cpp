@@ -58,6 +58,36 @@ PetscErrorCode SideBySide(MPI_Comm comm, const Options &mesh, const Options &ste
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// `c` at twice the increment limits of `ran` and half its trial increments.
+Options AtTwiceTheLimits(const Options &c, const Options &ran)
+{
+  Options steps = c;
+  steps.driver.increments = std::max<PetscInt>(1, ran.driver.increments / 2);
+  steps.driver.rmin_deps = 2 * ran.driver.rmin_deps, steps.driver.rmin_deps_yield = 2 * ran.driver.rmin_deps_yield;
+  steps.driver.rmin_domega = 2 * ran.driver.rmin_domega;
+  return steps;
+}
+
+// Collective on comm: the increments' part alone (AccuracyParams::steps_only), on the cells of `ran` (a level that the
+// next takes as its mesh companion), factored as that level is (the companions' own factorization is chosen for a
+// quarter of a run's cells).
+PetscErrorCode RunStepsAlone(MPI_Comm comm, const Options &ran, Companions &out, std::string *line)
+{
+  double seconds = 0;
+  PetscFunctionBeginUser;
+  out = Companions{};
+  PetscCall(RunCompanion(comm, AtTwiceTheLimits(CompanionQuiet(ran), ran), out.steps, seconds));
+  const std::string said =
+    Formatted("companion run for the error estimate's increments part: level %d's %d x %d cells at twice its "
+              "increment limits (%.1f s)",
+              (int)ran.level, (int)ran.mesh_nt, (int)ran.mesh_ntheta, seconds);
+  if (line)
+    *line = said;
+  else
+    PetscCall(PetscPrintf(comm, "tubeform: %s\n", said.c_str()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 } // namespace
 
 Options CompanionQuiet(const Options &ran)
@@ -70,6 +100,7 @@ Options CompanionQuiet(const Options &ran)
   c.output_every = std::numeric_limits<int>::max(), c.output_stroke = 0;
   c.accuracy.error_estimate = PETSC_FALSE;
   c.accuracy.target_load = c.accuracy.target_c_over_t = 0;
+  c.accuracy.steps_only = false;
   return c;
 }
 
@@ -107,6 +138,7 @@ PetscErrorCode RunOnce(MPI_Comm comm, const Options &opt, bool quiet, const Prob
 
 PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out, std::string *line)
 {
+  if (ran.accuracy.steps_only) return RunStepsAlone(comm, ran, out, line);
   Options mesh = CompanionQuiet(ran);
   // (a quarter of the run's cells: MUMPS's per-call cost dominates)
   mesh.driver.factorization = ran.accuracy.estimate_factorization;
@@ -119,10 +151,7 @@ PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out,
     mesh.mesh_nt = CompanionNt(ran.mesh_nt);
     mesh.mesh_ntheta = std::max<PetscInt>(4, 2 * (ran.mesh_ntheta / 4));
   }
-  Options steps = mesh;
-  steps.driver.increments = std::max<PetscInt>(1, ran.driver.increments / 2);
-  steps.driver.rmin_deps = 2 * ran.driver.rmin_deps, steps.driver.rmin_deps_yield = 2 * ran.driver.rmin_deps_yield;
-  steps.driver.rmin_domega = 2 * ran.driver.rmin_domega;
+  const Options steps = AtTwiceTheLimits(mesh, ran);
   if (coarsen && size >= 2) {
     PetscCall(SideBySide(comm, mesh, steps, out, seconds));
     if (!out.Ran()) PetscFunctionReturn(PETSC_SUCCESS);

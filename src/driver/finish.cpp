@@ -34,13 +34,12 @@ void TakePassStarts(const std::vector<std::pair<std::string, double>> &scene_met
       if (name == Formatted("pass%d_start_stroke", (int)p + 1)) a.passes[p].start = value;
 }
 
-// The next level's companions (Refinement::reuse): this level's run as its mesh companion, at `ratio` times its cell
-// size, and this level's increments' part (its steps companion, against the rows that part was taken against).
-Companions ForNextLevel(const std::vector<HistoryRow> &rows, const Companions &c, double ratio, int level)
+// The next level's mesh companion (Refinement::reuse): this level's run, at `ratio` times its cell size (its
+// increments' part follows from a run at this level's cells, main.cpp).
+Companions ForNextLevel(const std::vector<HistoryRow> &rows, double ratio, int level)
 {
   Companions next;
   next.mesh = rows, next.mesh_ratio = ratio, next.level = level;
-  next.steps = c.steps, next.steps_base = c.BaseRows(rows);
   return next;
 }
 
@@ -138,8 +137,7 @@ PetscErrorCode Problem::Finish(ResultWriter &writer, const Stop &ended)
     PetscCallMPI(MPI_Bcast(seconds, 2, MPI_DOUBLE, 0, comm_));
     refinement_ = NextLevel(OwnChoices(), answer, seconds[0], seconds[1]);
     if (refinement_.follows && refinement_.reuse)
-      refinement_.companions =
-        ForNextLevel(history_.rows(), companions, CellRatio(opt_, refinement_.next), (int)opt_.level);
+      refinement_.companions = ForNextLevel(history_.rows(), CellRatio(opt_, refinement_.next), (int)opt_.level);
     PetscCall(PrintAnswer(comm_, answer, refinement_.follows, refinement_.why));
     PetscCall(PrintReleases(comm_, releases, all_points));
     PetscCall(PetscPrintf(comm_,

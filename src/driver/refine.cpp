@@ -89,7 +89,7 @@ Refinement NextLevel(const Options &level, const Answer &a, double level_seconds
     c.increments = Scaled(level.driver.increments, r.step_ratio, 1);
     c.rmin_deps /= r.step_ratio, c.rmin_deps_yield /= r.step_ratio, c.rmin_domega /= r.step_ratio;
   }
-  r.next = c.Applied(level);
+  r.next = c.Applied(level), r.last = level;
   const Options &n = r.next;
   r.follows = true;
   r.reuse = Reuses(r.step_ratio, CellRatio(level, n)); // (the counts as rounded: multiples of 4 may reach it too)

@@ -115,8 +115,9 @@ struct Answer {
 // The estimate's companions' histories (see kStepShare); `mesh` empty when the run's mesh is kept (a mesh file).
 // The mesh's part is |mesh - run| / (mesh_ratio - 1), Richardson at first order for `mesh`'s cells mesh_ratio
 // times the run's in size; the increments' part |steps - steps_base| (steps_base empty: `mesh`). A finer level of
-// accuracy on demand that keeps the last level's increments takes that level as its `mesh` and the last level's
-// increments' part as its own (driver/refine.hpp, Refinement::reuse): no companion runs.
+// accuracy on demand that keeps the last level's increments takes that level as its `mesh` and as its `steps_base`,
+// `steps` the last level's cells at twice its increment limits (driver/refine.hpp, Refinement::reuse): one
+// companion run, on the finest cells the estimate has.
 struct Companions {
   std::vector<HistoryRow> mesh, steps, steps_base;
   double mesh_ratio = 2;

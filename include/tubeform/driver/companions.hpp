@@ -26,7 +26,9 @@ PetscErrorCode RunOnce(MPI_Comm comm, const Options &opt, bool quiet, const Prob
 // Collective on comm: the estimate's two companions of the run that ran with `ran` (its element and friction
 // regularization fixed), once its results are final: `mesh` on half the cells through the wall and around at the
 // run's increment limits (a mesh file is kept: it would be the run itself, and is not run), `steps` on the cells
-// of `mesh` at twice those limits. Their histories in `out` on every rank.
+// of `mesh` at twice those limits. Their histories in `out` on every rank. With `ran.accuracy.steps_only` (a level
+// that the next takes as its mesh companion, driver/refine.hpp) only `steps`, on the cells of `ran` itself: the
+// increments' part read where the cells are the finest the estimate has, not on a quarter of the coarsest level's.
 // Their line ("companion runs for the error estimate: ...") is printed, or with `line` returned in it.
 PetscErrorCode RunCompanions(MPI_Comm comm, const Options &ran, Companions &out, std::string *line = nullptr);
 

@@ -50,10 +50,12 @@ struct Refinement {
   double step_ratio = 1; // the increment limits' divisor
   LevelChange change;    // the next level's (follows)
   Options next;          // its options: change.Applied(the last level's)
-  // The next level's estimate from this level (kReuseRatio) and this level's increments' part; `companions` as the
-  // next level takes them (filled once this level's estimate is made).
+  // The next level's estimate from this level (kReuseRatio): `companions` as the next level takes them, this level's
+  // run as its mesh companion (filled once this level's estimate is made); its increments' part from a run of
+  // `last` (this level's options, its own choices kept) at twice its increment limits.
   bool reuse = false;
   Companions companions;
+  Options last;
 };
 
 // The ratio of a level's cell size to a finer level's: the smaller of the two directions' (through the wall, around).

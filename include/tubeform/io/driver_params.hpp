@@ -74,6 +74,9 @@ struct AccuracyParams {
   double expect_load = 0, expect_c_over_t = 0; // what the preset's discretization is expected to give (0: none)
   PetscInt target_levels = 3;                  // at most this many levels, the first included
   double target_time = 0;                      // no level predicted to bring the job past this (s; 0: no limit)
+  // Not an option: a request to the companions (driver/companions.hpp, RunCompanions) for the increments' part
+  // alone, on these options' own cells (a level that takes the last one as its mesh companion, driver/refine.hpp).
+  bool steps_only = false;
 };
 
 } // namespace tf
