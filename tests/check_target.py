@@ -46,6 +46,9 @@ G. A demanded accuracy is confirmed only by an estimate that reads the wall: the
    follows, saying why, at least kReuseRatio finer (4 cells through), takes level 1 as its companion and meets the
    target (target_met 1, error_covers_wall 1); with -target_levels 1 the run warns that its estimate does not read
    the wall and writes target_met 0. Planted: the wall's coverage left out of NextLevel and Answer::Over -> FAILED.
+H. -target_time refuses a level that would bring the job past it: -target_load 0.01 from the fast level (its estimate
+   11 %) with -target_time 1 (the fast level alone takes about 2 s): no second level, one warning naming -target_time,
+   target_met 0, accuracy_level 1. Planted: the time limit not consulted -> FAILED.
 """
 import re
 import os
@@ -90,7 +93,8 @@ os.environ["OMPI_MCA_hwloc_base_binding_policy"] = "none"
 RADIAL = BASE + ["-plastic_update", "radial"]
 D_DEMAND = RADIAL + ["-target_load", 0.1, "-element_bar_nt", 4, "-target_levels", 2]
 H5 = {n: fresh(n) for n in ("target_a", "target_b", "target_c", "target_d1", "target_d_np1", "target_d_np2",
-                             "target_e", "target_f_np1", "target_f_np2", "target_g", "target_g1", "target_q1")}
+                             "target_e", "target_f_np1", "target_f_np2", "target_g", "target_g1", "target_q1",
+                             "target_h")}
 OWN = BASE + ["-plastic_update", "tangent", "-target_c_over_t", 0.003, "-stroke", 3, "-target_levels", 2]
 with ThreadPoolExecutor(max_workers=2) as pool:
     go = lambda n, opts: pool.submit(run, tf, mpirun, n, opts, check=False, timeout=600)  # noqa: E731
@@ -107,6 +111,7 @@ with ThreadPoolExecutor(max_workers=2) as pool:
     f_f1, f_f2 = go(1, OWN + ["-output", H5["target_f_np1"]]), go(2, OWN + ["-output", H5["target_f_np2"]])
     f_g, f_g1 = (go(1, BASE + ["-target_load", 0.2, "-output", H5["target_g"]]),
                  go(1, BASE + ["-target_load", 0.2, "-target_levels", 1, "-output", H5["target_g1"]]))
+    f_h = go(1, BASE + ["-target_load", 0.01, "-target_time", 1, "-output", H5["target_h"]])
     p_d1 = f_d1.result()
     # Level 1 at twice its increment limits (the fast preset's: -rmin_deps, -rmin_domega at their defaults), its
     # element and friction regularization as level 1 chose them.
@@ -114,8 +119,8 @@ with ThreadPoolExecutor(max_workers=2) as pool:
     f_q1 = go(1, RADIAL + ["-error_estimate", 0, "-element", "qm6", "-friction_vcri", repr(float(vcri)),
                           "-increments", 50, "-rmin_deps_yield", 4, "-rmin_deps", 0.004, "-rmin_domega", 0.02,
                           "-output", H5["target_q1"]])
-    p_d2, p_d, p_a, p_c, p_e, p_f1, p_f2, p_g, p_g1, p_q1 = (f.result() for f in (f_d2, f_d, f_a, f_c, f_e, f_f1,
-                                                                                   f_f2, f_g, f_g1, f_q1))
+    p_d2, p_d, p_a, p_c, p_e, p_f1, p_f2, p_g, p_g1, p_q1, p_h = (f.result() for f in (f_d2, f_d, f_a, f_c, f_e, f_f1,
+                                                                                        f_f2, f_g, f_g1, f_q1, f_h))
 
 # A. Two levels meet the target.
 h5, p = H5["target_a"], p_a
@@ -182,6 +187,13 @@ warn = [l for l in p_g1.stdout.splitlines() if "warning" in l and unread in l an
 k.check(p_g1.returncode == 0 and len(warn) == 1 and g1.get("target_met") == 0 and g1.get("error_load", 1) <= 0.2,
         f"G: one level allowed: its estimate within 20 % ({100 * g1.get('error_load', 1):.2f} %), but unread in the "
         f"wall: one warning saying so ({len(warn)}), target_met {g1.get('target_met')}")
+
+# H. A time limit the next level would pass: the run ends at level 1, warned.
+h = attrs(H5["target_h"]) if p_h.returncode == 0 else {}
+warn = [l for l in p_h.stdout.splitlines() if "warning" in l and "-target_time 1 s" in l]
+k.check(p_h.returncode == 0 and len(warn) == 1 and h.get("accuracy_level") == 1 and h.get("target_met") == 0,
+        f"H: -target_time 1 refuses level 2: {len(warn)} warning(s) naming it, accuracy_level "
+        f"{h.get('accuracy_level')}, target_met {h.get('target_met')} (exit {p_h.returncode})")
 
 # C. The second level stops: the first level's results are kept.
 h5, p = H5["target_c"], p_c
