@@ -2,7 +2,8 @@
 """How a squaring run's error splits into the mesh's and the steps', tube by tube: the study behind the error
 estimate's design (docs/accuracy.md, "The error estimate").
 
-Each tube of tools/validate's set (and the paper's nine) is run at resolutions (nt cells through the wall,
+Each tube of tools/validate's set (and the paper's nine, and the hold-out tubes of
+python/tubeform_py/validation.py, HOLDOUT) is run at resolutions (nt cells through the wall,
 D cells around per bending length sqrt(Ro t), step level s: -increments 100 s, -rmin_deps 0.002 / s,
 -rmin_domega 0.01 / s) with one element for all (the preset run's) and one friction regularization (VCRI a length
 of the tube, 8.3e-4 sqrt(Ro t): 2 % of the default preset's node spacing), so that only what a level names
@@ -39,6 +40,7 @@ import json
 import math
 import os
 import pathlib
+import re
 import sys
 
 import h5py
@@ -66,7 +68,7 @@ def tube(name):
         text = open(os.path.join(ROOT, "options", "squaring.opts")).read() + open(os.path.join(ROOT, PAPER[name])).read()
         ro, t = float(tfruns.option(text, "-tube_ro")), float(tfruns.option(text, "-tube_t"))
         return [str(o) for o in opts], ro, t, float(tfruns.option(text, "-stroke", 4.2))
-    _, ro, t, _, stroke = validation.CASES[name]
+    _, ro, t, _, stroke = validation.spec(name)
     return validation.case_options(name), ro, t, stroke
 
 
@@ -406,8 +408,10 @@ def demand(tubes, target, levels=0):
             a = dict(h["/history"].attrs)
         err = (np.array(P + C + [S]) - ref["value"])
         ep = np.abs(err[:n] / ref["value"][:n]).max()
-        meshes = [l.split("(")[1].split(")")[0] for l in m["lines"] if l.startswith("tubeform: mesh ")]
-        mesh = meshes[-1] if meshes else "?"
+        # (the mesh line: "tubeform: mesh N cells (-mesh_nt a through the wall x -mesh_ntheta b around), ...")
+        meshes = [re.findall(r"-mesh_nt (\d+) .* -mesh_ntheta (\d+)", l) for l in m["lines"]
+                  if l.startswith("tubeform: mesh ")]
+        mesh = " x ".join(meshes[-1][0]) if meshes and meshes[-1] else "?"
         print(f"| {t} | {target:g} | {int(a['accuracy_level'])} | {m['wall']:.0f} | {mesh} | {100 * ep:.2f} % | "
               f"{100 * a['error_load']:.2f} % | {np.abs(err[n:]).max():.4f} |")
 
