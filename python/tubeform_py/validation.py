@@ -36,7 +36,7 @@ CASES = {
     "stainless_9_mu0.05": ("stainless", 18.0, 2.0, 0.05, 4.0),
 }
 # Hold-out tubes: chosen after the error estimate and accuracy on demand were designed, and run only to check them
-# against the method's own converged references (studies/estimate_levels.py; docs/accuracy.md, "Hold-out tubes").
+# against the method's own converged references (studies/estimate_levels.py; docs/accuracy.md, "Three hold-out tubes").
 # No CalculiX reference: tools/validate does not run them.
 HOLDOUT = {
     "hs_13_mu0.15": ("hs_steel", 16.0, 1.25, 0.15, 4.0),
