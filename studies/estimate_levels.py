@@ -14,11 +14,13 @@ reads another checkout's cache: eval, show and shipped start no run).
     /usr/bin/python3 studies/estimate_levels.py show --tubes ...            # values at the reported strokes
     /usr/bin/python3 studies/estimate_levels.py eval --tubes ... [--misses] # candidates' effectivity and alarms
     /usr/bin/python3 studies/estimate_levels.py shipped --tubes ...         # the runs' own estimate (plan preset)
-    /usr/bin/python3 studies/estimate_levels.py demand --tubes ... [--target 0.005] [--target-levels N]   # accuracy on demand
+    /usr/bin/python3 studies/estimate_levels.py demand --tubes ... [--target 0.005] [--target-levels N]
+                                                                            # accuracy on demand
 
 --update radial runs the level runs and the references with the radial return (cached apart, `_radial`; its
 reference's step ladder is s 1, 2, the return being converged in the step there); --presets-update radial (or
-tangent, auto) adds that -plastic_update to the preset runs and to `demand`'s (cached apart, `preset_<preset>_<update>`).
+tangent, auto) adds that -plastic_update to the preset runs and to `demand`'s (cached apart,
+`preset_<preset>_<update>`).
 
 Plans: `directions` runs each preset level's directional companions at s 1 (half the cells through the wall, twice
 them where half would be under 2; half the cells around), `orders` the third level of each direction (twice the
@@ -65,7 +67,8 @@ def tube(name):
     """(options of the tube's scene, Ro, t, final stroke)."""
     if name in PAPER:
         opts = ["-options_file", PAPER[name], "-progress", 0, "-output_every", 100000, "-output_stroke", 0]
-        text = open(os.path.join(ROOT, "options", "squaring.opts")).read() + open(os.path.join(ROOT, PAPER[name])).read()
+        text = (open(os.path.join(ROOT, "options", "squaring.opts")).read() +
+                open(os.path.join(ROOT, PAPER[name])).read())
         ro, t = float(tfruns.option(text, "-tube_ro")), float(tfruns.option(text, "-tube_t"))
         return [str(o) for o in opts], ro, t, float(tfruns.option(text, "-stroke", 4.2))
     _, ro, t, _, stroke = validation.spec(name)
@@ -314,6 +317,9 @@ def evaluate(tubes, misses=False):
           "c | bounded | median eff. | within 3x |\n|---|---|---|---|---|---|---|---|---|---|")
     for name in FITTED:
         base = cells_of(tubes, CANDIDATES[name])[0]
+        if not base:  # a candidate of the directional runs, not cached: nothing to fit
+            print(f"| {name.replace('|', '&#124;')} | (its runs are not cached: --plan directions) |")
+            continue
         c, q = fitted(base), np.percentile([A(x[4]) / max(x[6], 1e-15) for x in base], [20, 50, 95])
         cs = [fitted(cells_of([o for o in tubes if o != t], CANDIDATES[name])[0]) for t in tubes]
         held = sum((cells_of([t], CANDIDATES[name], k)[0] for t, k in zip(tubes, cs)), [])
@@ -353,7 +359,9 @@ def direction_parts(tubes):
 
 
 def fitted(cells):
-    """The least factor c for which c x estimate bounds 95 % of the cells."""
+    """The least factor c for which c x estimate bounds 95 % of the cells (nan without cells)."""
+    if not cells:
+        return float("nan")
     need = np.sort([max(A(x[4]) - x[5], 0) / max(x[6], 1e-15) for x in cells])
     return float(need[math.ceil(0.95 * len(need)) - 1]) * (1 + 1e-9)
 
@@ -389,7 +397,7 @@ def demand(tubes, target, levels=0):
     """Accuracy on demand: the tube with the default preset and -target_load `target` (cached as
     demand_<target>.h5; with `levels`, -target_levels so many, demand_<target>_L<levels>.h5): its levels, wall time,
     and its largest true load error against the reference."""
-    print(f"| tube | -target_load | levels | wall (s) | final mesh | largest load error | its estimate | C/t error |")
+    print("| tube | -target_load | levels | wall (s) | final mesh | largest load error | its estimate | C/t error |")
     print("|---|---|---|---|---|---|---|---|")
     for t in tubes:
         ref = reference(t)
@@ -397,7 +405,8 @@ def demand(tubes, target, levels=0):
         bound = ["-target_levels", str(levels)] if levels else []
         m, h5 = cached_run(t, f"demand_{target:g}" + (f"_{PRESET_UPDATE}" if PRESET_UPDATE else "") +
                            (f"_L{levels}" if levels else ""),
-                           ["-options_file", "options/preset-default.opts", "-target_load", str(target)] + update + bound,
+                           ["-options_file", "options/preset-default.opts", "-target_load", str(target)] + update +
+                           bound,
                            lambda l: "level" in l or "estimated error" in l or "mesh " in l[:16])
         if m["status"] != "done" or ref is None:
             print(f"| {t} | {target:g} | {m['status']} | | | | | |")
