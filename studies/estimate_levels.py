@@ -443,6 +443,10 @@ def main():
     a = ap.parse_args()
     OUT, UPDATE, PRESET_UPDATE = a.cache, a.update, a.presets_update
     tubes = a.tubes.split(",")
+    unknown = [t for t in tubes if t not in PAPER and t not in validation.CASES and t not in validation.HOLDOUT]
+    if unknown:
+        ap.error(f"--tubes: {', '.join(unknown)} is not a tube of python/tubeform_py/validation.py (CASES, HOLDOUT) "
+                 f"or of the paper's ({', '.join(PAPER)})")
     if a.what in ("eval", "shipped"):
         return (evaluate if a.what == "eval" else shipped)(tubes, a.misses)
     if a.what == "demand":

@@ -49,6 +49,8 @@ STROKES = tfruns.LOAD_AT
 
 def spec(name):
     """A tube of the validation set or a hold-out one: (material, Ro, t, mu, stroke)."""
+    if name not in CASES and name not in HOLDOUT:
+        raise KeyError(f"{name}: not a tube of CASES or HOLDOUT (python/tubeform_py/validation.py)")
     return CASES[name] if name in CASES else HOLDOUT[name]
 
 
